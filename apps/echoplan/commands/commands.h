@@ -1,0 +1,11 @@
+// The subcommands of `echoplan`. Each add_*_command() adds one subcommand to the app and sets its
+// callback; the callback throws echoplan::InputError for bad input (main turns it into exit status 2).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace echoplan::cli {
+
+void add_version_command(CLI::App& app);
+
+}  // namespace echoplan::cli

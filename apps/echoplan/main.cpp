@@ -1,0 +1,41 @@
+// echoplan: plan which sound to make to identify an object, listen, and decide what to do with it.
+//
+// Exit status: 0 success, 1 internal error, 2 bad input (file, flag or value), 130 interrupted.
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#include "commands/commands.h"
+#include "common/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "echoplan: plan which sound to make to identify an object, listen, and decide.\n"
+      "Run `echoplan <command> --help` for the options of a command."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", ECHOPLAN_VERSION);
+  bool verbose = false;
+  app.add_flag("-v,--verbose", verbose, "Log debug messages to stderr");
+  app.parse_complete_callback([&] {
+    spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info);
+  });
+
+  echoplan::cli::add_version_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 reports --help as a "success" parse error; usage errors exit 2 like bad input.
+    int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  } catch (const echoplan::InputError& e) {
+    std::fprintf(stderr, "echoplan: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "echoplan: internal error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# echoplan setup: installs every dependency from Debian 12 packages, builds, and optionally runs.
+#
+#   scripts/setup.sh          install dependencies and build (build/)
+#   scripts/setup.sh run      ... then run the main job with its default configuration
+#   scripts/setup.sh test     ... then run all tests: the normal build and an ASan+UBSan build
+#   scripts/setup.sh deps     only install dependencies
+#
+# Environment: JOBS (parallel build jobs, default: number of cores), BUILD_DIR (default: build),
+# SAN_BUILD_DIR (default: build-san).
+set -euo pipefail
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$here"
+mode=${1:-build}
+jobs=${JOBS:-$(nproc)}
+build_dir=${BUILD_DIR:-build}
+san_build_dir=${SAN_BUILD_DIR:-build-san}
+
+# Keep this list in one place: docs/getting-started.md points here.
+packages=(
+  build-essential cmake pkg-config git
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev
+  libsndfile1-dev libsamplerate0-dev libkissfft-dev
+  libmujoco-dev libqhull-dev libeigen3-dev
+  gnuplot-nox
+)
+
+install_deps() {
+  local missing=()
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    echo "setup: all ${#packages[@]} Debian packages already installed"
+    return
+  fi
+  echo "setup: installing ${missing[*]}"
+  local sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+build() {  # build DIR [extra cmake args...]
+  local dir=$1; shift
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+  cmake --build "$dir" -j"$jobs"
+}
+
+case "$mode" in
+  deps) install_deps ;;
+  build) install_deps; build "$build_dir" ;;
+  run)
+    install_deps; build "$build_dir"
+    exec "$build_dir/echoplan" trials --problem problems/audio_objects.yaml --solver abt --per-object 10 --out results/main
+    ;;
+  test)
+    install_deps
+    build "$build_dir"
+    ctest --test-dir "$build_dir" -j"$jobs" --output-on-failure
+    echo "setup: sanitizer build (ASan + UBSan)"
+    build "$san_build_dir" -DECHOPLAN_SANITIZE=ON -DECHOPLAN_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug
+    ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+      ctest --test-dir "$san_build_dir" -j"$jobs" --output-on-failure
+    ;;
+  -h|--help|help) sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//' ;;
+  *) echo "setup: unknown mode '$mode' (try: build, run, test, deps)" >&2; exit 2 ;;
+esac
