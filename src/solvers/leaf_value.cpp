@@ -45,7 +45,8 @@ double random_rollout(const pomdp::Model& model, pomdp::State state, int steps_l
 }  // namespace
 
 void LeafEstimate::add(const LeafOptions& options, const pomdp::Model& model,
-                       const pomdp::State& state, int steps_left, Rng& rng) {
+                       const pomdp::State& state, int steps_left, Rng& rng,
+                       const std::vector<pomdp::StepResult>* one_step_each) {
   ++count_;
   switch (options.mode) {
     case LeafMode::heuristic:
@@ -61,7 +62,7 @@ void LeafEstimate::add(const LeafOptions& options, const pomdp::Model& model,
       const double gamma = model.spec().discount;
       sums_.resize(actions, 0.0);
       for (int a = 0; a < actions; ++a) {
-        const pomdp::StepResult step = model.step(state, a, rng);
+        const pomdp::StepResult step = one_step_each ? (*one_step_each)[a] : model.step(state, a, rng);
         sums_[a] += step.reward + (step.terminal ? 0.0 : gamma * model.heuristic_value(step.next));
       }
       return;

@@ -34,15 +34,17 @@ const char* leaf_mode_name(LeafMode mode);
 
 struct LeafOptions {
   LeafMode mode = LeafMode::lookahead;
-  int expand_after = 1;  // >= 1: visits a node spends as a leaf before it is expanded
+  int expand_after = 4;  // >= 1: visits a node spends as a leaf before it is expanded
 };
 
 // Running estimate of an unexpanded node's value, updated as particles arrive.
 class LeafEstimate {
  public:
   // Adds `state` (a particle that reached the node) to the estimate. `steps_left` bounds a rollout.
+  // `one_step_each` (optional): the result of stepping `state` once with each action, when the caller
+  // already has it; the lookahead estimate then reuses it instead of stepping again.
   void add(const LeafOptions& options, const pomdp::Model& model, const pomdp::State& state,
-           int steps_left, Rng& rng);
+           int steps_left, Rng& rng, const std::vector<pomdp::StepResult>* one_step_each = nullptr);
   // The current estimate; 0 before any particle was added.
   double value() const;
   int count() const { return count_; }

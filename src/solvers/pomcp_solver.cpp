@@ -27,7 +27,6 @@ double PomcpSolver::simulate(BeliefNode& node, pomdp::State state, int depth, Rn
   // Running mean of the returns sampled through (node, a).
   ++node.action_visits;
   ++action.visits;
-  action.reward_sum += step.reward;
   action.value += (sampled_return - action.value) / static_cast<double>(action.visits);
   return sampled_return;
 }

@@ -49,7 +49,10 @@ void TreeSearchSolver::reset(const pomdp::Belief& belief, Rng& rng) {
 void TreeSearchSolver::replenish_root(const pomdp::Belief& belief, Rng& rng) {
   const auto target = static_cast<std::size_t>(options_.root_particles);
   root_->particles.reserve(target);
-  while (root_->particles.size() < target) root_->particles.push_back(belief.sample(rng));
+  while (root_->particles.size() < target) {
+    root_->particles.push_back(belief.sample(rng));
+    root_particle_added(*root_, root_->particles.back(), rng);
+  }
 }
 
 void TreeSearchSolver::improve(const Budget& budget, Rng& rng) {

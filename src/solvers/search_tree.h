@@ -58,6 +58,10 @@ struct BeliefNode {
   bool expanded = false;                             // false while valued by `leaf`
   LeafEstimate leaf;
   double value = 0.0;  // ABT: max_a Q (expanded) or the leaf estimate; POMCP: unused
+  // ABT: every filed particle stepped once with every action; per action, the sum of the immediate
+  // rewards, so Q's immediate term averages over all of the node's particles.
+  std::vector<double> particle_reward_sums;
+  std::int64_t particles_evaluated = 0;
 };
 
 struct ObservationChild {
@@ -75,7 +79,6 @@ struct ActionNode {
 
   NodeCounts* counts;
   std::int64_t visits = 0;
-  double reward_sum = 0.0;  // sum of immediate rewards
   double future_sum = 0.0;  // ABT: sum over children of arrivals * value
   double value = 0.0;       // the action's estimated value, used by UCB and best_action()
   std::vector<ObservationChild> children;
@@ -106,6 +109,8 @@ class TreeSearchSolver : public Solver {
  protected:
   // One episode from a particle of the root, including its backup.
   virtual void run_episode(Rng& rng) = 0;
+  // Called for each particle reset() or replenishment adds to the root.
+  virtual void root_particle_added(BeliefNode& /*root*/, const pomdp::State& /*state*/, Rng& /*rng*/) {}
 
   const pomdp::Model& model() const { return *model_; }
   BeliefNode& root() { return *root_; }

@@ -7,6 +7,7 @@
 //                     move_to_B, the observation table exactly, discount 0.99. V*(b0) = 2.9534.
 //   ToyParticleBelief a plain SIR particle filter over any model (the tests' stand-in for the
 //                     pomdp module's beliefs).
+//   ToyEnvironment    the model as the world.
 #pragma once
 
 #include <array>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "pomdp/belief.h"
+#include "pomdp/environment.h"
 #include "pomdp/model.h"
 
 namespace echoplan::testing {
@@ -158,6 +160,22 @@ class ToyParticleBelief final : public pomdp::Belief {
  private:
   std::shared_ptr<const pomdp::Model> model_;
   std::vector<pomdp::State> particles_;
+};
+
+class ToyEnvironment final : public pomdp::Environment {
+ public:
+  explicit ToyEnvironment(std::shared_ptr<const pomdp::Model> model) : model_(std::move(model)) {}
+  void reset(const pomdp::State& true_state, Rng&) override { state_ = true_state; }
+  pomdp::Outcome execute(int action, Rng& rng) override {
+    pomdp::StepResult r = model_->step(state_, action, rng);
+    state_ = r.next;
+    return {r.observation, r.reward, r.terminal, r.collision};
+  }
+  const pomdp::State& true_state() const override { return state_; }
+
+ private:
+  std::shared_ptr<const pomdp::Model> model_;
+  pomdp::State state_;
 };
 
 }  // namespace echoplan::testing
