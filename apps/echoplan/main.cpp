@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   });
 
   echoplan::cli::add_version_command(app);
+  echoplan::cli::add_trials_command(app);
 
   try {
     app.parse(argc, argv);

@@ -7,5 +7,6 @@
 namespace echoplan::cli {
 
 void add_version_command(CLI::App& app);
+void add_trials_command(CLI::App& app);
 
 }  // namespace echoplan::cli
