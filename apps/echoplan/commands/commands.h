@@ -8,5 +8,7 @@ namespace echoplan::cli {
 
 void add_version_command(CLI::App& app);
 void add_trials_command(CLI::App& app);
+void add_make_problem_command(CLI::App& app);
+void add_check_command(CLI::App& app);
 
 }  // namespace echoplan::cli
