@@ -47,6 +47,11 @@ struct Harness {
   }
 };
 
+// An observer for tests that only look at run_trials()'s return value.
+struct Ignore : TrialObserver {
+  void trial_finished(const TrialRecord&, const std::vector<StepRecord>&) override {}
+};
+
 std::filesystem::path fresh_dir(const std::string& name) {
   auto dir = std::filesystem::temp_directory_path() / ("echoplan_trials_" + name);
   std::filesystem::remove_all(dir);
@@ -125,9 +130,7 @@ TEST(Trials, PerObjectRunsKTrialsForEachObject) {
   options.trials = 0;
   options.per_object = 3;
   options.budget = solvers::Budget::episodes(100);
-  struct Keep : TrialObserver {
-    void trial_finished(const TrialRecord&, const std::vector<StepRecord>&) override {}
-  } keep;
+  Ignore keep;
   const auto trials = run_trials(h.setup(), options, keep);
   ASSERT_EQ(trials.size(), 12u);
   for (int t = 0; t < 12; ++t) EXPECT_EQ(trials[t].true_state, t / 3);
@@ -139,9 +142,7 @@ TEST(Trials, MaxStepsCapsATrial) {
   options.trials = 3;
   options.max_steps = 1;
   options.budget = solvers::Budget::episodes(500);
-  struct Keep : TrialObserver {
-    void trial_finished(const TrialRecord&, const std::vector<StepRecord>&) override {}
-  } keep;
+  Ignore keep;
   for (const auto& t : run_trials(h.setup(), options, keep)) {
     EXPECT_EQ(t.steps, 1);
     EXPECT_TRUE(t.capped);  // from the uniform belief no planner sorts at once
@@ -176,9 +177,7 @@ TEST(Trials, StopRequestKeepsFinishedTrialsAndValidFiles) {
 
 TEST(Trials, BadOptionsAreInputErrors) {
   Harness h;
-  struct Keep : TrialObserver {
-    void trial_finished(const TrialRecord&, const std::vector<StepRecord>&) override {}
-  } keep;
+  Ignore keep;
   TrialOptions options;
   options.max_steps = 0;
   EXPECT_THROW(run_trials(h.setup(), options, keep), InputError);

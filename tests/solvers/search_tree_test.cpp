@@ -24,14 +24,25 @@ std::unique_ptr<TreeSearchSolver> make_solver(Kind kind, pomdp::ModelPtr model, 
   return std::make_unique<PomcpSolver>(std::move(model), options);
 }
 
+// A solver rooted at a fresh particle belief over `model`: where every test starts.
+struct Rooted {
+  Rooted(Kind kind, pomdp::ModelPtr m, std::uint64_t seed, int particles, SearchOptions options = {})
+      : model(m), rng(seed), belief(m, particles, rng), solver(make_solver(kind, m, options)) {
+    solver->reset(belief, rng);
+  }
+  pomdp::ModelPtr model;
+  Rng rng;
+  ToyParticleBelief belief;
+  std::unique_ptr<TreeSearchSolver> solver;
+};
+
 class TreeSolvers : public ::testing::TestWithParam<Kind> {};
 
 TEST_P(TreeSolvers, UpdateKeepsTheTakenBranchAndFreesTheRest) {
-  auto model = std::make_shared<ToyAudioObjects>();
-  Rng rng(7);
-  ToyParticleBelief belief(model, 1000, rng);
-  auto solver = make_solver(GetParam(), model);
-  solver->reset(belief, rng);
+  Rooted t(GetParam(), std::make_shared<ToyAudioObjects>(), 7, 1000);
+  auto& solver = t.solver;
+  auto& rng = t.rng;
+  auto& belief = t.belief;
   solver->improve(Budget::episodes(3000), rng);
 
   const SolverStats before = solver->stats();
@@ -61,14 +72,13 @@ TEST_P(TreeSolvers, UpdateKeepsTheTakenBranchAndFreesTheRest) {
 }
 
 TEST_P(TreeSolvers, SmallRootIsReplenishedFromTheRealBelief) {
-  auto model = std::make_shared<ToyAudioObjects>();
-  Rng rng(11);
-  ToyParticleBelief belief(model, 500, rng);
   SearchOptions options;
   options.root_particles = 300;
   options.min_root_particles = 1000000;  // every kept root counts as too small
-  auto solver = make_solver(GetParam(), model, options);
-  solver->reset(belief, rng);
+  Rooted t(GetParam(), std::make_shared<ToyAudioObjects>(), 11, 500, options);
+  auto& solver = t.solver;
+  auto& rng = t.rng;
+  auto& belief = t.belief;
   EXPECT_EQ(solver->stats().root_particles, 300);
   solver->improve(Budget::episodes(200), rng);
   pomdp::Observation heard;
@@ -79,13 +89,12 @@ TEST_P(TreeSolvers, SmallRootIsReplenishedFromTheRealBelief) {
 }
 
 TEST_P(TreeSolvers, UntriedActionStartsAFreshRootFromTheRealBelief) {
-  auto model = std::make_shared<ToyAudioObjects>();
-  Rng rng(5);
-  ToyParticleBelief belief(model, 200, rng);
   SearchOptions options;
   options.root_particles = 150;
-  auto solver = make_solver(GetParam(), model, options);
-  solver->reset(belief, rng);
+  Rooted t(GetParam(), std::make_shared<ToyAudioObjects>(), 5, 200, options);
+  auto& solver = t.solver;
+  auto& rng = t.rng;
+  auto& belief = t.belief;
   solver->improve(Budget::episodes(2), rng);  // tries slide, then strike: nothing under move_to_A
   ASSERT_TRUE(std::isnan(solver->root_action_values()[ToyAudioObjects::move_to_A]));
   pomdp::Observation heard;
@@ -99,12 +108,9 @@ TEST_P(TreeSolvers, UntriedActionStartsAFreshRootFromTheRealBelief) {
 TEST_P(TreeSolvers, SameSeedSameSearch) {
   auto model = std::make_shared<ToyAudioObjects>();
   auto run = [&](std::uint64_t seed) {
-    Rng rng(seed);
-    ToyParticleBelief belief(model, 1000, rng);
-    auto solver = make_solver(GetParam(), model);
-    solver->reset(belief, rng);
-    solver->improve(Budget::episodes(2000), rng);
-    return std::make_pair(solver->root_action_values(), solver->stats().belief_nodes);
+    Rooted t(GetParam(), model, seed, 1000);
+    t.solver->improve(Budget::episodes(2000), t.rng);
+    return std::make_pair(t.solver->root_action_values(), t.solver->stats().belief_nodes);
   };
   const auto first = run(42);
   EXPECT_EQ(first, run(42));
@@ -112,11 +118,9 @@ TEST_P(TreeSolvers, SameSeedSameSearch) {
 }
 
 TEST_P(TreeSolvers, TimeBudgetRunsAtLeastOneEpisode) {
-  auto model = std::make_shared<ToyAudioObjects>();
-  Rng rng(1);
-  ToyParticleBelief belief(model, 100, rng);
-  auto solver = make_solver(GetParam(), model);
-  solver->reset(belief, rng);
+  Rooted t(GetParam(), std::make_shared<ToyAudioObjects>(), 1, 100);
+  auto& solver = t.solver;
+  auto& rng = t.rng;
   solver->improve(Budget::milliseconds(1), rng);
   EXPECT_GE(solver->stats().episodes_last, 1);
   EXPECT_NO_THROW(solver->best_action());
@@ -124,11 +128,9 @@ TEST_P(TreeSolvers, TimeBudgetRunsAtLeastOneEpisode) {
 
 TEST_P(TreeSolvers, TigerListensFirst) {
   // From the uniform belief, opening a door is worth (10 - 100) / 2 = -45; listening is optimal.
-  auto model = std::make_shared<ToyTiger>();
-  Rng rng(3);
-  ToyParticleBelief belief(model, 1000, rng);
-  auto solver = make_solver(GetParam(), model);
-  solver->reset(belief, rng);
+  Rooted t(GetParam(), std::make_shared<ToyTiger>(), 3, 1000);
+  auto& solver = t.solver;
+  auto& rng = t.rng;
   solver->improve(Budget::episodes(5000), rng);
   EXPECT_EQ(solver->best_action(), ToyTiger::listen);
 }
@@ -143,12 +145,9 @@ TEST(AbtSolver, PrefersStrikeFirstOnTheSeedProblem) {
   // with probability 1 - 1/32.
   auto model = std::make_shared<ToyAudioObjects>();
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
-    Rng rng(seed);
-    ToyParticleBelief belief(model, 1000, rng);
-    AbtSolver solver(model, {});
-    solver.reset(belief, rng);
-    solver.improve(Budget::episodes(20000), rng);
-    EXPECT_EQ(solver.best_action(), ToyAudioObjects::strike) << "seed " << seed;
+    Rooted t(Kind::abt, model, seed, 1000);
+    t.solver->improve(Budget::episodes(20000), t.rng);
+    EXPECT_EQ(t.solver->best_action(), ToyAudioObjects::strike) << "seed " << seed;
   }
 }
 
