@@ -100,6 +100,13 @@ class Model {
   // and the offline bound solver); nullptr otherwise.
   virtual const TabularModel* tabular() const { return nullptr; }
 
+  // The full model state that tabular state `s` stands for at the start of an episode (only
+  // meaningful when tabular() is not null). The default, a state with discrete[0] = s and no
+  // continuous part, is right for models that are tabular through and through; models with a
+  // deterministic continuous part (arm joints, object offset) fill it in from their initial
+  // configuration. Used by ExactBelief to hand solvers states they can step.
+  virtual State tabular_state(int s) const { return State{{}, {s}}; }
+
   int num_actions() const { return static_cast<int>(spec().action_names.size()); }
 };
 

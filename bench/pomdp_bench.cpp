@@ -1,0 +1,80 @@
+// Speed of what solvers and the execution loop call most: the model's step and observation
+// likelihood, and belief updates. Results: docs/BENCHMARKS.md, section "pomdp".
+#include <benchmark/benchmark.h>
+
+#include "pomdp/exact_belief.h"
+#include "pomdp/particle_belief.h"
+#include "pomdp/problem.h"
+#include "pomdp/random_problem.h"
+
+namespace {
+
+using namespace echoplan;
+using namespace echoplan::pomdp;
+
+// range(0) = number of objects: 4 is the seed's problem, larger ones are random problems.
+ModelPtr object_model(int objects) {
+  if (objects == 4) return load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml").model;
+  Rng rng(1);
+  return std::make_shared<const ObjectIdentificationModel>(
+      make_random_object_problem(RandomProblemSettings{objects, 4, 1.5, 1}, rng));
+}
+
+void BM_ObjectModelStep(benchmark::State& st) {
+  const ModelPtr model = object_model(static_cast<int>(st.range(0)));
+  Rng rng(2);
+  State s = model->sample_initial_state(rng);
+  int action = 0;
+  for (auto _ : st) {
+    StepResult r = model->step(s, action, rng);
+    benchmark::DoNotOptimize(r);
+    action ^= 1;  // alternate the first two sensing actions
+  }
+  st.SetItemsProcessed(st.iterations());
+}
+BENCHMARK(BM_ObjectModelStep)->Arg(4)->Arg(16)->Arg(64);
+
+void BM_ObjectModelLikelihood(benchmark::State& st) {
+  const ModelPtr model = object_model(static_cast<int>(st.range(0)));
+  Rng rng(3);
+  const State s = model->sample_initial_state(rng);
+  const Observation o{1, {}};
+  double sum = 0.0;
+  for (auto _ : st) {
+    sum += model->observation_likelihood(s, 1, o);
+    benchmark::DoNotOptimize(sum);
+  }
+  st.SetItemsProcessed(st.iterations());
+}
+BENCHMARK(BM_ObjectModelLikelihood)->Arg(4)->Arg(16)->Arg(64);
+
+// One SIR update of the seed's 1000-particle belief (propagate, weight, resample).
+void BM_ParticleBeliefUpdate(benchmark::State& st) {
+  const ModelPtr model = object_model(static_cast<int>(st.range(0)));
+  Rng rng(4);
+  ParticleBelief belief(model, 1000, rng);
+  int step = 0;
+  for (auto _ : st) {
+    belief.update(step % 2, Observation{step % 3, {}}, rng);
+    ++step;
+  }
+  st.SetItemsProcessed(st.iterations() * 1000);
+}
+BENCHMARK(BM_ParticleBeliefUpdate)->Arg(4)->Arg(16)->Arg(64);
+
+void BM_ExactBeliefUpdate(benchmark::State& st) {
+  const ModelPtr model = object_model(static_cast<int>(st.range(0)));
+  Rng rng(5);
+  ExactBelief belief(model);
+  int step = 0;
+  for (auto _ : st) {
+    belief.update(step % 2, Observation{step % 3, {}}, rng);
+    ++step;
+  }
+  st.SetItemsProcessed(st.iterations());
+}
+BENCHMARK(BM_ExactBeliefUpdate)->Arg(4)->Arg(16)->Arg(64);
+
+}  // namespace
+
+BENCHMARK_MAIN();
