@@ -1,6 +1,7 @@
 // echoplan: plan which sound to make to identify an object, listen, and decide what to do with it.
 //
 // Exit status: 0 success, 1 internal error, 2 bad input (file, flag or value), 130 interrupted.
+#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
@@ -18,11 +19,14 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", ECHOPLAN_VERSION);
   bool verbose = false;
   app.add_flag("-v,--verbose", verbose, "Log debug messages to stderr");
+  // Logs and progress go to stderr, so stdout carries only what a command prints as its result.
+  spdlog::set_default_logger(spdlog::stderr_color_mt("echoplan"));
   app.parse_complete_callback([&] {
     spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info);
   });
 
   echoplan::cli::add_version_command(app);
+  echoplan::cli::add_trials_command(app);
   echoplan::cli::add_make_problem_command(app);
   echoplan::cli::add_check_command(app);
   echoplan::cli::add_solve_command(app);

@@ -1,0 +1,84 @@
+#include "solvers/leaf_value.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "common/error.h"
+
+namespace echoplan::solvers {
+
+LeafMode parse_leaf_mode(const std::string& text) {
+  if (text == "lookahead") return LeafMode::lookahead;
+  if (text == "heuristic") return LeafMode::heuristic;
+  if (text == "rollout") return LeafMode::rollout;
+  throw InputError("leaf value '" + text + "' is not one of lookahead, heuristic, rollout");
+}
+
+const char* leaf_mode_name(LeafMode mode) {
+  switch (mode) {
+    case LeafMode::lookahead: return "lookahead";
+    case LeafMode::heuristic: return "heuristic";
+    case LeafMode::rollout: return "rollout";
+  }
+  return "?";
+}
+
+namespace {
+
+double random_rollout(const pomdp::Model& model, pomdp::State state, int steps_left, Rng& rng) {
+  const double gamma = model.spec().discount;
+  const int actions = model.num_actions();
+  double total = 0.0;
+  double weight = 1.0;
+  for (int k = 0; k < steps_left; ++k) {
+    const int action = static_cast<int>(uniform01(rng) * actions);
+    pomdp::StepResult step = model.step(state, action, rng);
+    total += weight * step.reward;
+    weight *= gamma;
+    if (step.terminal) return total;
+    state = std::move(step.next);
+  }
+  // Cut off by the depth limit: the model's heuristic stands in for the rest.
+  return total + weight * model.heuristic_value(state);
+}
+
+}  // namespace
+
+void LeafEstimate::add(const LeafOptions& options, const pomdp::Model& model,
+                       const pomdp::State& state, int steps_left, Rng& rng,
+                       const std::vector<pomdp::StepResult>* one_step_each) {
+  ++count_;
+  switch (options.mode) {
+    case LeafMode::heuristic:
+      sums_.resize(1, 0.0);
+      sums_[0] += model.heuristic_value(state);
+      return;
+    case LeafMode::rollout:
+      sums_.resize(1, 0.0);
+      sums_[0] += random_rollout(model, state, steps_left, rng);
+      return;
+    case LeafMode::lookahead: {
+      const int actions = model.num_actions();
+      const double gamma = model.spec().discount;
+      sums_.resize(actions, 0.0);
+      for (int a = 0; a < actions; ++a) {
+        const pomdp::StepResult step = one_step_each ? (*one_step_each)[a] : model.step(state, a, rng);
+        sums_[a] += step.reward + (step.terminal ? 0.0 : gamma * model.heuristic_value(step.next));
+      }
+      return;
+    }
+  }
+}
+
+double LeafEstimate::value() const {
+  if (count_ == 0) return 0.0;
+  // One accumulator is a plain mean; several are per-action means, of which the best counts.
+  return *std::max_element(sums_.begin(), sums_.end()) / count_;
+}
+
+void LeafEstimate::release() {
+  sums_.clear();
+  sums_.shrink_to_fit();
+}
+
+}  // namespace echoplan::solvers

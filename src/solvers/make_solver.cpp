@@ -1,0 +1,18 @@
+#include "solvers/make_solver.h"
+
+#include "common/error.h"
+#include "solvers/abt_solver.h"
+#include "solvers/pomcp_solver.h"
+
+namespace echoplan::solvers {
+
+std::vector<std::string> solver_names() { return {"abt", "pomcp"}; }
+
+std::unique_ptr<Solver> make_solver(const std::string& name, pomdp::ModelPtr model,
+                                    const SearchOptions& options) {
+  if (name == "abt") return std::make_unique<AbtSolver>(std::move(model), options);
+  if (name == "pomcp") return std::make_unique<PomcpSolver>(std::move(model), options);
+  throw InputError("solver '" + name + "' is not one of abt, pomcp");
+}
+
+}  // namespace echoplan::solvers

@@ -1,0 +1,21 @@
+// Builds an online solver by the name users type ("abt", "pomcp").
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pomdp/model.h"
+#include "solvers/search_tree.h"
+#include "solvers/solver.h"
+
+namespace echoplan::solvers {
+
+// The names make_solver() accepts.
+std::vector<std::string> solver_names();
+
+// Throws InputError for an unknown name or invalid options.
+std::unique_ptr<Solver> make_solver(const std::string& name, pomdp::ModelPtr model,
+                                    const SearchOptions& options);
+
+}  // namespace echoplan::solvers

@@ -1,0 +1,139 @@
+// The belief tree that ABT and POMCP share, and the parts of a tree-search solver they have in common.
+//
+// A BeliefNode stands for a history (the root: the agent's current belief). It holds the particles
+// (sampled states) that episodes brought to it, one ActionNode per action tried from it, and a leaf
+// estimate while it is unexpanded. An ActionNode branches on observations (see observation_branch.h)
+// to child BeliefNodes. The solvers differ only in how an episode's returns flow back up:
+// ABT (abt_solver.h) recomputes each Q from its children's values (a max backup over the stored
+// episodes), POMCP (pomcp_solver.h) averages the sampled returns (Monte-Carlo backup).
+//
+// TreeSearchSolver owns the tree: reset, the budget loop, UCB action selection, re-rooting and
+// pruning on update, root replenishment and statistics. Every node registers itself in the solver's
+// NodeCounts while alive, so the counts show that pruned subtrees really are freed.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "pomdp/model.h"
+#include "solvers/leaf_value.h"
+#include "solvers/observation_branch.h"
+#include "solvers/solver.h"
+
+namespace echoplan::solvers {
+
+// Options shared by the tree-search solvers. Validated by validate().
+struct SearchOptions {
+  double exploration = 20.0;     // UCB constant c (reward units): Q + c sqrt(ln N / n); >= 0
+  int max_depth = 60;            // belief nodes deeper than this are valued by the leaf estimate; >= 1
+  int root_particles = 1000;     // particles drawn from the belief at reset / replenishment; >= 1
+  int min_root_particles = 100;  // after update, a root with fewer particles is replenished; >= 0
+  LeafOptions leaf;
+  ObservationBranching branching;
+
+  // Throws InputError naming the offending option.
+  void validate() const;
+};
+
+// Live nodes of one tree (maintained by the nodes' constructors and destructors).
+struct NodeCounts {
+  std::int64_t belief = 0;
+  std::int64_t action = 0;
+};
+
+struct ActionNode;
+
+struct BeliefNode {
+  explicit BeliefNode(NodeCounts* counts);
+  ~BeliefNode();
+  BeliefNode(const BeliefNode&) = delete;
+  BeliefNode& operator=(const BeliefNode&) = delete;
+
+  NodeCounts* counts;
+  std::vector<pomdp::State> particles;              // states episodes brought here
+  std::vector<std::unique_ptr<ActionNode>> actions;  // indexed by action; null until tried
+  std::int64_t visits = 0;                           // episodes that reached this node
+  std::int64_t action_visits = 0;                    // episodes that took an action here
+  bool expanded = false;                             // false while valued by `leaf`
+  LeafEstimate leaf;
+  double value = 0.0;  // ABT: max_a Q (expanded) or the leaf estimate; POMCP: unused
+  // ABT: every filed particle stepped once with every action; per action, the sum of the immediate
+  // rewards, so Q's immediate term averages over all of the node's particles.
+  std::vector<double> particle_reward_sums;
+  std::int64_t particles_evaluated = 0;
+};
+
+struct ObservationChild {
+  pomdp::Observation observation;  // the branch's representative observation
+  std::unique_ptr<BeliefNode> node;
+  std::int64_t arrivals = 0;    // non-terminal transitions into this branch (ABT weights)
+  double counted_value = 0.0;   // the child's value as last folded into the parent's future_sum
+};
+
+struct ActionNode {
+  explicit ActionNode(NodeCounts* counts);
+  ~ActionNode();
+  ActionNode(const ActionNode&) = delete;
+  ActionNode& operator=(const ActionNode&) = delete;
+
+  NodeCounts* counts;
+  std::int64_t visits = 0;
+  double future_sum = 0.0;  // ABT: sum over children of arrivals * value
+  double value = 0.0;       // the action's estimated value, used by UCB and best_action()
+  std::vector<ObservationChild> children;
+};
+
+class TreeSearchSolver : public Solver {
+ public:
+  TreeSearchSolver(pomdp::ModelPtr model, SearchOptions options);
+  TreeSearchSolver(const TreeSearchSolver&) = delete;
+  TreeSearchSolver& operator=(const TreeSearchSolver&) = delete;
+
+  void reset(const pomdp::Belief& belief, Rng& rng) override;
+  void improve(const Budget& budget, Rng& rng) override;
+  int best_action() const override;
+  std::vector<double> root_action_values() const override;
+  void update(int action, const pomdp::Observation& observation, const pomdp::Belief& belief_after,
+              Rng& rng) override;
+  SolverStats stats() const override;
+
+  // Belief nodes in the subtree that update(action, observation) would keep (0 if none), counted
+  // by walking the tree; lets tests check that update() keeps exactly that subtree.
+  std::int64_t subtree_belief_nodes(int action, const pomdp::Observation& observation) const;
+  // Belief and action nodes reachable from the root, counted by walking the tree.
+  NodeCounts reachable_nodes() const;
+
+  const SearchOptions& options() const { return options_; }
+
+ protected:
+  // One episode from a particle of the root, including its backup.
+  virtual void run_episode(Rng& rng) = 0;
+  // Called for each particle reset() or replenishment adds to the root.
+  virtual void root_particle_added(BeliefNode& /*root*/, const pomdp::State& /*state*/, Rng& /*rng*/) {}
+
+  const pomdp::Model& model() const { return *model_; }
+  BeliefNode& root() { return *root_; }
+  const pomdp::State& sample_root_particle(Rng& rng) const;
+  // True when a node at `depth` reached for the visits-th time is valued as a leaf; otherwise the
+  // node is expanded (its leaf accumulators freed) and an action must be chosen.
+  bool visit_as_leaf(BeliefNode& node, int depth);
+  // UCB1 over the node's actions; untried actions first, in index order.
+  int select_action(const BeliefNode& node) const;
+  ActionNode& action_node(BeliefNode& node, int action);
+  // Index of the child of `action` that `observation` branches to, created if new.
+  std::size_t child_for(ActionNode& action, const pomdp::Observation& observation);
+
+ private:
+  std::unique_ptr<BeliefNode> new_belief_node();
+  void replenish_root(const pomdp::Belief& belief, Rng& rng);
+
+  pomdp::ModelPtr model_;
+  SearchOptions options_;
+  NodeCounts counts_;  // declared before root_ so it outlives the nodes
+  std::unique_ptr<BeliefNode> root_;
+  std::int64_t episodes_total_ = 0;
+  std::int64_t episodes_last_ = 0;
+};
+
+}  // namespace echoplan::solvers

@@ -1,0 +1,48 @@
+#!/bin/sh
+# `echoplan trials` end to end: bad flags exit 2 with a message, and the same seed gives
+# byte-identical output files. Usage: trials_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
+set -u
+bin=$1
+src=$2
+problem=$src/problems/audio_objects.yaml
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+# expect_input_error DESCRIPTION EXPECTED_MESSAGE ARGS...: exit status 2 and the message on stderr.
+expect_input_error() {
+  description=$1
+  message=$2
+  shift 2
+  "$bin" trials "$@" >"$work/out" 2>"$work/err"
+  status=$?
+  if [ "$status" -ne 2 ]; then
+    echo "FAIL: $description: exit status $status, expected 2"; failures=$((failures + 1))
+  elif ! grep -q -- "$message" "$work/err"; then
+    echo "FAIL: $description: stderr lacks '$message':"; cat "$work/err"; failures=$((failures + 1))
+  fi
+}
+
+expect_input_error "missing problem file" "nope.yaml: cannot open" --problem "$work/nope.yaml" --out "$work/o"
+expect_input_error "zero trials" "trials must be >= 1" --problem "$problem" --out "$work/o" --trials 0
+expect_input_error "negative per-object" "per-object must be >= 0" --problem "$problem" --out "$work/o" --per-object -2
+expect_input_error "both budgets" "excludes" --problem "$problem" --out "$work/o" --episodes 5 --step-ms 3
+expect_input_error "unknown solver" "solver 'foo' is not one of" --problem "$problem" --out "$work/o" --solver foo
+expect_input_error "unknown leaf value" "leaf value 'random'" --problem "$problem" --out "$work/o" --leaf random
+expect_input_error "zero max steps" "max-steps must be >= 1" --problem "$problem" --out "$work/o" --max-steps 0
+expect_input_error "bad depth" "max depth must be >= 1" --problem "$problem" --out "$work/o" --depth 0
+expect_input_error "missing --out" "out is required" --problem "$problem"
+expect_input_error "not a number" "trials" --problem "$problem" --out "$work/o" --trials many
+
+# Same seed, same files, byte for byte.
+for run in a b; do
+  "$bin" trials --problem "$problem" --trials 4 --episodes 300 --seed 5 --out "$work/$run" >/dev/null 2>&1 \
+    || { echo "FAIL: trials run $run exited $?"; failures=$((failures + 1)); }
+done
+for file in trials.csv steps.csv summary.json; do
+  cmp -s "$work/a/$file" "$work/b/$file" || { echo "FAIL: $file differs between runs"; failures=$((failures + 1)); }
+done
+[ "$(wc -l <"$work/a/trials.csv")" -eq 5 ] || { echo "FAIL: trials.csv should hold a header and 4 rows"; failures=$((failures + 1)); }
+
+[ "$failures" -eq 0 ] && echo "all trials CLI checks passed"
+exit "$failures"
