@@ -110,8 +110,11 @@ class Parser {
 
   void read_names(const std::string& what, std::vector<std::string>& names, int prefix);
   void read_start(const Token& keyword);
-  void read_transition(const Token& keyword);
-  void read_observation(const Token& keyword);
+  // A T: or O: statement: fills `table` [(a * S + row) * columns + column] (columns: states for T,
+  // observations for O) in the single-entry, row or matrix form, or with uniform / identity.
+  void read_probabilities(const Token& keyword, const std::vector<std::string>& column_names,
+                          const std::string& column_kind, bool allow_identity, std::vector<double>& table,
+                          std::vector<int>& row_line);
   void read_reward(const Token& keyword);
   // Fields "x : y : z" after a T/O/R keyword, each resolved against its kind's names; -1 for '*'.
   std::vector<Token> fields(int max_fields);
@@ -237,67 +240,40 @@ void Parser::read_start(const Token& keyword) {
   }
 }
 
-void Parser::read_transition(const Token& keyword) {
+void Parser::read_probabilities(const Token& keyword, const std::vector<std::string>& column_names,
+                                const std::string& column_kind, bool allow_identity, std::vector<double>& table,
+                                std::vector<int>& row_line) {
   require_sizes(keyword);
-  const int ns = static_cast<int>(states_.size());
+  const int ns = static_cast<int>(states_.size()), nc = static_cast<int>(column_names.size());
   const std::vector<Token> f = fields(3);
-  if (f.empty()) fail(keyword.line, "'T' needs ': action' after it");
+  if (f.empty()) fail(keyword.line, "'" + keyword.text + "' needs ': action' after it");
   const int a = resolve(f[0], actions_, "action");
-  const int s = f.size() > 1 ? resolve(f[1], states_, "state") : -1;
-  const int s_next = f.size() > 2 ? resolve(f[2], states_, "state") : -1;
-  const std::vector<Token> values = rest_of_statement();
-  // The numbers this form sets, as a function of (s, s') within the matching rows.
-  std::vector<double> v;
-  bool uniform = values.size() == 1 && values[0].text == "uniform";
-  bool identity = values.size() == 1 && values[0].text == "identity";
-  if (identity && f.size() != 1) fail(values[0].line, "'identity' is only allowed for a whole T matrix");
-  if (uniform && f.size() == 3) fail(values[0].line, "'uniform' is not a single probability");
-  if (!uniform && !identity) v = numbers(values, f.size() == 3 ? 1 : (f.size() == 2 ? ns : ns * ns), keyword);
-  for (int ai = 0; ai < static_cast<int>(actions_.size()); ++ai) {
-    if (a >= 0 && ai != a) continue;
-    for (int si = 0; si < ns; ++si) {
-      if (s >= 0 && si != s) continue;
-      t_row_line_[ai * ns + si] = keyword.line;
-      for (int sj = 0; sj < ns; ++sj) {
-        if (s_next >= 0 && sj != s_next) continue;
-        double p;
-        if (uniform) p = 1.0 / ns;
-        else if (identity) p = si == sj ? 1.0 : 0.0;
-        else if (f.size() == 3) p = v[0];
-        else if (f.size() == 2) p = v[sj];
-        else p = v[si * ns + sj];
-        t_[(static_cast<std::size_t>(ai) * ns + si) * ns + sj] = p;
-      }
-    }
-  }
-}
-
-void Parser::read_observation(const Token& keyword) {
-  require_sizes(keyword);
-  const int ns = static_cast<int>(states_.size()), no = static_cast<int>(observations_.size());
-  const std::vector<Token> f = fields(3);
-  if (f.empty()) fail(keyword.line, "'O' needs ': action' after it");
-  const int a = resolve(f[0], actions_, "action");
-  const int s_next = f.size() > 1 ? resolve(f[1], states_, "state") : -1;
-  const int o = f.size() > 2 ? resolve(f[2], observations_, "observation") : -1;
+  const int row = f.size() > 1 ? resolve(f[1], states_, "state") : -1;
+  const int column = f.size() > 2 ? resolve(f[2], column_names, column_kind) : -1;
   const std::vector<Token> values = rest_of_statement();
   const bool uniform = values.size() == 1 && values[0].text == "uniform";
+  const bool identity = values.size() == 1 && values[0].text == "identity";
+  if (identity && (!allow_identity || f.size() != 1)) {
+    fail(values[0].line, "'identity' is only allowed for a whole T matrix");
+  }
   if (uniform && f.size() == 3) fail(values[0].line, "'uniform' is not a single probability");
+  // The form decides how many numbers follow: one entry, one row, or the whole matrix.
   std::vector<double> v;
-  if (!uniform) v = numbers(values, f.size() == 3 ? 1 : (f.size() == 2 ? no : ns * no), keyword);
+  if (!uniform && !identity) v = numbers(values, f.size() == 3 ? 1 : (f.size() == 2 ? nc : ns * nc), keyword);
   for (int ai = 0; ai < static_cast<int>(actions_.size()); ++ai) {
     if (a >= 0 && ai != a) continue;
-    for (int si = 0; si < ns; ++si) {
-      if (s_next >= 0 && si != s_next) continue;
-      o_row_line_[ai * ns + si] = keyword.line;
-      for (int oi = 0; oi < no; ++oi) {
-        if (o >= 0 && oi != o) continue;
+    for (int ri = 0; ri < ns; ++ri) {
+      if (row >= 0 && ri != row) continue;
+      row_line[ai * ns + ri] = keyword.line;
+      for (int ci = 0; ci < nc; ++ci) {
+        if (column >= 0 && ci != column) continue;
         double p;
-        if (uniform) p = 1.0 / no;
+        if (uniform) p = 1.0 / nc;
+        else if (identity) p = ri == ci ? 1.0 : 0.0;
         else if (f.size() == 3) p = v[0];
-        else if (f.size() == 2) p = v[oi];
-        else p = v[si * no + oi];
-        o_[(static_cast<std::size_t>(ai) * ns + si) * no + oi] = p;
+        else if (f.size() == 2) p = v[ci];
+        else p = v[ri * nc + ci];
+        table[(static_cast<std::size_t>(ai) * ns + ri) * nc + ci] = p;
       }
     }
   }
@@ -367,8 +343,8 @@ std::shared_ptr<const TabularPomdp> Parser::parse() {
       read_start(keyword);
     } else {
       // T, O and R are followed directly by their fields.
-      if (keyword.text == "T") read_transition(keyword);
-      else if (keyword.text == "O") read_observation(keyword);
+      if (keyword.text == "T") read_probabilities(keyword, states_, "state", true, t_, t_row_line_);
+      else if (keyword.text == "O") read_probabilities(keyword, observations_, "observation", false, o_, o_row_line_);
       else read_reward(keyword);
     }
   }

@@ -18,7 +18,7 @@ namespace echoplan::pomdp {
 struct BeliefSettings {
   enum class Type { particle, exact };
   Type type = Type::particle;
-  int particles = 1000;  // > 0; used by the particle filter only
+  int particles = 1000;  // 1 to 10,000,000; used by the particle filter only
 };
 
 // The planner defaults a problem file suggests; the trials command uses them unless flags override.

@@ -212,6 +212,8 @@ BeliefSettings read_belief(const YamlFields& f, const YAML::Node& root) {
   if (const YAML::Node n = f.optional(node, "particles", "belief"); n.IsDefined()) {
     b.particles = f.non_negative_int(n, "belief.particles");
     if (b.particles == 0) f.fail(n, "belief.particles must be at least 1");
+    // Each particle is a full state; past this the belief would not fit in memory.
+    if (b.particles > 10'000'000) f.fail(n, "belief.particles must be at most 10000000");
   }
   return b;
 }

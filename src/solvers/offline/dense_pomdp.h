@@ -1,0 +1,54 @@
+// A discrete POMDP copied once from a pomdp::TabularModel into flat arrays, for the offline solver.
+//
+// The offline solver touches the tables millions of times; virtual calls per entry would dominate, so
+// the tables are copied once, checked, and stored densely (observations) or sparsely (transitions,
+// which are mostly deterministic in object-identification problems).
+//
+// Terminal states are made exact here: a state the model calls terminal gets reward 0 for every
+// action and loops to itself, whatever its rows say, so its value is exactly 0 in both bounds.
+#pragma once
+
+#include <vector>
+
+#include "pomdp/model.h"
+
+namespace echoplan::solvers::offline {
+
+// A belief over the states of a DensePomdp: num_states probabilities summing to 1.
+using BeliefVector = std::vector<double>;
+
+struct Successor {
+  int state = 0;
+  double probability = 0.0;  // > 0
+};
+
+struct DensePomdp {
+  int num_states = 0;
+  int num_actions = 0;
+  int num_observations = 0;
+  double discount = 0.95;  // in (0, 1)
+  // reward[s * num_actions + a]: expected immediate reward; 0 for terminal s.
+  std::vector<double> reward;
+  // terminal[s]: nonzero when s is absorbing with value 0.
+  std::vector<char> terminal;
+  // successors[s * num_actions + a]: the states s' with P(s' | s, a) > 0. Terminal s: {s, 1}.
+  std::vector<std::vector<Successor>> successors;
+  // observation[(a * num_states + s') * num_observations + o] = P(o | s', a).
+  std::vector<double> observation;
+  BeliefVector initial_belief;
+
+  double reward_at(int s, int a) const { return reward[s * num_actions + a]; }
+  const std::vector<Successor>& successors_of(int s, int a) const {
+    return successors[s * num_actions + a];
+  }
+  const double* observation_row(int a, int s_next) const {
+    return &observation[(static_cast<std::size_t>(a) * num_states + s_next) * num_observations];
+  }
+};
+
+// Copies and checks `model`. Throws InputError (naming `source`, e.g. the problem file) when a
+// probability row does not sum to 1 within 1e-6, a probability is negative, the discount is not in
+// (0, 1), or the model has no states, actions or observations.
+DensePomdp make_dense_pomdp(const pomdp::TabularModel& model, const std::string& source = "");
+
+}  // namespace echoplan::solvers::offline
