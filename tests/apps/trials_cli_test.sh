@@ -44,5 +44,15 @@ for file in trials.csv steps.csv summary.json; do
 done
 [ "$(wc -l <"$work/a/trials.csv")" -eq 5 ] || { echo "FAIL: trials.csv should hold a header and 4 rows"; failures=$((failures + 1)); }
 
+# The offline policy as a solver: solve Tiger, then run it; a policy for another problem is refused.
+"$bin" solve --problem "$src/problems/tiger.pomdp" --out "$work/tiger_policy" >/dev/null 2>&1 \
+  || { echo "FAIL: solve tiger"; failures=$((failures + 1)); }
+"$bin" trials --problem "$src/problems/tiger.pomdp" --solver offline --policy "$work/tiger_policy/policy.json" \
+  --trials 3 --max-steps 10 --seed 1 --out "$work/offline" >/dev/null 2>&1 \
+  || { echo "FAIL: offline trials on tiger"; failures=$((failures + 1)); }
+[ "$(wc -l <"$work/offline/steps.csv")" -eq 31 ] || { echo "FAIL: 3 tiger trials of 10 steps should log 30 steps"; failures=$((failures + 1)); }
+expect_input_error "policy of another problem" "the policy is for 2 states" --problem "$problem" --out "$work/o" \
+  --solver offline --policy "$work/tiger_policy/policy.json"
+
 [ "$failures" -eq 0 ] && echo "all trials CLI checks passed"
 exit "$failures"

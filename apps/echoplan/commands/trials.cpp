@@ -17,6 +17,10 @@
 #include "pomdp/problem.h"
 #include "solvers/leaf_value.h"
 #include "solvers/make_solver.h"
+#include "solvers/offline/alpha_vector_policy.h"
+#include "solvers/offline/offline_policy_solver.h"
+#include "solvers/offline/point_based_solver.h"
+#include "solvers/offline/policy_file.h"
 
 namespace echoplan::cli {
 
@@ -43,7 +47,29 @@ struct TrialsFlags {
   int expand_after = solvers::LeafOptions{}.expand_after;
   int root_particles = -1;
   double branch_threshold = 0.0;
+  std::string policy;  // --solver offline: alpha vectors from `echoplan solve --out`
 };
+
+// `--solver offline`: the policy file when given, else the point-based solver run now (to its
+// default precision or time limit).
+std::unique_ptr<solvers::Solver> offline_solver(const TrialsFlags& f, const pomdp::Problem& problem) {
+  namespace off = solvers::offline;
+  const pomdp::TabularModel* tables = problem.model->tabular();
+  if (tables == nullptr)
+    throw InputError(f.problem, 0, "--solver offline needs a discrete problem with tables");
+  auto dense = std::make_shared<const off::DensePomdp>(off::make_dense_pomdp(*tables, f.problem));
+  off::AlphaVectorSet vectors = [&] {
+    if (!f.policy.empty()) return off::load_policy(f.policy, *dense);
+    spdlog::info("solving {} offline (no --policy given)", f.problem);
+    off::PointBasedSolver solver(dense);
+    const off::SolverProgress result = solver.solve();
+    spdlog::info("V*(b0) in [{:.6f}, {:.6f}] after {:.1f} s", result.root.lower, result.root.upper,
+                 result.seconds);
+    return solver.lower_bound();
+  }();
+  return std::make_unique<off::OfflinePolicySolver>(off::AlphaVectorPolicy(dense, std::move(vectors)),
+                                                    problem.model->num_actions());
+}
 
 solvers::SearchOptions search_options(const TrialsFlags& f, const pomdp::Problem& problem) {
   solvers::SearchOptions o;
@@ -109,7 +135,8 @@ void run_trials_command(const TrialsFlags& f) {
   const pomdp::Problem problem = pomdp::load_problem(f.problem);
   const std::string solver_name = f.solver.empty() ? problem.planner.solver : f.solver;
   const solvers::SearchOptions options = search_options(f, problem);
-  auto solver = solvers::make_solver(solver_name, problem.model, options);
+  auto solver = solver_name == "offline" ? offline_solver(f, problem)
+                                          : solvers::make_solver(solver_name, problem.model, options);
   pomdp::ModelEnvironment environment(problem.model);
 
   experiment::TrialOptions trial_options;
@@ -183,7 +210,9 @@ void add_trials_command(CLI::App& app) {
       "  echoplan trials --problem problems/audio_objects.yaml --per-object 10 --episodes 2000 "
       "--seed 1 --out results/abt");
   cmd->add_option("--problem", flags->problem, "Problem file (.yaml or .pomdp)")->required();
-  cmd->add_option("--solver", flags->solver, "abt or pomcp (default: the problem file's)");
+  cmd->add_option("--solver", flags->solver, "abt, pomcp or offline (default: the problem file's)");
+  cmd->add_option("--policy", flags->policy,
+                  "--solver offline: policy.json from `echoplan solve --out` (else solved now)");
   cmd->add_option("--trials", flags->trials, "Number of trials, true state drawn from b0")
       ->capture_default_str();
   cmd->add_option("--per-object", flags->per_object,
