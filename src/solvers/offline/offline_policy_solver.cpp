@@ -4,7 +4,6 @@
 
 #include "common/error.h"
 #include "solvers/offline/belief_expansion.h"
-#include "solvers/offline/point_based_solver.h"
 #include "solvers/offline/policy_file.h"
 
 namespace echoplan::solvers::offline {

@@ -14,6 +14,7 @@
 #include "pomdp/exact_belief.h"
 #include "solvers/offline/alpha_vector_set.h"
 #include "solvers/offline/dense_pomdp.h"
+#include "solvers/offline/point_based_solver.h"
 #include "solvers/solver.h"
 
 namespace echoplan::solvers::offline {
@@ -52,7 +53,6 @@ class OfflinePolicySolver final : public Solver {
 // For the trials runner: solves `model` offline (PointBasedSolver with `options`) and wraps the
 // result, or, when `policy_path` is not empty, loads that policy file (written by `echoplan solve
 // --out`) instead. Throws InputError when the model has no tables or the file does not fit.
-struct SolverOptions;
 std::unique_ptr<Solver> make_offline_solver(const pomdp::ModelPtr& model, const SolverOptions& options,
                                             const std::string& policy_path = "",
                                             const std::string& source = "");
