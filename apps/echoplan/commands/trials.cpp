@@ -17,10 +17,7 @@
 #include "pomdp/problem.h"
 #include "solvers/leaf_value.h"
 #include "solvers/make_solver.h"
-#include "solvers/offline/alpha_vector_policy.h"
 #include "solvers/offline/offline_policy_solver.h"
-#include "solvers/offline/point_based_solver.h"
-#include "solvers/offline/policy_file.h"
 
 namespace echoplan::cli {
 
@@ -53,22 +50,8 @@ struct TrialsFlags {
 // `--solver offline`: the policy file when given, else the point-based solver run now (to its
 // default precision or time limit).
 std::unique_ptr<solvers::Solver> offline_solver(const TrialsFlags& f, const pomdp::Problem& problem) {
-  namespace off = solvers::offline;
-  const pomdp::TabularModel* tables = problem.model->tabular();
-  if (tables == nullptr)
-    throw InputError(f.problem, 0, "--solver offline needs a discrete problem with tables");
-  auto dense = std::make_shared<const off::DensePomdp>(off::make_dense_pomdp(*tables, f.problem));
-  off::AlphaVectorSet vectors = [&] {
-    if (!f.policy.empty()) return off::load_policy(f.policy, *dense);
-    spdlog::info("solving {} offline (no --policy given)", f.problem);
-    off::PointBasedSolver solver(dense);
-    const off::SolverProgress result = solver.solve();
-    spdlog::info("V*(b0) in [{:.6f}, {:.6f}] after {:.1f} s", result.root.lower, result.root.upper,
-                 result.seconds);
-    return solver.lower_bound();
-  }();
-  return std::make_unique<off::OfflinePolicySolver>(off::AlphaVectorPolicy(dense, std::move(vectors)),
-                                                    problem.model->num_actions());
+  if (f.policy.empty()) spdlog::info("solving {} offline (no --policy given)", f.problem);
+  return solvers::offline::make_offline_solver(problem.model, {}, f.policy, f.problem);
 }
 
 solvers::SearchOptions search_options(const TrialsFlags& f, const pomdp::Problem& problem) {

@@ -40,23 +40,6 @@ BeliefExpansion expand(const DensePomdp& pomdp, const BeliefVector& belief, int 
   return out;
 }
 
-bool bayes_update(const DensePomdp& pomdp, BeliefVector& belief, int action, int observation) {
-  BeliefVector predicted = predict(pomdp, belief, action);
-  BeliefVector posterior(pomdp.num_states, 0.0);
-  double total = 0.0;
-  for (int s2 = 0; s2 < pomdp.num_states; ++s2) {
-    posterior[s2] = predicted[s2] * pomdp.observation_row(action, s2)[observation];
-    total += posterior[s2];
-  }
-  if (total <= 0.0) {
-    belief = std::move(predicted);
-    return false;
-  }
-  for (double& x : posterior) x /= total;
-  belief = std::move(posterior);
-  return true;
-}
-
 double expected_reward(const DensePomdp& pomdp, const BeliefVector& belief, int action) {
   double r = 0.0;
   for (int s = 0; s < pomdp.num_states; ++s) r += belief[s] * pomdp.reward_at(s, action);

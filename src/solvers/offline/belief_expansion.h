@@ -1,7 +1,7 @@
-// The Bayes filter over a DensePomdp, and the one-step expansion of a belief that every backup needs.
+// The one-step expansion of a belief that every backup needs: all its children at once.
 //
-// b_ao(s') = P(o | s', a) * sum_s P(s' | s, a) b(s) / P(o | b, a). The solver expands a belief into all
-// its (observation probability, next belief) pairs at once, sharing the prediction step.
+// b_ao(s') = P(o | s', a) * sum_s P(s' | s, a) b(s) / P(o | b, a), for every o, sharing the prediction
+// step. (Tracking one belief during execution is pomdp::ExactBelief's job.)
 #pragma once
 
 #include <vector>
@@ -21,11 +21,6 @@ struct BeliefExpansion {
 BeliefVector predict(const DensePomdp& pomdp, const BeliefVector& belief, int action);
 
 BeliefExpansion expand(const DensePomdp& pomdp, const BeliefVector& belief, int action);
-
-// Conditions `belief` on taking `action` and hearing `observation`. Returns false, leaving the
-// predicted belief (the observation ignored), when the model gives the observation probability 0:
-// the belief never becomes empty.
-bool bayes_update(const DensePomdp& pomdp, BeliefVector& belief, int action, int observation);
 
 // Expected immediate reward sum_s b(s) R(s, a) (terminal states contribute 0).
 double expected_reward(const DensePomdp& pomdp, const BeliefVector& belief, int action);

@@ -31,7 +31,7 @@ struct SolverOptions {
   // Stop after this many trials in one solve() call; <= 0 means no limit. Unlike the time limit,
   // this gives the same result on every machine.
   long max_trials = 0;
-  // A trial never goes deeper than this many steps (a guard; HSVI's own test stops it far earlier).
+  // A trial never goes deeper than this many steps (a guard against very long trials).
   int max_depth = 5000;
   // Seconds between progress reports.
   double progress_interval_seconds = 1.0;
@@ -62,8 +62,8 @@ class PointBasedSolver {
  public:
   using ProgressCallback = std::function<void(const SolverProgress&)>;
 
-  // Initialises the bounds (blind policy, fast informed bound); the model must outlive nothing:
-  // the solver keeps its own copy.
+  // Initialises the bounds (blind policy, fast informed bound). The tables are shared, never
+  // changed.
   PointBasedSolver(std::shared_ptr<const DensePomdp> pomdp, SolverOptions options = {});
 
   // Runs trials until the target gap or the time limit. May be called again to continue.
@@ -80,7 +80,6 @@ class PointBasedSolver {
   const AlphaVectorSet& lower_bound() const { return lower_; }
   const SawtoothUpperBound& upper_bound() const { return upper_; }
   const DensePomdp& pomdp() const { return *pomdp_; }
-  std::shared_ptr<const DensePomdp> pomdp_ptr() const { return pomdp_; }
   SolverProgress progress() const;
 
  private:

@@ -36,7 +36,6 @@ class SawtoothUpperBound {
   void prune();
 
   std::size_t num_points() const { return points_.size(); }
-  const std::vector<double>& corners() const { return corners_; }
 
  private:
   struct Point {

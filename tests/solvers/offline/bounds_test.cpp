@@ -80,17 +80,19 @@ TEST(BeliefExpansion, TigerListenPosterior) {
   EXPECT_DOUBLE_EQ(e.observation_probability[0], 0.5);
   EXPECT_DOUBLE_EQ(e.next_belief[0][0], 0.85);
   // A second "left" after the first: 0.85^2 / (0.85^2 + 0.15^2).
-  BeliefVector b{0.85, 0.15};
-  EXPECT_TRUE(bayes_update(m, b, 0, 0));
-  EXPECT_DOUBLE_EQ(b[0], 0.85 * 0.85 / (0.85 * 0.85 + 0.15 * 0.15));
+  const BeliefExpansion again = expand(m, e.next_belief[0], 0);
+  EXPECT_DOUBLE_EQ(again.next_belief[0][0], 0.85 * 0.85 / (0.85 * 0.85 + 0.15 * 0.15));
+  // Opening a door resets the tiger: the child is uniform whatever was heard.
+  EXPECT_DOUBLE_EQ(expand(m, {0.9, 0.1}, 1).next_belief[1][0], 0.5);
 }
 
 TEST(BeliefExpansion, ImpossibleObservationKeepsThePrediction) {
   const DensePomdp m = make_dense_pomdp(testing::audio_objects());
-  BeliefVector b{0.25, 0.25, 0.25, 0.25, 0.0};
   // After a sorting action everything is in the terminal state, which only ever emits observation 0.
-  EXPECT_FALSE(bayes_update(m, b, testing::kMoveA, 2));
-  EXPECT_EQ(b, (BeliefVector{0, 0, 0, 0, 1}));
+  const BeliefExpansion e = expand(m, {0.25, 0.25, 0.25, 0.25, 0.0}, testing::kMoveA);
+  EXPECT_EQ(e.observation_probability[0], 1.0);
+  EXPECT_EQ(e.observation_probability[2], 0.0);
+  EXPECT_EQ(e.next_belief[2], (BeliefVector{0, 0, 0, 0, 1}));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
-// The solver's alpha vectors used as a policy: the value it really earns, and its file round trip.
-#include "solvers/offline/alpha_vector_policy.h"
+// The solver's alpha vectors used as a policy through the Solver interface: the value it really
+// earns, and its file round trip.
+#include "solvers/offline/offline_policy_solver.h"
 
 #include <gtest/gtest.h>
 
@@ -9,6 +10,8 @@
 
 #include "common/error.h"
 #include "common/rng.h"
+#include "pomdp/exact_belief.h"
+#include "pomdp/problem.h"
 #include "solvers/offline/point_based_solver.h"
 #include "solvers/offline/policy_file.h"
 #include "test_problems.h"
@@ -16,48 +19,48 @@
 namespace echoplan::solvers::offline {
 namespace {
 
-// Draws an index from `probabilities` with one uniform number.
-int draw(const std::vector<double>& probabilities, Rng& rng) {
-  double u = uniform01(rng);
-  for (std::size_t i = 0; i + 1 < probabilities.size(); ++i) {
-    if (u < probabilities[i]) return static_cast<int>(i);
-    u -= probabilities[i];
-  }
-  return static_cast<int>(probabilities.size()) - 1;
-}
-
 class SolvedSeedProblem : public ::testing::Test {
  protected:
   void SetUp() override {
+    problem = pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.pomdp");
+    dense = std::make_shared<const DensePomdp>(make_dense_pomdp(*problem.model->tabular()));
     SolverOptions options;
     options.max_trials = 300;  // a fixed amount of work: the same vectors on every machine
-    solver = std::make_unique<PointBasedSolver>(
-        std::make_shared<const DensePomdp>(make_dense_pomdp(model)), options);
+    solver = std::make_unique<PointBasedSolver>(dense, options);
     result = solver->solve();
   }
-  testing::TableModel model = testing::audio_objects();
+  OfflinePolicySolver policy() const {
+    return OfflinePolicySolver(problem.model, dense, solver->lower_bound());
+  }
+  pomdp::Problem problem;
+  std::shared_ptr<const DensePomdp> dense;
   std::unique_ptr<PointBasedSolver> solver;
   SolverProgress result;
 };
 
-// Simulating the policy against the true tables must earn its lower bound (and cannot beat V*):
-// the mean over many episodes lies within 4 standard errors of [lower, upper].
+// Running the policy through the Solver interface against the model itself must earn its lower
+// bound (and cannot beat V*): the mean over many episodes lies within 4 standard errors of
+// [lower, upper].
 TEST_F(SolvedSeedProblem, PolicyEarnsItsLowerBoundInSimulation) {
-  AlphaVectorPolicy policy(solver->pomdp_ptr(), solver->lower_bound());
+  OfflinePolicySolver agent = policy();
+  const pomdp::ExactBelief b0(problem.model);
   Rng rng(derive_seed(2024, {3}));
   const int episodes = 20000;
+  const double discount = problem.model->spec().discount;
   double sum = 0.0, sum_sq = 0.0;
   for (int e = 0; e < episodes; ++e) {
-    policy.reset();
-    int state = draw(model.b0, rng);
+    agent.reset(b0, rng);
+    pomdp::State state = problem.model->sample_initial_state(rng);
     double total = 0.0, weight = 1.0;
-    for (int step = 0; step < 1000 && !model.is_terminal[state]; ++step) {
-      const int a = policy.best_action();
-      total += weight * model.R[state][a];
-      weight *= model.gamma;
-      state = draw(model.T[a][state], rng);
-      const int o = draw(model.Z[a][state], rng);
-      ASSERT_TRUE(policy.update(a, o));
+    for (int step = 0; step < 1000; ++step) {
+      agent.improve(Budget::episodes(1), rng);
+      const int a = agent.best_action();
+      const pomdp::StepResult r = problem.model->step(state, a, rng);
+      total += weight * r.reward;
+      weight *= discount;
+      if (r.terminal) break;
+      agent.update(a, r.observation, b0, rng);
+      state = r.next;
     }
     sum += total;
     sum_sq += total * total;
@@ -69,13 +72,18 @@ TEST_F(SolvedSeedProblem, PolicyEarnsItsLowerBoundInSimulation) {
 }
 
 TEST_F(SolvedSeedProblem, FirstActionIsStrikeAndBeliefFollowsObservations) {
-  AlphaVectorPolicy policy(solver->pomdp_ptr(), solver->lower_bound());
-  policy.reset();
-  EXPECT_EQ(policy.best_action(), testing::kStrike);
-  EXPECT_NEAR(policy.value(), result.root.lower, 1e-12);
+  OfflinePolicySolver agent = policy();
+  Rng rng(1);
+  agent.reset(pomdp::ExactBelief(problem.model), rng);
+  EXPECT_EQ(agent.best_action(), testing::kStrike);
+  EXPECT_NEAR(agent.value(), result.root.lower, 1e-12);
+  // The one-step lookahead value of the strike is at least the lower bound (a backup never loses).
+  EXPECT_GE(agent.root_action_values()[testing::kStrike], result.root.lower - 1e-9);
   // Strike heard as object 3: P(o=3 | s) = (0.05, 0.05, 0.11, 0.67) normalised.
-  ASSERT_TRUE(policy.update(testing::kStrike, 3));
-  EXPECT_NEAR(policy.belief()[3], 0.67 / (0.05 + 0.05 + 0.11 + 0.67), 1e-12);
+  pomdp::Observation heard;
+  heard.index = 3;
+  agent.update(testing::kStrike, heard, pomdp::ExactBelief(problem.model), rng);
+  EXPECT_NEAR(agent.belief()[3], 0.67 / (0.05 + 0.05 + 0.11 + 0.67), 1e-12);
 }
 
 TEST_F(SolvedSeedProblem, PolicyFileRoundTrip) {
@@ -86,6 +94,12 @@ TEST_F(SolvedSeedProblem, PolicyFileRoundTrip) {
   const BeliefVector b0 = solver->pomdp().initial_belief;
   EXPECT_DOUBLE_EQ(loaded.value(b0), solver->lower_bound().value(b0));
   EXPECT_EQ(loaded.best_action(b0), testing::kStrike);
+  // The same file drives the trials runner's solver.
+  SolverOptions unused;
+  auto agent = make_offline_solver(problem.model, unused, path.string());
+  Rng rng(1);
+  agent->reset(pomdp::ExactBelief(problem.model), rng);
+  EXPECT_EQ(agent->best_action(), testing::kStrike);
   std::filesystem::remove(path);
 }
 
@@ -123,6 +137,36 @@ TEST(PolicyFile, RejectsBadFiles) {
 TEST(PolicyFile, MissingFileIsAnInputError) {
   const DensePomdp m = make_dense_pomdp(testing::tiger());
   EXPECT_THROW(load_policy("/nonexistent/policy.json", m), InputError);
+}
+
+}  // namespace
+}  // namespace echoplan::solvers::offline
+
+namespace echoplan::solvers::offline {
+namespace {
+
+// A generative-only model (no tables), as a continuous-observation problem would be.
+class GenerativeOnlyModel : public pomdp::Model {
+ public:
+  const pomdp::ModelSpec& spec() const override { return spec_; }
+  pomdp::State sample_initial_state(Rng&) const override { return {}; }
+  pomdp::StepResult step(const pomdp::State& s, int, Rng&) const override { return {s, {}, 0.0}; }
+  double observation_likelihood(const pomdp::State&, int, const pomdp::Observation&) const override {
+    return 1.0;
+  }
+
+ private:
+  pomdp::ModelSpec spec_;
+};
+
+TEST(MakeOfflineSolver, ModelWithoutTablesIsAnInputError) {
+  try {
+    make_offline_solver(std::make_shared<GenerativeOnlyModel>(), SolverOptions{}, "", "robot.yaml");
+    ADD_FAILURE() << "accepted a model without tables";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "robot.yaml");
+    EXPECT_NE(e.problem().find("needs a problem with tables"), std::string::npos);
+  }
 }
 
 }  // namespace
