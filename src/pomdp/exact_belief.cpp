@@ -5,9 +5,11 @@
 namespace echoplan::pomdp {
 
 ExactBelief::ExactBelief(ModelPtr model) : model_(std::move(model)), tabular_(model_->tabular()) {
-  if (tabular_ == nullptr) throw std::invalid_argument("ExactBelief needs a model with tables (tabular())");
+  if (tabular_ == nullptr)
+    throw std::invalid_argument("ExactBelief needs a model with tables (tabular())");
   probabilities_ = tabular_->initial_belief();
-  for (int s = 0; s < tabular_->num_states(); ++s) representatives_.push_back(model_->tabular_state(s));
+  for (int s = 0; s < tabular_->num_states(); ++s)
+    representatives_.push_back(model_->tabular_state(s));
 }
 
 State ExactBelief::sample(Rng& rng) const {

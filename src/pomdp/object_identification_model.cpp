@@ -40,7 +40,8 @@ void validate_object_problem(const ObjectProblemData& d) {
   require(k > 0 && m > 0 && j > 0 && c > 0,
           "needs at least one object, sensing action, sorting action and observation symbol");
   require(d.discount > 0.0 && d.discount < 1.0, "discount must be in (0, 1)");
-  require(d.prior.size() == k && is_distribution(d.prior), "prior must be a distribution over objects");
+  require(d.prior.size() == k && is_distribution(d.prior),
+          "prior must be a distribution over objects");
   require(d.observation_table.size() == m, "observation table needs one block per sensing action");
   for (const auto& block : d.observation_table) {
     require(block.size() == k, "observation table needs one row per object");
@@ -50,7 +51,8 @@ void validate_object_problem(const ObjectProblemData& d) {
     }
   }
   require(d.sorting_reward.size() == j, "sorting rewards need one row per sorting action");
-  for (const auto& row : d.sorting_reward) require(row.size() == k, "sorting reward row per object");
+  for (const auto& row : d.sorting_reward)
+    require(row.size() == k, "sorting reward row per object");
   for (const auto& a : d.sensing) {
     require(a.collision_probability >= 0.0 && a.collision_probability <= 1.0,
             "collision probability must be in [0, 1]");
@@ -107,8 +109,10 @@ ObjectIdentificationModel::ObjectIdentificationModel(ObjectProblemData data)
   spec_.name = data_.name;
   for (const auto& a : data_.sensing) spec_.action_names.push_back(a.name);
   for (const auto& a : data_.sorting) spec_.action_names.push_back(a);
-  for (int i = 1; i <= kNumJoints; ++i) spec_.state.continuous_names.push_back("joint" + std::to_string(i));
-  for (const char* axis : {"offset_x", "offset_y", "offset_z"}) spec_.state.continuous_names.push_back(axis);
+  for (int i = 1; i <= kNumJoints; ++i)
+    spec_.state.continuous_names.push_back("joint" + std::to_string(i));
+  for (const char* axis : {"offset_x", "offset_y", "offset_z"})
+    spec_.state.continuous_names.push_back(axis);
   spec_.state.discrete_names = {"object"};
   spec_.state.discrete_value_names = {data_.objects};
   spec_.observation.discrete = true;
@@ -199,7 +203,8 @@ StepResult ObjectIdentificationModel::step(const State& state, int action, Rng& 
     return r;
   }
   for (int i = 0; i < 3; ++i) r.next.continuous[kOffsetX + i] += act.offset_change[i];
-  const double* cdf = &obs_cdf_[(static_cast<std::size_t>(action) * num_objects_ + k) * num_symbols_];
+  const double* cdf =
+      &obs_cdf_[(static_cast<std::size_t>(action) * num_objects_ + k) * num_symbols_];
   r.observation.index = sample_from_cdf(cdf, num_symbols_, uniform01(rng));
   r.reward = act.reward;
   return r;
