@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <map>
@@ -359,6 +360,11 @@ Problem parse_problem_yaml(const std::string& text, const std::string& source_na
 }
 
 Problem load_problem(const std::string& path) {
+  // A directory opens as a stream on Linux and reads as empty; say what is really wrong.
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
+    throw InputError(path, 0, "not a regular file; expected a problem file (.yaml or .pomdp)");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot open the problem file");
   std::ostringstream text;

@@ -190,8 +190,14 @@ TEST(ProblemYaml, GarbageIsAnErrorNotACrash) {
   }
 }
 
-TEST(ProblemYaml, MissingFileIsAnError) {
+TEST(ProblemYaml, MissingFileOrDirectoryIsAnError) {
   EXPECT_THROW(load_problem("/nonexistent/problem.yaml"), InputError);
+  try {
+    load_problem(repo_file("problems"));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(e.problem().find("not a regular file"), std::string::npos);
+  }
 }
 
 }  // namespace
