@@ -9,12 +9,11 @@
 #include <vector>
 
 #include "common/error.h"
+#include "pomdp/distribution.h"
 
 namespace echoplan::pomdp {
 
 namespace {
-
-constexpr double kRowTolerance = 1e-6;
 
 struct Token {
   std::string text;
@@ -243,14 +242,11 @@ void Parser::read_start(const Token& keyword) {
     return;
   }
   start_ = numbers(values, n, keyword);
-  double sum = 0.0;
-  for (double p : start_) {
-    if (p < 0.0) fail(keyword.line, "'start:' has a negative probability");
-    sum += p;
-  }
-  if (std::abs(sum - 1.0) > kRowTolerance) {
+  const RowCheck check = check_row(start_.data(), start_.size());
+  if (!check.in_range) fail(keyword.line, "'start:' has a probability outside [0, 1]");
+  if (!check.ok()) {
     fail(keyword.line,
-         "'start:' distribution sums to " + std::to_string(sum) + ", not 1 (tolerance 1e-6)");
+         "'start:' distribution sums to " + std::to_string(check.sum) + ", not 1 (tolerance 1e-6)");
   }
 }
 
@@ -394,17 +390,14 @@ std::shared_ptr<const TabularPomdp> Parser::parse() {
     for (int ai = 0; ai < na; ++ai) {
       for (int si = 0; si < ns; ++si) {
         const int row = ai * ns + si;
-        double sum = 0.0;
-        for (int j = 0; j < width; ++j) {
-          const double p = table[static_cast<std::size_t>(row) * width + j];
-          if (p < 0.0 || p > 1.0 + kRowTolerance)
-            fail(row_line[row], std::string(kind) + " has a probability outside [0, 1]");
-          sum += p;
+        const RowCheck check = check_row(&table[static_cast<std::size_t>(row) * width], width);
+        if (!check.in_range) {
+          fail(row_line[row], std::string(kind) + " has a probability outside [0, 1]");
         }
-        if (std::abs(sum - 1.0) > kRowTolerance) {
+        if (!check.ok()) {
           std::ostringstream msg;
           msg << kind << " row for action '" << actions_[ai] << "' and state '" << row_names[si]
-              << "' sums to " << sum << ", not 1 (tolerance 1e-6)"
+              << "' sums to " << check.sum << ", not 1 (tolerance 1e-6)"
               << (row_line[row] == 0 ? "; it was never given" : "");
           fail(row_line[row] == 0 ? last_line() : row_line[row], msg.str());
         }

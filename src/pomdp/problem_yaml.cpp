@@ -12,14 +12,13 @@
 
 #include "common/error.h"
 #include "pomdp/cassandra_reader.h"
+#include "pomdp/distribution.h"
 #include "pomdp/problem.h"
 #include "pomdp/yaml_fields.h"
 
 namespace echoplan::pomdp {
 
 namespace {
-
-constexpr double kRowTolerance = 1e-6;
 
 // Index of `name` in `list`, or an error at `node` listing the known names.
 int index_of(const YamlFields& f, const YAML::Node& node, const std::vector<std::string>& list,
@@ -41,7 +40,7 @@ void check_type(const YamlFields& f, const YAML::Node& section, const std::strin
     f.fail(t, "unsupported " + what + ".type '" + got + "' (supported: " + expected + ")");
 }
 
-// A probability row: entries in [0, 1] summing to 1 within kRowTolerance.
+// A probability row: entries in [0, 1] summing to 1 within kProbabilityTolerance.
 std::vector<double> probability_row(const YamlFields& f, const YAML::Node& node, std::size_t size,
                                     const std::string& what) {
   std::vector<double> row = f.numbers(node, what);
@@ -49,14 +48,11 @@ std::vector<double> probability_row(const YamlFields& f, const YAML::Node& node,
     f.fail(node, what + " has " + std::to_string(row.size()) + " entries, expected " +
                      std::to_string(size) + " (one per observation symbol)");
   }
-  double sum = 0.0;
-  for (double p : row) {
-    if (p < 0.0 || p > 1.0) f.fail(node, what + " has a probability outside [0, 1]");
-    sum += p;
-  }
-  if (std::abs(sum - 1.0) > kRowTolerance) {
+  const RowCheck check = check_row(row.data(), row.size());
+  if (!check.in_range) f.fail(node, what + " has a probability outside [0, 1]");
+  if (!check.ok()) {
     std::ostringstream msg;
-    msg << what << " sums to " << std::setprecision(10) << sum << ", not 1 (tolerance 1e-6)";
+    msg << what << " sums to " << std::setprecision(10) << check.sum << ", not 1 (tolerance 1e-6)";
     f.fail(node, msg.str());
   }
   return row;

@@ -4,34 +4,16 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "pomdp/distribution.h"
+
 namespace echoplan::pomdp {
 
 namespace {
 
-constexpr double kRowTolerance = 1e-6;
-
-// Draws an index from probabilities p[0..n-1] (summing to 1) with one uniform draw.
-int sample_index(const double* p, int n, double u) {
-  double acc = 0.0;
-  for (int i = 0; i < n - 1; ++i) {
-    acc += p[i];
-    if (u < acc) return i;
-  }
-  // Rounding can leave u just above the sum; return the last index with probability mass.
-  for (int i = n - 1; i > 0; --i) {
-    if (p[i] > 0.0) return i;
-  }
-  return 0;
-}
-
 void check_distribution(const double* p, int n, const std::string& what) {
-  double sum = 0.0;
-  for (int i = 0; i < n; ++i) {
-    if (!(p[i] >= 0.0 && p[i] <= 1.0 + kRowTolerance))
-      throw std::invalid_argument(what + " has an entry outside [0, 1]");
-    sum += p[i];
-  }
-  if (std::abs(sum - 1.0) > kRowTolerance) throw std::invalid_argument(what + " does not sum to 1");
+  const RowCheck c = check_row(p, static_cast<std::size_t>(n));
+  if (!c.in_range) throw std::invalid_argument(what + " has an entry outside [0, 1]");
+  if (!c.ok()) throw std::invalid_argument(what + " does not sum to 1");
 }
 
 }  // namespace
