@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <map>
 #include <ostream>
+#include <set>
 #include <sstream>
 
 #include "common/error.h"
@@ -266,12 +267,30 @@ PlannerDefaults read_planner(const YamlFields& f, const YAML::Node& root) {
   return p;
 }
 
+// YAML allows a key twice in one mapping and keeps one silently; in a problem file that is
+// always a mistake (two rows for one object, say), so reject it where the second one is.
+void reject_duplicate_keys(const YamlFields& f, const YAML::Node& node) {
+  if (node.IsSequence()) {
+    for (const auto& item : node) reject_duplicate_keys(f, item);
+    return;
+  }
+  if (!node.IsMap()) return;
+  std::set<std::string> seen;
+  for (auto it = node.begin(); it != node.end(); ++it) {
+    if (it->first.IsScalar() && !seen.insert(it->first.Scalar()).second) {
+      f.fail(it->first, "key '" + it->first.Scalar() + "' appears twice in the same mapping");
+    }
+    reject_duplicate_keys(f, it->second);
+  }
+}
+
 Problem read_problem(const YamlFields& f, const YAML::Node& root) {
   if (!root.IsDefined() || root.IsNull()) {
     throw InputError(f.file(), 1,
                      "the file is empty; expected a YAML problem (see docs/problems.md)");
   }
   if (!root.IsMap()) f.fail(root, "expected a YAML mapping of problem keys (see docs/problems.md)");
+  reject_duplicate_keys(f, root);
   f.only_keys(root,
               {"name", "discount", "objects", "actions", "initial_belief", "transition",
                "observation", "reward", "terminal", "heuristic", "belief", "planner"},

@@ -160,6 +160,12 @@ INSTANTIATE_TEST_SUITE_P(
                 "needs 7 numbers"},
         BadCase{"unsupported_part", "type: known_object", "type: rollout", -1,
                 "unsupported heuristic.type"},
+        BadCase{"duplicate_key",
+                "      coffee_mug: [0.11, 0.67, 0.11, 0.11]\n      plastic_cup: [0.11, 0.11, 0.67, "
+                "0.11]\n      paper_base: [0.01",
+                "      coffee_mug: [0.11, 0.67, 0.11, 0.11]\n      coffee_mug: [0.11, 0.11, 0.67, "
+                "0.11]\n      paper_base: [0.01",
+                36, "key 'coffee_mug' appears twice"},
         BadCase{"collision_probability", "    slide: 0\n    strike: 0",
                 "    slide: 2\n    strike: 0", -1, "collision probability must be in [0, 1]"}),
     [](const auto& test_info) { return std::string(test_info.param.label); });
