@@ -9,12 +9,11 @@
 #include <vector>
 
 #include "common/error.h"
+#include "pomdp/distribution.h"
 
 namespace echoplan::pomdp {
 
 namespace {
-
-constexpr double kRowTolerance = 1e-6;
 
 struct Token {
   std::string text;
@@ -53,8 +52,8 @@ std::vector<Token> tokenize(const std::string& text) {
 }
 
 bool is_keyword(const std::string& t) {
-  static const std::set<std::string> keywords = {"discount", "values", "states", "actions",
-                                                 "observations", "start", "T", "O", "R"};
+  static const std::set<std::string> keywords = {
+      "discount", "values", "states", "actions", "observations", "start", "T", "O", "R"};
   return keywords.count(t) > 0;
 }
 
@@ -77,7 +76,8 @@ bool parse_index(const std::string& t, int& value) {
 
 class Parser {
  public:
-  Parser(const std::string& text, std::string file) : tokens_(tokenize(text)), file_(std::move(file)) {}
+  Parser(const std::string& text, std::string file)
+      : tokens_(tokenize(text)), file_(std::move(file)) {}
 
   std::shared_ptr<const TabularPomdp> parse();
 
@@ -89,7 +89,9 @@ class Parser {
   // Which (action, state) rows of T and O were last set on which line (0: never).
   std::vector<int> t_row_line_, o_row_line_;
 
-  [[noreturn]] void fail(int line, const std::string& problem) const { throw InputError(file_, line, problem); }
+  [[noreturn]] void fail(int line, const std::string& problem) const {
+    throw InputError(file_, line, problem);
+  }
   int line() const { return pos_ < tokens_.size() ? tokens_[pos_].line : last_line(); }
   int last_line() const { return tokens_.empty() ? 1 : tokens_.back().line; }
   bool at_end() const { return pos_ >= tokens_.size(); }
@@ -113,13 +115,14 @@ class Parser {
   // A T: or O: statement: fills `table` [(a * S + row) * columns + column] (columns: states for T,
   // observations for O) in the single-entry, row or matrix form, or with uniform / identity.
   void read_probabilities(const Token& keyword, const std::vector<std::string>& column_names,
-                          const std::string& column_kind, bool allow_identity, std::vector<double>& table,
-                          std::vector<int>& row_line);
+                          const std::string& column_kind, bool allow_identity,
+                          std::vector<double>& table, std::vector<int>& row_line);
   void read_reward(const Token& keyword);
   // Fields "x : y : z" after a T/O/R keyword, each resolved against its kind's names; -1 for '*'.
   std::vector<Token> fields(int max_fields);
   int resolve(const Token& t, const std::vector<std::string>& names, const std::string& kind) const;
-  std::vector<double> numbers(const std::vector<Token>& values, std::size_t count, const Token& keyword);
+  std::vector<double> numbers(const std::vector<Token>& values, std::size_t count,
+                              const Token& keyword);
   void require_sizes(const Token& keyword) const;
 
   std::vector<Token> tokens_;
@@ -142,7 +145,8 @@ void Parser::read_names(const std::string& what, std::vector<std::string>& names
   int count = 0;
   if (values.size() == 1 && parse_index(values[0].text, count)) {
     if (count <= 0) fail(at, "'" + what + ":' count must be a positive whole number");
-    for (int i = 0; i < count; ++i) names.push_back(std::string(1, static_cast<char>(prefix)) + std::to_string(i));
+    for (int i = 0; i < count; ++i)
+      names.push_back(std::string(1, static_cast<char>(prefix)) + std::to_string(i));
     return;
   }
   double number = 0.0;
@@ -151,7 +155,8 @@ void Parser::read_names(const std::string& what, std::vector<std::string>& names
   }
   std::set<std::string> seen;
   for (const auto& v : values) {
-    if (v.text == ":" || v.text == "*") fail(v.line, "unexpected '" + v.text + "' in the list of " + what);
+    if (v.text == ":" || v.text == "*")
+      fail(v.line, "unexpected '" + v.text + "' in the list of " + what);
     if (!seen.insert(v.text).second) fail(v.line, "duplicate name '" + v.text + "' in " + what);
     names.push_back(v.text);
   }
@@ -159,16 +164,19 @@ void Parser::read_names(const std::string& what, std::vector<std::string>& names
 
 void Parser::require_sizes(const Token& keyword) const {
   if (states_.empty() || actions_.empty() || observations_.empty()) {
-    fail(keyword.line, "'" + keyword.text + "' before 'states:', 'actions:' and 'observations:' are all given");
+    fail(keyword.line,
+         "'" + keyword.text + "' before 'states:', 'actions:' and 'observations:' are all given");
   }
 }
 
-int Parser::resolve(const Token& t, const std::vector<std::string>& names, const std::string& kind) const {
+int Parser::resolve(const Token& t, const std::vector<std::string>& names,
+                    const std::string& kind) const {
   if (t.text == "*") return -1;
   int index = 0;
   if (parse_index(t.text, index)) {
     if (index >= static_cast<int>(names.size())) {
-      fail(t.line, kind + " index " + t.text + " out of range (there are " + std::to_string(names.size()) + ")");
+      fail(t.line, kind + " index " + t.text + " out of range (there are " +
+                       std::to_string(names.size()) + ")");
     }
     return index;
   }
@@ -183,13 +191,15 @@ std::vector<Token> Parser::fields(int max_fields) {
   while (static_cast<int>(out.size()) < max_fields && !at_end() && tokens_[pos_].text == ":") {
     ++pos_;
     const Token& t = next();
-    if (t.text == ":" || is_keyword(t.text)) fail(t.line, "expected a name, index or '*' after ':'");
+    if (t.text == ":" || is_keyword(t.text))
+      fail(t.line, "expected a name, index or '*' after ':'");
     out.push_back(t);
   }
   return out;
 }
 
-std::vector<double> Parser::numbers(const std::vector<Token>& values, std::size_t count, const Token& keyword) {
+std::vector<double> Parser::numbers(const std::vector<Token>& values, std::size_t count,
+                                    const Token& keyword) {
   if (values.size() != count) {
     fail(values.empty() ? keyword.line : values.front().line,
          "'" + keyword.text + ":' expects " + std::to_string(count) + " number(s) here, found " +
@@ -197,7 +207,8 @@ std::vector<double> Parser::numbers(const std::vector<Token>& values, std::size_
   }
   std::vector<double> out(count);
   for (std::size_t i = 0; i < count; ++i) {
-    if (!parse_number(values[i].text, out[i])) fail(values[i].line, "expected a number, got '" + values[i].text + "'");
+    if (!parse_number(values[i].text, out[i]))
+      fail(values[i].line, "expected a number, got '" + values[i].text + "'");
   }
   return out;
 }
@@ -206,7 +217,8 @@ void Parser::read_start(const Token& keyword) {
   require_sizes(keyword);
   const int n = static_cast<int>(states_.size());
   std::string form;
-  if (!at_end() && (tokens_[pos_].text == "include" || tokens_[pos_].text == "exclude")) form = next().text;
+  if (!at_end() && (tokens_[pos_].text == "include" || tokens_[pos_].text == "exclude"))
+    form = next().text;
   expect_colon("start");
   std::vector<Token> values = rest_of_statement();
   if (values.empty()) fail(keyword.line, "'start:' needs a distribution, 'uniform' or a state");
@@ -230,19 +242,17 @@ void Parser::read_start(const Token& keyword) {
     return;
   }
   start_ = numbers(values, n, keyword);
-  double sum = 0.0;
-  for (double p : start_) {
-    if (p < 0.0) fail(keyword.line, "'start:' has a negative probability");
-    sum += p;
-  }
-  if (std::abs(sum - 1.0) > kRowTolerance) {
-    fail(keyword.line, "'start:' distribution sums to " + std::to_string(sum) + ", not 1 (tolerance 1e-6)");
+  const RowCheck check = check_row(start_.data(), start_.size());
+  if (!check.in_range) fail(keyword.line, "'start:' has a probability outside [0, 1]");
+  if (!check.ok()) {
+    fail(keyword.line,
+         "'start:' distribution sums to " + std::to_string(check.sum) + ", not 1 (tolerance 1e-6)");
   }
 }
 
 void Parser::read_probabilities(const Token& keyword, const std::vector<std::string>& column_names,
-                                const std::string& column_kind, bool allow_identity, std::vector<double>& table,
-                                std::vector<int>& row_line) {
+                                const std::string& column_kind, bool allow_identity,
+                                std::vector<double>& table, std::vector<int>& row_line) {
   require_sizes(keyword);
   const int ns = static_cast<int>(states_.size()), nc = static_cast<int>(column_names.size());
   const std::vector<Token> f = fields(3);
@@ -259,7 +269,8 @@ void Parser::read_probabilities(const Token& keyword, const std::vector<std::str
   if (uniform && f.size() == 3) fail(values[0].line, "'uniform' is not a single probability");
   // The form decides how many numbers follow: one entry, one row, or the whole matrix.
   std::vector<double> v;
-  if (!uniform && !identity) v = numbers(values, f.size() == 3 ? 1 : (f.size() == 2 ? nc : ns * nc), keyword);
+  if (!uniform && !identity)
+    v = numbers(values, f.size() == 3 ? 1 : (f.size() == 2 ? nc : ns * nc), keyword);
   for (int ai = 0; ai < static_cast<int>(actions_.size()); ++ai) {
     if (a >= 0 && ai != a) continue;
     for (int ri = 0; ri < ns; ++ri) {
@@ -268,11 +279,16 @@ void Parser::read_probabilities(const Token& keyword, const std::vector<std::str
       for (int ci = 0; ci < nc; ++ci) {
         if (column >= 0 && ci != column) continue;
         double p;
-        if (uniform) p = 1.0 / nc;
-        else if (identity) p = ri == ci ? 1.0 : 0.0;
-        else if (f.size() == 3) p = v[0];
-        else if (f.size() == 2) p = v[ci];
-        else p = v[ri * nc + ci];
+        if (uniform)
+          p = 1.0 / nc;
+        else if (identity)
+          p = ri == ci ? 1.0 : 0.0;
+        else if (f.size() == 3)
+          p = v[0];
+        else if (f.size() == 2)
+          p = v[ci];
+        else
+          p = v[ri * nc + ci];
         table[(static_cast<std::size_t>(ai) * ns + ri) * nc + ci] = p;
       }
     }
@@ -304,12 +320,14 @@ void Parser::read_reward(const Token& keyword) {
 }
 
 std::shared_ptr<const TabularPomdp> Parser::parse() {
-  if (tokens_.empty()) fail(1, "the file is empty; expected a .pomdp problem (discount:, states:, ...)");
+  if (tokens_.empty())
+    fail(1, "the file is empty; expected a .pomdp problem (discount:, states:, ...)");
   while (!at_end()) {
     const Token keyword = next();
     if (!is_keyword(keyword.text)) {
-      fail(keyword.line, "unexpected '" + keyword.text + "' (expected discount:, values:, states:, actions:, "
-                         "observations:, start:, T:, O: or R:)");
+      fail(keyword.line, "unexpected '" + keyword.text +
+                             "' (expected discount:, values:, states:, actions:, "
+                             "observations:, start:, T:, O: or R:)");
     }
     if (keyword.text == "discount") {
       expect_colon("discount");
@@ -324,15 +342,22 @@ std::shared_ptr<const TabularPomdp> Parser::parse() {
       }
       if (!rewards_.empty()) fail(keyword.line, "'values:' must come before any 'R:' line");
       cost_ = v[0].text == "cost";
-    } else if (keyword.text == "states" || keyword.text == "actions" || keyword.text == "observations") {
+    } else if (keyword.text == "states" || keyword.text == "actions" ||
+               keyword.text == "observations") {
       expect_colon(keyword.text);
-      auto& names = keyword.text == "states" ? states_ : keyword.text == "actions" ? actions_ : observations_;
-      read_names(keyword.text, names, keyword.text[0] == 'o' ? 'o' : keyword.text[0] == 'a' ? 'a' : 's');
+      auto& names = keyword.text == "states"    ? states_
+                    : keyword.text == "actions" ? actions_
+                                                : observations_;
+      read_names(keyword.text, names,
+                 keyword.text[0] == 'o'   ? 'o'
+                 : keyword.text[0] == 'a' ? 'a'
+                                          : 's');
       if (!states_.empty() && !actions_.empty() && !observations_.empty() && t_.empty()) {
         const std::size_t ns = states_.size(), na = actions_.size();
         // Dense tables: refuse sizes that would exhaust memory rather than crash.
         if (static_cast<double>(na) * ns * std::max(ns, observations_.size()) > 5e7) {
-          fail(keyword.line, "problem too large for dense tables (actions x states x states > 5e7)");
+          fail(keyword.line,
+               "problem too large for dense tables (actions x states x states > 5e7)");
         }
         t_.assign(na * ns * ns, 0.0);
         o_.assign(na * ns * observations_.size(), 0.0);
@@ -343,9 +368,12 @@ std::shared_ptr<const TabularPomdp> Parser::parse() {
       read_start(keyword);
     } else {
       // T, O and R are followed directly by their fields.
-      if (keyword.text == "T") read_probabilities(keyword, states_, "state", true, t_, t_row_line_);
-      else if (keyword.text == "O") read_probabilities(keyword, observations_, "observation", false, o_, o_row_line_);
-      else read_reward(keyword);
+      if (keyword.text == "T")
+        read_probabilities(keyword, states_, "state", true, t_, t_row_line_);
+      else if (keyword.text == "O")
+        read_probabilities(keyword, observations_, "observation", false, o_, o_row_line_);
+      else
+        read_reward(keyword);
     }
   }
   if (discount_ < 0.0) fail(1, "missing 'discount:' line");
@@ -356,21 +384,21 @@ std::shared_ptr<const TabularPomdp> Parser::parse() {
   const int ns = static_cast<int>(states_.size()), na = static_cast<int>(actions_.size()),
             no = static_cast<int>(observations_.size());
   // Every row must now be a distribution; point at the line that last wrote it.
-  auto check_rows = [&](const std::vector<double>& table, int width, const std::vector<int>& row_line,
-                        const char* kind, const std::vector<std::string>& row_names) {
+  auto check_rows = [&](const std::vector<double>& table, int width,
+                        const std::vector<int>& row_line, const char* kind,
+                        const std::vector<std::string>& row_names) {
     for (int ai = 0; ai < na; ++ai) {
       for (int si = 0; si < ns; ++si) {
         const int row = ai * ns + si;
-        double sum = 0.0;
-        for (int j = 0; j < width; ++j) {
-          const double p = table[static_cast<std::size_t>(row) * width + j];
-          if (p < 0.0 || p > 1.0 + kRowTolerance) fail(row_line[row], std::string(kind) + " has a probability outside [0, 1]");
-          sum += p;
+        const RowCheck check = check_row(&table[static_cast<std::size_t>(row) * width], width);
+        if (!check.in_range) {
+          fail(row_line[row], std::string(kind) + " has a probability outside [0, 1]");
         }
-        if (std::abs(sum - 1.0) > kRowTolerance) {
+        if (!check.ok()) {
           std::ostringstream msg;
-          msg << kind << " row for action '" << actions_[ai] << "' and state '" << row_names[si] << "' sums to "
-              << sum << ", not 1 (tolerance 1e-6)" << (row_line[row] == 0 ? "; it was never given" : "");
+          msg << kind << " row for action '" << actions_[ai] << "' and state '" << row_names[si]
+              << "' sums to " << check.sum << ", not 1 (tolerance 1e-6)"
+              << (row_line[row] == 0 ? "; it was never given" : "");
           fail(row_line[row] == 0 ? last_line() : row_line[row], msg.str());
         }
       }
@@ -400,7 +428,8 @@ std::shared_ptr<const TabularPomdp> Parser::parse() {
         const double t = t_[(static_cast<std::size_t>(ai) * ns + si) * ns + sj];
         if (t == 0.0) continue;
         for (int oi = 0; oi < no; ++oi) {
-          r += t * o_[(static_cast<std::size_t>(ai) * ns + sj) * no + oi] * outcome[static_cast<std::size_t>(sj) * no + oi];
+          r += t * o_[(static_cast<std::size_t>(ai) * ns + sj) * no + oi] *
+               outcome[static_cast<std::size_t>(sj) * no + oi];
         }
       }
       reward[static_cast<std::size_t>(si) * na + ai] = r;
@@ -423,7 +452,8 @@ std::shared_ptr<const TabularPomdp> Parser::parse() {
 
 }  // namespace
 
-std::shared_ptr<const TabularPomdp> parse_cassandra_pomdp(const std::string& text, const std::string& source_name) {
+std::shared_ptr<const TabularPomdp> parse_cassandra_pomdp(const std::string& text,
+                                                          const std::string& source_name) {
   Parser parser(text, source_name);
   return parser.parse();
 }

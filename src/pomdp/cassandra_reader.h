@@ -1,12 +1,12 @@
 // Reader for Cassandra's `.pomdp` text format (pomdp.org, SARSOP, APPL).
 //
-// Supported: `discount:`, `values: reward|cost`, `states:` / `actions:` / `observations:` as a count
-// or a list of names, `start:` as a distribution, `uniform`, a single state, or the `start include:`
-// / `start exclude:` forms; `T:`, `O:` and `R:` lines with names, indices or `*` wildcards in their
-// single-entry, row and matrix forms; the `identity` and `uniform` keywords; `#` comments. Later
-// lines overwrite earlier ones where they overlap. R(a, s, s', o) entries are folded into the
-// expected reward R(s, a) = sum over s', o of T(s, a, s') O(a, s', o) R(a, s, s', o).
-// Names are generated as s0, s1, ... (a0..., o0...) when a count is given.
+// Supported: `discount:`, `values: reward|cost`, `states:` / `actions:` / `observations:` as a
+// count or a list of names, `start:` as a distribution, `uniform`, a single state, or the `start
+// include:` / `start exclude:` forms; `T:`, `O:` and `R:` lines with names, indices or `*`
+// wildcards in their single-entry, row and matrix forms; the `identity` and `uniform` keywords; `#`
+// comments. Later lines overwrite earlier ones where they overlap. R(a, s, s', o) entries are
+// folded into the expected reward R(s, a) = sum over s', o of T(s, a, s') O(a, s', o) R(a, s, s',
+// o). Names are generated as s0, s1, ... (a0..., o0...) when a count is given.
 #pragma once
 
 #include <memory>

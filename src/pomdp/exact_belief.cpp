@@ -2,25 +2,21 @@
 
 #include <stdexcept>
 
+#include "pomdp/distribution.h"
+
 namespace echoplan::pomdp {
 
 ExactBelief::ExactBelief(ModelPtr model) : model_(std::move(model)), tabular_(model_->tabular()) {
-  if (tabular_ == nullptr) throw std::invalid_argument("ExactBelief needs a model with tables (tabular())");
+  if (tabular_ == nullptr)
+    throw std::invalid_argument("ExactBelief needs a model with tables (tabular())");
   probabilities_ = tabular_->initial_belief();
-  for (int s = 0; s < tabular_->num_states(); ++s) representatives_.push_back(model_->tabular_state(s));
+  for (int s = 0; s < tabular_->num_states(); ++s)
+    representatives_.push_back(model_->tabular_state(s));
 }
 
 State ExactBelief::sample(Rng& rng) const {
-  const double u = uniform01(rng);
-  double acc = 0.0;
-  int last_possible = 0;
-  for (std::size_t s = 0; s < probabilities_.size(); ++s) {
-    if (probabilities_[s] <= 0.0) continue;
-    acc += probabilities_[s];
-    last_possible = static_cast<int>(s);
-    if (u < acc) return representatives_[s];
-  }
-  return representatives_[last_possible];  // rounding left u above the total
+  const int n = static_cast<int>(probabilities_.size());
+  return representatives_[sample_index(probabilities_.data(), n, uniform01(rng))];
 }
 
 bool ExactBelief::update(int action, const Observation& observation, Rng& rng) {

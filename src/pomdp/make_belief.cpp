@@ -9,7 +9,8 @@ namespace echoplan::pomdp {
 BeliefPtr make_belief(const Problem& problem, Rng& rng) {
   if (problem.belief.type == BeliefSettings::Type::exact) {
     if (problem.model->tabular() == nullptr) {
-      throw InputError(problem.source_path, 0, "belief type 'exact' needs a problem with tables; use 'particle'");
+      throw InputError(problem.source_path, 0,
+                       "belief type 'exact' needs a problem with tables; use 'particle'");
     }
     return std::make_unique<ExactBelief>(problem.model);
   }

@@ -10,8 +10,10 @@ void ModelEnvironment::reset(const State& true_state, Rng& /*rng*/) {
 }
 
 Outcome ModelEnvironment::execute(int action, Rng& rng) {
-  if (ended_) throw std::logic_error("ModelEnvironment::execute after the episode ended; call reset()");
-  if (action < 0 || action >= model_->num_actions()) throw std::out_of_range("ModelEnvironment: no such action");
+  if (ended_)
+    throw std::logic_error("ModelEnvironment::execute after the episode ended; call reset()");
+  if (action < 0 || action >= model_->num_actions())
+    throw std::out_of_range("ModelEnvironment: no such action");
   StepResult r = model_->step(state_, action, rng);
   state_ = std::move(r.next);
   ended_ = r.terminal;

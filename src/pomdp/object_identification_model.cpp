@@ -5,31 +5,29 @@
 #include <stdexcept>
 #include <string>
 
+#include "pomdp/distribution.h"
+
 namespace echoplan::pomdp {
 
 namespace {
-
-constexpr double kRowTolerance = 1e-6;
 
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("object problem: " + what);
 }
 
-bool is_distribution(const std::vector<double>& row) {
-  double sum = 0.0;
-  for (double p : row) {
-    if (!(p >= 0.0 && p <= 1.0)) return false;
-    sum += p;
-  }
-  return std::abs(sum - 1.0) <= kRowTolerance;
+// Cumulative sums scaled so the last is exactly 1: rows that sum to 1 only within the tolerance
+// can then never yield a symbol of probability 0 from a draw in [0, 1).
+std::vector<double> cumulative(const std::vector<double>& p) {
+  std::vector<double> cdf(p.size());
+  double acc = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) cdf[i] = acc += p[i];
+  for (double& c : cdf) c /= acc;
+  cdf.back() = 1.0;
+  return cdf;
 }
 
-// Index of the first cumulative entry above u; the last index when rounding leaves u above all.
-int sample_from_cdf(const double* cdf, int n, double u) {
-  for (int i = 0; i < n - 1; ++i) {
-    if (u < cdf[i]) return i;
-  }
-  return n - 1;
+bool is_distribution(const std::vector<double>& row) {
+  return check_row(row.data(), row.size()).ok();
 }
 
 }  // namespace
@@ -40,7 +38,8 @@ void validate_object_problem(const ObjectProblemData& d) {
   require(k > 0 && m > 0 && j > 0 && c > 0,
           "needs at least one object, sensing action, sorting action and observation symbol");
   require(d.discount > 0.0 && d.discount < 1.0, "discount must be in (0, 1)");
-  require(d.prior.size() == k && is_distribution(d.prior), "prior must be a distribution over objects");
+  require(d.prior.size() == k && is_distribution(d.prior),
+          "prior must be a distribution over objects");
   require(d.observation_table.size() == m, "observation table needs one block per sensing action");
   for (const auto& block : d.observation_table) {
     require(block.size() == k, "observation table needs one row per object");
@@ -50,7 +49,8 @@ void validate_object_problem(const ObjectProblemData& d) {
     }
   }
   require(d.sorting_reward.size() == j, "sorting rewards need one row per sorting action");
-  for (const auto& row : d.sorting_reward) require(row.size() == k, "sorting reward row per object");
+  for (const auto& row : d.sorting_reward)
+    require(row.size() == k, "sorting reward row per object");
   for (const auto& a : d.sensing) {
     require(a.collision_probability >= 0.0 && a.collision_probability <= 1.0,
             "collision probability must be in [0, 1]");
@@ -107,8 +107,10 @@ ObjectIdentificationModel::ObjectIdentificationModel(ObjectProblemData data)
   spec_.name = data_.name;
   for (const auto& a : data_.sensing) spec_.action_names.push_back(a.name);
   for (const auto& a : data_.sorting) spec_.action_names.push_back(a);
-  for (int i = 1; i <= kNumJoints; ++i) spec_.state.continuous_names.push_back("joint" + std::to_string(i));
-  for (const char* axis : {"offset_x", "offset_y", "offset_z"}) spec_.state.continuous_names.push_back(axis);
+  for (int i = 1; i <= kNumJoints; ++i)
+    spec_.state.continuous_names.push_back("joint" + std::to_string(i));
+  for (const char* axis : {"offset_x", "offset_y", "offset_z"})
+    spec_.state.continuous_names.push_back(axis);
   spec_.state.discrete_names = {"object"};
   spec_.state.discrete_value_names = {data_.objects};
   spec_.observation.discrete = true;
@@ -137,18 +139,13 @@ ObjectIdentificationModel::ObjectIdentificationModel(ObjectProblemData data)
 
   // Cumulative rows so that a step samples a symbol with one uniform draw and no allocation.
   const int m = num_sensing();
-  obs_cdf_.resize(static_cast<std::size_t>(m) * num_objects_ * num_symbols_);
   for (int a = 0; a < m; ++a) {
     for (int k = 0; k < num_objects_; ++k) {
-      double acc = 0.0;
-      for (int o = 0; o < num_symbols_; ++o) {
-        acc += data_.observation_table[a][k][o];
-        obs_cdf_[(static_cast<std::size_t>(a) * num_objects_ + k) * num_symbols_ + o] = acc;
-      }
+      const std::vector<double> cdf = cumulative(data_.observation_table[a][k]);
+      obs_cdf_.insert(obs_cdf_.end(), cdf.begin(), cdf.end());
     }
   }
-  double acc = 0.0;
-  for (double p : data_.prior) prior_cdf_.push_back(acc += p);
+  prior_cdf_ = cumulative(data_.prior);
 
   // Known-object value: sorting now versus the best stationary sensing loop, whose value solves
   // V = (1-p) r + p r_collision + gamma (1-p) V.
@@ -199,7 +196,8 @@ StepResult ObjectIdentificationModel::step(const State& state, int action, Rng& 
     return r;
   }
   for (int i = 0; i < 3; ++i) r.next.continuous[kOffsetX + i] += act.offset_change[i];
-  const double* cdf = &obs_cdf_[(static_cast<std::size_t>(action) * num_objects_ + k) * num_symbols_];
+  const double* cdf =
+      &obs_cdf_[(static_cast<std::size_t>(action) * num_objects_ + k) * num_symbols_];
   r.observation.index = sample_from_cdf(cdf, num_symbols_, uniform01(rng));
   r.reward = act.reward;
   return r;

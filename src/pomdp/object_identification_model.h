@@ -24,9 +24,9 @@ namespace echoplan::pomdp {
 // A sound-making action and its deterministic effect.
 struct SensingAction {
   std::string name;
-  double reward = -1.0;                         // reward per use (a cost, so usually negative)
-  std::array<double, 3> offset_change{};        // m, added to the object offset (x, y, z)
-  double collision_probability = 0.0;           // in [0, 1]: chance the action hits the table
+  double reward = -1.0;                   // reward per use (a cost, so usually negative)
+  std::array<double, 3> offset_change{};  // m, added to the object offset (x, y, z)
+  double collision_probability = 0.0;     // in [0, 1]: chance the action hits the table
 };
 
 // Everything that defines an object-identification problem. Invariants (checked by
@@ -34,19 +34,19 @@ struct SensingAction {
 // probability row sums to 1 within 1e-6 with entries in [0, 1]; tables sized as documented.
 struct ObjectProblemData {
   std::string name;
-  double discount = 0.99;                       // in (0, 1)
-  std::vector<std::string> objects;             // K object names
-  std::vector<double> prior;                    // K initial probabilities of each object
-  std::array<double, 7> initial_joints{};       // rad, the arm's fixed initial configuration
-  std::array<double, 3> initial_offset{};       // m, the object's offset from the end effector
-  std::vector<SensingAction> sensing;           // M sound-making actions
-  std::vector<std::string> sorting;             // J terminal sorting actions
-  std::vector<std::string> observation_symbols; // C class symbols the classifier reports
+  double discount = 0.99;                        // in (0, 1)
+  std::vector<std::string> objects;              // K object names
+  std::vector<double> prior;                     // K initial probabilities of each object
+  std::array<double, 7> initial_joints{};        // rad, the arm's fixed initial configuration
+  std::array<double, 3> initial_offset{};        // m, the object's offset from the end effector
+  std::vector<SensingAction> sensing;            // M sound-making actions
+  std::vector<std::string> sorting;              // J terminal sorting actions
+  std::vector<std::string> observation_symbols;  // C class symbols the classifier reports
   // observation_table[a][k][o] = P(symbol o | object k, sensing action a); shape M x K x C.
   std::vector<std::vector<std::vector<double>>> observation_table;
   // sorting_reward[j][k] = reward of sorting action j when the object is k; shape J x K.
   std::vector<std::vector<double>> sorting_reward;
-  double collision_reward = -100.0;             // replaces the action's reward on a collision
+  double collision_reward = -100.0;  // replaces the action's reward on a collision
 };
 
 // Throws std::invalid_argument naming the first broken invariant (the YAML loader reports the
@@ -114,7 +114,7 @@ class ObjectIdentificationModel final : public Model {
   int num_objects_, num_symbols_;
   // Cumulative observation rows, flattened: obs_cdf_[(a * K + k) * C + o] = P(symbol <= o | k, a).
   std::vector<double> obs_cdf_;
-  std::vector<double> prior_cdf_;         // K cumulative initial probabilities
+  std::vector<double> prior_cdf_;           // K cumulative initial probabilities
   std::vector<double> known_object_value_;  // K heuristic values, see heuristic_value()
 };
 

@@ -62,7 +62,8 @@ double ParticleBelief::reinvigorate(int action, const Observation& observation, 
       if (ended) break;
     }
     StepResult r = model_->step(s, action, rng);
-    weights_[i] = (ended || r.terminal) ? 0.0 : model_->observation_likelihood(r.next, action, observation);
+    weights_[i] =
+        (ended || r.terminal) ? 0.0 : model_->observation_likelihood(r.next, action, observation);
     proposals_[i] = std::move(r.next);
     total += weights_[i];
   }
@@ -99,10 +100,13 @@ std::vector<double> ParticleBelief::discrete_marginal(int variable) const {
   int total = 0;
   for (int c : counts) total += c;
   std::vector<double> p(counts.size(), 0.0);
-  for (std::size_t i = 0; i < counts.size(); ++i) p[i] = total > 0 ? counts[i] / static_cast<double>(total) : 0.0;
+  for (std::size_t i = 0; i < counts.size(); ++i)
+    p[i] = total > 0 ? counts[i] / static_cast<double>(total) : 0.0;
   return p;
 }
 
-std::unique_ptr<Belief> ParticleBelief::clone() const { return std::make_unique<ParticleBelief>(*this); }
+std::unique_ptr<Belief> ParticleBelief::clone() const {
+  return std::make_unique<ParticleBelief>(*this);
+}
 
 }  // namespace echoplan::pomdp

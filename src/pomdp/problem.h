@@ -24,11 +24,11 @@ struct BeliefSettings {
 // The planner defaults a problem file suggests; the trials command uses them unless flags override.
 // Exactly one of the two budgets is positive.
 struct PlannerDefaults {
-  std::string solver = "abt";      // "abt", "pomcp" or "offline"
-  int episodes = 0;                // episodes per step (0: use step_ms)
-  double step_ms = 2000.0;         // wall time per step in ms (0: use episodes); the seed used 2 s
-  int depth = 100;                 // maximum search depth in steps
-  double exploration = 110.0;      // UCB exploration constant (in reward units)
+  std::string solver = "abt";  // "abt", "pomcp" or "offline"
+  int episodes = 0;            // episodes per step (0: use step_ms)
+  double step_ms = 2000.0;     // wall time per step in ms (0: use episodes); the seed used 2 s
+  int depth = 100;             // maximum search depth in steps
+  double exploration = 110.0;  // UCB exploration constant (in reward units)
 };
 
 struct Problem {

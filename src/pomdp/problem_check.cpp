@@ -33,20 +33,23 @@ void check_tables(const ModelSpec& spec, const TabularModel& t, std::vector<std:
         continue;
       }
       for (int o = 0; o < no; ++o) {
-        if (std::abs(t.observation(a, s, o) - t.observation(a, first, o)) > kSame) same_everywhere = false;
+        if (std::abs(t.observation(a, s, o) - t.observation(a, first, o)) > kSame)
+          same_everywhere = false;
       }
     }
     if (keeps_state && same_everywhere && first >= 0) {
-      out.push_back("action '" + spec.action_names[a] +
-                    "' never changes the state and its observations are the same in every state, so it can "
-                    "never help: remove it or give it observation rows that differ between states");
+      out.push_back(
+          "action '" + spec.action_names[a] +
+          "' never changes the state and its observations are the same in every state, so it can "
+          "never help: remove it or give it observation rows that differ between states");
     }
   }
 
   for (int s = 0; s < ns; ++s) {
     if (t.terminal(s) && start[s] > 0.0) {
       std::ostringstream msg;
-      msg << "the start belief gives probability " << start[s] << " to terminal state '" << state_name(spec, t, s)
+      msg << "the start belief gives probability " << start[s] << " to terminal state '"
+          << state_name(spec, t, s)
           << "', so episodes can be over before they start: give it 0 in the start belief";
       out.push_back(msg.str());
     }
@@ -79,8 +82,9 @@ void check_tables(const ModelSpec& spec, const TabularModel& t, std::vector<std:
   }
   for (int s = 0; s < ns; ++s) {
     if (!reached[s]) {
-      out.push_back("state '" + state_name(spec, t, s) +
-                    "' cannot be reached from the start belief: remove it or give it start probability");
+      out.push_back(
+          "state '" + state_name(spec, t, s) +
+          "' cannot be reached from the start belief: remove it or give it start probability");
     }
   }
   for (int o = 0; o < no; ++o) {
@@ -94,17 +98,20 @@ void check_tables(const ModelSpec& spec, const TabularModel& t, std::vector<std:
 void check_objects(const ObjectProblemData& d, std::vector<std::string>& out) {
   const int k = static_cast<int>(d.objects.size());
   double worst = d.collision_reward;
-  for (const auto& row : d.sorting_reward) worst = std::min(worst, *std::min_element(row.begin(), row.end()));
+  for (const auto& row : d.sorting_reward)
+    worst = std::min(worst, *std::min_element(row.begin(), row.end()));
   for (int i = 0; i < k; ++i) {
     if (d.prior[i] == 0.0) {
-      out.push_back("object '" + d.objects[i] +
-                    "' has prior 0 and will never be considered: give it weight in initial_belief.objects "
-                    "or remove it");
+      out.push_back(
+          "object '" + d.objects[i] +
+          "' has prior 0 and will never be considered: give it weight in initial_belief.objects "
+          "or remove it");
     }
     bool any_better = false;
     for (const auto& row : d.sorting_reward) any_better = any_better || row[i] > worst;
     if (!any_better) {
-      out.push_back("no sorting action pays more than the worst outcome for object '" + d.objects[i] +
+      out.push_back("no sorting action pays more than the worst outcome for object '" +
+                    d.objects[i] +
                     "': give one sorting action a better reward for it in reward.sorting");
     }
   }
@@ -113,15 +120,17 @@ void check_objects(const ObjectProblemData& d, std::vector<std::string>& out) {
       bool identical = true;
       for (std::size_t a = 0; a < d.sensing.size() && identical; ++a) {
         for (std::size_t o = 0; o < d.observation_symbols.size(); ++o) {
-          if (std::abs(d.observation_table[a][i][o] - d.observation_table[a][j][o]) > kSame) identical = false;
+          if (std::abs(d.observation_table[a][i][o] - d.observation_table[a][j][o]) > kSame)
+            identical = false;
         }
       }
       bool same_place = true;
       for (const auto& row : d.sorting_reward) same_place = same_place && row[i] == row[j];
       if (identical && !same_place) {
-        out.push_back("objects '" + d.objects[i] + "' and '" + d.objects[j] +
-                      "' sound the same under every sensing action but belong in different places, so no "
-                      "policy can sort them reliably: add a sensing action that tells them apart");
+        out.push_back(
+            "objects '" + d.objects[i] + "' and '" + d.objects[j] +
+            "' sound the same under every sensing action but belong in different places, so no "
+            "policy can sort them reliably: add a sensing action that tells them apart");
       }
     }
   }
@@ -131,10 +140,12 @@ void check_objects(const ObjectProblemData& d, std::vector<std::string>& out) {
 
 std::vector<std::string> check_problem(const Problem& problem) {
   std::vector<std::string> out;
-  if (const auto* object_model = dynamic_cast<const ObjectIdentificationModel*>(problem.model.get())) {
+  if (const auto* object_model =
+          dynamic_cast<const ObjectIdentificationModel*>(problem.model.get())) {
     check_objects(object_model->data(), out);
   }
-  if (const TabularModel* t = problem.model->tabular()) check_tables(problem.model->spec(), *t, out);
+  if (const TabularModel* t = problem.model->tabular())
+    check_tables(problem.model->spec(), *t, out);
   return out;
 }
 

@@ -3,22 +3,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <map>
 #include <ostream>
+#include <set>
 #include <sstream>
 
 #include "common/error.h"
 #include "pomdp/cassandra_reader.h"
+#include "pomdp/distribution.h"
 #include "pomdp/problem.h"
 #include "pomdp/yaml_fields.h"
 
 namespace echoplan::pomdp {
 
 namespace {
-
-constexpr double kRowTolerance = 1e-6;
 
 // Index of `name` in `list`, or an error at `node` listing the known names.
 int index_of(const YamlFields& f, const YAML::Node& node, const std::vector<std::string>& list,
@@ -36,10 +37,11 @@ void check_type(const YamlFields& f, const YAML::Node& section, const std::strin
                 const std::string& expected) {
   const YAML::Node t = f.require(section, "type", what);
   const std::string got = f.name(t, what + ".type");
-  if (got != expected) f.fail(t, "unsupported " + what + ".type '" + got + "' (supported: " + expected + ")");
+  if (got != expected)
+    f.fail(t, "unsupported " + what + ".type '" + got + "' (supported: " + expected + ")");
 }
 
-// A probability row: entries in [0, 1] summing to 1 within kRowTolerance.
+// A probability row: entries in [0, 1] summing to 1 within kProbabilityTolerance.
 std::vector<double> probability_row(const YamlFields& f, const YAML::Node& node, std::size_t size,
                                     const std::string& what) {
   std::vector<double> row = f.numbers(node, what);
@@ -47,24 +49,23 @@ std::vector<double> probability_row(const YamlFields& f, const YAML::Node& node,
     f.fail(node, what + " has " + std::to_string(row.size()) + " entries, expected " +
                      std::to_string(size) + " (one per observation symbol)");
   }
-  double sum = 0.0;
-  for (double p : row) {
-    if (p < 0.0 || p > 1.0) f.fail(node, what + " has a probability outside [0, 1]");
-    sum += p;
-  }
-  if (std::abs(sum - 1.0) > kRowTolerance) {
+  const RowCheck check = check_row(row.data(), row.size());
+  if (!check.in_range) f.fail(node, what + " has a probability outside [0, 1]");
+  if (!check.ok()) {
     std::ostringstream msg;
-    msg << what << " sums to " << std::setprecision(10) << sum << ", not 1 (tolerance 1e-6)";
+    msg << what << " sums to " << std::setprecision(10) << check.sum << ", not 1 (tolerance 1e-6)";
     f.fail(node, msg.str());
   }
   return row;
 }
 
 template <std::size_t N>
-std::array<double, N> fixed_vector(const YamlFields& f, const YAML::Node& node, const std::string& what) {
+std::array<double, N> fixed_vector(const YamlFields& f, const YAML::Node& node,
+                                   const std::string& what) {
   const std::vector<double> v = f.numbers(node, what);
   if (v.size() != N) {
-    f.fail(node, what + " needs " + std::to_string(N) + " numbers, got " + std::to_string(v.size()));
+    f.fail(node,
+           what + " needs " + std::to_string(N) + " numbers, got " + std::to_string(v.size()));
   }
   std::array<double, N> out{};
   std::copy(v.begin(), v.end(), out.begin());
@@ -75,15 +76,18 @@ void read_initial_belief(const YamlFields& f, const YAML::Node& root, ObjectProb
   const YAML::Node ib = f.require(root, "initial_belief", "the problem");
   f.only_keys(ib, {"type", "joints", "offset", "objects"}, "initial_belief");
   check_type(f, ib, "initial_belief", "fixed_configuration");
-  d.initial_joints = fixed_vector<7>(f, f.require(ib, "joints", "initial_belief"), "initial_belief.joints");
-  d.initial_offset = fixed_vector<3>(f, f.require(ib, "offset", "initial_belief"), "initial_belief.offset");
+  d.initial_joints =
+      fixed_vector<7>(f, f.require(ib, "joints", "initial_belief"), "initial_belief.joints");
+  d.initial_offset =
+      fixed_vector<3>(f, f.require(ib, "offset", "initial_belief"), "initial_belief.offset");
   const YAML::Node objects = f.optional(ib, "objects", "initial_belief");
   const std::size_t k = d.objects.size();
   if (!objects.IsDefined() || (objects.IsScalar() && objects.Scalar() == "uniform")) {
     d.prior.assign(k, 1.0 / static_cast<double>(k));
     return;
   }
-  if (!objects.IsMap()) f.fail(objects, "initial_belief.objects must be 'uniform' or a map object: weight");
+  if (!objects.IsMap())
+    f.fail(objects, "initial_belief.objects must be 'uniform' or a map object: weight");
   d.prior.assign(k, 0.0);
   double total = 0.0;
   for (auto it = objects.begin(); it != objects.end(); ++it) {
@@ -106,14 +110,17 @@ void read_transition(const YamlFields& f, const YAML::Node& root, ObjectProblemD
   if (const YAML::Node oc = f.optional(t, "offset_change", "transition"); oc.IsDefined()) {
     f.expect_map(oc, "transition.offset_change");
     for (auto it = oc.begin(); it != oc.end(); ++it) {
-      const int a = index_of(f, it->first, sensing_names, f.name(it->first, "action"), "sensing action");
-      d.sensing[a].offset_change = fixed_vector<3>(f, it->second, "offset_change of " + sensing_names[a]);
+      const int a =
+          index_of(f, it->first, sensing_names, f.name(it->first, "action"), "sensing action");
+      d.sensing[a].offset_change =
+          fixed_vector<3>(f, it->second, "offset_change of " + sensing_names[a]);
     }
   }
   if (const YAML::Node cp = f.optional(t, "collision_probability", "transition"); cp.IsDefined()) {
     f.expect_map(cp, "transition.collision_probability");
     for (auto it = cp.begin(); it != cp.end(); ++it) {
-      const int a = index_of(f, it->first, sensing_names, f.name(it->first, "action"), "sensing action");
+      const int a =
+          index_of(f, it->first, sensing_names, f.name(it->first, "action"), "sensing action");
       const double p = f.number(it->second, "collision probability of " + sensing_names[a]);
       if (p < 0.0 || p > 1.0) f.fail(it->second, "collision probability must be in [0, 1]");
       d.sensing[a].collision_probability = p;
@@ -139,12 +146,14 @@ void read_observation(const YamlFields& f, const YAML::Node& root, ObjectProblem
   d.observation_table.assign(d.sensing.size(), std::vector<std::vector<double>>(d.objects.size()));
   std::vector<std::vector<bool>> seen(d.sensing.size(), std::vector<bool>(d.objects.size(), false));
   for (auto it = table.begin(); it != table.end(); ++it) {
-    const int a = index_of(f, it->first, sensing_names, f.name(it->first, "action"), "sensing action");
+    const int a =
+        index_of(f, it->first, sensing_names, f.name(it->first, "action"), "sensing action");
     f.expect_map(it->second, "observation.table." + sensing_names[a]);
     for (auto jt = it->second.begin(); jt != it->second.end(); ++jt) {
       const int k = index_of(f, jt->first, d.objects, f.name(jt->first, "object"), "object");
       const std::string what = "observation row (" + sensing_names[a] + ", " + d.objects[k] + ")";
-      d.observation_table[a][k] = probability_row(f, jt->second, d.observation_symbols.size(), what);
+      d.observation_table[a][k] =
+          probability_row(f, jt->second, d.observation_symbols.size(), what);
       seen[a][k] = true;
     }
   }
@@ -159,9 +168,10 @@ void read_observation(const YamlFields& f, const YAML::Node& root, ObjectProblem
 }
 
 // Every key of `map` must name an entry of `list` (catches misspelt action and object names).
-void keys_must_name(const YamlFields& f, const YAML::Node& map, const std::vector<std::string>& list,
-                    const std::string& kind) {
-  for (auto it = map.begin(); it != map.end(); ++it) index_of(f, it->first, list, f.name(it->first, kind), kind);
+void keys_must_name(const YamlFields& f, const YAML::Node& map,
+                    const std::vector<std::string>& list, const std::string& kind) {
+  for (auto it = map.begin(); it != map.end(); ++it)
+    index_of(f, it->first, list, f.name(it->first, kind), kind);
 }
 
 void read_reward(const YamlFields& f, const YAML::Node& root, ObjectProblemData& d) {
@@ -186,8 +196,9 @@ void read_reward(const YamlFields& f, const YAML::Node& root, ObjectProblemData&
     f.expect_map(row, "reward.sorting." + d.sorting[j]);
     keys_must_name(f, row, d.objects, "object");
     for (std::size_t k = 0; k < d.objects.size(); ++k) {
-      d.sorting_reward[j][k] = f.number(f.require(row, d.objects[k], "reward.sorting." + d.sorting[j]),
-                                        "reward of " + d.sorting[j] + " for " + d.objects[k]);
+      d.sorting_reward[j][k] =
+          f.number(f.require(row, d.objects[k], "reward.sorting." + d.sorting[j]),
+                   "reward of " + d.sorting[j] + " for " + d.objects[k]);
     }
   }
   if (const YAML::Node c = f.optional(r, "collision", "reward"); c.IsDefined()) {
@@ -233,7 +244,8 @@ PlannerDefaults read_planner(const YamlFields& f, const YAML::Node& root) {
     f.only_keys(b, {"episodes", "step_ms"}, "planner.budget");
     const YAML::Node e = f.optional(b, "episodes", "planner.budget");
     const YAML::Node ms = f.optional(b, "step_ms", "planner.budget");
-    if (e.IsDefined() == ms.IsDefined()) f.fail(b, "planner.budget needs exactly one of episodes or step_ms");
+    if (e.IsDefined() == ms.IsDefined())
+      f.fail(b, "planner.budget needs exactly one of episodes or step_ms");
     if (e.IsDefined()) {
       p.episodes = f.non_negative_int(e, "planner.budget.episodes");
       if (p.episodes == 0) f.fail(e, "planner.budget.episodes must be at least 1");
@@ -255,13 +267,33 @@ PlannerDefaults read_planner(const YamlFields& f, const YAML::Node& root) {
   return p;
 }
 
+// YAML allows a key twice in one mapping and keeps one silently; in a problem file that is
+// always a mistake (two rows for one object, say), so reject it where the second one is.
+void reject_duplicate_keys(const YamlFields& f, const YAML::Node& node) {
+  if (node.IsSequence()) {
+    for (const auto& item : node) reject_duplicate_keys(f, item);
+    return;
+  }
+  if (!node.IsMap()) return;
+  std::set<std::string> seen;
+  for (auto it = node.begin(); it != node.end(); ++it) {
+    if (it->first.IsScalar() && !seen.insert(it->first.Scalar()).second) {
+      f.fail(it->first, "key '" + it->first.Scalar() + "' appears twice in the same mapping");
+    }
+    reject_duplicate_keys(f, it->second);
+  }
+}
+
 Problem read_problem(const YamlFields& f, const YAML::Node& root) {
   if (!root.IsDefined() || root.IsNull()) {
-    throw InputError(f.file(), 1, "the file is empty; expected a YAML problem (see docs/problems.md)");
+    throw InputError(f.file(), 1,
+                     "the file is empty; expected a YAML problem (see docs/problems.md)");
   }
   if (!root.IsMap()) f.fail(root, "expected a YAML mapping of problem keys (see docs/problems.md)");
-  f.only_keys(root, {"name", "discount", "objects", "actions", "initial_belief", "transition", "observation",
-                     "reward", "terminal", "heuristic", "belief", "planner"},
+  reject_duplicate_keys(f, root);
+  f.only_keys(root,
+              {"name", "discount", "objects", "actions", "initial_belief", "transition",
+               "observation", "reward", "terminal", "heuristic", "belief", "planner"},
               "the problem");
   ObjectProblemData d;
   d.name = f.name(f.require(root, "name", "the problem"), "name");
@@ -337,11 +369,17 @@ Problem parse_problem_yaml(const std::string& text, const std::string& source_na
     return read_problem(f, root);
   } catch (const YAML::Exception& e) {
     // A node shape the checks above did not anticipate: still report it with its position.
-    throw InputError(source_name, std::max(0, e.mark.line + 1), "unexpected YAML structure: " + e.msg);
+    throw InputError(source_name, std::max(0, e.mark.line + 1),
+                     "unexpected YAML structure: " + e.msg);
   }
 }
 
 Problem load_problem(const std::string& path) {
+  // A directory opens as a stream on Linux and reads as empty; say what is really wrong.
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
+    throw InputError(path, 0, "not a regular file; expected a problem file (.yaml or .pomdp)");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot open the problem file");
   std::ostringstream text;
@@ -368,17 +406,22 @@ void write_problem_yaml(std::ostream& out, const ObjectProblemData& d, const Bel
   out << "name: " << d.name << "\n"
       << "discount: " << exact(d.discount) << "\n"
       << "objects: " << names(d.objects) << "\n"
-      << "actions:\n  sensing: " << names(sensing_names) << "\n  sorting: " << names(d.sorting) << "\n"
+      << "actions:\n  sensing: " << names(sensing_names) << "\n  sorting: " << names(d.sorting)
+      << "\n"
       << "initial_belief:\n  type: fixed_configuration\n"
       << "  joints: " << flow_list(d.initial_joints) << "\n"
       << "  offset: " << flow_list(d.initial_offset) << "\n"
       << "  objects:\n";
-  for (std::size_t k = 0; k < d.objects.size(); ++k) out << "    " << d.objects[k] << ": " << exact(d.prior[k]) << "\n";
+  for (std::size_t k = 0; k < d.objects.size(); ++k)
+    out << "    " << d.objects[k] << ": " << exact(d.prior[k]) << "\n";
   out << "transition:\n  type: kinematic\n  offset_change:\n";
-  for (const auto& a : d.sensing) out << "    " << a.name << ": " << flow_list(a.offset_change) << "\n";
+  for (const auto& a : d.sensing)
+    out << "    " << a.name << ": " << flow_list(a.offset_change) << "\n";
   out << "  collision_probability:\n";
-  for (const auto& a : d.sensing) out << "    " << a.name << ": " << exact(a.collision_probability) << "\n";
-  out << "observation:\n  type: table\n  symbols: " << names(d.observation_symbols) << "\n  table:\n";
+  for (const auto& a : d.sensing)
+    out << "    " << a.name << ": " << exact(a.collision_probability) << "\n";
+  out << "observation:\n  type: table\n  symbols: " << names(d.observation_symbols)
+      << "\n  table:\n";
   for (std::size_t a = 0; a < d.sensing.size(); ++a) {
     out << "    " << d.sensing[a].name << ":\n";
     for (std::size_t k = 0; k < d.objects.size(); ++k) {
@@ -397,7 +440,8 @@ void write_problem_yaml(std::ostream& out, const ObjectProblemData& d, const Bel
   out << "  collision: " << exact(d.collision_reward) << "\n"
       << "terminal:\n  type: sorting_or_collision\n"
       << "heuristic:\n  type: known_object\n"
-      << "belief:\n  type: " << (belief.type == BeliefSettings::Type::exact ? "exact" : "particle") << "\n"
+      << "belief:\n  type: " << (belief.type == BeliefSettings::Type::exact ? "exact" : "particle")
+      << "\n"
       << "  particles: " << belief.particles << "\n"
       << "planner:\n  solver: " << planner.solver << "\n  budget:\n";
   if (planner.episodes > 0) {

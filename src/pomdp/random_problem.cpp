@@ -45,7 +45,9 @@ std::vector<double> dirichlet_row(const std::vector<double>& alpha, int keep, Rn
     --*largest;
     ++units[keep];
   }
-  for (std::size_t i = 0; i < row.size(); ++i) row[i] = static_cast<double>(units[i]) / 10000.0;  // division gives the double nearest the 4-decimal value
+  for (std::size_t i = 0; i < row.size(); ++i)
+    row[i] = static_cast<double>(units[i]) /
+             10000.0;  // division gives the double nearest the 4-decimal value
   return row;
 }
 
@@ -54,11 +56,13 @@ std::vector<double> dirichlet_row(const std::vector<double>& alpha, int keep, Rn
 ObjectProblemData make_random_object_problem(const RandomProblemSettings& s, Rng& rng) {
   if (s.objects < 2) throw std::invalid_argument("a problem needs at least 2 objects");
   if (s.objects > 1000) throw std::invalid_argument("at most 1000 objects");
-  if (s.sensing_actions < 1 || s.sensing_actions > 100) throw std::invalid_argument("1 to 100 sensing actions");
+  if (s.sensing_actions < 1 || s.sensing_actions > 100)
+    throw std::invalid_argument("1 to 100 sensing actions");
   if (!(s.concentration > 0.0) || !std::isfinite(s.concentration)) {
     throw std::invalid_argument("concentration must be positive");
   }
-  if (s.objects * kResolution > 0.5) throw std::invalid_argument("too many objects for 4-decimal rows");
+  if (s.objects * kResolution > 0.5)
+    throw std::invalid_argument("too many objects for 4-decimal rows");
   ObjectProblemData d;
   d.name = "random_" + std::to_string(s.objects) + "_objects_" + std::to_string(s.sensing_actions) +
            "_actions_seed_" + std::to_string(s.seed);
@@ -68,7 +72,8 @@ ObjectProblemData make_random_object_problem(const RandomProblemSettings& s, Rng
   d.prior.assign(s.objects, 1.0 / s.objects);
   d.initial_joints = {-2.89527, 1.45058, -0.18396, 2.07696, -0.310356, 0.630897, -1.54233};
   d.initial_offset = {0.1, 0.0, 0.0};
-  for (int a = 0; a < s.sensing_actions; ++a) d.sensing.push_back(SensingAction{numbered("sense", a, s.sensing_actions)});
+  for (int a = 0; a < s.sensing_actions; ++a)
+    d.sensing.push_back(SensingAction{numbered("sense", a, s.sensing_actions)});
   d.sorting = {"move_to_A", "move_to_B"};
 
   const double diagonal = s.concentration * (s.objects - 1);

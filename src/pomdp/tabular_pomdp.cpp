@@ -4,33 +4,16 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "pomdp/distribution.h"
+
 namespace echoplan::pomdp {
 
 namespace {
 
-constexpr double kRowTolerance = 1e-6;
-
-// Draws an index from probabilities p[0..n-1] (summing to 1) with one uniform draw.
-int sample_index(const double* p, int n, double u) {
-  double acc = 0.0;
-  for (int i = 0; i < n - 1; ++i) {
-    acc += p[i];
-    if (u < acc) return i;
-  }
-  // Rounding can leave u just above the sum; return the last index with probability mass.
-  for (int i = n - 1; i > 0; --i) {
-    if (p[i] > 0.0) return i;
-  }
-  return 0;
-}
-
 void check_distribution(const double* p, int n, const std::string& what) {
-  double sum = 0.0;
-  for (int i = 0; i < n; ++i) {
-    if (!(p[i] >= 0.0 && p[i] <= 1.0 + kRowTolerance)) throw std::invalid_argument(what + " has an entry outside [0, 1]");
-    sum += p[i];
-  }
-  if (std::abs(sum - 1.0) > kRowTolerance) throw std::invalid_argument(what + " does not sum to 1");
+  const RowCheck c = check_row(p, static_cast<std::size_t>(n));
+  if (!c.in_range) throw std::invalid_argument(what + " has an entry outside [0, 1]");
+  if (!c.ok()) throw std::invalid_argument(what + " does not sum to 1");
 }
 
 }  // namespace
@@ -41,8 +24,10 @@ TabularPomdp::TabularPomdp(TabularPomdpData data)
       num_actions_(static_cast<int>(data_.action_names.size())),
       num_observations_(static_cast<int>(data_.observation_names.size())) {
   const std::size_t s = num_states_, a = num_actions_, o = num_observations_;
-  if (s == 0 || a == 0 || o == 0) throw std::invalid_argument("a POMDP needs states, actions and observations");
-  if (!(data_.discount > 0.0 && data_.discount < 1.0)) throw std::invalid_argument("discount must be in (0, 1)");
+  if (s == 0 || a == 0 || o == 0)
+    throw std::invalid_argument("a POMDP needs states, actions and observations");
+  if (!(data_.discount > 0.0 && data_.discount < 1.0))
+    throw std::invalid_argument("discount must be in (0, 1)");
   if (data_.transition.size() != a * s * s || data_.observation.size() != a * s * o ||
       data_.reward.size() != s * a || data_.start.size() != s) {
     throw std::invalid_argument("POMDP tables have the wrong sizes");
@@ -106,10 +91,12 @@ State TabularPomdp::sample_initial_state(Rng& rng) const {
 StepResult TabularPomdp::step(const State& state, int action, Rng& rng) const {
   const int s = state.discrete[0];
   StepResult r;
-  const double* t_row = &data_.transition[(static_cast<std::size_t>(action) * num_states_ + s) * num_states_];
+  const double* t_row =
+      &data_.transition[(static_cast<std::size_t>(action) * num_states_ + s) * num_states_];
   const int s_next = sample_index(t_row, num_states_, uniform01(rng));
   const double* o_row =
-      &data_.observation[(static_cast<std::size_t>(action) * num_states_ + s_next) * num_observations_];
+      &data_.observation[(static_cast<std::size_t>(action) * num_states_ + s_next) *
+                         num_observations_];
   r.next.discrete = {s_next};
   r.observation.index = sample_index(o_row, num_observations_, uniform01(rng));
   r.reward = reward(s, action);
@@ -124,6 +111,8 @@ double TabularPomdp::observation_likelihood(const State& next_state, int action,
   return TabularPomdp::observation(action, next_state.discrete[0], o);
 }
 
-double TabularPomdp::heuristic_value(const State& state) const { return mdp_value_[state.discrete[0]]; }
+double TabularPomdp::heuristic_value(const State& state) const {
+  return mdp_value_[state.discrete[0]];
+}
 
 }  // namespace echoplan::pomdp

@@ -52,9 +52,12 @@ class TabularPomdp final : public Model, public TabularModel {
     return data_.transition[(static_cast<std::size_t>(a) * num_states_ + s) * num_states_ + s_next];
   }
   double observation(int a, int s_next, int o) const override {
-    return data_.observation[(static_cast<std::size_t>(a) * num_states_ + s_next) * num_observations_ + o];
+    return data_
+        .observation[(static_cast<std::size_t>(a) * num_states_ + s_next) * num_observations_ + o];
   }
-  double reward(int s, int a) const override { return data_.reward[static_cast<std::size_t>(s) * num_actions_ + a]; }
+  double reward(int s, int a) const override {
+    return data_.reward[static_cast<std::size_t>(s) * num_actions_ + a];
+  }
   bool terminal(int s) const override { return absorbing_[s]; }
   double discount() const override { return data_.discount; }
   std::vector<double> initial_belief() const override { return data_.start; }

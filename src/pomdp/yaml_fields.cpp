@@ -86,7 +86,8 @@ std::vector<std::string> YamlFields::names(const YAML::Node& node, const std::st
   std::set<std::string> seen;
   for (const auto& item : node) {
     out.push_back(name(item, "each entry of " + what));
-    if (!seen.insert(out.back()).second) fail(item, "duplicate name '" + out.back() + "' in " + what);
+    if (!seen.insert(out.back()).second)
+      fail(item, "duplicate name '" + out.back() + "' in " + what);
   }
   if (out.empty()) fail(node, what + " must not be empty");
   return out;

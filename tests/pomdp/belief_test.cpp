@@ -26,7 +26,8 @@ std::string seed_text() {
 }
 
 // Bayes' rule for the seed problem written out: uniform prior times the table entries, normalised.
-std::vector<double> hand_posterior(const ObjectProblemData& d, const std::vector<std::pair<int, int>>& steps) {
+std::vector<double> hand_posterior(const ObjectProblemData& d,
+                                   const std::vector<std::pair<int, int>>& steps) {
   std::vector<double> p(4, 0.25);
   for (auto [a, o] : steps) {
     for (int k = 0; k < 4; ++k) p[k] *= d.observation_table[a][k][o];
@@ -54,7 +55,8 @@ TEST(ExactBelief, SeedProblemMatchesBayesAndTracksTheOffset) {
   const auto& d = dynamic_cast<const ObjectIdentificationModel&>(*p.model).data();
   ExactBelief b(p.model);
   Rng rng(2);
-  const std::vector<std::pair<int, int>> steps = {{kStrike, 0}, {kSlide, 1}, {kStrike, 0}, {kSlide, 2}};
+  const std::vector<std::pair<int, int>> steps = {
+      {kStrike, 0}, {kSlide, 1}, {kStrike, 0}, {kSlide, 2}};
   for (auto [a, o] : steps) EXPECT_TRUE(b.update(a, Observation{o, {}}, rng));
   const std::vector<double> expected = hand_posterior(d, steps);
   const std::vector<double> marginal = b.discrete_marginal(0);
@@ -89,7 +91,8 @@ TEST(ExactBelief, ImpossibleObservationKeepsThePrediction) {
 TEST(ParticleBelief, MatchesTheExactPosteriorWithinSamplingError) {
   const Problem p = load_problem(repo_file("problems/audio_objects.yaml"));
   const int n = 20000;
-  const std::vector<std::pair<int, int>> steps = {{kStrike, 0}, {kStrike, 1}, {kSlide, 1}, {kStrike, 1}};
+  const std::vector<std::pair<int, int>> steps = {
+      {kStrike, 0}, {kStrike, 1}, {kSlide, 1}, {kStrike, 1}};
   for (std::uint64_t seed : {11u, 12u, 13u}) {
     Rng rng(seed);
     ParticleBelief particles(p.model, n, rng);
@@ -101,7 +104,8 @@ TEST(ParticleBelief, MatchesTheExactPosteriorWithinSamplingError) {
     const std::vector<double> pm = particles.discrete_marginal(0);
     const std::vector<double> em = exact.discrete_marginal(0);
     const double bound = 4 * 0.5 * std::sqrt(static_cast<double>(steps.size()) / n);
-    for (int k = 0; k < 4; ++k) EXPECT_NEAR(pm[k], em[k], bound) << "seed " << seed << " object " << k;
+    for (int k = 0; k < 4; ++k)
+      EXPECT_NEAR(pm[k], em[k], bound) << "seed " << seed << " object " << k;
     const std::vector<int> counts = particles.particle_counts(0);
     EXPECT_EQ(counts[0] + counts[1] + counts[2] + counts[3], n);
   }
@@ -146,7 +150,8 @@ TEST(ParticleBelief, ReinvigoratesFromTheInitialBeliefReplayingHistory) {
   for (const State& s : forced.particles()) EXPECT_NEAR(s.continuous[7], 0.15, 1e-12);
 
   // With history: b has slid once already; reinvigoration must replay that slide as well.
-  for (int i = 0; i < 20 && b.particle_counts(0)[0] < 500; ++i) b.update(kSlide, Observation{0, {}}, rng);
+  for (int i = 0; i < 20 && b.particle_counts(0)[0] < 500; ++i)
+    b.update(kSlide, Observation{0, {}}, rng);
   ASSERT_EQ(b.particle_counts(0)[0], 500);
   const double offset_before = b.particles()[0].continuous[7];
   EXPECT_FALSE(b.update(kSlide, Observation{1, {}}, rng));

@@ -1,8 +1,9 @@
 // The Cassandra .pomdp reader: tables of known files, every syntactic form, and its errors.
+#include "pomdp/cassandra_reader.h"
+
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "pomdp/cassandra_reader.h"
 #include "pomdp/problem.h"
 #include "test_paths.h"
 
@@ -18,7 +19,8 @@ TEST(CassandraReader, TigerTables) {
   ASSERT_EQ(t.num_actions(), 3);
   ASSERT_EQ(t.num_observations(), 2);
   EXPECT_EQ(t.discount(), 0.95);
-  EXPECT_EQ(p.model->spec().action_names, (std::vector<std::string>{"listen", "open-left", "open-right"}));
+  EXPECT_EQ(p.model->spec().action_names,
+            (std::vector<std::string>{"listen", "open-left", "open-right"}));
   EXPECT_EQ(t.initial_belief(), (std::vector<double>{0.5, 0.5}));
   // listen keeps the tiger where it is and hears it right 85% of the time.
   EXPECT_EQ(t.transition(0, 0, 0), 1.0);
@@ -58,8 +60,10 @@ TEST(CassandraReader, AudioObjectsPomdpEqualsTheYamlProblem) {
     EXPECT_EQ(a.terminal(s), b.terminal(s)) << s;
     for (int act = 0; act < a.num_actions(); ++act) {
       EXPECT_EQ(a.reward(s, act), b.reward(s, act)) << s << " " << act;
-      for (int s2 = 0; s2 < a.num_states(); ++s2) EXPECT_EQ(a.transition(s, act, s2), b.transition(s, act, s2));
-      for (int o = 0; o < a.num_observations(); ++o) EXPECT_EQ(a.observation(act, s, o), b.observation(act, s, o));
+      for (int s2 = 0; s2 < a.num_states(); ++s2)
+        EXPECT_EQ(a.transition(s, act, s2), b.transition(s, act, s2));
+      for (int o = 0; o < a.num_observations(); ++o)
+        EXPECT_EQ(a.observation(act, s, o), b.observation(act, s, o));
     }
   }
   EXPECT_TRUE(a.terminal(4));
@@ -85,7 +89,8 @@ O: 0 : 1 : 0 1
 O: 0 : 1 : 1 0
 R: * : * : * : * 2
 R: 1 : 2 : * : * 4
-)", "counts.pomdp");
+)",
+                                       "counts.pomdp");
   EXPECT_EQ(m->num_states(), 3);
   EXPECT_EQ(m->spec().action_names, (std::vector<std::string>{"a0", "a1"}));
   EXPECT_EQ(m->initial_belief(), (std::vector<double>{0.2, 0.3, 0.5}));
@@ -117,14 +122,16 @@ O: go
 1 0
 R: go : a : b : x 8
 R: go : a : * : y 4
-)", "outcome.pomdp");
+)",
+                                       "outcome.pomdp");
   // From a: s'=a (0.25): o=x 0.5 -> 0, o=y 0.5 -> 4; s'=b (0.75): x (1.0) -> 8.
   EXPECT_DOUBLE_EQ(m->reward(0, 0), 0.25 * 0.5 * 4 + 0.75 * 1.0 * 8);
   EXPECT_EQ(m->initial_belief(), (std::vector<double>{1.0, 0.0}));
 }
 
 TEST(CassandraReader, StartIncludeExcludeForms) {
-  const std::string head = "discount: 0.9\nstates: a b c d\nactions: x\nobservations: o\nT: x identity\nO: x uniform\n";
+  const std::string head =
+      "discount: 0.9\nstates: a b c d\nactions: x\nobservations: o\nT: x identity\nO: x uniform\n";
   EXPECT_EQ(parse_cassandra_pomdp(head + "start include: a c\n", "s.pomdp")->initial_belief(),
             (std::vector<double>{0.5, 0, 0.5, 0}));
   EXPECT_EQ(parse_cassandra_pomdp(head + "start exclude: b\n", "s.pomdp")->initial_belief(),
@@ -168,7 +175,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadPomdp{"comments_only", "# nothing\n# here\n", 1, "empty"},
         BadPomdp{"garbage", "hello world\n", 1, "unexpected 'hello'"},
         BadPomdp{"binary", "\x01\x02\xff\n", 1, "unexpected"},
-        BadPomdp{"missing_discount", "states: a\nactions: x\nobservations: o\nT: x identity\nO: x uniform\n", 1,
+        BadPomdp{"missing_discount",
+                 "states: a\nactions: x\nobservations: o\nT: x identity\nO: x uniform\n", 1,
                  "missing 'discount:'"},
         BadPomdp{"bad_discount", "discount: 2\n", 1, "discount must be in (0, 1)"},
         BadPomdp{"discount_not_number", "discount: high\n", 1, "expected a number"},
@@ -180,14 +188,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadPomdp{"row_never_given", HEAD "T: x identity\nO: x : a uniform\n", 6, "never given"},
         BadPomdp{"wrong_count", HEAD "T: x\n1 0\n0\n", 6, "expects 4 number(s)"},
         BadPomdp{"not_a_number", HEAD "T: x : a\n1 zero\n", 6, "expected a number, got 'zero'"},
-        BadPomdp{"table_before_sizes", "discount: 0.9\nstates: 2\nT: 0 identity\n", 3, "before 'states:'"},
+        BadPomdp{"table_before_sizes", "discount: 0.9\nstates: 2\nT: 0 identity\n", 3,
+                 "before 'states:'"},
         BadPomdp{"negative_count", "discount: 0.9\nstates: -2\n", 2, "positive whole number"},
         BadPomdp{"bad_values", HEAD "values: money\n", 5, "'reward' or 'cost'"},
         BadPomdp{"missing_colon", "discount 0.9\n", 1, "expected ':'"},
         BadPomdp{"start_sum", HEAD "start: 0.5 0.4\n", 5, "sums to"},
         BadPomdp{"duplicate_state", "discount: 0.9\nstates: a a\n", 2, "duplicate name 'a'"},
         BadPomdp{"reward_needs_state", HEAD "R: x 5\n", 5, "at least"},
-        BadPomdp{"too_large", "discount: 0.9\nstates: 100000\nactions: 10\nobservations: 2\n", 4, "too large"}),
+        BadPomdp{"too_large", "discount: 0.9\nstates: 100000\nactions: 10\nobservations: 2\n", 4,
+                 "too large"}),
     [](const auto& test_info) { return std::string(test_info.param.label); });
 #undef HEAD
 

@@ -22,14 +22,24 @@ std::string read_text(const std::string& path) {
 
 // One random edit: delete a span, duplicate a span, overwrite a byte, or truncate.
 std::string corrupt(std::string text, Rng& rng) {
-  const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(uniform01(rng) * static_cast<double>(n)); };
+  const auto pick = [&](std::size_t n) {
+    return static_cast<std::size_t>(uniform01(rng) * static_cast<double>(n));
+  };
   const std::size_t at = pick(text.size());
   const std::size_t len = 1 + pick(40);
   switch (pick(4)) {
-    case 0: text.erase(at, len); break;
-    case 1: text.insert(at, text.substr(at, len)); break;
-    case 2: text[at] = static_cast<char>(pick(256)); break;
-    default: text.resize(at); break;
+    case 0:
+      text.erase(at, len);
+      break;
+    case 1:
+      text.insert(at, text.substr(at, len));
+      break;
+    case 2:
+      text[at] = static_cast<char>(pick(256));
+      break;
+    default:
+      text.resize(at);
+      break;
   }
   return text;
 }
@@ -49,7 +59,9 @@ void fuzz(const std::string& file, Parse parse, std::uint64_t seed) {
       ++rejected;
       EXPECT_GE(err.line(), 0);
     } catch (const std::exception& other) {
-      ADD_FAILURE() << file << " corruption " << i << " threw a non-input error: " << other.what() << "\n" << text;
+      ADD_FAILURE() << file << " corruption " << i << " threw a non-input error: " << other.what()
+                    << "\n"
+                    << text;
       return;
     }
   }
@@ -58,12 +70,15 @@ void fuzz(const std::string& file, Parse parse, std::uint64_t seed) {
 }
 
 TEST(MalformedInput, YamlCorruptionsAreInputErrors) {
-  fuzz("problems/audio_objects.yaml", [](const std::string& t) { parse_problem_yaml(t, "fuzz.yaml"); }, 1);
+  fuzz(
+      "problems/audio_objects.yaml",
+      [](const std::string& t) { parse_problem_yaml(t, "fuzz.yaml"); }, 1);
 }
 
 TEST(MalformedInput, PomdpCorruptionsAreInputErrors) {
   for (const char* file : {"problems/tiger.pomdp", "problems/audio_objects.pomdp"}) {
-    fuzz(file, [](const std::string& t) { parse_cassandra_pomdp(t, "fuzz.pomdp"); }, 2);
+    fuzz(
+        file, [](const std::string& t) { parse_cassandra_pomdp(t, "fuzz.pomdp"); }, 2);
   }
 }
 

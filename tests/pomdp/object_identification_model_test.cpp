@@ -16,7 +16,8 @@ using testing::repo_file;
 class SeedModel : public ::testing::Test {
  protected:
   Problem problem = load_problem(repo_file("problems/audio_objects.yaml"));
-  const ObjectIdentificationModel& model = dynamic_cast<const ObjectIdentificationModel&>(*problem.model);
+  const ObjectIdentificationModel& model =
+      dynamic_cast<const ObjectIdentificationModel&>(*problem.model);
   static constexpr int kSlide = 0, kStrike = 1, kMoveA = 2, kMoveB = 3;
 };
 
@@ -81,7 +82,8 @@ TEST_F(SeedModel, SampledObservationsFollowTheTable) {
       EXPECT_EQ(counts[4], 0);
       for (int o = 0; o < 4; ++o) {
         const double p = model.data().observation_table[a][k][o];
-        EXPECT_NEAR(counts[o] / double(n), p, 5 * std::sqrt(p * (1 - p) / n) + 1e-12) << a << k << o;
+        EXPECT_NEAR(counts[o] / double(n), p, 5 * std::sqrt(p * (1 - p) / n) + 1e-12)
+            << a << k << o;
         EXPECT_EQ(model.observation_likelihood(s, a, Observation{o, {}}), p);
       }
     }

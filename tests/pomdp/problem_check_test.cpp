@@ -1,8 +1,9 @@
 // The problem checker finds each kind of likely mistake, and nothing in the shipped problems.
+#include "pomdp/problem_check.h"
+
 #include <gtest/gtest.h>
 
 #include "pomdp/cassandra_reader.h"
-#include "pomdp/problem_check.h"
 #include "test_paths.h"
 
 namespace echoplan::pomdp {
@@ -18,7 +19,8 @@ bool mentions(const std::vector<std::string>& findings, const std::string& part)
 }
 
 TEST(ProblemCheck, ShippedProblemsAreClean) {
-  for (const char* file : {"problems/audio_objects.yaml", "problems/audio_objects.pomdp", "problems/tiger.pomdp"}) {
+  for (const char* file :
+       {"problems/audio_objects.yaml", "problems/audio_objects.pomdp", "problems/tiger.pomdp"}) {
     EXPECT_EQ(check_problem(load_problem(repo_file(file))), std::vector<std::string>{}) << file;
   }
 }
@@ -60,7 +62,8 @@ R: look : a : * : * -1
 R: look : b : * : * -1
 R: wait : a : * : * -1
 R: wait : b : * : * -1
-)", "mistakes.pomdp");
+)",
+                                  "mistakes.pomdp");
   const std::vector<std::string> findings = check_problem(p);
   EXPECT_TRUE(mentions(findings, "action 'look' never changes the state"));
   EXPECT_TRUE(mentions(findings, "terminal state 'end'"));

@@ -36,15 +36,18 @@ TEST(ProblemYaml, SeedProblemMatchesTheReport) {
   const Problem p = load_problem(repo_file("problems/audio_objects.yaml"));
   const auto& m = object_model(p);
   const ObjectProblemData& d = m.data();
-  EXPECT_EQ(d.objects, (std::vector<std::string>{"pringles_can", "coffee_mug", "plastic_cup", "paper_base"}));
-  EXPECT_EQ(m.spec().action_names, (std::vector<std::string>{"slide", "strike", "move_to_A", "move_to_B"}));
+  EXPECT_EQ(d.objects,
+            (std::vector<std::string>{"pringles_can", "coffee_mug", "plastic_cup", "paper_base"}));
+  EXPECT_EQ(m.spec().action_names,
+            (std::vector<std::string>{"slide", "strike", "move_to_A", "move_to_B"}));
   EXPECT_EQ(d.discount, 0.99);
   EXPECT_EQ(p.belief.type, BeliefSettings::Type::particle);
   EXPECT_EQ(p.belief.particles, 1000);
   for (int k = 0; k < 4; ++k) {
     EXPECT_EQ(d.prior[k], 0.25);
     for (int a = 0; a < 2; ++a) {
-      for (int o = 0; o < 4; ++o) EXPECT_EQ(d.observation_table[a][k][o], kSeedTable[k][a][o]) << k << a << o;
+      for (int o = 0; o < 4; ++o)
+        EXPECT_EQ(d.observation_table[a][k][o], kSeedTable[k][a][o]) << k << a << o;
     }
   }
   // Section 3.3: pringles_can and plastic_cup belong at A, coffee_mug and paper_base at B.
@@ -127,34 +130,44 @@ TEST_P(ProblemYamlErrors, ReportFileLineAndProblem) {
 INSTANTIATE_TEST_SUITE_P(
     EachMistake, ProblemYamlErrors,
     ::testing::Values(
-        BadCase{"row_sum", "pringles_can: [0.5, 0.3, 0.15, 0.05]", "pringles_can: [0.5, 0.3, 0.15, 0.06]", -1,
-                "sums to 1.01"},
-        BadCase{"row_length", "coffee_mug: [0.11, 0.67, 0.11, 0.11]", "coffee_mug: [0.11, 0.67, 0.22]", -1,
-                "has 3 entries, expected 4"},
-        BadCase{"negative_probability", "paper_base: [0.01, 0.01, 0.48, 0.5]", "paper_base: [-0.01, 0.03, 0.48, 0.5]",
-                -1, "outside [0, 1]"},
-        BadCase{"unknown_action_in_table", "    strike:\n      pringles_can", "    stryke:\n      pringles_can", -1,
-                "unknown sensing action 'stryke'"},
+        BadCase{"row_sum", "pringles_can: [0.5, 0.3, 0.15, 0.05]",
+                "pringles_can: [0.5, 0.3, 0.15, 0.06]", -1, "sums to 1.01"},
+        BadCase{"row_length", "coffee_mug: [0.11, 0.67, 0.11, 0.11]",
+                "coffee_mug: [0.11, 0.67, 0.22]", -1, "has 3 entries, expected 4"},
+        BadCase{"negative_probability", "paper_base: [0.01, 0.01, 0.48, 0.5]",
+                "paper_base: [-0.01, 0.03, 0.48, 0.5]", -1, "outside [0, 1]"},
+        BadCase{"unknown_action_in_table", "    strike:\n      pringles_can",
+                "    stryke:\n      pringles_can", -1, "unknown sensing action 'stryke'"},
         BadCase{"unknown_object_in_table", "      paper_base: [0.01, 0.01, 0.48, 0.5]",
                 "      paper_bass: [0.01, 0.01, 0.48, 0.5]", -1, "unknown object 'paper_bass'"},
-        BadCase{"unknown_object_in_reward", "move_to_A: {pringles_can: 10", "move_to_A: {pringles: 10", -1,
-                "unknown object 'pringles'"},
+        BadCase{"unknown_object_in_reward", "move_to_A: {pringles_can: 10",
+                "move_to_A: {pringles: 10", -1, "unknown object 'pringles'"},
         BadCase{"missing_key", "discount: 0.99\n", "", 4, "missing key 'discount'"},
-        BadCase{"missing_reward_entry", "sensing: {slide: -1, strike: -1}", "sensing: {slide: -1}", -1,
-                "missing key 'strike'"},
+        BadCase{"missing_reward_entry", "sensing: {slide: -1, strike: -1}", "sensing: {slide: -1}",
+                -1, "missing key 'strike'"},
         BadCase{"negative_count", "particles: 1000", "particles: -5", -1, "must not be negative"},
         BadCase{"wrong_type_number", "discount: 0.99", "discount: high", -1, "must be a number"},
         BadCase{"wrong_type_list", "objects: [pringles_can, coffee_mug, plastic_cup, paper_base]",
                 "objects: pringles_can", -1, "must be a list of names"},
         BadCase{"unknown_top_key", "discount: 0.99", "discont: 0.99", -1, "unknown key 'discont'"},
-        BadCase{"bad_discount", "discount: 0.99", "discount: 1.5", -1, "discount must be in (0, 1)"},
-        BadCase{"unknown_belief", "belief: {type: particle", "belief: {type: kalman", -1, "unknown belief.type"},
-        BadCase{"two_budgets", "budget: {step_ms: 2000}", "budget: {step_ms: 2000, episodes: 10}", -1,
-                "exactly one of episodes or step_ms"},
-        BadCase{"joint_count", "joints: [-2.89527, 1.45058,", "joints: [1.45058,", -1, "needs 7 numbers"},
-        BadCase{"unsupported_part", "type: known_object", "type: rollout", -1, "unsupported heuristic.type"},
-        BadCase{"collision_probability", "    slide: 0\n    strike: 0", "    slide: 2\n    strike: 0", -1,
-                "collision probability must be in [0, 1]"}),
+        BadCase{"bad_discount", "discount: 0.99", "discount: 1.5", -1,
+                "discount must be in (0, 1)"},
+        BadCase{"unknown_belief", "belief: {type: particle", "belief: {type: kalman", -1,
+                "unknown belief.type"},
+        BadCase{"two_budgets", "budget: {step_ms: 2000}", "budget: {step_ms: 2000, episodes: 10}",
+                -1, "exactly one of episodes or step_ms"},
+        BadCase{"joint_count", "joints: [-2.89527, 1.45058,", "joints: [1.45058,", -1,
+                "needs 7 numbers"},
+        BadCase{"unsupported_part", "type: known_object", "type: rollout", -1,
+                "unsupported heuristic.type"},
+        BadCase{"duplicate_key",
+                "      coffee_mug: [0.11, 0.67, 0.11, 0.11]\n      plastic_cup: [0.11, 0.11, 0.67, "
+                "0.11]\n      paper_base: [0.01",
+                "      coffee_mug: [0.11, 0.67, 0.11, 0.11]\n      coffee_mug: [0.11, 0.11, 0.67, "
+                "0.11]\n      paper_base: [0.01",
+                36, "key 'coffee_mug' appears twice"},
+        BadCase{"collision_probability", "    slide: 0\n    strike: 0",
+                "    slide: 2\n    strike: 0", -1, "collision probability must be in [0, 1]"}),
     [](const auto& test_info) { return std::string(test_info.param.label); });
 
 TEST(ProblemYaml, EmptyFileIsAnError) {
@@ -168,16 +181,29 @@ TEST(ProblemYaml, EmptyFileIsAnError) {
 }
 
 TEST(ProblemYaml, GarbageIsAnErrorNotACrash) {
-  const std::vector<std::string> garbage = {
-      "just some words",  "[1, 2, 3]",       "{{{{", "key: [unclosed", "\x01\x02\xff\xfe binary",
-      "- a\n- b\n",       "objects: {a: 1}", ": : :", "name: x\ndiscount: [0.9]", "\t\tname: tab"};
+  const std::vector<std::string> garbage = {"just some words",
+                                            "[1, 2, 3]",
+                                            "{{{{",
+                                            "key: [unclosed",
+                                            "\x01\x02\xff\xfe binary",
+                                            "- a\n- b\n",
+                                            "objects: {a: 1}",
+                                            ": : :",
+                                            "name: x\ndiscount: [0.9]",
+                                            "\t\tname: tab"};
   for (const auto& text : garbage) {
     EXPECT_THROW(parse_problem_yaml(text, "garbage.yaml"), InputError) << text;
   }
 }
 
-TEST(ProblemYaml, MissingFileIsAnError) {
+TEST(ProblemYaml, MissingFileOrDirectoryIsAnError) {
   EXPECT_THROW(load_problem("/nonexistent/problem.yaml"), InputError);
+  try {
+    load_problem(repo_file("problems"));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(e.problem().find("not a regular file"), std::string::npos);
+  }
 }
 
 }  // namespace

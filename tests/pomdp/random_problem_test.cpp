@@ -1,19 +1,21 @@
 // Random problems: valid, reproducible from the seed, shaped as asked, and they round-trip
 // through the YAML writer and loader.
+#include "pomdp/random_problem.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <sstream>
 
 #include "pomdp/problem.h"
-#include "pomdp/random_problem.h"
 
 namespace echoplan::pomdp {
 namespace {
 
 ObjectProblemData make(int objects, int actions, std::uint64_t seed, double concentration = 1.5) {
   Rng rng(seed);
-  return make_random_object_problem(RandomProblemSettings{objects, actions, concentration, seed}, rng);
+  return make_random_object_problem(RandomProblemSettings{objects, actions, concentration, seed},
+                                    rng);
 }
 
 TEST(RandomProblem, ShapeValidityAndGroups) {

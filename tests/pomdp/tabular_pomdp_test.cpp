@@ -1,10 +1,12 @@
-// TabularPomdp as a generative model: sampled steps follow its tables; the heuristic is the MDP value.
+// TabularPomdp as a generative model: sampled steps follow its tables; the heuristic is the MDP
+// value.
+#include "pomdp/tabular_pomdp.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "pomdp/problem.h"
-#include "pomdp/tabular_pomdp.h"
 #include "test_paths.h"
 
 namespace echoplan::pomdp {
@@ -39,7 +41,8 @@ TEST(TabularPomdp, HeuristicIsTheMdpValue) {
   // Value iteration stops within 1e-6 of the fixed point.
   EXPECT_NEAR(p.model->heuristic_value(State{{}, {0}}), 200.0, 1e-6);
   EXPECT_NEAR(p.model->heuristic_value(State{{}, {1}}), 200.0, 1e-6);
-  // The seed problem as .pomdp: sorting right now (+10) is the known-object value; 'done' is worth 0.
+  // The seed problem as .pomdp: sorting right now (+10) is the known-object value; 'done' is worth
+  // 0.
   const Problem objects = load_problem(repo_file("problems/audio_objects.pomdp"));
   EXPECT_NEAR(objects.model->heuristic_value(State{{}, {1}}), 10.0, 1e-6);
   EXPECT_EQ(objects.model->heuristic_value(State{{}, {4}}), 0.0);

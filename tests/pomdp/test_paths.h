@@ -5,6 +5,8 @@
 
 namespace echoplan::pomdp::testing {
 
-inline std::string repo_file(const std::string& relative) { return std::string(ECHOPLAN_SOURCE_DIR) + "/" + relative; }
+inline std::string repo_file(const std::string& relative) {
+  return std::string(ECHOPLAN_SOURCE_DIR) + "/" + relative;
+}
 
 }  // namespace echoplan::pomdp::testing

@@ -22,10 +22,12 @@ void add_make_problem_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "make-problem",
       "Write a random object-identification problem (YAML) with N objects and M sensing actions.\n"
-      "Observation rows are Dirichlet draws with more mass on the true class; a random half of the\n"
+      "Observation rows are Dirichlet draws with more mass on the true class; a random half of "
+      "the\n"
       "objects belongs at A, the rest at B. The same seed writes the same file.");
   cmd->add_option("--objects", options->settings.objects, "Number of objects (2-1000)")->required();
-  cmd->add_option("--sensing-actions", options->settings.sensing_actions, "Number of sensing actions (1-100)")
+  cmd->add_option("--sensing-actions", options->settings.sensing_actions,
+                  "Number of sensing actions (1-100)")
       ->required();
   cmd->add_option("--seed", options->settings.seed, "Random seed")->required();
   cmd->add_option("--concentration", options->settings.concentration,
@@ -42,9 +44,9 @@ void add_make_problem_command(CLI::App& app) {
     }
     std::ofstream out(options->output);
     if (!out) throw InputError(options->output, 0, "cannot write the problem file");
-    out << "# Written by: echoplan make-problem --objects " << options->settings.objects << " --sensing-actions "
-        << options->settings.sensing_actions << " --seed " << options->settings.seed << " --concentration "
-        << options->settings.concentration << "\n";
+    out << "# Written by: echoplan make-problem --objects " << options->settings.objects
+        << " --sensing-actions " << options->settings.sensing_actions << " --seed "
+        << options->settings.seed << " --concentration " << options->settings.concentration << "\n";
     pomdp::write_problem_yaml(out, data, pomdp::BeliefSettings{}, pomdp::PlannerDefaults{});
     out.close();
     if (!out) throw InputError(options->output, 0, "could not finish writing the problem file");
