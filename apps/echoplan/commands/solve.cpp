@@ -1,7 +1,6 @@
 // `echoplan solve`: bounds on the optimal value V*(b0) of a discrete problem, from the offline
 // point-based solver; optionally the policy (alpha vectors) for later runs.
 #include <fmt/core.h>
-#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include <filesystem>
@@ -46,17 +45,15 @@ void run_solve(const SolveArgs& args) {
   options.time_limit_seconds = args.time_limit;
   options.seed = args.seed;
   off::PointBasedSolver solver(dense, options);
-  // Progress goes to stderr so that stdout holds only the result (spdlog's default logger is
-  // stdout).
-  spdlog::logger log("solve", std::make_shared<spdlog::sinks::stderr_color_sink_st>());
-  log.set_level(spdlog::get_level());
-  log.info("solving {} ({} states, {} actions, {} observations; epsilon {}, time limit {} s)",
-           args.problem, dense->num_states, dense->num_actions, dense->num_observations,
-           args.epsilon, args.time_limit);
-  const off::SolverProgress result = solver.solve([&log](const off::SolverProgress& p) {
-    log.info("{:7.1f} s  trials {:6}  V* in [{:.6f}, {:.6f}]  gap {:.3g}  vectors {}  points {}",
-             p.seconds, p.trials, p.root.lower, p.root.upper, p.root.upper - p.root.lower,
-             p.alpha_vectors, p.upper_points);
+  // Progress through spdlog (stderr, see main.cpp) so that stdout holds only the result.
+  spdlog::info("solving {} ({} states, {} actions, {} observations; epsilon {}, time limit {} s)",
+               args.problem, dense->num_states, dense->num_actions, dense->num_observations,
+               args.epsilon, args.time_limit);
+  const off::SolverProgress result = solver.solve([](const off::SolverProgress& p) {
+    spdlog::info(
+        "{:7.1f} s  trials {:6}  V* in [{:.6f}, {:.6f}]  gap {:.3g}  vectors {}  points {}",
+        p.seconds, p.trials, p.root.lower, p.root.upper, p.root.upper - p.root.lower,
+        p.alpha_vectors, p.upper_points);
   });
 
   const auto& action_names = problem.model->spec().action_names;
