@@ -1,7 +1,6 @@
 // `echoplan solve`: bounds on the optimal value V*(b0) of a discrete problem, from the offline
 // point-based solver; optionally the policy (alpha vectors) for later runs.
 #include <fmt/core.h>
-#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include <filesystem>
@@ -38,23 +37,23 @@ void run_solve(const SolveArgs& args) {
                      "this problem has no tables (continuous observations?); the offline solver "
                      "needs a discrete problem: a .pomdp file or an object-identification YAML");
   }
-  auto dense = std::make_shared<const off::DensePomdp>(off::make_dense_pomdp(*tables, args.problem));
+  auto dense =
+      std::make_shared<const off::DensePomdp>(off::make_dense_pomdp(*tables, args.problem));
 
   off::SolverOptions options;
   options.epsilon = args.epsilon;
   options.time_limit_seconds = args.time_limit;
   options.seed = args.seed;
   off::PointBasedSolver solver(dense, options);
-  // Progress goes to stderr so that stdout holds only the result (spdlog's default logger is stdout).
-  spdlog::logger log("solve", std::make_shared<spdlog::sinks::stderr_color_sink_st>());
-  log.set_level(spdlog::get_level());
-  log.info("solving {} ({} states, {} actions, {} observations; epsilon {}, time limit {} s)",
+  // Progress through spdlog (stderr, see main.cpp) so that stdout holds only the result.
+  spdlog::info("solving {} ({} states, {} actions, {} observations; epsilon {}, time limit {} s)",
                args.problem, dense->num_states, dense->num_actions, dense->num_observations,
                args.epsilon, args.time_limit);
-  const off::SolverProgress result = solver.solve([&log](const off::SolverProgress& p) {
-    log.info("{:7.1f} s  trials {:6}  V* in [{:.6f}, {:.6f}]  gap {:.3g}  vectors {}  points {}",
-                 p.seconds, p.trials, p.root.lower, p.root.upper, p.root.upper - p.root.lower,
-                 p.alpha_vectors, p.upper_points);
+  const off::SolverProgress result = solver.solve([](const off::SolverProgress& p) {
+    spdlog::info(
+        "{:7.1f} s  trials {:6}  V* in [{:.6f}, {:.6f}]  gap {:.3g}  vectors {}  points {}",
+        p.seconds, p.trials, p.root.lower, p.root.upper, p.root.upper - p.root.lower,
+        p.alpha_vectors, p.upper_points);
   });
 
   const auto& action_names = problem.model->spec().action_names;
@@ -91,8 +90,8 @@ void run_solve(const SolveArgs& args) {
     return;
   }
   fmt::print("V*(b0) of {}\n", args.problem);
-  fmt::print("  lower {:.6f}\n  upper {:.6f}\n  gap   {:.3g} ({} target {:.3g})\n", result.root.lower,
-             result.root.upper, result.root.upper - result.root.lower,
+  fmt::print("  lower {:.6f}\n  upper {:.6f}\n  gap   {:.3g} ({} target {:.3g})\n",
+             result.root.lower, result.root.upper, result.root.upper - result.root.lower,
              result.converged ? "reached" : "NOT reached:", result.target_gap);
   fmt::print("  {} trials in {:.2f} s, {} alpha vectors, {} upper-bound points\n", result.trials,
              result.seconds, result.alpha_vectors, result.upper_points);
@@ -110,10 +109,12 @@ void add_solve_command(CLI::App& app) {
   auto args = std::make_shared<SolveArgs>();
   auto* cmd = app.add_subcommand(
       "solve",
-      "Bound the optimal value V*(b0) of a discrete problem (.pomdp or object-identification YAML)\n"
+      "Bound the optimal value V*(b0) of a discrete problem (.pomdp or object-identification "
+      "YAML)\n"
       "with the offline point-based solver (HSVI style), and optionally save its policy.\n"
       "Progress goes to stderr; the bounds to stdout.");
-  cmd->add_option("--problem", args->problem, "Problem file (problems/*.yaml or *.pomdp)")->required();
+  cmd->add_option("--problem", args->problem, "Problem file (problems/*.yaml or *.pomdp)")
+      ->required();
   cmd->add_flag("--json", args->json,
                 "Print one JSON object {\"lower\": L, \"upper\": U, ...} instead of text");
   cmd->add_option("--epsilon", args->epsilon,
@@ -121,9 +122,11 @@ void add_solve_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--time-limit", args->time_limit, "Stop after this many seconds")
       ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of the solver's random choices")->capture_default_str();
-  cmd->add_option("--out", args->out,
-                  "Folder to write policy.json (alpha vectors) into, for `trials --solver offline`");
+  cmd->add_option("--seed", args->seed, "Seed of the solver's random choices")
+      ->capture_default_str();
+  cmd->add_option(
+      "--out", args->out,
+      "Folder to write policy.json (alpha vectors) into, for `trials --solver offline`");
   cmd->callback([args] { run_solve(*args); });
 }
 

@@ -27,8 +27,9 @@ bool AlphaVectorSet::add(AlphaVector vector) {
     if (dominates(existing.values, vector.values)) return false;
   }
   // The new vector is not dominated; the ones it dominates can never be the maximum again.
-  std::erase_if(vectors_,
-                [&](const AlphaVector& existing) { return dominates(vector.values, existing.values); });
+  std::erase_if(vectors_, [&](const AlphaVector& existing) {
+    return dominates(vector.values, existing.values);
+  });
   vectors_.push_back(std::move(vector));
   return true;
 }

@@ -1,5 +1,6 @@
 // The lower bound on V*: a set of alpha vectors, each the value of a conditional plan starting with
-// its action. V*(b) >= max_alpha alpha . b, and acting greedily on these vectors earns at least that.
+// its action. V*(b) >= max_alpha alpha . b, and acting greedily on these vectors earns at least
+// that.
 #pragma once
 
 #include <vector>

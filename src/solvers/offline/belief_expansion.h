@@ -1,7 +1,7 @@
 // The one-step expansion of a belief that every backup needs: all its children at once.
 //
-// b_ao(s') = P(o | s', a) * sum_s P(s' | s, a) b(s) / P(o | b, a), for every o, sharing the prediction
-// step. (Tracking one belief during execution is pomdp::ExactBelief's job.)
+// b_ao(s') = P(o | s', a) * sum_s P(s' | s, a) b(s) / P(o | b, a), for every o, sharing the
+// prediction step. (Tracking one belief during execution is pomdp::ExactBelief's job.)
 #pragma once
 
 #include <vector>
@@ -10,11 +10,11 @@
 
 namespace echoplan::solvers::offline {
 
-// The children of belief b under action a: one entry per observation. When P(o | b, a) = 0 the entry
-// holds the predicted belief (a harmless stand-in: it carries zero weight).
+// The children of belief b under action a: one entry per observation. When P(o | b, a) = 0 the
+// entry holds the predicted belief (a harmless stand-in: it carries zero weight).
 struct BeliefExpansion {
   std::vector<double> observation_probability;  // [o], sums to 1
-  std::vector<BeliefVector> next_belief;          // [o][s']
+  std::vector<BeliefVector> next_belief;        // [o][s']
 };
 
 // The predicted belief sum_s P(s' | s, a) b(s), before any observation.

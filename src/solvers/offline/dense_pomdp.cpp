@@ -62,7 +62,8 @@ DensePomdp make_dense_pomdp(const pomdp::TabularModel& model, const std::string&
       }
       d.reward[s * A + a] = model.reward(s, a);
       if (!std::isfinite(d.reward[s * A + a])) {
-        throw InputError(source, 0, fmt::format("reward of state {} action {} is not finite", s, a));
+        throw InputError(source, 0,
+                         fmt::format("reward of state {} action {} is not finite", s, a));
       }
       double sum = 0.0;
       for (int s2 = 0; s2 < S; ++s2) {
@@ -75,7 +76,8 @@ DensePomdp make_dense_pomdp(const pomdp::TabularModel& model, const std::string&
     }
   }
 
-  // Observations: every (a, s') row must be a distribution, even for terminal s' (the filter uses it).
+  // Observations: every (a, s') row must be a distribution, even for terminal s' (the filter uses
+  // it).
   d.observation.resize(static_cast<std::size_t>(A) * S * O);
   for (int a = 0; a < A; ++a) {
     for (int s2 = 0; s2 < S; ++s2) {
@@ -92,9 +94,9 @@ DensePomdp make_dense_pomdp(const pomdp::TabularModel& model, const std::string&
 
   d.initial_belief = model.initial_belief();
   if (static_cast<int>(d.initial_belief.size()) != S) {
-    throw InputError(source, 0,
-                     fmt::format("the initial belief has {} entries for {} states",
-                                 d.initial_belief.size(), S));
+    throw InputError(
+        source, 0,
+        fmt::format("the initial belief has {} entries for {} states", d.initial_belief.size(), S));
   }
   double sum = 0.0;
   for (int s = 0; s < S; ++s) {

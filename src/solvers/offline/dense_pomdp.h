@@ -1,8 +1,8 @@
 // A discrete POMDP copied once from a pomdp::TabularModel into flat arrays, for the offline solver.
 //
-// The offline solver touches the tables millions of times; virtual calls per entry would dominate, so
-// the tables are copied once, checked, and stored densely (observations) or sparsely (transitions,
-// which are mostly deterministic in object-identification problems).
+// The offline solver touches the tables millions of times; virtual calls per entry would dominate,
+// so the tables are copied once, checked, and stored densely (observations) or sparsely
+// (transitions, which are mostly deterministic in object-identification problems).
 //
 // Terminal states are made exact here: a state the model calls terminal gets reward 0 for every
 // action and loops to itself, whatever its rows say, so its value is exactly 0 in both bounds.

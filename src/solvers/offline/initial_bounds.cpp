@@ -43,7 +43,8 @@ std::vector<AlphaVector> blind_policy_vectors(const DensePomdp& pomdp,
           continue;
         }
         double future = 0.0;
-        for (const Successor& n : pomdp.successors_of(s, a)) future += n.probability * alpha[n.state];
+        for (const Successor& n : pomdp.successors_of(s, a))
+          future += n.probability * alpha[n.state];
         next[s] = pomdp.reward_at(s, a) + g * future;
         change = std::max(change, std::abs(next[s] - alpha[s]));
       }
@@ -84,7 +85,8 @@ std::vector<std::vector<double>> fast_informed_bound(const DensePomdp& pomdp,
             reachable = true;
             for (int a2 = 0; a2 < A; ++a2) per_next_action[a2] += w * q[a2][n.state];
           }
-          if (reachable) future += *std::max_element(per_next_action.begin(), per_next_action.end());
+          if (reachable)
+            future += *std::max_element(per_next_action.begin(), per_next_action.end());
         }
         next[a][s] = pomdp.reward_at(s, a) + g * future;
         change = std::max(change, std::abs(next[a][s] - q[a][s]));

@@ -1,6 +1,6 @@
 // Where the bounds start: the blind-policy lower bound and the fast informed upper bound
-// (Hauskrecht 2000). Both are iterated from a trivially valid start, monotonically, so every iterate
-// is itself a valid bound; iteration only tightens them.
+// (Hauskrecht 2000). Both are iterated from a trivially valid start, monotonically, so every
+// iterate is itself a valid bound; iteration only tightens them.
 #pragma once
 
 #include <vector>
@@ -16,12 +16,13 @@ struct InitialBoundOptions {
   int max_iterations = 100000;
 };
 
-// For each action a, the value of repeating a forever (terminal states 0): alpha_a <= R_a + g T_a alpha_a,
-// so a greedy policy on these vectors earns at least their value.
+// For each action a, the value of repeating a forever (terminal states 0): alpha_a <= R_a + g T_a
+// alpha_a, so a greedy policy on these vectors earns at least their value.
 std::vector<AlphaVector> blind_policy_vectors(const DensePomdp& pomdp,
                                               const InitialBoundOptions& options = {});
 
-// The fast informed bound Q_FIB[a][s] >= Q*(b, a) restricted to corners, and max_a Q_FIB[a] . b >= V*(b):
+// The fast informed bound Q_FIB[a][s] >= Q*(b, a) restricted to corners, and max_a Q_FIB[a] . b >=
+// V*(b):
 //   Q(s,a) = R(s,a) + g sum_o max_a' sum_s' P(s'|s,a) P(o|s',a) Q(s',a').
 std::vector<std::vector<double>> fast_informed_bound(const DensePomdp& pomdp,
                                                      const InitialBoundOptions& options = {});

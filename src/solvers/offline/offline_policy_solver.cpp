@@ -29,8 +29,7 @@ OfflinePolicySolver::OfflinePolicySolver(pomdp::ModelPtr model,
 
 void OfflinePolicySolver::reset(const pomdp::Belief& belief, Rng& /*rng*/) {
   const auto* exact = dynamic_cast<const pomdp::ExactBelief*>(&belief);
-  if (exact != nullptr &&
-      static_cast<int>(exact->probabilities().size()) == pomdp_->num_states) {
+  if (exact != nullptr && static_cast<int>(exact->probabilities().size()) == pomdp_->num_states) {
     belief_.reset(static_cast<pomdp::ExactBelief*>(exact->clone().release()));
   } else {
     belief_ = std::make_unique<pomdp::ExactBelief>(model_);
@@ -60,13 +59,15 @@ void OfflinePolicySolver::update(int action, const pomdp::Observation& observati
   belief_->update(action, observation, rng);
 }
 
-std::unique_ptr<Solver> make_offline_solver(const pomdp::ModelPtr& model, const SolverOptions& options,
+std::unique_ptr<Solver> make_offline_solver(const pomdp::ModelPtr& model,
+                                            const SolverOptions& options,
                                             const std::string& policy_path,
                                             const std::string& source) {
   const pomdp::TabularModel* tables = model->tabular();
   if (tables == nullptr) {
-    throw InputError(source, 0, "the offline solver needs a problem with tables (discrete states, "
-                                "actions and observations)");
+    throw InputError(source, 0,
+                     "the offline solver needs a problem with tables (discrete states, "
+                     "actions and observations)");
   }
   auto dense = std::make_shared<const DensePomdp>(make_dense_pomdp(*tables, source));
   if (!policy_path.empty()) {

@@ -1,10 +1,11 @@
 // The offline solver's result driven through the online Solver interface, so that the trials runner
 // can run it as solver `offline` next to ABT and POMCP.
 //
-// All planning happened beforehand (PointBasedSolver, or a policy file): improve() does nothing, and
-// best_action() is the first action of the best lower-bound alpha vector at the current belief, so
-// acting this way earns at least the lower bound. The belief is tracked exactly (pomdp::ExactBelief
-// over the model's tables), whatever belief the execution loop keeps for itself.
+// All planning happened beforehand (PointBasedSolver, or a policy file): improve() does nothing,
+// and best_action() is the first action of the best lower-bound alpha vector at the current belief,
+// so acting this way earns at least the lower bound. The belief is tracked exactly
+// (pomdp::ExactBelief over the model's tables), whatever belief the execution loop keeps for
+// itself.
 #pragma once
 
 #include <memory>
@@ -53,7 +54,8 @@ class OfflinePolicySolver final : public Solver {
 // For the trials runner: solves `model` offline (PointBasedSolver with `options`) and wraps the
 // result, or, when `policy_path` is not empty, loads that policy file (written by `echoplan solve
 // --out`) instead. Throws InputError when the model has no tables or the file does not fit.
-std::unique_ptr<Solver> make_offline_solver(const pomdp::ModelPtr& model, const SolverOptions& options,
+std::unique_ptr<Solver> make_offline_solver(const pomdp::ModelPtr& model,
+                                            const SolverOptions& options,
                                             const std::string& policy_path = "",
                                             const std::string& source = "");
 

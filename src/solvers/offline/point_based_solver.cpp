@@ -198,7 +198,8 @@ SolverProgress PointBasedSolver::solve(const ProgressCallback& on_progress) {
     const ValueBounds root = bounds(pomdp_->initial_belief);
     seconds_ = seconds_before + seconds_since(start);
     if (root.upper - root.lower <= gap) break;
-    if (options_.time_limit_seconds > 0.0 && seconds_since(start) >= options_.time_limit_seconds) break;
+    if (options_.time_limit_seconds > 0.0 && seconds_since(start) >= options_.time_limit_seconds)
+      break;
     if (options_.max_trials > 0 && trials_ - trials_before >= options_.max_trials) break;
     trial(gap);
     if (on_progress && seconds_since(start) >= next_report) {

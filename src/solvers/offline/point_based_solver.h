@@ -1,12 +1,12 @@
 // HSVI2-style offline point-based solver (Smith & Simmons 2005) for small discrete POMDPs.
 //
-// It keeps a lower bound (alpha vectors, from the blind policy up) and an upper bound (sawtooth over
-// belief points, from the fast informed bound down) on the optimal value V*, and tightens both by
-// depth-first trials from b0: each step takes the action that is best under the upper bound and an
-// observation drawn in proportion to its probability-weighted excess uncertainty (HSVI takes the
-// largest; drawing keeps trials from retracing one path, as SARSOP's sampling does), then backs both
-// bounds up along the path. Trials also stop where a belief can hardly matter at b0 (see below).
-// It stops when the gap at b0 is at most epsilon * max(1, |V|) or at the time limit.
+// It keeps a lower bound (alpha vectors, from the blind policy up) and an upper bound (sawtooth
+// over belief points, from the fast informed bound down) on the optimal value V*, and tightens both
+// by depth-first trials from b0: each step takes the action that is best under the upper bound and
+// an observation drawn in proportion to its probability-weighted excess uncertainty (HSVI takes the
+// largest; drawing keeps trials from retracing one path, as SARSOP's sampling does), then backs
+// both bounds up along the path. Trials also stop where a belief can hardly matter at b0 (see
+// below). It stops when the gap at b0 is at most epsilon * max(1, |V|) or at the time limit.
 //
 // Units: values are expected discounted rewards in the model's reward units; times are seconds.
 #pragma once
@@ -48,14 +48,14 @@ struct ValueBounds {
 
 // A snapshot of the solver, reported while it runs and returned at the end.
 struct SolverProgress {
-  ValueBounds root;                 // at b0
-  double target_gap = 0.0;          // the absolute gap solve() aims for
+  ValueBounds root;         // at b0
+  double target_gap = 0.0;  // the absolute gap solve() aims for
   long trials = 0;
   long backups = 0;
   std::size_t alpha_vectors = 0;
   std::size_t upper_points = 0;
   double seconds = 0.0;
-  bool converged = false;           // root gap <= target gap
+  bool converged = false;  // root gap <= target gap
 };
 
 class PointBasedSolver {
@@ -70,8 +70,8 @@ class PointBasedSolver {
   SolverProgress solve(const ProgressCallback& on_progress = {});
 
   ValueBounds bounds(const BeliefVector& belief) const;
-  // Per action a: bounds on Q*(b, a) = R(b, a) + g sum_o P(o | b, a) V*(b_ao), by one-step lookahead
-  // on the current bounds. Used to measure the loss of a decision against the optimum.
+  // Per action a: bounds on Q*(b, a) = R(b, a) + g sum_o P(o | b, a) V*(b_ao), by one-step
+  // lookahead on the current bounds. Used to measure the loss of a decision against the optimum.
   std::vector<ValueBounds> action_bounds(const BeliefVector& belief) const;
   // The first action of the best lower-bound plan at `belief`: acting on it earns at least
   // bounds(belief).lower.

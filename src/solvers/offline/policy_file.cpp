@@ -32,7 +32,8 @@ const nlohmann::json& require(const std::string& path, const nlohmann::json& obj
 
 int require_int(const std::string& path, const nlohmann::json& object, const std::string& key) {
   const nlohmann::json& v = require(path, object, key);
-  if (!v.is_number_integer()) throw InputError(path, 0, fmt::format("\"{}\" must be an integer", key));
+  if (!v.is_number_integer())
+    throw InputError(path, 0, fmt::format("\"{}\" must be an integer", key));
   return v.get<int>();
 }
 
@@ -73,15 +74,17 @@ AlphaVectorSet load_policy(const std::string& path, const DensePomdp& pomdp) {
     throw InputError(path, 0, fmt::format("\"format\" must be \"{}\"", kFormat));
   }
   if (require_int(path, root, "version") != kVersion) {
-    throw InputError(path, 0, fmt::format("unsupported version (this echoplan reads {})", kVersion));
+    throw InputError(path, 0,
+                     fmt::format("unsupported version (this echoplan reads {})", kVersion));
   }
   const int states = require_int(path, root, "num_states");
   const int actions = require_int(path, root, "num_actions");
   if (states != pomdp.num_states || actions != pomdp.num_actions) {
-    throw InputError(path, 0,
-                     fmt::format("the policy is for {} states and {} actions, the problem has {} and "
-                                 "{}: solve this problem again",
-                                 states, actions, pomdp.num_states, pomdp.num_actions));
+    throw InputError(
+        path, 0,
+        fmt::format("the policy is for {} states and {} actions, the problem has {} and "
+                    "{}: solve this problem again",
+                    states, actions, pomdp.num_states, pomdp.num_actions));
   }
   const nlohmann::json& vectors = require(path, root, "vectors");
   if (!vectors.is_array() || vectors.empty()) {
@@ -94,11 +97,13 @@ AlphaVectorSet load_policy(const std::string& path, const DensePomdp& pomdp) {
     if (!entry.is_object()) throw InputError(path, 0, where + " must be an object");
     const int action = require_int(path, entry, "action");
     if (action < 0 || action >= actions) {
-      throw InputError(path, 0, fmt::format("{}.action {} is not in [0, {})", where, action, actions));
+      throw InputError(path, 0,
+                       fmt::format("{}.action {} is not in [0, {})", where, action, actions));
     }
     const nlohmann::json& values = require(path, entry, "values");
     if (!values.is_array() || static_cast<int>(values.size()) != states) {
-      throw InputError(path, 0, fmt::format("{}.values must be an array of {} numbers", where, states));
+      throw InputError(path, 0,
+                       fmt::format("{}.values must be an array of {} numbers", where, states));
     }
     AlphaVector v{action, {}};
     for (const nlohmann::json& x : values) {

@@ -1,5 +1,5 @@
-// Saving and loading the offline solver's alpha vectors as JSON, so a later run (trials) can act on a
-// policy without solving again.
+// Saving and loading the offline solver's alpha vectors as JSON, so a later run (trials) can act on
+// a policy without solving again.
 //
 // Format (one object):
 //   {"format": "echoplan-alpha-vectors", "version": 1, "num_states": S, "num_actions": A,
@@ -15,8 +15,8 @@
 
 namespace echoplan::solvers::offline {
 
-// Writes the solver's lower-bound vectors and root bounds to `path`. Throws InputError when the file
-// cannot be written.
+// Writes the solver's lower-bound vectors and root bounds to `path`. Throws InputError when the
+// file cannot be written.
 void save_policy(const PointBasedSolver& solver, const std::string& path);
 
 // Reads vectors written by save_policy and checks they fit `pomdp` (state and action counts).

@@ -1,4 +1,5 @@
-// The pieces the solver is built from: alpha-vector pruning, sawtooth interpolation, initial bounds.
+// The pieces the solver is built from: alpha-vector pruning, sawtooth interpolation, initial
+// bounds.
 #include <gtest/gtest.h>
 
 #include "solvers/offline/alpha_vector_set.h"
@@ -16,7 +17,7 @@ TEST(AlphaVectorSet, PrunesPointwiseDominatedVectors) {
   EXPECT_FALSE(set.add({1, {0.5, 1.0}}));  // dominated by the first
   EXPECT_TRUE(set.add({2, {0.0, 3.0}}));   // better at the right corner
   EXPECT_EQ(set.size(), 2u);
-  EXPECT_TRUE(set.add({3, {2.0, 1.0}}));   // dominates the first, which goes
+  EXPECT_TRUE(set.add({3, {2.0, 1.0}}));  // dominates the first, which goes
   ASSERT_EQ(set.size(), 2u);
   EXPECT_EQ(set.best_action({1.0, 0.0}), 3);
   EXPECT_EQ(set.best_action({0.0, 1.0}), 2);
@@ -68,8 +69,8 @@ TEST(InitialBounds, BlindPolicyAndFibOnTiger) {
   // The fast informed bound is an upper bound on V*(uniform) = 19.371 and below the MDP bound
   // 10 / (1 - 0.95) = 200.
   const auto q = fast_informed_bound(m);
-  const double fib_uniform = std::max({0.5 * (q[0][0] + q[0][1]), 0.5 * (q[1][0] + q[1][1]),
-                                       0.5 * (q[2][0] + q[2][1])});
+  const double fib_uniform =
+      std::max({0.5 * (q[0][0] + q[0][1]), 0.5 * (q[1][0] + q[1][1]), 0.5 * (q[2][0] + q[2][1])});
   EXPECT_GE(fib_uniform, 19.371);
   EXPECT_LT(fib_uniform, 200.0);
 }
@@ -88,7 +89,8 @@ TEST(BeliefExpansion, TigerListenPosterior) {
 
 TEST(BeliefExpansion, ImpossibleObservationKeepsThePrediction) {
   const DensePomdp m = make_dense_pomdp(testing::audio_objects());
-  // After a sorting action everything is in the terminal state, which only ever emits observation 0.
+  // After a sorting action everything is in the terminal state, which only ever emits observation
+  // 0.
   const BeliefExpansion e = expand(m, {0.25, 0.25, 0.25, 0.25, 0.0}, testing::kMoveA);
   EXPECT_EQ(e.observation_probability[0], 1.0);
   EXPECT_EQ(e.observation_probability[2], 0.0);

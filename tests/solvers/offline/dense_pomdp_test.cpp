@@ -1,4 +1,5 @@
-// Copying a TabularModel: terminal states made exact, and tables that are not distributions rejected.
+// Copying a TabularModel: terminal states made exact, and tables that are not distributions
+// rejected.
 #include "solvers/offline/dense_pomdp.h"
 
 #include <gtest/gtest.h>

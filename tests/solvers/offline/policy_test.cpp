@@ -1,7 +1,5 @@
 // The solver's alpha vectors used as a policy through the Solver interface: the value it really
 // earns, and its file round trip.
-#include "solvers/offline/offline_policy_solver.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +10,7 @@
 #include "common/rng.h"
 #include "pomdp/exact_belief.h"
 #include "pomdp/problem.h"
+#include "solvers/offline/offline_policy_solver.h"
 #include "solvers/offline/point_based_solver.h"
 #include "solvers/offline/policy_file.h"
 #include "test_problems.h"
@@ -22,7 +21,8 @@ namespace {
 class SolvedSeedProblem : public ::testing::Test {
  protected:
   void SetUp() override {
-    problem = pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.pomdp");
+    problem =
+        pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.pomdp");
     dense = std::make_shared<const DensePomdp>(make_dense_pomdp(*problem.model->tabular()));
     SolverOptions options;
     options.max_trials = 300;  // a fixed amount of work: the same vectors on every machine
@@ -129,7 +129,8 @@ TEST(PolicyFile, RejectsBadFiles) {
                      "num_actions": 3, "vectors": []})",
                   0, "solve this problem again");
   expect_rejected(head + R"("vectors": []})", 0, "non-empty array");
-  expect_rejected(head + R"("vectors": [{"action": 7, "values": [1, 2]}]})", 0, "vectors[0].action 7");
+  expect_rejected(head + R"("vectors": [{"action": 7, "values": [1, 2]}]})", 0,
+                  "vectors[0].action 7");
   expect_rejected(head + R"("vectors": [{"action": 0, "values": [1]}]})", 0, "array of 2 numbers");
   expect_rejected(head + R"("vectors": [{"action": 0, "values": [1, "x"]}]})", 0, "non-number");
 }
@@ -151,7 +152,8 @@ class GenerativeOnlyModel : public pomdp::Model {
   const pomdp::ModelSpec& spec() const override { return spec_; }
   pomdp::State sample_initial_state(Rng&) const override { return {}; }
   pomdp::StepResult step(const pomdp::State& s, int, Rng&) const override { return {s, {}, 0.0}; }
-  double observation_likelihood(const pomdp::State&, int, const pomdp::Observation&) const override {
+  double observation_likelihood(const pomdp::State&, int,
+                                const pomdp::Observation&) const override {
     return 1.0;
   }
 

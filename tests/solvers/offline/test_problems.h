@@ -1,4 +1,5 @@
-// Small POMDPs written out as tables for the offline solver's tests, independent of any file loader.
+// Small POMDPs written out as tables for the offline solver's tests, independent of any file
+// loader.
 #pragma once
 
 #include <vector>
@@ -69,8 +70,8 @@ inline TableModel audio_objects() {
                                                 {1, 0, 0, 0}};
   const std::vector<std::vector<double>> silent(S, {1, 0, 0, 0});
   m.Z = {slide, strike, silent, silent};
-  m.R = {{-1, -1, 10, -100}, {-1, -1, -100, 10}, {-1, -1, 10, -100}, {-1, -1, -100, 10},
-         {0, 0, 0, 0}};
+  m.R = {
+      {-1, -1, 10, -100}, {-1, -1, -100, 10}, {-1, -1, 10, -100}, {-1, -1, -100, 10}, {0, 0, 0, 0}};
   m.is_terminal = {false, false, false, false, true};
   m.b0 = {0.25, 0.25, 0.25, 0.25, 0.0};
   return m;
