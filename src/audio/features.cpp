@@ -1,6 +1,8 @@
 #include "audio/features.h"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 #include <cfloat>
 #include <cmath>
 #include <numbers>
@@ -102,6 +104,47 @@ void validate_config(const FeatureConfig& config) {
   const double fmax = config.mel.fmax_hz > 0 ? config.mel.fmax_hz : config.sample_rate / 2.0;
   if (config.mel.fmin_hz >= fmax)
     throw InputError(fmt::format("parameter fmin = {} Hz must be below fmax = {} Hz", config.mel.fmin_hz, fmax));
+}
+
+namespace {
+constexpr std::array<std::pair<FeatureKind, std::string_view>, 9> kFeatureNames{{
+    {FeatureKind::log_mel, "logmel"},
+    {FeatureKind::mfcc, "mfcc"},
+    {FeatureKind::centroid, "centroid"},
+    {FeatureKind::bandwidth, "bandwidth"},
+    {FeatureKind::rolloff, "rolloff"},
+    {FeatureKind::flatness, "flatness"},
+    {FeatureKind::flux, "flux"},
+    {FeatureKind::rms, "rms"},
+    {FeatureKind::zcr, "zcr"},
+}};
+}  // namespace
+
+std::string_view feature_name(FeatureKind kind) {
+  for (const auto& [k, name] : kFeatureNames)
+    if (k == kind) return name;
+  return "logmel";
+}
+
+FeatureKind feature_from_name(std::string_view name) {
+  for (const auto& [kind, known] : kFeatureNames)
+    if (known == name) return kind;
+  throw InputError(fmt::format("unknown feature '{}' (expected logmel, mfcc, centroid, bandwidth, rolloff, flatness, flux, rms or zcr)", name));
+}
+
+const FeatureMatrix& select_feature(const Features& f, FeatureKind kind) {
+  switch (kind) {
+    case FeatureKind::log_mel: return f.log_mel;
+    case FeatureKind::mfcc: return f.mfcc;
+    case FeatureKind::centroid: return f.centroid;
+    case FeatureKind::bandwidth: return f.bandwidth;
+    case FeatureKind::rolloff: return f.rolloff;
+    case FeatureKind::flatness: return f.flatness;
+    case FeatureKind::flux: return f.flux;
+    case FeatureKind::rms: return f.rms;
+    case FeatureKind::zcr: return f.zcr;
+  }
+  return f.log_mel;
 }
 
 FeatureExtractor::FeatureExtractor(const FeatureConfig& config)

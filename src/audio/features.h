@@ -82,6 +82,15 @@ struct Features {
   FeatureMatrix zcr;        // zcr frames x 1: sign changes between consecutive samples / frame_length
 };
 
+// One frame-wise feature of a Features, by kind; names as on the command line.
+enum class FeatureKind { log_mel, mfcc, centroid, bandwidth, rolloff, flatness, flux, rms, zcr };
+
+// "logmel", "mfcc", "centroid", "bandwidth", "rolloff", "flatness", "flux", "rms", "zcr".
+std::string_view feature_name(FeatureKind kind);
+// Throws InputError listing the valid names.
+FeatureKind feature_from_name(std::string_view name);
+const FeatureMatrix& select_feature(const Features& features, FeatureKind kind);
+
 // Features of the whole signal at once (the seed's "global" features).
 struct GlobalFeatures {
   double rms = 0.0;             // sqrt(mean x^2)
