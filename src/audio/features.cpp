@@ -204,53 +204,57 @@ void FeatureExtractor::compute(std::span<const float> signal, Features& out) {
 }
 
 // Centroid, bandwidth, roll-off, flatness and flux from the magnitude spectrum |X| = sqrt(power), as
-// librosa defines them (bandwidth p = 2; flatness over max(|X|^2, amin)).
+// librosa defines them (bandwidth p = 2; flatness over max(|X|^2, amin)). Each quantity is its own simple
+// loop so that the compiler vectorises it.
 void FeatureExtractor::spectral_shape(Features& out) {
   const std::size_t frames = power_.rows;
   const std::size_t bins = power_.cols;
   for (FeatureMatrix* m : {&out.centroid, &out.bandwidth, &out.rolloff, &out.flatness, &out.flux}) m->resize(frames, 1);
-  std::fill(previous_magnitude_.begin(), previous_magnitude_.end(), 0.0f);
   const float amin = static_cast<float>(config_.amin);
+  const double* hz = bin_hz_.data();
   for (std::size_t t = 0; t < frames; ++t) {
-    const auto power = power_.row(t);
+    const float* power = power_.row(t).data();
+    float* mag = magnitude_.data();
+    const float* prev = previous_magnitude_.data();
+    for (std::size_t k = 0; k < bins; ++k) mag[k] = std::sqrt(power[k]);
     double total = 0.0;
     double weighted = 0.0;
-    double flux = 0.0;
     for (std::size_t k = 0; k < bins; ++k) {
-      const float mag = std::sqrt(power[k]);
-      magnitude_[k] = mag;
-      total += mag;
-      weighted += mag * bin_hz_[k];
-      flux += std::max(0.0f, mag - previous_magnitude_[k]);
+      total += mag[k];
+      weighted += mag[k] * hz[k];
     }
     const double centroid = total > 0.0 ? weighted / total : 0.0;
     double spread = 0.0;
+    for (std::size_t k = 0; k < bins; ++k) spread += mag[k] * (hz[k] - centroid) * (hz[k] - centroid);
+    double flux = 0.0;
+    for (std::size_t k = 0; k < bins; ++k) flux += std::max(0.0f, mag[k] - prev[k]);
+    // Roll-off: the first bin whose cumulative magnitude reaches the fraction of the total.
+    const double threshold = config_.rolloff_fraction * total;
     std::size_t rolloff_bin = 0;
     double cumulative = 0.0;
-    const double threshold = config_.rolloff_fraction * total;
-    bool rolloff_found = false;
-    // Flatness needs mean(log p); multiplying 16 powers in double before one log keeps the range safe
-    // (amin^16 and (2^24)^32 stay within double) and costs one log per 16 bins instead of per bin.
+    for (; rolloff_bin + 1 < bins; ++rolloff_bin) {
+      cumulative += mag[rolloff_bin];
+      if (cumulative >= threshold) break;
+    }
+    // Flatness needs mean(log p): the product of 16 clamped powers in double stays within range
+    // (amin^16 and (2^24)^32 are representable), so one log per 16 bins replaces one per bin.
     double log_sum = 0.0;
     double power_sum = 0.0;
-    double product = 1.0;
-    for (std::size_t k = 0; k < bins; ++k) {
-      const double d = bin_hz_[k] - centroid;
-      spread += magnitude_[k] * d * d;
-      cumulative += magnitude_[k];
-      if (!rolloff_found && cumulative >= threshold) {
-        rolloff_bin = k;
-        rolloff_found = true;
+    std::size_t k = 0;
+    for (; k + 16 <= bins; k += 16) {
+      double product = 1.0;
+      for (std::size_t j = 0; j < 16; ++j) {
+        const double p = std::max(power[k + j], amin);
+        power_sum += p;
+        product *= p;
       }
+      log_sum += std::log(product);
+    }
+    for (; k < bins; ++k) {
       const double p = std::max(power[k], amin);
       power_sum += p;
-      product *= p;
-      if (k % 16 == 15) {
-        log_sum += std::log(product);
-        product = 1.0;
-      }
+      log_sum += std::log(p);
     }
-    log_sum += std::log(product);
     out.centroid.at(t, 0) = static_cast<float>(centroid);
     out.bandwidth.at(t, 0) = static_cast<float>(total > 0.0 ? std::sqrt(spread / total) : 0.0);
     out.rolloff.at(t, 0) = static_cast<float>(bin_hz_[rolloff_bin]);
@@ -315,23 +319,34 @@ void FeatureExtractor::time_domain(std::span<const float> signal, Features& out)
     for (float x : frame) sum += static_cast<double>(x) * x;
     out.rms.at(t, 0) = static_cast<float>(std::sqrt(sum / static_cast<double>(frame.size())));
   }
+
+  // librosa.zero_crossings: values within the threshold are zero, and zero counts as positive. Crossings
+  // are integers, so frames wholly inside the signal take exact differences of a running count; frames
+  // that reach into the padding are counted directly.
   const auto& zcr_framing = config_.zcr_framing;
   const std::size_t zcr_frames = frame_count(zcr_framing, signal.size());
   out.zcr.resize(zcr_frames, 1);
-  const std::span<float> zframe(frame_.data(), static_cast<std::size_t>(zcr_framing.frame_length));
   const float threshold = static_cast<float>(config_.zcr_threshold);
+  auto negative = [threshold](float x) { return x < -threshold; };
+  crossings_before_.resize(signal.size());
+  std::uint32_t running = 0;
+  for (std::size_t n = 0; n < signal.size(); ++n) {
+    if (n > 0) running += negative(signal[n]) != negative(signal[n - 1]) ? 1u : 0u;
+    crossings_before_[n] = running;  // crossings between consecutive samples up to and including n
+  }
+  const auto length = static_cast<std::size_t>(zcr_framing.frame_length);
+  const std::span<float> zframe(frame_.data(), length);
   for (std::size_t t = 0; t < zcr_frames; ++t) {
-    copy_frame(zcr_framing, signal, t, zframe);
-    // librosa.zero_crossings: values within the threshold are zero, and zero counts as positive.
-    auto negative = [threshold](float x) { return std::abs(x) > threshold && x < 0.0f; };
+    const std::ptrdiff_t start =
+        static_cast<std::ptrdiff_t>(t) * zcr_framing.hop - (zcr_framing.center ? zcr_framing.frame_length / 2 : 0);
     std::size_t crossings = 0;
-    bool previous = negative(zframe[0]);
-    for (std::size_t n = 1; n < zframe.size(); ++n) {
-      const bool current = negative(zframe[n]);
-      crossings += current != previous ? 1 : 0;
-      previous = current;
+    if (start >= 0 && static_cast<std::size_t>(start) + length <= signal.size()) {
+      crossings = crossings_before_[static_cast<std::size_t>(start) + length - 1] - crossings_before_[static_cast<std::size_t>(start)];
+    } else {
+      copy_frame(zcr_framing, signal, t, zframe);
+      for (std::size_t n = 1; n < length; ++n) crossings += negative(zframe[n]) != negative(zframe[n - 1]) ? 1 : 0;
     }
-    out.zcr.at(t, 0) = static_cast<float>(static_cast<double>(crossings) / static_cast<double>(zframe.size()));
+    out.zcr.at(t, 0) = static_cast<float>(static_cast<double>(crossings) / static_cast<double>(length));
   }
 }
 

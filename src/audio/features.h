@@ -11,6 +11,7 @@
 // every feature of a mono signal, reusing its buffers (no allocation once shapes are stable).
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -99,7 +100,7 @@ struct GlobalFeatures {
 };
 
 // Whole-signal features. The DFT has the signal's exact length N when N's largest prime factor p keeps
-// the mixed-radix FFT cheap (N * p <= 2^31); otherwise the signal is zero-padded to the next length whose
+// the mixed-radix FFT cheap (N * p <= 2^27); otherwise the signal is zero-padded to the next length whose
 // factors are 2, 3 and 5 (a finer-sampled spectrum of the same signal; documented in docs/audio.md).
 // Throws InputError for an empty signal or a non-positive sample rate.
 GlobalFeatures global_features(std::span<const float> signal, int sample_rate);
@@ -140,6 +141,7 @@ class FeatureExtractor {
   std::vector<float> previous_magnitude_;
   std::vector<double> mel_energy_;
   std::vector<float> frame_;
+  std::vector<std::uint32_t> crossings_before_;  // running zero-crossing count per sample
 };
 
 }  // namespace echoplan::audio

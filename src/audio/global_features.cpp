@@ -49,9 +49,10 @@ GlobalFeatures global_features(std::span<const float> signal, int sample_rate) {
   for (std::size_t n = 1; n < signal.size(); ++n) out.zero_crossings += (signal[n] < 0.0f) != (signal[n - 1] < 0.0f) ? 1 : 0;
 
   // KISS FFT's generic radix costs N * p for a prime factor p: keep the exact length while that stays
-  // below ~2^31 operations, otherwise pad to a 2-3-5-smooth length (bounded time for any input).
+  // below 2^27 operations (~0.1 s), otherwise pad to a 2-3-5-smooth length (bounded time for any input).
+  constexpr double kMaxExactCost = 134217728.0;
   std::size_t length = signal.size();
-  if (static_cast<double>(length) * static_cast<double>(largest_prime_factor(length)) > 2147483648.0)
+  if (static_cast<double>(length) * static_cast<double>(largest_prime_factor(length)) > kMaxExactCost)
     length = next_smooth_length(length);
   std::unique_ptr<kiss_fft_state, KissFree> cfg(kiss_fft_alloc(static_cast<int>(length), 0, nullptr, nullptr));
   if (!cfg) throw std::bad_alloc();
