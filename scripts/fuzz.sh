@@ -13,7 +13,7 @@ cmake -S "$root" -B "$build" -DECHOPLAN_BUILD_FUZZ=ON -DCMAKE_CXX_COMPILER=clang
 cmake --build "$build" -j2 --target audio_decode_fuzz
 mkdir -p "$build/corpus" "$build/findings"
 cp -n "$root"/tests/data/reference/audio/inputs/* "$build/corpus/" 2>/dev/null || true
-# One worker; inputs up to 32 KiB keep runs fast (larger seeds are read truncated, which exercises the
+# One worker; inputs up to 4 KiB keep runs fast (~150/s; larger seeds are read truncated, which exercises the
 # truncated-data path); 10 s per input or 2 GiB are reported as bugs.
-"$build/fuzz/audio_decode_fuzz" "$build/corpus" -max_total_time="$seconds" -max_len=32768 -timeout=10 \
+"$build/fuzz/audio_decode_fuzz" "$build/corpus" -max_total_time="$seconds" -max_len=4096 -timeout=10 \
   -rss_limit_mb=2048 -artifact_prefix="$build/findings/" -print_final_stats=1

@@ -1,14 +1,13 @@
 #include "audio/features.h"
 
 #include <algorithm>
-#include <array>
-#include <utility>
 #include <cfloat>
 #include <cmath>
 #include <numbers>
 
 #include <fmt/format.h>
 
+#include "audio/name_table.h"
 #include "common/error.h"
 
 namespace echoplan::audio {
@@ -107,7 +106,7 @@ void validate_config(const FeatureConfig& config) {
 }
 
 namespace {
-constexpr std::array<std::pair<FeatureKind, std::string_view>, 9> kFeatureNames{{
+constexpr detail::NameTable<FeatureKind, 9> kFeatureNames{{
     {FeatureKind::log_mel, "logmel"},
     {FeatureKind::mfcc, "mfcc"},
     {FeatureKind::centroid, "centroid"},
@@ -120,15 +119,10 @@ constexpr std::array<std::pair<FeatureKind, std::string_view>, 9> kFeatureNames{
 }};
 }  // namespace
 
-std::string_view feature_name(FeatureKind kind) {
-  for (const auto& [k, name] : kFeatureNames)
-    if (k == kind) return name;
-  return "logmel";
-}
+std::string_view feature_name(FeatureKind kind) { return detail::name_of(kFeatureNames, kind); }
 
 FeatureKind feature_from_name(std::string_view name) {
-  for (const auto& [kind, known] : kFeatureNames)
-    if (known == name) return kind;
+  if (const auto kind = detail::value_named(kFeatureNames, name)) return *kind;
   throw InputError(fmt::format("unknown feature '{}' (expected logmel, mfcc, centroid, bandwidth, rolloff, flatness, flux, rms or zcr)", name));
 }
 

@@ -1,18 +1,17 @@
 #include "audio/window.h"
 
-#include <array>
 #include <cmath>
 #include <numbers>
-#include <utility>
 
 #include <fmt/format.h>
 
+#include "audio/name_table.h"
 #include "common/error.h"
 
 namespace echoplan::audio {
 namespace {
 
-constexpr std::array<std::pair<WindowKind, std::string_view>, 5> kNames{{
+constexpr detail::NameTable<WindowKind, 5> kNames{{
     {WindowKind::rectangular, "rect"},
     {WindowKind::hann_periodic, "hann"},
     {WindowKind::hann_symmetric, "hann_symmetric"},
@@ -37,15 +36,10 @@ std::vector<float> make_window(WindowKind kind, int length) {
   return window;
 }
 
-std::string_view window_name(WindowKind kind) {
-  for (const auto& [k, name] : kNames)
-    if (k == kind) return name;
-  return "rect";
-}
+std::string_view window_name(WindowKind kind) { return detail::name_of(kNames, kind); }
 
 WindowKind window_from_name(std::string_view name) {
-  for (const auto& [kind, known] : kNames)
-    if (known == name) return kind;
+  if (const auto kind = detail::value_named(kNames, name)) return *kind;
   throw InputError(fmt::format("unknown window '{}' (expected rect, hann, hann_symmetric, hamming, hamming_symmetric)", name));
 }
 
