@@ -13,9 +13,9 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace echoplan::audio;
   try {
-    // At most 2 s so that each input runs in bounded time and memory.
+    // At most 1 s so that each input runs in bounded time and memory.
     const AudioClip clip = read_audio_memory(std::span<const std::uint8_t>(data, size), "fuzz",
-                                             {.channel_policy = ChannelPolicy::mean, .max_duration_seconds = 2.0});
+                                             {.channel_policy = ChannelPolicy::mean, .max_duration_seconds = 1.0});
     (void)global_features(clip.samples, clip.sample_rate);
     for (const auto& config : {psf_preset(clip.sample_rate), librosa_preset(clip.sample_rate)}) {
       try {
