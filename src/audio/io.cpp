@@ -63,7 +63,8 @@ AudioClip decode(SNDFILE* file, const SF_INFO& info, const std::string& name, co
   if (info.samplerate < 1 || info.samplerate > 1'000'000)
     throw InputError(name, 0, fmt::format("the file declares a sample rate of {} Hz (expected 1..1000000)", info.samplerate));
   const double max_frames = options.max_duration_seconds * info.samplerate;
-  if (static_cast<double>(info.frames) > max_frames)
+  // SF_COUNT_MAX means "length unknown" (some streamed formats); the limit is then enforced while decoding.
+  if (info.frames != SF_COUNT_MAX && static_cast<double>(info.frames) > max_frames)
     throw InputError(name, 0,
                      fmt::format("the file is {:.1f} s long, more than the limit of {:.1f} s (ReadOptions::max_duration_seconds)",
                                  static_cast<double>(info.frames) / info.samplerate, options.max_duration_seconds));

@@ -203,7 +203,8 @@ std::vector<std::uint8_t> wav_bytes(std::uint16_t format_tag, std::uint16_t chan
                                     std::uint16_t bits, const std::vector<std::uint8_t>& data) {
   std::vector<std::uint8_t> out;
   auto put = [&](std::uint64_t value, int n) { for (int i = 0; i < n; ++i) out.push_back(static_cast<std::uint8_t>(value >> (8 * i))); };
-  auto tag = [&](const char* s) { out.insert(out.end(), s, s + 4); };
+  auto tag = [&](const char* s) { put(static_cast<std::uint64_t>(std::uint8_t(s[0])) | std::uint64_t(std::uint8_t(s[1])) << 8 |
+                                          std::uint64_t(std::uint8_t(s[2])) << 16 | std::uint64_t(std::uint8_t(s[3])) << 24, 4); };
   const std::uint16_t block = static_cast<std::uint16_t>(channels * bits / 8);
   tag("RIFF"); put(36 + data.size(), 4); tag("WAVE");
   tag("fmt "); put(16, 4); put(format_tag, 2); put(channels, 2); put(rate, 4); put(rate * block, 4); put(block, 2); put(bits, 2);
