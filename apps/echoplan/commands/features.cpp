@@ -86,6 +86,9 @@ void print_summary(const FeatureOptions& options, const audio::AudioClip& clip, 
   std::string times;
   for (std::size_t t : onsets) times += fmt::format("{}{:.3f}", times.empty() ? "" : ", ", static_cast<double>(t) * hop);
   fmt::print("onsets (s): {}\n", onsets.empty() ? "none" : times);
+  fmt::print("preset parameters:\n");
+  for (const auto& p : audio::describe_parameters(config))
+    fmt::print("  {:<17} {:>12.6g} {:<8} ({})\n", p.name, p.value, p.unit, p.description);
 }
 
 }  // namespace
