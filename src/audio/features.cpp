@@ -82,7 +82,8 @@ std::vector<ParameterInfo> describe_parameters(const FeatureConfig& c) {
       {"n_mels", "", 1, 1024, double(c.mel.n_mels), "mel filters"},
       {"fmin", "Hz", 0, nyquist, c.mel.fmin_hz, "lowest mel filter edge"},
       {"fmax", "Hz", 0, nyquist, c.mel.fmax_hz, "highest mel filter edge (0 = sample_rate / 2)"},
-      {"amin", "power", 1e-300, 1, c.amin, "decibel floor of power"},
+      // Flatness multiplies 16 clamped powers before one log: amin^16 must stay a normal double.
+      {"amin", "power", 1e-18, 1, c.amin, "decibel and flatness floor of power"},
       {"top_db", "dB", 0, 1000, c.top_db, "dynamic range kept below the maximum (0 = unlimited)"},
       {"n_mfcc", "", 1, double(c.mel.n_mels), double(c.n_mfcc), "cepstral coefficients (at most n_mels)"},
       {"lifter", "", 0, 1000, double(c.lifter), "sinusoidal lifter length L (0 = off)"},
@@ -231,7 +232,8 @@ void FeatureExtractor::spectral_shape(Features& out) {
       if (cumulative >= threshold) break;
     }
     // Flatness needs mean(log p): the product of 16 clamped powers in double stays within range
-    // (amin^16 and (2^24)^32 are representable), so one log per 16 bins replaces one per bin.
+    // ((1e-18)^16 and, with fft_size <= 2^24, (2^48)^16 are normal doubles), so one log per 16 bins replaces
+  // one per bin.
     double log_sum = 0.0;
     double power_sum = 0.0;
     std::size_t k = 0;

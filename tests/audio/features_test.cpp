@@ -169,6 +169,9 @@ TEST(FeatureConfig, ValidationNamesTheParameterUnitAndRange) {
   c = librosa_preset(44100);
   c.mel.fmax_hz = 30000;
   EXPECT_NE(input_error_message([&] { FeatureExtractor{c}; }).find("parameter fmax = 30000 Hz is outside 0..22050"), std::string::npos);
+  c = librosa_preset(16000);
+  c.amin = 1e-30;  // flatness's products of 16 powers would underflow
+  EXPECT_NE(input_error_message([&] { FeatureExtractor{c}; }).find("parameter amin = 1e-30 power is outside 1e-18..1"), std::string::npos);
   c = psf_preset(16000);
   c.preemphasis = std::nan("");
   EXPECT_NE(input_error_message([&] { FeatureExtractor{c}; }).find("parameter preemphasis"), std::string::npos);
