@@ -233,7 +233,7 @@ void FeatureExtractor::spectral_shape(Features& out) {
     }
     // Flatness needs mean(log p): the product of 16 clamped powers in double stays within range
     // ((1e-18)^16 and, with fft_size <= 2^24, (2^48)^16 are normal doubles), so one log per 16 bins replaces
-  // one per bin.
+    // one per bin.
     double log_sum = 0.0;
     double power_sum = 0.0;
     std::size_t k = 0;
