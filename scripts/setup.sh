@@ -25,6 +25,7 @@ packages=(
   libsndfile1-dev libsamplerate0-dev libkissfft-dev
   libmujoco-dev libqhull-dev libeigen3-dev
   gnuplot-nox
+  clang libclang-rt-14-dev   # scripts/fuzz.sh (libFuzzer)
 )
 
 install_deps() {
