@@ -1,0 +1,261 @@
+#include "sim/simulated_recorder.h"
+
+#include <kiss_fftr.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <memory>
+#include <numbers>
+
+namespace echoplan::sim {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr double kRingGainFloor = 0.15;      // real objects are not perfectly round: every ring mode hears a hit
+constexpr double kTableCoupling = 0.4;       // share of the contact force's effect that rings the table
+constexpr double kProfileSpacing = 1.0e-6;   // m between surface-profile samples (fine enough for 25 kHz at 5 cm/s)
+constexpr double kProfileExponent = 2.0;     // profile spectrum ~ 1/f^2: a Brownian (fractal) surface
+constexpr double kReferenceSlideSpeed = 0.05;  // m/s at which friction_gain is calibrated
+constexpr double kTailDecay = 11.5;          // ln(1e5): a mode is rendered until it fell by 100 dB
+constexpr double kSourceHeight = 0.02;       // m above the table: where the object radiates from
+constexpr double kDirectPathGain = 0.3;      // pressure at 1 m per unit modal amplitude
+
+// One mode's excitation: impulses at given samples plus (optionally) a shared continuous drive.
+struct ModeDrive {
+  std::vector<std::pair<std::size_t, double>> impulses;  // (sample, amplitude)
+  double continuous_gain = 0;                            // times the friction excitation
+};
+
+// Renders mode `mode` driven by `drive` into `out` (added): the resonator
+// y[n] = 2 r cos(w) y[n-1] - r^2 y[n-2] + sin(w) x[n] has impulse response r^n sin(w (n + 1)).
+void render_mode(const Mode& mode, const ModeDrive& drive, const std::vector<float>& friction, int rate,
+                 std::vector<float>& out) {
+  const double w = kTwoPi * mode.frequency_hz / rate;
+  const double r = std::exp(-mode.decay_per_s / rate);
+  const double a1 = 2.0 * r * std::cos(w), a2 = -r * r, b = std::sin(w);
+  const std::size_t n_total = out.size();
+  // Render from the first excitation until 100 dB below the last one.
+  std::size_t first = n_total, last = 0;
+  for (const auto& [at, amp] : drive.impulses) {
+    first = std::min(first, at);
+    last = std::max(last, at);
+  }
+  if (drive.continuous_gain != 0) {
+    for (std::size_t n = 0; n < friction.size(); ++n)
+      if (friction[n] != 0.0f) {
+        first = std::min(first, n);
+        last = std::max(last, n);
+      }
+  }
+  if (first >= n_total) return;
+  const double tail = mode.decay_per_s > 0 ? kTailDecay / mode.decay_per_s * rate : static_cast<double>(n_total);
+  const std::size_t end = std::min(n_total, last + static_cast<std::size_t>(tail) + 1);
+  std::vector<double> x(end - first, 0.0);
+  for (const auto& [at, amp] : drive.impulses) x[at - first] += amp;
+  if (drive.continuous_gain != 0)
+    for (std::size_t n = first; n < std::min(end, friction.size()); ++n) x[n - first] += drive.continuous_gain * friction[n];
+  double y1 = 0, y2 = 0;
+  for (std::size_t n = first; n < end; ++n) {
+    const double y = a1 * y1 + a2 * y2 + b * x[n - first];
+    y2 = y1;
+    y1 = y;
+    out[n] += static_cast<float>(y);
+  }
+}
+
+// |sum_i f_i e^{i n theta_i}| / sum_i f_i: how strongly a contact pattern drives ring mode n. A single
+// point drives it fully; contacts spread evenly round the rim (a flat landing) cancel.
+double ring_excitation(const std::vector<RimContact>& contacts, int order) {
+  if (order == 0) return 1.0;
+  std::complex<double> sum = 0;
+  double total = 0;
+  for (const auto& c : contacts) {
+    sum += c.normal_force * std::polar(1.0, order * c.azimuth_rad);
+    total += c.normal_force;
+  }
+  const double coherent = total > 0 ? std::abs(sum) / total : 1.0;
+  return kRingGainFloor + (1.0 - kRingGainFloor) * coherent;
+}
+
+// A 1/f^beta surface profile with `count` samples at kProfileSpacing, unit RMS slope per sample.
+std::vector<float> fractal_profile(std::size_t count, Rng& rng) {
+  std::size_t nfft = 2;
+  while (nfft < count) nfft *= 2;
+  std::vector<kiss_fft_cpx> spectrum(nfft / 2 + 1);
+  spectrum[0] = {0, 0};
+  for (std::size_t k = 1; k < spectrum.size(); ++k) {
+    const double magnitude = std::pow(static_cast<double>(k), -kProfileExponent / 2.0);
+    const double phase = kTwoPi * uniform01(rng);
+    spectrum[k] = {static_cast<float>(magnitude * std::cos(phase)), static_cast<float>(magnitude * std::sin(phase))};
+  }
+  std::vector<float> profile(nfft);
+  std::unique_ptr<std::remove_pointer_t<kiss_fftr_cfg>, void (*)(void*)> cfg(
+      kiss_fftr_alloc(static_cast<int>(nfft), 1, nullptr, nullptr), kiss_fftr_free);
+  kiss_fftri(cfg.get(), spectrum.data(), profile.data());
+  double slope_energy = 0;
+  for (std::size_t i = 1; i < nfft; ++i) slope_energy += (profile[i] - profile[i - 1]) * (profile[i] - profile[i - 1]);
+  const double scale = 1.0 / std::sqrt(slope_energy / static_cast<double>(nfft - 1));
+  for (auto& h : profile) h = static_cast<float>(h * scale);
+  profile.resize(count);
+  return profile;
+}
+
+// The friction excitation at audio rate: normal force times the profile's change as it passes the
+// contact at the sliding speed (per-step physics values interpolated linearly).
+std::vector<float> friction_excitation(const ContactTrace& trace, int rate, std::size_t frames, double gain,
+                                       Rng& rng) {
+  std::vector<float> e(frames, 0.0f);
+  double distance = 0;
+  for (double v : trace.sliding_speed) distance += v * trace.timestep_s;
+  if (distance <= 0 || gain == 0) return e;
+  const auto profile = fractal_profile(static_cast<std::size_t>(distance / kProfileSpacing) + 4, rng);
+  const std::size_t n_end = std::min(frames, static_cast<std::size_t>(trace.duration_s() * rate));
+  double x = 0;  // m travelled
+  double previous_height = profile[0];
+  for (std::size_t n = 0; n < n_end; ++n) {
+    const double step_pos = static_cast<double>(n) / rate / trace.timestep_s;
+    const std::size_t i = std::min(static_cast<std::size_t>(step_pos), static_cast<std::size_t>(trace.steps - 1));
+    const std::size_t j = std::min(i + 1, static_cast<std::size_t>(trace.steps - 1));
+    const double f = step_pos - static_cast<double>(i);
+    const double v = trace.sliding_speed[i] * (1 - f) + trace.sliding_speed[j] * f;
+    const double force = trace.normal_force[i] * (1 - f) + trace.normal_force[j] * f;
+    if (v <= 0) continue;
+    x += v / rate;
+    const double p = std::min(x / kProfileSpacing, static_cast<double>(profile.size() - 2));
+    const std::size_t k = static_cast<std::size_t>(p);
+    const double height = profile[k] + (profile[k + 1] - profile[k]) * (p - static_cast<double>(k));
+    // The profile has unit slope per profile sample, so (height change) * spacing * rate is slope
+    // times speed: at the reference speed the drive is gain * force * slope.
+    e[n] = static_cast<float>(gain * force * (height - previous_height) * kProfileSpacing * rate /
+                              kReferenceSlideSpeed);
+    previous_height = height;
+  }
+  return e;
+}
+
+// Zero-mean, unit-variance noise: Irwin-Hall sum of four 16-bit uniforms from one 64-bit draw
+// (cheap, and identical on every platform).
+float unit_noise(Rng& rng) {
+  const std::uint64_t bits = rng();
+  double sum = 0;
+  for (int k = 0; k < 4; ++k) sum += static_cast<double>((bits >> (16 * k)) & 0xFFFF) / 65536.0;
+  return static_cast<float>((sum - 2.0) * std::sqrt(3.0));
+}
+
+// A room impulse response as sparse taps: (delay in samples, gain). The direct path first, then
+// taps at random times with random signs under an exponential envelope reaching -60 dB at rt60.
+std::vector<std::pair<std::size_t, float>> room_taps(const RoomConfig& room, double direct_delay_s, double direct_gain,
+                                                     int rate, Rng& rng) {
+  std::vector<std::pair<std::size_t, float>> taps;
+  taps.emplace_back(static_cast<std::size_t>(std::lround(direct_delay_s * rate)), static_cast<float>(direct_gain));
+  const int count = static_cast<int>(std::lround(room.taps_per_s * room.length_s));
+  const double first_reflection = 0.0025;  // s after the direct sound
+  for (int i = 0; i < count; ++i) {
+    const double t = first_reflection + (room.length_s - first_reflection) * uniform01(rng);
+    const double sign = uniform01(rng) < 0.5 ? -1.0 : 1.0;
+    const double envelope = std::pow(10.0, -3.0 * t / room.rt60_s);
+    // Spread so that the tail's energy, not its tap count, is set by reverb_level.
+    const double amplitude = sign * room.reverb_level * direct_gain * envelope * std::sqrt(1000.0 / room.taps_per_s);
+    taps.emplace_back(static_cast<std::size_t>(std::lround((direct_delay_s + t) * rate)), static_cast<float>(amplitude));
+  }
+  return taps;
+}
+
+}  // namespace
+
+double hertz_pulse_envelope(double omega, double duration_s) {
+  const double x = omega * duration_s / std::numbers::pi;
+  return 1.0 / std::sqrt(1.0 + x * x * x * x);
+}
+
+SimulatedRecorder::SimulatedRecorder(const ObjectSpec& object, const TableSpec& table, const SimConfig& config)
+    : object_(object),
+      config_(config),
+      object_modes_(sim::object_modes(object, 0.45 * config.recording.sample_rate)),
+      table_modes_(sim::table_modes(table)),
+      contact_modulus_(effective_modulus(object.material, table.material)) {
+  std::erase_if(table_modes_, [&](const Mode& m) { return m.frequency_hz >= 0.45 * config.recording.sample_rate; });
+}
+
+double SimulatedRecorder::contact_time(const Impact& impact) const {
+  return hertz_contact_time(impact.effective_mass, object_.contact_radius, contact_modulus_, impact.normal_speed);
+}
+
+audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rng) const {
+  const auto& rec = config_.recording;
+  const int rate = rec.sample_rate;
+  const double seconds = std::max(rec.duration_s, outcome.duration_s + 0.2);
+  const auto frames = static_cast<std::size_t>(std::lround(seconds * rate));
+  const ContactTrace& trace = outcome.trace;
+
+  // Per-mode drives: each impact is an impulse of momentum m_eff v weighted by the pulse spectrum at
+  // the mode's frequency and, for ring modes, by the rim contact pattern.
+  std::vector<ModeDrive> object_drives(object_modes_.size()), table_drives(table_modes_.size());
+  for (const Impact& impact : trace.impacts) {
+    const auto at = static_cast<std::size_t>(std::lround(impact.time_s * rate));
+    if (at >= frames) continue;
+    const double momentum = impact.effective_mass * impact.normal_speed;
+    const double tau = contact_time(impact);
+    for (std::size_t k = 0; k < object_modes_.size(); ++k) {
+      const Mode& m = object_modes_[k];
+      const double amp = momentum * m.gain * hertz_pulse_envelope(kTwoPi * m.frequency_hz, tau) *
+                         ring_excitation(impact.contacts, m.azimuthal_order);
+      object_drives[k].impulses.emplace_back(at, amp);
+    }
+    for (std::size_t k = 0; k < table_modes_.size(); ++k) {
+      const Mode& m = table_modes_[k];
+      table_drives[k].impulses.emplace_back(
+          at, kTableCoupling * momentum * m.gain * hertz_pulse_envelope(kTwoPi * m.frequency_hz, tau));
+    }
+  }
+  const std::vector<float> friction = friction_excitation(trace, rate, frames, rec.friction_gain, rng);
+  for (std::size_t k = 0; k < object_modes_.size(); ++k) object_drives[k].continuous_gain = object_modes_[k].gain;
+  for (std::size_t k = 0; k < table_modes_.size(); ++k) table_drives[k].continuous_gain = kTableCoupling * table_modes_[k].gain;
+
+  std::vector<float> dry(frames, 0.0f);
+  for (std::size_t k = 0; k < object_modes_.size(); ++k) render_mode(object_modes_[k], object_drives[k], friction, rate, dry);
+  for (std::size_t k = 0; k < table_modes_.size(); ++k) render_mode(table_modes_[k], table_drives[k], friction, rate, dry);
+
+  // Two capsules either side of the microphone position along y; each hears the source with its own
+  // delay, 1/r gain and room response.
+  audio::AudioClip clip;
+  clip.sample_rate = rate;
+  clip.channels = 2;
+  clip.samples.assign(frames * 2, 0.0f);
+  const auto& mic = config_.microphone;
+  const double noise_rms = std::pow(10.0, rec.noise_dbfs / 20.0);
+  std::vector<float> wet(frames);
+  for (int channel = 0; channel < 2; ++channel) {
+    const double offset = (channel == 0 ? 0.5 : -0.5) * mic.capsule_spacing;
+    const double dx = mic.position[0] - trace.object_position[0];
+    const double dy = mic.position[1] + offset - trace.object_position[1];
+    const double dz = mic.position[2] - (trace.object_position[2] + kSourceHeight);
+    const double distance = std::max(0.05, std::sqrt(dx * dx + dy * dy + dz * dz));
+    std::fill(wet.begin(), wet.end(), 0.0f);
+    for (const auto& [delay, gain] : room_taps(config_.room, distance / kSpeedOfSound, kDirectPathGain / distance, rate, rng)) {
+      if (delay >= frames) continue;
+      const std::size_t n = frames - delay;
+      float* out = wet.data() + delay;
+      const float* in = dry.data();
+      for (std::size_t i = 0; i < n; ++i) out[i] += gain * in[i];
+    }
+    const float full_scale_max = 32767.0f / 32768.0f;
+    for (std::size_t i = 0; i < frames; ++i) {
+      const float sample = static_cast<float>(rec.output_gain) * wet[i] + static_cast<float>(noise_rms) * unit_noise(rng);
+      clip.samples[2 * i + channel] = std::clamp(sample, -1.0f, full_scale_max);
+    }
+  }
+  return clip;
+}
+
+Recording simulate_recording(SimulatedRobot& robot, const SimulatedRecorder& recorder, const std::string& action,
+                             Rng& rng) {
+  Recording r;
+  r.outcome = robot.execute(action, rng);
+  r.clip = recorder.record(r.outcome, rng);
+  return r;
+}
+
+}  // namespace echoplan::sim
