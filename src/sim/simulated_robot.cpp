@@ -335,11 +335,13 @@ ActionOutcome SimulatedRobot::execute(const std::string& action, const TrialPara
         outcome.collision = true;
         outcome.collision_time_s = time;
         outcome.duration_s = time;
+        for (int c = 0; c < 3; ++c) outcome.object_displacement[c] = d->qpos[s.object_qpos + c] - object_base[c];
         return outcome;
       }
     }
   }
   outcome.duration_s = time;
+  for (int k = 0; k < 3; ++k) outcome.object_displacement[k] = d->qpos[s.object_qpos + k] - object_base[k];
   return outcome;
 }
 

@@ -11,6 +11,7 @@
 // contact at waypoints); the action proper is simulated dynamically and its time starts at 0.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -33,6 +34,7 @@ struct ActionOutcome {
   double collision_time_s = 0; // s from the start of the action (negative: during the approach)
   double duration_s = 0;       // s simulated, from the start of the action to its end (or the collision)
   TrialParameters parameters;  // what was drawn for this trial
+  std::array<double, 3> object_displacement{};  // m, world frame: where the object ended minus where it began
   ContactTrace trace;          // object-table contacts
 };
 
