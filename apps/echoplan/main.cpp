@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
   });
 
   echoplan::cli::add_version_command(app);
+  echoplan::cli::add_synth_command(app);
+  echoplan::cli::add_dataset_command(app);
 
   try {
     app.parse(argc, argv);
