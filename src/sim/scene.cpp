@@ -74,7 +74,7 @@ std::string scene_mjcf(const ObjectSpec& object, const TableSpec& table, const P
   // The object collides with the table only through the explicit pair, which sets their friction.
   std::string xml = fmt::format(R"(<mujoco model="echoplan_scene">
 <compiler angle="radian" eulerseq="XYZ"/>
-<option timestep="{timestep}" integrator="Euler" cone="elliptic" iterations="{iterations}" tolerance="1e-6"/>
+<option timestep="{timestep}" integrator="Euler" cone="pyramidal" iterations="{iterations}" tolerance="1e-6"/>
 <size nconmax="100" njmax="400"/>
 <default><joint damping="{damping}" armature="{armature}"/></default>
 <worldbody>

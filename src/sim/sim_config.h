@@ -36,7 +36,7 @@ struct MicrophoneConfig {
 struct RoomConfig {
   double rt60_s = 0.25;           // s, reverberation time of the decaying-noise tail, > 0
   double length_s = 0.08;         // s, impulse response length kept, > 0
-  double taps_per_s = 1500;       // sparse noise taps per second of impulse response, > 0
+  double taps_per_s = 500;        // sparse noise taps per second of impulse response, > 0
   double reverb_level = 0.25;     // tail amplitude relative to the direct sound, >= 0
 };
 

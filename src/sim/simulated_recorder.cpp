@@ -15,9 +15,9 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kRingGainFloor = 0.15;      // real objects are not perfectly round: every ring mode hears a hit
 constexpr double kTableCoupling = 0.4;       // share of the contact force's effect that rings the table
-constexpr double kProfileSpacing = 1.0e-6;   // m between surface-profile samples (fine enough for 25 kHz at 5 cm/s)
-constexpr double kProfileExponent = 2.0;     // profile spectrum ~ 1/f^2: a Brownian (fractal) surface
+constexpr double kProfileSpacing = 2.0e-6;   // m between surface-profile samples (12.5 kHz at 5 cm/s)
 constexpr double kReferenceSlideSpeed = 0.05;  // m/s at which friction_gain is calibrated
+constexpr double kStaticSpeed = 1e-4;        // m/s: slower creep is static contact (the solver's drift), silent
 constexpr double kTailDecay = 11.5;          // ln(1e5): a mode is rendered until it fell by 100 dB
 constexpr double kSourceHeight = 0.02;       // m above the table: where the object radiates from
 constexpr double kDirectPathGain = 0.3;      // pressure at 1 m per unit modal amplitude
@@ -79,16 +79,35 @@ double ring_excitation(const std::vector<RimContact>& contacts, int order) {
   return kRingGainFloor + (1.0 - kRingGainFloor) * coherent;
 }
 
-// A 1/f^beta surface profile with `count` samples at kProfileSpacing, unit RMS slope per sample.
-std::vector<float> fractal_profile(std::size_t count, Rng& rng) {
+// Zero-mean, unit-variance noise: Irwin-Hall sum of four 16-bit uniforms from one 64-bit SplitMix64
+// output. The generator is seeded once from the recording's Rng: one engine call per clip instead of
+// one per sample, and identical on every platform.
+class NoiseSource {
+ public:
+  explicit NoiseSource(Rng& rng) : state_(rng()) {}
+  float next() {
+    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    const std::uint64_t sum = (z & 0xFFFF) + ((z >> 16) & 0xFFFF) + ((z >> 32) & 0xFFFF) + (z >> 48);
+    return static_cast<float>((static_cast<double>(sum) / 65536.0 - 2.0) * std::numbers::sqrt3);
+  }
+
+ private:
+  std::uint64_t state_;
+};
+
+// A 1/f^2 surface profile with `count` samples at kProfileSpacing, unit RMS slope per sample: white
+// Gaussian-like noise shaped in the frequency domain (amplitude ~ 1/f).
+std::vector<float> fractal_profile(std::size_t count, NoiseSource& noise) {
   std::size_t nfft = 2;
   while (nfft < count) nfft *= 2;
   std::vector<kiss_fft_cpx> spectrum(nfft / 2 + 1);
   spectrum[0] = {0, 0};
   for (std::size_t k = 1; k < spectrum.size(); ++k) {
-    const double magnitude = std::pow(static_cast<double>(k), -kProfileExponent / 2.0);
-    const double phase = kTwoPi * uniform01(rng);
-    spectrum[k] = {static_cast<float>(magnitude * std::cos(phase)), static_cast<float>(magnitude * std::sin(phase))};
+    const float magnitude = 1.0f / static_cast<float>(k);
+    spectrum[k] = {magnitude * noise.next(), magnitude * noise.next()};
   }
   std::vector<float> profile(nfft);
   std::unique_ptr<std::remove_pointer_t<kiss_fftr_cfg>, void (*)(void*)> cfg(
@@ -105,12 +124,12 @@ std::vector<float> fractal_profile(std::size_t count, Rng& rng) {
 // The friction excitation at audio rate: normal force times the profile's change as it passes the
 // contact at the sliding speed (per-step physics values interpolated linearly).
 std::vector<float> friction_excitation(const ContactTrace& trace, int rate, std::size_t frames, double gain,
-                                       Rng& rng) {
+                                       NoiseSource& noise) {
   std::vector<float> e(frames, 0.0f);
   double distance = 0;
   for (double v : trace.sliding_speed) distance += v * trace.timestep_s;
   if (distance <= 0 || gain == 0) return e;
-  const auto profile = fractal_profile(static_cast<std::size_t>(distance / kProfileSpacing) + 4, rng);
+  const auto profile = fractal_profile(static_cast<std::size_t>(distance / kProfileSpacing) + 4, noise);
   const std::size_t n_end = std::min(frames, static_cast<std::size_t>(trace.duration_s() * rate));
   double x = 0;  // m travelled
   double previous_height = profile[0];
@@ -121,7 +140,7 @@ std::vector<float> friction_excitation(const ContactTrace& trace, int rate, std:
     const double f = step_pos - static_cast<double>(i);
     const double v = trace.sliding_speed[i] * (1 - f) + trace.sliding_speed[j] * f;
     const double force = trace.normal_force[i] * (1 - f) + trace.normal_force[j] * f;
-    if (v <= 0) continue;
+    if (v < kStaticSpeed) continue;
     x += v / rate;
     const double p = std::min(x / kProfileSpacing, static_cast<double>(profile.size() - 2));
     const std::size_t k = static_cast<std::size_t>(p);
@@ -135,32 +154,31 @@ std::vector<float> friction_excitation(const ContactTrace& trace, int rate, std:
   return e;
 }
 
-// Zero-mean, unit-variance noise: Irwin-Hall sum of four 16-bit uniforms from one 64-bit draw
-// (cheap, and identical on every platform).
-float unit_noise(Rng& rng) {
-  const std::uint64_t bits = rng();
-  double sum = 0;
-  for (int k = 0; k < 4; ++k) sum += static_cast<double>((bits >> (16 * k)) & 0xFFFF) / 65536.0;
-  return static_cast<float>((sum - 2.0) * std::sqrt(3.0));
-}
-
-// A room impulse response as sparse taps: (delay in samples, gain). The direct path first, then
-// taps at random times with random signs under an exponential envelope reaching -60 dB at rt60.
-std::vector<std::pair<std::size_t, float>> room_taps(const RoomConfig& room, double direct_delay_s, double direct_gain,
-                                                     int rate, Rng& rng) {
+// The room's response after the direct sound, as sparse taps (delay in samples after the direct
+// sound, gain relative to it): taps at random times with random signs under an exponential envelope
+// reaching -60 dB at rt60 (velvet noise).
+std::vector<std::pair<std::size_t, float>> reverb_taps(const RoomConfig& room, int rate, Rng& rng) {
   std::vector<std::pair<std::size_t, float>> taps;
-  taps.emplace_back(static_cast<std::size_t>(std::lround(direct_delay_s * rate)), static_cast<float>(direct_gain));
   const int count = static_cast<int>(std::lround(room.taps_per_s * room.length_s));
   const double first_reflection = 0.0025;  // s after the direct sound
   for (int i = 0; i < count; ++i) {
     const double t = first_reflection + (room.length_s - first_reflection) * uniform01(rng);
     const double sign = uniform01(rng) < 0.5 ? -1.0 : 1.0;
     const double envelope = std::pow(10.0, -3.0 * t / room.rt60_s);
-    // Spread so that the tail's energy, not its tap count, is set by reverb_level.
-    const double amplitude = sign * room.reverb_level * direct_gain * envelope * std::sqrt(1000.0 / room.taps_per_s);
-    taps.emplace_back(static_cast<std::size_t>(std::lround((direct_delay_s + t) * rate)), static_cast<float>(amplitude));
+    // Scaled so that the tail's energy, not its tap count, is set by reverb_level.
+    const double amplitude = sign * room.reverb_level * envelope * std::sqrt(1000.0 / room.taps_per_s);
+    taps.emplace_back(static_cast<std::size_t>(std::lround(t * rate)), static_cast<float>(amplitude));
   }
   return taps;
+}
+
+// out[i + delay] += gain * in[i] over the overlap (vectorises).
+void add_delayed(const std::vector<float>& in, std::size_t delay, float gain, std::vector<float>& out) {
+  if (delay >= out.size()) return;
+  const std::size_t n = std::min(in.size(), out.size() - delay);
+  float* o = out.data() + delay;
+  const float* x = in.data();
+  for (std::size_t i = 0; i < n; ++i) o[i] += gain * x[i];
 }
 
 }  // namespace
@@ -210,7 +228,8 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
           at, kTableCoupling * momentum * m.gain * hertz_pulse_envelope(kTwoPi * m.frequency_hz, tau));
     }
   }
-  const std::vector<float> friction = friction_excitation(trace, rate, frames, rec.friction_gain, rng);
+  NoiseSource noise(rng);
+  const std::vector<float> friction = friction_excitation(trace, rate, frames, rec.friction_gain, noise);
   for (std::size_t k = 0; k < object_modes_.size(); ++k) object_drives[k].continuous_gain = object_modes_[k].gain;
   for (std::size_t k = 0; k < table_modes_.size(); ++k) table_drives[k].continuous_gain = kTableCoupling * table_modes_[k].gain;
 
@@ -218,34 +237,32 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
   for (std::size_t k = 0; k < object_modes_.size(); ++k) render_mode(object_modes_[k], object_drives[k], friction, rate, dry);
   for (std::size_t k = 0; k < table_modes_.size(); ++k) render_mode(table_modes_[k], table_drives[k], friction, rate, dry);
 
-  // Two capsules either side of the microphone position along y; each hears the source with its own
-  // delay, 1/r gain and room response.
+  // The room: the dry sound plus its reverberant tail, shared by both capsules (they are centimetres
+  // apart in the same room).
+  std::vector<float> room = dry;
+  for (const auto& [delay, gain] : reverb_taps(config_.room, rate, rng)) add_delayed(dry, delay, gain, room);
+
+  // Two capsules either side of the microphone position along y; each hears the room's sound with its
+  // own delay and 1/r gain, plus its own background noise.
   audio::AudioClip clip;
   clip.sample_rate = rate;
   clip.channels = 2;
   clip.samples.assign(frames * 2, 0.0f);
   const auto& mic = config_.microphone;
-  const double noise_rms = std::pow(10.0, rec.noise_dbfs / 20.0);
-  std::vector<float> wet(frames);
+  const float noise_rms = static_cast<float>(std::pow(10.0, rec.noise_dbfs / 20.0));
+  std::vector<float> heard(frames);
   for (int channel = 0; channel < 2; ++channel) {
     const double offset = (channel == 0 ? 0.5 : -0.5) * mic.capsule_spacing;
     const double dx = mic.position[0] - trace.object_position[0];
     const double dy = mic.position[1] + offset - trace.object_position[1];
     const double dz = mic.position[2] - (trace.object_position[2] + kSourceHeight);
     const double distance = std::max(0.05, std::sqrt(dx * dx + dy * dy + dz * dz));
-    std::fill(wet.begin(), wet.end(), 0.0f);
-    for (const auto& [delay, gain] : room_taps(config_.room, distance / kSpeedOfSound, kDirectPathGain / distance, rate, rng)) {
-      if (delay >= frames) continue;
-      const std::size_t n = frames - delay;
-      float* out = wet.data() + delay;
-      const float* in = dry.data();
-      for (std::size_t i = 0; i < n; ++i) out[i] += gain * in[i];
-    }
+    std::fill(heard.begin(), heard.end(), 0.0f);
+    add_delayed(room, static_cast<std::size_t>(std::lround(distance / kSpeedOfSound * rate)),
+                static_cast<float>(rec.output_gain * kDirectPathGain / distance), heard);
     const float full_scale_max = 32767.0f / 32768.0f;
-    for (std::size_t i = 0; i < frames; ++i) {
-      const float sample = static_cast<float>(rec.output_gain) * wet[i] + static_cast<float>(noise_rms) * unit_noise(rng);
-      clip.samples[2 * i + channel] = std::clamp(sample, -1.0f, full_scale_max);
-    }
+    for (std::size_t i = 0; i < frames; ++i)
+      clip.samples[2 * i + channel] = std::clamp(heard[i] + noise_rms * noise.next(), -1.0f, full_scale_max);
   }
   return clip;
 }

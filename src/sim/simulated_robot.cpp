@@ -15,15 +15,16 @@ namespace {
 
 constexpr double kActionDistance = 0.05;    // m: the slide's push and the strike's lift (seed section 3.2.1)
 constexpr double kLiftSpeed = 0.10;         // m/s
-constexpr double kPressDepth = 0.003;       // m the strike's target lies below the resting height
+constexpr double kPressDepth = 0.001;       // m the strike's target lies below the resting height
 constexpr double kPadGap = 0.001;           // m between pad and object before the push
 constexpr double kPadRadius = 0.012;        // m, as in the scene
-constexpr double kPreSettleTime = 0.1;      // s simulated before the action so the object rests
-constexpr double kSettleTime = 0.3;         // s simulated after the motion so the object comes to rest
+constexpr double kPreSettleTime = 0.04;     // s simulated before the action so the object rests
+constexpr double kSettleTime = 0.2;         // s simulated after the motion so the object comes to rest
 constexpr double kImpactSpeedThreshold = 0.02;  // m/s: slower approaches (resting, rocking while pushed) are heard through friction
 constexpr double kImpactRefractory = 0.010;      // s: a soft contact settles over a few steps; one impact
 constexpr double kDampedLeastSquaresLambda = 0.02;
-constexpr double kPostureGain = 0.05;       // per IK step, towards the initial joint configuration
+constexpr double kPostureGain = 0.1;        // per IK step, towards the initial joint configuration
+constexpr double kControlPeriod = 0.01;     // s between IK solutions (100 Hz, as the arm's own controller)
 
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
@@ -309,6 +310,8 @@ ActionOutcome SimulatedRobot::execute(const std::string& action, const TrialPara
   // of the arm are compensated, as the real arm's controller does.
   ContactRecorder recorder(s, outcome.trace);
   const double dt = m->opt.timestep;
+  const int control_steps = std::max(1, static_cast<int>(std::lround(kControlPeriod / dt)));
+  std::vector<double> q_previous = q;
   double time = 0;
   for (const Segment& seg : plan) {
     if (seg.at_start == Segment::Event::grasp) {
@@ -318,14 +321,22 @@ ActionOutcome SimulatedRobot::execute(const std::string& action, const TrialPara
       m->eq_active[s.grasp_weld] = 0;
     }
     const int steps = std::max(1, static_cast<int>(std::lround(seg.duration_s / dt)));
+    int tick_start = 0, tick_length = 1;
     for (int k = 1; k <= steps; ++k) {
-      const double f = static_cast<double>(k) / steps;
-      dls_step(m, kin.get(), s.end_effector_site, q.data(), seg.from + (seg.to - seg.from) * f,
-               seg.turn_from.slerp(f, seg.turn_to));
+      // Each control tick solves IK for the pose at the tick's end; joint targets ramp linearly to it.
+      if ((k - 1) % control_steps == 0) {
+        q_previous = q;
+        tick_start = k - 1;
+        tick_length = std::min(control_steps, steps - tick_start);
+        const double f = static_cast<double>(tick_start + tick_length) / steps;
+        dls_step(m, kin.get(), s.end_effector_site, q.data(), seg.from + (seg.to - seg.from) * f,
+                 seg.turn_from.slerp(f, seg.turn_to));
+      }
+      const double ramp = static_cast<double>(k - tick_start) / tick_length;
       mj_step1(m, d);
       recorder.before_forces(m, d, time);
       for (int i = 0; i < kArmJoints; ++i) {
-        d->ctrl[i] = q[i];
+        d->ctrl[i] = q_previous[i] + ramp * (q[i] - q_previous[i]);
         d->qfrc_applied[i] = d->qfrc_bias[i];
       }
       mj_step2(m, d);

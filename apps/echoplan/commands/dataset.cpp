@@ -1,6 +1,5 @@
 // `echoplan dataset`: record every (object, action) pair several times into a folder with a manifest.
 #include <fmt/core.h>
-#include <spdlog/spdlog.h>
 
 #include <atomic>
 #include <csignal>
@@ -49,7 +48,7 @@ void add_dataset_command(CLI::App& app) {
     const auto previous = std::signal(SIGINT, request_stop);
     const sim::DatasetSummary summary = sim::write_dataset(
         setup.catalogue, setup.config, opt->dataset,
-        [](int done, int total, const std::string& file) { spdlog::info("[{}/{}] {}", done, total, file); },
+        [](int done, int total, const std::string& file) { fmt::print(stderr, "[{}/{}] {}\n", done, total, file); },
         interrupt_requested);
     std::signal(SIGINT, previous);
     fmt::print("{} recordings in {} ({} with the arm touching the table); manifest: {}/manifest.csv\n", summary.written,
