@@ -25,6 +25,8 @@ int main(int argc, char** argv) {
   echoplan::cli::add_version_command(app);
   echoplan::cli::add_synth_command(app);
   echoplan::cli::add_dataset_command(app);
+  echoplan::cli::add_features_command(app);
+  echoplan::cli::add_heatmap_command(app);
 
   try {
     app.parse(argc, argv);

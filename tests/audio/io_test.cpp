@@ -97,25 +97,32 @@ TEST(AudioIo, Float32WavRoundTripIsExact) {
                      temp_path("f.flac").string(), "integer");
 }
 
-TEST(AudioIo, WriteClipsOutOfRangeSamplesToFullScale) {
+// Writes mono 44.1 kHz `samples` with `options` and reads them back.
+std::vector<float> round_trip(const std::vector<float>& samples, const std::string& name, const WriteOptions& options = {}) {
   AudioClip clip;
-  clip.samples = {2.0f, -2.0f, 0.25f};
-  const auto path = temp_path("clip.wav").string();
-  write_audio(path, clip);
-  const AudioClip back = read_audio(path);
-  EXPECT_NEAR(back.samples[0], 32767.0 / 32768.0, 1e-7);
-  EXPECT_FLOAT_EQ(back.samples[1], -1.0f);
-  EXPECT_FLOAT_EQ(back.samples[2], 0.25f);
+  clip.samples = samples;
+  const auto path = temp_path(name).string();
+  write_audio(path, clip, options);
+  return read_audio(path).samples;
+}
+
+TEST(AudioIo, WriteClipsOutOfRangeSamplesToFullScale) {
+  const std::vector<float> back = round_trip({2.0f, -2.0f, 0.25f}, "clip.wav");
+  EXPECT_NEAR(back[0], 32767.0 / 32768.0, 1e-7);
+  EXPECT_FLOAT_EQ(back[1], -1.0f);
+  EXPECT_FLOAT_EQ(back[2], 0.25f);
 }
 
 TEST(AudioIo, IntegerPcmIsDividedByTwoToTheBitsMinusOne) {
-  // A 16-bit WAV with sample values written by hand: 16384 must read as exactly 0.5, -32768 as -1.
-  AudioClip clip;
-  clip.samples = {0.5f, -1.0f, 0.0f};
-  const auto path = temp_path("exact.wav").string();
-  write_audio(path, clip);
-  const AudioClip back = read_audio(path);
-  EXPECT_EQ(back.samples, clip.samples);
+  // 16384 must read as exactly 0.5 and -32768 as -1; in 24 bits, one step is 2^-23.
+  const std::vector<float> exact{0.5f, -1.0f, 0.0f};
+  EXPECT_EQ(round_trip(exact, "exact.wav"), exact);
+  const float step24 = std::ldexp(1.0f, -23);
+  const std::vector<float> fine{3 * step24, -step24, 0.75f};
+  EXPECT_EQ(round_trip(fine, "fine.wav", {FileFormat::wav, SampleEncoding::pcm24}), fine);
+  EXPECT_EQ(round_trip(fine, "fine.flac", {FileFormat::flac, SampleEncoding::pcm24}), fine);
+  // The same values in 16 bits round to the nearest 2^-15 step: 3 * 2^-23 and -2^-23 become 0.
+  EXPECT_EQ(round_trip(fine, "coarse.wav"), (std::vector<float>{0.0f, 0.0f, 0.75f}));
 }
 
 TEST(AudioIo, MeanPolicyAveragesChannelsAndSelectPicksOne) {

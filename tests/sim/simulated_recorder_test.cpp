@@ -11,6 +11,7 @@
 #include <map>
 #include <numbers>
 
+#include "audio/features.h"
 #include "audio/io.h"
 
 namespace echoplan::sim {
@@ -221,31 +222,21 @@ TEST(SimulatedRecorder, SameSeedGivesIdenticalFiles) {
   std::filesystem::remove_all(dir);
 }
 
-// Log energies in 32 bands evenly spaced on a log-frequency axis from 50 Hz to 16 kHz, over the
-// whole clip (channels summed): a simple stand-in for MFCC (a cepstrum is a rotation of these).
-std::vector<double> log_band_features(const audio::AudioClip& clip) {
-  double bin = 0;
-  audio::AudioClip mono;
-  mono.sample_rate = clip.sample_rate;
-  mono.channels = 1;
-  for (std::size_t i = 0; i < clip.frames(); ++i) mono.samples.push_back(clip.samples[2 * i] + clip.samples[2 * i + 1]);
-  const auto mag = spectrum(mono, 0, 0, mono.frames(), &bin);
-  const int bands = 32;
-  std::vector<double> energy(bands, 1e-12);
-  for (std::size_t k = 1; k < mag.size(); ++k) {
-    const double f = k * bin;
-    if (f < 50 || f >= 16000) continue;
-    const int b = static_cast<int>(bands * std::log(f / 50) / std::log(16000.0 / 50));
-    energy[b] += mag[k] * mag[k];
-  }
-  for (auto& e : energy) e = std::log10(e);
-  return energy;
+// The seed's observation feature: the MFCC matrix (frames x coefficients) of the whole clip, channels
+// averaged, flattened (every clip here is 3 s long, so the vectors have equal length).
+std::vector<double> mfcc_features(const audio::AudioClip& clip, audio::FeatureExtractor& extractor) {
+  std::vector<float> mono(clip.frames());
+  for (std::size_t i = 0; i < clip.frames(); ++i) mono[i] = 0.5f * (clip.samples[2 * i] + clip.samples[2 * i + 1]);
+  audio::Features features;
+  extractor.compute(mono, features);
+  return {features.mfcc.values.begin(), features.mfcc.values.end()};
 }
 
 TEST(SimulatedRecorder, NearestCentroidTellsTheFourObjectsApart) {
   // Sanity check, not the classifier: 6 training and 4 test recordings per (object, action) with the
-  // default variability; a nearest-centroid on log band energies must beat chance (25%) by far.
+  // default variability; a nearest-centroid on MFCC (librosa preset) must beat chance (25%) by far.
   const SimConfig config;
+  audio::FeatureExtractor extractor(audio::librosa_preset(config.recording.sample_rate));
   const std::vector<std::string> objects{"pringles_can", "coffee_mug", "plastic_cup", "paper_base"};
   int correct = 0, total = 0;
   for (const char* action : {"slide", "strike"}) {
@@ -255,7 +246,7 @@ TEST(SimulatedRecorder, NearestCentroidTellsTheFourObjectsApart) {
       SimulatedRecorder recorder(robot.object(), robot.table(), config);
       for (int i = 0; i < 10; ++i) {
         Rng rng(derive_seed(2024, {static_cast<std::uint64_t>(i), name.size(), static_cast<std::uint64_t>(action[1])}));
-        const auto features = log_band_features(simulate_recording(robot, recorder, action, rng).clip);
+        const auto features = mfcc_features(simulate_recording(robot, recorder, action, rng).clip, extractor);
         (i < 6 ? train : test)[name].push_back(features);
       }
     }

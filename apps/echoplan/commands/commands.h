@@ -9,5 +9,7 @@ namespace echoplan::cli {
 void add_version_command(CLI::App& app);
 void add_synth_command(CLI::App& app);
 void add_dataset_command(CLI::App& app);
+void add_features_command(CLI::App& app);
+void add_heatmap_command(CLI::App& app);
 
 }  // namespace echoplan::cli
