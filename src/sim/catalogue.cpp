@@ -4,12 +4,12 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 #include <set>
 #include <sstream>
 
 #include "common/error.h"
+#include "sim/yaml_file.h"
 
 namespace echoplan::sim {
 
@@ -235,12 +235,7 @@ ObjectSpec read_modified(const Catalogue& c, const std::string& name, const Entr
 }  // namespace
 
 Catalogue parse_catalogue(const std::string& yaml_text, const std::string& source) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(source, e.mark.line + 1, "not valid YAML: " + e.msg);
-  }
+  const YAML::Node root = parse_yaml(yaml_text, source);
   Catalogue c;
   c.source = source;
   EntryReader top(source, "catalogue", root);
@@ -274,11 +269,7 @@ Catalogue parse_catalogue(const std::string& yaml_text, const std::string& sourc
 }
 
 Catalogue load_catalogue(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "cannot open the object catalogue");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_catalogue(text.str(), path);
+  return parse_catalogue(read_text_file(path, "object catalogue"), path);
 }
 
 std::string default_catalogue_path() {

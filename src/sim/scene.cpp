@@ -15,7 +15,6 @@ constexpr double kTableHalfSize = 0.3;     // m, drawn size of the table; it col
 constexpr double kUpperLinkRadius = 0.035;  // m, capsules approximating the shoulder and upper arm
 constexpr double kLowerLinkRadius = 0.03;   // m, forearm and wrist
 constexpr double kHandRadius = 0.03;       // m, the hand and closed fingers
-constexpr double kPadRadius = 0.012;       // m, the fingertip pad that pushes in a slide
 constexpr double kServoStiffness = 1000;   // N m / rad, joint position servos
 constexpr double kJointDamping = 20;       // N m s / rad, about critical with the armature below
 constexpr double kArmature = 0.1;          // kg m^2, reflected rotor inertia of the geared joints

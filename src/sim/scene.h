@@ -23,6 +23,7 @@ inline constexpr int kArmJoints = 7;
 // end effector.
 inline constexpr std::array<double, kArmJoints> kInitialArmConfiguration{-2.89527, 1.45058, -0.18396, 2.07696,
                                                                            -0.310356, 0.630897, -1.54233};
+inline constexpr double kPadRadius = 0.012;   // m, the fingertip pad that pushes in a slide
 inline constexpr double kObjectOffsetX = 0.1;     // m, object from end effector at the start
 // m, end effector above the table at the start: the arm's forearm then clears the table by ~2 cm.
 inline constexpr double kNominalGraspHeight = 0.085;

@@ -4,13 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <map>
 #include <numbers>
 #include <sstream>
 
 #include "common/error.h"
+#include "sim/yaml_file.h"
 
 namespace echoplan::sim {
 
@@ -77,12 +77,7 @@ std::function<void(const YAML::Node&, const std::string&)> spread_into(const std
 }  // namespace
 
 SimConfig parse_sim_config(const std::string& yaml_text, const std::string& source) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(source, e.mark.line + 1, "not valid YAML: " + e.msg);
-  }
+  const YAML::Node root = parse_yaml(yaml_text, source);
   SimConfig c;
   if (root.IsNull()) return c;
   if (!root.IsMap()) fail(source, root, "a sim config must be a mapping of sections");
@@ -128,11 +123,7 @@ SimConfig parse_sim_config(const std::string& yaml_text, const std::string& sour
 }
 
 SimConfig load_sim_config(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "cannot open the sim config");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_sim_config(text.str(), path);
+  return parse_sim_config(read_text_file(path, "sim config"), path);
 }
 
 double standard_normal(Rng& rng) {

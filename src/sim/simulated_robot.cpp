@@ -17,7 +17,6 @@ constexpr double kActionDistance = 0.05;    // m: the slide's push and the strik
 constexpr double kLiftSpeed = 0.10;         // m/s
 constexpr double kPressDepth = 0.001;       // m the strike's target lies below the resting height
 constexpr double kPadGap = 0.001;           // m between pad and object before the push
-constexpr double kPadRadius = 0.012;        // m, as in the scene
 constexpr double kPreSettleTime = 0.04;     // s simulated before the action so the object rests
 constexpr double kSettleTime = 0.2;         // s simulated after the motion so the object comes to rest
 constexpr double kImpactSpeedThreshold = 0.02;  // m/s: slower approaches (resting, rocking while pushed) are heard through friction

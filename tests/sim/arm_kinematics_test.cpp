@@ -5,15 +5,15 @@
 #include "sim/catalogue.h"
 #include "sim/scene.h"
 
+#include "shipped_catalogue.h"
+
 namespace echoplan::sim {
 namespace {
-
-Catalogue shipped() { return load_catalogue(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml"); }
 
 TEST(ArmKinematics, MujocoModelAgreesWithTheJointTable) {
   // Two independent computations of the same chain: Eigen from the table, MuJoCo from the generated
   // MJCF. Several configurations, including the initial one; agreement to 1e-9 m (double rounding).
-  const Catalogue c = shipped();
+  const Catalogue& c = shipped_catalogue();
   Scene scene(c.object("coffee_mug"), c.table, PhysicsConfig{});
   mjModel* m = scene.model();
   mjData* d = scene.data();
@@ -36,7 +36,7 @@ TEST(ArmKinematics, InitialConfigurationPointsTheHandDown) {
 }
 
 TEST(ArmKinematics, JointLimitsAreInTheModel) {
-  const Catalogue c = shipped();
+  const Catalogue& c = shipped_catalogue();
   Scene scene(c.object("coffee_mug"), c.table, PhysicsConfig{});
   const mjModel* m = scene.model();
   const double limits[7] = {0, 2.35, 0, 2.65, 0, 2.25, 0};

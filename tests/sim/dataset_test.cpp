@@ -11,15 +11,12 @@
 #include "common/error.h"
 #include "sim/simulated_recorder.h"
 
+#include "shipped_catalogue.h"
+
 namespace echoplan::sim {
 namespace {
 
 namespace fs = std::filesystem;
-
-const Catalogue& shipped() {
-  static const Catalogue c = load_catalogue(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml");
-  return c;
-}
 
 std::vector<std::string> lines_of(const fs::path& p) {
   std::ifstream in(p);
@@ -43,7 +40,7 @@ TEST(Dataset, WritesEveryPairAndAManifestThatReproducesEachFile) {
   options.output_dir = dir.string();
   std::atomic<bool> stop{false};
   int calls = 0;
-  const DatasetSummary s = write_dataset(shipped(), SimConfig{}, options,
+  const DatasetSummary s = write_dataset(shipped_catalogue(), SimConfig{}, options,
                                          [&](int done, int total, const std::string&) {
                                            ++calls;
                                            EXPECT_EQ(total, 8);
@@ -67,7 +64,7 @@ TEST(Dataset, WritesEveryPairAndAManifestThatReproducesEachFile) {
   std::getline(row, seed, ',');
   EXPECT_EQ(file, "coffee_mug/slide/000.wav");
   EXPECT_EQ(std::stoull(seed), clip_seed(99, "coffee_mug", "slide", 0));
-  SimulatedRobot robot(shipped(), object, SimConfig{});
+  SimulatedRobot robot(shipped_catalogue(), object, SimConfig{});
   SimulatedRecorder recorder(robot.object(), robot.table(), SimConfig{});
   Rng rng(std::stoull(seed));
   const auto again = simulate_recording(robot, recorder, action, rng).clip;
@@ -88,7 +85,7 @@ TEST(Dataset, StoppingKeepsFinishedFilesAndTheirRows) {
   options.output_dir = dir.string();
   std::atomic<bool> stop{false};
   const DatasetSummary s =
-      write_dataset(shipped(), SimConfig{}, options, [&](int done, int, const std::string&) { stop = done == 2; }, stop);
+      write_dataset(shipped_catalogue(), SimConfig{}, options, [&](int done, int, const std::string&) { stop = done == 2; }, stop);
   EXPECT_TRUE(s.interrupted);
   EXPECT_EQ(s.written, 2);
   EXPECT_EQ(lines_of(dir / "manifest.csv").size(), 3u);
@@ -105,10 +102,10 @@ TEST(Dataset, UnknownNamesFailBeforeAnyFileIsWritten) {
   options.output_dir = dir.string();
   std::atomic<bool> stop{false};
   options.objects = {"teapot"};
-  EXPECT_THROW(write_dataset(shipped(), SimConfig{}, options, nullptr, stop), InputError);
+  EXPECT_THROW(write_dataset(shipped_catalogue(), SimConfig{}, options, nullptr, stop), InputError);
   options.objects = {"coffee_mug"};
   options.actions = {"juggle"};
-  EXPECT_THROW(write_dataset(shipped(), SimConfig{}, options, nullptr, stop), InputError);
+  EXPECT_THROW(write_dataset(shipped_catalogue(), SimConfig{}, options, nullptr, stop), InputError);
   EXPECT_FALSE(fs::exists(dir));
 }
 

@@ -14,13 +14,10 @@
 #include "audio/features.h"
 #include "audio/io.h"
 
+#include "shipped_catalogue.h"
+
 namespace echoplan::sim {
 namespace {
-
-const Catalogue& shipped() {
-  static const Catalogue c = load_catalogue(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml");
-  return c;
-}
 
 // A config with no background noise and no reverberation, so spectra show the modes alone.
 SimConfig quiet() {
@@ -51,18 +48,16 @@ std::vector<double> spectrum(const audio::AudioClip& clip, int channel, std::siz
   return mag;
 }
 
+// The nominal trial with a small tilt, so the rim lands first and every ring mode is excited.
 TrialParameters nominal() {
-  TrialParameters p;
-  p.impact_speed = 0.1;
-  p.grasp_height = VariabilityConfig{}.grasp_height.mean;
-  p.push_speed = 0.05;
+  TrialParameters p = nominal_trial();
   p.impact_tilt_deg = 3;
   return p;
 }
 
 TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
   // An object with listed modes; the peak nearest each must sit on it, far above the spectrum floor.
-  Catalogue c = shipped();
+  Catalogue c = shipped_catalogue();
   ObjectSpec bell = c.object("coffee_mug");
   bell.listed_modes = {{900, 1.0, 8.0}, {2300, 1.0, 8.0}, {4100, 1.0, 8.0}};
   c.objects["bell"] = bell;
@@ -92,7 +87,7 @@ TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
 
 TEST(SimulatedRecorder, DerivedModesOfTheMugAppearInItsStrike) {
   const SimConfig config = quiet();
-  SimulatedRobot robot(shipped(), "coffee_mug", config);
+  SimulatedRobot robot(shipped_catalogue(), "coffee_mug", config);
   SimulatedRecorder recorder(robot.object(), robot.table(), config);
   const ActionOutcome out = robot.execute("strike", nominal());
   Rng rng(3);
@@ -133,7 +128,7 @@ TEST(SimulatedRecorder, HeavierObjectSoundsDuller) {
   double share[2];
   const char* names[2] = {"coffee_mug", "coffee_mug_weighted"};
   for (int i = 0; i < 2; ++i) {
-    SimulatedRobot robot(shipped(), names[i], config);
+    SimulatedRobot robot(shipped_catalogue(), names[i], config);
     SimulatedRecorder recorder(robot.object(), robot.table(), config);
     const ActionOutcome out = robot.execute("strike", nominal());
     Rng rng(11);
@@ -147,7 +142,7 @@ TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
   SimConfig config = quiet();
   config.microphone.position = {-0.4, 0.6, 0.4};
   config.microphone.capsule_spacing = 0.2;
-  SimulatedRobot robot(shipped(), "coffee_mug", config);
+  SimulatedRobot robot(shipped_catalogue(), "coffee_mug", config);
   SimulatedRecorder recorder(robot.object(), robot.table(), config);
   const ActionOutcome out = robot.execute("strike", nominal());
   Rng rng(1);
@@ -188,7 +183,7 @@ TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
 TEST(SimulatedRecorder, BackgroundNoiseHasTheConfiguredLevel) {
   SimConfig config;
   config.recording.noise_dbfs = -40;
-  SimulatedRecorder recorder(shipped().object("coffee_mug"), shipped().table, config);
+  SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table, config);
   ActionOutcome silent;  // no contacts at all
   Rng rng(9);
   const audio::AudioClip clip = recorder.record(silent, rng);
@@ -208,7 +203,7 @@ TEST(SimulatedRecorder, SameSeedGivesIdenticalFiles) {
   const auto dir = std::filesystem::temp_directory_path() / "echoplan_sim_seed_test";
   std::filesystem::create_directories(dir);
   SimConfig config;
-  SimulatedRobot robot(shipped(), "plastic_cup", config);
+  SimulatedRobot robot(shipped_catalogue(), "plastic_cup", config);
   SimulatedRecorder recorder(robot.object(), robot.table(), config);
   std::vector<std::string> paths;
   for (std::uint64_t seed : {7, 7, 8}) {
@@ -242,7 +237,7 @@ TEST(SimulatedRecorder, NearestCentroidTellsTheFourObjectsApart) {
   for (const char* action : {"slide", "strike"}) {
     std::map<std::string, std::vector<std::vector<double>>> train, test;
     for (const auto& name : objects) {
-      SimulatedRobot robot(shipped(), name, config);
+      SimulatedRobot robot(shipped_catalogue(), name, config);
       SimulatedRecorder recorder(robot.object(), robot.table(), config);
       for (int i = 0; i < 10; ++i) {
         Rng rng(derive_seed(2024, {static_cast<std::uint64_t>(i), name.size(), static_cast<std::uint64_t>(action[1])}));

@@ -7,23 +7,10 @@
 #include "common/error.h"
 #include "sim/simulated_recorder.h"
 
+#include "shipped_catalogue.h"
+
 namespace echoplan::sim {
 namespace {
-
-const Catalogue& shipped() {
-  static const Catalogue c = load_catalogue(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml");
-  return c;
-}
-
-// The nominal trial: every spread at its mean, no tilt.
-TrialParameters nominal() {
-  const VariabilityConfig v;
-  TrialParameters p;
-  p.impact_speed = v.impact_speed.mean;
-  p.grasp_height = v.grasp_height.mean;
-  p.push_speed = v.push_speed.mean;
-  return p;
-}
 
 // The longest stretch (s) with no object-table force.
 double longest_airborne(const ContactTrace& t) {
@@ -36,8 +23,8 @@ double longest_airborne(const ContactTrace& t) {
 }
 
 TEST(SimulatedRobot, StrikeLiftsTheObjectAndBringsItDownAtTheCommandedSpeed) {
-  SimulatedRobot robot(shipped(), "coffee_mug", SimConfig{});
-  const ActionOutcome out = robot.execute("strike", nominal());
+  SimulatedRobot robot(shipped_catalogue(), "coffee_mug", SimConfig{});
+  const ActionOutcome out = robot.execute("strike", nominal_trial());
   EXPECT_FALSE(out.collision);
   // Lift 0.5 s + pause 0.1 s + descent 0.5 s: the weld holds the object off the table for over 0.9 s.
   EXPECT_GT(longest_airborne(out.trace), 0.9);
@@ -54,8 +41,8 @@ TEST(SimulatedRobot, StrikeLiftsTheObjectAndBringsItDownAtTheCommandedSpeed) {
 
 TEST(SimulatedRobot, SlidePushesTheObjectAboutFiveCentimetres) {
   for (const char* name : {"coffee_mug", "plastic_cup", "pringles_can", "paper_base"}) {
-    SimulatedRobot robot(shipped(), name, SimConfig{});
-    const ActionOutcome out = robot.execute("slide", nominal());
+    SimulatedRobot robot(shipped_catalogue(), name, SimConfig{});
+    const ActionOutcome out = robot.execute("slide", nominal_trial());
     EXPECT_FALSE(out.collision) << name;
     // The pad moves 5.1 cm from 1 mm behind the object; the object may slide on a little after it stops.
     EXPECT_NEAR(out.object_displacement[0], 0.05, 0.01) << name;
@@ -70,10 +57,10 @@ TEST(SimulatedRobot, SlidePushesTheObjectAboutFiveCentimetres) {
 
 TEST(SimulatedRobot, HeavierObjectHasLongerContactTime) {
   SimConfig config;
-  SimulatedRobot mug(shipped(), "coffee_mug", config), heavy(shipped(), "coffee_mug_weighted", config);
+  SimulatedRobot mug(shipped_catalogue(), "coffee_mug", config), heavy(shipped_catalogue(), "coffee_mug_weighted", config);
   SimulatedRecorder mug_recorder(mug.object(), mug.table(), config), heavy_recorder(heavy.object(), heavy.table(), config);
-  const ActionOutcome a = mug.execute("strike", nominal());
-  const ActionOutcome b = heavy.execute("strike", nominal());
+  const ActionOutcome a = mug.execute("strike", nominal_trial());
+  const ActionOutcome b = heavy.execute("strike", nominal_trial());
   ASSERT_FALSE(a.trace.impacts.empty());
   ASSERT_FALSE(b.trace.impacts.empty());
   EXPECT_GT(b.trace.impacts.front().effective_mass, a.trace.impacts.front().effective_mass * 1.2);
@@ -82,19 +69,19 @@ TEST(SimulatedRobot, HeavierObjectHasLongerContactTime) {
 }
 
 TEST(SimulatedRobot, HandDrivenIntoTheTableIsACollision) {
-  SimulatedRobot robot(shipped(), "coffee_mug", SimConfig{});
-  TrialParameters p = nominal();
+  SimulatedRobot robot(shipped_catalogue(), "coffee_mug", SimConfig{});
+  TrialParameters p = nominal_trial();
   p.grasp_height = 0.0;  // fingertips at the table surface
   for (const char* action : {"slide", "strike"}) {
     const ActionOutcome out = robot.execute(action, p);
     EXPECT_TRUE(out.collision) << action;
   }
   // And the same robot afterwards is fine at the nominal height (execute resets the scene).
-  EXPECT_FALSE(robot.execute("strike", nominal()).collision);
+  EXPECT_FALSE(robot.execute("strike", nominal_trial()).collision);
 }
 
 TEST(SimulatedRobot, SameParametersGiveTheSameTrace) {
-  SimulatedRobot robot(shipped(), "pringles_can", SimConfig{});
+  SimulatedRobot robot(shipped_catalogue(), "pringles_can", SimConfig{});
   Rng a(5), b(5);
   const ActionOutcome x = robot.execute("strike", a);
   const ActionOutcome y = robot.execute("strike", b);
@@ -106,10 +93,10 @@ TEST(SimulatedRobot, SameParametersGiveTheSameTrace) {
 }
 
 TEST(SimulatedRobot, UnknownActionIsAnInputError) {
-  SimulatedRobot robot(shipped(), "coffee_mug", SimConfig{});
+  SimulatedRobot robot(shipped_catalogue(), "coffee_mug", SimConfig{});
   Rng rng(1);
   EXPECT_THROW(robot.execute("juggle", rng), InputError);
-  EXPECT_THROW(SimulatedRobot(shipped(), "teapot", SimConfig{}), InputError);
+  EXPECT_THROW(SimulatedRobot(shipped_catalogue(), "teapot", SimConfig{}), InputError);
 }
 
 }  // namespace
