@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "common/error.h"
 
@@ -13,6 +14,26 @@ TEST(SimConfig, EmptyTextGivesDefaults) {
   const SimConfig c = parse_sim_config("", "c.yaml");
   EXPECT_DOUBLE_EQ(c.variability.impact_speed.mean, 0.10);
   EXPECT_EQ(c.recording.sample_rate, 44100);
+}
+
+TEST(SimConfig, ShippedExampleStatesTheDefaults) {
+  // objects/sim_config.yaml documents the defaults: loading it must change nothing.
+  const SimConfig c = load_sim_config(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/sim_config.yaml");
+  const SimConfig d;
+  Rng a(3), b(3);
+  EXPECT_EQ(sample_trial(c.variability, a).named(), sample_trial(d.variability, b).named());
+  EXPECT_EQ(c.microphone.position, d.microphone.position);
+  EXPECT_DOUBLE_EQ(c.microphone.capsule_spacing, d.microphone.capsule_spacing);
+  EXPECT_DOUBLE_EQ(c.room.rt60_s, d.room.rt60_s);
+  EXPECT_DOUBLE_EQ(c.room.length_s, d.room.length_s);
+  EXPECT_DOUBLE_EQ(c.room.taps_per_s, d.room.taps_per_s);
+  EXPECT_DOUBLE_EQ(c.room.reverb_level, d.room.reverb_level);
+  EXPECT_EQ(c.recording.sample_rate, d.recording.sample_rate);
+  EXPECT_DOUBLE_EQ(c.recording.duration_s, d.recording.duration_s);
+  EXPECT_DOUBLE_EQ(c.recording.noise_dbfs, d.recording.noise_dbfs);
+  EXPECT_DOUBLE_EQ(c.recording.output_gain, d.recording.output_gain);
+  EXPECT_DOUBLE_EQ(c.recording.friction_gain, d.recording.friction_gain);
+  EXPECT_DOUBLE_EQ(c.physics.timestep_s, d.physics.timestep_s);
 }
 
 TEST(SimConfig, FieldsOverrideDefaults) {
