@@ -30,8 +30,9 @@ struct ModeDrive {
 
 // Renders mode `mode` driven by `drive` into `out` (added): the resonator
 // y[n] = 2 r cos(w) y[n-1] - r^2 y[n-2] + sin(w) x[n] has impulse response r^n sin(w (n + 1)).
-void render_mode(const Mode& mode, const ModeDrive& drive, const std::vector<float>& friction, int rate,
-                 std::vector<float>& out) {
+// `friction_span` is [first, last] sample where the friction excitation is non-zero (first > last: none).
+void render_mode(const Mode& mode, const ModeDrive& drive, const std::vector<float>& friction,
+                 std::pair<std::size_t, std::size_t> friction_span, int rate, std::vector<float>& out) {
   const double w = kTwoPi * mode.frequency_hz / rate;
   const double r = std::exp(-mode.decay_per_s / rate);
   const double a1 = 2.0 * r * std::cos(w), a2 = -r * r, b = std::sin(w);
@@ -42,12 +43,9 @@ void render_mode(const Mode& mode, const ModeDrive& drive, const std::vector<flo
     first = std::min(first, at);
     last = std::max(last, at);
   }
-  if (drive.continuous_gain != 0) {
-    for (std::size_t n = 0; n < friction.size(); ++n)
-      if (friction[n] != 0.0f) {
-        first = std::min(first, n);
-        last = std::max(last, n);
-      }
+  if (drive.continuous_gain != 0 && friction_span.first <= friction_span.second) {
+    first = std::min(first, friction_span.first);
+    last = std::max(last, friction_span.second);
   }
   if (first >= n_total) return;
   const double tail = mode.decay_per_s > 0 ? kTailDecay / mode.decay_per_s * rate : static_cast<double>(n_total);
@@ -233,9 +231,18 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
   for (std::size_t k = 0; k < object_modes_.size(); ++k) object_drives[k].continuous_gain = object_modes_[k].gain;
   for (std::size_t k = 0; k < table_modes_.size(); ++k) table_drives[k].continuous_gain = kTableCoupling * table_modes_[k].gain;
 
+  std::pair<std::size_t, std::size_t> friction_span{frames, 0};
+  for (std::size_t n = 0; n < friction.size(); ++n)
+    if (friction[n] != 0.0f) {
+      friction_span.first = std::min(friction_span.first, n);
+      friction_span.second = n;
+    }
+
   std::vector<float> dry(frames, 0.0f);
-  for (std::size_t k = 0; k < object_modes_.size(); ++k) render_mode(object_modes_[k], object_drives[k], friction, rate, dry);
-  for (std::size_t k = 0; k < table_modes_.size(); ++k) render_mode(table_modes_[k], table_drives[k], friction, rate, dry);
+  for (std::size_t k = 0; k < object_modes_.size(); ++k)
+    render_mode(object_modes_[k], object_drives[k], friction, friction_span, rate, dry);
+  for (std::size_t k = 0; k < table_modes_.size(); ++k)
+    render_mode(table_modes_[k], table_drives[k], friction, friction_span, rate, dry);
 
   // The room: the dry sound plus its reverberant tail, shared by both capsules (they are centimetres
   // apart in the same room).

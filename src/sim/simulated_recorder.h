@@ -6,8 +6,8 @@
 //               spectrum weights each mode, and the rim contact pattern weights shell ring modes;
 //   sliding  -> a fractal (1/f^2) surface profile read at the sliding speed, scaled by normal force;
 //   both     -> the object's modes and the table's modes (damped resonators);
-//   -> two microphone capsules (distance sets delay and 1/r gain), each with its own short room
-//      impulse response (direct path plus sparse exponentially decaying noise);
+//   -> a short room response (the direct sound plus a sparse, exponentially decaying noise tail);
+//   -> two microphone capsules, each with its own delay and 1/r gain from its distance to the object;
 //   -> background noise; -> a fixed output gain (loudness carries information, so no normalisation).
 #pragma once
 
