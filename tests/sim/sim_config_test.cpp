@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "common/error.h"
 
@@ -23,17 +25,19 @@ TEST(SimConfig, ShippedExampleStatesTheDefaults) {
   Rng a(3), b(3);
   EXPECT_EQ(sample_trial(c.variability, a).named(), sample_trial(d.variability, b).named());
   EXPECT_EQ(c.microphone.position, d.microphone.position);
-  EXPECT_DOUBLE_EQ(c.microphone.capsule_spacing, d.microphone.capsule_spacing);
-  EXPECT_DOUBLE_EQ(c.room.rt60_s, d.room.rt60_s);
-  EXPECT_DOUBLE_EQ(c.room.length_s, d.room.length_s);
-  EXPECT_DOUBLE_EQ(c.room.taps_per_s, d.room.taps_per_s);
-  EXPECT_DOUBLE_EQ(c.room.reverb_level, d.room.reverb_level);
   EXPECT_EQ(c.recording.sample_rate, d.recording.sample_rate);
-  EXPECT_DOUBLE_EQ(c.recording.duration_s, d.recording.duration_s);
-  EXPECT_DOUBLE_EQ(c.recording.noise_dbfs, d.recording.noise_dbfs);
-  EXPECT_DOUBLE_EQ(c.recording.output_gain, d.recording.output_gain);
-  EXPECT_DOUBLE_EQ(c.recording.friction_gain, d.recording.friction_gain);
-  EXPECT_DOUBLE_EQ(c.physics.timestep_s, d.physics.timestep_s);
+  const std::vector<std::tuple<const char*, double, double>> fields{
+      {"capsule_spacing", c.microphone.capsule_spacing, d.microphone.capsule_spacing},
+      {"rt60_s", c.room.rt60_s, d.room.rt60_s},
+      {"length_s", c.room.length_s, d.room.length_s},
+      {"taps_per_s", c.room.taps_per_s, d.room.taps_per_s},
+      {"reverb_level", c.room.reverb_level, d.room.reverb_level},
+      {"duration_s", c.recording.duration_s, d.recording.duration_s},
+      {"noise_dbfs", c.recording.noise_dbfs, d.recording.noise_dbfs},
+      {"output_gain", c.recording.output_gain, d.recording.output_gain},
+      {"friction_gain", c.recording.friction_gain, d.recording.friction_gain},
+      {"timestep_s", c.physics.timestep_s, d.physics.timestep_s}};
+  for (const auto& [name, shipped, built_in] : fields) EXPECT_DOUBLE_EQ(shipped, built_in) << name;
 }
 
 TEST(SimConfig, FieldsOverrideDefaults) {
