@@ -30,6 +30,8 @@ int main(int argc, char** argv) {
   echoplan::cli::add_make_problem_command(app);
   echoplan::cli::add_check_command(app);
   echoplan::cli::add_solve_command(app);
+  echoplan::cli::add_synth_command(app);
+  echoplan::cli::add_dataset_command(app);
   echoplan::cli::add_features_command(app);
   echoplan::cli::add_heatmap_command(app);
 

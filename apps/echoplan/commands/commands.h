@@ -11,6 +11,8 @@ void add_trials_command(CLI::App& app);
 void add_make_problem_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_solve_command(CLI::App& app);
+void add_synth_command(CLI::App& app);
+void add_dataset_command(CLI::App& app);
 void add_features_command(CLI::App& app);
 void add_heatmap_command(CLI::App& app);
 

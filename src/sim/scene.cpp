@@ -1,0 +1,145 @@
+#include "sim/scene.h"
+
+#include <fmt/format.h>
+
+#include <cstring>
+#include <stdexcept>
+
+#include "sim/arm_kinematics.h"
+
+namespace echoplan::sim {
+
+namespace {
+
+constexpr double kTableHalfSize = 0.3;     // m, drawn size of the table; it collides as an infinite plane
+constexpr double kUpperLinkRadius = 0.035;  // m, capsules approximating the shoulder and upper arm
+constexpr double kLowerLinkRadius = 0.03;   // m, forearm and wrist
+constexpr double kHandRadius = 0.03;       // m, the hand and closed fingers
+constexpr double kServoStiffness = 1000;   // N m / rad, joint position servos
+constexpr double kJointDamping = 20;       // N m s / rad, about critical with the armature below
+constexpr double kArmature = 0.1;          // kg m^2, reflected rotor inertia of the geared joints
+constexpr int kSolverIterations = 20;
+constexpr double kObjectContactTime = 0.01;  // s, MuJoCo solref time constant of the object-table contact      // constraint solver; converges in a few for this small scene
+
+// The arm as nested bodies, one per joint, each with a capsule from its origin to the next joint.
+std::string arm_mjcf() {
+  std::string xml;
+  std::string closing;
+  for (std::size_t i = 0; i < kJaco2Joints.size(); ++i) {
+    const auto& j = kJaco2Joints[i];
+    const bool last = i + 1 == kJaco2Joints.size();
+    xml += fmt::format(R"(<body name="link{0}" pos="{1} {2} {3}" euler="{4} {5} {6}">)", i + 1, j.xyz[0], j.xyz[1],
+                       j.xyz[2], j.rpy[0], j.rpy[1], j.rpy[2]);
+    if (j.limit > 0)
+      xml += fmt::format(R"(<joint name="joint{}" limited="true" range="{} {}"/>)", i + 1, -j.limit, j.limit);
+    else
+      xml += fmt::format(R"(<joint name="joint{}"/>)", i + 1);
+    if (!last) {
+      const auto& next = kJaco2Joints[i + 1];
+      // Link 1 is the column the arm is mounted on beside the table: it never collides.
+      const int contype = i == 0 ? 0 : kContactArm, conaffinity = i == 0 ? 0 : kContactTable;
+      xml += fmt::format(
+          R"(<geom type="capsule" fromto="0 0 0 {} {} {}" size="{}" mass="{}" contype="{}" conaffinity="{}"/>)",
+          next.xyz[0], next.xyz[1], next.xyz[2], i < 3 ? kUpperLinkRadius : kLowerLinkRadius, j.link_mass, contype, conaffinity);
+    } else {
+      // The hand: a capsule down to just above the fingertips, the pad at the end effector.
+      const double tip = kJaco2EndEffector.xyz[2];
+      xml += fmt::format(
+          R"(<geom name="hand" type="capsule" fromto="0 0 0 0 0 {}" size="{}" mass="{}" contype="{}" conaffinity="{}"/>)",
+          tip + kHandRadius, kHandRadius, j.link_mass, kContactArm, kContactTable);
+      xml += fmt::format(
+          R"(<geom name="pad" type="sphere" pos="0 0 {}" size="{}" mass="0.01" contype="{}" conaffinity="{}" friction="0.2 0.005 0.0001"/>)",
+          tip, kPadRadius, kContactArm, kContactTable | kContactObject);
+      xml += fmt::format(R"(<site name="end_effector" pos="0 0 {}" euler="{} {} {}"/>)", tip,
+                         kJaco2EndEffector.rpy[0], kJaco2EndEffector.rpy[1], kJaco2EndEffector.rpy[2]);
+    }
+    closing += "</body>";
+  }
+  return xml + closing;
+}
+
+}  // namespace
+
+std::string scene_mjcf(const ObjectSpec& object, const TableSpec& table, const PhysicsConfig& physics) {
+  const Eigen::Vector3d ee = end_effector_pose(kInitialArmConfiguration).translation();
+  const double table_top = ee.z() - kNominalGraspHeight;
+  const double object_x = ee.x() + kObjectOffsetX, object_y = ee.y();
+  const auto com = object.centre_of_mass();
+  const auto inertia = object.inertia_diagonal();
+  const double mu = object.friction;
+
+// The scene. The object-table contact uses the stiffest time constant MuJoCo resolves stably (two steps), so the
+// object does not bounce on a soft contact spring: real impacts are over within ~1 ms.
+  // The object collides with the table only through the explicit pair, which sets their friction.
+  std::string xml = fmt::format(R"(<mujoco model="echoplan_scene">
+<compiler angle="radian" eulerseq="XYZ"/>
+<option timestep="{timestep}" integrator="Euler" cone="pyramidal" iterations="{iterations}" tolerance="1e-6"/>
+<size nconmax="100" njmax="400"/>
+<default><joint damping="{damping}" armature="{armature}"/></default>
+<worldbody>
+<geom name="table" type="plane" pos="{ox} {oy} {top}" size="{half} {half} 0.01" contype="{ctable}" conaffinity="{cany}" friction="{tmu} 0.005 0.0001"/>
+<body name="arm_base">{arm}</body>
+<body name="object" pos="{ox} {oy} {top}">
+<freejoint name="object_free"/>
+<inertial pos="{cx} {cy} {cz}" mass="{mass}" diaginertia="{ix} {iy} {iz}"/>
+<geom name="object" type="cylinder" pos="0 0 {hh}" size="{radius} {hh}" contype="{cobject}" conaffinity="{ctable}" friction="0.2 0.005 0.0001"/>
+</body>
+</worldbody>
+<contact>
+<exclude body1="world" body2="object"/>
+<pair geom1="table" geom2="object" condim="3" friction="{mu} {mu} 0.005 0.0001 0.0001" solref="{contact_time} 1"/>
+</contact>
+<equality><weld name="grasp" body1="link7" body2="object" active="false" solref="0.01 1"/></equality>
+<actuator>)",
+      fmt::arg("timestep", physics.timestep_s), fmt::arg("iterations", kSolverIterations),
+      fmt::arg("contact_time", kObjectContactTime), fmt::arg("damping", kJointDamping), fmt::arg("armature", kArmature),
+      fmt::arg("ox", object_x), fmt::arg("oy", object_y), fmt::arg("half", kTableHalfSize), fmt::arg("ctable", kContactTable),
+      fmt::arg("cany", kContactTable | kContactArm), fmt::arg("tmu", table.friction), fmt::arg("arm", arm_mjcf()),
+      fmt::arg("top", table_top), fmt::arg("cx", com[0]), fmt::arg("cy", com[1]), fmt::arg("cz", com[2]),
+      fmt::arg("mass", object.total_mass()), fmt::arg("ix", inertia[0]), fmt::arg("iy", inertia[1]),
+      fmt::arg("iz", inertia[2]), fmt::arg("hh", object.height / 2), fmt::arg("radius", object.radius),
+      fmt::arg("cobject", kContactObject), fmt::arg("mu", mu));
+  for (int i = 1; i <= kArmJoints; ++i)
+    xml += fmt::format(R"(<position name="servo{0}" joint="joint{0}" kp="{1}"/>)", i, kServoStiffness);
+  xml += "</actuator>\n</mujoco>\n";
+  return xml;
+}
+
+Scene::Scene(const ObjectSpec& object, const TableSpec& table, const PhysicsConfig& physics) {
+  // MuJoCo 2.2 compiles MJCF from files only: hand it the text through a virtual file system.
+  const std::string xml = scene_mjcf(object, table, physics);
+  auto vfs = std::make_unique<mjVFS>();
+  mj_defaultVFS(vfs.get());
+  const char* name = "echoplan_scene.xml";
+  if (mj_makeEmptyFileVFS(vfs.get(), name, static_cast<int>(xml.size())) != 0)
+    throw std::runtime_error("MuJoCo: cannot create the scene's virtual file");
+  std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), name)], xml.data(), xml.size());
+  char error[1024] = "";
+  model_.reset(mj_loadXML(name, vfs.get(), error, sizeof error));
+  mj_deleteVFS(vfs.get());
+  if (!model_) throw std::runtime_error(std::string("MuJoCo rejected the generated scene: ") + error);
+  data_.reset(mj_makeData(model_.get()));
+
+  const mjModel* m = model_.get();
+  end_effector_site = mj_name2id(m, mjOBJ_SITE, "end_effector");
+  object_body = mj_name2id(m, mjOBJ_BODY, "object");
+  object_geom = mj_name2id(m, mjOBJ_GEOM, "object");
+  table_geom = mj_name2id(m, mjOBJ_GEOM, "table");
+  pad_geom = mj_name2id(m, mjOBJ_GEOM, "pad");
+  hand_body = mj_name2id(m, mjOBJ_BODY, "link7");
+  grasp_weld = mj_name2id(m, mjOBJ_EQUALITY, "grasp");
+  const int free_joint = mj_name2id(m, mjOBJ_JOINT, "object_free");
+  object_qpos = m->jnt_qposadr[free_joint];
+  object_dof = m->jnt_dofadr[free_joint];
+  const Eigen::Vector3d ee = end_effector_pose(kInitialArmConfiguration).translation();
+  table_top_z = ee.z() - kNominalGraspHeight;
+  initial_end_effector_ = {ee.x(), ee.y(), ee.z()};
+}
+
+bool Scene::is_arm_geom(int g) const {
+  const mjModel* m = model_.get();
+  const int body = m->geom_bodyid[g];
+  return body != 0 && body != object_body;
+}
+
+}  // namespace echoplan::sim

@@ -1,0 +1,88 @@
+// How the simulated lab varies from trial to trial, where the microphone is, the room, and the
+// recording format: everything about a simulation run that is not the object. Read from an optional
+// YAML file (format in docs/simulator.md); every field has a default.
+#pragma once
+
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/rng.h"
+
+namespace echoplan::sim {
+
+// A quantity that varies from trial to trial: Gaussian around `mean` with standard deviation
+// `spread`, cut at mean +- 3 spreads so that no trial is absurd.
+struct Spread {
+  double mean = 0;
+  double spread = 0;  // >= 0
+};
+
+struct VariabilityConfig {
+  Spread impact_speed{0.10, 0.01};      // m/s, the strike's descent speed
+  Spread impact_tilt_deg{0.0, 2.0};     // degrees between the object's axis and vertical at impact
+  Spread grasp_height{0.085, 0.003};     // m, end-effector height above the table when at the object
+  Spread push_speed{0.05, 0.005};       // m/s, the slide's speed
+  Spread placement_x{0.0, 0.003};       // m, object offset from its nominal place
+  Spread placement_y{0.0, 0.003};       // m
+};
+
+struct MicrophoneConfig {
+  std::array<double, 3> position{-0.30, 0.40, 0.40};  // m, world frame (the arm's base at the origin)
+  double capsule_spacing = 0.10;  // m between the two capsules, along world y; sets the delay between channels
+};
+
+struct RoomConfig {
+  double rt60_s = 0.25;           // s, reverberation time of the decaying-noise tail, > 0
+  double length_s = 0.08;         // s, impulse response length kept, > 0
+  double taps_per_s = 500;        // sparse noise taps per second of impulse response, > 0
+  double reverb_level = 0.25;     // tail amplitude relative to the direct sound, >= 0
+};
+
+struct RecordingConfig {
+  int sample_rate = 44100;           // Hz
+  double duration_s = 3.0;           // s, minimum recording length (longer if the action is)
+  double noise_dbfs = -65;           // background noise level, dB re full scale (RMS)
+  double output_gain = 25;           // full-scale per unit of synthesized pressure (fixed: loudness carries information)
+  double friction_gain = 1e-5;       // scale of sliding excitation relative to impacts
+};
+
+struct PhysicsConfig {
+  double timestep_s = 0.002;  // s, in [0.0005, 0.005]
+};
+
+struct SimConfig {
+  VariabilityConfig variability;
+  MicrophoneConfig microphone;
+  RoomConfig room;
+  RecordingConfig recording;
+  PhysicsConfig physics;
+};
+
+// Reads a sim config file; missing fields keep their defaults. Throws InputError naming the file, the
+// line and the field for a wrong type or out-of-range value or an unknown field.
+SimConfig load_sim_config(const std::string& path);
+SimConfig parse_sim_config(const std::string& yaml_text, const std::string& source);
+
+// The parameters drawn for one trial: what the manifest records.
+struct TrialParameters {
+  double impact_speed = 0;      // m/s
+  double impact_tilt_deg = 0;   // degrees
+  double tilt_azimuth_deg = 0;  // degrees, direction of the tilt around the vertical, uniform
+  double grasp_height = 0;      // m
+  double push_speed = 0;        // m/s
+  double placement_x = 0;       // m
+  double placement_y = 0;       // m
+
+  // (name, value) pairs in a fixed order, for manifests and logs.
+  std::vector<std::pair<std::string, double>> named() const;
+};
+
+// Draws one trial's parameters. Always consumes the same number of draws from `rng`.
+TrialParameters sample_trial(const VariabilityConfig& variability, Rng& rng);
+
+// A standard normal variate from `rng` (Box-Muller on uniform01, identical on every platform).
+double standard_normal(Rng& rng);
+
+}  // namespace echoplan::sim

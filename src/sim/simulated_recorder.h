@@ -1,0 +1,61 @@
+// The simulated microphone: renders what it hears during one action from the action's contact trace,
+// by modal synthesis (van den Doel, Kry & Pai 2001).
+//
+// Signal chain, per recording:
+//   impacts  -> Hertz force pulse (duration from effective mass, contact radius, E*, speed), whose
+//               spectrum weights each mode, and the rim contact pattern weights shell ring modes;
+//   sliding  -> a fractal (1/f^2) surface profile read at the sliding speed, scaled by normal force;
+//   both     -> the object's modes and the table's modes (damped resonators);
+//   -> a short room response (the direct sound plus a sparse, exponentially decaying noise tail);
+//   -> two microphone capsules, each with its own delay and 1/r gain from its distance to the object;
+//   -> background noise; -> a fixed output gain (loudness carries information, so no normalisation).
+#pragma once
+
+#include <vector>
+
+#include "audio/clip.h"
+#include "common/rng.h"
+#include "sim/modal_model.h"
+#include "sim/simulated_robot.h"
+
+namespace echoplan::sim {
+
+class SimulatedRecorder {
+ public:
+  // Precomputes the modal banks of `object` and `table` and the contact modulus.
+  SimulatedRecorder(const ObjectSpec& object, const TableSpec& table, const SimConfig& config);
+
+  // The stereo clip from the start of the action to its end (at least config.recording.duration_s
+  // long; 0.2 s past the action's end if that is longer), at config.recording.sample_rate. The room
+  // response, surface profile and noise are drawn from `rng`.
+  audio::AudioClip record(const ActionOutcome& outcome, Rng& rng) const;
+
+  // The modes rendered (after the recording's Nyquist limit).
+  const std::vector<Mode>& object_modes() const { return object_modes_; }
+  const std::vector<Mode>& table_modes() const { return table_modes_; }
+
+  // Hertz contact time (s) of an impact recorded in a trace, with this object on this table.
+  double contact_time(const Impact& impact) const;
+
+ private:
+  ObjectSpec object_;
+  SimConfig config_;
+  std::vector<Mode> object_modes_;
+  std::vector<Mode> table_modes_;
+  double contact_modulus_ = 0;  // Pa, E* of object material on table material
+};
+
+// Runs `action` on `robot` and records it: the outcome and its clip, both from `rng`.
+struct Recording {
+  ActionOutcome outcome;
+  audio::AudioClip clip;
+};
+Recording simulate_recording(SimulatedRobot& robot, const SimulatedRecorder& recorder, const std::string& action,
+                             Rng& rng);
+
+// The envelope of a Hertz pulse's spectrum used for synthesis: 1 / sqrt(1 + (omega tau / pi)^4).
+// It follows the half-sine spectrum's fall-off (1 at low frequency, (pi / omega tau)^2 above) without
+// its exact zeros, which a real, not exactly half-sine, pulse does not have.
+double hertz_pulse_envelope(double omega, double duration_s);
+
+}  // namespace echoplan::sim

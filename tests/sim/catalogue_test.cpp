@@ -1,0 +1,145 @@
+#include "sim/catalogue.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "common/error.h"
+
+namespace echoplan::sim {
+namespace {
+
+const std::string kCatalogue = std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml";
+
+// A small valid catalogue; tests break one thing at a time.
+const std::string kValid = R"(materials:
+  ceramic: {density: 2700, youngs_modulus: 7.2e10, poisson_ratio: 0.19, alpha: 6, beta: 1.0e-7}
+  wood: {density: 750, youngs_modulus: 1.1e10, poisson_ratio: 0.25, alpha: 60, beta: 2.0e-6}
+table:
+  material: wood
+  modes:
+    - {frequency: 150, gain: 0.5}
+objects:
+  mug:
+    shape: cylinder_shell
+    radius: 0.04
+    height: 0.1
+    wall_thickness: 0.005
+    base_thickness: 0.006
+    mass: 0.3
+    material: ceramic
+    contact_radius: 0.004
+  heavy_mug:
+    base: mug
+    added_mass: {mass: 0.2, position: [0, 0, 0.01]}
+)";
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+// Parses `text` expecting an InputError; returns it so the caller can check where it points.
+InputError parse_error(const std::string& text) {
+  try {
+    parse_catalogue(text, "test.yaml");
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no error for:\n" << text;
+  return InputError("", 0, "");
+}
+
+TEST(Catalogue, ShippedCatalogueHasTheProjectsObjects) {
+  const Catalogue c = load_catalogue(kCatalogue);
+  for (const char* name : {"pringles_can", "coffee_mug", "plastic_cup", "paper_base", "pringles_can_weighted",
+                           "coffee_mug_weighted"})
+    EXPECT_TRUE(c.objects.count(name)) << name;
+  for (const char* name : {"ceramic", "glass", "wood", "plastic", "polycarbonate", "steel", "paper", "cardboard"})
+    EXPECT_TRUE(c.materials.count(name)) << name;
+  EXPECT_DOUBLE_EQ(c.materials.at("ceramic").youngs_modulus, 7.2e10);
+  EXPECT_DOUBLE_EQ(c.materials.at("steel").beta, 3e-8);
+}
+
+TEST(Catalogue, ModifiedObjectIsTheOriginalPlusItsAddedMass) {
+  const Catalogue c = parse_catalogue(kValid, "test.yaml");
+  const ObjectSpec& mug = c.object("mug");
+  const ObjectSpec& heavy = c.object("heavy_mug");
+  EXPECT_EQ(heavy.base_object, "mug");
+  EXPECT_DOUBLE_EQ(heavy.total_mass(), 0.5);
+  EXPECT_DOUBLE_EQ(heavy.radius, mug.radius);
+  EXPECT_EQ(heavy.material.name, "ceramic");
+  // The added mass sits low, so the centre of mass drops: mass-weighted mean of the two.
+  const double expected_z = (0.3 * mug.centre_of_mass()[2] + 0.2 * 0.01) / 0.5;
+  EXPECT_NEAR(heavy.centre_of_mass()[2], expected_z, 1e-12);
+  EXPECT_GT(heavy.inertia_diagonal()[0], mug.inertia_diagonal()[0]);
+}
+
+TEST(Catalogue, InertiaOfAThinTubeMatchesTheTextbookFormula) {
+  // A tube with a negligible base: I_zz -> m (R^2 + r^2) / 2, I_xx -> m ((R^2 + r^2)/4 + H^2/12).
+  ObjectSpec tube;
+  tube.radius = 0.05;
+  tube.height = 0.2;
+  tube.wall_thickness = 0.001;
+  tube.base_thickness = 1e-9;
+  tube.shell_mass = 0.1;
+  const double r2 = 0.05 * 0.05 + 0.049 * 0.049;
+  const auto inertia = tube.inertia_diagonal();
+  // The vanishing base shifts the centre of mass by ~1e-9 m: far below these tolerances.
+  EXPECT_NEAR(inertia[2], 0.1 * r2 / 2, 1e-9);
+  EXPECT_NEAR(inertia[0], 0.1 * (r2 / 4 + 0.2 * 0.2 / 12), 1e-9);
+}
+
+TEST(Catalogue, NegativeMassNamesFileLineAndEntry) {
+  const InputError e = parse_error(replace(kValid, "mass: 0.3", "mass: -0.3"));
+  EXPECT_EQ(e.file(), "test.yaml");
+  EXPECT_EQ(e.line(), 15);
+  EXPECT_NE(e.problem().find("objects.mug"), std::string::npos) << e.what();
+  EXPECT_NE(e.problem().find("mass"), std::string::npos) << e.what();
+}
+
+TEST(Catalogue, UnknownMaterialNamesTheEntry) {
+  const InputError e = parse_error(replace(kValid, "material: ceramic", "material: unobtainium"));
+  EXPECT_EQ(e.line(), 16);
+  EXPECT_NE(e.problem().find("objects.mug"), std::string::npos) << e.what();
+  EXPECT_NE(e.problem().find("unknown material 'unobtainium'"), std::string::npos) << e.what();
+}
+
+TEST(Catalogue, MissingFieldNamesTheEntryAndField) {
+  const InputError e = parse_error(replace(kValid, "    contact_radius: 0.004\n", ""));
+  EXPECT_EQ(e.line(), 10);  // the entry's mapping starts on the line after "mug:"
+  EXPECT_NE(e.problem().find("objects.mug"), std::string::npos) << e.what();
+  EXPECT_NE(e.problem().find("missing field 'contact_radius'"), std::string::npos) << e.what();
+}
+
+TEST(Catalogue, OtherErrorsAreReportedWithTheirEntry) {
+  EXPECT_NE(parse_error(replace(kValid, "base: mug", "base: cup")).problem().find("unknown base object 'cup'"),
+            std::string::npos);
+  EXPECT_NE(parse_error(replace(kValid, "poisson_ratio: 0.19", "poisson_ratio: 0.7")).problem().find("materials.ceramic"),
+            std::string::npos);
+  EXPECT_NE(parse_error(replace(kValid, "radius: 0.04", "radius: big")).problem().find("must be a number"),
+            std::string::npos);
+  EXPECT_NE(parse_error(replace(kValid, "mass: 0.2,", "mass: 0,")).problem().find("heavy_mug.added_mass"),
+            std::string::npos);
+  EXPECT_NE(parse_error(replace(kValid, "wall_thickness: 0.005", "wall_thickness: 0.05")).problem().find("wall_thickness"),
+            std::string::npos);
+  EXPECT_EQ(parse_error("materials: [unclosed").line(), 1);
+}
+
+TEST(Catalogue, UnknownObjectListsTheKnownOnes) {
+  const Catalogue c = parse_catalogue(kValid, "test.yaml");
+  try {
+    c.object("teapot");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("heavy_mug, mug"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Catalogue, MissingFileIsAnInputError) {
+  EXPECT_THROW(load_catalogue("/nonexistent/catalogue.yaml"), InputError);
+}
+
+}  // namespace
+}  // namespace echoplan::sim

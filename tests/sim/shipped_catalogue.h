@@ -1,0 +1,26 @@
+// Test fixtures shared by the sim tests: the catalogue shipped in objects/ and the nominal trial.
+#pragma once
+
+#include <string>
+
+#include "sim/catalogue.h"
+#include "sim/sim_config.h"
+
+namespace echoplan::sim {
+
+inline const Catalogue& shipped_catalogue() {
+  static const Catalogue c = load_catalogue(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml");
+  return c;
+}
+
+// Every spread at its mean, no tilt.
+inline TrialParameters nominal_trial() {
+  const VariabilityConfig v;
+  TrialParameters p;
+  p.impact_speed = v.impact_speed.mean;
+  p.grasp_height = v.grasp_height.mean;
+  p.push_speed = v.push_speed.mean;
+  return p;
+}
+
+}  // namespace echoplan::sim

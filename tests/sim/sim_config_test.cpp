@@ -1,0 +1,112 @@
+#include "sim/sim_config.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "common/error.h"
+
+namespace echoplan::sim {
+namespace {
+
+TEST(SimConfig, EmptyTextGivesDefaults) {
+  const SimConfig c = parse_sim_config("", "c.yaml");
+  EXPECT_DOUBLE_EQ(c.variability.impact_speed.mean, 0.10);
+  EXPECT_EQ(c.recording.sample_rate, 44100);
+}
+
+TEST(SimConfig, ShippedExampleStatesTheDefaults) {
+  // objects/sim_config.yaml documents the defaults: loading it must change nothing.
+  const SimConfig c = load_sim_config(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/sim_config.yaml");
+  const SimConfig d;
+  Rng a(3), b(3);
+  EXPECT_EQ(sample_trial(c.variability, a).named(), sample_trial(d.variability, b).named());
+  EXPECT_EQ(c.microphone.position, d.microphone.position);
+  EXPECT_EQ(c.recording.sample_rate, d.recording.sample_rate);
+  const std::vector<std::tuple<const char*, double, double>> fields{
+      {"capsule_spacing", c.microphone.capsule_spacing, d.microphone.capsule_spacing},
+      {"rt60_s", c.room.rt60_s, d.room.rt60_s},
+      {"length_s", c.room.length_s, d.room.length_s},
+      {"taps_per_s", c.room.taps_per_s, d.room.taps_per_s},
+      {"reverb_level", c.room.reverb_level, d.room.reverb_level},
+      {"duration_s", c.recording.duration_s, d.recording.duration_s},
+      {"noise_dbfs", c.recording.noise_dbfs, d.recording.noise_dbfs},
+      {"output_gain", c.recording.output_gain, d.recording.output_gain},
+      {"friction_gain", c.recording.friction_gain, d.recording.friction_gain},
+      {"timestep_s", c.physics.timestep_s, d.physics.timestep_s}};
+  for (const auto& [name, shipped, built_in] : fields) EXPECT_DOUBLE_EQ(shipped, built_in) << name;
+}
+
+TEST(SimConfig, FieldsOverrideDefaults) {
+  const SimConfig c = parse_sim_config(R"(variability:
+  impact_speed: {mean: 0.2, spread: 0.02}
+microphone:
+  position: [1, 2, 3]
+recording:
+  noise_dbfs: -80
+physics:
+  timestep_s: 0.001
+)",
+                                       "c.yaml");
+  EXPECT_DOUBLE_EQ(c.variability.impact_speed.mean, 0.2);
+  EXPECT_DOUBLE_EQ(c.variability.impact_speed.spread, 0.02);
+  EXPECT_DOUBLE_EQ(c.microphone.position[2], 3);
+  EXPECT_DOUBLE_EQ(c.recording.noise_dbfs, -80);
+  EXPECT_DOUBLE_EQ(c.physics.timestep_s, 0.001);
+  EXPECT_DOUBLE_EQ(c.variability.push_speed.mean, 0.05);  // untouched
+}
+
+TEST(SimConfig, ErrorsNameFileLineAndField) {
+  auto error_of = [](const std::string& text) {
+    try {
+      parse_sim_config(text, "c.yaml");
+    } catch (const InputError& e) {
+      return e;
+    }
+    ADD_FAILURE() << text;
+    return InputError("", 0, "");
+  };
+  const InputError misspelt = error_of("variability:\n  impact_sped: {mean: 0.1, spread: 0}\n");
+  EXPECT_EQ(misspelt.file(), "c.yaml");
+  EXPECT_EQ(misspelt.line(), 2);
+  EXPECT_NE(misspelt.problem().find("unknown field 'variability.impact_sped'"), std::string::npos);
+  const InputError range = error_of("physics:\n  timestep_s: 0.1\n");
+  EXPECT_EQ(range.line(), 2);
+  EXPECT_NE(range.problem().find("physics.timestep_s"), std::string::npos);
+  EXPECT_NE(error_of("variability:\n  push_speed: 0.1\n").problem().find("{mean: ..., spread: ...}"), std::string::npos);
+  EXPECT_NE(error_of("colour: red\n").problem().find("unknown section"), std::string::npos);
+  EXPECT_NE(error_of("microphone:\n  position: [1, 2]\n").problem().find("[x, y, z]"), std::string::npos);
+}
+
+TEST(SimConfig, TrialsAreReproducibleAndWithinThreeSpreads) {
+  VariabilityConfig v;
+  Rng a(42), b(42);
+  for (int i = 0; i < 200; ++i) {
+    const TrialParameters p = sample_trial(v, a);
+    const TrialParameters q = sample_trial(v, b);
+    EXPECT_EQ(p.named(), q.named());
+    EXPECT_LE(std::abs(p.impact_speed - v.impact_speed.mean), 3 * v.impact_speed.spread + 1e-15);
+    EXPECT_LE(std::abs(p.grasp_height - v.grasp_height.mean), 3 * v.grasp_height.spread + 1e-15);
+    EXPECT_GE(p.impact_tilt_deg, 0.0);
+  }
+}
+
+TEST(SimConfig, StandardNormalHasUnitMoments) {
+  // 100000 draws: the sample mean's standard error is 0.003, the variance's 0.0045; 5 sigma bounds.
+  Rng rng(1);
+  double sum = 0, sum2 = 0;
+  const int n = 100000;
+  for (int i = 0; i < n; ++i) {
+    const double x = standard_normal(rng);
+    sum += x;
+    sum2 += x * x;
+  }
+  EXPECT_NEAR(sum / n, 0.0, 0.016);
+  EXPECT_NEAR(sum2 / n, 1.0, 0.023);
+}
+
+}  // namespace
+}  // namespace echoplan::sim

@@ -1,0 +1,274 @@
+#include "sim/simulated_recorder.h"
+
+#include <gtest/gtest.h>
+#include <kiss_fftr.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <numbers>
+
+#include "audio/features.h"
+#include "audio/io.h"
+
+#include "shipped_catalogue.h"
+
+namespace echoplan::sim {
+namespace {
+
+// A config with no background noise and no reverberation, so spectra show the modes alone.
+SimConfig quiet() {
+  SimConfig c;
+  c.recording.noise_dbfs = -200;
+  c.room.reverb_level = 0;
+  return c;
+}
+
+// Magnitude spectrum of `count` frames of `channel` from `start`, Hann-windowed, zero-padded to a
+// power of two >= 4 * count (bins of rate / nfft Hz).
+std::vector<double> spectrum(const audio::AudioClip& clip, int channel, std::size_t start, std::size_t count,
+                             double* bin_hz) {
+  std::size_t nfft = 1;
+  while (nfft < 4 * count) nfft *= 2;
+  std::vector<float> x(nfft, 0.0f);
+  for (std::size_t i = 0; i < count && start + i < clip.frames(); ++i) {
+    const double w = 0.5 - 0.5 * std::cos(2 * std::numbers::pi * i / (count - 1));
+    x[i] = static_cast<float>(w * clip.samples[(start + i) * clip.channels + channel]);
+  }
+  std::vector<kiss_fft_cpx> out(nfft / 2 + 1);
+  kiss_fftr_cfg cfg = kiss_fftr_alloc(static_cast<int>(nfft), 0, nullptr, nullptr);
+  kiss_fftr(cfg, x.data(), out.data());
+  kiss_fftr_free(cfg);
+  std::vector<double> mag(out.size());
+  for (std::size_t k = 0; k < out.size(); ++k) mag[k] = std::hypot(out[k].r, out[k].i);
+  *bin_hz = static_cast<double>(clip.sample_rate) / nfft;
+  return mag;
+}
+
+// The nominal trial with a small tilt, so the rim lands first and every ring mode is excited.
+TrialParameters nominal() {
+  TrialParameters p = nominal_trial();
+  p.impact_tilt_deg = 3;
+  return p;
+}
+
+TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
+  // An object with listed modes; the peak nearest each must sit on it, far above the spectrum floor.
+  Catalogue c = shipped_catalogue();
+  ObjectSpec bell = c.object("coffee_mug");
+  bell.listed_modes = {{900, 1.0, 8.0}, {2300, 1.0, 8.0}, {4100, 1.0, 8.0}};
+  c.objects["bell"] = bell;
+  const SimConfig config = quiet();
+  SimulatedRobot robot(c, "bell", config);
+  SimulatedRecorder recorder(robot.object(), robot.table(), config);
+  const ActionOutcome out = robot.execute("strike", nominal());
+  ASSERT_FALSE(out.trace.impacts.empty());
+  Rng rng(3);
+  const audio::AudioClip clip = recorder.record(out, rng);
+  const auto start = static_cast<std::size_t>(out.trace.impacts.front().time_s * clip.sample_rate);
+  double bin = 0;
+  const auto mag = spectrum(clip, 0, start, clip.frames() - start, &bin);
+  std::vector<double> sorted(mag);
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double floor = sorted[sorted.size() / 2];
+  for (double f : {900.0, 2300.0, 4100.0}) {
+    // Search +-100 Hz around the mode. A decay of 8/s makes a peak with a half-power half-width of
+    // 8/(2 pi) = 1.3 Hz; the rim hit and the flat landing that follows interfere within it, so the
+    // maximum lies within 1 Hz of the mode.
+    const auto lo = static_cast<std::size_t>((f - 100) / bin), hi = static_cast<std::size_t>((f + 100) / bin);
+    const auto peak = std::max_element(mag.begin() + lo, mag.begin() + hi) - mag.begin();
+    EXPECT_NEAR(peak * bin, f, 1.0) << f;
+    EXPECT_GT(mag[peak], 100 * floor) << f;  // 40 dB above the median level
+  }
+}
+
+TEST(SimulatedRecorder, DerivedModesOfTheMugAppearInItsStrike) {
+  const SimConfig config = quiet();
+  SimulatedRobot robot(shipped_catalogue(), "coffee_mug", config);
+  SimulatedRecorder recorder(robot.object(), robot.table(), config);
+  const ActionOutcome out = robot.execute("strike", nominal());
+  Rng rng(3);
+  const audio::AudioClip clip = recorder.record(out, rng);
+  const auto start = static_cast<std::size_t>(out.trace.impacts.front().time_s * clip.sample_rate);
+  double bin = 0;
+  const auto mag = spectrum(clip, 0, start, clip.frames() - start, &bin);
+  int checked = 0;
+  for (const Mode& m : recorder.object_modes()) {
+    if (m.frequency_hz > 8000) continue;  // beyond the Hertz pulse's reach at this contact time
+    const auto lo = static_cast<std::size_t>((m.frequency_hz - 50) / bin), hi = static_cast<std::size_t>((m.frequency_hz + 50) / bin);
+    const auto peak = std::max_element(mag.begin() + lo, mag.begin() + hi) - mag.begin();
+    // Faster decay (tens per second) widens the peak: within 1 Hz.
+    EXPECT_NEAR(peak * bin, m.frequency_hz, 1.0) << m.frequency_hz;
+    ++checked;
+  }
+  EXPECT_GE(checked, 2);
+}
+
+// Fraction of energy above `cut_hz` in the 0.5 s after the first impact.
+double high_frequency_share(const audio::AudioClip& clip, double impact_s, double cut_hz) {
+  double bin = 0;
+  const auto start = static_cast<std::size_t>(impact_s * clip.sample_rate);
+  const auto mag = spectrum(clip, 0, start, clip.sample_rate / 2, &bin);
+  double high = 0, total = 0;
+  for (std::size_t k = 0; k < mag.size(); ++k) {
+    total += mag[k] * mag[k];
+    if (k * bin > cut_hz) high += mag[k] * mag[k];
+  }
+  return high / total;
+}
+
+TEST(SimulatedRecorder, HeavierObjectSoundsDuller) {
+  // Impacts only: the arm presses the landed object and it scrapes a little, which is broadband and
+  // would mask the comparison of the two impact pulses.
+  SimConfig config = quiet();
+  config.recording.friction_gain = 0;
+  double share[2];
+  const char* names[2] = {"coffee_mug", "coffee_mug_weighted"};
+  for (int i = 0; i < 2; ++i) {
+    SimulatedRobot robot(shipped_catalogue(), names[i], config);
+    SimulatedRecorder recorder(robot.object(), robot.table(), config);
+    const ActionOutcome out = robot.execute("strike", nominal());
+    Rng rng(11);
+    share[i] = high_frequency_share(recorder.record(out, rng), out.trace.impacts.front().time_s, 1500);
+  }
+  // Same modes, longer contact: measurably less of the energy above 1.5 kHz (at least 10% less).
+  EXPECT_LT(share[1], share[0] * 0.9) << share[0] << " " << share[1];
+}
+
+TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
+  SimConfig config = quiet();
+  config.microphone.position = {-0.4, 0.6, 0.4};
+  config.microphone.capsule_spacing = 0.2;
+  SimulatedRobot robot(shipped_catalogue(), "coffee_mug", config);
+  SimulatedRecorder recorder(robot.object(), robot.table(), config);
+  const ActionOutcome out = robot.execute("strike", nominal());
+  Rng rng(1);
+  const audio::AudioClip clip = recorder.record(out, rng);
+  ASSERT_EQ(clip.channels, 2);
+  // Expected: each capsule hears the source (0.02 m above the object's base) at its own distance.
+  double distance[2];
+  for (int ch = 0; ch < 2; ++ch) {
+    const double dy = config.microphone.position[1] + (ch == 0 ? 0.1 : -0.1) - out.trace.object_position[1];
+    const double dx = config.microphone.position[0] - out.trace.object_position[0];
+    const double dz = config.microphone.position[2] - out.trace.object_position[2] - 0.02;
+    distance[ch] = std::sqrt(dx * dx + dy * dy + dz * dz);
+  }
+  const long expected_lag = std::lround(distance[0] / kSpeedOfSound * clip.sample_rate) -
+                            std::lround(distance[1] / kSpeedOfSound * clip.sample_rate);
+  // Cross-correlation peak over +-40 samples.
+  long best_lag = 0;
+  double best = -1;
+  const long n = static_cast<long>(clip.frames());
+  for (long lag = -40; lag <= 40; ++lag) {
+    double sum = 0;
+    for (long i = 100; i < n - 100; ++i) sum += clip.samples[2 * (i + lag)] * clip.samples[2 * i + 1];
+    if (sum > best) {
+      best = sum;
+      best_lag = lag;
+    }
+  }
+  EXPECT_EQ(best_lag, expected_lag);
+  EXPECT_NE(expected_lag, 0);
+  // Without reverberation the gains are exactly 1/r: the RMS ratio is the inverse distance ratio
+  // (to float rounding, 1e-4).
+  double energy[2] = {0, 0};
+  for (std::size_t i = 0; i < clip.frames(); ++i)
+    for (int ch = 0; ch < 2; ++ch) energy[ch] += clip.samples[2 * i + ch] * clip.samples[2 * i + ch];
+  EXPECT_NEAR(std::sqrt(energy[0] / energy[1]), distance[1] / distance[0], 1e-4);
+}
+
+TEST(SimulatedRecorder, BackgroundNoiseHasTheConfiguredLevel) {
+  SimConfig config;
+  config.recording.noise_dbfs = -40;
+  SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table, config);
+  ActionOutcome silent;  // no contacts at all
+  Rng rng(9);
+  const audio::AudioClip clip = recorder.record(silent, rng);
+  EXPECT_NEAR(clip.duration_seconds(), 3.0, 1e-9);
+  double energy = 0;
+  for (float s : clip.samples) energy += s * s;
+  // 264600 samples: the RMS estimate's relative standard error is ~0.2%; 2% bound.
+  EXPECT_NEAR(std::sqrt(energy / clip.samples.size()), 0.01, 0.0002);
+}
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(SimulatedRecorder, SameSeedGivesIdenticalFiles) {
+  const auto dir = std::filesystem::temp_directory_path() / "echoplan_sim_seed_test";
+  std::filesystem::create_directories(dir);
+  SimConfig config;
+  SimulatedRobot robot(shipped_catalogue(), "plastic_cup", config);
+  SimulatedRecorder recorder(robot.object(), robot.table(), config);
+  std::vector<std::string> paths;
+  for (std::uint64_t seed : {7, 7, 8}) {
+    Rng rng(seed);
+    const Recording r = simulate_recording(robot, recorder, "slide", rng);
+    paths.push_back((dir / ("clip" + std::to_string(paths.size()) + ".wav")).string());
+    audio::write_audio(paths.back(), r.clip);
+  }
+  EXPECT_EQ(file_bytes(paths[0]), file_bytes(paths[1]));
+  EXPECT_NE(file_bytes(paths[0]), file_bytes(paths[2]));
+  std::filesystem::remove_all(dir);
+}
+
+// The seed's observation feature: the MFCC matrix (frames x coefficients) of the whole clip, channels
+// averaged, flattened (every clip here is 3 s long, so the vectors have equal length).
+std::vector<double> mfcc_features(const audio::AudioClip& clip, audio::FeatureExtractor& extractor) {
+  std::vector<float> mono(clip.frames());
+  for (std::size_t i = 0; i < clip.frames(); ++i) mono[i] = 0.5f * (clip.samples[2 * i] + clip.samples[2 * i + 1]);
+  audio::Features features;
+  extractor.compute(mono, features);
+  return {features.mfcc.values.begin(), features.mfcc.values.end()};
+}
+
+TEST(SimulatedRecorder, NearestCentroidTellsTheFourObjectsApart) {
+  // Sanity check, not the classifier: 6 training and 4 test recordings per (object, action) with the
+  // default variability; a nearest-centroid on MFCC (librosa preset) must beat chance (25%) by far.
+  const SimConfig config;
+  audio::FeatureExtractor extractor(audio::librosa_preset(config.recording.sample_rate));
+  const std::vector<std::string> objects{"pringles_can", "coffee_mug", "plastic_cup", "paper_base"};
+  int correct = 0, total = 0;
+  for (const char* action : {"slide", "strike"}) {
+    std::map<std::string, std::vector<std::vector<double>>> train, test;
+    for (const auto& name : objects) {
+      SimulatedRobot robot(shipped_catalogue(), name, config);
+      SimulatedRecorder recorder(robot.object(), robot.table(), config);
+      for (int i = 0; i < 10; ++i) {
+        Rng rng(derive_seed(2024, {static_cast<std::uint64_t>(i), name.size(), static_cast<std::uint64_t>(action[1])}));
+        const auto features = mfcc_features(simulate_recording(robot, recorder, action, rng).clip, extractor);
+        (i < 6 ? train : test)[name].push_back(features);
+      }
+    }
+    std::map<std::string, std::vector<double>> centroid;
+    for (const auto& [name, rows] : train) {
+      centroid[name].assign(rows[0].size(), 0.0);
+      for (const auto& r : rows)
+        for (std::size_t k = 0; k < r.size(); ++k) centroid[name][k] += r[k] / rows.size();
+    }
+    for (const auto& [truth, rows] : test)
+      for (const auto& r : rows) {
+        std::string best;
+        double best_d = INFINITY;
+        for (const auto& [name, c] : centroid) {
+          double d = 0;
+          for (std::size_t k = 0; k < r.size(); ++k) d += (r[k] - c[k]) * (r[k] - c[k]);
+          if (d < best_d) {
+            best_d = d;
+            best = name;
+          }
+        }
+        correct += best == truth;
+        ++total;
+      }
+  }
+  EXPECT_GE(static_cast<double>(correct) / total, 0.75) << correct << "/" << total;
+}
+
+}  // namespace
+}  // namespace echoplan::sim
