@@ -41,6 +41,8 @@ int main(int argc, char** argv) {
     // CLI11 reports --help as a "success" parse error; usage errors exit 2 like bad input.
     int code = app.exit(e);
     return code == 0 ? 0 : 2;
+  } catch (const echoplan::cli::Interrupted&) {
+    return 130;
   } catch (const echoplan::InputError& e) {
     std::fprintf(stderr, "echoplan: error: %s\n", e.what());
     return 2;

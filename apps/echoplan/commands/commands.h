@@ -6,6 +6,10 @@
 
 namespace echoplan::cli {
 
+// Thrown by a command that was interrupted (Ctrl-C) after it saved what it had finished; main turns it
+// into exit status 130, the shell's convention for SIGINT.
+struct Interrupted {};
+
 void add_version_command(CLI::App& app);
 void add_trials_command(CLI::App& app);
 void add_make_problem_command(CLI::App& app);

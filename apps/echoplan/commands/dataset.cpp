@@ -3,7 +3,6 @@
 
 #include <atomic>
 #include <csignal>
-#include <cstdlib>
 
 #include "commands/commands.h"
 #include "commands/sim_options.h"
@@ -56,7 +55,7 @@ void add_dataset_command(CLI::App& app) {
     if (summary.interrupted) {
       fmt::print(stderr, "echoplan: interrupted; the {} finished recordings and their manifest rows are kept\n",
                  summary.written);
-      std::exit(130);
+      throw Interrupted{};
     }
   });
 }

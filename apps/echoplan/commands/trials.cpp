@@ -177,7 +177,7 @@ void run_trials_command(const TrialsFlags& f) {
   print_summary(summary, spec, solver_name, trial_options.budget, seconds);
   if (interrupt_requested) {
     spdlog::warn("interrupted: {} of {} trials finished and written to {}", records.size(), total, f.out);
-    std::exit(130);
+    throw Interrupted{};
   }
 }
 
