@@ -48,16 +48,18 @@ AudioClip sine_clip(int rate, int channels, int frames, double hz) {
   return clip;
 }
 
-// Expects `fn` to throw an InputError whose message names `file` and contains `fragment`.
+// Succeeds when `fn` throws an InputError whose file is `file` and whose message contains `fragment`.
 template <typename Fn>
-void expect_input_error(Fn fn, const std::string& file, const std::string& fragment) {
+::testing::AssertionResult throws_input_error(Fn fn, const std::string& file, const std::string& fragment) {
   try {
     fn();
-    FAIL() << "expected InputError containing '" << fragment << "'";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), file);
-    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    if (e.file() != file) return ::testing::AssertionFailure() << "InputError names '" << e.file() << "', not '" << file << "'";
+    if (std::string(e.what()).find(fragment) == std::string::npos)
+      return ::testing::AssertionFailure() << "InputError '" << e.what() << "' lacks '" << fragment << "'";
+    return ::testing::AssertionSuccess();
   }
+  return ::testing::AssertionFailure() << "expected InputError containing '" << fragment << "', nothing thrown";
 }
 
 // 16-bit PCM quantises to 1/32768; a round trip may be off by half a step (plus float rounding).
@@ -93,8 +95,8 @@ TEST(AudioIo, Float32WavRoundTripIsExact) {
   const auto path = temp_path("f.wav").string();
   write_audio(path, clip, {FileFormat::wav, SampleEncoding::float32});
   EXPECT_EQ(read_audio(path).samples, clip.samples);
-  expect_input_error([&] { write_audio(temp_path("f.flac").string(), clip, {FileFormat::flac, SampleEncoding::float32}); },
-                     temp_path("f.flac").string(), "integer");
+  EXPECT_TRUE(throws_input_error([&] { write_audio(temp_path("f.flac").string(), clip, {FileFormat::flac, SampleEncoding::float32}); },
+                     temp_path("f.flac").string(), "integer"));
 }
 
 // Writes mono 44.1 kHz `samples` with `options` and reads them back.
@@ -137,9 +139,9 @@ TEST(AudioIo, MeanPolicyAveragesChannelsAndSelectPicksOne) {
     EXPECT_FLOAT_EQ(mean.samples[f], 0.5f * (stereo.samples[2 * f] + stereo.samples[2 * f + 1]));
     EXPECT_EQ(right.samples[f], stereo.samples[2 * f + 1]);
   }
-  expect_input_error(
+  EXPECT_TRUE(throws_input_error(
       [&] { read_audio(kInputs + "impact_dull_44k_stereo.wav", {.channel_policy = ChannelPolicy::select, .channel = 2}); },
-      kInputs + "impact_dull_44k_stereo.wav", "channel 2 requested");
+      kInputs + "impact_dull_44k_stereo.wav", "channel 2 requested"));
 }
 
 TEST(AudioIo, ReadsFlacReferenceInputs) {
@@ -170,21 +172,21 @@ TEST(AudioIo, PureSilenceIsValidAndReadAsZeros) {
 }
 
 TEST(AudioIo, MissingEmptyAndNonAudioFilesAreInputErrors) {
-  expect_input_error([] { read_audio("/nonexistent/x.wav"); }, "/nonexistent/x.wav", "cannot decode");
+  EXPECT_TRUE(throws_input_error([] { read_audio("/nonexistent/x.wav"); }, "/nonexistent/x.wav", "cannot decode"));
   const auto empty = temp_path("empty.wav");
   write_bytes(empty, {});
-  expect_input_error([&] { read_audio(empty.string()); }, empty.string(), "cannot decode");
-  expect_input_error([] { read_audio_memory({}, "mem", {}); }, "mem", "empty");
+  EXPECT_TRUE(throws_input_error([&] { read_audio(empty.string()); }, empty.string(), "cannot decode"));
+  EXPECT_TRUE(throws_input_error([] { read_audio_memory({}, "mem", {}); }, "mem", "empty"));
   const auto text = temp_path("text.wav");
   const std::string words = "this is not a sound file, just some words that go on for a while......";
   write_bytes(text, std::vector<std::uint8_t>(words.begin(), words.end()));
-  expect_input_error([&] { read_audio(text.string()); }, text.string(), "cannot decode");
+  EXPECT_TRUE(throws_input_error([&] { read_audio(text.string()); }, text.string(), "cannot decode"));
 }
 
 TEST(AudioIo, TruncatedHeaderIsAnInputErrorAndTruncatedDataReadsWhatIsThere) {
   const auto bytes = read_bytes(kInputs + "chirp_1s_22k_mono.wav");
   const std::vector<std::uint8_t> header_only(bytes.begin(), bytes.begin() + 20);
-  expect_input_error([&] { read_audio_memory(header_only, "cut.wav"); }, "cut.wav", "cannot decode");
+  EXPECT_TRUE(throws_input_error([&] { read_audio_memory(header_only, "cut.wav"); }, "cut.wav", "cannot decode"));
   // Header intact but the data chunk cut after 1000 bytes (500 16-bit frames): the reader returns what
   // is there instead of trusting the header's length.
   std::size_t data_offset = 0;
@@ -195,7 +197,7 @@ TEST(AudioIo, TruncatedHeaderIsAnInputErrorAndTruncatedDataReadsWhatIsThere) {
   const AudioClip clip = read_audio_memory(cut, "cut.wav");
   EXPECT_EQ(clip.frames(), 500u);
   const std::vector<std::uint8_t> no_data(bytes.begin(), bytes.begin() + static_cast<long>(data_offset));
-  expect_input_error([&] { read_audio_memory(no_data, "nodata.wav"); }, "nodata.wav", "");
+  EXPECT_TRUE(throws_input_error([&] { read_audio_memory(no_data, "nodata.wav"); }, "nodata.wav", ""));
 }
 
 // Builds a minimal canonical WAV header (44 bytes) with arbitrary fields, for headers no encoder writes.
@@ -215,7 +217,7 @@ std::vector<std::uint8_t> wav_bytes(std::uint16_t format_tag, std::uint16_t chan
 
 TEST(AudioIo, ZeroChannelHeaderIsAnInputError) {
   const auto bytes = wav_bytes(1, 0, 44100, 16, std::vector<std::uint8_t>(64, 0));
-  expect_input_error([&] { read_audio_memory(bytes, "zero.wav"); }, "zero.wav", "");
+  EXPECT_TRUE(throws_input_error([&] { read_audio_memory(bytes, "zero.wav"); }, "zero.wav", ""));
 }
 
 TEST(AudioIo, NonFiniteFloatSamplesAreInputErrors) {
@@ -224,7 +226,7 @@ TEST(AudioIo, NonFiniteFloatSamplesAreInputErrors) {
     std::vector<std::uint8_t> data(samples.size() * 4);
     std::memcpy(data.data(), samples.data(), data.size());
     const auto bytes = wav_bytes(3, 1, 8000, 32, data);  // format tag 3 = IEEE float
-    expect_input_error([&] { read_audio_memory(bytes, "nan.wav"); }, "nan.wav", "sample 2 of channel 0 is not a finite");
+    EXPECT_TRUE(throws_input_error([&] { read_audio_memory(bytes, "nan.wav"); }, "nan.wav", "sample 2 of channel 0 is not a finite"));
   }
 }
 
@@ -232,7 +234,7 @@ TEST(AudioIo, FilesLongerThanTheLimitAreRejectedBeforeDecoding) {
   const AudioClip clip = sine_clip(8000, 1, 8000 * 3, 100.0);
   const auto path = temp_path("long.wav").string();
   write_audio(path, clip);
-  expect_input_error([&] { read_audio(path, {.max_duration_seconds = 2.0}); }, path, "limit of 2.0 s");
+  EXPECT_TRUE(throws_input_error([&] { read_audio(path, {.max_duration_seconds = 2.0}); }, path, "limit of 2.0 s"));
   EXPECT_EQ(read_audio(path, {.max_duration_seconds = 3.0}).frames(), 24000u);
   // A header that claims ~6.8 hours (the maximum 32-bit data size) over 100 real bytes: only the 50 frames
   // present are decoded, nothing is allocated for the claimed length.
@@ -245,10 +247,10 @@ TEST(AudioIo, MalformedClipsCannotBeWritten) {
   AudioClip clip;
   clip.channels = 2;
   clip.samples = {0.1f, 0.2f, 0.3f};
-  expect_input_error([&] { write_audio(temp_path("bad.wav").string(), clip); }, temp_path("bad.wav").string(), "whole number");
+  EXPECT_TRUE(throws_input_error([&] { write_audio(temp_path("bad.wav").string(), clip); }, temp_path("bad.wav").string(), "whole number"));
   clip.channels = 0;
-  expect_input_error([&] { write_audio(temp_path("bad.wav").string(), clip); }, temp_path("bad.wav").string(), "0 channels");
-  expect_input_error([&] { write_audio("/nonexistent/dir/x.wav", sine_clip(8000, 1, 10, 1.0)); }, "/nonexistent/dir/x.wav", "cannot open");
+  EXPECT_TRUE(throws_input_error([&] { write_audio(temp_path("bad.wav").string(), clip); }, temp_path("bad.wav").string(), "0 channels"));
+  EXPECT_TRUE(throws_input_error([&] { write_audio("/nonexistent/dir/x.wav", sine_clip(8000, 1, 10, 1.0)); }, "/nonexistent/dir/x.wav", "cannot open"));
 }
 
 }  // namespace
