@@ -34,6 +34,9 @@ int main(int argc, char** argv) {
   echoplan::cli::add_dataset_command(app);
   echoplan::cli::add_features_command(app);
   echoplan::cli::add_heatmap_command(app);
+  echoplan::cli::add_train_command(app);
+  echoplan::cli::add_classify_command(app);
+  echoplan::cli::add_evaluate_command(app);
 
   try {
     app.parse(argc, argv);

@@ -19,5 +19,8 @@ void add_synth_command(CLI::App& app);
 void add_dataset_command(CLI::App& app);
 void add_features_command(CLI::App& app);
 void add_heatmap_command(CLI::App& app);
+void add_train_command(CLI::App& app);
+void add_classify_command(CLI::App& app);
+void add_evaluate_command(CLI::App& app);
 
 }  // namespace echoplan::cli
