@@ -119,6 +119,26 @@ void add_train_command(CLI::App& app) {
     std::optional<pomdp::Problem> base;
     if (!opt->problem_out.empty()) base = pomdp::load_problem(opt->problem_base);
     const perception::RecordingSet set = perception::load_recording_set(opt->data);
+    if (base) {
+      // The problem's objects and sensing actions must all have recordings: say so before training.
+      const auto* object_model =
+          dynamic_cast<const pomdp::ObjectIdentificationModel*>(base->model.get());
+      if (object_model != nullptr) {
+        for (const auto& object : object_model->data().objects)
+          if (set.object_index(object) < 0)
+            throw InputError(
+                opt->problem_base, 0,
+                fmt::format("object '{}' of the problem has no recordings in {} (objects: {})",
+                            object, opt->data, fmt::join(set.objects, ", ")));
+        for (const auto& action : object_model->data().sensing)
+          if (std::find(set.actions.begin(), set.actions.end(), action.name) == set.actions.end())
+            throw InputError(
+                opt->problem_base, 0,
+                fmt::format(
+                    "sensing action '{}' of the problem has no recordings in {} (actions: {})",
+                    action.name, opt->data, fmt::join(set.actions, ", ")));
+      }
+    }
     spdlog::info("{} recordings: {} objects x {} actions; classifier {}", set.recordings.size(),
                  set.objects.size(), set.actions.size(), opt->train.classifier);
     const perception::ObservationModel model = perception::train_observation_model(
