@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <nlohmann/json.hpp>
 #include <string>
 
 #include "common/error.h"
@@ -11,14 +10,9 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace echoplan::perception;
-  nlohmann::json doc;
   try {
-    doc = nlohmann::json::parse(data, data + size);
-  } catch (const nlohmann::json::parse_error&) {
-    return 0;  // load_observation_model reports this as InputError; nothing more to exercise
-  }
-  try {
-    const ObservationModel model = ObservationModel::from_json(doc, "fuzz.json");
+    const ObservationModel model = parse_observation_model(
+        std::string(reinterpret_cast<const char*>(data), size), "fuzz.json");
     echoplan::audio::AudioClip clip;
     clip.sample_rate = 8000;
     for (int i = 0; i < 1600; ++i)

@@ -455,18 +455,24 @@ ObservationModel load_observation_model(const std::string& path) {
   if (!in) throw InputError(path, 0, "cannot open the model file");
   std::ostringstream text;
   text << in.rdbuf();
+  return parse_observation_model(text.str(), path);
+}
+
+ObservationModel parse_observation_model(const std::string& text, const std::string& source) {
   nlohmann::json doc;
   try {
-    doc = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    // parse_error for broken syntax, out_of_range for a number beyond double: both a corrupt file.
     throw InputError(
-        path, 0, fmt::format("not a valid JSON model file (truncated or corrupt?): {}", e.what()));
+        source, 0,
+        fmt::format("not a valid JSON model file (truncated or corrupt?): {}", e.what()));
   }
   try {
-    return ObservationModel::from_json(doc, path);
+    return ObservationModel::from_json(doc, source);
   } catch (const nlohmann::json::exception& e) {
     // A shape the checks above did not anticipate: still an input error, never a crash.
-    throw InputError(path, 0, fmt::format("malformed model: {}", e.what()));
+    throw InputError(source, 0, fmt::format("malformed model: {}", e.what()));
   }
 }
 

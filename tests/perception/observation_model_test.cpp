@@ -184,6 +184,7 @@ TEST_F(ObservationModelTest, EveryBrokenModelFileIsAClearError) {
   expect_error(text.substr(0, text.size() / 2), "not a valid JSON model file");
   expect_error("", "not a valid JSON model file");
   expect_error("[1, 2]", "expected a JSON object");
+  expect_error("{\"version\": 8.5e6666666}", "not a valid JSON model file");  // found by the fuzzer
   auto with = [&](const std::function<void(nlohmann::json&)>& change) {
     nlohmann::json doc = good;
     change(doc);
