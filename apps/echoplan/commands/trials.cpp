@@ -49,8 +49,7 @@ struct TrialsFlags {
 
 // `--solver offline`: the policy file when given, else the point-based solver run now (to its
 // default precision or time limit).
-std::unique_ptr<solvers::Solver> offline_solver(const TrialsFlags& f,
-                                                const pomdp::Problem& problem) {
+std::unique_ptr<solvers::Solver> offline_solver(const TrialsFlags& f, const pomdp::Problem& problem) {
   if (f.policy.empty()) spdlog::info("solving {} offline (no --policy given)", f.problem);
   return solvers::offline::make_offline_solver(problem.model, {}, f.policy, f.problem);
 }
@@ -105,9 +104,8 @@ class ProgressLog final : public experiment::TrialObserver {
     log_.trial_finished(t, steps);
     const auto& names = spec_.state.discrete_value_names;
     auto name = [&](int v) { return names.empty() ? std::to_string(v) : names[0][v]; };
-    spdlog::info("trial {}/{}: true {}, believed {}, {} steps, discounted reward {:.3f}",
-                 t.trial + 1, total_, name(t.true_state), name(t.believed_state), t.steps,
-                 t.discounted_reward);
+    spdlog::info("trial {}/{}: true {}, believed {}, {} steps, discounted reward {:.3f}", t.trial + 1,
+                 total_, name(t.true_state), name(t.believed_state), t.steps, t.discounted_reward);
   }
 
  private:
@@ -120,9 +118,8 @@ void run_trials_command(const TrialsFlags& f) {
   const pomdp::Problem problem = pomdp::load_problem(f.problem);
   const std::string solver_name = f.solver.empty() ? problem.planner.solver : f.solver;
   const solvers::SearchOptions options = search_options(f, problem);
-  auto solver = solver_name == "offline"
-                    ? offline_solver(f, problem)
-                    : solvers::make_solver(solver_name, problem.model, options);
+  auto solver = solver_name == "offline" ? offline_solver(f, problem)
+                                          : solvers::make_solver(solver_name, problem.model, options);
   pomdp::ModelEnvironment environment(problem.model);
 
   experiment::TrialOptions trial_options;
@@ -157,14 +154,12 @@ void run_trials_command(const TrialsFlags& f) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::signal(SIGINT, previous);
 
-  const experiment::TrialSummary summary =
-      experiment::summarize(records, problem.model->num_actions());
+  const experiment::TrialSummary summary = experiment::summarize(records, problem.model->num_actions());
   nlohmann::json run = {
       {"problem", f.problem},
       {"solver", solver_name},
-      {"budget",
-       {{trial_options.budget.kind == solvers::Budget::Kind::episodes ? "episodes" : "step_ms",
-         trial_options.budget.amount}}},
+      {"budget", {{trial_options.budget.kind == solvers::Budget::Kind::episodes ? "episodes" : "step_ms",
+                   trial_options.budget.amount}}},
       {"seed", f.seed},
       {"trials_requested", total},
       {"per_object", f.per_object},
@@ -181,8 +176,7 @@ void run_trials_command(const TrialsFlags& f) {
   log.write_summary(summary, run);
   print_summary(summary, spec, solver_name, trial_options.budget, seconds);
   if (interrupt_requested) {
-    spdlog::warn("interrupted: {} of {} trials finished and written to {}", records.size(), total,
-                 f.out);
+    spdlog::warn("interrupted: {} of {} trials finished and written to {}", records.size(), total, f.out);
     throw Interrupted{};
   }
 }
@@ -193,8 +187,7 @@ void add_trials_command(CLI::App& app) {
   auto flags = std::make_shared<TrialsFlags>();
   auto* cmd = app.add_subcommand(
       "trials",
-      "Run planning trials on a problem: the true object is drawn per trial, the solver plans "
-      "each\n"
+      "Run planning trials on a problem: the true object is drawn per trial, the solver plans each\n"
       "step, the model acts as the world. Writes DIR/trials.csv, DIR/steps.csv, DIR/summary.json\n"
       "and prints a summary. Example:\n"
       "  echoplan trials --problem problems/audio_objects.yaml --per-object 10 --episodes 2000 "
@@ -214,8 +207,7 @@ void add_trials_command(CLI::App& app) {
   cmd->add_option("--max-steps", flags->max_steps, "Stop a trial after this many steps")
       ->capture_default_str();
   cmd->add_option("--seed", flags->seed, "Seed of every random choice")->capture_default_str();
-  cmd->add_option("--out", flags->out, "Folder for trials.csv, steps.csv, summary.json")
-      ->required();
+  cmd->add_option("--out", flags->out, "Folder for trials.csv, steps.csv, summary.json")->required();
   cmd->add_option("--exploration", flags->exploration,
                   "UCB exploration constant c, reward units (default: the problem file's)");
   cmd->add_option("--depth", flags->depth, "Maximum search depth (default: the problem file's)");
