@@ -2,8 +2,8 @@
 // YAML (objects/catalogue.yaml; format in docs/simulator.md).
 //
 // Everything here is a plain value that never changes after loading. A modified object (an original
-// plus an added mass) is resolved at load time into a full ObjectSpec whose mass, centre of mass and
-// inertia include the added mass, so the rest of the simulator sees one kind of object.
+// plus an added mass) is resolved at load time into a full ObjectSpec whose mass, centre of mass
+// and inertia include the added mass, so the rest of the simulator sees one kind of object.
 #pragma once
 
 #include <array>
@@ -37,8 +37,8 @@ struct ListedMode {
 // A point mass added to an object (the "weighted" variants), in the object's frame: origin at the
 // centre of its base, z along its axis.
 struct AddedMass {
-  double mass = 0;                       // kg, > 0
-  std::array<double, 3> position{};      // m
+  double mass = 0;                   // kg, > 0
+  std::array<double, 3> position{};  // m
 };
 
 // A rigid object the robot can slide or strike: a thin-walled cylinder with a base.
@@ -91,8 +91,8 @@ Catalogue load_catalogue(const std::string& path);
 // As load_catalogue, from YAML text; `source` names it in error messages.
 Catalogue parse_catalogue(const std::string& yaml_text, const std::string& source);
 
-// The catalogue shipped with echoplan: objects/catalogue.yaml in the working directory if it exists,
-// else the one in the source tree echoplan was built from.
+// The catalogue shipped with echoplan: objects/catalogue.yaml in the working directory if it
+// exists, else the one in the source tree echoplan was built from.
 std::string default_catalogue_path();
 
 }  // namespace echoplan::sim
