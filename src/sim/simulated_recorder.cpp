@@ -14,6 +14,10 @@ namespace echoplan::sim {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
+// An object's modes answer a force impulse with a velocity inversely proportional to their modal
+// mass (about the object's mass): a heavy mug rings less for the same push than a light cup.
+// Relative to this mass.
+constexpr double kReferenceModalMass = 0.06;  // kg
 constexpr double kReferenceHz = 1000.0;  // dipole radiation is normalised to 1 at this frequency
 constexpr double kPulseGain = 3.0;  // the contact pulse's direct radiation relative to the modes
 constexpr double kDirectFriction =
@@ -31,7 +35,8 @@ constexpr double kProfileSpacing =
 constexpr double kReferenceSlideSpeed = 0.05;  // m/s at which friction_gain is calibrated
 constexpr double kStaticSpeed =
     2e-3;  // m/s: slower creep of a pressed contact is the solver's compliance, silent
-constexpr double kTailDecay = 11.5;      // ln(1e5): a mode is rendered until it fell by 100 dB
+constexpr double kTailDecay =
+    9.2;  // ln(1e4): a mode is rendered until it fell by 80 dB (below the noise floor)
 constexpr double kSourceHeight = 0.02;   // m above the table: where the object radiates from
 constexpr double kDirectPathGain = 0.3;  // pressure at 1 m per unit modal amplitude
 
@@ -41,42 +46,72 @@ struct ModeDrive {
   double continuous_gain = 0;                            // times the friction excitation
 };
 
-// Renders mode `mode` driven by `drive` into `out` (added): the resonator
-// y[n] = 2 r cos(w) y[n-1] - r^2 y[n-2] + sin(w) x[n] has impulse response r^n sin(w (n + 1)).
+// Renders `modes` driven by `drives` into `out` (added). Each mode is the resonator
+// y[n] = 2 r cos(w) y[n-1] - r^2 y[n-2] + sin(w) x[n] (impulse response r^n sin(w (n + 1))), from
+// its first excitation until kTailDecay below its last. Modes run four at a time in one loop: the
+// recursions are independent, so the processor overlaps them (one alone waits on its own latency).
 // `friction_span` is [first, last] sample where the friction excitation is non-zero (first > last:
 // none).
-void render_mode(const Mode& mode, const ModeDrive& drive, const std::vector<float>& friction,
-                 std::pair<std::size_t, std::size_t> friction_span, int rate,
-                 std::vector<float>& out) {
-  const double w = kTwoPi * mode.frequency_hz / rate;
-  const double r = std::exp(-mode.decay_per_s / rate);
-  const double a1 = 2.0 * r * std::cos(w), a2 = -r * r, b = std::sin(w);
-  const std::size_t n_total = out.size();
-  // Render from the first excitation until 100 dB below the last one.
-  std::size_t first = n_total, last = 0;
-  for (const auto& [at, amp] : drive.impulses) {
-    first = std::min(first, at);
-    last = std::max(last, at);
-  }
-  if (drive.continuous_gain != 0 && friction_span.first <= friction_span.second) {
-    first = std::min(first, friction_span.first);
-    last = std::max(last, friction_span.second);
-  }
-  if (first >= n_total) return;
-  const double tail =
-      mode.decay_per_s > 0 ? kTailDecay / mode.decay_per_s * rate : static_cast<double>(n_total);
-  const std::size_t end = std::min(n_total, last + static_cast<std::size_t>(tail) + 1);
-  std::vector<double> x(end - first, 0.0);
-  for (const auto& [at, amp] : drive.impulses) x[at - first] += amp;
-  if (drive.continuous_gain != 0)
-    for (std::size_t n = first; n < std::min(end, friction.size()); ++n)
-      x[n - first] += drive.continuous_gain * friction[n];
-  double y1 = 0, y2 = 0;
-  for (std::size_t n = first; n < end; ++n) {
-    const double y = a1 * y1 + a2 * y2 + b * x[n - first];
-    y2 = y1;
-    y1 = y;
-    out[n] += static_cast<float>(y);
+void render_modes(const std::vector<Mode>& modes, const std::vector<ModeDrive>& drives,
+                  const std::vector<float>& friction,
+                  std::pair<std::size_t, std::size_t> friction_span, int rate,
+                  std::vector<float>& out) {
+  constexpr std::size_t kLanes = 4;
+  const std::size_t n_total = std::min(out.size(), friction.size());
+  for (std::size_t g = 0; g < modes.size(); g += kLanes) {
+    double a1[kLanes] = {}, a2[kLanes] = {}, b[kLanes] = {}, drive[kLanes] = {};
+    double y1[kLanes] = {}, y2[kLanes] = {};
+    std::size_t first = n_total, end = 0;
+    struct Event {
+      std::size_t at, lane;
+      double amp;
+    };
+    std::vector<Event> events;
+    for (std::size_t lane = 0; lane < kLanes && g + lane < modes.size(); ++lane) {
+      const Mode& mode = modes[g + lane];
+      const ModeDrive& d = drives[g + lane];
+      std::size_t f = n_total, last = 0;
+      for (const auto& [at, amp] : d.impulses) {
+        if (at >= n_total) continue;
+        f = std::min(f, at);
+        last = std::max(last, at);
+        events.push_back({at, lane, amp});
+      }
+      if (d.continuous_gain != 0 && friction_span.first <= friction_span.second) {
+        f = std::min(f, friction_span.first);
+        last = std::max(last, friction_span.second);
+        drive[lane] = d.continuous_gain;
+      }
+      if (f >= n_total) continue;
+      const double w = kTwoPi * mode.frequency_hz / rate;
+      const double r = std::exp(-mode.decay_per_s / rate);
+      a1[lane] = 2.0 * r * std::cos(w);
+      a2[lane] = -r * r;
+      b[lane] = std::sin(w);
+      const double tail = mode.decay_per_s > 0 ? kTailDecay / mode.decay_per_s * rate
+                                               : static_cast<double>(n_total);
+      first = std::min(first, f);
+      end = std::max(end,
+                     std::min(n_total, last + static_cast<std::size_t>(std::min(tail, 1e9)) + 1));
+    }
+    if (first >= end) continue;
+    std::sort(events.begin(), events.end(),
+              [](const Event& x, const Event& y) { return x.at < y.at; });
+    std::size_t next_event = 0;
+    for (std::size_t n = first; n < end; ++n) {
+      double x[kLanes];
+      for (std::size_t lane = 0; lane < kLanes; ++lane) x[lane] = drive[lane] * friction[n];
+      for (; next_event < events.size() && events[next_event].at == n; ++next_event)
+        x[events[next_event].lane] += events[next_event].amp;
+      double sum = 0;
+      for (std::size_t lane = 0; lane < kLanes; ++lane) {
+        const double y = a1[lane] * y1[lane] + a2[lane] * y2[lane] + b[lane] * x[lane];
+        y2[lane] = y1[lane];
+        y1[lane] = y;
+        sum += y;
+      }
+      out[n] += static_cast<float>(sum);
+    }
   }
 }
 
@@ -303,7 +338,8 @@ SimulatedRecorder::SimulatedRecorder(const ObjectSpec& object, const TableSpec& 
                                       table.contact_loss_factor)),
       table_modes_(sim::table_modes(table)),
       contact_modulus_(effective_modulus(object.material, table.material)),
-      table_coincidence_hz_(coincidence_frequency(table.material, table.thickness)) {
+      table_coincidence_hz_(coincidence_frequency(table.material, table.thickness)),
+      object_mode_scale_(kReferenceModalMass / object.total_mass()) {
   std::erase_if(table_modes_, [&](const Mode& m) {
     return m.frequency_hz >= 0.45 * config.recording.sample_rate;
   });
@@ -351,7 +387,7 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
     for (std::size_t k = 0; k < object_modes_.size(); ++k) {
       const Mode& m = object_modes_[k];
       object_drives[k].impulses.emplace_back(
-          at, momentum * m.gain * radiated(m.frequency_hz) *
+          at, object_mode_scale_ * momentum * m.gain * radiated(m.frequency_hz) *
                   ring_excitation(impact.contacts, m.azimuthal_order));
     }
     for (std::size_t k = 0; k < table_modes_.size(); ++k) {
@@ -369,7 +405,7 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
   // frequency).
   for (std::size_t k = 0; k < object_modes_.size(); ++k)
     object_drives[k].continuous_gain =
-        object_modes_[k].gain * object_modes_[k].frequency_hz / kReferenceHz;
+        object_mode_scale_ * object_modes_[k].gain * object_modes_[k].frequency_hz / kReferenceHz;
   for (std::size_t k = 0; k < table_modes_.size(); ++k)
     table_drives[k].continuous_gain = kTableCoupling * table_modes_[k].gain *
                                       table_modes_[k].frequency_hz / kReferenceHz *
@@ -382,10 +418,8 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
       friction_span.second = n;
     }
 
-  for (std::size_t k = 0; k < object_modes_.size(); ++k)
-    render_mode(object_modes_[k], object_drives[k], friction, friction_span, rate, dry);
-  for (std::size_t k = 0; k < table_modes_.size(); ++k)
-    render_mode(table_modes_[k], table_drives[k], friction, friction_span, rate, dry);
+  render_modes(object_modes_, object_drives, friction, friction_span, rate, dry);
+  render_modes(table_modes_, table_drives, friction, friction_span, rate, dry);
   // The rubbing contact itself radiates broadband noise besides ringing the modes.
   for (std::size_t n = 0; n < frames; ++n)
     dry[n] += static_cast<float>(kDirectFriction) * friction[n];
