@@ -54,9 +54,13 @@ struct ModeDrive {
 // none).
 void render_modes(const std::vector<Mode>& modes, const std::vector<ModeDrive>& drives,
                   const std::vector<float>& friction,
-                  std::pair<std::size_t, std::size_t> friction_span, int rate,
+                  std::pair<std::size_t, std::size_t> friction_span,
+                  const std::vector<std::size_t>& friction_active, int rate,
                   std::vector<float>& out) {
   constexpr std::size_t kLanes = 4;
+  constexpr std::size_t kBlock = 256;
+  constexpr double kRestLevel =
+      1e-10;  // a resonator this quiet is at rest (~100 dB below the noise floor)
   const std::size_t n_total = std::min(out.size(), friction.size());
   for (std::size_t g = 0; g < modes.size(); g += kLanes) {
     double a1[kLanes] = {}, a2[kLanes] = {}, b[kLanes] = {}, drive[kLanes] = {};
@@ -98,19 +102,32 @@ void render_modes(const std::vector<Mode>& modes, const std::vector<ModeDrive>& 
     std::sort(events.begin(), events.end(),
               [](const Event& x, const Event& y) { return x.at < y.at; });
     std::size_t next_event = 0;
-    for (std::size_t n = first; n < end; ++n) {
-      double x[kLanes];
-      for (std::size_t lane = 0; lane < kLanes; ++lane) x[lane] = drive[lane] * friction[n];
-      for (; next_event < events.size() && events[next_event].at == n; ++next_event)
-        x[events[next_event].lane] += events[next_event].amp;
-      double sum = 0;
-      for (std::size_t lane = 0; lane < kLanes; ++lane) {
-        const double y = a1[lane] * y1[lane] + a2[lane] * y2[lane] + b[lane] * x[lane];
-        y2[lane] = y1[lane];
-        y1[lane] = y;
-        sum += y;
+    for (std::size_t block = first; block < end; block += kBlock) {
+      const std::size_t block_end = std::min(end, block + kBlock);
+      // A silent stretch (every resonator at rest, no friction, no impulse) is skipped: a strike's
+      // modes have died away long before its next scuff.
+      bool at_rest = friction_active[block_end] == friction_active[block] &&
+                     (next_event >= events.size() || events[next_event].at >= block_end);
+      for (std::size_t lane = 0; lane < kLanes && at_rest; ++lane)
+        at_rest = std::abs(y1[lane]) < kRestLevel && std::abs(y2[lane]) < kRestLevel;
+      if (at_rest) {
+        for (std::size_t lane = 0; lane < kLanes; ++lane) y1[lane] = y2[lane] = 0;
+        continue;
       }
-      out[n] += static_cast<float>(sum);
+      for (std::size_t n = block; n < block_end; ++n) {
+        double x[kLanes];
+        for (std::size_t lane = 0; lane < kLanes; ++lane) x[lane] = drive[lane] * friction[n];
+        for (; next_event < events.size() && events[next_event].at == n; ++next_event)
+          x[events[next_event].lane] += events[next_event].amp;
+        double sum = 0;
+        for (std::size_t lane = 0; lane < kLanes; ++lane) {
+          const double y = a1[lane] * y1[lane] + a2[lane] * y2[lane] + b[lane] * x[lane];
+          y2[lane] = y1[lane];
+          y1[lane] = y;
+          sum += y;
+        }
+        out[n] += static_cast<float>(sum);
+      }
     }
   }
 }
@@ -418,8 +435,12 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
       friction_span.second = n;
     }
 
-  render_modes(object_modes_, object_drives, friction, friction_span, rate, dry);
-  render_modes(table_modes_, table_drives, friction, friction_span, rate, dry);
+  // friction_active[n]: how many of the first n samples have friction (to find silent stretches).
+  std::vector<std::size_t> friction_active(friction.size() + 1, 0);
+  for (std::size_t n = 0; n < friction.size(); ++n)
+    friction_active[n + 1] = friction_active[n] + (friction[n] != 0.0f);
+  render_modes(object_modes_, object_drives, friction, friction_span, friction_active, rate, dry);
+  render_modes(table_modes_, table_drives, friction, friction_span, friction_active, rate, dry);
   // The rubbing contact itself radiates broadband noise besides ringing the modes.
   for (std::size_t n = 0; n < frames; ++n)
     dry[n] += static_cast<float>(kDirectFriction) * friction[n];
