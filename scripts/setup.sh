@@ -26,6 +26,7 @@ packages=(
   libmujoco-dev libqhull-dev libeigen3-dev
   gnuplot-nox
   clang libclang-rt-14-dev   # scripts/fuzz.sh (libFuzzer)
+  python3-numpy python3-scipy python3-soundfile   # bench/sim_realism.py (with /usr/bin/python3)
 )
 
 install_deps() {
