@@ -12,16 +12,10 @@ namespace echoplan::pomdp {
 namespace {
 
 using testing::repo_file;
+using testing::repo_text;
 
 const ObjectIdentificationModel& object_model(const Problem& p) {
   return dynamic_cast<const ObjectIdentificationModel&>(*p.model);
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // The seed's section 3.3, typed in here independently of the YAML file: [object][action][class].
@@ -70,7 +64,7 @@ TEST(ProblemYaml, SeedProblemMatchesTheReport) {
 }
 
 TEST(ProblemYaml, WeightedPriorIsNormalised) {
-  std::string text = read_text(repo_file("problems/audio_objects.yaml"));
+  std::string text = repo_text("problems/audio_objects.yaml");
   const std::string from = "objects: uniform";
   text.replace(text.find(from), from.size(), "objects: {pringles_can: 3, coffee_mug: 1}");
   const Problem p = parse_problem_yaml(text, "prior.yaml");
@@ -95,7 +89,7 @@ int line_of(const std::string& text, const std::string& needle) {
 
 TEST_P(ProblemYamlErrors, ReportFileLineAndProblem) {
   const BadCase& c = GetParam();
-  std::string text = read_text(repo_file("problems/audio_objects.yaml"));
+  std::string text = repo_text("problems/audio_objects.yaml");
   const std::size_t at = text.find(c.from);
   ASSERT_NE(at, std::string::npos) << c.from;
   text.replace(at, std::string(c.from).size(), c.to);
