@@ -1,13 +1,7 @@
 #!/bin/sh
 # Ctrl-C on a long command (common/stop_signal.h): the run stops after the unit in progress, keeps what it
 # finished, writes its summary and exits 130. Usage: interrupt_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
-set -u
-bin=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+. "$(dirname "$0")/cli_test_lib.sh"
 
 # Far more trials than can finish before the signal arrives.
 "$bin" trials --problem "$src/problems/tiger.pomdp" --solver pomcp --trials 100000 --episodes 200 --seed 1 \
@@ -29,5 +23,4 @@ rows=$(($(wc -l <"$work/run/trials.csv") - 1))
 [ "$rows" -ge 1 ] && [ "$rows" -lt 100000 ] || fail "trials.csv holds $rows finished trials"
 grep -q "stopping after the current step" "$work/err" || fail "stderr does not say the run is stopping"
 
-[ "$failures" -eq 0 ] && echo "all interrupt CLI checks passed"
-exit "$failures"
+finish "interrupt CLI"

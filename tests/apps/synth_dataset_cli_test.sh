@@ -2,13 +2,7 @@
 # `echoplan synth` and `echoplan dataset` end to end: run from a folder without objects/, they find the
 # catalogue shipped with echoplan (common/data_dir.h); the same seed gives the same recording; unknown
 # objects exit 2 naming the catalogue. Usage: synth_dataset_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
-set -u
-bin=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+. "$(dirname "$0")/cli_test_lib.sh"
 cd "$work" || exit 1
 
 "$bin" synth --object coffee_mug --action strike --seed 3 -o a.wav >/dev/null 2>err \
@@ -29,5 +23,4 @@ grep -q "catalogue.yaml: unknown object 'teapot'" err || fail "unknown object: s
 [ -s set/plastic_cup/strike/000.wav ] || fail "dataset wrote no set/plastic_cup/strike/000.wav"
 [ "$(wc -l <set/manifest.csv)" -eq 2 ] || fail "manifest.csv should hold a header and 1 row"
 
-[ "$failures" -eq 0 ] && echo "all synth and dataset CLI checks passed"
-exit "$failures"
+finish "synth and dataset CLI"
