@@ -26,5 +26,4 @@ printf 'discount: 0.95\nstates: 2\n' > "$work/bad.pomdp"
 head -c 3000 /dev/urandom > "$work/noise.yaml"
 "$bin" check --problem "$work/noise.yaml" 2>/dev/null
 [ $? -eq 2 ] || fail "random bytes should exit 2"
-echo "cli ok"
 finish "make-problem and check CLI"

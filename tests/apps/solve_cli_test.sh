@@ -27,5 +27,4 @@ echo "$msg" | grep -q "bad.pomdp" || fail "message should name the file: $msg"
 [ $? -eq 2 ] || fail "negative epsilon should exit 2"
 "$bin" solve --problem "$src/problems/tiger.pomdp" --time-limit 0 2>/dev/null
 [ $? -eq 2 ] || fail "zero time limit should exit 2"
-echo "solve cli ok"
 finish "solve CLI"
