@@ -195,6 +195,42 @@ std::vector<std::string> YamlReader::names(const YAML::Node& node, const std::st
   return out;
 }
 
+YamlMapping::YamlMapping(const YamlReader& reader, std::string entry, YAML::Node node)
+    : reader_(reader), entry_(std::move(entry)), node_(std::move(node)) {
+  reader_.expect_map(node_, entry_);
+}
+
+bool YamlMapping::has(const std::string& key) const { return node_[key].IsDefined(); }
+
+YAML::Node YamlMapping::required(const std::string& key) const {
+  return reader_.require(node_, key, entry_);
+}
+
+void YamlMapping::only_keys(const std::vector<std::string>& allowed) const {
+  reader_.only_keys(node_, allowed, entry_);
+}
+
+double YamlMapping::number(const std::string& key, const NumberRange& range) const {
+  return reader_.number(required(key), field(key), range);
+}
+
+double YamlMapping::number_or(const std::string& key, double fallback,
+                              const NumberRange& range) const {
+  return has(key) ? reader_.number(node_[key], field(key), range) : fallback;
+}
+
+std::string YamlMapping::name(const std::string& key) const {
+  return reader_.name(required(key), field(key));
+}
+
+bool YamlMapping::boolean_or(const std::string& key, bool fallback) const {
+  return has(key) ? reader_.boolean(node_[key], field(key)) : fallback;
+}
+
+std::vector<double> YamlMapping::numbers(const std::string& key, std::size_t count) const {
+  return reader_.numbers(required(key), field(key), count);
+}
+
 namespace detail {
 
 void rethrow_yaml_exception(const std::string& file, const YAML::Exception& e) {

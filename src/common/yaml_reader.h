@@ -105,6 +105,40 @@ class YamlReader {
   std::string file_;
 };
 
+// One mapping of a file read field by field, for entries with many fields (a catalogue object, a
+// config section). Messages name the field as "<entry>.<key>" ("objects.coffee_mug.radius").
+class YamlMapping {
+ public:
+  // `node` must be a mapping (else InputError at its line).
+  YamlMapping(const YamlReader& reader, std::string entry, YAML::Node node);
+
+  const std::string& entry() const { return entry_; }
+  const YAML::Node& node() const { return node_; }
+  const YamlReader& reader() const { return reader_; }
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& problem) const {
+    reader_.fail(at.IsDefined() ? at : node_, problem);
+  }
+
+  bool has(const std::string& key) const;
+  // The value under `key`; a missing key is an error at the mapping.
+  YAML::Node required(const std::string& key) const;
+  // Rejects keys not in `allowed`.
+  void only_keys(const std::vector<std::string>& allowed) const;
+
+  double number(const std::string& key, const NumberRange& range = {}) const;
+  double number_or(const std::string& key, double fallback, const NumberRange& range = {}) const;
+  std::string name(const std::string& key) const;
+  bool boolean_or(const std::string& key, bool fallback) const;
+  std::vector<double> numbers(const std::string& key, std::size_t count) const;
+
+ private:
+  std::string field(const std::string& key) const { return entry_ + "." + key; }
+
+  const YamlReader& reader_;
+  std::string entry_;
+  YAML::Node node_;
+};
+
 // Runs `read()`, turning a yaml-cpp exception it lets through (a node shape the checks did not
 // anticipate) into InputError(file, line, "unexpected YAML structure: ...").
 template <class Read>

@@ -144,6 +144,39 @@ TEST(YamlReader, FilesThatCannotBeReadAreNamed) {
   std::remove(path.c_str());
 }
 
+TEST(YamlMapping, ReadsFieldsAndNamesThemEntryDotKey) {
+  const std::string text =
+      "objects:\n"                 // line 1
+      "  mug:\n"                   // line 2
+      "    radius: 0.04\n"         // line 3
+      "    closed: yes\n"          // line 4
+      "    position: [1, 2, 3]\n"  // line 5
+      "    mass: -1\n";            // line 6
+  const YAML::Node root = parse_yaml(text, "cat.yaml");
+  const YamlReader r("cat.yaml");
+  const YamlMapping mug(r, "objects.mug", root["objects"]["mug"]);
+  EXPECT_DOUBLE_EQ(mug.number("radius", NumberRange::above(0)), 0.04);
+  EXPECT_DOUBLE_EQ(mug.number_or("friction", 0.4), 0.4);
+  EXPECT_TRUE(mug.boolean_or("closed", false));
+  EXPECT_FALSE(mug.boolean_or("hollow", false));
+  EXPECT_EQ(mug.numbers("position", 3), (std::vector<double>{1, 2, 3}));
+  EXPECT_TRUE(mug.has("mass"));
+  EXPECT_FALSE(mug.has("material"));
+
+  InputError e = error_of([&] { mug.number("mass", NumberRange::above(0)); });
+  EXPECT_EQ(e.line(), 6);
+  EXPECT_TRUE(has(e, "objects.mug.mass must be > 0, got -1")) << e.what();
+  e = error_of([&] { mug.name("material"); });
+  EXPECT_EQ(e.line(), 3);  // a missing key points at the mapping, which starts at its first key
+  EXPECT_TRUE(has(e, "missing key 'material' in objects.mug")) << e.what();
+  e = error_of([&] { mug.only_keys({"radius", "closed", "position"}); });
+  EXPECT_EQ(e.line(), 6);
+  EXPECT_TRUE(has(e, "unknown key 'mass' in objects.mug")) << e.what();
+  e = error_of([&] { YamlMapping(r, "objects.mug.radius", root["objects"]["mug"]["radius"]); });
+  EXPECT_EQ(e.line(), 3);
+  EXPECT_TRUE(has(e, "objects.mug.radius must be a mapping")) << e.what();
+}
+
 TEST(NumberRange, DescribesAndContainsItsBounds) {
   EXPECT_EQ(NumberRange::open(0, 1).describe(), "in (0, 1)");
   EXPECT_EQ(NumberRange::closed(0, 1).describe(), "in [0, 1]");
