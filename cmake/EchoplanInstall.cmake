@@ -25,9 +25,12 @@ foreach(folder IN LISTS ECHOPLAN_SHIPPED_DATA)
 endforeach()
 
 set(ECHOPLAN_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/echoplan)
+get_property(ECHOPLAN_EXPORTED_MODULES GLOBAL PROPERTY ECHOPLAN_EXPORTED_MODULES)
 install(EXPORT echoplanTargets NAMESPACE echoplan:: DESTINATION ${ECHOPLAN_CMAKE_DIR})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/echoplanConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/echoplanConfig.cmake INSTALL_DESTINATION ${ECHOPLAN_CMAKE_DIR})
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/echoplanConfigVersion.cmake COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/echoplanConfig.cmake ${PROJECT_BINARY_DIR}/echoplanConfigVersion.cmake
         DESTINATION ${ECHOPLAN_CMAKE_DIR})
+install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})

@@ -26,6 +26,7 @@ echo "check-install: building tests/install against the installed package"
 cmake -S "$here/tests/install" -B "$prefix/consumer" -DCMAKE_PREFIX_PATH="$prefix/usr" \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$prefix/consumer" >/dev/null
+"$prefix/consumer/link_every_module"
 "$prefix/consumer/consumer" "$prefix/usr/share/echoplan/problems/tiger.pomdp"
 
 # The installed binary finds its shipped data relative to itself, also after the prefix moves, and
