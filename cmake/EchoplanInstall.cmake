@@ -6,12 +6,19 @@
 #
 # Layout under the prefix:
 #   bin/echoplan
-#   share/echoplan/{problems,objects}/   found by the binary relative to itself (common/data_dir.h)
+#   share/echoplan/{problems,objects,...}/   found by the binary relative to itself (common/data_dir.h)
 #   include/echoplan/<module>/*.h        included as "pomdp/model.h", as inside this repository
 #   lib/libechoplan_<module>.a, lib/cmake/echoplan/
 include(CMakePackageConfigHelpers)
 
-set(ECHOPLAN_SHIPPED_DATA problems objects)
+# The data folders shipped with echoplan (found at run time through common/data_dir.h). A new folder of
+# shipped files is added here; one that does not exist (yet) is skipped.
+set(ECHOPLAN_SHIPPED_DATA)
+foreach(folder problems objects experiments)
+  if(IS_DIRECTORY ${PROJECT_SOURCE_DIR}/${folder})
+    list(APPEND ECHOPLAN_SHIPPED_DATA ${folder})
+  endif()
+endforeach()
 install(TARGETS echoplan RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 foreach(folder IN LISTS ECHOPLAN_SHIPPED_DATA)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder} DESTINATION ${CMAKE_INSTALL_DATADIR}/echoplan)

@@ -1,4 +1,5 @@
-// Where the files shipped with echoplan (problems/, objects/) are at run time.
+// Where the files shipped with echoplan (problems/, objects/, ...: the folders listed in
+// cmake/EchoplanInstall.cmake) are at run time.
 //
 // Never a path compiled in from the source tree: the binary looks relative to itself, so an
 // installed or moved tree keeps working. In order:
