@@ -45,8 +45,12 @@ StopSignal::StopSignal() {
   sigemptyset(&action.sa_mask);
   // SA_RESTART: a blocking read or write in the work is resumed, not failed with EINTR.
   action.sa_flags = SA_RESTART;
-  sigaction(SIGINT, &action, &previous_int);
-  sigaction(SIGTERM, &action, &previous_term);
+  // A signal the process was started ignoring stays ignored: a shell starts background jobs with
+  // SIGINT ignored, so a Ctrl-C meant for the foreground job does not stop them.
+  sigaction(SIGINT, nullptr, &previous_int);
+  sigaction(SIGTERM, nullptr, &previous_term);
+  if (previous_int.sa_handler != SIG_IGN) sigaction(SIGINT, &action, nullptr);
+  if (previous_term.sa_handler != SIG_IGN) sigaction(SIGTERM, &action, nullptr);
   installed = true;
 }
 

@@ -10,7 +10,8 @@
 // The first signal only sets the flag (and says on stderr that the run is stopping), so the work
 // finishes the unit in progress (a step, a clip) and every file on disk stays complete. A second
 // signal ends the process at once with status 128 + signal (130 for Ctrl-C), for when the unit in
-// progress takes too long. Leaving the scope restores the previous handlers.
+// progress takes too long. Leaving the scope restores the previous handlers. A signal that was
+// ignored when the scope began (a shell's background job ignores SIGINT) stays ignored.
 //
 // Libraries take `const std::atomic<bool>&` (or a pointer) and never install handlers themselves,
 // so they stay usable from programs with their own signal handling.

@@ -3,8 +3,10 @@
 # finished, writes its summary and exits 130. Usage: interrupt_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
 . "$(dirname "$0")/cli_test_lib.sh"
 
-# Far more trials than can finish before the signal arrives.
-"$bin" trials --problem "$src/problems/tiger.pomdp" --solver pomcp --trials 100000 --episodes 200 --seed 1 \
+# Far more trials than can finish before the signal arrives. A shell starts background jobs with SIGINT
+# ignored (and echoplan keeps it so); env gives this one the default disposition, as a terminal's
+# foreground job has.
+env --default-signal=INT "$bin" trials --problem "$src/problems/tiger.pomdp" --solver pomcp --trials 100000 --episodes 200 --seed 1 \
   --out "$work/run" >"$work/out" 2>"$work/err" &
 pid=$!
 # Wait (up to 60 s) until at least one trial is on disk: header plus one row.

@@ -38,12 +38,38 @@ TEST(StopSignal, OnlyOneAtATime) {
   EXPECT_THROW(StopSignal{}, std::logic_error);
 }
 
+// A handler of the program's own, not the default: leaving the scope must put it back.
+extern "C" void own_handler(int) {}
+
 TEST(StopSignal, LeavingTheScopeRestoresThePreviousHandler) {
+  struct sigaction own {};
+  own.sa_handler = own_handler;
+  struct sigaction before {};
+  sigaction(SIGINT, &own, &before);
+  {
+    const StopSignal stop;
+    struct sigaction during {};
+    sigaction(SIGINT, nullptr, &during);
+    EXPECT_NE(during.sa_handler, own_handler);
+  }
+  struct sigaction after {};
+  sigaction(SIGINT, nullptr, &after);
+  EXPECT_EQ(after.sa_handler, own_handler);
+  sigaction(SIGINT, &before, nullptr);
+}
+
+TEST(StopSignal, ASignalIgnoredOnEntryStaysIgnored) {
   struct sigaction ignore {};
   ignore.sa_handler = SIG_IGN;
   struct sigaction before {};
   sigaction(SIGINT, &ignore, &before);
-  { const StopSignal stop; }
+  {
+    const StopSignal stop;
+    ASSERT_EQ(::raise(SIGINT), 0);
+    EXPECT_FALSE(stop.requested());
+    ASSERT_EQ(::raise(SIGTERM), 0);  // not ignored: stops as usual
+    EXPECT_TRUE(stop.requested());
+  }
   struct sigaction after {};
   sigaction(SIGINT, nullptr, &after);
   EXPECT_EQ(after.sa_handler, SIG_IGN);
