@@ -7,6 +7,10 @@
 //   const double discount = r.number(r.require(root, "discount", "the problem"), "discount",
 //                                    NumberRange::open(0.0, 1.0));
 //
+//   const YamlMapping mug(r, "objects.coffee_mug", root["objects"]["coffee_mug"]);  // many fields
+//   const double radius = mug.number("radius", NumberRange::above(0));   //
+//   "objects.coffee_mug.radius"
+//
 // `what` arguments name the field as the user wrote it ("planner.depth", "objects.coffee_mug"); the
 // message then says what was expected ("must be a number like 0.5"). Loaders wrap their reading in
 // read_yaml_guarded() so no yaml-cpp exception (a node shape nobody anticipated) reaches the user.
