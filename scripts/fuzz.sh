@@ -2,6 +2,7 @@
 # Build a libFuzzer target with clang and run it for a bounded time, seeded with the shipped inputs:
 #   audio_decode_fuzz   audio decoding + feature extraction (seeds: the reference audio inputs)
 #   problem_file_fuzz   problem files, YAML and Cassandra .pomdp (seeds: problems/)
+#   sim_files_fuzz      the object catalogue and simulator configuration (seeds: objects/)
 # Usage: scripts/fuzz.sh [seconds=120] [target=audio_decode_fuzz]
 # Findings (crash-*, timeout-*, oom-* files) land in build-fuzz/findings/<target>/; the growing corpus in
 # build-fuzz/corpus/<target>/.
@@ -20,7 +21,8 @@ mkdir -p "$corpus" "$findings"
 case "$target" in
   audio_decode_fuzz) seeds=("$root"/tests/data/reference/audio/inputs/*) ;;
   problem_file_fuzz) seeds=("$root"/problems/*) ;;
-  *) echo "fuzz.sh: unknown target '$target' (audio_decode_fuzz or problem_file_fuzz)" >&2; exit 2 ;;
+  sim_files_fuzz) seeds=("$root"/objects/*) ;;
+  *) echo "fuzz.sh: unknown target '$target' (audio_decode_fuzz, problem_file_fuzz or sim_files_fuzz)" >&2; exit 2 ;;
 esac
 cp -n "${seeds[@]}" "$corpus/" 2>/dev/null || true
 # One worker; inputs up to 4 KiB keep runs fast (~150/s; larger seeds are read truncated, which exercises the
