@@ -119,8 +119,9 @@ class YamlMapping {
   const std::string& entry() const { return entry_; }
   const YAML::Node& node() const { return node_; }
   const YamlReader& reader() const { return reader_; }
+  // InputError "<entry>: <problem>" at `at` (at the mapping when `at` is undefined).
   [[noreturn]] void fail(const YAML::Node& at, const std::string& problem) const {
-    reader_.fail(at.IsDefined() ? at : node_, problem);
+    reader_.fail(at.IsDefined() ? at : node_, entry_ + ": " + problem);
   }
 
   bool has(const std::string& key) const;

@@ -172,6 +172,11 @@ TEST(YamlMapping, ReadsFieldsAndNamesThemEntryDotKey) {
   e = error_of([&] { mug.only_keys({"radius", "closed", "position"}); });
   EXPECT_EQ(e.line(), 6);
   EXPECT_TRUE(has(e, "unknown key 'mass' in objects.mug")) << e.what();
+  e = error_of([&] { mug.fail(mug.node()["closed"], "unknown shape 'cube'"); });
+  EXPECT_EQ(e.line(), 4);
+  EXPECT_EQ(e.problem(), "objects.mug: unknown shape 'cube'");
+  e = error_of([&] { mug.fail(mug.node()["nothing"], "no material"); });
+  EXPECT_EQ(e.line(), 3);
   e = error_of([&] { YamlMapping(r, "objects.mug.radius", root["objects"]["mug"]["radius"]); });
   EXPECT_EQ(e.line(), 3);
   EXPECT_TRUE(has(e, "objects.mug.radius must be a mapping")) << e.what();
