@@ -29,6 +29,7 @@ packages=(
   gnuplot-nox
   clang libclang-rt-14-dev   # scripts/fuzz.sh (libFuzzer)
   clang-format-14            # scripts/check-format.sh
+  python3-numpy python3-scipy python3-soundfile   # bench/sim_realism.py (with /usr/bin/python3)
 )
 
 install_deps() {

@@ -9,9 +9,8 @@
 
 #include "audio/io.h"
 #include "common/error.h"
-#include "sim/simulated_recorder.h"
-
 #include "shipped_catalogue.h"
+#include "sim/simulated_recorder.h"
 
 namespace echoplan::sim {
 namespace {
@@ -40,18 +39,21 @@ TEST(Dataset, WritesEveryPairAndAManifestThatReproducesEachFile) {
   options.output_dir = dir.string();
   std::atomic<bool> stop{false};
   int calls = 0;
-  const DatasetSummary s = write_dataset(shipped_catalogue(), SimConfig{}, options,
-                                         [&](int done, int total, const std::string&) {
-                                           ++calls;
-                                           EXPECT_EQ(total, 8);
-                                           EXPECT_EQ(done, calls);
-                                         },
-                                         stop);
+  const DatasetSummary s = write_dataset(
+      shipped_catalogue(), SimConfig{}, options,
+      [&](int done, int total, const std::string&) {
+        ++calls;
+        EXPECT_EQ(total, 8);
+        EXPECT_EQ(done, calls);
+      },
+      stop);
   EXPECT_EQ(s.written, 8);
   EXPECT_FALSE(s.interrupted);
   const auto rows = lines_of(dir / "manifest.csv");
   ASSERT_EQ(rows.size(), 9u);
-  EXPECT_EQ(rows[0].rfind("file,object,action,seed,collision,duration_s,impacts,impact_speed,", 0), 0u) << rows[0];
+  EXPECT_EQ(rows[0].rfind("file,object,action,seed,collision,duration_s,impacts,impact_speed,", 0),
+            0u)
+      << rows[0];
   EXPECT_TRUE(fs::exists(dir / "plastic_cup/strike/001.wav"));
   EXPECT_TRUE(fs::exists(dir / "coffee_mug/slide/000.wav"));
 
@@ -83,16 +85,49 @@ TEST(Dataset, StoppingKeepsFinishedFilesAndTheirRows) {
   options.actions = {"strike"};
   options.per_pair = 5;
   options.output_dir = dir.string();
+  options.threads = 1;  // one clip in progress at a time: stopping after the 2nd leaves exactly 2
   std::atomic<bool> stop{false};
-  const DatasetSummary s =
-      write_dataset(shipped_catalogue(), SimConfig{}, options, [&](int done, int, const std::string&) { stop = done == 2; }, stop);
+  const DatasetSummary s = write_dataset(
+      shipped_catalogue(), SimConfig{}, options,
+      [&](int done, int, const std::string&) { stop = done == 2; }, stop);
   EXPECT_TRUE(s.interrupted);
   EXPECT_EQ(s.written, 2);
   EXPECT_EQ(lines_of(dir / "manifest.csv").size(), 3u);
   EXPECT_TRUE(fs::exists(dir / "paper_base/strike/001.wav"));
   EXPECT_FALSE(fs::exists(dir / "paper_base/strike/002.wav"));
-  for (const auto& entry : fs::recursive_directory_iterator(dir)) EXPECT_NE(entry.path().extension(), ".part");
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    EXPECT_NE(entry.path().extension(), ".part");
   fs::remove_all(dir);
+}
+
+TEST(Dataset, TwoThreadsWriteTheSameFilesAsOne) {
+  std::vector<std::string> manifests;
+  std::vector<std::string> first_files;
+  for (int threads : {1, 2}) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("echoplan_dataset_threads_" + std::to_string(threads));
+    fs::remove_all(dir);
+    DatasetOptions options;
+    options.objects = {"plastic_cup", "coffee_mug"};
+    options.actions = {"strike"};
+    options.per_pair = 2;
+    options.output_dir = dir.string();
+    options.threads = threads;
+    std::atomic<bool> stop{false};
+    EXPECT_EQ(write_dataset(shipped_catalogue(), SimConfig{}, options, nullptr, stop).written, 4);
+    std::ifstream in(dir / "manifest.csv");
+    manifests.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    std::string bytes;
+    for (const char* f : {"plastic_cup/strike/000.wav", "coffee_mug/strike/001.wav"}) {
+      std::ifstream wav(dir / f, std::ios::binary);
+      bytes += std::string(std::istreambuf_iterator<char>(wav), std::istreambuf_iterator<char>());
+    }
+    first_files.push_back(bytes);
+    fs::remove_all(dir);
+  }
+  EXPECT_EQ(manifests[0], manifests[1]);
+  EXPECT_EQ(first_files[0], first_files[1]);
+  EXPECT_FALSE(first_files[0].empty());
 }
 
 TEST(Dataset, UnknownNamesFailBeforeAnyFileIsWritten) {

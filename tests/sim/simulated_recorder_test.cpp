@@ -13,24 +13,40 @@
 
 #include "audio/features.h"
 #include "audio/io.h"
-
 #include "shipped_catalogue.h"
 
 namespace echoplan::sim {
 namespace {
 
-// A config with no background noise and no reverberation, so spectra show the modes alone.
+// A config with no background or motor noise, no reverberation, no lead-in, no
+// recording-to-recording variation and the limiter out of reach (low gain, 0 dBFS ceiling), so
+// spectra show the modes alone.
 SimConfig quiet() {
   SimConfig c;
   c.recording.noise_dbfs = -200;
+  c.recording.motor_noise_gain = 0;
+  c.recording.lead_in_s = 0;
+  c.recording.output_gain = 25;
+  c.recording.limiter_ceiling_dbfs = 0;
+  c.variability.microphone_distance.spread = 0;
+  c.variability.background_db.spread = 0;
   c.room.reverb_level = 0;
+  return c;
+}
+
+// The shipped catalogue with the table's dense modes and the contact loss taken out, so an object's
+// own modes ring alone and as sharp as their own damping makes them.
+Catalogue bare_table_catalogue() {
+  Catalogue c = shipped_catalogue();
+  c.table.dense.count = 0;
+  c.table.contact_loss_factor = 0;
   return c;
 }
 
 // Magnitude spectrum of `count` frames of `channel` from `start`, Hann-windowed, zero-padded to a
 // power of two >= 4 * count (bins of rate / nfft Hz).
-std::vector<double> spectrum(const audio::AudioClip& clip, int channel, std::size_t start, std::size_t count,
-                             double* bin_hz) {
+std::vector<double> spectrum(const audio::AudioClip& clip, int channel, std::size_t start,
+                             std::size_t count, double* bin_hz) {
   std::size_t nfft = 1;
   while (nfft < 4 * count) nfft *= 2;
   std::vector<float> x(nfft, 0.0f);
@@ -49,15 +65,16 @@ std::vector<double> spectrum(const audio::AudioClip& clip, int channel, std::siz
 }
 
 // The nominal trial with a small tilt, so the rim lands first and every ring mode is excited.
-TrialParameters nominal() {
-  TrialParameters p = nominal_trial();
+ActionVariation nominal() {
+  ActionVariation p = nominal_trial();
   p.impact_tilt_deg = 3;
   return p;
 }
 
 TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
-  // An object with listed modes; the peak nearest each must sit on it, far above the spectrum floor.
-  Catalogue c = shipped_catalogue();
+  // An object with listed modes; the peak nearest each must sit on it, far above the spectrum
+  // floor.
+  Catalogue c = bare_table_catalogue();
   ObjectSpec bell = c.object("coffee_mug");
   bell.listed_modes = {{900, 1.0, 8.0}, {2300, 1.0, 8.0}, {4100, 1.0, 8.0}};
   c.objects["bell"] = bell;
@@ -78,7 +95,8 @@ TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
     // Search +-100 Hz around the mode. A decay of 8/s makes a peak with a half-power half-width of
     // 8/(2 pi) = 1.3 Hz; the rim hit and the flat landing that follows interfere within it, so the
     // maximum lies within 1 Hz of the mode.
-    const auto lo = static_cast<std::size_t>((f - 100) / bin), hi = static_cast<std::size_t>((f + 100) / bin);
+    const auto lo = static_cast<std::size_t>((f - 100) / bin),
+               hi = static_cast<std::size_t>((f + 100) / bin);
     const auto peak = std::max_element(mag.begin() + lo, mag.begin() + hi) - mag.begin();
     EXPECT_NEAR(peak * bin, f, 1.0) << f;
     EXPECT_GT(mag[peak], 100 * floor) << f;  // 40 dB above the median level
@@ -87,7 +105,8 @@ TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
 
 TEST(SimulatedRecorder, DerivedModesOfTheMugAppearInItsStrike) {
   const SimConfig config = quiet();
-  SimulatedRobot robot(shipped_catalogue(), "coffee_mug", config);
+  const Catalogue catalogue = bare_table_catalogue();
+  SimulatedRobot robot(catalogue, "coffee_mug", config);
   SimulatedRecorder recorder(robot.object(), robot.table(), config);
   const ActionOutcome out = robot.execute("strike", nominal());
   Rng rng(3);
@@ -98,10 +117,14 @@ TEST(SimulatedRecorder, DerivedModesOfTheMugAppearInItsStrike) {
   int checked = 0;
   for (const Mode& m : recorder.object_modes()) {
     if (m.frequency_hz > 8000) continue;  // beyond the Hertz pulse's reach at this contact time
-    const auto lo = static_cast<std::size_t>((m.frequency_hz - 50) / bin), hi = static_cast<std::size_t>((m.frequency_hz + 50) / bin);
+    const auto lo = static_cast<std::size_t>((m.frequency_hz - 50) / bin),
+               hi = static_cast<std::size_t>((m.frequency_hz + 50) / bin);
     const auto peak = std::max_element(mag.begin() + lo, mag.begin() + hi) - mag.begin();
-    // Faster decay (tens per second) widens the peak: within 1 Hz.
-    EXPECT_NEAR(peak * bin, m.frequency_hz, 1.0) << m.frequency_hz;
+    // A decay of sigma per second widens the peak to a half-power half-width of sigma / (2 pi), and
+    // the impact pulse's sloping spectrum pulls the maximum within that width: at most the
+    // half-width (and 1 Hz, the resolution this spectrum is read at).
+    EXPECT_NEAR(peak * bin, m.frequency_hz, std::max(1.0, m.decay_per_s / (2 * std::numbers::pi)))
+        << m.frequency_hz;
     ++checked;
   }
   EXPECT_GE(checked, 2);
@@ -126,15 +149,19 @@ TEST(SimulatedRecorder, HeavierObjectSoundsDuller) {
   SimConfig config = quiet();
   config.recording.friction_gain = 0;
   double share[2];
+  // The contact pulse's radiated spectrum peaks near 0.68 / tau: about 650 Hz for the mug; a longer
+  // contact moves energy from above that to below it.
+  constexpr double kCut = 800;
   const char* names[2] = {"coffee_mug", "coffee_mug_weighted"};
   for (int i = 0; i < 2; ++i) {
     SimulatedRobot robot(shipped_catalogue(), names[i], config);
     SimulatedRecorder recorder(robot.object(), robot.table(), config);
     const ActionOutcome out = robot.execute("strike", nominal());
     Rng rng(11);
-    share[i] = high_frequency_share(recorder.record(out, rng), out.trace.impacts.front().time_s, 1500);
+    share[i] =
+        high_frequency_share(recorder.record(out, rng), out.trace.impacts.front().time_s, kCut);
   }
-  // Same modes, longer contact: measurably less of the energy above 1.5 kHz (at least 10% less).
+  // Longer contact: measurably less of the energy above the cut (at least 10% less).
   EXPECT_LT(share[1], share[0] * 0.9) << share[0] << " " << share[1];
 }
 
@@ -151,7 +178,8 @@ TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
   // Expected: each capsule hears the source (0.02 m above the object's base) at its own distance.
   double distance[2];
   for (int ch = 0; ch < 2; ++ch) {
-    const double dy = config.microphone.position[1] + (ch == 0 ? 0.1 : -0.1) - out.trace.object_position[1];
+    const double dy =
+        config.microphone.position[1] + (ch == 0 ? 0.1 : -0.1) - out.trace.object_position[1];
     const double dx = config.microphone.position[0] - out.trace.object_position[0];
     const double dz = config.microphone.position[2] - out.trace.object_position[2] - 0.02;
     distance[ch] = std::sqrt(dx * dx + dy * dy + dz * dz);
@@ -164,7 +192,8 @@ TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
   const long n = static_cast<long>(clip.frames());
   for (long lag = -40; lag <= 40; ++lag) {
     double sum = 0;
-    for (long i = 100; i < n - 100; ++i) sum += clip.samples[2 * (i + lag)] * clip.samples[2 * i + 1];
+    for (long i = 100; i < n - 100; ++i)
+      sum += clip.samples[2 * (i + lag)] * clip.samples[2 * i + 1];
     if (sum > best) {
       best = sum;
       best_lag = lag;
@@ -176,22 +205,30 @@ TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
   // (to float rounding, 1e-4).
   double energy[2] = {0, 0};
   for (std::size_t i = 0; i < clip.frames(); ++i)
-    for (int ch = 0; ch < 2; ++ch) energy[ch] += clip.samples[2 * i + ch] * clip.samples[2 * i + ch];
+    for (int ch = 0; ch < 2; ++ch)
+      energy[ch] += clip.samples[2 * i + ch] * clip.samples[2 * i + ch];
   EXPECT_NEAR(std::sqrt(energy[0] / energy[1]), distance[1] / distance[0], 1e-4);
 }
 
 TEST(SimulatedRecorder, BackgroundNoiseHasTheConfiguredLevel) {
   SimConfig config;
   config.recording.noise_dbfs = -40;
-  SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table, config);
+  config.variability.background_db.spread = 0;
+  SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
+                             config);
   ActionOutcome silent;  // no contacts at all
   Rng rng(9);
   const audio::AudioClip clip = recorder.record(silent, rng);
-  EXPECT_NEAR(clip.duration_seconds(), 3.0, 1e-9);
+  // The recorder's opening (exact zeros), then the 3 s recording.
+  EXPECT_NEAR(clip.duration_seconds(), config.recording.lead_in_s + 3.0, 1e-4);
+  const std::size_t lead =
+      static_cast<std::size_t>(std::lround(config.recording.lead_in_s * clip.sample_rate));
+  for (std::size_t i = 0; i < 2 * lead; ++i) ASSERT_EQ(clip.samples[i], 0.0f) << i;
   double energy = 0;
-  for (float s : clip.samples) energy += s * s;
+  for (std::size_t i = 2 * lead; i < clip.samples.size(); ++i)
+    energy += clip.samples[i] * clip.samples[i];
   // 264600 samples: the RMS estimate's relative standard error is ~0.2%; 2% bound.
-  EXPECT_NEAR(std::sqrt(energy / clip.samples.size()), 0.01, 0.0002);
+  EXPECT_NEAR(std::sqrt(energy / (clip.samples.size() - 2 * lead)), 0.01, 0.0002);
 }
 
 std::string file_bytes(const std::string& path) {
@@ -217,57 +254,21 @@ TEST(SimulatedRecorder, SameSeedGivesIdenticalFiles) {
   std::filesystem::remove_all(dir);
 }
 
-// The seed's observation feature: the MFCC matrix (frames x coefficients) of the whole clip, channels
-// averaged, flattened (every clip here is 3 s long, so the vectors have equal length).
-std::vector<double> mfcc_features(const audio::AudioClip& clip, audio::FeatureExtractor& extractor) {
-  std::vector<float> mono(clip.frames());
-  for (std::size_t i = 0; i < clip.frames(); ++i) mono[i] = 0.5f * (clip.samples[2 * i] + clip.samples[2 * i + 1]);
-  audio::Features features;
-  extractor.compute(mono, features);
-  return {features.mfcc.values.begin(), features.mfcc.values.end()};
-}
-
-TEST(SimulatedRecorder, NearestCentroidTellsTheFourObjectsApart) {
-  // Sanity check, not the classifier: 6 training and 4 test recordings per (object, action) with the
-  // default variability; a nearest-centroid on MFCC (librosa preset) must beat chance (25%) by far.
+TEST(SimulatedRecorder, LoudnessIsNotAnObjectCue) {
+  // The lab's four strikes peak within 0.3 dB of each other at -3 dBFS: the recorder's limiter, not
+  // the object, sets a strike's peak. (This replaces a test that nearest-centroid on MFCC tells the
+  // four simulated objects apart: the lab's objects were not that easy to tell apart, and the
+  // simulator no longer makes them so.)
   const SimConfig config;
-  audio::FeatureExtractor extractor(audio::librosa_preset(config.recording.sample_rate));
-  const std::vector<std::string> objects{"pringles_can", "coffee_mug", "plastic_cup", "paper_base"};
-  int correct = 0, total = 0;
-  for (const char* action : {"slide", "strike"}) {
-    std::map<std::string, std::vector<std::vector<double>>> train, test;
-    for (const auto& name : objects) {
-      SimulatedRobot robot(shipped_catalogue(), name, config);
-      SimulatedRecorder recorder(robot.object(), robot.table(), config);
-      for (int i = 0; i < 10; ++i) {
-        Rng rng(derive_seed(2024, {static_cast<std::uint64_t>(i), name.size(), static_cast<std::uint64_t>(action[1])}));
-        const auto features = mfcc_features(simulate_recording(robot, recorder, action, rng).clip, extractor);
-        (i < 6 ? train : test)[name].push_back(features);
-      }
-    }
-    std::map<std::string, std::vector<double>> centroid;
-    for (const auto& [name, rows] : train) {
-      centroid[name].assign(rows[0].size(), 0.0);
-      for (const auto& r : rows)
-        for (std::size_t k = 0; k < r.size(); ++k) centroid[name][k] += r[k] / rows.size();
-    }
-    for (const auto& [truth, rows] : test)
-      for (const auto& r : rows) {
-        std::string best;
-        double best_d = INFINITY;
-        for (const auto& [name, c] : centroid) {
-          double d = 0;
-          for (std::size_t k = 0; k < r.size(); ++k) d += (r[k] - c[k]) * (r[k] - c[k]);
-          if (d < best_d) {
-            best_d = d;
-            best = name;
-          }
-        }
-        correct += best == truth;
-        ++total;
-      }
+  for (const char* name : {"pringles_can", "coffee_mug", "plastic_cup", "paper_base"}) {
+    SimulatedRobot robot(shipped_catalogue(), name, config);
+    SimulatedRecorder recorder(robot.object(), robot.table(), config);
+    Rng rng(5);
+    const audio::AudioClip clip = simulate_recording(robot, recorder, "strike", rng).clip;
+    float peak = 0;
+    for (float x : clip.samples) peak = std::max(peak, std::abs(x));
+    EXPECT_NEAR(20 * std::log10(peak), config.recording.limiter_ceiling_dbfs, 0.3) << name;
   }
-  EXPECT_GE(static_cast<double>(correct) / total, 0.75) << correct << "/" << total;
 }
 
 }  // namespace
