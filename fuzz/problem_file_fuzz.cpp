@@ -1,7 +1,7 @@
-// libFuzzer target: arbitrary bytes as a problem file, through the YAML reader (common/yaml_reader.h,
-// pomdp/problem_yaml.cpp) and the Cassandra .pomdp reader; a problem that loads is also checked.
-// Bad input must end in echoplan::InputError; anything else (a crash, a sanitizer report, another
-// exception, a hang) is a bug.
+// libFuzzer target: arbitrary bytes as a problem file, through the YAML reader
+// (common/yaml_reader.h, pomdp/problem_yaml.cpp) and the Cassandra .pomdp reader; a problem that
+// loads is also checked. Bad input must end in echoplan::InputError; anything else (a crash, a
+// sanitizer report, another exception, a hang) is a bug.
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -1,6 +1,6 @@
-// libFuzzer target: arbitrary bytes as an object catalogue and as a simulator configuration, through
-// the YAML reader (common/yaml_reader.h). Bad input must end in echoplan::InputError; anything else (a
-// crash, a sanitizer report, another exception, a hang) is a bug.
+// libFuzzer target: arbitrary bytes as an object catalogue and as a simulator configuration,
+// through the YAML reader (common/yaml_reader.h). Bad input must end in echoplan::InputError;
+// anything else (a crash, a sanitizer report, another exception, a hang) is a bug.
 #include <cstddef>
 #include <cstdint>
 #include <string>
