@@ -2,14 +2,16 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 #include <set>
 #include <sstream>
 
+#include "common/data_dir.h"
 #include "common/error.h"
-#include "sim/yaml_file.h"
+#include "common/yaml_reader.h"
 
 namespace echoplan::sim {
 
@@ -90,201 +92,133 @@ std::vector<std::string> Catalogue::object_names() const {
 
 namespace {
 
-// Reads fields of one YAML mapping, turning every problem into an InputError that names the file,
-// the line of the offending node and the entry ("objects.coffee_mug") it belongs to.
-class EntryReader {
- public:
-  EntryReader(const std::string& source, std::string entry, const YAML::Node& node)
-      : source_(source), entry_(std::move(entry)), node_(node) {
-    if (!node_.IsMap()) fail(node_, "must be a mapping of fields");
-  }
-
-  [[noreturn]] void fail(const YAML::Node& at, const std::string& problem) const {
-    const int line = at.IsDefined() ? at.Mark().line + 1 : node_.Mark().line + 1;
-    throw InputError(source_, line, entry_ + ": " + problem);
-  }
-
-  bool has(const std::string& key) const { return static_cast<bool>(node_[key]); }
-  YAML::Node child(const std::string& key) const { return node_[key]; }
-
-  YAML::Node required(const std::string& key) const {
-    YAML::Node v = node_[key];
-    if (!v) fail(node_, "missing field '" + key + "'");
-    return v;
-  }
-
-  double number(const YAML::Node& v, const std::string& key) const {
-    try {
-      return v.as<double>();
-    } catch (const YAML::Exception&) {
-      fail(v, "field '" + key + "' must be a number");
-    }
-  }
-
-  // A required number with lower bound `low` (strict if `strict`) and optional upper bound.
-  double number(const std::string& key, double low, bool strict, double high = INFINITY) const {
-    return checked(required(key), key, low, strict, high);
-  }
-  double number_or(const std::string& key, double fallback, double low, bool strict,
-                   double high = INFINITY) const {
-    return has(key) ? checked(node_[key], key, low, strict, high) : fallback;
-  }
-
-  double checked(const YAML::Node& v, const std::string& key, double low, bool strict,
-                 double high) const {
-    const double x = number(v, key);
-    if (!std::isfinite(x) || (strict ? x <= low : x < low) || x >= high) {
-      std::ostringstream msg;
-      msg << "field '" << key << "' = " << x << " must be " << (strict ? "> " : ">= ") << low;
-      if (std::isfinite(high)) msg << " and < " << high;
-      fail(v, msg.str());
-    }
-    return x;
-  }
-
-  std::string text(const std::string& key) const {
-    YAML::Node v = required(key);
-    if (!v.IsScalar()) fail(v, "field '" + key + "' must be a name");
-    return v.as<std::string>();
-  }
-
-  bool flag_or(const std::string& key, bool fallback) const {
-    if (!has(key)) return fallback;
-    try {
-      return node_[key].as<bool>();
-    } catch (const YAML::Exception&) {
-      fail(node_[key], "field '" + key + "' must be true or false");
-    }
-  }
-
-  const std::string& entry() const { return entry_; }
-
- private:
-  const std::string& source_;
-  std::string entry_;
-  YAML::Node node_;
-};
-
-Material read_material(const std::string& source, const std::string& name, const YAML::Node& node) {
-  EntryReader r(source, "materials." + name, node);
+Material read_material(const YamlReader& f, const std::string& name, const YAML::Node& node) {
+  const YamlMapping r(f, "materials." + name, node);
   Material m;
   m.name = name;
-  m.density = r.number("density", 0, true);
-  m.youngs_modulus = r.number("youngs_modulus", 0, true);
-  m.poisson_ratio = r.number("poisson_ratio", 0, false, 0.5);
-  m.alpha = r.number("alpha", 0, false);
-  m.beta = r.number("beta", 0, false);
+  m.density = r.number("density", NumberRange::above(0));
+  m.youngs_modulus = r.number("youngs_modulus", NumberRange::above(0));
+  m.poisson_ratio = r.number("poisson_ratio", NumberRange::at_least(0).below(0.5));
+  m.alpha = r.number("alpha", NumberRange::at_least(0));
+  m.beta = r.number("beta", NumberRange::at_least(0));
   return m;
 }
 
-std::vector<ListedMode> read_modes(const std::string& source, const std::string& entry,
+std::vector<ListedMode> read_modes(const YamlReader& f, const std::string& entry,
                                    const YAML::Node& node) {
-  if (!node.IsSequence())
-    throw InputError(source, node.Mark().line + 1, entry + ": 'modes' must be a list");
+  if (!node.IsSequence()) f.fail(node, entry + ".modes must be a list of {frequency, gain, decay}");
   std::vector<ListedMode> modes;
   for (std::size_t i = 0; i < node.size(); ++i) {
-    EntryReader r(source, entry + ".modes[" + std::to_string(i) + "]", node[i]);
+    const YamlMapping r(f, entry + ".modes[" + std::to_string(i) + "]", node[i]);
     ListedMode mode;
-    mode.frequency = r.number("frequency", 0, true);
-    mode.gain = r.number_or("gain", 1.0, 0, false);
-    mode.decay = r.number_or("decay", 0.0, 0, false);
+    mode.frequency = r.number("frequency", NumberRange::above(0));
+    mode.gain = r.number_or("gain", 1.0, NumberRange::at_least(0));
+    mode.decay = r.number_or("decay", 0.0, NumberRange::at_least(0));
     modes.push_back(mode);
   }
   return modes;
 }
 
-const Material& find_material(const Catalogue& c, const EntryReader& r) {
-  const std::string name = r.text("material");
+const Material& find_material(const Catalogue& c, const YamlMapping& r) {
+  const std::string name = r.name("material");
   auto it = c.materials.find(name);
-  if (it == c.materials.end()) r.fail(r.child("material"), "unknown material '" + name + "'");
+  if (it == c.materials.end()) r.fail(r.node()["material"], "unknown material '" + name + "'");
   return it->second;
 }
 
-ObjectSpec read_original(const Catalogue& c, const std::string& name, const EntryReader& r) {
+ObjectSpec read_original(const Catalogue& c, const std::string& name, const YamlMapping& r) {
   ObjectSpec o;
   o.name = name;
-  o.shape = r.text("shape");
+  o.shape = r.name("shape");
   if (o.shape != "cylinder_shell")
-    r.fail(r.child("shape"), "unknown shape '" + o.shape + "' (known: cylinder_shell)");
-  o.radius = r.number("radius", 0, true);
-  o.height = r.number("height", 0, true);
-  o.wall_thickness = r.number("wall_thickness", 0, true, o.radius);
-  o.base_thickness = r.number("base_thickness", 0, true, o.height);
-  o.shell_mass = r.number("mass", 0, true);
-  o.base_radius = r.number_or("base_radius", 0.0, 0, false, o.radius + 1e-12);
+    r.fail(r.node()["shape"], "unknown shape '" + o.shape + "' (known: cylinder_shell)");
+  o.radius = r.number("radius", NumberRange::above(0));
+  o.height = r.number("height", NumberRange::above(0));
+  o.wall_thickness = r.number("wall_thickness", NumberRange::above(0).below(o.radius));
+  o.base_thickness = r.number("base_thickness", NumberRange::above(0).below(o.height));
+  o.shell_mass = r.number("mass", NumberRange::above(0));
+  o.base_radius = r.number_or("base_radius", 0.0, NumberRange::at_least(0).below(o.radius + 1e-12));
   o.material = find_material(c, r);
-  o.closed = r.flag_or("closed", false);
-  o.contact_radius = r.number("contact_radius", 0, true);
-  o.friction = r.number_or("friction", 0.4, 0, true);
-  o.ring_modes = static_cast<int>(r.number_or("ring_modes", 4, 2, false, 13));
-  if (r.has("modes")) o.listed_modes = read_modes(c.source, r.entry(), r.child("modes"));
+  o.closed = r.boolean_or("closed", false);
+  o.contact_radius = r.number("contact_radius", NumberRange::above(0));
+  o.friction = r.number_or("friction", 0.4, NumberRange::above(0));
+  o.ring_modes = static_cast<int>(r.number_or("ring_modes", 4, NumberRange::at_least(2).below(13)));
+  if (r.has("modes")) o.listed_modes = read_modes(r.reader(), r.entry(), r.node()["modes"]);
   return o;
 }
 
-ObjectSpec read_modified(const Catalogue& c, const std::string& name, const EntryReader& r) {
-  const std::string base = r.text("base");
+ObjectSpec read_modified(const Catalogue& c, const std::string& name, const YamlMapping& r) {
+  const std::string base = r.name("base");
   auto it = c.objects.find(base);
   if (it == c.objects.end() || !it->second.base_object.empty())
-    r.fail(r.child("base"),
+    r.fail(r.node()["base"],
            "unknown base object '" + base + "' (it must be an original object listed above)");
   ObjectSpec o = it->second;
   o.name = name;
   o.base_object = base;
-  EntryReader added(c.source, r.entry() + ".added_mass", r.required("added_mass"));
+  const YamlMapping added(r.reader(), r.entry() + ".added_mass", r.required("added_mass"));
   AddedMass a;
-  a.mass = added.number("mass", 0, true);
-  YAML::Node pos = added.required("position");
-  if (!pos.IsSequence() || pos.size() != 3)
-    added.fail(pos, "field 'position' must be [x, y, z] in metres");
-  for (int k = 0; k < 3; ++k) a.position[k] = added.number(pos[k], "position");
-  a.loss_factor = added.number_or("loss_factor", 0.0, 0, false, 1.0);
+  a.mass = added.number("mass", NumberRange::above(0));
+  const std::vector<double> position = added.numbers("position", 3);  // [x, y, z] in metres
+  std::copy(position.begin(), position.end(), a.position.begin());
+  a.loss_factor = added.number_or("loss_factor", 0.0, NumberRange::at_least(0).below(1.0));
   o.added_masses.push_back(a);
   return o;
 }
 
 }  // namespace
 
-Catalogue parse_catalogue(const std::string& yaml_text, const std::string& source) {
-  const YAML::Node root = parse_yaml(yaml_text, source);
+namespace {
+
+Catalogue read_catalogue(const YamlReader& f, const YAML::Node& root) {
   Catalogue c;
-  c.source = source;
-  EntryReader top(source, "catalogue", root);
+  c.source = f.file();
+  const YamlMapping top(f, "the catalogue", root);
 
   const YAML::Node materials = top.required("materials");
   if (!materials.IsMap()) top.fail(materials, "'materials' must map names to materials");
   for (const auto& kv : materials) {
-    const auto name = kv.first.as<std::string>();
-    c.materials[name] = read_material(source, name, kv.second);
+    const std::string name = f.name(kv.first, "each key of 'materials'");
+    c.materials[name] = read_material(f, name, kv.second);
   }
 
-  EntryReader table(source, "table", top.required("table"));
+  const YamlMapping table(f, "table", top.required("table"));
   c.table.material = find_material(c, table);
-  c.table.friction = table.number_or("friction", 0.45, 0, true);
-  if (table.has("modes")) c.table.modes = read_modes(source, "table", table.child("modes"));
+  c.table.friction = table.number_or("friction", 0.45, NumberRange::above(0));
+  if (table.has("modes")) c.table.modes = read_modes(f, "table", table.node()["modes"]);
   if (table.has("dense_modes")) {
-    EntryReader dense(source, "table.dense_modes", table.child("dense_modes"));
-    c.table.dense.from_hz = dense.number("from", 0, true);
-    c.table.dense.to_hz = dense.number("to", c.table.dense.from_hz, true);
-    c.table.dense.count = static_cast<int>(dense.number("count", 1, false, 1000));
+    const YamlMapping dense(f, "table.dense_modes", table.node()["dense_modes"]);
+    c.table.dense.from_hz = dense.number("from", NumberRange::above(0));
+    c.table.dense.to_hz = dense.number("to", NumberRange::above(c.table.dense.from_hz));
+    c.table.dense.count =
+        static_cast<int>(dense.number("count", NumberRange::at_least(1).below(1000)));
   }
-  c.table.thickness = table.number_or("thickness", 0.025, 0, true);
-  c.table.contact_loss_factor = table.number_or("contact_loss_factor", 0.0, 0, false, 1.0);
+  c.table.thickness = table.number_or("thickness", 0.025, NumberRange::above(0));
+  c.table.contact_loss_factor =
+      table.number_or("contact_loss_factor", 0.0, NumberRange::at_least(0).below(1.0));
 
   // Originals first, so a modified object can name any original regardless of order in the file.
   const YAML::Node objects = top.required("objects");
   if (!objects.IsMap() || objects.size() == 0)
     top.fail(objects, "'objects' must map names to objects");
   for (const auto& kv : objects) {
-    const auto name = kv.first.as<std::string>();
-    EntryReader r(source, "objects." + name, kv.second);
+    const std::string name = f.name(kv.first, "each key of 'objects'");
+    const YamlMapping r(f, "objects." + name, kv.second);
     if (!r.has("base")) c.objects[name] = read_original(c, name, r);
   }
   for (const auto& kv : objects) {
-    const auto name = kv.first.as<std::string>();
-    EntryReader r(source, "objects." + name, kv.second);
+    const std::string name = f.name(kv.first, "each key of 'objects'");
+    const YamlMapping r(f, "objects." + name, kv.second);
     if (r.has("base")) c.objects[name] = read_modified(c, name, r);
   }
   return c;
+}
+
+}  // namespace
+
+Catalogue parse_catalogue(const std::string& yaml_text, const std::string& source) {
+  const YAML::Node root = parse_yaml(yaml_text, source);
+  return read_yaml_guarded(source, [&] { return read_catalogue(YamlReader(source), root); });
 }
 
 Catalogue load_catalogue(const std::string& path) {
@@ -294,7 +228,7 @@ Catalogue load_catalogue(const std::string& path) {
 std::string default_catalogue_path() {
   const std::string local = "objects/catalogue.yaml";
   if (std::filesystem::exists(local)) return local;
-  return std::string(ECHOPLAN_DATA_DIR) + "/objects/catalogue.yaml";
+  return shipped_file("objects/catalogue.yaml");
 }
 
 }  // namespace echoplan::sim

@@ -10,135 +10,108 @@
 #include <sstream>
 
 #include "common/error.h"
-#include "sim/yaml_file.h"
+#include "common/yaml_reader.h"
 
 namespace echoplan::sim {
 
 namespace {
-
-[[noreturn]] void fail(const std::string& source, const YAML::Node& at,
-                       const std::string& problem) {
-  throw InputError(source, at.Mark().line + 1, problem);
-}
-
-double read_number(const std::string& source, const YAML::Node& v, const std::string& field,
-                   double low, double high) {
-  double x = 0;
-  try {
-    x = v.as<double>();
-  } catch (const YAML::Exception&) {
-    fail(source, v, "'" + field + "' must be a number");
-  }
-  if (!std::isfinite(x) || x < low || x > high) {
-    std::ostringstream msg;
-    msg << "'" << field << "' = " << x << " is out of range [" << low << ", " << high << "]";
-    fail(source, v, msg.str());
-  }
-  return x;
-}
 
 // One section of the config: a table of field name -> setter, so unknown fields are reported
 // instead of silently ignored (a misspelt spread would otherwise keep its default).
 using FieldSetters =
     std::map<std::string, std::function<void(const YAML::Node&, const std::string&)>>;
 
-void read_section(const std::string& source, const YAML::Node& root, const std::string& name,
+void read_section(const YamlReader& f, const YAML::Node& root, const std::string& name,
                   const FieldSetters& fields) {
   const YAML::Node section = root[name];
   if (!section) return;
-  if (!section.IsMap()) fail(source, section, "'" + name + "' must be a mapping");
-  for (const auto& kv : section) {
-    const auto key = kv.first.as<std::string>();
-    auto it = fields.find(key);
-    if (it == fields.end()) {
-      std::string known;
-      for (const auto& [k, f] : fields) known += (known.empty() ? "" : ", ") + k;
-      fail(source, kv.first, "unknown field '" + name + "." + key + "' (known: " + known + ")");
-    }
-    it->second(kv.second, name + "." + key);
-  }
+  std::vector<std::string> known;
+  for (const auto& [key, setter] : fields) known.push_back(key);
+  f.only_keys(section, known, name);
+  for (const auto& kv : section)
+    fields.at(kv.first.Scalar())(kv.second, name + "." + kv.first.Scalar());
 }
 
-std::function<void(const YAML::Node&, const std::string&)> number_into(const std::string& source,
+std::function<void(const YAML::Node&, const std::string&)> number_into(const YamlReader& f,
                                                                        double& target, double low,
                                                                        double high) {
-  return [&source, &target, low, high](const YAML::Node& v, const std::string& field) {
-    target = read_number(source, v, field, low, high);
+  return [&f, &target, low, high](const YAML::Node& v, const std::string& field) {
+    target = f.number(v, field, NumberRange::closed(low, high));
   };
 }
 
-std::function<void(const YAML::Node&, const std::string&)> spread_into(const std::string& source,
+std::function<void(const YAML::Node&, const std::string&)> spread_into(const YamlReader& f,
                                                                        Spread& target, double low,
                                                                        double high) {
-  return [&source, &target, low, high](const YAML::Node& v, const std::string& field) {
-    if (!v.IsMap() || !v["mean"] || !v["spread"] || v.size() != 2)
-      fail(source, v, "'" + field + "' must be {mean: ..., spread: ...}");
-    target.mean = read_number(source, v["mean"], field + ".mean", low, high);
-    target.spread = read_number(source, v["spread"], field + ".spread", 0.0, high - low);
+  return [&f, &target, low, high](const YAML::Node& v, const std::string& field) {
+    if (!v.IsMap()) f.fail(v, field + " must be {mean: ..., spread: ...}");
+    f.only_keys(v, {"mean", "spread"}, field);
+    target.mean =
+        f.number(f.require(v, "mean", field), field + ".mean", NumberRange::closed(low, high));
+    target.spread = f.number(f.require(v, "spread", field), field + ".spread",
+                             NumberRange::closed(0.0, high - low));
   };
+}
+
+SimConfig read_sim_config(const YamlReader& f, const YAML::Node& root) {
+  SimConfig c;
+  if (root.IsNull()) return c;
+  f.expect_map(root, "the sim config");
+  const std::vector<std::string> sections{"variability", "microphone", "room", "recording",
+                                          "physics"};
+  f.only_keys(root, sections, "the sim config");
+  auto& v = c.variability;
+  read_section(f, root, "variability",
+               {{"impact_speed", spread_into(f, v.impact_speed, 0.005, 1.0)},
+                {"impact_tilt_deg", spread_into(f, v.impact_tilt_deg, 0.0, 30.0)},
+                {"grasp_height", spread_into(f, v.grasp_height, -0.05, 0.20)},
+                {"grasp_offset", spread_into(f, v.grasp_offset, -0.02, 0.02)},
+                {"push_speed", spread_into(f, v.push_speed, 0.005, 0.5)},
+                {"push_offset", spread_into(f, v.push_offset, -0.02, 0.02)},
+                {"placement_x", spread_into(f, v.placement_x, -0.05, 0.05)},
+                {"placement_y", spread_into(f, v.placement_y, -0.05, 0.05)},
+                {"microphone_distance", spread_into(f, v.microphone_distance, -0.3, 0.3)},
+                {"background_db", spread_into(f, v.background_db, -20.0, 20.0)}});
+  auto& mic = c.microphone;
+  read_section(f, root, "microphone",
+               {{"position",
+                 [&](const YAML::Node& n, const std::string& field) {
+                   if (!n.IsSequence() || n.size() != 3)
+                     f.fail(n, field + " must be [x, y, z] in metres");
+                   for (int k = 0; k < 3; ++k)
+                     mic.position[k] = f.number(n[k], field, NumberRange::closed(-10.0, 10.0));
+                 }},
+                {"capsule_spacing", number_into(f, mic.capsule_spacing, 0.0, 1.0)}});
+  auto& room = c.room;
+  read_section(f, root, "room",
+               {{"rt60_s", number_into(f, room.rt60_s, 0.01, 5.0)},
+                {"length_s", number_into(f, room.length_s, 0.001, 0.5)},
+                {"taps_per_s", number_into(f, room.taps_per_s, 10.0, 20000.0)},
+                {"reverb_level", number_into(f, room.reverb_level, 0.0, 2.0)}});
+  auto& rec = c.recording;
+  double sample_rate = rec.sample_rate;
+  read_section(f, root, "recording",
+               {{"sample_rate", number_into(f, sample_rate, 8000.0, 192000.0)},
+                {"duration_s", number_into(f, rec.duration_s, 0.1, 60.0)},
+                {"noise_dbfs", number_into(f, rec.noise_dbfs, -200.0, 0.0)},
+                {"output_gain", number_into(f, rec.output_gain, 0.0, 1.0e6)},
+                {"friction_gain", number_into(f, rec.friction_gain, 0.0, 1000.0)},
+                {"lead_in_s", number_into(f, rec.lead_in_s, 0.0, 10.0)},
+                {"motor_noise_gain", number_into(f, rec.motor_noise_gain, 0.0, 1000.0)},
+                {"limiter_ceiling_dbfs", number_into(f, rec.limiter_ceiling_dbfs, -60.0, 0.0)},
+                {"limiter_hold_s", number_into(f, rec.limiter_hold_s, 0.0, 10.0)},
+                {"limiter_release_s", number_into(f, rec.limiter_release_s, 0.001, 10.0)}});
+  rec.sample_rate = static_cast<int>(std::lround(sample_rate));
+  read_section(f, root, "physics",
+               {{"timestep_s", number_into(f, c.physics.timestep_s, 0.0005, 0.005)}});
+  return c;
 }
 
 }  // namespace
 
 SimConfig parse_sim_config(const std::string& yaml_text, const std::string& source) {
   const YAML::Node root = parse_yaml(yaml_text, source);
-  SimConfig c;
-  if (root.IsNull()) return c;
-  if (!root.IsMap()) fail(source, root, "a sim config must be a mapping of sections");
-  const std::vector<std::string> sections{"variability", "microphone", "room", "recording",
-                                          "physics"};
-  for (const auto& kv : root) {
-    const auto key = kv.first.as<std::string>();
-    if (std::find(sections.begin(), sections.end(), key) == sections.end())
-      fail(source, kv.first,
-           "unknown section '" + key +
-               "' (known: variability, microphone, room, recording, physics)");
-  }
-  auto& v = c.variability;
-  read_section(source, root, "variability",
-               {{"impact_speed", spread_into(source, v.impact_speed, 0.005, 1.0)},
-                {"impact_tilt_deg", spread_into(source, v.impact_tilt_deg, 0.0, 30.0)},
-                {"grasp_height", spread_into(source, v.grasp_height, -0.05, 0.20)},
-                {"grasp_offset", spread_into(source, v.grasp_offset, -0.02, 0.02)},
-                {"push_speed", spread_into(source, v.push_speed, 0.005, 0.5)},
-                {"push_offset", spread_into(source, v.push_offset, -0.02, 0.02)},
-                {"placement_x", spread_into(source, v.placement_x, -0.05, 0.05)},
-                {"placement_y", spread_into(source, v.placement_y, -0.05, 0.05)},
-                {"microphone_distance", spread_into(source, v.microphone_distance, -0.3, 0.3)},
-                {"background_db", spread_into(source, v.background_db, -20.0, 20.0)}});
-  auto& mic = c.microphone;
-  read_section(source, root, "microphone",
-               {{"position",
-                 [&](const YAML::Node& n, const std::string& field) {
-                   if (!n.IsSequence() || n.size() != 3)
-                     fail(source, n, "'" + field + "' must be [x, y, z] in metres");
-                   for (int k = 0; k < 3; ++k)
-                     mic.position[k] = read_number(source, n[k], field, -10.0, 10.0);
-                 }},
-                {"capsule_spacing", number_into(source, mic.capsule_spacing, 0.0, 1.0)}});
-  auto& room = c.room;
-  read_section(source, root, "room",
-               {{"rt60_s", number_into(source, room.rt60_s, 0.01, 5.0)},
-                {"length_s", number_into(source, room.length_s, 0.001, 0.5)},
-                {"taps_per_s", number_into(source, room.taps_per_s, 10.0, 20000.0)},
-                {"reverb_level", number_into(source, room.reverb_level, 0.0, 2.0)}});
-  auto& rec = c.recording;
-  double sample_rate = rec.sample_rate;
-  read_section(source, root, "recording",
-               {{"sample_rate", number_into(source, sample_rate, 8000.0, 192000.0)},
-                {"duration_s", number_into(source, rec.duration_s, 0.1, 60.0)},
-                {"noise_dbfs", number_into(source, rec.noise_dbfs, -200.0, 0.0)},
-                {"output_gain", number_into(source, rec.output_gain, 0.0, 1.0e6)},
-                {"friction_gain", number_into(source, rec.friction_gain, 0.0, 1000.0)},
-                {"lead_in_s", number_into(source, rec.lead_in_s, 0.0, 10.0)},
-                {"motor_noise_gain", number_into(source, rec.motor_noise_gain, 0.0, 1000.0)},
-                {"limiter_ceiling_dbfs", number_into(source, rec.limiter_ceiling_dbfs, -60.0, 0.0)},
-                {"limiter_hold_s", number_into(source, rec.limiter_hold_s, 0.0, 10.0)},
-                {"limiter_release_s", number_into(source, rec.limiter_release_s, 0.001, 10.0)}});
-  rec.sample_rate = static_cast<int>(std::lround(sample_rate));
-  read_section(source, root, "physics",
-               {{"timestep_s", number_into(source, c.physics.timestep_s, 0.0005, 0.005)}});
-  return c;
+  return read_yaml_guarded(source, [&] { return read_sim_config(YamlReader(source), root); });
 }
 
 SimConfig load_sim_config(const std::string& path) {

@@ -1,13 +1,8 @@
 #!/bin/sh
 # `echoplan trials` end to end: bad flags exit 2 with a message, and the same seed gives
 # byte-identical output files. Usage: trials_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
-set -u
-bin=$1
-src=$2
+. "$(dirname "$0")/cli_test_lib.sh"
 problem=$src/problems/audio_objects.yaml
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
 
 # expect_input_error DESCRIPTION EXPECTED_MESSAGE ARGS...: exit status 2 and the message on stderr.
 expect_input_error() {
@@ -54,5 +49,4 @@ done
 expect_input_error "policy of another problem" "the policy is for 2 states" --problem "$problem" --out "$work/o" \
   --solver offline --policy "$work/tiger_policy/policy.json"
 
-[ "$failures" -eq 0 ] && echo "all trials CLI checks passed"
-exit "$failures"
+finish "trials CLI"

@@ -14,11 +14,7 @@ namespace echoplan::pomdp {
 namespace {
 
 using testing::repo_file;
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
+using testing::repo_text;
 
 // One random edit: delete a span, duplicate a span, overwrite a byte, or truncate.
 std::string corrupt(std::string text, Rng& rng) {
@@ -46,7 +42,7 @@ std::string corrupt(std::string text, Rng& rng) {
 
 template <class Parse>
 void fuzz(const std::string& file, Parse parse, std::uint64_t seed) {
-  const std::string original = read_text(repo_file(file));
+  const std::string original = repo_text(file);
   Rng rng(seed);
   int rejected = 0;
   for (int i = 0; i < 2000; ++i) {

@@ -1,4 +1,4 @@
-// The YAML loader reproduces the seed's tables exactly and rejects bad files with file and line.
+// The YAML reader reproduces the seed's tables exactly and rejects bad files with file and line.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -12,16 +12,10 @@ namespace echoplan::pomdp {
 namespace {
 
 using testing::repo_file;
+using testing::repo_text;
 
 const ObjectIdentificationModel& object_model(const Problem& p) {
   return dynamic_cast<const ObjectIdentificationModel&>(*p.model);
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // The seed's section 3.3, typed in here independently of the YAML file: [object][action][class].
@@ -69,24 +63,8 @@ TEST(ProblemYaml, SeedProblemMatchesTheReport) {
   EXPECT_EQ(p.planner.episodes, 0);
 }
 
-TEST(ProblemYaml, WrittenProblemReadsBackIdentically) {
-  const Problem p = load_problem(repo_file("problems/audio_objects.yaml"));
-  std::ostringstream out;
-  write_problem_yaml(out, object_model(p).data(), p.belief, p.planner);
-  const Problem q = parse_problem_yaml(out.str(), "written.yaml");
-  const ObjectProblemData& a = object_model(p).data();
-  const ObjectProblemData& b = object_model(q).data();
-  EXPECT_EQ(a.objects, b.objects);
-  EXPECT_EQ(a.prior, b.prior);
-  EXPECT_EQ(a.observation_table, b.observation_table);
-  EXPECT_EQ(a.sorting_reward, b.sorting_reward);
-  EXPECT_EQ(a.initial_joints, b.initial_joints);
-  EXPECT_EQ(q.planner.step_ms, p.planner.step_ms);
-  EXPECT_EQ(q.planner.exploration, p.planner.exploration);
-}
-
 TEST(ProblemYaml, WeightedPriorIsNormalised) {
-  std::string text = read_text(repo_file("problems/audio_objects.yaml"));
+  std::string text = repo_text("problems/audio_objects.yaml");
   const std::string from = "objects: uniform";
   text.replace(text.find(from), from.size(), "objects: {pringles_can: 3, coffee_mug: 1}");
   const Problem p = parse_problem_yaml(text, "prior.yaml");
@@ -111,7 +89,7 @@ int line_of(const std::string& text, const std::string& needle) {
 
 TEST_P(ProblemYamlErrors, ReportFileLineAndProblem) {
   const BadCase& c = GetParam();
-  std::string text = read_text(repo_file("problems/audio_objects.yaml"));
+  std::string text = repo_text("problems/audio_objects.yaml");
   const std::size_t at = text.find(c.from);
   ASSERT_NE(at, std::string::npos) << c.from;
   text.replace(at, std::string(c.from).size(), c.to);
@@ -193,16 +171,6 @@ TEST(ProblemYaml, GarbageIsAnErrorNotACrash) {
                                             "\t\tname: tab"};
   for (const auto& text : garbage) {
     EXPECT_THROW(parse_problem_yaml(text, "garbage.yaml"), InputError) << text;
-  }
-}
-
-TEST(ProblemYaml, MissingFileOrDirectoryIsAnError) {
-  EXPECT_THROW(load_problem("/nonexistent/problem.yaml"), InputError);
-  try {
-    load_problem(repo_file("problems"));
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_NE(e.problem().find("not a regular file"), std::string::npos);
   }
 }
 

@@ -111,7 +111,22 @@ TEST(Catalogue, MissingFieldNamesTheEntryAndField) {
   const InputError e = parse_error(replace(kValid, "    contact_radius: 0.004\n", ""));
   EXPECT_EQ(e.line(), 10);  // the entry's mapping starts on the line after "mug:"
   EXPECT_NE(e.problem().find("objects.mug"), std::string::npos) << e.what();
-  EXPECT_NE(e.problem().find("missing field 'contact_radius'"), std::string::npos) << e.what();
+  EXPECT_NE(e.problem().find("missing key 'contact_radius' in objects.mug"), std::string::npos)
+      << e.what();
+}
+
+// A key that is not a name (a YAML list used as a key) is bad input, not an internal error: found
+// by fuzz/sim_files_fuzz.cpp.
+TEST(Catalogue, KeysThatAreNotNamesAreInputErrors) {
+  const InputError material = parse_error("materials:\n  ? [a, b]\n  : {density: 1}\n");
+  EXPECT_EQ(material.line(), 2);
+  EXPECT_NE(material.problem().find("each key of 'materials' must be a non-empty name"),
+            std::string::npos)
+      << material.what();
+  const InputError object = parse_error(replace(kValid, "  mug:\n", "  ? [mug]\n  :\n"));
+  EXPECT_NE(object.problem().find("each key of 'objects' must be a non-empty name"),
+            std::string::npos)
+      << object.what();
 }
 
 TEST(Catalogue, OtherErrorsAreReportedWithTheirEntry) {

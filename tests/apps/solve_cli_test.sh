@@ -3,12 +3,7 @@
 # seed problem's YAML and .pomdp files solve and start with a strike, --out writes a policy, and bad
 # input exits 2 with a message naming the file.
 # Usage: solve_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
-set -u
-bin=$1
-src=$2
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/cli_test_lib.sh"
 
 json=$("$bin" solve --problem "$src/problems/tiger.pomdp" --json --epsilon 2e-5 2>/dev/null) || fail "solve tiger"
 echo "$json" | grep -q '^{"lower":' || fail "JSON must start with lower: $json"
@@ -17,19 +12,19 @@ echo "$json" | awk -F'[:,]' '{ l = $2; u = $4; exit !(l <= 19.3715 && u >= 19.37
   || fail "tiger bounds: $json"
 
 for f in audio_objects.yaml audio_objects.pomdp; do
-  out=$("$bin" solve --problem "$src/problems/$f" --time-limit 1 --out "$dir/$f" 2>/dev/null) || fail "solve $f"
+  out=$("$bin" solve --problem "$src/problems/$f" --time-limit 1 --out "$work/$f" 2>/dev/null) || fail "solve $f"
   echo "$out" | grep -q "first action: strike" || fail "$f first action: $out"
-  grep -q '"format": "echoplan-alpha-vectors"' "$dir/$f/policy.json" || fail "$f policy.json"
+  grep -q '"format": "echoplan-alpha-vectors"' "$work/$f/policy.json" || fail "$f policy.json"
 done
 
-"$bin" solve --problem "$dir/missing.pomdp" 2>/dev/null
+"$bin" solve --problem "$work/missing.pomdp" 2>/dev/null
 [ $? -eq 2 ] || fail "missing file should exit 2"
-printf 'discount: 0.95\nstates: 2\n' > "$dir/bad.pomdp"
-msg=$("$bin" solve --problem "$dir/bad.pomdp" 2>&1)
+printf 'discount: 0.95\nstates: 2\n' > "$work/bad.pomdp"
+msg=$("$bin" solve --problem "$work/bad.pomdp" 2>&1)
 [ $? -eq 2 ] || fail "incomplete .pomdp should exit 2"
 echo "$msg" | grep -q "bad.pomdp" || fail "message should name the file: $msg"
 "$bin" solve --problem "$src/problems/tiger.pomdp" --epsilon -1 2>/dev/null
 [ $? -eq 2 ] || fail "negative epsilon should exit 2"
 "$bin" solve --problem "$src/problems/tiger.pomdp" --time-limit 0 2>/dev/null
 [ $? -eq 2 ] || fail "zero time limit should exit 2"
-echo "solve cli ok"
+finish "solve CLI"

@@ -1,0 +1,16 @@
+# Shared by the tests/apps/*_cli_test.sh scripts, which source it first: . "$(dirname "$0")/cli_test_lib.sh"
+# Every script is run as <name>_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR. This sets `bin` and `src` from
+# those, `work` to a fresh folder removed at exit, and defines
+#   fail MESSAGE   report one failed check (the script goes on, so one run lists every failure);
+#   finish WHAT    print the verdict and exit with the number of failures (0: all passed).
+set -u
+bin=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+finish() {
+  [ "$failures" -eq 0 ] && echo "all $1 checks passed"
+  exit "$failures"
+}
