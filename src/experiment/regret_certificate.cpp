@@ -20,7 +20,7 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
   using NodeId = solvers::IdentificationSolver::NodeId;
   solvers::RefineLimits limits;
   limits.target_gap = options.decision_gap;
-  limits.seconds = options.seconds_per_belief;
+  limits.expansions = options.expansions_per_belief;
 
   Certificate c;
   if (!solver.refine(solver.root(), limits)) ++c.unconverged_beliefs;

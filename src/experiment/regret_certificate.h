@@ -21,9 +21,11 @@
 namespace echoplan::experiment {
 
 struct CertifyOptions {
-  double decision_gap = 1e-4;        // absolute target gap of V* and Q* at every visited belief
-  double seconds_per_belief = 10.0;  // refinement limit per belief (bounds stay valid if hit)
-  int worst = 10;                    // how many of the largest single losses to list
+  double decision_gap = 1e-3;  // absolute target gap of V* and Q* at every visited belief
+  // Refinement limit per belief and per bound, in node expansions (a count, so results repeat);
+  // bounds stay valid when it is hit, the regret then counts the remaining gap against the run.
+  long expansions_per_belief = 20000;
+  int worst = 10;  // how many of the largest single losses to list
 };
 
 // One decision with its loss (undiscounted) and where it happened.

@@ -119,7 +119,7 @@ IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m, std::si
   double total = 0.0;
   for (int l = 0; l < L; ++l) total += b0_all[live_states_[l]];
   for (int l = 0; l < L; ++l) b0[l] = b0_all[live_states_[l]] / total;
-  insert(Key{}, b0.data());
+  insert(Key{}, b0.data(), 0.0, nullptr);
   belief_scratch_.resize(L);
   children_scratch_.resize(O);
 }
@@ -165,14 +165,22 @@ IdentificationSolver::Key IdentificationSolver::child_key(NodeId node, int a, in
   return Key{k.a + c.a, k.b + c.b};
 }
 
-IdentificationSolver::NodeId IdentificationSolver::insert(const Key& key, const double* b) {
+IdentificationSolver::NodeId IdentificationSolver::insert(const Key& key, const double* b,
+                                                          double log_reach,
+                                                          const std::uint16_t* counts) {
   const auto id = static_cast<NodeId>(lower_.size());
   beliefs_.insert(beliefs_.end(), b, b + num_live_);
+  const std::size_t pairs = std::size_t(num_actions_) * num_observations_;
+  if (counts != nullptr)
+    counts_.insert(counts_.end(), counts, counts + pairs);
+  else
+    counts_.resize(counts_.size() + pairs, 0);
+  log_reach_.push_back(log_reach);
   keys_.push_back(key);
   const Bounds f = frontier_bounds(b);
   lower_.push_back(f.lower);
   upper_.push_back(f.upper);
-  tolerance_.push_back(std::numeric_limits<double>::infinity());
+  expanded_at_.push_back(std::numeric_limits<double>::infinity());
   index_.emplace(key, id);
   return id;
 }
@@ -187,8 +195,22 @@ IdentificationSolver::NodeId IdentificationSolver::child(NodeId node, int action
   const Key key = child_key(node, action, observation);
   if (auto it = index_.find(key); it != index_.end()) return it->second;
   std::vector<double> b(num_live_);
-  if (child_belief(node_belief(node), action, observation, b.data()) <= 0.0) return kEnded;
-  return insert(key, b.data());
+  const double p = child_belief(node_belief(node), action, observation, b.data());
+  if (p <= 0.0) return kEnded;
+  // The child's reach weight: every history with the same counts has the same probability, and
+  // there are at most Π_a n_a! / Π_o n_ao! of them; one more (a, o) multiplies that count by
+  // (n_a + 1) / (n_ao + 1).
+  const std::size_t pairs = std::size_t(num_actions_) * num_observations_;
+  std::vector<std::uint16_t> counts(&counts_[node * pairs], &counts_[node * pairs] + pairs);
+  int n_a = 0;
+  for (int o = 0; o < num_observations_; ++o) n_a += counts[action * num_observations_ + o];
+  std::uint16_t& n_ao = counts[action * num_observations_ + observation];
+  if (n_ao == std::numeric_limits<std::uint16_t>::max())
+    throw std::length_error("identification search: a count outgrew 65535");
+  const double log_reach = log_reach_[node] + std::log(discount_ * p) +
+                           std::log(static_cast<double>(n_a + 1) / (n_ao + 1.0));
+  ++n_ao;
+  return insert(key, b.data(), log_reach, counts.data());
 }
 
 Bounds IdentificationSolver::value(NodeId node) const { return {lower_[node], upper_[node]}; }
@@ -256,31 +278,30 @@ bool IdentificationSolver::backup(NodeId node) {
   return tightened;
 }
 
-void IdentificationSolver::expand(NodeId node, double weight, double delta, int forced_action,
-                                  Budget& budget) {
-  const double tolerance = delta / weight;
-  if (upper_[node] - lower_[node] <= tolerance && forced_action < 0) return;
-  if (tolerance_[node] <= tolerance && forced_action < 0) return;
+void IdentificationSolver::expand(NodeId node, double delta, int forced_action, Budget& budget) {
+  const bool forced = forced_action >= 0;
+  if (!forced && std::exp(log_reach_[node]) * (upper_[node] - lower_[node]) <= delta) return;
+  if (!forced && expanded_at_[node] <= delta) return;
   if (budget.exhausted(*this)) return;
   ++expansions_;
   ++budget.expansions;
+  std::vector<ChildView> children(num_observations_);
   for (int a = 0; a < num_actions_; ++a) {
     if (kind_[a] != ActionKind::sensing) continue;
-    if (forced_action >= 0 && a != forced_action) continue;
+    if (forced && a != forced_action) continue;
     // An action whose best case is worse than what the node already guarantees cannot be
     // optimal here: its subtree cannot change V's bounds.
-    std::vector<ChildView> children(num_observations_);
     const Bounds q = lookahead(node, a, children);
-    if (forced_action < 0 && q.upper <= lower_[node]) continue;
+    if (!forced && q.upper <= lower_[node]) continue;
     for (int o = 0; o < num_observations_; ++o) {
       if (children[o].probability <= 0.0) continue;
       NodeId next = children[o].id;
       if (next == kEnded) next = child(node, a, o);
-      expand(next, weight * discount_ * children[o].probability, delta, -1, budget);
+      expand(next, delta, -1, budget);
     }
   }
   backup(node);
-  if (!budget.stopped) tolerance_[node] = std::min(tolerance_[node], tolerance);
+  if (!budget.stopped && !forced) expanded_at_[node] = std::min(expanded_at_[node], delta);
 }
 
 bool IdentificationSolver::Budget::exhausted(const IdentificationSolver& solver) {
@@ -301,12 +322,14 @@ bool IdentificationSolver::refine_to(NodeId node, int action, const RefineLimits
   // Passes of shrinking δ: each expands every belief whose weighted gap γ^t P(path) · gap exceeds
   // δ; a pass that reaches no such belief leaves the gap below what δ allows, so δ halves until
   // the target is met.
-  // Starting coarse spreads the first passes over the likely beliefs instead of one deep corner.
-  // A node already expanded to some δ (an earlier call) resumes below it.
-  double delta = std::min(0.25 * gap(), 0.5 * tolerance_[node]);
+  // δ is absolute (in units of weighted gap at b0); relative to this node it is δ / reach(node).
+  // Starting coarse spreads the first passes over the likely beliefs instead of one deep corner;
+  // a node already expanded to some δ (an earlier call) resumes below it.
+  const double reach = std::exp(log_reach_[node]);
+  double delta = std::min(0.25 * gap() * reach, 0.5 * expanded_at_[node]);
   while (gap() > limits.target_gap) {
     const long before = expansions_;
-    expand(node, 1.0, delta, action, budget);
+    expand(node, delta, action, budget);
     if (budget.stopped) return gap() <= limits.target_gap;
     if (expansions_ == before || gap() > limits.target_gap) delta *= 0.5;
     if (delta < 1e-300) return false;

@@ -11,12 +11,15 @@
 //   upper: max(commit now, max over sensing a of R(b, a) + γ Σ_s b(s) stay(s, a) V_known(s))
 //          where V_known(s) is the value when s is known (sensing once more reveals everything)
 // and Bellman backups over children tighten both. Refinement works in passes of shrinking δ: a
-// pass expands, depth first, every belief whose weighted gap γ^t P(path) · (upper − lower) exceeds
-// δ (skipping actions whose upper bound is below what the belief already guarantees), and backs
-// the bounds up; δ halves until the gap at the belief asked about meets the target. Unlike HSVI's
-// per-depth threshold ε γ^-t, the weight stops the search down paths of negligible probability,
-// which at γ = 0.99 would otherwise run hundreds of steps deep. Every call is anytime: the bounds
-// are valid whenever it stops.
+// pass expands, depth first, every belief whose reach · (upper − lower) exceeds δ (skipping actions
+// whose upper bound is below what the belief already guarantees), and backs the bounds up; δ
+// halves until the gap at the belief asked about meets the target. A belief's reach is
+// γ^t · P(one history to it) · (the number of histories with its counts, at most
+// Π_a n_a! / Π_o n_ao!): every history with the same counts is equally likely, so this bounds what
+// the belief's gap can add to the gap at b0, whichever way it is reached. Weighting by reach stops
+// the search down paths of negligible probability, which at γ = 0.99 a per-depth threshold (HSVI's
+// ε γ^-t) would follow for hundreds of steps. Every call is anytime: the bounds are valid whenever
+// it stops.
 //
 // Shape accepted (identification_shape() explains a refusal in words):
 //   - absorbing states: every action keeps them with reward 0 (Cassandra's goal-state rule);
@@ -125,7 +128,8 @@ class IdentificationSolver {
   double child_belief(const double* belief, int action, int observation, double* out) const;
   Bounds frontier_bounds(const double* belief) const;
   double expected_reward(const double* belief, int action) const;
-  NodeId insert(const Key& key, const double* belief);
+  NodeId insert(const Key& key, const double* belief, double log_reach,
+                const std::uint16_t* counts);
   Key child_key(NodeId node, int action, int observation) const;
   // Bounds on Q(node, action) from its children's bounds; fills `children` (one per observation).
   Bounds lookahead(NodeId node, int action, std::vector<ChildView>& children) const;
@@ -139,9 +143,9 @@ class IdentificationSolver {
     bool stopped = false;
     bool exhausted(const IdentificationSolver& solver);
   };
-  // Expands `node` (reached with weight γ^t P(path)) and, recursively, every child whose weighted
-  // gap exceeds `delta`, then backs it up; only `forced_action` at this node when it is >= 0.
-  void expand(NodeId node, double weight, double delta, int forced_action, Budget& budget);
+  // Expands `node` and, recursively, every descendant whose reach · gap exceeds `delta`, then
+  // backs it up; at `node` only `forced_action` when it is >= 0 (and regardless of its gap).
+  void expand(NodeId node, double delta, int forced_action, Budget& budget);
   // refine() (action < 0) or refine_action().
   bool refine_to(NodeId node, int action, const RefineLimits& limits);
 
@@ -160,8 +164,12 @@ class IdentificationSolver {
   std::vector<double> beliefs_;  // [node * L + l], normalised over live states
   std::vector<Key> keys_;
   std::vector<double> lower_, upper_;
-  // The finest tolerance (delta / weight) each node's subtree was expanded to; +inf when never.
-  std::vector<double> tolerance_;
+  // log of the node's reach weight γ^t · (number of histories with its counts, bounded) ·
+  // P(one such history): an upper bound on how much its gap can add to the gap at b0.
+  std::vector<double> log_reach_;
+  std::vector<std::uint16_t> counts_;  // [node * A * O + a * O + o] = n_ao
+  // The smallest δ each node was expanded with; +inf when never.
+  std::vector<double> expanded_at_;
   std::unordered_map<Key, NodeId, KeyHash> index_;
   long expansions_ = 0;
   std::vector<ChildView> children_scratch_;     // backup()'s lookahead
