@@ -37,7 +37,7 @@ TEST(IdentificationSolver, SeedProblemBracketsTheKnownOptimalValue) {
   IdentificationSolver solver(*model.tabular());
   RefineLimits limits;
   limits.target_gap = 1e-4;
-  limits.expansions = 200000;
+  limits.expansions = 20000;
   solver.refine(solver.root(), limits);
   const Bounds v = solver.value(solver.root());
   EXPECT_LT(v.gap(), 53.9);  // narrower than the frontier's [-45, 8.9] at b0

@@ -53,7 +53,7 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
   };
   spdlog::info("solving {} exactly over count vectors (epsilon {}, time limit {} s{})",
                args.problem, args.epsilon, args.time_limit,
-               args.max_trials > 0 ? fmt::format(", at most {} trials", args.max_trials) : "");
+               args.max_trials > 0 ? fmt::format(", at most {} expansions", args.max_trials) : "");
   for (;;) {
     const double remaining = args.time_limit - elapsed();
     const long trials_left = args.max_trials > 0 ? args.max_trials - solver.expansions() : 0;
@@ -65,7 +65,7 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
     const double slice_start = elapsed();
     const bool reached = solver.refine(root, limits);
     const solvers::Bounds v = solver.value(root);
-    spdlog::info("{:7.1f} s  trials {:8}  V* in [{:.6f}, {:.6f}]  gap {:.3g}  nodes {}", elapsed(),
+    spdlog::info("{:7.1f} s  expansions {:8}  V* in [{:.6f}, {:.6f}]  gap {:.3g}  nodes {}", elapsed(),
                  solver.expansions(), v.lower, v.upper, v.gap(), solver.num_nodes());
     // The relative target shrinks with |V| as the bounds close in: check it again.
     if (reached && v.gap() <= target(v)) break;
@@ -95,7 +95,7 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
     out["gap"] = v.gap();
     out["target_gap"] = target(v);
     out["converged"] = converged;
-    out["trials"] = solver.expansions();
+    out["expansions"] = solver.expansions();
     out["nodes"] = solver.num_nodes();
     out["seconds"] = seconds;
     out["best_action"] = action_label(problem, best);
@@ -109,7 +109,7 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
   fmt::print("V*(b0) of {} (exact identification solver)\n", args.problem);
   fmt::print("  lower {:.6f}\n  upper {:.6f}\n  gap   {:.3g} ({} target {:.3g})\n", v.lower,
              v.upper, v.gap(), converged ? "reached" : "NOT reached:", target(v));
-  fmt::print("  {} trials in {:.2f} s, {} belief nodes\n", solver.expansions(), seconds,
+  fmt::print("  {} expansions in {:.2f} s, {} belief nodes\n", solver.expansions(), seconds,
              solver.num_nodes());
   fmt::print("first action: {} (Q* bounds per action at b0:", action_label(problem, best));
   for (int a = 0; a < solver.num_actions(); ++a)
@@ -121,7 +121,7 @@ void run_solve(const SolveArgs& args) {
   namespace off = solvers::offline;
   if (!(args.epsilon >= 0.0)) throw InputError("--epsilon must be >= 0");
   if (!(args.time_limit > 0.0)) throw InputError("--time-limit must be > 0 seconds");
-  if (args.max_trials < 0) throw InputError("--max-trials must be >= 0 (0: no limit)");
+  if (args.max_trials < 0) throw InputError("--max-iterations must be >= 0 (0: no limit)");
   const pomdp::Problem problem = pomdp::load_problem(args.problem);
   const pomdp::TabularModel* tables = problem.model->tabular();
   if (tables == nullptr) {
@@ -246,9 +246,9 @@ void add_solve_command(CLI::App& app) {
                   "point-based")
       ->check(CLI::IsMember({"auto", "exact", "point-based"}))
       ->capture_default_str();
-  cmd->add_option("--max-trials", args->max_trials,
-                  "Stop after this many trials (0: no limit); unlike --time-limit, the result "
-                  "repeats on any machine")
+  cmd->add_option("--max-iterations", args->max_trials,
+                  "Stop after this many node expansions (exact) or trials (point-based), 0: no "
+                  "limit; unlike --time-limit, the result repeats on any machine")
       ->capture_default_str();
   cmd->add_option(
       "--out", args->out,

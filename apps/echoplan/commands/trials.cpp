@@ -50,7 +50,11 @@ struct TrialsFlags {
 // `--solver offline`: the policy file when given, else the point-based solver run now (to its
 // default precision or time limit).
 std::unique_ptr<solvers::Solver> offline_solver(const TrialsFlags& f, const pomdp::Problem& problem) {
-  if (f.policy.empty()) spdlog::info("solving {} offline (no --policy given)", f.problem);
+  if (f.policy.empty())
+    spdlog::warn(
+        "no --policy given: solving {} offline now, for up to {} s (save a policy once with "
+        "`echoplan solve --method point-based --out DIR` and pass --policy DIR/policy.json)",
+        f.problem, solvers::offline::SolverOptions{}.time_limit_seconds);
   return solvers::offline::make_offline_solver(problem.model, {}, f.policy, f.problem);
 }
 
@@ -117,6 +121,9 @@ class ProgressLog final : public experiment::TrialObserver {
 void run_trials_command(const TrialsFlags& f) {
   const pomdp::Problem problem = pomdp::load_problem(f.problem);
   const std::string solver_name = f.solver.empty() ? problem.planner.solver : f.solver;
+  if (!f.policy.empty() && solver_name != "offline")
+    throw InputError("--policy is for --solver offline; the " + solver_name +
+                     " solver plans online and would ignore it");
   const solvers::SearchOptions options = search_options(f, problem);
   auto solver = solver_name == "offline" ? offline_solver(f, problem)
                                           : solvers::make_solver(solver_name, problem.model, options);
@@ -196,13 +203,19 @@ void add_trials_command(CLI::App& app) {
   cmd->add_option("--solver", flags->solver, "abt, pomcp or offline (default: the problem file's)");
   cmd->add_option("--policy", flags->policy,
                   "--solver offline: policy.json from `echoplan solve --out` (else solved now)");
-  cmd->add_option("--trials", flags->trials, "Number of trials, true state drawn from b0")
-      ->capture_default_str();
+  auto* trials = cmd->add_option("--trials", flags->trials,
+                                 "Number of trials, true state drawn from b0")
+                     ->check(CLI::PositiveNumber)
+                     ->capture_default_str();
   cmd->add_option("--per-object", flags->per_object,
-                  "Instead of --trials: this many trials per object (the seed used 10)");
+                  "Instead of --trials: this many trials per object (the seed used 10)")
+      ->check(CLI::PositiveNumber)
+      ->excludes(trials);
   auto* episodes = cmd->add_option("--episodes", flags->episodes,
-                                   "Search episodes per step (reproducible bit for bit)");
-  auto* step_ms = cmd->add_option("--step-ms", flags->step_ms, "Search wall time per step, ms");
+                                   "Search episodes per step (reproducible bit for bit)")
+                       ->check(CLI::PositiveNumber);
+  auto* step_ms = cmd->add_option("--step-ms", flags->step_ms, "Search wall time per step, ms")
+                      ->check(CLI::PositiveNumber);
   episodes->excludes(step_ms);
   cmd->add_option("--max-steps", flags->max_steps, "Stop a trial after this many steps")
       ->capture_default_str();
