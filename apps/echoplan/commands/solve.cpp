@@ -65,8 +65,8 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
     const double slice_start = elapsed();
     const bool reached = solver.refine(root, limits);
     const solvers::Bounds v = solver.value(root);
-    spdlog::info("{:7.1f} s  expansions {:8}  V* in [{:.6f}, {:.6f}]  gap {:.3g}  nodes {}", elapsed(),
-                 solver.expansions(), v.lower, v.upper, v.gap(), solver.num_nodes());
+    spdlog::info("{:7.1f} s  expansions {:8}  V* in [{:.6f}, {:.6f}]  gap {:.3g}  nodes {}",
+                 elapsed(), solver.expansions(), v.lower, v.upper, v.gap(), solver.num_nodes());
     // The relative target shrinks with |V| as the bounds close in: check it again.
     if (reached && v.gap() <= target(v)) break;
     // Otherwise go on only when the slice ran out of time (not stalled, not at the node cap).
