@@ -22,8 +22,8 @@ struct RandomProblemSettings {
   int objects = 16;            // >= 2
   int sensing_actions = 4;     // >= 1
   double concentration = 1.5;  // > 0, see above
-  int bins = 2;                // sorting actions, 2 to min(26, objects)
   std::uint64_t seed = 1;      // recorded in the problem's name
+  int bins = 2;                // sorting actions, 2 to min(26, objects)
 };
 
 // Throws std::invalid_argument for settings out of range.
