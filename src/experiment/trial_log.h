@@ -1,13 +1,18 @@
 // Writes trial results as they finish: DIR/trials.csv, DIR/steps.csv and, at the end,
-// DIR/summary.json. Rows are flushed after every trial, so an interrupted run leaves valid CSV files
-// holding every finished trial. Numbers are printed with a fixed format, so the same results give
-// byte-identical files.
+// DIR/summary.json. Rows are flushed after every trial, so an interrupted run leaves valid CSV
+// files holding every finished trial. Numbers are printed with a fixed format, so the same results
+// give byte-identical files.
 //
-// trials.csv: trial, true_state, believed_state, steps, n_<action>... , discounted_reward, collision
-// steps.csv:  trial, step, action, observation, <belief column per value of discrete variable 0>...,
+// trials.csv: trial, true_state, believed_state, steps, n_<action>... , discounted_reward,
+// collision steps.csv:  trial, step, action, observation, <belief column per value of discrete
+// variable 0>...,
 //             reward, episodes
 //   belief columns are particle counts ("particles_<value>", the columns of the seed's Table 5.2)
 //   when the belief holds `belief_particles` > 0 particles, probabilities ("p_<value>") otherwise.
+//
+// read_steps_csv() reads steps.csv back (the action and observation history of every trial), for
+// `echoplan certify`; any writer of the same columns (the closed loop, another planner) can be
+// read.
 #pragma once
 
 #include <filesystem>
@@ -24,11 +29,13 @@ namespace echoplan::experiment {
 class TrialLog final : public TrialObserver {
  public:
   // Creates `directory` if needed; throws InputError when it cannot be written.
-  TrialLog(const std::filesystem::path& directory, const pomdp::ModelSpec& spec, int belief_particles);
+  TrialLog(const std::filesystem::path& directory, const pomdp::ModelSpec& spec,
+           int belief_particles);
 
   void trial_finished(const TrialRecord& trial, const std::vector<StepRecord>& steps) override;
 
-  // Writes summary.json: the summary's fields plus everything in `run` (problem, solver, seed, ...).
+  // Writes summary.json: the summary's fields plus everything in `run` (problem, solver, seed,
+  // ...).
   void write_summary(const TrialSummary& summary, const nlohmann::json& run) const;
 
  private:
@@ -41,6 +48,27 @@ class TrialLog final : public TrialObserver {
   std::ofstream trials_;
   std::ofstream steps_;
 };
+
+// One logged decision: the action taken and what was heard after it.
+struct LoggedStep {
+  int step = 0;
+  int action = 0;       // index into the model's action names
+  int observation = 0;  // index into the model's (discrete) observation names
+  double reward = 0.0;
+  int line = 0;  // 1-based line in steps.csv, for messages
+};
+
+struct LoggedTrial {
+  int trial = 0;
+  std::vector<LoggedStep> steps;  // in step order, 0, 1, 2, ...
+};
+
+// Reads steps.csv (columns found by their header names: trial, step, action, observation, reward;
+// others are ignored), naming actions and observations as in `spec`. Trials come in file order.
+// Throws InputError naming the file and line of a missing column, an unknown action or
+// observation, a bad number, or a step out of order.
+std::vector<LoggedTrial> read_steps_csv(const std::filesystem::path& path,
+                                        const pomdp::ModelSpec& spec);
 
 // The summary as JSON (the content of summary.json without the run description).
 nlohmann::json summary_json(const TrialSummary& summary, const pomdp::ModelSpec& spec);

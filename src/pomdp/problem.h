@@ -22,11 +22,13 @@ struct BeliefSettings {
 };
 
 // The planner defaults a problem file suggests; the trials command uses them unless flags override.
-// Exactly one of the two budgets is positive.
+// Exactly one of the two budgets is positive. Without a planner section (every .pomdp file) the
+// budget is 1000 episodes per step: reproducible, and quick on small problems (the seed's own file
+// asks for its 2 s per step explicitly).
 struct PlannerDefaults {
   std::string solver = "abt";  // "abt", "pomcp" or "offline"
-  int episodes = 0;            // episodes per step (0: use step_ms)
-  double step_ms = 2000.0;     // wall time per step in ms (0: use episodes); the seed used 2 s
+  int episodes = 1000;         // episodes per step (0: use step_ms)
+  double step_ms = 0.0;        // wall time per step in ms (0: use episodes); the seed used 2 s
   int depth = 100;             // maximum search depth in steps
   double exploration = 110.0;  // UCB exploration constant (in reward units)
 };

@@ -19,8 +19,12 @@ expect_input_error() {
 }
 
 expect_input_error "missing problem file" "nope.yaml: cannot open" --problem "$work/nope.yaml" --out "$work/o"
-expect_input_error "zero trials" "trials must be >= 1" --problem "$problem" --out "$work/o" --trials 0
-expect_input_error "negative per-object" "per-object must be >= 0" --problem "$problem" --out "$work/o" --per-object -2
+expect_input_error "zero trials" "trials: must be a number greater than 0" --problem "$problem" --out "$work/o" --trials 0
+expect_input_error "negative per-object" "per-object: must be a number greater than 0" --problem "$problem" --out "$work/o" --per-object -2
+expect_input_error "negative episodes" "episodes: must be a number greater than 0, got -5" --problem "$problem" --out "$work/o" --episodes -5
+expect_input_error "zero step time" "step-ms: must be a number greater than 0" --problem "$problem" --out "$work/o" --step-ms 0
+expect_input_error "trials and per-object" "excludes" --problem "$problem" --out "$work/o" --trials 3 --per-object 2
+expect_input_error "policy with an online solver" "policy is for --solver offline" --problem "$problem" --out "$work/o" --solver abt --policy x.json
 expect_input_error "both budgets" "excludes" --problem "$problem" --out "$work/o" --episodes 5 --step-ms 3
 expect_input_error "unknown solver" "solver 'foo' is not one of" --problem "$problem" --out "$work/o" --solver foo
 expect_input_error "unknown leaf value" "leaf value 'random'" --problem "$problem" --out "$work/o" --leaf random
@@ -38,6 +42,13 @@ for file in trials.csv steps.csv summary.json; do
   cmp -s "$work/a/$file" "$work/b/$file" || { echo "FAIL: $file differs between runs"; failures=$((failures + 1)); }
 done
 [ "$(wc -l <"$work/a/trials.csv")" -eq 5 ] || { echo "FAIL: trials.csv should hold a header and 4 rows"; failures=$((failures + 1)); }
+
+# certify reads the steps.csv that trials wrote and answers with the documented JSON fields.
+"$bin" certify --problem "$problem" --steps "$work/a/steps.csv" --expansions 2000 --json >"$work/cert" 2>/dev/null \
+  || { echo "FAIL: certify exited $?"; failures=$((failures + 1)); }
+for key in vstar_lower vstar_upper regret_mean regret_ci95 '"trials":4'; do
+  grep -q -- "$key" "$work/cert" || { echo "FAIL: certify --json lacks $key:"; cat "$work/cert"; failures=$((failures + 1)); }
+done
 
 # The offline policy as a solver: solve Tiger, then run it; a policy for another problem is refused.
 "$bin" solve --problem "$src/problems/tiger.pomdp" --out "$work/tiger_policy" >/dev/null 2>&1 \

@@ -176,3 +176,16 @@ TEST(ProblemYaml, GarbageIsAnErrorNotACrash) {
 
 }  // namespace
 }  // namespace echoplan::pomdp
+
+namespace echoplan::pomdp {
+namespace {
+
+TEST(ProblemDefaults, FilesWithoutAPlannerSectionGetAnEpisodeBudget) {
+  // A .pomdp file cannot say how to plan; a wall-time default would make runs machine-dependent.
+  const Problem tiger = load_problem(testing::repo_file("problems/tiger.pomdp"));
+  EXPECT_EQ(tiger.planner.episodes, 1000);
+  EXPECT_EQ(tiger.planner.step_ms, 0.0);
+}
+
+}  // namespace
+}  // namespace echoplan::pomdp

@@ -44,8 +44,13 @@ struct TrialsFlags {
 
 // `--solver offline`: the policy file when given, else the point-based solver run now (to its
 // default precision or time limit).
-std::unique_ptr<solvers::Solver> offline_solver(const TrialsFlags& f, const pomdp::Problem& problem) {
-  if (f.policy.empty()) spdlog::info("solving {} offline (no --policy given)", f.problem);
+std::unique_ptr<solvers::Solver> offline_solver(const TrialsFlags& f,
+                                                const pomdp::Problem& problem) {
+  if (f.policy.empty())
+    spdlog::warn(
+        "no --policy given: solving {} offline now, for up to {} s (save a policy once with "
+        "`echoplan solve --method point-based --out DIR` and pass --policy DIR/policy.json)",
+        f.problem, solvers::offline::SolverOptions{}.time_limit_seconds);
   return solvers::offline::make_offline_solver(problem.model, {}, f.policy, f.problem);
 }
 
@@ -99,8 +104,9 @@ class ProgressLog final : public experiment::TrialObserver {
     log_.trial_finished(t, steps);
     const auto& names = spec_.state.discrete_value_names;
     auto name = [&](int v) { return names.empty() ? std::to_string(v) : names[0][v]; };
-    spdlog::info("trial {}/{}: true {}, believed {}, {} steps, discounted reward {:.3f}", t.trial + 1,
-                 total_, name(t.true_state), name(t.believed_state), t.steps, t.discounted_reward);
+    spdlog::info("trial {}/{}: true {}, believed {}, {} steps, discounted reward {:.3f}",
+                 t.trial + 1, total_, name(t.true_state), name(t.believed_state), t.steps,
+                 t.discounted_reward);
   }
 
  private:
@@ -112,9 +118,13 @@ class ProgressLog final : public experiment::TrialObserver {
 void run_trials_command(const TrialsFlags& f) {
   const pomdp::Problem problem = pomdp::load_problem(f.problem);
   const std::string solver_name = f.solver.empty() ? problem.planner.solver : f.solver;
+  if (!f.policy.empty() && solver_name != "offline")
+    throw InputError("--policy is for --solver offline; the " + solver_name +
+                     " solver plans online and would ignore it");
   const solvers::SearchOptions options = search_options(f, problem);
-  auto solver = solver_name == "offline" ? offline_solver(f, problem)
-                                          : solvers::make_solver(solver_name, problem.model, options);
+  auto solver = solver_name == "offline"
+                    ? offline_solver(f, problem)
+                    : solvers::make_solver(solver_name, problem.model, options);
   pomdp::ModelEnvironment environment(problem.model);
 
   experiment::TrialOptions trial_options;
@@ -148,12 +158,14 @@ void run_trials_command(const TrialsFlags& f) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const experiment::TrialSummary summary = experiment::summarize(records, problem.model->num_actions());
+  const experiment::TrialSummary summary =
+      experiment::summarize(records, problem.model->num_actions());
   nlohmann::json run = {
       {"problem", f.problem},
       {"solver", solver_name},
-      {"budget", {{trial_options.budget.kind == solvers::Budget::Kind::episodes ? "episodes" : "step_ms",
-                   trial_options.budget.amount}}},
+      {"budget",
+       {{trial_options.budget.kind == solvers::Budget::Kind::episodes ? "episodes" : "step_ms",
+         trial_options.budget.amount}}},
       {"seed", f.seed},
       {"trials_requested", total},
       {"per_object", f.per_object},
@@ -177,11 +189,26 @@ void run_trials_command(const TrialsFlags& f) {
 
 }  // namespace
 
+// A flag that must be a number above 0, with a message that says so.
+CLI::Validator positive() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        try {
+          std::size_t used = 0;
+          if (std::stod(text, &used) > 0.0 && used == text.size()) return "";
+        } catch (const std::exception&) {
+        }
+        return "must be a number greater than 0, got " + text;
+      },
+      "> 0");
+}
+
 void add_trials_command(CLI::App& app) {
   auto flags = std::make_shared<TrialsFlags>();
   auto* cmd = app.add_subcommand(
       "trials",
-      "Run planning trials on a problem: the true object is drawn per trial, the solver plans each\n"
+      "Run planning trials on a problem: the true object is drawn per trial, the solver plans "
+      "each\n"
       "step, the model acts as the world. Writes DIR/trials.csv, DIR/steps.csv, DIR/summary.json\n"
       "and prints a summary. Example:\n"
       "  echoplan trials --problem problems/audio_objects.yaml --per-object 10 --episodes 2000 "
@@ -190,18 +217,25 @@ void add_trials_command(CLI::App& app) {
   cmd->add_option("--solver", flags->solver, "abt, pomcp or offline (default: the problem file's)");
   cmd->add_option("--policy", flags->policy,
                   "--solver offline: policy.json from `echoplan solve --out` (else solved now)");
-  cmd->add_option("--trials", flags->trials, "Number of trials, true state drawn from b0")
-      ->capture_default_str();
+  auto* trials =
+      cmd->add_option("--trials", flags->trials, "Number of trials, true state drawn from b0")
+          ->check(positive())
+          ->capture_default_str();
   cmd->add_option("--per-object", flags->per_object,
-                  "Instead of --trials: this many trials per object (the seed used 10)");
+                  "Instead of --trials: this many trials per object (the seed used 10)")
+      ->check(positive())
+      ->excludes(trials);
   auto* episodes = cmd->add_option("--episodes", flags->episodes,
-                                   "Search episodes per step (reproducible bit for bit)");
-  auto* step_ms = cmd->add_option("--step-ms", flags->step_ms, "Search wall time per step, ms");
+                                   "Search episodes per step (reproducible bit for bit)")
+                       ->check(positive());
+  auto* step_ms = cmd->add_option("--step-ms", flags->step_ms, "Search wall time per step, ms")
+                      ->check(positive());
   episodes->excludes(step_ms);
   cmd->add_option("--max-steps", flags->max_steps, "Stop a trial after this many steps")
       ->capture_default_str();
   cmd->add_option("--seed", flags->seed, "Seed of every random choice")->capture_default_str();
-  cmd->add_option("--out", flags->out, "Folder for trials.csv, steps.csv, summary.json")->required();
+  cmd->add_option("--out", flags->out, "Folder for trials.csv, steps.csv, summary.json")
+      ->required();
   cmd->add_option("--exploration", flags->exploration,
                   "UCB exploration constant c, reward units (default: the problem file's)");
   cmd->add_option("--depth", flags->depth, "Maximum search depth (default: the problem file's)");
