@@ -34,6 +34,8 @@ int main(int argc, char** argv) {
   echoplan::cli::add_dataset_command(app);
   echoplan::cli::add_features_command(app);
   echoplan::cli::add_heatmap_command(app);
+  echoplan::cli::add_experiment_command(app);
+  echoplan::cli::add_merge_command(app);
 
   try {
     app.parse(argc, argv);

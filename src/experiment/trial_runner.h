@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,9 @@ struct StepRecord {
   std::vector<double> belief;
   double reward = 0.0;
   std::int64_t episodes = 0;  // search episodes run for this decision
+  // The observation service's calibrated probability of the heard class; absent when the world
+  // has no classifier (the model as the world samples its table).
+  std::optional<double> heard_probability;
 };
 
 // One finished trial. `believed_state` is the most likely value of discrete variable 0 under the
@@ -74,6 +78,19 @@ struct TrialSetup {
   std::function<pomdp::BeliefPtr(Rng&)> make_belief;        // the initial belief of a trial
   const std::atomic<bool>* stop_requested = nullptr;        // optional: checked between steps
 };
+
+// One trial's results: the record and its steps.
+struct TrialResult {
+  TrialRecord record;
+  std::vector<StepRecord> steps;
+};
+
+// Runs trial number `trial` alone: its random streams come from (options.seed, trial), so the result
+// is the same whichever trials ran before it, in this process or another. `fixed_value` >= 0 fixes
+// discrete state variable 0 of the true state (the object); -1 draws it from the initial belief.
+// Returns nothing when stopped before the trial ended (a cut-short trial is dropped whole).
+std::optional<TrialResult> run_trial(const TrialSetup& setup, const TrialOptions& options, int trial,
+                                     int fixed_value);
 
 // Runs the trials, reporting each to `observer`. Returns the finished trials (fewer than asked when
 // stopped); a trial cut short by a stop request is dropped whole.

@@ -5,6 +5,7 @@
 // classifier, or a real robot, implement the same interface.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "common/rng.h"
@@ -17,6 +18,9 @@ struct Outcome {
   double reward = 0.0;
   bool terminal = false;
   bool collision = false;
+  // The observation service's calibrated probability of the heard class, for worlds that classify a
+  // recording; absent when the observation is drawn from a table.
+  std::optional<double> heard_probability;
 };
 
 class Environment {

@@ -19,5 +19,7 @@ void add_synth_command(CLI::App& app);
 void add_dataset_command(CLI::App& app);
 void add_features_command(CLI::App& app);
 void add_heatmap_command(CLI::App& app);
+void add_experiment_command(CLI::App& app);
+void add_merge_command(CLI::App& app);
 
 }  // namespace echoplan::cli
