@@ -61,7 +61,8 @@ std::string names_of(const pomdp::ModelSpec& spec) {
 void check_writable(const fs::path& directory) {
   std::error_code error;
   fs::create_directories(directory, error);
-  if (error) throw InputError(directory.string(), 0, "cannot create the output folder: " + error.message());
+  if (error)
+    throw InputError(directory.string(), 0, "cannot create the output folder: " + error.message());
   const fs::path probe = directory / ".echoplan-write-test";
   {
     std::ofstream out(probe);
@@ -84,13 +85,16 @@ Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) 
   const pomdp::Problem world = pomdp::load_problem(config.world.problem);
   const pomdp::ModelSpec& spec = world.model->spec();
   if (spec.state.discrete_value_names.empty())
-    throw InputError(world.source_path, 0, "a campaign needs an object-identification problem (objects as its state)");
+    throw InputError(world.source_path, 0,
+                     "a campaign needs an object-identification problem (objects as its state)");
   for (const pomdp::Problem& p : problems)
     if (names_of(p.model->spec()) != names_of(spec))
-      throw InputError(p.source_path, 0,
-                       fmt::format("the arms and the world must share objects, actions and observations: this file "
-                                   "has {}, the world's {} has {}",
-                                   names_of(p.model->spec()), world.source_path, names_of(spec)));
+      throw InputError(
+          p.source_path, 0,
+          fmt::format(
+              "the arms and the world must share objects, actions and observations: this file "
+              "has {}, the world's {} has {}",
+              names_of(p.model->spec()), world.source_path, names_of(spec)));
   c.results.spec = spec;
   c.results.config = config;
   c.results.planned_trials = config.total_trials();
@@ -98,7 +102,8 @@ Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) 
                                    ? problems.front().belief.particles
                                    : 0;
   for (const pomdp::Problem& p : problems)
-    if ((p.belief.type == pomdp::BeliefSettings::Type::particle ? p.belief.particles : 0) != c.results.belief_particles)
+    if ((p.belief.type == pomdp::BeliefSettings::Type::particle ? p.belief.particles : 0) !=
+        c.results.belief_particles)
       c.results.belief_particles = 0;  // arms disagree: show probabilities
 
   // Every solver can be built (unknown names and bad settings fail now, not in a worker).
@@ -111,15 +116,17 @@ Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) 
     solvers::make_solver(config.planner.solver, p.model, search);
   }
 
-  // Objects: each group plays an object of the problems, and every object named has a catalogue entry.
+  // Objects: each group plays an object of the problems, and every object named has a catalogue
+  // entry.
   const auto& objects = spec.state.discrete_value_names[0];
   for (const ObjectGroup& g : config.groups)
     if (std::find(objects.begin(), objects.end(), g.plays) == objects.end())
       throw InputError(config.source, 0,
-                       fmt::format("trial group '{}' plays '{}', which is not an object of {}", g.object, g.plays,
-                                   world.source_path));
+                       fmt::format("trial group '{}' plays '{}', which is not an object of {}",
+                                   g.object, g.plays, world.source_path));
   const sim::Catalogue catalogue =
-      sim::load_catalogue(config.training.catalogue.empty() ? sim::default_catalogue_path() : config.training.catalogue);
+      sim::load_catalogue(config.training.catalogue.empty() ? sim::default_catalogue_path()
+                                                            : config.training.catalogue);
   c.training_objects = config.training.objects.empty() ? objects : config.training.objects;
   c.training_actions = config.training.actions;
   // By default the problems' sound-making actions the simulator can perform.
@@ -135,8 +142,8 @@ Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) 
       std::string list;
       for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
       throw InputError(config.source, 0,
-                       fmt::format("object '{}' has no entry in the catalogue {} (it has: {})", name, catalogue.source,
-                                   list));
+                       fmt::format("object '{}' has no entry in the catalogue {} (it has: {})",
+                                   name, catalogue.source, list));
     }
   if (!config.training.recordings.empty() && !fs::is_directory(config.training.recordings))
     throw InputError(config.training.recordings, 0, "the recordings folder does not exist");
@@ -148,10 +155,12 @@ Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) 
   const nlohmann::json mine = description(config);
   if (fs::exists(described)) {
     const nlohmann::json theirs = nlohmann::json::parse(read_text(described), nullptr, false);
-    if (theirs.is_discarded() || !theirs.contains("identity") || theirs["identity"] != mine["identity"])
-      throw InputError(directory.string(), 0,
-                       "holds a different campaign (its campaign.json differs from this configuration); "
-                       "choose another --out, or remove the folder to start again");
+    if (theirs.is_discarded() || !theirs.contains("identity") ||
+        theirs["identity"] != mine["identity"])
+      throw InputError(
+          directory.string(), 0,
+          "holds a different campaign (its campaign.json differs from this configuration); "
+          "choose another --out, or remove the folder to start again");
   }
   write_text(described, mine.dump(2) + "\n");
   return c;
@@ -162,13 +171,15 @@ fs::path training_recordings(const Campaign& campaign) {
   return campaign.directory / "training" / "recordings";
 }
 
-bool synthesise_training_set(const Campaign& campaign, const std::function<void(int, int)>& progress,
+bool synthesise_training_set(const Campaign& campaign,
+                             const std::function<void(int, int)>& progress,
                              const std::atomic<bool>& stop) {
   const CampaignConfig& config = campaign.config;
   if (!config.training.recordings.empty() || config.training.recordings_per_pair == 0) return true;
   const fs::path folder = training_recordings(campaign);
-  const int total = config.training.recordings_per_pair * static_cast<int>(campaign.training_objects.size() *
-                                                                           campaign.training_actions.size());
+  const int total =
+      config.training.recordings_per_pair *
+      static_cast<int>(campaign.training_objects.size() * campaign.training_actions.size());
   // Complete already (a resumed run): the manifest lists every clip.
   {
     std::ifstream manifest(folder / "manifest.csv");
@@ -178,17 +189,21 @@ bool synthesise_training_set(const Campaign& campaign, const std::function<void(
     if (rows == total) return true;
   }
   const sim::Catalogue catalogue =
-      sim::load_catalogue(config.training.catalogue.empty() ? sim::default_catalogue_path() : config.training.catalogue);
-  const sim::SimConfig sim_config =
-      config.training.sim_config.empty() ? sim::SimConfig{} : sim::load_sim_config(config.training.sim_config);
+      sim::load_catalogue(config.training.catalogue.empty() ? sim::default_catalogue_path()
+                                                            : config.training.catalogue);
+  const sim::SimConfig sim_config = config.training.sim_config.empty()
+                                        ? sim::SimConfig{}
+                                        : sim::load_sim_config(config.training.sim_config);
   sim::DatasetOptions options;
   options.objects = campaign.training_objects;
   options.actions = campaign.training_actions;
   options.per_pair = config.training.recordings_per_pair;
-  options.seed = derive_seed(config.seed, {0x747261696eull});  // "train": the training set's own stream
+  options.seed =
+      derive_seed(config.seed, {0x747261696eull});  // "train": the training set's own stream
   options.output_dir = folder.string();
   const sim::DatasetSummary summary = sim::write_dataset(
-      catalogue, sim_config, options, [&](int done, int all, const std::string&) { progress(done, all); }, stop);
+      catalogue, sim_config, options,
+      [&](int done, int all, const std::string&) { progress(done, all); }, stop);
   return !summary.interrupted;
 }
 
@@ -226,8 +241,8 @@ std::string rebuild_report(const Campaign& campaign, bool figures) {
   const std::string text = summary_text(results);
   write_text(dir / "summary.txt", text);
   if (figures) {
-    const std::vector<TemplateMatrix> templates =
-        template_matrices(training_recordings(campaign), campaign.training_objects, campaign.training_actions);
+    const std::vector<TemplateMatrix> templates = template_matrices(
+        training_recordings(campaign), campaign.training_objects, campaign.training_actions);
     const std::vector<Figure> drawn = draw_figures(dir, results, templates);
     write_text(dir / "index.html", html_report(dir, results, drawn));
   }
@@ -248,12 +263,14 @@ std::string merge_campaigns(const fs::path& directory, const std::vector<fs::pat
       first = j;
     else if (j["identity"] != first["identity"])
       throw InputError(shard.string(), 0,
-                       fmt::format("holds another campaign than {} (their campaign.json differ)", shards[0].string()));
+                       fmt::format("holds another campaign than {} (their campaign.json differ)",
+                                   shards[0].string()));
   }
   for (const fs::path& shard : shards)
     if (fs::exists(directory) && fs::equivalent(shard, directory))
       throw InputError(directory.string(), 0, "the merged folder must not be one of the shards");
-  const CampaignConfig config = campaign_config_from_json(first["config"], (shards[0] / kDescription).string());
+  const CampaignConfig config =
+      campaign_config_from_json(first["config"], (shards[0] / kDescription).string());
   const Campaign campaign = open_campaign(config, directory);
 
   // The training set of the first shard that has one (every shard synthesised the same one).
@@ -264,7 +281,9 @@ std::string merge_campaigns(const fs::path& directory, const std::vector<fs::pat
       std::error_code error;
       fs::remove_all(directory / "training", error);
       fs::copy(source, directory / "training", fs::copy_options::recursive, error);
-      if (error) throw InputError((directory / "training").string(), 0, "cannot copy the training set: " + error.message());
+      if (error)
+        throw InputError((directory / "training").string(), 0,
+                         "cannot copy the training set: " + error.message());
       break;
     }
 
@@ -273,8 +292,9 @@ std::string merge_campaigns(const fs::path& directory, const std::vector<fs::pat
     for (JournalEntry& e : read_journal(shard / kJournal)) {
       auto [it, inserted] = by_id.emplace(e.id, e);
       if (!inserted && !(it->second == e))
-        throw InputError((shard / kJournal).string(), 0,
-                         fmt::format("trial {} differs from the same trial in another shard", e.id));
+        throw InputError(
+            (shard / kJournal).string(), 0,
+            fmt::format("trial {} differs from the same trial in another shard", e.id));
     }
   for (JournalEntry& e : read_journal(directory / kJournal)) by_id.emplace(e.id, std::move(e));
   std::vector<JournalEntry> entries;

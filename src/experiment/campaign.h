@@ -3,9 +3,10 @@
 //
 // The output folder DIR holds
 //   campaign.json        the campaign: its configuration and identity (written before any trial)
-//   training/recordings  the synthesised training set (DIR/<object>/<action>/NNN.wav + manifest.csv)
-//   journal.jsonl        one line per finished trial (trial_journal.h), in id order once complete
-//   trials.csv, steps.csv, arms/<arm>/, summary.json, summary.txt, figures/, index.html
+//   training/recordings  the synthesised training set (DIR/<object>/<action>/NNN.wav +
+//   manifest.csv) journal.jsonl        one line per finished trial (trial_journal.h), in id order
+//   once complete trials.csv, steps.csv, arms/<arm>/, summary.json, summary.txt, figures/,
+//   index.html
 //                        the report: a pure function of the above, rebuilt at the end of every run
 // Running the same command again continues the campaign in DIR: finished trials are skipped.
 #pragma once
@@ -26,8 +27,8 @@ namespace echoplan::experiment {
 struct Campaign {
   CampaignConfig config;
   std::filesystem::path directory;
-  CampaignResults results;                     // spec, particles, planned trials (entries: none yet)
-  std::vector<std::string> training_objects;   // the training set's objects and actions
+  CampaignResults results;                    // spec, particles, planned trials (entries: none yet)
+  std::vector<std::string> training_objects;  // the training set's objects and actions
   std::vector<std::string> training_actions;
 };
 
@@ -44,7 +45,8 @@ std::filesystem::path training_recordings(const Campaign& campaign);
 // Synthesises the training set into DIR/training/recordings unless it is complete already or the
 // campaign uses existing recordings. `progress(done, total)` after each clip. Returns false when
 // stopped.
-bool synthesise_training_set(const Campaign& campaign, const std::function<void(int, int)>& progress,
+bool synthesise_training_set(const Campaign& campaign,
+                             const std::function<void(int, int)>& progress,
                              const std::atomic<bool>& stop);
 
 // The world of the campaign's trials, for run_campaign_trials.
@@ -60,6 +62,7 @@ std::string rebuild_report(const Campaign& campaign, bool figures = true);
 // Joins the shard folders of one campaign into `directory`: the same campaign.json in each (else
 // InputError), the training set of the first, every journal entry (an id present twice must be the
 // same trial), then the report. The result is byte for byte the folder one unsharded run writes.
-std::string merge_campaigns(const std::filesystem::path& directory, const std::vector<std::filesystem::path>& shards);
+std::string merge_campaigns(const std::filesystem::path& directory,
+                            const std::vector<std::filesystem::path>& shards);
 
 }  // namespace echoplan::experiment

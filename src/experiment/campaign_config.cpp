@@ -100,7 +100,8 @@ CampaignConfig parse_campaign_config(const std::string& yaml_text, const std::st
     f.only_keys(a, {"name", "problem"}, "an arm");
     ArmConfig arm;
     arm.name = f.name(f.require(a, "name", "an arm"), "arm name");
-    if (!is_label(arm.name)) f.fail(a, "arm name '" + arm.name + "' may hold only letters, digits, '_' and '-'");
+    if (!is_label(arm.name))
+      f.fail(a, "arm name '" + arm.name + "' may hold only letters, digits, '_' and '-'");
     for (const ArmConfig& other : c.arms)
       if (other.name == arm.name) f.fail(a, "two arms are named '" + arm.name + "'");
     arm.problem = resolve(source, f.name(f.require(a, "problem", "an arm"), "arm problem"));
@@ -117,14 +118,17 @@ CampaignConfig parse_campaign_config(const std::string& yaml_text, const std::st
 
   if (auto t = f.optional(root, "training_set", "campaign")) {
     f.expect_map(t, "training_set");
-    f.only_keys(t, {"recordings_per_pair", "objects", "actions", "recordings", "catalogue", "sim_config"},
-                "training_set");
+    f.only_keys(
+        t, {"recordings_per_pair", "objects", "actions", "recordings", "catalogue", "sim_config"},
+        "training_set");
     if (auto n = f.optional(t, "recordings", "training_set"))
       c.training.recordings = resolve(source, f.name(n, "recordings"));
     if (auto n = f.optional(t, "recordings_per_pair", "training_set"))
       c.training.recordings_per_pair = f.non_negative_int(n, "recordings_per_pair");
-    if (auto n = f.optional(t, "objects", "training_set")) c.training.objects = f.names(n, "objects");
-    if (auto n = f.optional(t, "actions", "training_set")) c.training.actions = f.names(n, "actions");
+    if (auto n = f.optional(t, "objects", "training_set"))
+      c.training.objects = f.names(n, "objects");
+    if (auto n = f.optional(t, "actions", "training_set"))
+      c.training.actions = f.names(n, "actions");
     if (auto n = f.optional(t, "catalogue", "training_set"))
       c.training.catalogue = resolve(source, f.name(n, "catalogue"));
     if (auto n = f.optional(t, "sim_config", "training_set"))
@@ -132,7 +136,8 @@ CampaignConfig parse_campaign_config(const std::string& yaml_text, const std::st
   }
 
   const YAML::Node trials = f.require(root, "trials", "the campaign");
-  if (!trials.IsSequence() || trials.size() == 0) f.fail(trials, "trials must be a non-empty list of object groups");
+  if (!trials.IsSequence() || trials.size() == 0)
+    f.fail(trials, "trials must be a non-empty list of object groups");
   for (const YAML::Node& g : trials) {
     f.expect_map(g, "a trial group");
     f.only_keys(g, {"object", "plays", "trials"}, "a trial group");
@@ -145,7 +150,8 @@ CampaignConfig parse_campaign_config(const std::string& yaml_text, const std::st
       if (group.trials < 1) f.fail(n, "trials must be >= 1");
     }
     for (const ObjectGroup& other : c.groups)
-      if (other.object == group.object) f.fail(g, "object '" + group.object + "' has two trial groups");
+      if (other.object == group.object)
+        f.fail(g, "object '" + group.object + "' has two trial groups");
     c.groups.push_back(group);
   }
 
@@ -155,9 +161,12 @@ CampaignConfig parse_campaign_config(const std::string& yaml_text, const std::st
     if (auto n = f.optional(p, "solver", "planner")) c.planner.solver = f.name(n, "solver");
     if (c.planner.solver != "abt" && c.planner.solver != "pomcp")
       f.fail(p, "planner solver '" + c.planner.solver + "' is not one of: abt, pomcp");
-    if (auto n = f.optional(p, "episodes", "planner")) c.planner.episodes = f.non_negative_int(n, "episodes");
-    if (auto n = f.optional(p, "step_ms", "planner")) c.planner.step_ms = f.non_negative_int(n, "step_ms");
-    if (auto n = f.optional(p, "max_steps", "planner")) c.planner.max_steps = f.non_negative_int(n, "max_steps");
+    if (auto n = f.optional(p, "episodes", "planner"))
+      c.planner.episodes = f.non_negative_int(n, "episodes");
+    if (auto n = f.optional(p, "step_ms", "planner"))
+      c.planner.step_ms = f.non_negative_int(n, "step_ms");
+    if (auto n = f.optional(p, "max_steps", "planner"))
+      c.planner.max_steps = f.non_negative_int(n, "max_steps");
     if ((c.planner.episodes > 0) == (c.planner.step_ms > 0))
       f.fail(p, "give exactly one planning budget: episodes (reproducible) or step_ms");
     if (c.planner.max_steps < 1) f.fail(p, "max_steps must be >= 1");
@@ -179,7 +188,8 @@ nlohmann::json to_json(const CampaignConfig& c) {
   nlohmann::json j;
   j["source"] = c.source;
   j["seed"] = c.seed;
-  for (const ArmConfig& arm : c.arms) j["arms"].push_back({{"name", arm.name}, {"problem", arm.problem}});
+  for (const ArmConfig& arm : c.arms)
+    j["arms"].push_back({{"name", arm.name}, {"problem", arm.problem}});
   j["world"] = {{"type", c.world.type}, {"problem", c.world.problem}};
   j["training_set"] = {{"recordings_per_pair", c.training.recordings_per_pair},
                        {"objects", c.training.objects},
@@ -201,7 +211,8 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
     CampaignConfig c;
     c.source = j.at("source").get<std::string>();
     c.seed = j.at("seed").get<std::uint64_t>();
-    for (const auto& a : j.at("arms")) c.arms.push_back({a.at("name").get<std::string>(), a.at("problem").get<std::string>()});
+    for (const auto& a : j.at("arms"))
+      c.arms.push_back({a.at("name").get<std::string>(), a.at("problem").get<std::string>()});
     c.world.type = j.at("world").at("type").get<std::string>();
     c.world.problem = j.at("world").at("problem").get<std::string>();
     const auto& t = j.at("training_set");
@@ -212,7 +223,8 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
     c.training.catalogue = t.at("catalogue").get<std::string>();
     c.training.sim_config = t.at("sim_config").get<std::string>();
     for (const auto& g : j.at("trials"))
-      c.groups.push_back({g.at("object").get<std::string>(), g.at("plays").get<std::string>(), g.at("trials").get<int>()});
+      c.groups.push_back({g.at("object").get<std::string>(), g.at("plays").get<std::string>(),
+                          g.at("trials").get<int>()});
     const auto& p = j.at("planner");
     c.planner.solver = p.at("solver").get<std::string>();
     c.planner.episodes = p.at("episodes").get<std::int64_t>();

@@ -1,9 +1,9 @@
 // A campaign: the report's chapter 5 as data. Which training set to synthesise, which problems the
 // arms plan with, which objects the world holds and how often, the planner's budget and the seed.
 //
-// Read from YAML (format and defaults: experiments/chapter5.yaml, docs/experiment.md). Relative paths
-// in the file are relative to the file's folder. Everything is checked at load time, so a campaign
-// never fails halfway through because of its configuration.
+// Read from YAML (format and defaults: experiments/chapter5.yaml, docs/experiment.md). Relative
+// paths in the file are relative to the file's folder. Everything is checked at load time, so a
+// campaign never fails halfway through because of its configuration.
 #pragma once
 
 #include <cstdint>
@@ -19,9 +19,9 @@ struct ArmConfig {
   std::string problem;  // path of the problem file the planner uses
 };
 
-// A group of trials with one object in the world. `object` is what the world holds (a catalogue name,
-// e.g. "pringles_can_weighted"); `plays` is the problem's object that counts as the truth (the object
-// it is a variant of, e.g. "pringles_can"); equal for an original object.
+// A group of trials with one object in the world. `object` is what the world holds (a catalogue
+// name, e.g. "pringles_can_weighted"); `plays` is the problem's object that counts as the truth
+// (the object it is a variant of, e.g. "pringles_can"); equal for an original object.
 struct ObjectGroup {
   std::string object;
   std::string plays;
@@ -38,20 +38,20 @@ struct WorldConfig {
 
 // The training set synthesised before the trials (`echoplan dataset`'s library code).
 struct TrainingSetConfig {
-  int recordings_per_pair = 10;       // 0: no synthesis (and no template figures)
-  std::vector<std::string> objects;   // catalogue names; empty: the planning problems' objects
-  std::vector<std::string> actions;   // empty: the planning problems' sensing actions
-  std::string recordings;             // an existing DIR/<object>/<action>/*.wav folder to use instead
-                                      // of synthesising (e.g. real recordings); empty: synthesise
-  std::string catalogue;              // empty: the shipped catalogue
-  std::string sim_config;             // empty: built-in defaults
+  int recordings_per_pair = 10;      // 0: no synthesis (and no template figures)
+  std::vector<std::string> objects;  // catalogue names; empty: the planning problems' objects
+  std::vector<std::string> actions;  // empty: the planning problems' sensing actions
+  std::string recordings;  // an existing DIR/<object>/<action>/*.wav folder to use instead
+                           // of synthesising (e.g. real recordings); empty: synthesise
+  std::string catalogue;   // empty: the shipped catalogue
+  std::string sim_config;  // empty: built-in defaults
 };
 
 struct PlannerConfig {
-  std::string solver = "abt";     // "abt" or "pomcp"
-  std::int64_t episodes = 0;      // search episodes per step (reproducible); exactly one budget > 0
-  std::int64_t step_ms = 0;       // wall time per step (not reproducible bit for bit)
-  int max_steps = 100;            // a trial stops after this many steps
+  std::string solver = "abt";  // "abt" or "pomcp"
+  std::int64_t episodes = 0;   // search episodes per step (reproducible); exactly one budget > 0
+  std::int64_t step_ms = 0;    // wall time per step (not reproducible bit for bit)
+  int max_steps = 100;         // a trial stops after this many steps
 };
 
 struct CampaignConfig {
@@ -65,8 +65,8 @@ struct CampaignConfig {
 
   int total_trials() const;  // arms x sum of the groups' trials
 
-  // Everything that decides the results, as JSON with paths replaced by the files' contents' hashes,
-  // so a resumed or merged run can check it continues the same campaign.
+  // Everything that decides the results, as JSON with paths replaced by the files' contents'
+  // hashes, so a resumed or merged run can check it continues the same campaign.
   nlohmann::json identity() const;
 };
 

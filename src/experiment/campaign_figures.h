@@ -1,6 +1,7 @@
 // The campaign's figures, PNG and SVG, drawn by gnuplot into DIR/figures:
-//   belief_<arm>_<object>   the belief at each decision of each trial of a group (the report's Fig. 5.1)
-//   templates               mean onset-aligned log-mel of each object and action in the training set
+//   belief_<arm>_<object>   the belief at each decision of each trial of a group (the report's
+//   Fig. 5.1) templates               mean onset-aligned log-mel of each object and action in the
+//   training set
 //                           (the report's Figs. 3.1 and 3.2)
 //   confusion_<arm>         heard class against the object in the world, per sensing action
 #pragma once
@@ -23,8 +24,8 @@ struct TemplateMatrix {
   int recordings = 0;
 };
 
-// Mean log-mel (psf preset, mono) in a window of 5 frames before to 40 after each file's first onset,
-// over DIR/<object>/<action>/*.wav, for each object and action that has recordings there.
+// Mean log-mel (psf preset, mono) in a window of 5 frames before to 40 after each file's first
+// onset, over DIR/<object>/<action>/*.wav, for each object and action that has recordings there.
 std::vector<TemplateMatrix> template_matrices(const std::filesystem::path& recordings,
                                               const std::vector<std::string>& objects,
                                               const std::vector<std::string>& actions);
@@ -38,7 +39,8 @@ struct Figure {
 
 // Draws every figure with one gnuplot run per format; returns them in page order. Throws InputError
 // when gnuplot is missing or fails.
-std::vector<Figure> draw_figures(const std::filesystem::path& directory, const CampaignResults& results,
+std::vector<Figure> draw_figures(const std::filesystem::path& directory,
+                                 const CampaignResults& results,
                                  const std::vector<TemplateMatrix>& templates);
 
 }  // namespace echoplan::experiment

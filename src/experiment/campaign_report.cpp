@@ -47,7 +47,8 @@ std::string percent(double fraction) { return fmt::format("{:.0f}%", 100.0 * fra
 
 // Paired differences of discounted reward between arm `b` and arm `a`: trials with the same group
 // and index saw the same true object and world noise. Summarised like rewards (mean and 95% CI).
-TrialSummary paired_difference(const CampaignResults& results, const std::string& a, const std::string& b) {
+TrialSummary paired_difference(const CampaignResults& results, const std::string& a,
+                               const std::string& b) {
   const std::vector<TrialJob> jobs = campaign_jobs(results.config);
   std::vector<TrialRecord> differences;
   std::map<std::pair<std::string, int>, double> reward_a;
@@ -89,7 +90,8 @@ std::vector<SummaryRow> summary_rows(const CampaignResults& results) {
     bool originals = false;
     bool variants = false;
     for (const ObjectGroup& g : results.config.groups) {
-      add(g.object, [&](const ObjectGroup& other) { return other.object == g.object; }, true);
+      add(
+          g.object, [&](const ObjectGroup& other) { return other.object == g.object; }, true);
       (g.object == g.plays ? originals : variants) = true;
     }
     // The report's aggregates hold exactly its four objects and two variants; compare only then.
@@ -97,14 +99,19 @@ std::vector<SummaryRow> summary_rows(const CampaignResults& results) {
     for (const ObjectGroup& g : results.config.groups)
       (g.object == g.plays ? original_names : variant_names).push_back(g.object);
     const bool report_originals =
-        original_names == std::vector<std::string>{"pringles_can", "coffee_mug", "plastic_cup", "paper_base"};
+        original_names ==
+        std::vector<std::string>{"pringles_can", "coffee_mug", "plastic_cup", "paper_base"};
     const bool report_variants =
         variant_names == std::vector<std::string>{"pringles_can_weighted", "coffee_mug_weighted"};
     if (originals && variants) {
-      add("original objects", [](const ObjectGroup& g) { return g.object == g.plays; }, report_originals);
-      add("variants", [](const ObjectGroup& g) { return g.object != g.plays; }, report_variants);
+      add(
+          "original objects", [](const ObjectGroup& g) { return g.object == g.plays; },
+          report_originals);
+      add(
+          "variants", [](const ObjectGroup& g) { return g.object != g.plays; }, report_variants);
     }
-    add("all", [](const ObjectGroup&) { return true; }, false);
+    add(
+        "all", [](const ObjectGroup&) { return true; }, false);
   }
   return rows;
 }
@@ -116,7 +123,8 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
     if (s != "none") classes.push_back(s);
   std::vector<ConfusionCounts> all;
   for (const ArmConfig& arm : results.config.arms) {
-    // Sensing actions: those that were ever followed by a heard class in this campaign, in action order.
+    // Sensing actions: those that were ever followed by a heard class in this campaign, in action
+    // order.
     for (std::size_t a = 0; a < results.spec.action_names.size(); ++a) {
       ConfusionCounts c;
       c.arm = arm.name;
@@ -127,12 +135,12 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
       bool any = false;
       for (const JournalEntry& e : results.entries) {
         if (e.arm != arm.name) continue;
-        const std::size_t row =
-            std::find(c.rows.begin(), c.rows.end(), e.object) - c.rows.begin();
+        const std::size_t row = std::find(c.rows.begin(), c.rows.end(), e.object) - c.rows.begin();
         if (row >= c.rows.size()) continue;
         for (const StepRecord& s : e.result.steps) {
           const int o = s.observation.index;
-          if (s.action != static_cast<int>(a) || o < 0 || o >= static_cast<int>(classes.size())) continue;
+          if (s.action != static_cast<int>(a) || o < 0 || o >= static_cast<int>(classes.size()))
+            continue;
           ++c.counts[row][o];
           any = true;
         }
@@ -145,9 +153,11 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
 
 void write_tables(const fs::path& directory, const CampaignResults& results) {
   TrialLog all(directory, results.spec, results.belief_particles, {"arm", "object"});
-  for (const JournalEntry& e : results.entries) all.write_trial(e.result.record, e.result.steps, {e.arm, e.object});
+  for (const JournalEntry& e : results.entries)
+    all.write_trial(e.result.record, e.result.steps, {e.arm, e.object});
   for (const ArmConfig& arm : results.config.arms) {
-    TrialLog per_arm(directory / "arms" / arm.name, results.spec, results.belief_particles, {"object"});
+    TrialLog per_arm(directory / "arms" / arm.name, results.spec, results.belief_particles,
+                     {"object"});
     for (const JournalEntry& e : results.entries)
       if (e.arm == arm.name) per_arm.write_trial(e.result.record, e.result.steps, {e.object});
   }
@@ -165,26 +175,31 @@ nlohmann::json summary_json(const CampaignResults& results) {
     r["arm"] = row.arm;
     r["objects"] = row.label;
     if (row.reported)
-      r["report"] = {{"trials", row.reported->trials},
-                     {"correct", row.reported->correct},
-                     {"accuracy", static_cast<double>(row.reported->correct) / row.reported->trials},
-                     {"mean_discounted_reward", row.reported->mean_discounted_reward},
-                     {"mean_steps", row.reported->mean_steps}};
+      r["report"] = {
+          {"trials", row.reported->trials},
+          {"correct", row.reported->correct},
+          {"accuracy", static_cast<double>(row.reported->correct) / row.reported->trials},
+          {"mean_discounted_reward", row.reported->mean_discounted_reward},
+          {"mean_steps", row.reported->mean_steps}};
     rows.push_back(std::move(r));
   }
   j["results"] = std::move(rows);
   const auto& arms = results.config.arms;
   for (std::size_t k = 1; k < arms.size(); ++k) {
     const TrialSummary d = paired_difference(results, arms[0].name, arms[k].name);
-    j["paired_differences"].push_back({{"arm", arms[k].name},
-                                       {"minus", arms[0].name},
-                                       {"pairs", d.trials},
-                                       {"mean_discounted_reward_difference", d.mean_discounted_reward},
-                                       {"ci95", d.ci95}});
+    j["paired_differences"].push_back(
+        {{"arm", arms[k].name},
+         {"minus", arms[0].name},
+         {"pairs", d.trials},
+         {"mean_discounted_reward_difference", d.mean_discounted_reward},
+         {"ci95", d.ci95}});
   }
   nlohmann::json confusion = nlohmann::json::array();
   for (const ConfusionCounts& c : confusion_counts(results))
-    confusion.push_back({{"arm", c.arm}, {"action", c.action}, {"objects", c.rows}, {"heard", c.columns},
+    confusion.push_back({{"arm", c.arm},
+                         {"action", c.action},
+                         {"objects", c.rows},
+                         {"heard", c.columns},
                          {"counts", c.counts}});
   j["confusion"] = std::move(confusion);
   return j;
@@ -193,8 +208,8 @@ nlohmann::json summary_json(const CampaignResults& results) {
 std::string summary_text(const CampaignResults& results) {
   std::string out;
   const auto& actions = results.spec.action_names;
-  out += fmt::format("{} of {} trials; planner {} with {}\n", results.entries.size(), results.planned_trials,
-                     results.config.planner.solver,
+  out += fmt::format("{} of {} trials; planner {} with {}\n", results.entries.size(),
+                     results.planned_trials, results.config.planner.solver,
                      results.config.planner.episodes > 0
                          ? fmt::format("{} episodes per step", results.config.planner.episodes)
                          : fmt::format("{} ms per step", results.config.planner.step_ms));
@@ -212,11 +227,13 @@ std::string summary_text(const CampaignResults& results) {
       out += fmt::format("   | report: {:>7}{:>8}\n", "correct", "reward");
     }
     const TrialSummary& s = row.summary;
-    out += fmt::format("  {:<24}{:>7}{:>10}{:>22}{:>7.2f}", row.label, s.trials, percent(s.accuracy),
-                       fmt::format("{:.2f} ± {:.2f}", s.mean_discounted_reward, s.ci95), s.mean_steps);
+    out +=
+        fmt::format("  {:<24}{:>7}{:>10}{:>22}{:>7.2f}", row.label, s.trials, percent(s.accuracy),
+                    fmt::format("{:.2f} ± {:.2f}", s.mean_discounted_reward, s.ci95), s.mean_steps);
     for (double c : s.mean_action_counts) out += fmt::format("{:>10.2f}", c);
     if (row.reported)
-      out += fmt::format("   |         {:>7}{:>8.2f}", fmt::format("{}/{}", row.reported->correct, row.reported->trials),
+      out += fmt::format("   |         {:>7}{:>8.2f}",
+                         fmt::format("{}/{}", row.reported->correct, row.reported->trials),
                          row.reported->mean_discounted_reward);
     out += '\n';
   }
@@ -224,8 +241,10 @@ std::string summary_text(const CampaignResults& results) {
   for (std::size_t k = 1; k < arms.size(); ++k) {
     const TrialSummary d = paired_difference(results, arms[0].name, arms[k].name);
     if (d.trials == 0) continue;
-    out += fmt::format("\n{} minus {}, paired trials (same objects, same world noise): {:+.2f} ± {:.2f} (95% CI, {} pairs)\n",
-                       arms[k].name, arms[0].name, d.mean_discounted_reward, d.ci95, d.trials);
+    out += fmt::format(
+        "\n{} minus {}, paired trials (same objects, same world noise): {:+.2f} ± {:.2f} (95% CI, "
+        "{} pairs)\n",
+        arms[k].name, arms[0].name, d.mean_discounted_reward, d.ci95, d.trials);
   }
   return out;
 }

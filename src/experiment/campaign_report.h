@@ -1,6 +1,6 @@
 // A campaign's results as tables and numbers: trials.csv and steps.csv (Tables 5.1 and 5.2 of the
-// report, plus arm and object), per-arm copies that `echoplan certify` reads with the arm's problem,
-// summary.json and the terminal summary, each next to the report's own numbers.
+// report, plus arm and object), per-arm copies that `echoplan certify` reads with the arm's
+// problem, summary.json and the terminal summary, each next to the report's own numbers.
 //
 // Everything here is a pure function of the campaign's configuration and its journal entries sorted
 // by id, so a resumed, parallel, sharded-and-merged or one-core run writes the same bytes.
@@ -22,10 +22,10 @@ namespace echoplan::experiment {
 // What the report needs besides the entries: the campaign and the planning problems' shared names.
 struct CampaignResults {
   CampaignConfig config;
-  pomdp::ModelSpec spec;       // objects, actions and observation names, the same for every arm
-  int belief_particles = 0;    // > 0: steps.csv shows particle counts (Table 5.2); 0: probabilities
+  pomdp::ModelSpec spec;     // objects, actions and observation names, the same for every arm
+  int belief_particles = 0;  // > 0: steps.csv shows particle counts (Table 5.2); 0: probabilities
   std::vector<JournalEntry> entries;  // sorted by id, at most one per id
-  int planned_trials = 0;      // what the campaign (all shards) asks for
+  int planned_trials = 0;             // what the campaign (all shards) asks for
 };
 
 // The seed report's result for one object (Tables 5.1 and 5.3): trials, correct ones, mean

@@ -37,7 +37,8 @@ int object_index(const pomdp::Problem& problem, const std::string& object) {
 // What one worker owns: per arm a problem and a solver, per group a world.
 class Worker {
  public:
-  Worker(const CampaignConfig& config, const WorldFactory& world) : config_(config), world_(world) {}
+  Worker(const CampaignConfig& config, const WorldFactory& world)
+      : config_(config), world_(world) {}
 
   std::optional<TrialResult> run(const TrialJob& job, const std::atomic<bool>* stop) {
     Arm& arm = arm_for(job.arm);
@@ -55,8 +56,9 @@ class Worker {
     TrialOptions options;
     options.seed = group_seed(config_, job.group);
     options.max_steps = config_.planner.max_steps;
-    options.budget = config_.planner.episodes > 0 ? solvers::Budget::episodes(config_.planner.episodes)
-                                                  : solvers::Budget::milliseconds(config_.planner.step_ms);
+    options.budget = config_.planner.episodes > 0
+                         ? solvers::Budget::episodes(config_.planner.episodes)
+                         : solvers::Budget::milliseconds(config_.planner.step_ms);
     return run_trial(setup, options, job.index, object_index(problem, group.plays));
   }
 
@@ -141,7 +143,8 @@ int run_campaign_trials(const CampaignConfig& config, const std::vector<TrialJob
         const TrialJob& job = jobs[k];
         std::optional<TrialResult> result = worker.run(job, options.stop);
         if (!result) break;
-        // Trials are numbered by campaign id in every file (the runner numbers them within the group).
+        // Trials are numbered by campaign id in every file (the runner numbers them within the
+        // group).
         result->record.trial = job.id;
         for (StepRecord& s : result->steps) s.trial = job.id;
         JournalEntry entry{job.id, config.arms[job.arm].name, config.groups[job.group].object,

@@ -30,7 +30,8 @@ struct TrialJob {
 // Every trial of the campaign, in id order.
 std::vector<TrialJob> campaign_jobs(const CampaignConfig& config);
 
-// The seed of the trial streams of group `group` (trial_runner.h derives each trial's streams from it).
+// The seed of the trial streams of group `group` (trial_runner.h derives each trial's streams from
+// it).
 std::uint64_t group_seed(const CampaignConfig& config, int group);
 
 // One share of the trials: `--shard I/N` takes ids with id % N == I - 1 (I in 1..N), so shards are
@@ -48,8 +49,8 @@ Shard parse_shard(const std::string& text);
 using WorldFactory = std::function<std::unique_ptr<pomdp::Environment>(const ObjectGroup& group)>;
 
 struct CampaignRunOptions {
-  int workers = 1;                            // threads, >= 1; results do not depend on it
-  const std::atomic<bool>* stop = nullptr;    // optional: no new steps once set
+  int workers = 1;                          // threads, >= 1; results do not depend on it
+  const std::atomic<bool>* stop = nullptr;  // optional: no new steps once set
   // Called after each trial is journalled, from one thread at a time.
   std::function<void(const JournalEntry&)> on_trial;
 };

@@ -22,11 +22,13 @@ fs::path find_gnuplot() {
   while (start <= dirs.size()) {
     const std::size_t end = std::min(dirs.find(':', start), dirs.size());
     const fs::path candidate = fs::path(dirs.substr(start, end - start)) / "gnuplot";
-    if (!candidate.parent_path().empty() && ::access(candidate.c_str(), X_OK) == 0) return candidate;
+    if (!candidate.parent_path().empty() && ::access(candidate.c_str(), X_OK) == 0)
+      return candidate;
     start = end + 1;
   }
   throw InputError(
-      "gnuplot was not found on PATH; install it (Debian package gnuplot-nox, see scripts/setup.sh)");
+      "gnuplot was not found on PATH; install it (Debian package gnuplot-nox, see "
+      "scripts/setup.sh)");
 }
 
 bool run_gnuplot(const std::string& script, const fs::path& work_dir, std::string& error) {
@@ -41,8 +43,9 @@ bool run_gnuplot(const std::string& script, const fs::path& work_dir, std::strin
       return false;
     }
   }
-  const std::string command = fmt::format("cd '{}' && '{}' '{}' 2> '{}'", work_dir.string(), gnuplot.string(),
-                                          script_path.string(), error_path.string());
+  const std::string command =
+      fmt::format("cd '{}' && '{}' '{}' 2> '{}'", work_dir.string(), gnuplot.string(),
+                  script_path.string(), error_path.string());
   if (std::system(command.c_str()) == 0) return true;
   std::ifstream in(error_path);
   error.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

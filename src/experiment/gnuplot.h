@@ -1,7 +1,8 @@
 // Drawing with gnuplot (Debian's gnuplot-nox): finding the program and running a script.
 //
 // Figures are written by gnuplot scripts rather than a plotting library linked in: gnuplot is one
-// well-kept Debian package, draws PNG (cairo) and SVG, and the script is readable next to the figure.
+// well-kept Debian package, draws PNG (cairo) and SVG, and the script is readable next to the
+// figure.
 #pragma once
 
 #include <filesystem>
@@ -14,7 +15,8 @@ std::filesystem::path find_gnuplot();
 
 // Runs `script` (gnuplot commands) with gnuplot in `work_dir` (data files the script names live
 // there). Returns false and sets `error` to gnuplot's stderr when it fails.
-bool run_gnuplot(const std::string& script, const std::filesystem::path& work_dir, std::string& error);
+bool run_gnuplot(const std::string& script, const std::filesystem::path& work_dir,
+                 std::string& error);
 
 // A temporary folder removed, with its contents, when this object goes away.
 class TemporaryFolder {

@@ -1,5 +1,5 @@
-// index.html: the whole campaign on one self-contained page (figures inlined as PNG data, no scripts,
-// no links out), readable from a file without a server.
+// index.html: the whole campaign on one self-contained page (figures inlined as PNG data, no
+// scripts, no links out), readable from a file without a server.
 #pragma once
 
 #include <filesystem>

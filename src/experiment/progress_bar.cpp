@@ -16,7 +16,8 @@ ProgressBar::ProgressBar(std::string what, int total, int already, std::FILE* ou
       terminal_(::isatty(::fileno(out)) == 1),
       start_(std::chrono::steady_clock::now()) {}
 
-std::string ProgressBar::render(const std::string& what, int done, int total, double seconds_per_unit) {
+std::string ProgressBar::render(const std::string& what, int done, int total,
+                                double seconds_per_unit) {
   constexpr int width = 30;
   const int filled = total > 0 ? std::clamp(done * width / total, 0, width) : width;
   std::string bar = "[" + std::string(filled, '#') + std::string(width - filled, '-') + "]";
@@ -29,7 +30,8 @@ std::string ProgressBar::render(const std::string& what, int done, int total, do
 }
 
 void ProgressBar::update(int done) {
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const int timed = done - already_;
   const std::string line = render(what_, done, total_, timed > 0 ? seconds / timed : 0.0);
   if (terminal_) {

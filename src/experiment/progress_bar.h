@@ -1,7 +1,7 @@
 // A progress bar for long runs on stderr: done/total, the rate and the time left.
 //
-// On a terminal it redraws one line; otherwise (a log file, a cluster job) it prints a line at every
-// tenth of the work, so logs stay short.
+// On a terminal it redraws one line; otherwise (a log file, a cluster job) it prints a line at
+// every tenth of the work, so logs stay short.
 #pragma once
 
 #include <chrono>

@@ -89,7 +89,8 @@ JournalEntry journal_entry_from_json(const nlohmann::json& j, const std::string&
       s.belief = js.at("belief").get<std::vector<double>>();
       s.reward = js.at("reward").get<double>();
       s.episodes = js.at("episodes").get<std::int64_t>();
-      if (js.contains("heard_probability")) s.heard_probability = js.at("heard_probability").get<double>();
+      if (js.contains("heard_probability"))
+        s.heard_probability = js.at("heard_probability").get<double>();
       e.result.steps.push_back(std::move(s));
     }
     if (static_cast<int>(e.result.steps.size()) != r.steps)
@@ -117,7 +118,8 @@ std::vector<JournalEntry> read_journal(const fs::path& path) {
     start = end + 1;
     if (row.empty()) continue;
     nlohmann::json j = nlohmann::json::parse(row, nullptr, false);
-    if (j.is_discarded()) throw InputError(path.string(), line, "malformed journal line (not JSON)");
+    if (j.is_discarded())
+      throw InputError(path.string(), line, "malformed journal line (not JSON)");
     entries.push_back(journal_entry_from_json(j, path.string(), line));
   }
   return entries;
@@ -126,7 +128,8 @@ std::vector<JournalEntry> read_journal(const fs::path& path) {
 void write_journal(const fs::path& path, const std::vector<JournalEntry>& entries) {
   const fs::path temporary = path.string() + ".tmp";
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw InputError(temporary.string(), 0, std::string("cannot write: ") + std::strerror(errno));
+  if (fd < 0)
+    throw InputError(temporary.string(), 0, std::string("cannot write: ") + std::strerror(errno));
   std::string text;
   for (const JournalEntry& e : entries) text += to_json(e).dump() + '\n';
   try {
@@ -155,7 +158,8 @@ TrialJournal::TrialJournal(fs::path path) : path_(std::move(path)) {
     if (error) throw InputError(path_.string(), 0, "cannot repair the journal: " + error.message());
   }
   fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-  if (fd_ < 0) throw InputError(path_.string(), 0, std::string("cannot write: ") + std::strerror(errno));
+  if (fd_ < 0)
+    throw InputError(path_.string(), 0, std::string("cannot write: ") + std::strerror(errno));
 }
 
 TrialJournal::~TrialJournal() {

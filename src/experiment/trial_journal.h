@@ -1,10 +1,10 @@
-// The campaign's journal: one JSON line per finished trial, appended and fsync'd as each trial ends,
-// so Ctrl-C, kill -9 or a power cut keeps every finished trial, and the next run skips them.
+// The campaign's journal: one JSON line per finished trial, appended and fsync'd as each trial
+// ends, so Ctrl-C, kill -9 or a power cut keeps every finished trial, and the next run skips them.
 //
 // The journal is the campaign's only record of results; every table, figure and page in the output
-// folder is rebuilt from it. Lines are written whole with one write(2) and synced; a line cut short by
-// a crash is dropped (and cut off the file) when the journal is opened again. Numbers are written so
-// they read back bit for bit.
+// folder is rebuilt from it. Lines are written whole with one write(2) and synced; a line cut short
+// by a crash is dropped (and cut off the file) when the journal is opened again. Numbers are
+// written so they read back bit for bit.
 #pragma once
 
 #include <filesystem>
@@ -40,8 +40,8 @@ void write_journal(const std::filesystem::path& path, const std::vector<JournalE
 
 class TrialJournal {
  public:
-  // Opens (creating) `path` for appending, after cutting off a torn last line. Throws InputError when
-  // the file cannot be written.
+  // Opens (creating) `path` for appending, after cutting off a torn last line. Throws InputError
+  // when the file cannot be written.
   explicit TrialJournal(std::filesystem::path path);
   ~TrialJournal();
   TrialJournal(const TrialJournal&) = delete;

@@ -36,7 +36,8 @@ TrialLog::TrialLog(const std::filesystem::path& directory, const pomdp::ModelSpe
       extra_columns_(std::move(extra_columns)) {
   std::error_code error;
   std::filesystem::create_directories(directory_, error);
-  if (error) throw InputError(directory_.string(), 0, "cannot create output folder: " + error.message());
+  if (error)
+    throw InputError(directory_.string(), 0, "cannot create output folder: " + error.message());
   trials_ = open_for_writing(directory_ / "trials.csv");
   steps_ = open_for_writing(directory_ / "steps.csv");
 
@@ -48,7 +49,8 @@ TrialLog::TrialLog(const std::filesystem::path& directory, const pomdp::ModelSpe
   steps_ << "trial,step,action,observation";
   const char* prefix = belief_particles_ > 0 ? ",particles_" : ",p_";
   if (!spec_.state.discrete_value_names.empty())
-    for (const auto& value : spec_.state.discrete_value_names[0]) steps_ << prefix << csv_field(value);
+    for (const auto& value : spec_.state.discrete_value_names[0])
+      steps_ << prefix << csv_field(value);
   steps_ << ",reward,episodes,heard_probability";
   for (const auto& column : extra_columns_) steps_ << ',' << csv_field(column);
   steps_ << '\n';
@@ -66,7 +68,8 @@ std::string TrialLog::state_name(int value) const {
 std::string TrialLog::observation_text(const pomdp::Observation& observation) const {
   if (observation.index >= 0) {
     const auto& names = spec_.observation.names;
-    if (observation.index < static_cast<int>(names.size())) return csv_field(names[observation.index]);
+    if (observation.index < static_cast<int>(names.size()))
+      return csv_field(names[observation.index]);
     return std::to_string(observation.index);
   }
   // A continuous observation: its components separated by spaces, in one field.
@@ -95,7 +98,8 @@ void TrialLog::write_trial(const TrialRecord& trial, const std::vector<StepRecor
         steps_ << ',' << number(p);
     }
     steps_ << ',' << number(s.reward) << ',' << s.episodes << ','
-           << (s.heard_probability ? number(*s.heard_probability) : std::string()) << extras << '\n';
+           << (s.heard_probability ? number(*s.heard_probability) : std::string()) << extras
+           << '\n';
   }
   trials_ << trial.trial << ',' << state_name(trial.true_state) << ','
           << state_name(trial.believed_state) << ',' << trial.steps;

@@ -10,7 +10,8 @@ namespace echoplan::experiment {
 void TrialOptions::validate() const {
   if (trials < 1 && per_object < 1) throw InputError("--trials must be >= 1");
   if (per_object < 0) throw InputError("--per-object must be >= 0");
-  if (budget.amount < 1) throw InputError("the search budget (--episodes / --step-ms) must be >= 1");
+  if (budget.amount < 1)
+    throw InputError("the search budget (--episodes / --step-ms) must be >= 1");
   if (max_steps < 1) throw InputError("--max-steps must be >= 1");
 }
 

@@ -52,8 +52,9 @@ void run_experiment(const ExperimentFlags& f) {
   } restore{previous_int, previous_term};
 
   const auto start = std::chrono::steady_clock::now();
-  spdlog::info("campaign {} -> {} ({} trials{}, {} workers)", config_path, f.out, config.total_trials(),
-               shard.count > 1 ? fmt::format(", shard {}/{}", shard.index, shard.count) : "", workers);
+  spdlog::info(
+      "campaign {} -> {} ({} trials{}, {} workers)", config_path, f.out, config.total_trials(),
+      shard.count > 1 ? fmt::format(", shard {}/{}", shard.index, shard.count) : "", workers);
   {
     experiment::ProgressBar bar("training clips", 1);
     bool started = false;
@@ -67,7 +68,9 @@ void run_experiment(const ExperimentFlags& f) {
         stop_requested);
     if (started) bar.finish();
     if (!complete) {
-      spdlog::warn("interrupted while synthesising the training set; run the same command again to continue");
+      spdlog::warn(
+          "interrupted while synthesising the training set; run the same command again to "
+          "continue");
       throw Interrupted{};
     }
   }
@@ -76,9 +79,12 @@ void run_experiment(const ExperimentFlags& f) {
 
   const std::vector<experiment::TrialJob> jobs = experiment::remaining_jobs(campaign, shard);
   int shard_total = 0;
-  for (const experiment::TrialJob& job : experiment::campaign_jobs(config)) shard_total += shard.contains(job.id);
+  for (const experiment::TrialJob& job : experiment::campaign_jobs(config))
+    shard_total += shard.contains(job.id);
   const int already = shard_total - static_cast<int>(jobs.size());
-  if (already > 0) spdlog::info("{} of {} trials already in {}; running the other {}", already, shard_total, f.out, jobs.size());
+  if (already > 0)
+    spdlog::info("{} of {} trials already in {}; running the other {}", already, shard_total, f.out,
+                 jobs.size());
   experiment::ProgressBar bar("trials", shard_total, already);
   int done = already;
   experiment::TrialJournal journal(campaign.directory / "journal.jsonl");
@@ -89,7 +95,8 @@ void run_experiment(const ExperimentFlags& f) {
   const auto trials_start = std::chrono::steady_clock::now();
   if (!jobs.empty()) {
     bar.update(done);
-    experiment::run_campaign_trials(config, jobs, experiment::make_world(campaign), journal, options);
+    experiment::run_campaign_trials(config, jobs, experiment::make_world(campaign), journal,
+                                    options);
     bar.finish();
   }
   const double trial_seconds =
@@ -100,12 +107,12 @@ void run_experiment(const ExperimentFlags& f) {
   const double report_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - report_start).count();
   fmt::print("{}\n", summary);
-  fmt::print("time: training set {:.1f} s, trials {:.1f} s, report {:.1f} s\n", synthesis_seconds, trial_seconds,
-             report_seconds);
+  fmt::print("time: training set {:.1f} s, trials {:.1f} s, report {:.1f} s\n", synthesis_seconds,
+             trial_seconds, report_seconds);
   fmt::print("report: {}/index.html\n", f.out);
   if (stop_requested) {
-    spdlog::warn("interrupted: {} of {} trials are in {}; the same command continues the campaign", done,
-                 shard_total, f.out);
+    spdlog::warn("interrupted: {} of {} trials are in {}; the same command continues the campaign",
+                 done, shard_total, f.out);
     throw Interrupted{};
   }
 }
@@ -114,22 +121,29 @@ void run_experiment(const ExperimentFlags& f) {
 
 void add_experiment_command(CLI::App& app) {
   auto flags = std::make_shared<ExperimentFlags>();
-  auto* cmd = app.add_subcommand(
-      "experiment",
-      "The main job: the report's chapter 5 as one campaign. Synthesises the training set, runs the\n"
-      "trials of every arm (10 per object, then the weighted can and mug), and writes DIR/trials.csv,\n"
-      "steps.csv, summary.json, figures/ and index.html. Runs again in the same DIR continue where the\n"
-      "last stopped. Example:\n"
-      "  echoplan experiment --out results/chapter5\n"
-      "  echoplan experiment --config experiments/chapter5.yaml --shard 2/4 --out shards/2   (then merge)");
-  cmd->add_option("--config", flags->config,
-                  "Campaign file (YAML; default: experiments/chapter5.yaml, the report's chapter 5)");
-  cmd->add_option("--out", flags->out, "Output folder (created; an existing one of the same campaign is continued)")
+  auto* cmd = app.add_subcommand("experiment",
+                                 "The main job: the report's chapter 5 as one campaign. "
+                                 "Synthesises the training set, runs the\n"
+                                 "trials of every arm (10 per object, then the weighted can and "
+                                 "mug), and writes DIR/trials.csv,\n"
+                                 "steps.csv, summary.json, figures/ and index.html. Runs again in "
+                                 "the same DIR continue where the\n"
+                                 "last stopped. Example:\n"
+                                 "  echoplan experiment --out results/chapter5\n"
+                                 "  echoplan experiment --config experiments/chapter5.yaml --shard "
+                                 "2/4 --out shards/2   (then merge)");
+  cmd->add_option(
+      "--config", flags->config,
+      "Campaign file (YAML; default: experiments/chapter5.yaml, the report's chapter 5)");
+  cmd->add_option("--out", flags->out,
+                  "Output folder (created; an existing one of the same campaign is continued)")
       ->required();
-  cmd->add_option("--workers", flags->workers, "Trials run in parallel (default: all cores); results do not change")
+  cmd->add_option("--workers", flags->workers,
+                  "Trials run in parallel (default: all cores); results do not change")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--shard", flags->shard,
-                  "Run share I of N (1 <= I <= N) of the trials, for a cluster's array job; join with `echoplan merge`")
+                  "Run share I of N (1 <= I <= N) of the trials, for a cluster's array job; join "
+                  "with `echoplan merge`")
       ->capture_default_str();
   cmd->add_option_function<std::uint64_t>(
       "--seed", [flags](std::uint64_t seed) { flags->seed = seed, flags->seed_given = true; },

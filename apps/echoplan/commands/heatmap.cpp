@@ -1,5 +1,5 @@
-// `echoplan heatmap`: a PNG or SVG heat map of one feature matrix, or of the mean over several recordings
-// (like the seed's Figures 3.1 and 3.2), drawn by gnuplot.
+// `echoplan heatmap`: a PNG or SVG heat map of one feature matrix, or of the mean over several
+// recordings (like the seed's Figures 3.1 and 3.2), drawn by gnuplot.
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
@@ -24,13 +24,16 @@ namespace fs = std::filesystem;
 
 struct HeatmapOptions {
   FeatureOptions features;
-  std::vector<std::size_t> onset_window;  // {frames before, frames after} the first onset; empty = from the start
+  std::vector<std::size_t>
+      onset_window;  // {frames before, frames after} the first onset; empty = from the start
   std::string output;
   std::string title;
 };
 
-// The matrix each file contributes: its whole feature matrix, or a fixed window around its first onset.
-audio::FeatureMatrix file_matrix(const HeatmapOptions& options, const std::string& path, double& hop_seconds) {
+// The matrix each file contributes: its whole feature matrix, or a fixed window around its first
+// onset.
+audio::FeatureMatrix file_matrix(const HeatmapOptions& options, const std::string& path,
+                                 double& hop_seconds) {
   const audio::AudioClip clip = read_for_features(options.features, path);
   const auto config = audio::preset_by_name(options.features.preset, clip.sample_rate);
   hop_seconds = static_cast<double>(config.stft.framing.hop) / clip.sample_rate;
@@ -47,11 +50,14 @@ void draw(const HeatmapOptions& options) {
   // Check the output and the plotting tool before any (possibly long) feature computation.
   const fs::path output(options.output);
   std::string ext = output.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (ext != ".png" && ext != ".svg") throw InputError(options.output, 0, "the output must end in .png or .svg");
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext != ".png" && ext != ".svg")
+    throw InputError(options.output, 0, "the output must end in .png or .svg");
   experiment::find_gnuplot();
 
-  // Mean over files, over the frames every file has (the shortest file's length when not onset-aligned).
+  // Mean over files, over the frames every file has (the shortest file's length when not
+  // onset-aligned).
   audio::FeatureMatrix mean;
   double hop_seconds = 0.0;
   for (std::size_t i = 0; i < options.features.files.size(); ++i) {
@@ -64,9 +70,13 @@ void draw(const HeatmapOptions& options) {
       continue;
     }
     if (m.cols != mean.cols)
-      throw InputError(path, 0, fmt::format("has {} feature columns, the first file {}: use files at one sample rate or --resample", m.cols, mean.cols));
+      throw InputError(path, 0,
+                       fmt::format("has {} feature columns, the first file {}: use files at one "
+                                   "sample rate or --resample",
+                                   m.cols, mean.cols));
     if (m.rows < mean.rows) {
-      spdlog::info("{}: {} frames; averaging over the first {} frames of every file", path, m.rows, m.rows);
+      spdlog::info("{}: {} frames; averaging over the first {} frames of every file", path, m.rows,
+                   m.rows);
       mean.values.resize(m.rows * mean.cols);
       mean.rows = m.rows;
     }
@@ -81,17 +91,25 @@ void draw(const HeatmapOptions& options) {
   {
     std::ofstream data(dir / "matrix.dat");
     for (std::size_t r = 0; r < mean.rows; ++r) {
-      for (std::size_t c = 0; c < mean.cols; ++c) data << fmt::format("{:.6g} {} {:.9g}\n", static_cast<double>(r) * hop_seconds, c, mean.at(r, c));
+      for (std::size_t c = 0; c < mean.cols; ++c)
+        data << fmt::format("{:.6g} {} {:.9g}\n", static_cast<double>(r) * hop_seconds, c,
+                            mean.at(r, c));
       data << "\n";
     }
   }
   const std::string feature = options.features.feature;
-  const std::string title = !options.title.empty() ? options.title
-                            : options.features.files.size() == 1
-                                ? fmt::format("{} ({}) of {}", feature, options.features.preset, fs::path(options.features.files[0]).filename().string())
-                                : fmt::format("mean {} ({}) of {} recordings", feature, options.features.preset, options.features.files.size());
-  const std::string x_label = options.onset_window.empty() ? "time (s)" : "time from the window start (s)";
-  const std::string y_label = feature == "mfcc" ? "coefficient" : feature == "logmel" ? "mel band" : feature;
+  const std::string title =
+      !options.title.empty() ? options.title
+      : options.features.files.size() == 1
+          ? fmt::format("{} ({}) of {}", feature, options.features.preset,
+                        fs::path(options.features.files[0]).filename().string())
+          : fmt::format("mean {} ({}) of {} recordings", feature, options.features.preset,
+                        options.features.files.size());
+  const std::string x_label =
+      options.onset_window.empty() ? "time (s)" : "time from the window start (s)";
+  const std::string y_label = feature == "mfcc"     ? "coefficient"
+                              : feature == "logmel" ? "mel band"
+                                                    : feature;
   auto script = [&](const std::string& terminal) {
     return fmt::format(
         "set terminal {} size 900,500\nset output '{}'\nset title \"{}\" noenhanced\n"
@@ -106,7 +124,9 @@ void draw(const HeatmapOptions& options) {
   if (!ok && ext == ".png") ok = experiment::run_gnuplot(script("png"), dir, error);
   if (!ok) throw InputError(options.output, 0, fmt::format("gnuplot failed: {}", error));
   fmt::print("wrote {} ({} frames x {} columns{})\n", options.output, mean.rows, mean.cols,
-             options.features.files.size() > 1 ? fmt::format(", mean of {} files", options.features.files.size()) : "");
+             options.features.files.size() > 1
+                 ? fmt::format(", mean of {} files", options.features.files.size())
+                 : "");
 }
 
 }  // namespace
@@ -114,13 +134,16 @@ void draw(const HeatmapOptions& options) {
 void add_heatmap_command(CLI::App& app) {
   auto options = std::make_shared<HeatmapOptions>();
   options->features.feature = "logmel";
-  auto* cmd = app.add_subcommand("heatmap",
-                                 "Draw a heat map (PNG or SVG, with gnuplot) of a feature matrix over time, or of its mean\n"
-                                 "over several recordings (frames every file has, or a window around each file's first onset).");
+  auto* cmd = app.add_subcommand(
+      "heatmap",
+      "Draw a heat map (PNG or SVG, with gnuplot) of a feature matrix over time, or of its mean\n"
+      "over several recordings (frames every file has, or a window around each file's first "
+      "onset).");
   add_feature_options(*cmd, options->features);
   cmd->add_option("-o,--output", options->output, "Output image: .png or .svg")->required();
   cmd->add_option("--onset-window", options->onset_window,
-                  "Align each file on its first onset: frames BEFORE and AFTER it (e.g. --onset-window 5 40)")
+                  "Align each file on its first onset: frames BEFORE and AFTER it (e.g. "
+                  "--onset-window 5 40)")
       ->expected(2);
   cmd->add_option("--title", options->title, "Plot title (default: feature, preset and files)");
   cmd->add_option("FILE", options->features.files, "Audio files (WAV, FLAC, ...)")->required();

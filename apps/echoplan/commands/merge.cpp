@@ -18,7 +18,8 @@ void add_merge_command(CLI::App& app) {
       "Join the shard folders of one campaign into one report (the same files an unsharded\n"
       "`echoplan experiment` writes). Example: echoplan merge --out results/chapter5 shards/*");
   cmd->add_option("--out", flags->out, "Folder for the joined campaign and its report")->required();
-  cmd->add_option("SHARD_DIR", flags->shards, "Shard folders written by `echoplan experiment --shard I/N`")
+  cmd->add_option("SHARD_DIR", flags->shards,
+                  "Shard folders written by `echoplan experiment --shard I/N`")
       ->required();
   cmd->callback([flags] {
     std::vector<std::filesystem::path> shards(flags->shards.begin(), flags->shards.end());
