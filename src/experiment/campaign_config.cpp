@@ -7,8 +7,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/data_dir.h"
 #include "common/error.h"
-#include "pomdp/yaml_fields.h"
+#include "common/yaml_reader.h"
 
 namespace echoplan::experiment {
 
@@ -43,6 +44,8 @@ std::string content_hash(const std::string& path) {
   return fmt::format("{:016x}", h);
 }
 
+CampaignConfig read_campaign(const std::string& yaml_text, const std::string& source);
+
 }  // namespace
 
 int CampaignConfig::total_trials() const {
@@ -73,14 +76,16 @@ nlohmann::json CampaignConfig::identity() const {
 }
 
 CampaignConfig parse_campaign_config(const std::string& yaml_text, const std::string& source) {
-  pomdp::YamlFields f(source);
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::Exception& e) {
-    throw InputError(source, e.mark.line + 1, "not valid YAML: " + e.msg);
-  }
+  return read_yaml_guarded(source, [&] { return read_campaign(yaml_text, source); });
+}
+
+namespace {
+
+CampaignConfig read_campaign(const std::string& yaml_text, const std::string& source) {
+  const YamlReader f(source);
+  const YAML::Node root = parse_yaml(yaml_text, source);
   f.expect_map(root, "the campaign");
+  f.reject_duplicate_keys(root);
   f.only_keys(root, {"seed", "arms", "world", "training_set", "trials", "planner"}, "the campaign");
 
   CampaignConfig c;
@@ -176,12 +181,10 @@ CampaignConfig parse_campaign_config(const std::string& yaml_text, const std::st
   return c;
 }
 
+}  // namespace
+
 CampaignConfig load_campaign_config(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "cannot open the campaign file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_campaign_config(text.str(), path);
+  return parse_campaign_config(read_text_file(path, "campaign file"), path);
 }
 
 nlohmann::json to_json(const CampaignConfig& c) {
@@ -239,7 +242,7 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
 std::string default_campaign_path() {
   const std::string local = "experiments/chapter5.yaml";
   if (fs::exists(local)) return local;
-  return std::string(ECHOPLAN_DATA_DIR) + "/experiments/chapter5.yaml";
+  return shipped_file("experiments/chapter5.yaml");
 }
 
 }  // namespace echoplan::experiment

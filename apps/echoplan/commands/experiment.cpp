@@ -5,22 +5,17 @@
 
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <thread>
 
 #include "commands/commands.h"
 #include "common/error.h"
+#include "common/stop_signal.h"
 #include "experiment/campaign.h"
 #include "experiment/progress_bar.h"
 
 namespace echoplan::cli {
 
 namespace {
-
-// Ctrl-C (or SIGTERM) asks the workers to stop after their step in progress; finished trials are in
-// the journal already, and the report is rebuilt from them before exiting.
-std::atomic<bool> stop_requested{false};
-extern "C" void on_stop_signal(int) { stop_requested = true; }
 
 struct ExperimentFlags {
   std::string config;
@@ -40,16 +35,10 @@ void run_experiment(const ExperimentFlags& f) {
   // Every check before any work.
   const experiment::Campaign campaign = experiment::open_campaign(config, f.out);
 
-  stop_requested = false;
-  auto previous_int = std::signal(SIGINT, on_stop_signal);
-  auto previous_term = std::signal(SIGTERM, on_stop_signal);
-  struct RestoreHandlers {
-    decltype(previous_int) sigint, sigterm;
-    ~RestoreHandlers() {
-      std::signal(SIGINT, sigint);
-      std::signal(SIGTERM, sigterm);
-    }
-  } restore{previous_int, previous_term};
+  // Ctrl-C (or SIGTERM) stops the workers after their step in progress; finished trials are in the
+  // journal already, and the report is rebuilt from them before exiting.
+  const StopSignal stop;
+  const std::atomic<bool>& stop_requested = stop.flag();
 
   const auto start = std::chrono::steady_clock::now();
   spdlog::info(
