@@ -67,6 +67,13 @@ RobotEnvironment::RobotEnvironment(pomdp::ModelPtr model, RobotParts parts,
                         "symbol of problem '{}' (symbols: {}); the model was trained for other "
                         "objects - plan on the problem `echoplan train --problem-out` wrote for it",
                         label, act.name, data.name, fmt::join(data.observation_symbols, ", ")));
+    for (const std::string& symbol : data.observation_symbols)
+      if (symbol != kUnknownSymbol && !contains(it->second, symbol))
+        throw InputError(fmt::format(
+            "problem '{}' expects to hear '{}' after '{}', but the observation model was "
+            "not trained for it (its classes: {}); train it on recordings of the "
+            "problem's objects",
+            data.name, symbol, act.name, fmt::join(it->second, ", ")));
   }
   if (vocabulary->may_report_unknown && !symbol_index_.count(kUnknownSymbol))
     throw InputError(fmt::format(

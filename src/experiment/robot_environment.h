@@ -14,8 +14,9 @@
 //
 // Everything that can be checked is checked in the constructor, before any trial: the problem must
 // be an object-identification problem, and when the service says what it can report, it must have a
-// classifier for every sensing action and report only the problem's symbols ("unknown" needs an
-// `unknown` symbol). Each failure is an InputError that says what to change.
+// classifier for every sensing action, report only the problem's symbols ("unknown" needs an
+// `unknown` symbol) and be able to report each of them. Each failure is an InputError that says
+// what to change.
 #pragma once
 
 #include <functional>

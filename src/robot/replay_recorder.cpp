@@ -3,11 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 #include <stdexcept>
 
 #include "audio/io.h"
 #include "common/error.h"
+#include "perception/recording_set.h"
 
 namespace echoplan::robot {
 
@@ -15,35 +15,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool is_audio_file(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return ext == ".wav" || ext == ".flac" || ext == ".aif" || ext == ".aiff";
-}
-
 const std::vector<fs::path> kNoFiles;
 
 }  // namespace
 
 ReplayRecorder::ReplayRecorder(fs::path directory) : directory_(std::move(directory)) {
-  std::error_code ec;
-  if (!fs::is_directory(directory_, ec))
-    throw InputError(directory_.string(), 0,
-                     "the recordings folder does not exist (expected DIR/<object>/<action>/*.wav)");
-  // The index is built once: trials then only shuffle and read.
-  for (const auto& object : fs::directory_iterator(directory_, ec)) {
-    if (!object.is_directory()) continue;
-    for (const auto& action : fs::directory_iterator(object.path(), ec)) {
-      if (!action.is_directory()) continue;
-      auto& files = files_[object.path().filename().string()][action.path().filename().string()];
-      for (const auto& file : fs::directory_iterator(action.path(), ec))
-        if (file.is_regular_file() && is_audio_file(file.path())) files.push_back(file.path());
-      std::sort(files.begin(), files.end());
-    }
-  }
-  if (ec)
-    throw InputError(directory_.string(), 0, "cannot read the recordings folder: " + ec.message());
+  // The one loader of recording folders, so replay accepts and rejects what training does. The
+  // index is built once: trials then only shuffle and read.
+  const perception::RecordingSet set = perception::load_recording_set(directory_.string());
+  for (const perception::Recording& r : set.recordings)
+    files_[r.object][r.action].push_back(r.path);
+  for (auto& [object, actions] : files_)
+    for (auto& [action, files] : actions) std::sort(files.begin(), files.end());
 }
 
 const std::vector<fs::path>& ReplayRecorder::recordings(const std::string& object,
