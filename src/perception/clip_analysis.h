@@ -31,6 +31,7 @@ struct AnalysisSettings {
 
 // One analysed clip. Frame-wise matrices follow audio::Features (one row per 10 ms frame with psf).
 struct ClipAnalysis {
+  int sample_rate = 0;                // Hz of `mono` (AnalysisSettings::sample_rate)
   std::vector<float> mono;            // samples at AnalysisSettings::sample_rate
   audio::Features features;           // every frame-wise feature of `mono`
   std::size_t first_sound_frame = 0;  // first frame after the leading digital silence
