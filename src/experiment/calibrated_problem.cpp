@@ -17,17 +17,19 @@ pomdp::ObjectProblemData calibrated_problem(const pomdp::ObjectProblemData& base
   out.observation_table.clear();
   for (const pomdp::SensingAction& act : base.sensing) {
     if (std::find(actions.begin(), actions.end(), act.name) == actions.end())
-      throw InputError(fmt::format("problem '{}' has sensing action '{}', but the observation model was "
-                                   "trained for {} only",
-                                   base.name, act.name, fmt::join(actions, ", ")));
+      throw InputError(
+          fmt::format("problem '{}' has sensing action '{}', but the observation model was "
+                      "trained for {} only",
+                      base.name, act.name, fmt::join(actions, ", ")));
     const auto& table = model.observation_table(act.name);
     auto& block = out.observation_table.emplace_back();
     for (const std::string& object : base.objects) {
       const auto k = std::find(classes.begin(), classes.end(), object) - classes.begin();
       if (k == static_cast<long>(classes.size()))
-        throw InputError(fmt::format("problem '{}' has object '{}', but the observation model was trained "
-                                     "for {} only",
-                                     base.name, object, fmt::join(classes, ", ")));
+        throw InputError(
+            fmt::format("problem '{}' has object '{}', but the observation model was trained "
+                        "for {} only",
+                        base.name, object, fmt::join(classes, ", ")));
       block.push_back(table[k]);
     }
   }

@@ -11,8 +11,8 @@ namespace echoplan::experiment {
 // `base` with observation_symbols = model.observation_symbols() (the classes, then `unknown` when
 // the model's reject option is on) and observation_table[a][k] = the model's P(symbol | object k,
 // action a), rows matched to `base`'s objects by name. Everything else (objects, prior, actions,
-// rewards, kinematics) is kept. Throws InputError when a sensing action of `base` has no classifier in
-// the model or an object of `base` is not one of the model's classes.
+// rewards, kinematics) is kept. Throws InputError when a sensing action of `base` has no classifier
+// in the model or an object of `base` is not one of the model's classes.
 pomdp::ObjectProblemData calibrated_problem(const pomdp::ObjectProblemData& base,
                                             const perception::ObservationModel& model);
 

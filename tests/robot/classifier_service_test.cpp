@@ -21,7 +21,8 @@ std::shared_ptr<const perception::ObservationModel> model() {
 }
 
 // A fresh simulated recording (a seed the training set did not use).
-audio::AudioClip recording(const std::string& object, const std::string& action, std::uint64_t seed) {
+audio::AudioClip recording(const std::string& object, const std::string& action,
+                           std::uint64_t seed) {
   sim::SimulatedRobot robot(testing::shipped_catalogue(), object, sim::SimConfig{});
   sim::SimulatedRecorder recorder(robot.object(), robot.table(), sim::SimConfig{});
   Rng rng(seed);

@@ -21,8 +21,8 @@ class ReplayFolder : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("echoplan_replay_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+           ("echoplan_replay_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     int tone = 0;
     for (const char* object : {"cup", "mug"}) {
@@ -34,7 +34,8 @@ class ReplayFolder : public ::testing::Test {
         const double hz = 200.0 + 50.0 * tone++;
         for (int n = 0; n < 800; ++n)
           clip.samples.push_back(static_cast<float>(0.5 * std::sin(2 * M_PI * hz * n / 8000.0)));
-        audio::write_audio((dir_ / object / "strike" / (std::to_string(i) + ".wav")).string(), clip);
+        audio::write_audio((dir_ / object / "strike" / (std::to_string(i) + ".wav")).string(),
+                           clip);
       }
     }
   }
@@ -43,7 +44,8 @@ class ReplayFolder : public ::testing::Test {
   // The file whose content `clip` is.
   std::string which_file(const audio::AudioClip& clip) const {
     for (const auto& entry : fs::recursive_directory_iterator(dir_))
-      if (entry.is_regular_file() && audio::read_audio(entry.path().string()).samples == clip.samples)
+      if (entry.is_regular_file() &&
+          audio::read_audio(entry.path().string()).samples == clip.samples)
         return fs::relative(entry.path(), dir_).string();
     return "";
   }
@@ -64,7 +66,8 @@ TEST_F(ReplayFolder, PlaysRecordingsOfTheTrueObjectDealtFromTheSeed) {
     played.push_back(file);
   }
   // A deal: each file once before any repeats.
-  EXPECT_EQ(std::set<std::string>(played.begin(), played.end()).size(), static_cast<std::size_t>(kFiles));
+  EXPECT_EQ(std::set<std::string>(played.begin(), played.end()).size(),
+            static_cast<std::size_t>(kFiles));
 
   // The same seed deals the same files in the same order; other seeds deal other orders.
   ReplayRecorder again(dir_);

@@ -119,7 +119,8 @@ TEST(SimulatedWorld, RejectsUnknownObjectsAndActions) {
     FAIL() << "no error for an object the catalogue does not have";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("teapot"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("coffee_mug"), std::string::npos) << e.what();  // lists the known
+    EXPECT_NE(std::string(e.what()).find("coffee_mug"), std::string::npos)
+        << e.what();  // lists the known
   }
   EXPECT_THROW(arm.execute("strike"), std::logic_error);  // no trial begun
   arm.begin_trial({0, "coffee_mug", 1});

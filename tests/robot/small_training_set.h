@@ -1,6 +1,7 @@
 // Test fixture shared by the robot and experiment tests: a few simulated recordings per object and
 // action written to a temporary folder, and the observation model trained on them (the real
-// pipeline: sim::write_dataset, perception::load_recording_set, perception::train_observation_model).
+// pipeline: sim::write_dataset, perception::load_recording_set,
+// perception::train_observation_model).
 #pragma once
 
 #include <unistd.h>
@@ -32,8 +33,10 @@ inline std::filesystem::path unique_temp_dir(const std::string& what) {
 }
 
 // Writes `per_pair` recordings of each (object, action) into `dir` (replaced).
-inline void write_small_dataset(const std::filesystem::path& dir, const std::vector<std::string>& objects,
-                                const std::vector<std::string>& actions, int per_pair, std::uint64_t seed) {
+inline void write_small_dataset(const std::filesystem::path& dir,
+                                const std::vector<std::string>& objects,
+                                const std::vector<std::string>& actions, int per_pair,
+                                std::uint64_t seed) {
   std::filesystem::remove_all(dir);
   sim::DatasetOptions options;
   options.objects = objects;
