@@ -6,8 +6,9 @@
 
 namespace echoplan::cli {
 
-// Thrown by a command that was interrupted (Ctrl-C) after it saved what it had finished; main turns it
-// into exit status 130, the shell's convention for SIGINT.
+// Thrown by a command that was interrupted (Ctrl-C, see common/stop_signal.h for the one way to
+// catch it) after it saved what it had finished; main turns it into exit status 130, the shell's
+// convention for SIGINT.
 struct Interrupted {};
 
 void add_version_command(CLI::App& app);
