@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
 
   echoplan::cli::add_version_command(app);
   echoplan::cli::add_trials_command(app);
+  echoplan::cli::add_run_command(app);
   echoplan::cli::add_make_problem_command(app);
   echoplan::cli::add_check_command(app);
   echoplan::cli::add_solve_command(app);

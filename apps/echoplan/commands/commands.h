@@ -13,6 +13,7 @@ struct Interrupted {};
 
 void add_version_command(CLI::App& app);
 void add_trials_command(CLI::App& app);
+void add_run_command(CLI::App& app);
 void add_make_problem_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_solve_command(CLI::App& app);
