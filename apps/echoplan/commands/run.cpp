@@ -127,7 +127,7 @@ std::shared_ptr<const perception::ObservationModel> observation_model(
 }
 
 // The problem the planner plans on: --problem as written, or the shipped problem with the model's
-// calibrated observation table (saved as DIR/problem.yaml).
+// calibrated observation table (to be saved as DIR/problem.yaml, see save_problem).
 pomdp::Problem planning_problem(const RunFlags& f, const pomdp::Problem& base,
                                 const perception::ObservationModel& model, std::string& path) {
   if (!f.problem.empty()) {
@@ -139,12 +139,15 @@ pomdp::Problem planning_problem(const RunFlags& f, const pomdp::Problem& base,
   calibrated.model = std::make_shared<pomdp::ObjectIdentificationModel>(
       experiment::calibrated_problem(data, model));
   path = (fs::path(f.out) / "problem.yaml").string();
-  std::ofstream out(path);
-  pomdp::write_problem_yaml(out, experiment::object_problem(*calibrated.model).data(),
-                            calibrated.belief, calibrated.planner);
-  if (!out) throw InputError(path, 0, "cannot write the calibrated problem");
   calibrated.source_path = path;
   return calibrated;
+}
+
+void save_problem(const pomdp::Problem& problem, const std::string& path) {
+  std::ofstream out(path);
+  pomdp::write_problem_yaml(out, experiment::object_problem(*problem.model).data(), problem.belief,
+                            problem.planner);
+  if (!out) throw InputError(path, 0, "cannot write the calibrated problem");
 }
 
 void run_command(const RunFlags& f) {
@@ -153,8 +156,7 @@ void run_command(const RunFlags& f) {
     throw InputError(
         "--recordings needs --model: train one on recordings that are not replayed "
         "(`echoplan train --data TRAINING_DIR --out model.json`), so the classifier is not tested "
-        "on its own "
-        "training clips");
+        "on its own training clips");
   if (f.train_per_pair < 2)
     throw InputError("--train-per-pair must be at least 2 (cross-validation needs it)");
   std::error_code ec;
@@ -187,6 +189,8 @@ void run_command(const RunFlags& f) {
     settings.world_objects[data.objects[truth.index]] = truth.world;
   auto environment = experiment::make_environment_factory(settings)();
   const Planner planner = make_planner(f.planner, problem, problem_path);
+  // Only now that everything fits are files written.
+  if (f.problem.empty()) save_problem(problem, problem_path);
   experiment::LoopLog log(f.out, experiment::object_problem(*problem.model));
 
   fmt::print("{} {}, planning on {} ({}), seed {}\n", truth.world,
