@@ -85,11 +85,20 @@ void print_belief(const std::vector<std::string>& objects, const std::vector<dou
 // One line per action: what the robot did and what was heard.
 void print_step(const experiment::LoopStep& s) {
   fmt::print("step {}: {}", s.step + 1, s.action_name);
-  if (s.report.status != robot::ActionStatus::done)
+  if (s.report.status != robot::ActionStatus::done) {
     fmt::print(" -> {}: {}", robot::to_string(s.report.status), s.report.reason);
-  else if (s.classified)
-    fmt::print(" -> heard {} (p {:.2f}{}), {:.1f} ms to classify", s.heard.label,
-               s.heard.probability, s.heard.unknown ? ", unlike every class" : "", s.observe_ms);
+  } else if (s.classified && s.heard.unknown) {
+    // Unlike every class: say which one it was nearest to, and how likely that one was.
+    const auto nearest =
+        std::max_element(s.heard.probabilities.begin(), s.heard.probabilities.end(),
+                         [](const auto& a, const auto& b) { return a.second < b.second; });
+    fmt::print(" -> heard unknown (nearest {}, p {:.2f}), {:.1f} ms to classify",
+               nearest == s.heard.probabilities.end() ? "?" : nearest->first, s.heard.probability,
+               s.observe_ms);
+  } else if (s.classified) {
+    fmt::print(" -> heard {} (p {:.2f}), {:.1f} ms to classify", s.heard.label, s.heard.probability,
+               s.observe_ms);
+  }
   fmt::print(", reward {:g}\n", s.reward);
 }
 
