@@ -212,6 +212,7 @@ ObjectSpec read_original(const Catalogue& c, const std::string& name, const Entr
   o.wall_thickness = r.number("wall_thickness", 0, true, o.radius);
   o.base_thickness = r.number("base_thickness", 0, true, o.height);
   o.shell_mass = r.number("mass", 0, true);
+  o.base_radius = r.number_or("base_radius", 0.0, 0, false, o.radius + 1e-12);
   o.material = find_material(c, r);
   o.closed = r.flag_or("closed", false);
   o.contact_radius = r.number("contact_radius", 0, true);
@@ -237,6 +238,7 @@ ObjectSpec read_modified(const Catalogue& c, const std::string& name, const Entr
   if (!pos.IsSequence() || pos.size() != 3)
     added.fail(pos, "field 'position' must be [x, y, z] in metres");
   for (int k = 0; k < 3; ++k) a.position[k] = added.number(pos[k], "position");
+  a.loss_factor = added.number_or("loss_factor", 0.0, 0, false, 1.0);
   o.added_masses.push_back(a);
   return o;
 }
@@ -259,7 +261,15 @@ Catalogue parse_catalogue(const std::string& yaml_text, const std::string& sourc
   EntryReader table(source, "table", top.required("table"));
   c.table.material = find_material(c, table);
   c.table.friction = table.number_or("friction", 0.45, 0, true);
-  c.table.modes = read_modes(source, "table", table.required("modes"));
+  if (table.has("modes")) c.table.modes = read_modes(source, "table", table.child("modes"));
+  if (table.has("dense_modes")) {
+    EntryReader dense(source, "table.dense_modes", table.child("dense_modes"));
+    c.table.dense.from_hz = dense.number("from", 0, true);
+    c.table.dense.to_hz = dense.number("to", c.table.dense.from_hz, true);
+    c.table.dense.count = static_cast<int>(dense.number("count", 1, false, 1000));
+  }
+  c.table.thickness = table.number_or("thickness", 0.025, 0, true);
+  c.table.contact_loss_factor = table.number_or("contact_loss_factor", 0.0, 0, false, 1.0);
 
   // Originals first, so a modified object can name any original regardless of order in the file.
   const YAML::Node objects = top.required("objects");

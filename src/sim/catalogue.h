@@ -39,6 +39,7 @@ struct ListedMode {
 struct AddedMass {
   double mass = 0;                   // kg, > 0
   std::array<double, 3> position{};  // m
+  double loss_factor = 0;  // damping it adds to the object's modes (putty, glued coins), >= 0
 };
 
 // A rigid object the robot can slide or strike: a thin-walled cylinder with a base.
@@ -49,7 +50,9 @@ struct ObjectSpec {
   double height = 0;                     // m, > 0
   double wall_thickness = 0;             // m, in (0, radius)
   double base_thickness = 0;             // m, > 0
-  double shell_mass = 0;                 // kg, the object itself without added mass, > 0
+  double base_radius =
+      0;  // m, of the base plate (a tapered cup\'s is smaller than its rim); 0 = radius
+  double shell_mass = 0;  // kg, the object itself without added mass, > 0
   Material material;
   bool closed = false;                   // a closed tube: its air column rings at c/2L
   double contact_radius = 0;             // m, radius of curvature of the rim meeting the table, > 0
@@ -66,11 +69,25 @@ struct ObjectSpec {
   std::array<double, 3> inertia_diagonal() const;
 };
 
-// The table: its material (for contact stiffness), friction and its own listed modes.
+// The table's top as a plate whose modes above a few hundred hertz are too dense to list: `count`
+// modes spread evenly in log frequency over [from_hz, to_hz], at equal gain (a plate's point
+// mobility does not depend on frequency), each decaying with the table material's damping.
+struct DenseModes {
+  double from_hz = 0, to_hz = 0;
+  int count = 0;
+};
+
+// The table: its material (for contact stiffness and its modes' damping), friction, its own listed
+// modes and its dense modal field, and the damping of an object held against it.
 struct TableSpec {
   Material material;
   double friction = 0.45;
+  double thickness = 0.025;  // m, of the top: sets its coincidence frequency (how well it radiates)
   std::vector<ListedMode> modes;
+  DenseModes dense;
+  // Loss factor added to every mode of an object that rings while pressed onto the table and held
+  // by the fingers (energy flows into both): it is what makes a real strike a short thud.
+  double contact_loss_factor = 0.0;
 };
 
 struct Catalogue {

@@ -26,14 +26,17 @@ struct Impact {
   std::vector<RimContact> contacts;  // the contact points of that step (at least one)
 };
 
-// The object-table contacts of one action. The per-step vectors all have `steps` entries.
+// The object-table contacts of one action, and how fast the arm's joints turned. The per-step
+// vectors all have `steps` entries.
 struct ContactTrace {
   double timestep_s = 0.002;    // physics step (s)
   int steps = 0;                // number of physics steps simulated
   std::vector<Impact> impacts;  // in time order
   std::vector<double>
       sliding_speed;  // m/s, tangential speed of the object over the table (0 off the table)
-  std::vector<double> normal_force;         // N, total object-table normal force
+  std::vector<double> normal_force;  // N, total object-table normal force
+  std::vector<double>
+      joint_speed;  // rad/s, sum of the arm's joint speeds (its motors' noise rises with it)
   std::array<double, 3> object_position{};  // m, world position of the object's base at the start
 
   double duration_s() const { return steps * timestep_s; }

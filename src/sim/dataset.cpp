@@ -5,6 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
 
 #include "audio/io.h"
 #include "common/error.h"
@@ -60,48 +63,97 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
   for (const auto& [name, value] : TrialSetup{}.named()) manifest << ',' << name;
   manifest << '\n' << std::flush;
 
-  DatasetSummary summary;
-  const int total = static_cast<int>(objects.size() * options.actions.size()) * options.per_pair;
-  for (const auto& object : objects) {
-    // One robot and recorder per object: compiling the MuJoCo scene is the expensive part.
-    SimulatedRobot robot(catalogue, object, config);
-    SimulatedRecorder recorder(robot.object(), robot.table(), config);
+  // The clips in manifest order. Workers take the next clip in turn; each keeps one robot and
+  // recorder for the object it is on (compiling the MuJoCo scene is the expensive part). Every clip
+  // has its own seed, so which worker renders it does not change its bytes; rows are written in
+  // manifest order as soon as all earlier clips are done.
+  struct Job {
+    std::string object, action;
+    int index;
+  };
+  std::vector<Job> jobs;
+  for (const auto& object : objects)
     for (const auto& action : options.actions) {
       const fs::path folder = root / object / action;
       fs::create_directories(folder, ec);
       if (ec) throw InputError(folder.string(), 0, "cannot create the folder: " + ec.message());
-      for (int i = 0; i < options.per_pair; ++i) {
-        if (stop.load()) {
-          summary.interrupted = true;
-          return summary;
+      for (int i = 0; i < options.per_pair; ++i) jobs.push_back({object, action, i});
+    }
+  const int total = static_cast<int>(jobs.size());
+  struct Done {
+    std::string file, row;
+    bool collision = false;
+  };
+  std::vector<std::optional<Done>> done(jobs.size());
+  std::size_t next_row = 0;
+  std::atomic<std::size_t> next_job{0};
+  std::mutex mutex;
+  DatasetSummary summary;
+  std::exception_ptr failure;
+  auto write_row = [&](const Done& d) {
+    manifest << d.row << '\n' << std::flush;
+    if (!manifest) throw InputError(manifest_path.string(), 0, "cannot write the manifest");
+    ++summary.written;
+    if (d.collision) ++summary.collisions;
+  };
+  auto worker = [&] {
+    std::string current;
+    std::unique_ptr<SimulatedRobot> robot;
+    std::unique_ptr<SimulatedRecorder> recorder;
+    try {
+      for (std::size_t k; !stop.load() && (k = next_job++) < jobs.size();) {
+        {
+          std::lock_guard lock(mutex);
+          if (failure) return;
         }
-        const std::uint64_t seed = clip_seed(options.seed, object, action, i);
+        const Job& job = jobs[k];
+        if (job.object != current) {
+          robot = std::make_unique<SimulatedRobot>(catalogue, job.object, config);
+          recorder = std::make_unique<SimulatedRecorder>(robot->object(), robot->table(), config);
+          current = job.object;
+        }
+        const std::uint64_t seed = clip_seed(options.seed, job.object, job.action, job.index);
         Rng rng(seed);
-        const Recording r = simulate_recording(robot, recorder, action, rng);
-        const std::string relative = fmt::format("{}/{}/{:03d}.wav", object, action, i);
+        const Recording r = simulate_recording(*robot, *recorder, job.action, rng);
+        const std::string relative =
+            fmt::format("{}/{}/{:03d}.wav", job.object, job.action, job.index);
         const fs::path final_path = root / relative;
         const fs::path partial = final_path.string() + ".part";
         audio::write_audio(partial.string(), r.clip, audio::WriteOptions{});
-        fs::rename(partial, final_path, ec);
-        if (ec)
+        std::error_code rename_error;
+        fs::rename(partial, final_path, rename_error);
+        if (rename_error)
           throw InputError(final_path.string(), 0,
-                           "cannot move the finished file into place: " + ec.message());
-        manifest << relative << ',' << object << ',' << action << ',' << seed << ','
-                 << (r.outcome.collision() ? 1 : 0) << ','
-                 << fmt::format("{:.4f}", r.outcome.duration_s) << ','
-                 << r.outcome.trace.impacts.size();
+                           "cannot move the finished file into place: " + rename_error.message());
+        std::string row = fmt::format("{},{},{},{},{},{:.4f},{}", relative, job.object, job.action,
+                                      seed, r.outcome.collision() ? 1 : 0, r.outcome.duration_s,
+                                      r.outcome.trace.impacts.size());
         for (const auto& [name, value] : r.outcome.variation.named())
-          manifest << ',' << fmt::format("{:.6g}", value);
+          row += fmt::format(",{:.6g}", value);
         for (const auto& [name, value] : r.outcome.setup.named())
-          manifest << ',' << fmt::format("{:.6g}", value);
-        manifest << '\n' << std::flush;
-        if (!manifest) throw InputError(manifest_path.string(), 0, "cannot write the manifest");
-        ++summary.written;
-        if (r.outcome.collision()) ++summary.collisions;
-        if (progress) progress(summary.written, total, relative);
+          row += fmt::format(",{:.6g}", value);
+        std::lock_guard lock(mutex);
+        done[k] = Done{relative, std::move(row), r.outcome.collision()};
+        for (; next_row < done.size() && done[next_row]; ++next_row) {
+          write_row(*done[next_row]);
+          if (progress) progress(summary.written, total, done[next_row]->file);
+        }
       }
+    } catch (...) {
+      std::lock_guard lock(mutex);
+      if (!failure) failure = std::current_exception();
     }
-  }
+  };
+  const int threads = std::max(1, std::min(options.threads, total));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  // Interrupted: keep the rows of every finished clip, even those after a gap, in manifest order.
+  for (std::size_t k = next_row; k < done.size(); ++k)
+    if (done[k]) write_row(*done[k]);
+  summary.interrupted = summary.written < total;
   return summary;
 }
 

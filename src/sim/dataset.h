@@ -26,6 +26,7 @@ struct DatasetOptions {
   int per_pair = 10;  // recordings per (object, action), >= 1
   std::uint64_t seed = 0;
   std::string output_dir;
+  int threads = 2;  // worker threads (>= 1); the files and manifest do not depend on it
 };
 
 struct DatasetSummary {

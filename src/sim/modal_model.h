@@ -1,5 +1,6 @@
 // The vibration modes of objects and the table, and the Hertz contact that excites them
-// (van den Doel, Kry & Pai 2001; contact mechanics after Johnson, "Contact Mechanics", 1985).
+// (van den Doel, Kry & Pai 2001; contact mechanics after Johnson, "Contact Mechanics", 1985; shell
+// and plate modes after Leissa, "Vibration of Shells" (1973) and "Vibration of Plates" (1969)).
 //
 // Pure functions of catalogue data: no state, no randomness.
 #pragma once
@@ -21,15 +22,39 @@ struct Mode {
       0;  // n of a shell ring mode (cos n theta around the axis); 0 = axisymmetric
 };
 
-// The object's modes below `max_frequency_hz`: the listed ones, or derived from geometry: shell
-// ring modes n = 2..ring_modes (Love's inextensional ring-bending frequencies for a thin cylinder,
-// f_n = h/(2 pi R^2) sqrt(E / (12 rho (1 - nu^2))) n (n^2 - 1) / sqrt(n^2 + 1)), the base plate's
-// first mode (clamped disc, lambda^2 = 10.21), and for a closed tube its air cavity at c / 2L.
-// Decay from the material's Rayleigh damping unless listed.
-std::vector<Mode> object_modes(const ObjectSpec& object, double max_frequency_hz);
+// Natural frequency (Hz) of mode (n around, axial wavenumber k_axial = beta / L along) of a thin
+// cylindrical shell of radius `radius_m` and wall `thickness_m`. Donnell's membrane term plus a
+// bending term that is Rayleigh's inextensional ring term n^2 (n^2 - 1)^2 / (n^2 + 1) for a long
+// shell (k_axial -> 0), with the axial curvature's terms added:
+//   Omega^2 = (1 - nu^2) l^4 / (l^2 + n^2)^2 + k [n^2 (n^2 - 1)^2 / (n^2 + 1) + l^4 + 2 l^2 n^2],
+//   l = k_axial R, k = h^2 / (12 R^2), f = Omega / (2 pi R) sqrt(E / (rho (1 - nu^2))).
+double shell_mode_frequency(const Material& material, double radius_m, double thickness_m, int n,
+                            double k_axial);
 
-// The table's listed modes, decaying with its material's Rayleigh damping unless listed otherwise.
+// Natural frequency (Hz) of a clamped circular plate of radius `radius_m` and thickness
+// `thickness_m` for the mode with eigenvalue lambda^2 (Leissa 1969, table 2.1: 10.2158 for (0,1),
+// 21.260 for (1,1), 34.877 for (2,1), 39.771 for (0,2)): f = lambda^2 / (2 pi a^2) sqrt(D / (rho
+// h)).
+double clamped_plate_frequency(const Material& material, double radius_m, double thickness_m,
+                               double lambda_squared);
+
+// The object's modes below `max_frequency_hz`: the listed ones, or derived from geometry: the
+// wall's shell modes n = 2..ring_modes with the base clamping the wall (the clamped-free beam
+// function's first axial wavenumber, 1.875 / height), the base plate's first three clamped modes,
+// and for a closed tube its air cavity at c / 2L. Added masses on the base (within a quarter of the
+// height) load the base's modes, those higher up the wall's. Decay from the material's damping plus
+// `contact_loss_factor` and the added masses' loss factors (sigma += pi f eta).
+std::vector<Mode> object_modes(const ObjectSpec& object, double max_frequency_hz,
+                               double contact_loss_factor = 0);
+
+// The table's listed modes and its dense modal field, decaying with its material's damping unless
+// listed otherwise.
 std::vector<Mode> table_modes(const TableSpec& table);
+
+// Coincidence frequency (Hz) of a plate of `thickness_m`: where its bending waves travel at the
+// speed of sound, f_c = c^2 / (2 pi h c_b) with c_b = sqrt(E / (12 rho (1 - nu^2))). Below it a
+// plate radiates poorly.
+double coincidence_frequency(const Material& material, double thickness_m);
 
 // Effective contact modulus E* (Pa): 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2.
 double effective_modulus(const Material& a, const Material& b);

@@ -128,8 +128,13 @@ SimConfig parse_sim_config(const std::string& yaml_text, const std::string& sour
                {{"sample_rate", number_into(source, sample_rate, 8000.0, 192000.0)},
                 {"duration_s", number_into(source, rec.duration_s, 0.1, 60.0)},
                 {"noise_dbfs", number_into(source, rec.noise_dbfs, -200.0, 0.0)},
-                {"output_gain", number_into(source, rec.output_gain, 0.0, 1000.0)},
-                {"friction_gain", number_into(source, rec.friction_gain, 0.0, 1000.0)}});
+                {"output_gain", number_into(source, rec.output_gain, 0.0, 1.0e6)},
+                {"friction_gain", number_into(source, rec.friction_gain, 0.0, 1000.0)},
+                {"lead_in_s", number_into(source, rec.lead_in_s, 0.0, 10.0)},
+                {"motor_noise_gain", number_into(source, rec.motor_noise_gain, 0.0, 1000.0)},
+                {"limiter_ceiling_dbfs", number_into(source, rec.limiter_ceiling_dbfs, -60.0, 0.0)},
+                {"limiter_hold_s", number_into(source, rec.limiter_hold_s, 0.0, 10.0)},
+                {"limiter_release_s", number_into(source, rec.limiter_release_s, 0.001, 10.0)}});
   rec.sample_rate = static_cast<int>(std::lround(sample_rate));
   read_section(source, root, "physics",
                {{"timestep_s", number_into(source, c.physics.timestep_s, 0.0005, 0.005)}});

@@ -52,16 +52,26 @@ struct RoomConfig {
   double rt60_s = 0.25;        // s, reverberation time of the decaying-noise tail, > 0
   double length_s = 0.08;      // s, impulse response length kept, > 0
   double taps_per_s = 500;     // sparse noise taps per second of impulse response, > 0
-  double reverb_level = 0.25;  // tail amplitude relative to the direct sound, >= 0
+  double reverb_level = 0.06;  // tail amplitude relative to the direct sound (microphone close:
+                               // strikes fall 20 dB in 15-45 ms)
 };
 
 struct RecordingConfig {
   int sample_rate = 44100;  // Hz
-  double duration_s = 3.0;  // s, minimum recording length (longer if the action is)
-  double noise_dbfs = -65;  // background noise level, dB re full scale (RMS)
-  double output_gain =
-      25;  // full-scale per unit of synthesized pressure (fixed: loudness carries information)
-  double friction_gain = 1e-5;  // scale of sliding excitation relative to impacts
+  double duration_s =
+      3.0;  // s, minimum recording length after the lead-in (longer if the action is)
+  double lead_in_s = 0.355;  // s of exact digital zeros at the start (the lab's recorder opening)
+  double noise_dbfs =
+      -69;  // background noise, dB re full scale (RMS): the lab's strikes sit 51-58 dB above it
+  double output_gain = 1400;  // full scale per unit of synthesized pressure before the limiter
+                              // (every strike reaches it)
+  double friction_gain =
+      3.1e-7;  // scale of sliding excitation relative to impacts (slides 17 dB below strikes)
+  double motor_noise_gain =
+      1.8e-5;  // motor noise per rad/s of summed joint speed (about 20 dB below a slide)
+  double limiter_ceiling_dbfs = -3;  // the recorder's limiter: no sample above this
+  double limiter_hold_s = 0.5;       // s the limiter holds its gain after a peak
+  double limiter_release_s = 0.5;    // s time constant of its recovery
 };
 
 struct PhysicsConfig {

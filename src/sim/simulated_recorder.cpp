@@ -3,6 +3,7 @@
 #include <kiss_fftr.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <memory>
@@ -13,15 +14,29 @@ namespace echoplan::sim {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
+// An object's modes answer a force impulse with a velocity inversely proportional to their modal
+// mass (about the object's mass): a heavy mug rings less for the same push than a light cup.
+// Relative to this mass.
+constexpr double kReferenceModalMass = 0.06;  // kg
+constexpr double kReferenceHz = 1000.0;  // dipole radiation is normalised to 1 at this frequency
+constexpr double kPulseGain = 3.0;  // the contact pulse's direct radiation relative to the modes
+constexpr double kDirectFriction =
+    0.5;                               // the rubbing contact's own radiation relative to the modes
+constexpr double kMotorHz = 1200.0;    // centre of the motors' and gears' noise band
+constexpr double kMotorQ = 0.7;        // its width (Q of a band-pass: about two octaves)
+constexpr double kMotorAttack = 0.15;  // s for the motor noise to follow rising joint speed
+constexpr double kMotorRelease = 0.4;  // s for it to die away after the arm slows
+constexpr double kLimiterLookahead = 0.001;  // s
 constexpr double kRingGainFloor =
     0.15;  // real objects are not perfectly round: every ring mode hears a hit
-constexpr double kTableCoupling = 0.4;  // share of the contact force's effect that rings the table
+constexpr double kTableCoupling = 0.25;  // share of the contact force's effect that rings the table
 constexpr double kProfileSpacing =
     2.0e-6;  // m between surface-profile samples (12.5 kHz at 5 cm/s)
 constexpr double kReferenceSlideSpeed = 0.05;  // m/s at which friction_gain is calibrated
 constexpr double kStaticSpeed =
-    1e-4;  // m/s: slower creep is static contact (the solver's drift), silent
-constexpr double kTailDecay = 11.5;      // ln(1e5): a mode is rendered until it fell by 100 dB
+    2e-3;  // m/s: slower creep of a pressed contact is the solver's compliance, silent
+constexpr double kTailDecay =
+    9.2;  // ln(1e4): a mode is rendered until it fell by 80 dB (below the noise floor)
 constexpr double kSourceHeight = 0.02;   // m above the table: where the object radiates from
 constexpr double kDirectPathGain = 0.3;  // pressure at 1 m per unit modal amplitude
 
@@ -31,42 +46,72 @@ struct ModeDrive {
   double continuous_gain = 0;                            // times the friction excitation
 };
 
-// Renders mode `mode` driven by `drive` into `out` (added): the resonator
-// y[n] = 2 r cos(w) y[n-1] - r^2 y[n-2] + sin(w) x[n] has impulse response r^n sin(w (n + 1)).
+// Renders `modes` driven by `drives` into `out` (added). Each mode is the resonator
+// y[n] = 2 r cos(w) y[n-1] - r^2 y[n-2] + sin(w) x[n] (impulse response r^n sin(w (n + 1))), from
+// its first excitation until kTailDecay below its last. Modes run four at a time in one loop: the
+// recursions are independent, so the processor overlaps them (one alone waits on its own latency).
 // `friction_span` is [first, last] sample where the friction excitation is non-zero (first > last:
 // none).
-void render_mode(const Mode& mode, const ModeDrive& drive, const std::vector<float>& friction,
-                 std::pair<std::size_t, std::size_t> friction_span, int rate,
-                 std::vector<float>& out) {
-  const double w = kTwoPi * mode.frequency_hz / rate;
-  const double r = std::exp(-mode.decay_per_s / rate);
-  const double a1 = 2.0 * r * std::cos(w), a2 = -r * r, b = std::sin(w);
-  const std::size_t n_total = out.size();
-  // Render from the first excitation until 100 dB below the last one.
-  std::size_t first = n_total, last = 0;
-  for (const auto& [at, amp] : drive.impulses) {
-    first = std::min(first, at);
-    last = std::max(last, at);
-  }
-  if (drive.continuous_gain != 0 && friction_span.first <= friction_span.second) {
-    first = std::min(first, friction_span.first);
-    last = std::max(last, friction_span.second);
-  }
-  if (first >= n_total) return;
-  const double tail =
-      mode.decay_per_s > 0 ? kTailDecay / mode.decay_per_s * rate : static_cast<double>(n_total);
-  const std::size_t end = std::min(n_total, last + static_cast<std::size_t>(tail) + 1);
-  std::vector<double> x(end - first, 0.0);
-  for (const auto& [at, amp] : drive.impulses) x[at - first] += amp;
-  if (drive.continuous_gain != 0)
-    for (std::size_t n = first; n < std::min(end, friction.size()); ++n)
-      x[n - first] += drive.continuous_gain * friction[n];
-  double y1 = 0, y2 = 0;
-  for (std::size_t n = first; n < end; ++n) {
-    const double y = a1 * y1 + a2 * y2 + b * x[n - first];
-    y2 = y1;
-    y1 = y;
-    out[n] += static_cast<float>(y);
+void render_modes(const std::vector<Mode>& modes, const std::vector<ModeDrive>& drives,
+                  const std::vector<float>& friction,
+                  std::pair<std::size_t, std::size_t> friction_span, int rate,
+                  std::vector<float>& out) {
+  constexpr std::size_t kLanes = 4;
+  const std::size_t n_total = std::min(out.size(), friction.size());
+  for (std::size_t g = 0; g < modes.size(); g += kLanes) {
+    double a1[kLanes] = {}, a2[kLanes] = {}, b[kLanes] = {}, drive[kLanes] = {};
+    double y1[kLanes] = {}, y2[kLanes] = {};
+    std::size_t first = n_total, end = 0;
+    struct Event {
+      std::size_t at, lane;
+      double amp;
+    };
+    std::vector<Event> events;
+    for (std::size_t lane = 0; lane < kLanes && g + lane < modes.size(); ++lane) {
+      const Mode& mode = modes[g + lane];
+      const ModeDrive& d = drives[g + lane];
+      std::size_t f = n_total, last = 0;
+      for (const auto& [at, amp] : d.impulses) {
+        if (at >= n_total) continue;
+        f = std::min(f, at);
+        last = std::max(last, at);
+        events.push_back({at, lane, amp});
+      }
+      if (d.continuous_gain != 0 && friction_span.first <= friction_span.second) {
+        f = std::min(f, friction_span.first);
+        last = std::max(last, friction_span.second);
+        drive[lane] = d.continuous_gain;
+      }
+      if (f >= n_total) continue;
+      const double w = kTwoPi * mode.frequency_hz / rate;
+      const double r = std::exp(-mode.decay_per_s / rate);
+      a1[lane] = 2.0 * r * std::cos(w);
+      a2[lane] = -r * r;
+      b[lane] = std::sin(w);
+      const double tail = mode.decay_per_s > 0 ? kTailDecay / mode.decay_per_s * rate
+                                               : static_cast<double>(n_total);
+      first = std::min(first, f);
+      end = std::max(end,
+                     std::min(n_total, last + static_cast<std::size_t>(std::min(tail, 1e9)) + 1));
+    }
+    if (first >= end) continue;
+    std::sort(events.begin(), events.end(),
+              [](const Event& x, const Event& y) { return x.at < y.at; });
+    std::size_t next_event = 0;
+    for (std::size_t n = first; n < end; ++n) {
+      double x[kLanes];
+      for (std::size_t lane = 0; lane < kLanes; ++lane) x[lane] = drive[lane] * friction[n];
+      for (; next_event < events.size() && events[next_event].at == n; ++next_event)
+        x[events[next_event].lane] += events[next_event].amp;
+      double sum = 0;
+      for (std::size_t lane = 0; lane < kLanes; ++lane) {
+        const double y = a1[lane] * y1[lane] + a2[lane] * y2[lane] + b[lane] * x[lane];
+        y2[lane] = y1[lane];
+        y1[lane] = y;
+        sum += y;
+      }
+      out[n] += static_cast<float>(sum);
+    }
   }
 }
 
@@ -156,8 +201,12 @@ std::vector<float> friction_excitation(const ContactTrace& trace, int rate, std:
     const double height = profile[k] + (profile[k + 1] - profile[k]) * (p - static_cast<double>(k));
     // The profile has unit slope per profile sample, so (height change) * spacing * rate is slope
     // times speed: at the reference speed the drive is gain * force * slope.
-    e[n] = static_cast<float>(gain * force * (height - previous_height) * kProfileSpacing * rate /
-                              kReferenceSlideSpeed);
+    // Roughness noise: the contact is forced to follow the surfaces' asperities, a velocity source
+    // (speed times the profile's slope) that does not depend on the load once the surfaces touch
+    // (Akay 2002, "Acoustics of friction"): a heavy object slides no louder than a light one.
+    const double touching = force > 0 ? 1.0 : 0.0;
+    e[n] = static_cast<float>(gain * touching * (height - previous_height) * kProfileSpacing *
+                              rate / kReferenceSlideSpeed);
     previous_height = height;
   }
   return e;
@@ -193,6 +242,87 @@ void add_delayed(const std::vector<float>& in, std::size_t delay, float gain,
   for (std::size_t i = 0; i < n; ++i) o[i] += gain * x[i];
 }
 
+// The pressure the contact force radiates directly (the object and the table surface accelerated as
+// a whole: dipole radiation, proportional to dF/dt): for a half-sine force of impulse `momentum`
+// and duration `tau`, a single cosine cycle over the contact. Its spectrum peaks near 0.68 / tau:
+// why a light cup (short contact) sounds higher than a heavy mug on the same table.
+void add_contact_pulse(double momentum, double tau, std::size_t at, int rate,
+                       std::vector<float>& out) {
+  const auto length = static_cast<std::size_t>(std::ceil(tau * rate));
+  const double scale = kPulseGain * momentum * std::numbers::pi / (tau * kTwoPi * kReferenceHz);
+  for (std::size_t n = 0; n < length && at + n < out.size(); ++n)
+    out[at + n] += static_cast<float>(scale * std::cos(std::numbers::pi * (n + 0.5) / rate / tau));
+}
+
+// The arm's motors and gears: broadband noise (a band around kMotorHz) whose amplitude follows the
+// joints' speed, rising over kMotorAttack and dying away over kMotorRelease after the arm stops.
+void add_motor_noise(const ContactTrace& trace, int rate, double gain, NoiseSource& noise,
+                     std::vector<float>& out) {
+  if (gain <= 0 || trace.steps == 0 || trace.joint_speed.empty()) return;
+  // RBJ band-pass biquad (constant 0 dB peak gain).
+  const double w0 = kTwoPi * kMotorHz / rate;
+  const double bandwidth = std::sin(w0) / (2.0 * kMotorQ);
+  const double a0 = 1 + bandwidth;
+  const double b0 = bandwidth / a0, b2 = -bandwidth / a0, a1 = -2 * std::cos(w0) / a0,
+               a2 = (1 - bandwidth) / a0;
+  const double attack = 1.0 - std::exp(-1.0 / (kMotorAttack * rate));
+  const double release = 1.0 - std::exp(-1.0 / (kMotorRelease * rate));
+  double envelope = 0, x1 = 0, x2 = 0, y1 = 0, y2 = 0;
+  for (std::size_t n = 0; n < out.size(); ++n) {
+    const auto step =
+        std::min(static_cast<std::size_t>(static_cast<double>(n) / rate / trace.timestep_s),
+                 trace.joint_speed.size() - 1);
+    const double speed =
+        static_cast<double>(n) / rate < trace.duration_s() ? trace.joint_speed[step] : 0.0;
+    envelope += (speed > envelope ? attack : release) * (speed - envelope);
+    if (envelope < 1e-6 && speed == 0) continue;
+    const double x = noise.next();
+    const double y = b0 * x + b2 * x2 - a1 * y1 - a2 * y2;
+    x2 = x1;
+    x1 = x;
+    y2 = y1;
+    y1 = y;
+    out[n] += static_cast<float>(gain * envelope * y);
+  }
+}
+
+// The recorder's peak limiter (stereo-linked): looks kLimiterLookahead ahead, lowers the gain at
+// once so no sample exceeds the ceiling, holds it, then lets it recover. It is why the lab's four
+// strikes peak within 0.3 dB of each other at -3 dBFS whatever the object.
+void apply_limiter(const RecordingConfig& rec, int rate,
+                   std::array<std::vector<float>, 2>& channels) {
+  const std::size_t frames = channels[0].size();
+  const double ceiling = std::pow(10.0, rec.limiter_ceiling_dbfs / 20.0);
+  const auto ahead = static_cast<std::size_t>(kLimiterLookahead * rate);
+  const auto hold = static_cast<std::size_t>(rec.limiter_hold_s * rate);
+  const double recover = 1.0 - std::exp(-1.0 / (rec.limiter_release_s * rate));
+  std::vector<float> peak(frames);
+  for (std::size_t i = 0; i < frames; ++i)
+    peak[i] = std::max(std::abs(channels[0][i]), std::abs(channels[1][i]));
+  // Sliding maximum of the peaks over [i, i + ahead] (monotonic deque of indices).
+  std::vector<std::size_t> window(frames + 1);
+  std::size_t head = 0, tail = 0, next = 0;
+  double gain = 1.0;
+  std::size_t held_until = 0;
+  for (std::size_t i = 0; i < frames; ++i) {
+    for (; next < frames && next <= i + ahead; ++next) {
+      while (tail > head && peak[window[tail - 1]] <= peak[next]) --tail;
+      window[tail++] = next;
+    }
+    while (window[head] < i) ++head;
+    const double needed =
+        std::min(1.0, ceiling / std::max(1e-12, static_cast<double>(peak[window[head]])));
+    if (needed < gain) {
+      gain = needed;
+      held_until = i + hold;
+    } else if (i >= held_until) {
+      gain += recover * (needed - gain);
+    }
+    channels[0][i] = static_cast<float>(channels[0][i] * gain);
+    channels[1][i] = static_cast<float>(channels[1][i] * gain);
+  }
+}
+
 }  // namespace
 
 double hertz_pulse_envelope(double omega, double duration_s) {
@@ -204,12 +334,21 @@ SimulatedRecorder::SimulatedRecorder(const ObjectSpec& object, const TableSpec& 
                                      const SimConfig& config)
     : object_(object),
       config_(config),
-      object_modes_(sim::object_modes(object, 0.45 * config.recording.sample_rate)),
+      object_modes_(sim::object_modes(object, 0.45 * config.recording.sample_rate,
+                                      table.contact_loss_factor)),
       table_modes_(sim::table_modes(table)),
-      contact_modulus_(effective_modulus(object.material, table.material)) {
+      contact_modulus_(effective_modulus(object.material, table.material)),
+      table_coincidence_hz_(coincidence_frequency(table.material, table.thickness)),
+      object_mode_scale_(kReferenceModalMass / object.total_mass()) {
   std::erase_if(table_modes_, [&](const Mode& m) {
     return m.frequency_hz >= 0.45 * config.recording.sample_rate;
   });
+}
+
+double SimulatedRecorder::table_radiation(double frequency_hz) const {
+  // Below its coincidence frequency a finite plate radiates through its edges and corners only,
+  // with an efficiency rising about as f / f_c (Maidanik 1962): pressure as its square root.
+  return std::sqrt(std::min(1.0, frequency_hz / table_coincidence_hz_));
 }
 
 double SimulatedRecorder::contact_time(const Impact& impact) const {
@@ -224,34 +363,53 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
   const auto frames = static_cast<std::size_t>(std::lround(seconds * rate));
   const ContactTrace& trace = outcome.trace;
 
-  // Per-mode drives: each impact is an impulse of momentum m_eff v weighted by the pulse spectrum
-  // at the mode's frequency and, for ring modes, by the rim contact pattern.
+  // What varies from recording to recording: where the microphone stand was, how loud the room was.
+  const auto& var = config_.variability;
+  const double mic_offset =
+      var.microphone_distance.mean +
+      var.microphone_distance.spread * std::clamp(standard_normal(rng), -3.0, 3.0);
+  const double noise_db = rec.noise_dbfs + var.background_db.mean +
+                          var.background_db.spread * std::clamp(standard_normal(rng), -3.0, 3.0);
+
+  // Per-mode drives: each impact is an impulse of momentum m_eff v weighted by the pressure its
+  // force pulse radiates at the mode's frequency (dipole radiation: omega times the pulse spectrum)
+  // and, for ring modes, by the rim contact pattern.
   std::vector<ModeDrive> object_drives(object_modes_.size()), table_drives(table_modes_.size());
+  std::vector<float> dry(frames, 0.0f);
   for (const Impact& impact : trace.impacts) {
     const auto at = static_cast<std::size_t>(std::lround(impact.time_s * rate));
     if (at >= frames) continue;
     const double momentum = impact.effective_mass * impact.normal_speed;
     const double tau = contact_time(impact);
+    auto radiated = [&](double f) {
+      return f / kReferenceHz * hertz_pulse_envelope(kTwoPi * f, tau);
+    };
     for (std::size_t k = 0; k < object_modes_.size(); ++k) {
       const Mode& m = object_modes_[k];
-      const double amp = momentum * m.gain * hertz_pulse_envelope(kTwoPi * m.frequency_hz, tau) *
-                         ring_excitation(impact.contacts, m.azimuthal_order);
-      object_drives[k].impulses.emplace_back(at, amp);
+      object_drives[k].impulses.emplace_back(
+          at, object_mode_scale_ * momentum * m.gain * radiated(m.frequency_hz) *
+                  ring_excitation(impact.contacts, m.azimuthal_order));
     }
     for (std::size_t k = 0; k < table_modes_.size(); ++k) {
       const Mode& m = table_modes_[k];
-      table_drives[k].impulses.emplace_back(
-          at,
-          kTableCoupling * momentum * m.gain * hertz_pulse_envelope(kTwoPi * m.frequency_hz, tau));
+      table_drives[k].impulses.emplace_back(at, kTableCoupling * momentum * m.gain *
+                                                    radiated(m.frequency_hz) *
+                                                    table_radiation(m.frequency_hz));
     }
+    add_contact_pulse(momentum, tau, at, rate, dry);
   }
   NoiseSource noise(rng);
   const std::vector<float> friction =
       friction_excitation(trace, rate, frames, rec.friction_gain, noise);
+  // Friction drives every mode continuously, radiated like the impacts (dipole: rising with
+  // frequency).
   for (std::size_t k = 0; k < object_modes_.size(); ++k)
-    object_drives[k].continuous_gain = object_modes_[k].gain;
+    object_drives[k].continuous_gain =
+        object_mode_scale_ * object_modes_[k].gain * object_modes_[k].frequency_hz / kReferenceHz;
   for (std::size_t k = 0; k < table_modes_.size(); ++k)
-    table_drives[k].continuous_gain = kTableCoupling * table_modes_[k].gain;
+    table_drives[k].continuous_gain = kTableCoupling * table_modes_[k].gain *
+                                      table_modes_[k].frequency_hz / kReferenceHz *
+                                      table_radiation(table_modes_[k].frequency_hz);
 
   std::pair<std::size_t, std::size_t> friction_span{frames, 0};
   for (std::size_t n = 0; n < friction.size(); ++n)
@@ -260,11 +418,12 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
       friction_span.second = n;
     }
 
-  std::vector<float> dry(frames, 0.0f);
-  for (std::size_t k = 0; k < object_modes_.size(); ++k)
-    render_mode(object_modes_[k], object_drives[k], friction, friction_span, rate, dry);
-  for (std::size_t k = 0; k < table_modes_.size(); ++k)
-    render_mode(table_modes_[k], table_drives[k], friction, friction_span, rate, dry);
+  render_modes(object_modes_, object_drives, friction, friction_span, rate, dry);
+  render_modes(table_modes_, table_drives, friction, friction_span, rate, dry);
+  // The rubbing contact itself radiates broadband noise besides ringing the modes.
+  for (std::size_t n = 0; n < frames; ++n)
+    dry[n] += static_cast<float>(kDirectFriction) * friction[n];
+  add_motor_noise(trace, rate, rec.motor_noise_gain, noise, dry);
 
   // The room: the dry sound plus its reverberant tail, shared by both capsules (they are
   // centimetres apart in the same room).
@@ -273,28 +432,32 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
     add_delayed(dry, delay, gain, room);
 
   // Two capsules either side of the microphone position along y; each hears the room's sound with
-  // its own delay and 1/r gain, plus its own background noise.
-  audio::AudioClip clip;
-  clip.sample_rate = rate;
-  clip.channels = 2;
-  clip.samples.assign(frames * 2, 0.0f);
+  // its own delay and 1/r gain; the recorder's limiter acts on both alike; then its own noise.
   const auto& mic = config_.microphone;
-  const float noise_rms = static_cast<float>(std::pow(10.0, rec.noise_dbfs / 20.0));
-  std::vector<float> heard(frames);
+  std::array<std::vector<float>, 2> heard;
   for (int channel = 0; channel < 2; ++channel) {
     const double offset = (channel == 0 ? 0.5 : -0.5) * mic.capsule_spacing;
     const double dx = mic.position[0] - trace.object_position[0];
     const double dy = mic.position[1] + offset - trace.object_position[1];
     const double dz = mic.position[2] - (trace.object_position[2] + kSourceHeight);
-    const double distance = std::max(0.05, std::sqrt(dx * dx + dy * dy + dz * dz));
-    std::fill(heard.begin(), heard.end(), 0.0f);
+    const double distance = std::max(0.1, std::sqrt(dx * dx + dy * dy + dz * dz) + mic_offset);
+    heard[channel].assign(frames, 0.0f);
     add_delayed(room, static_cast<std::size_t>(std::lround(distance / kSpeedOfSound * rate)),
-                static_cast<float>(rec.output_gain * kDirectPathGain / distance), heard);
-    const float full_scale_max = 32767.0f / 32768.0f;
-    for (std::size_t i = 0; i < frames; ++i)
-      clip.samples[2 * i + channel] =
-          std::clamp(heard[i] + noise_rms * noise.next(), -1.0f, full_scale_max);
+                static_cast<float>(rec.output_gain * kDirectPathGain / distance), heard[channel]);
   }
+  apply_limiter(rec, rate, heard);
+
+  const auto lead = static_cast<std::size_t>(std::lround(rec.lead_in_s * rate));
+  audio::AudioClip clip;
+  clip.sample_rate = rate;
+  clip.channels = 2;
+  clip.samples.assign((lead + frames) * 2, 0.0f);  // the recorder's opening: exact digital zeros
+  const float noise_rms = static_cast<float>(std::pow(10.0, noise_db / 20.0));
+  const float full_scale_max = 32767.0f / 32768.0f;
+  for (int channel = 0; channel < 2; ++channel)
+    for (std::size_t i = 0; i < frames; ++i)
+      clip.samples[2 * (lead + i) + channel] =
+          std::clamp(heard[channel][i] + noise_rms * noise.next(), -1.0f, full_scale_max);
   return clip;
 }
 

@@ -45,6 +45,11 @@ class SimulatedRecorder {
   std::vector<Mode> object_modes_;
   std::vector<Mode> table_modes_;
   double contact_modulus_ = 0;  // Pa, E* of object material on table material
+  double table_coincidence_hz_ = 0;
+  double object_mode_scale_ =
+      1;  // the object's modes' response per unit impulse, relative (1 / mass)
+  // Pressure amplitude factor of the table's radiation at `frequency_hz` (1 above coincidence).
+  double table_radiation(double frequency_hz) const;
 };
 
 // Begins a trial on `robot`, runs `action` as its first action and records it: the setup, the

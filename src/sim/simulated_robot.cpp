@@ -218,6 +218,9 @@ class ContactRecorder {
     const double* v = d->qvel + s_.object_dof;
     if (total > 0 && !pending_impact_) clear_of_table_ = false;
     trace_.normal_force.push_back(total);
+    double joints = 0;
+    for (int i = 0; i < kArmJoints; ++i) joints += std::abs(d->qvel[i]);
+    trace_.joint_speed.push_back(joints);
     trace_.sliding_speed.push_back(total > 0 ? std::hypot(v[0], v[1]) : 0.0);
     ++trace_.steps;
   }

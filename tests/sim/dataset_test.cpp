@@ -85,6 +85,7 @@ TEST(Dataset, StoppingKeepsFinishedFilesAndTheirRows) {
   options.actions = {"strike"};
   options.per_pair = 5;
   options.output_dir = dir.string();
+  options.threads = 1;  // one clip in progress at a time: stopping after the 2nd leaves exactly 2
   std::atomic<bool> stop{false};
   const DatasetSummary s = write_dataset(
       shipped_catalogue(), SimConfig{}, options,
@@ -97,6 +98,36 @@ TEST(Dataset, StoppingKeepsFinishedFilesAndTheirRows) {
   for (const auto& entry : fs::recursive_directory_iterator(dir))
     EXPECT_NE(entry.path().extension(), ".part");
   fs::remove_all(dir);
+}
+
+TEST(Dataset, TwoThreadsWriteTheSameFilesAsOne) {
+  std::vector<std::string> manifests;
+  std::vector<std::string> first_files;
+  for (int threads : {1, 2}) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("echoplan_dataset_threads_" + std::to_string(threads));
+    fs::remove_all(dir);
+    DatasetOptions options;
+    options.objects = {"plastic_cup", "coffee_mug"};
+    options.actions = {"strike"};
+    options.per_pair = 2;
+    options.output_dir = dir.string();
+    options.threads = threads;
+    std::atomic<bool> stop{false};
+    EXPECT_EQ(write_dataset(shipped_catalogue(), SimConfig{}, options, nullptr, stop).written, 4);
+    std::ifstream in(dir / "manifest.csv");
+    manifests.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    std::string bytes;
+    for (const char* f : {"plastic_cup/strike/000.wav", "coffee_mug/strike/001.wav"}) {
+      std::ifstream wav(dir / f, std::ios::binary);
+      bytes += std::string(std::istreambuf_iterator<char>(wav), std::istreambuf_iterator<char>());
+    }
+    first_files.push_back(bytes);
+    fs::remove_all(dir);
+  }
+  EXPECT_EQ(manifests[0], manifests[1]);
+  EXPECT_EQ(first_files[0], first_files[1]);
+  EXPECT_FALSE(first_files[0].empty());
 }
 
 TEST(Dataset, UnknownNamesFailBeforeAnyFileIsWritten) {

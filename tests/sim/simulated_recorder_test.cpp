@@ -18,11 +18,28 @@
 namespace echoplan::sim {
 namespace {
 
-// A config with no background noise and no reverberation, so spectra show the modes alone.
+// A config with no background or motor noise, no reverberation, no lead-in, no
+// recording-to-recording variation and the limiter out of reach (low gain, 0 dBFS ceiling), so
+// spectra show the modes alone.
 SimConfig quiet() {
   SimConfig c;
   c.recording.noise_dbfs = -200;
+  c.recording.motor_noise_gain = 0;
+  c.recording.lead_in_s = 0;
+  c.recording.output_gain = 25;
+  c.recording.limiter_ceiling_dbfs = 0;
+  c.variability.microphone_distance.spread = 0;
+  c.variability.background_db.spread = 0;
   c.room.reverb_level = 0;
+  return c;
+}
+
+// The shipped catalogue with the table's dense modes and the contact loss taken out, so an object's
+// own modes ring alone and as sharp as their own damping makes them.
+Catalogue bare_table_catalogue() {
+  Catalogue c = shipped_catalogue();
+  c.table.dense.count = 0;
+  c.table.contact_loss_factor = 0;
   return c;
 }
 
@@ -57,7 +74,7 @@ ActionVariation nominal() {
 TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
   // An object with listed modes; the peak nearest each must sit on it, far above the spectrum
   // floor.
-  Catalogue c = shipped_catalogue();
+  Catalogue c = bare_table_catalogue();
   ObjectSpec bell = c.object("coffee_mug");
   bell.listed_modes = {{900, 1.0, 8.0}, {2300, 1.0, 8.0}, {4100, 1.0, 8.0}};
   c.objects["bell"] = bell;
@@ -88,7 +105,8 @@ TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
 
 TEST(SimulatedRecorder, DerivedModesOfTheMugAppearInItsStrike) {
   const SimConfig config = quiet();
-  SimulatedRobot robot(shipped_catalogue(), "coffee_mug", config);
+  const Catalogue catalogue = bare_table_catalogue();
+  SimulatedRobot robot(catalogue, "coffee_mug", config);
   SimulatedRecorder recorder(robot.object(), robot.table(), config);
   const ActionOutcome out = robot.execute("strike", nominal());
   Rng rng(3);
@@ -102,8 +120,11 @@ TEST(SimulatedRecorder, DerivedModesOfTheMugAppearInItsStrike) {
     const auto lo = static_cast<std::size_t>((m.frequency_hz - 50) / bin),
                hi = static_cast<std::size_t>((m.frequency_hz + 50) / bin);
     const auto peak = std::max_element(mag.begin() + lo, mag.begin() + hi) - mag.begin();
-    // Faster decay (tens per second) widens the peak: within 1 Hz.
-    EXPECT_NEAR(peak * bin, m.frequency_hz, 1.0) << m.frequency_hz;
+    // A decay of sigma per second widens the peak to a half-power half-width of sigma / (2 pi), and
+    // the impact pulse's sloping spectrum pulls the maximum within that width: at most the
+    // half-width (and 1 Hz, the resolution this spectrum is read at).
+    EXPECT_NEAR(peak * bin, m.frequency_hz, std::max(1.0, m.decay_per_s / (2 * std::numbers::pi)))
+        << m.frequency_hz;
     ++checked;
   }
   EXPECT_GE(checked, 2);
@@ -128,6 +149,9 @@ TEST(SimulatedRecorder, HeavierObjectSoundsDuller) {
   SimConfig config = quiet();
   config.recording.friction_gain = 0;
   double share[2];
+  // The contact pulse's radiated spectrum peaks near 0.68 / tau: about 650 Hz for the mug; a longer
+  // contact moves energy from above that to below it.
+  constexpr double kCut = 800;
   const char* names[2] = {"coffee_mug", "coffee_mug_weighted"};
   for (int i = 0; i < 2; ++i) {
     SimulatedRobot robot(shipped_catalogue(), names[i], config);
@@ -135,9 +159,9 @@ TEST(SimulatedRecorder, HeavierObjectSoundsDuller) {
     const ActionOutcome out = robot.execute("strike", nominal());
     Rng rng(11);
     share[i] =
-        high_frequency_share(recorder.record(out, rng), out.trace.impacts.front().time_s, 1500);
+        high_frequency_share(recorder.record(out, rng), out.trace.impacts.front().time_s, kCut);
   }
-  // Same modes, longer contact: measurably less of the energy above 1.5 kHz (at least 10% less).
+  // Longer contact: measurably less of the energy above the cut (at least 10% less).
   EXPECT_LT(share[1], share[0] * 0.9) << share[0] << " " << share[1];
 }
 
@@ -189,16 +213,22 @@ TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
 TEST(SimulatedRecorder, BackgroundNoiseHasTheConfiguredLevel) {
   SimConfig config;
   config.recording.noise_dbfs = -40;
+  config.variability.background_db.spread = 0;
   SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
                              config);
   ActionOutcome silent;  // no contacts at all
   Rng rng(9);
   const audio::AudioClip clip = recorder.record(silent, rng);
-  EXPECT_NEAR(clip.duration_seconds(), 3.0, 1e-9);
+  // The recorder's opening (exact zeros), then the 3 s recording.
+  EXPECT_NEAR(clip.duration_seconds(), config.recording.lead_in_s + 3.0, 1e-4);
+  const std::size_t lead =
+      static_cast<std::size_t>(std::lround(config.recording.lead_in_s * clip.sample_rate));
+  for (std::size_t i = 0; i < 2 * lead; ++i) ASSERT_EQ(clip.samples[i], 0.0f) << i;
   double energy = 0;
-  for (float s : clip.samples) energy += s * s;
+  for (std::size_t i = 2 * lead; i < clip.samples.size(); ++i)
+    energy += clip.samples[i] * clip.samples[i];
   // 264600 samples: the RMS estimate's relative standard error is ~0.2%; 2% bound.
-  EXPECT_NEAR(std::sqrt(energy / clip.samples.size()), 0.01, 0.0002);
+  EXPECT_NEAR(std::sqrt(energy / (clip.samples.size() - 2 * lead)), 0.01, 0.0002);
 }
 
 std::string file_bytes(const std::string& path) {
@@ -224,62 +254,21 @@ TEST(SimulatedRecorder, SameSeedGivesIdenticalFiles) {
   std::filesystem::remove_all(dir);
 }
 
-// The seed's observation feature: the MFCC matrix (frames x coefficients) of the whole clip,
-// channels averaged, flattened (every clip here is 3 s long, so the vectors have equal length).
-std::vector<double> mfcc_features(const audio::AudioClip& clip,
-                                  audio::FeatureExtractor& extractor) {
-  std::vector<float> mono(clip.frames());
-  for (std::size_t i = 0; i < clip.frames(); ++i)
-    mono[i] = 0.5f * (clip.samples[2 * i] + clip.samples[2 * i + 1]);
-  audio::Features features;
-  extractor.compute(mono, features);
-  return {features.mfcc.values.begin(), features.mfcc.values.end()};
-}
-
-TEST(SimulatedRecorder, NearestCentroidTellsTheFourObjectsApart) {
-  // Sanity check, not the classifier: 6 training and 4 test recordings per (object, action) with
-  // the default variability; a nearest-centroid on MFCC (librosa preset) must beat chance (25%) by
-  // far.
+TEST(SimulatedRecorder, LoudnessIsNotAnObjectCue) {
+  // The lab's four strikes peak within 0.3 dB of each other at -3 dBFS: the recorder's limiter, not
+  // the object, sets a strike's peak. (This replaces a test that nearest-centroid on MFCC tells the
+  // four simulated objects apart: the lab's objects were not that easy to tell apart, and the
+  // simulator no longer makes them so.)
   const SimConfig config;
-  audio::FeatureExtractor extractor(audio::librosa_preset(config.recording.sample_rate));
-  const std::vector<std::string> objects{"pringles_can", "coffee_mug", "plastic_cup", "paper_base"};
-  int correct = 0, total = 0;
-  for (const char* action : {"slide", "strike"}) {
-    std::map<std::string, std::vector<std::vector<double>>> train, test;
-    for (const auto& name : objects) {
-      SimulatedRobot robot(shipped_catalogue(), name, config);
-      SimulatedRecorder recorder(robot.object(), robot.table(), config);
-      for (int i = 0; i < 10; ++i) {
-        Rng rng(derive_seed(2024, {static_cast<std::uint64_t>(i), name.size(),
-                                   static_cast<std::uint64_t>(action[1])}));
-        const auto features =
-            mfcc_features(simulate_recording(robot, recorder, action, rng).clip, extractor);
-        (i < 6 ? train : test)[name].push_back(features);
-      }
-    }
-    std::map<std::string, std::vector<double>> centroid;
-    for (const auto& [name, rows] : train) {
-      centroid[name].assign(rows[0].size(), 0.0);
-      for (const auto& r : rows)
-        for (std::size_t k = 0; k < r.size(); ++k) centroid[name][k] += r[k] / rows.size();
-    }
-    for (const auto& [truth, rows] : test)
-      for (const auto& r : rows) {
-        std::string best;
-        double best_d = INFINITY;
-        for (const auto& [name, c] : centroid) {
-          double d = 0;
-          for (std::size_t k = 0; k < r.size(); ++k) d += (r[k] - c[k]) * (r[k] - c[k]);
-          if (d < best_d) {
-            best_d = d;
-            best = name;
-          }
-        }
-        correct += best == truth;
-        ++total;
-      }
+  for (const char* name : {"pringles_can", "coffee_mug", "plastic_cup", "paper_base"}) {
+    SimulatedRobot robot(shipped_catalogue(), name, config);
+    SimulatedRecorder recorder(robot.object(), robot.table(), config);
+    Rng rng(5);
+    const audio::AudioClip clip = simulate_recording(robot, recorder, "strike", rng).clip;
+    float peak = 0;
+    for (float x : clip.samples) peak = std::max(peak, std::abs(x));
+    EXPECT_NEAR(20 * std::log10(peak), config.recording.limiter_ceiling_dbfs, 0.3) << name;
   }
-  EXPECT_GE(static_cast<double>(correct) / total, 0.75) << correct << "/" << total;
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
-// `echoplan dataset`: record every (object, action) pair several times into a folder with a manifest.
+// `echoplan dataset`: record every (object, action) pair several times into a folder with a
+// manifest.
 #include "sim/dataset.h"
 
 #include <fmt/core.h>
@@ -12,9 +13,11 @@ namespace echoplan::cli {
 void add_dataset_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "dataset",
-      "Record every (object, action) pair --per-pair times: DIR/<object>/<action>/NNN.wav and DIR/manifest.csv "
+      "Record every (object, action) pair --per-pair times: DIR/<object>/<action>/NNN.wav and "
+      "DIR/manifest.csv "
       "(file, object, action, seed, collision, duration, impacts, sampled parameters).\n"
-      "Example: echoplan dataset --per-pair 10 --seed 1 -o recordings --objects coffee_mug,plastic_cup");
+      "Example: echoplan dataset --per-pair 10 --seed 1 -o recordings --objects "
+      "coffee_mug,plastic_cup");
   struct Options {
     SimFiles files;
     sim::DatasetOptions dataset;
@@ -23,13 +26,22 @@ void add_dataset_command(CLI::App& app) {
   cmd->add_option("--per-pair", opt->dataset.per_pair, "Recordings per (object, action)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--seed", opt->dataset.seed, "Dataset seed; each file's own seed is in the manifest")
+  cmd->add_option("--seed", opt->dataset.seed,
+                  "Dataset seed; each file's own seed is in the manifest")
       ->capture_default_str();
-  cmd->add_option("-o,--output", opt->dataset.output_dir, "Folder to write (created; its manifest.csv is replaced)")
+  cmd->add_option("-o,--output", opt->dataset.output_dir,
+                  "Folder to write (created; its manifest.csv is replaced)")
       ->required();
-  cmd->add_option("--objects", opt->dataset.objects, "Objects, comma-separated (default: the whole catalogue)")
+  cmd->add_option("--objects", opt->dataset.objects,
+                  "Objects, comma-separated (default: the whole catalogue)")
       ->delimiter(',');
-  cmd->add_option("--actions", opt->dataset.actions, "Actions, comma-separated")->delimiter(',')->capture_default_str();
+  cmd->add_option("--threads", opt->dataset.threads,
+                  "Worker threads (the files do not depend on it)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--actions", opt->dataset.actions, "Actions, comma-separated")
+      ->delimiter(',')
+      ->capture_default_str();
   add_sim_file_options(*cmd, opt->files);
   cmd->callback([opt] {
     const SimSetup setup = load_sim_setup(opt->files);
@@ -42,11 +54,14 @@ void add_dataset_command(CLI::App& app) {
           fmt::print(stderr, "[{}/{}] {}\n", done, total, file);
         },
         stop.flag());
-    fmt::print("{} recordings in {} ({} with the arm touching the table); manifest: {}/manifest.csv\n", summary.written,
-               opt->dataset.output_dir, summary.collisions, opt->dataset.output_dir);
+    fmt::print(
+        "{} recordings in {} ({} with the arm touching the table); manifest: {}/manifest.csv\n",
+        summary.written, opt->dataset.output_dir, summary.collisions, opt->dataset.output_dir);
     if (summary.interrupted) {
-      fmt::print(stderr, "echoplan: interrupted; the {} finished recordings and their manifest rows are kept\n",
-                 summary.written);
+      fmt::print(
+          stderr,
+          "echoplan: interrupted; the {} finished recordings and their manifest rows are kept\n",
+          summary.written);
       throw Interrupted{};
     }
   });

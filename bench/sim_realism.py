@@ -1,0 +1,201 @@
+#!/usr/bin/python3
+"""How the simulator's recordings compare with the original robot's real ones.
+
+Synthesises N clips per object and action with `echoplan dataset`, measures each with the shared
+sound_measures.py (the tool that measured the real recordings), and prints next to the real values
+(../shared/reference/real-robot-recordings.md):
+
+  - each measure's median and range for the mug and cup strikes and slides, and whether the median is
+    within the real range or within 25% (3 dB for dB measures) of the real mean;
+  - strike-minus-slide level per object (lab: 16.9 dB mug, 17.7 dB cup) and the spread of the strikes'
+    sample peaks across objects (lab: within 0.3 dB);
+  - the mug-vs-cup between/within log-mel distance ratio per action (lab: 1.5 strike, 1.2 slide; target
+    1.0-2.0): mean absolute difference of level-removed mean 64-band log-mel spectra;
+  - leave-one-out accuracy of the seed's template classifier on the four objects, computed here (psf-style
+    logfbank, 26 filters, 25 ms / 10 ms, nfft 512; slide: last 140 frames, strike: frames -300..-150
+    after dropping the first 2000 samples; nearest template by mean absolute difference). The seed also
+    noise-reduced slides first; that step is not reproduced.
+
+Usage: bench/sim_realism.py [--per-pair 10] [--seed 1] [--echoplan build/echoplan]
+                            [--measures ../shared/tools/sound_measures.py] [--keep DIR]
+Needs Debian's python3-numpy, python3-scipy, python3-soundfile (run with /usr/bin/python3).
+"""
+import argparse
+import importlib.util
+import itertools
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+import soundfile as sf
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(HERE)
+OBJECTS = ["pringles_can", "coffee_mug", "plastic_cup", "paper_base"]
+
+# The real recordings' measures (real-robot-recordings.md): per (object, action), a list per measure.
+REAL = {
+    ("coffee_mug", "strike"): {"centroid_hz": [705], "frac_0p5_2k": [0.70], "peak_hz": [560], "t_minus20_s": [0.045],
+                               "dur20_s": [0.11], "flatness_db": [-30.8], "n_hits": [2]},
+    ("plastic_cup", "strike"): {"centroid_hz": [934, 782, 959], "frac_0p5_2k": [0.99, 0.82, 0.96],
+                                "peak_hz": [904, 904, 904], "t_minus20_s": [0.020, 0.030, 0.015],
+                                "dur20_s": [0.02, 0.04, 0.03], "flatness_db": [-23.8, -21.6, -19.3],
+                                "n_hits": [1, 1, 1]},
+    ("coffee_mug", "slide"): {"centroid_hz": [993], "frac_0p5_2k": [0.61], "peak_hz": [894], "t_minus20_s": [0.765],
+                              "dur20_s": [1.64], "flatness_db": [-12.8]},
+    ("plastic_cup", "slide"): {"centroid_hz": [3064, 1729, 2519], "frac_0p5_2k": [0.26, 0.75, 0.51],
+                               "peak_hz": [797, 872, 592], "t_minus20_s": [0.670, 0.295, 0.620],
+                               "dur20_s": [2.00, 0.95, 1.40], "flatness_db": [-4.6, -7.4, -5.9]},
+}
+DB_MEASURES = {"flatness_db"}
+LAB_RATIO = {"strike": 1.5, "slide": 1.2}
+
+
+def load_measures(path):
+    spec = importlib.util.spec_from_file_location("sound_measures", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def met(median, real, measure):
+    """Within the real range, or within 25% (3 dB for dB measures) of the real mean."""
+    lo, hi, mean = min(real), max(real), statistics.mean(real)
+    if lo <= median <= hi:
+        return True
+    if measure in DB_MEASURES:
+        return abs(median - mean) <= 3.0
+    return abs(median - mean) <= 0.25 * abs(mean)
+
+
+# ------------------------------------------------------------------ the seed's template classifier
+def psf_logfbank(x, sr, nfilt=26, nfft=512, winlen=0.025, winstep=0.01, preemph=0.97):
+    """python_speech_features.logfbank: pre-emphasis, rectangular frames (cut to nfft by the FFT), power
+    spectrum / nfft, triangular mel filters over 0..sr/2, natural log."""
+    x = np.append(x[0], x[1:] - preemph * x[:-1])
+    flen, fstep = int(round(winlen * sr)), int(round(winstep * sr))
+    nframes = 1 + int(np.ceil((max(len(x), flen) - flen) / fstep))
+    padded = np.concatenate([x, np.zeros((nframes - 1) * fstep + flen - len(x))])
+    idx = np.arange(flen)[None, :] + fstep * np.arange(nframes)[:, None]
+    frames = padded[idx]
+    power = np.abs(np.fft.rfft(frames, nfft)) ** 2 / nfft
+    mel = lambda hz: 2595 * np.log10(1 + hz / 700.0)
+    hz = lambda m: 700 * (10 ** (m / 2595.0) - 1)
+    bins = np.floor((nfft + 1) * hz(np.linspace(mel(0), mel(sr / 2), nfilt + 2)) / sr).astype(int)
+    fb = np.zeros((nfilt, nfft // 2 + 1))
+    for j in range(nfilt):
+        for i in range(bins[j], bins[j + 1]):
+            fb[j, i] = (i - bins[j]) / (bins[j + 1] - bins[j])
+        for i in range(bins[j + 1], bins[j + 2]):
+            fb[j, i] = (bins[j + 2] - i) / (bins[j + 2] - bins[j + 1])
+    energy = power @ fb.T
+    energy[energy == 0] = np.finfo(float).eps
+    return np.log(energy)
+
+
+def template_feature(path, action):
+    raw, sr = sf.read(path, dtype="float64", always_2d=True)
+    x = raw.mean(axis=1)
+    if action == "slide":
+        feat = psf_logfbank(x, sr)[-140:]
+    else:
+        feat = psf_logfbank(x[2000:], sr)[-300:-150]
+    return feat.mean(axis=0)
+
+
+def loo_accuracy(features):
+    """features: list of (object, vector). Leave one out: templates from the rest, nearest by mean |diff|."""
+    correct = 0
+    for i, (truth, v) in enumerate(features):
+        templates = {}
+        for j, (name, w) in enumerate(features):
+            if j != i:
+                templates.setdefault(name, []).append(w)
+        guess = min(templates, key=lambda n: np.mean(np.abs(np.mean(templates[n], axis=0) - v)))
+        correct += guess == truth
+    return correct / len(features)
+
+
+def level_removed_logmel(sm, path):
+    v = sm.logmel_mean(path)
+    return v - v.mean()
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--per-pair", type=int, default=10)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--echoplan", default=os.path.join(REPO, "build", "echoplan"))
+    ap.add_argument("--measures", default=os.path.join(REPO, "..", "..", "shared", "tools", "sound_measures.py"))
+    ap.add_argument("--keep", help="write the clips here and keep them (default: a temporary folder)")
+    args = ap.parse_args()
+    if not os.path.exists(args.measures):
+        args.measures = "/work/shared/tools/sound_measures.py"
+    sm = load_measures(args.measures)
+
+    out = args.keep or tempfile.mkdtemp(prefix="echoplan_realism_")
+    start = time.time()
+    subprocess.run([args.echoplan, "dataset", "--per-pair", str(args.per_pair), "--seed", str(args.seed), "-o", out,
+                    "--objects", ",".join(OBJECTS), "--threads", "2"], check=True, stdout=subprocess.DEVNULL,
+                   stderr=subprocess.DEVNULL)
+    print(f"synthesised {len(OBJECTS) * 2 * args.per_pair} clips in {time.time() - start:.1f} s "
+          f"(echoplan dataset --per-pair {args.per_pair} --seed {args.seed} --threads 2)\n")
+
+    files = {(o, a): sorted(os.path.join(out, o, a, f) for f in os.listdir(os.path.join(out, o, a)) if f.endswith(".wav"))
+             for o in OBJECTS for a in ("strike", "slide")}
+    measures = {k: [sm.measure(f) for f in v] for k, v in files.items()}
+
+    print("measure            sim median [min .. max]          real             met")
+    total = passed = 0
+    for (obj, action), real in REAL.items():
+        print(f"-- {obj} {action}")
+        for m, values in real.items():
+            sim = [r[m] for r in measures[(obj, action)]]
+            med = statistics.median(sim)
+            ok = (med == 1) if m == "n_hits" else met(med, values, m)
+            total += 1
+            passed += ok
+            real_text = " / ".join(f"{v:g}" for v in values)
+            print(f"{m:<18} {med:>9.4g} [{min(sim):.4g} .. {max(sim):.4g}]".ljust(52) + f"{real_text:<16} {'yes' if ok else 'NO'}")
+    print(f"\n{passed} of {total} measure targets met (n_hits: median single hit)\n")
+
+    print("strike minus slide (median peak 5 ms frame, dB; lab 16.9 mug, 17.7 cup; target 17 +- 3):")
+    for obj in OBJECTS:
+        d = statistics.median(r["peak_dbfs"] for r in measures[(obj, "strike")]) - \
+            statistics.median(r["peak_dbfs"] for r in measures[(obj, "slide")])
+        print(f"  {obj:<14} {d:5.1f} dB  {'yes' if abs(d - 17) <= 3 else 'NO'}")
+    peaks = {}
+    for obj in OBJECTS:
+        s = []
+        for f in files[(obj, "strike")]:
+            x, _ = sf.read(f, dtype="float64")
+            s.append(20 * np.log10(np.max(np.abs(x))))
+        peaks[obj] = statistics.median(s)
+    spread = max(peaks.values()) - min(peaks.values())
+    print("strike sample peak, median per object (dBFS): " + ", ".join(f"{o} {p:.2f}" for o, p in peaks.items()) +
+          f"; spread {spread:.2f} dB (lab 0.3)\n")
+
+    print("mug vs cup, level-removed mean log-mel (64 bands), mean |difference| in dB:")
+    for action in ("strike", "slide"):
+        mug = [level_removed_logmel(sm, f) for f in files[("coffee_mug", action)]]
+        cup = [level_removed_logmel(sm, f) for f in files[("plastic_cup", action)]]
+        within = np.mean([np.mean(np.abs(a - b)) for a, b in itertools.combinations(cup, 2)])
+        between = np.mean([np.mean(np.abs(a - b)) for a in mug for b in cup])
+        ratio = between / within
+        print(f"  {action:<7} between {between:.2f}, within cup {within:.2f}: ratio {ratio:.2f} "
+              f"(lab {LAB_RATIO[action]}; target 1.0-2.0: {'yes' if 1.0 <= ratio <= 2.0 else 'NO'})")
+
+    print("\nseed template classifier (computed in this script), leave-one-out over the four objects:")
+    for action in ("strike", "slide"):
+        feats = [(o, template_feature(f, action)) for o in OBJECTS for f in files[(o, action)]]
+        print(f"  {action:<7} {loo_accuracy(feats):.2f} (chance 0.25)")
+    if not args.keep:
+        subprocess.run(["rm", "-rf", out], check=False)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
