@@ -37,6 +37,9 @@ int main(int argc, char** argv) {
   echoplan::cli::add_heatmap_command(app);
   echoplan::cli::add_experiment_command(app);
   echoplan::cli::add_merge_command(app);
+  echoplan::cli::add_train_command(app);
+  echoplan::cli::add_classify_command(app);
+  echoplan::cli::add_evaluate_command(app);
 
   try {
     app.parse(argc, argv);

@@ -24,9 +24,9 @@ const pomdp::ObjectIdentificationModel& object_problem(const pomdp::Model& model
   const auto* problem = dynamic_cast<const pomdp::ObjectIdentificationModel*>(&model);
   if (!problem)
     throw InputError(fmt::format(
-        "problem '{}': the robot loop needs an object-identification problem (a YAML file "
-        "with objects, sensing and sorting actions, as in problems/audio_objects.yaml), "
-        "not a tabular .pomdp problem",
+        "problem '{}' is not an object-identification problem (a YAML file with objects, "
+        "sensing and sorting actions, as in problems/audio_objects.yaml); a tabular .pomdp "
+        "problem has no objects to hear",
         model.spec().name));
   return *problem;
 }

@@ -104,7 +104,7 @@ class RobotEnvironment final : public pomdp::Environment {
 };
 
 // The object-identification model behind `model`; throws InputError naming the problem when it is
-// another kind (the loop needs named objects, sensing and sorting actions).
+// another kind (the loop and the calibrated table need named objects, sensing and sorting actions).
 const pomdp::ObjectIdentificationModel& object_problem(const pomdp::Model& model);
 
 }  // namespace echoplan::experiment

@@ -94,7 +94,7 @@ double fit_temperature(std::span<const std::vector<double>> log_scores, std::spa
     throw std::invalid_argument("label smoothing must be in [0, 1)");
   // The cross-entropy of temperature scaling is convex in 1/T, hence unimodal in log T:
   // golden-section search.
-  double lo = std::log(1e-3), hi = std::log(1e3);
+  double lo = std::log(1e-4), hi = std::log(1e6);
   const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
   auto f = [&](double log_t) {
     return cross_entropy(log_scores, labels, smoothing, std::exp(log_t));

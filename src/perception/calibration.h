@@ -36,7 +36,7 @@ std::vector<std::vector<double>> dirichlet_smoothed(const ConfusionMatrix& confu
 // softmax(log_scores / temperature) (temperature > 0), computed stably.
 std::vector<double> softmax(std::span<const double> log_scores, double temperature);
 
-// The temperature in [1e-3, 1e3] minimising the cross-entropy sum_i sum_c target_ic * -log
+// The temperature in [1e-4, 1e6] minimising the cross-entropy sum_i sum_c target_ic * -log
 // softmax(log_scores[i] / T)[c] (golden-section search on log T), where target_i puts 1 - smoothing
 // on labels[i] and spreads `smoothing` evenly over all classes. With smoothing 0 a perfectly
 // separated training set drives T to its lower bound (probabilities of exactly 0 and 1); a small

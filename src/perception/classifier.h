@@ -1,12 +1,12 @@
 // The interface every observation classifier implements, and the registry of classifiers by name.
 //
-// A classifier is fitted on the analysed recordings of one sensing action (one classifier per
-// action) and then scores a new clip against every class. Scores are turned into calibrated
-// probabilities and a reject decision by the ObservationModel (perception/observation_model.h), so
-// a classifier only has to say how alike the clip is to each class, in two forms: log-scores
-// (higher = more alike; their softmax after temperature calibration is P(class | clip)) and
-// distances (>= 0, smaller = more alike; the distance to the nearest class decides whether a clip
-// is `unknown`).
+// A classifier turns each analysed clip into a fixed-length embedding (its own features), is fitted
+// on the embeddings of one sensing action's recordings (one classifier per action), and then scores
+// a new clip against every class. Scores are turned into calibrated probabilities and a reject
+// decision by the ObservationModel (perception/observation_model.h), so a classifier only has to
+// say how alike the clip is to each class, in two forms: log-scores (higher = more alike; their
+// softmax after temperature calibration is P(class | clip)) and distances (>= 0, smaller = more
+// alike; the distance to the nearest class decides whether a clip is `unknown`).
 #pragma once
 
 #include <memory>
@@ -33,17 +33,26 @@ class Classifier {
   // The registry name ("seed-template", ...).
   virtual std::string name() const = 0;
 
-  // Fits on clips of one action: examples[i] is a recording of class labels[i] in [0, num_classes).
-  // Every class needs at least one example (throws InputError otherwise). Refitting replaces the
-  // fit.
-  virtual void fit(std::span<const ClipAnalysis* const> examples, std::span<const int> labels,
+  // The fixed-length vector this classifier compares: its own features of one analysed clip (a pure
+  // function of the clip, so training computes it once per recording and cross-validation reuses
+  // it).
+  virtual std::vector<double> embed(const ClipAnalysis& clip) const = 0;
+
+  // Fits on embeddings of clips of one action: examples[i] is a recording of class labels[i] in
+  // [0, num_classes). Every class needs at least one example (throws InputError otherwise).
+  // Refitting replaces the fit.
+  virtual void fit(std::span<const std::vector<double>> examples, std::span<const int> labels,
                    int num_classes) = 0;
 
   // Classes of the current fit (0 before fit).
   virtual int num_classes() const = 0;
 
-  // Scores `clip` against every class. Requires a fit.
-  virtual ClassScores score(const ClipAnalysis& clip) const = 0;
+  // Scores an embedding against every class. Requires a fit; throws InputError for an embedding of
+  // the wrong length.
+  virtual ClassScores score(std::span<const double> embedding) const = 0;
+
+  // score(embed(clip)).
+  ClassScores score_clip(const ClipAnalysis& clip) const { return score(embed(clip)); }
 
   // A new, unfitted classifier of the same kind and settings (cross-validation fits copies).
   virtual std::unique_ptr<Classifier> clone_unfitted() const = 0;

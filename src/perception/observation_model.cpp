@@ -95,7 +95,7 @@ Prediction ObservationModel::classify(const audio::AudioClip& clip,
 Prediction ObservationModel::classify(const ClipAnalysis& analysed,
                                       const std::string& action) const {
   const PerAction& a = impl_->of(action);
-  const ClassScores scores = a.classifier->score(analysed);
+  const ClassScores scores = a.classifier->score_clip(analysed);
   Prediction p;
   p.action = action;
   p.probabilities = softmax(scores.log_scores, a.calibration.temperature);
@@ -165,12 +165,14 @@ ObservationModel train_observation_model(const RecordingSet& set, const TrainOpt
                      fmt::format("need recordings of at least two objects to train, found {}",
                                  m.classes.size()));
 
-  // Every recording is analysed once; cross-validation refits on the analyses.
+  // Every recording is analysed and embedded once; cross-validation refits on the embeddings.
   ClipAnalyzer analyzer(options.analysis);
-  std::vector<ClipAnalysis> analyses(set.recordings.size());
+  ClipAnalysis analysis;
+  std::vector<std::vector<double>> embeddings(set.recordings.size());
   for (std::size_t i = 0; i < set.recordings.size(); ++i) {
     const auto& r = set.recordings[i];
-    analyzer.analyse(read_recording(r.path, options.analysis.sample_rate), r.path, analyses[i]);
+    analyzer.analyse(read_recording(r.path, options.analysis.sample_rate), r.path, analysis);
+    embeddings[i] = prototype->embed(analysis);
     if (progress)
       progress("analyse", static_cast<int>(i + 1), static_cast<int>(set.recordings.size()));
   }
@@ -178,12 +180,12 @@ ObservationModel train_observation_model(const RecordingSet& set, const TrainOpt
   const std::vector<std::string> symbols = model.observation_symbols();
   const int num_classes = static_cast<int>(m.classes.size());
   for (const auto& action : m.actions) {
-    std::vector<const ClipAnalysis*> examples;
+    std::vector<std::vector<double>> examples;
     std::vector<int> labels;
     std::vector<int> per_class(m.classes.size(), 0);
     for (std::size_t i = 0; i < set.recordings.size(); ++i) {
       if (set.recordings[i].action != action) continue;
-      examples.push_back(&analyses[i]);
+      examples.push_back(embeddings[i]);
       labels.push_back(set.object_index(set.recordings[i].object));
       ++per_class[static_cast<std::size_t>(labels.back())];
     }
@@ -201,7 +203,7 @@ ObservationModel train_observation_model(const RecordingSet& set, const TrainOpt
     std::vector<double> held_distance(examples.size());
     std::vector<int> held_best(examples.size());
     for (int f = 0; f < num_folds; ++f) {
-      std::vector<const ClipAnalysis*> train;
+      std::vector<std::vector<double>> train;
       std::vector<int> train_labels;
       std::vector<std::size_t> test;
       for (std::size_t i = 0; i < examples.size(); ++i) {
@@ -216,7 +218,7 @@ ObservationModel train_observation_model(const RecordingSet& set, const TrainOpt
       auto classifier = prototype->clone_unfitted();
       classifier->fit(train, train_labels, num_classes);
       for (std::size_t i : test) {
-        const ClassScores s = classifier->score(*examples[i]);
+        const ClassScores s = classifier->score(examples[i]);
         held_best[i] = static_cast<int>(argmax(s.log_scores));
         held_distance[i] = *std::min_element(s.distances.begin(), s.distances.end());
         held_log_scores[i] = s.log_scores;
@@ -453,18 +455,24 @@ ObservationModel load_observation_model(const std::string& path) {
   if (!in) throw InputError(path, 0, "cannot open the model file");
   std::ostringstream text;
   text << in.rdbuf();
+  return parse_observation_model(text.str(), path);
+}
+
+ObservationModel parse_observation_model(const std::string& text, const std::string& source) {
   nlohmann::json doc;
   try {
-    doc = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    // parse_error for broken syntax, out_of_range for a number beyond double: both a corrupt file.
     throw InputError(
-        path, 0, fmt::format("not a valid JSON model file (truncated or corrupt?): {}", e.what()));
+        source, 0,
+        fmt::format("not a valid JSON model file (truncated or corrupt?): {}", e.what()));
   }
   try {
-    return ObservationModel::from_json(doc, path);
+    return ObservationModel::from_json(doc, source);
   } catch (const nlohmann::json::exception& e) {
     // A shape the checks above did not anticipate: still an input error, never a crash.
-    throw InputError(path, 0, fmt::format("malformed model: {}", e.what()));
+    throw InputError(source, 0, fmt::format("malformed model: {}", e.what()));
   }
 }
 

@@ -105,6 +105,9 @@ class ObservationModel {
 // Reads and writes the model file. Errors name the file: missing, not JSON (with the byte offset),
 // truncated, wrong format or version, or a field out of shape.
 ObservationModel load_observation_model(const std::string& path);
+// Parses a model file's text; `source` names it in errors. What load_observation_model does after
+// reading.
+ObservationModel parse_observation_model(const std::string& text, const std::string& source);
 void save_observation_model(const ObservationModel& model, const std::string& path);
 
 // Held-out evaluation of a model on a recording set: per action, the confusion of the set's objects

@@ -12,19 +12,20 @@
 
 namespace echoplan::perception {
 
-std::array<double, 2> SeedGaussianClassifier::features(const ClipAnalysis& clip) {
+std::vector<double> SeedGaussianClassifier::embed(const ClipAnalysis& clip) const {
   const auto g = audio::global_features(clip.mono, clip.sample_rate);
   return {g.centroid_hz, g.rms};
 }
 
-void SeedGaussianClassifier::fit(std::span<const ClipAnalysis* const> examples,
+void SeedGaussianClassifier::fit(std::span<const std::vector<double>> examples,
                                  std::span<const int> labels, int num_classes) {
   const auto classes = static_cast<std::size_t>(num_classes);
   std::vector<std::array<double, 2>> sum(classes, {0.0, 0.0}), sum_sq(classes, {0.0, 0.0});
   std::vector<int> count(classes, 0);
   std::array<double, 2> all_sum{0.0, 0.0}, all_sq{0.0, 0.0};
   for (std::size_t i = 0; i < examples.size(); ++i) {
-    const auto x = features(*examples[i]);
+    const auto& x = examples[i];
+    if (x.size() != 2) throw InputError("seed-gaussian embeddings are (centroid, rms) pairs");
     const auto k = static_cast<std::size_t>(labels[i]);
     for (int d = 0; d < 2; ++d) {
       sum[k][d] += x[d];
@@ -50,8 +51,10 @@ void SeedGaussianClassifier::fit(std::span<const ClipAnalysis* const> examples,
   }
 }
 
-ClassScores SeedGaussianClassifier::score(const ClipAnalysis& clip) const {
-  const auto x = features(clip);
+ClassScores SeedGaussianClassifier::score(std::span<const double> x) const {
+  if (x.size() != 2)
+    throw InputError(
+        fmt::format("seed-gaussian scores (centroid, rms) pairs, got {} values", x.size()));
   ClassScores s;
   for (std::size_t k = 0; k < means_.size(); ++k) {
     double mahalanobis_sq = 0.0, log_det = 0.0;

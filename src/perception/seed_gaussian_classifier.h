@@ -17,19 +17,18 @@ namespace echoplan::perception {
 class SeedGaussianClassifier final : public Classifier {
  public:
   std::string name() const override { return "seed-gaussian"; }
-  void fit(std::span<const ClipAnalysis* const> examples, std::span<const int> labels,
+  // (centroid_hz, rms) of the whole clip (audio::global_features).
+  std::vector<double> embed(const ClipAnalysis& clip) const override;
+  void fit(std::span<const std::vector<double>> examples, std::span<const int> labels,
            int num_classes) override;
   int num_classes() const override { return static_cast<int>(means_.size()); }
   // log_scores: Gaussian log-densities; distances: Mahalanobis distances (diagonal covariance).
-  ClassScores score(const ClipAnalysis& clip) const override;
+  ClassScores score(std::span<const double> embedding) const override;
   std::unique_ptr<Classifier> clone_unfitted() const override {
     return std::make_unique<SeedGaussianClassifier>();
   }
   nlohmann::json save() const override;
   void load(const nlohmann::json& fit, const std::string& source) override;
-
-  // (centroid_hz, rms) of the whole clip (audio::global_features).
-  static std::array<double, 2> features(const ClipAnalysis& clip);
 
  private:
   std::vector<std::array<double, 2>> means_;

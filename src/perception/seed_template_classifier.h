@@ -22,27 +22,27 @@ class SeedTemplateClassifier final : public Classifier {
   static constexpr std::size_t kFramesAfter = 140;
 
   std::string name() const override { return "seed-template"; }
-  void fit(std::span<const ClipAnalysis* const> examples, std::span<const int> labels,
+  // The onset-aligned logfbank window, row-major (kFramesBefore + kFramesAfter) x bands.
+  std::vector<double> embed(const ClipAnalysis& clip) const override;
+  void fit(std::span<const std::vector<double>> examples, std::span<const int> labels,
            int num_classes) override;
   int num_classes() const override { return static_cast<int>(templates_.size()); }
   // log_scores = -distances; distances = mean |window - template| per class (natural-log units).
-  ClassScores score(const ClipAnalysis& clip) const override;
+  ClassScores score(std::span<const double> embedding) const override;
   std::unique_ptr<Classifier> clone_unfitted() const override {
     return std::make_unique<SeedTemplateClassifier>();
   }
   nlohmann::json save() const override;
   void load(const nlohmann::json& fit, const std::string& source) override;
 
-  // The onset-aligned logfbank window of a clip: kFramesBefore + kFramesAfter rows x bands.
-  static audio::FeatureMatrix window(const ClipAnalysis& clip);
-  // Mean absolute difference of two equally shaped matrices.
-  static double mean_absolute_difference(const audio::FeatureMatrix& a,
-                                         const audio::FeatureMatrix& b);
+  // Mean absolute difference of two equally long vectors.
+  static double mean_absolute_difference(std::span<const double> a, std::span<const double> b);
 
-  const std::vector<audio::FeatureMatrix>& templates() const { return templates_; }
+  const std::vector<std::vector<double>>& templates() const { return templates_; }
 
  private:
-  std::vector<audio::FeatureMatrix> templates_;  // per class, window rows x bands
+  std::vector<std::vector<double>> templates_;  // per class, window rows x bands, row-major
+  std::size_t bands_ = 0;
 };
 
 }  // namespace echoplan::perception

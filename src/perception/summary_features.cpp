@@ -78,11 +78,21 @@ std::array<double, kSummarySize> summary_features(const ClipAnalysis& clip) {
     out[i++] = std::log1p(static_cast<double>(t - onset));
   }
 
+  // Flatness of the floored mel spectrum (ln of geometric over arithmetic mean of the band
+  // energies): unlike the STFT flatness, whose absolute power floor makes it depend on the level,
+  // this is the same for a louder or softer copy.
   const std::array<std::pair<std::size_t, std::size_t>, 2> halves{{{0, 15}, {15, kWindow}}};
   for (const auto& [from, to] : halves) {
     double sum = 0.0;
-    for (std::size_t f = from; f < to; ++f)
-      sum += std::log(std::max(static_cast<double>(clip.features.flatness.at(frame(f), 0)), 1e-12));
+    for (std::size_t f = from; f < to; ++f) {
+      double log_mean = 0.0, mean = 0.0;
+      for (float v : log_mel.row(frame(f))) {
+        const double floored = std::max(static_cast<double>(v), floor) - peak;
+        log_mean += floored;
+        mean += std::exp(floored);
+      }
+      sum += log_mean / kBands - std::log(mean / kBands);
+    }
     out[i++] = sum / static_cast<double>(to - from);
   }
   for (const auto& [from, to] : halves) {

@@ -12,7 +12,8 @@
 //               onset: frames 0-3 (attack), 3-15, 15-50, 50-150 (to 1.5 s; slides last that long)
 //   [104, 116)  standard deviation of MFCC c1..c12 over frames 0-150 (how steady the timbre is)
 //   [116, 119)  ln(1 + frames) until the level falls 10, 20 and 30 dB below its peak (decay)
-//   [119, 121)  mean ln spectral flatness over frames 0-15 and 15-150 (tonal ring vs noise)
+//   [119, 121)  mean ln flatness of the floored mel spectrum over frames 0-15 and 15-150
+//               (tonal ring vs noise)
 //   [121, 123)  ln of the mean spectral centroid (Hz) over frames 0-15 and 15-150
 #pragma once
 

@@ -13,11 +13,6 @@ namespace {
 
 constexpr double kScaleFloor = 0.05;
 
-Eigen::VectorXd summary_vector(const ClipAnalysis& clip) {
-  const auto s = summary_features(clip);
-  return Eigen::Map<const Eigen::VectorXd>(s.data(), static_cast<Eigen::Index>(s.size()));
-}
-
 std::vector<double> to_vector(const Eigen::MatrixXd& m) {
   std::vector<double> out(static_cast<std::size_t>(m.size()));
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
@@ -52,13 +47,23 @@ std::pair<double, Eigen::MatrixXd> SummaryLdaClassifier::ledoit_wolf(
   return {weight, (1.0 - weight) * sample + weight * target};
 }
 
-void SummaryLdaClassifier::fit(std::span<const ClipAnalysis* const> examples,
+std::vector<double> SummaryLdaClassifier::embed(const ClipAnalysis& clip) const {
+  const auto s = summary_features(clip);
+  return {s.begin(), s.end()};
+}
+
+void SummaryLdaClassifier::fit(std::span<const std::vector<double>> examples,
                                std::span<const int> labels, int num_classes) {
   const auto n = static_cast<Eigen::Index>(examples.size());
   const auto d = static_cast<Eigen::Index>(kSummarySize);
   Eigen::MatrixXd x(n, d);
-  for (Eigen::Index i = 0; i < n; ++i)
-    x.row(i) = summary_vector(*examples[static_cast<std::size_t>(i)]).transpose();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto& e = examples[static_cast<std::size_t>(i)];
+    if (e.size() != kSummarySize)
+      throw InputError(
+          fmt::format("summary embeddings have {} values, got {}", kSummarySize, e.size()));
+    x.row(i) = Eigen::Map<const Eigen::RowVectorXd>(e.data(), d);
+  }
   Eigen::MatrixXd means = Eigen::MatrixXd::Zero(num_classes, d);
   Eigen::VectorXd counts = Eigen::VectorXd::Zero(num_classes);
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -93,8 +98,12 @@ void SummaryLdaClassifier::fit(std::span<const ClipAnalysis* const> examples,
   white_means_ = class_means_ * whitening_.transpose();
 }
 
-ClassScores SummaryLdaClassifier::score(const ClipAnalysis& clip) const {
-  const Eigen::VectorXd z = summary_vector(clip).cwiseQuotient(scale_);
+ClassScores SummaryLdaClassifier::score(std::span<const double> embedding) const {
+  if (static_cast<Eigen::Index>(embedding.size()) != scale_.size())
+    throw InputError(
+        fmt::format("summary embeddings have {} values, got {}", scale_.size(), embedding.size()));
+  const Eigen::VectorXd z =
+      Eigen::Map<const Eigen::VectorXd>(embedding.data(), scale_.size()).cwiseQuotient(scale_);
   const Eigen::VectorXd white = whitening_.triangularView<Eigen::Lower>() * z;
   ClassScores s;
   for (Eigen::Index k = 0; k < white_means_.rows(); ++k) {

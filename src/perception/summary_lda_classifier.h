@@ -26,10 +26,12 @@ class SummaryLdaClassifier final : public Classifier {
   std::string name() const override {
     return covariance_ == Covariance::ledoit_wolf ? "summary-lda" : "summary-nearest-mean";
   }
-  void fit(std::span<const ClipAnalysis* const> examples, std::span<const int> labels,
+  // summary_features(clip).
+  std::vector<double> embed(const ClipAnalysis& clip) const override;
+  void fit(std::span<const std::vector<double>> examples, std::span<const int> labels,
            int num_classes) override;
   int num_classes() const override { return static_cast<int>(class_means_.rows()); }
-  ClassScores score(const ClipAnalysis& clip) const override;
+  ClassScores score(std::span<const double> embedding) const override;
   std::unique_ptr<Classifier> clone_unfitted() const override {
     return std::make_unique<SummaryLdaClassifier>(covariance_);
   }

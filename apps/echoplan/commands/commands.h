@@ -23,5 +23,8 @@ void add_features_command(CLI::App& app);
 void add_heatmap_command(CLI::App& app);
 void add_experiment_command(CLI::App& app);
 void add_merge_command(CLI::App& app);
+void add_train_command(CLI::App& app);
+void add_classify_command(CLI::App& app);
+void add_evaluate_command(CLI::App& app);
 
 }  // namespace echoplan::cli

@@ -1,0 +1,143 @@
+// `echoplan train`: fit the observation model on a folder of recordings, report its cross-validated
+// confusion, save it as JSON and, optionally, write a problem file that plans with the calibrated
+// table.
+#include <fmt/core.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <fstream>
+#include <stdexcept>
+
+#include "commands/commands.h"
+#include "commands/perception_report.h"
+#include "common/error.h"
+#include "experiment/calibrated_problem.h"
+#include "experiment/robot_environment.h"
+#include "perception/observation_model.h"
+#include "pomdp/problem.h"
+
+namespace echoplan::cli {
+namespace {
+
+// The base problem with its observation model replaced by the trained one
+// (experiment::calibrated_problem), errors naming the base problem's file.
+pomdp::ObjectProblemData calibrated_problem(const pomdp::Problem& base,
+                                            const perception::ObservationModel& model) {
+  try {
+    return experiment::calibrated_problem(experiment::object_problem(*base.model).data(), model);
+  } catch (const InputError& e) {
+    throw InputError(base.source_path, 0, e.problem());
+  }
+}
+
+}  // namespace
+
+void add_train_command(CLI::App& app) {
+  struct Options {
+    std::string data;
+    std::string out;
+    std::string problem_out;
+    std::string problem_base = "problems/audio_objects.yaml";
+    bool no_reject = false;
+    perception::TrainOptions train;
+  };
+  auto opt = std::make_shared<Options>();
+  auto* cmd = app.add_subcommand("train",
+                                 "Fit the observation model on recordings "
+                                 "DIR/<object>/<action>/*.wav (and DIR/manifest.csv if present):\n"
+                                 "one classifier per action, cross-validated; prints accuracy and "
+                                 "confusion per action and saves the model\n"
+                                 "(JSON) with the calibrated table P(heard | object, action).\n"
+                                 "Example: echoplan train --data recordings --out model.json "
+                                 "--problem-out problems/calibrated.yaml");
+  cmd->add_option("--data", opt->data, "Folder of recordings (e.g. written by `echoplan dataset`)")
+      ->required();
+  cmd->add_option("-o,--out", opt->out, "Model file to write (JSON)")->required();
+  std::string names;
+  for (const auto& n : perception::classifier_names()) names += (names.empty() ? "" : ", ") + n;
+  cmd->add_option("--classifier", opt->train.classifier, "Classifier: " + names)
+      ->check(CLI::IsMember(perception::classifier_names()))
+      ->capture_default_str();
+  cmd->add_option("--sample-rate", opt->train.analysis.sample_rate,
+                  "Rate (Hz) every recording is resampled to")
+      ->capture_default_str();
+  cmd->add_flag("--no-reject", opt->no_reject, "Always report a class (no `unknown` symbol)");
+  cmd->add_option("--reject-margin", opt->train.reject_margin,
+                  "Unknown beyond this many times the largest held-out distance of a correctly "
+                  "classified recording")
+      ->capture_default_str();
+  cmd->add_option("--alpha", opt->train.dirichlet_alpha,
+                  "Dirichlet pseudo-count added to each confusion cell")
+      ->capture_default_str();
+  cmd->add_option("--folds", opt->train.folds, "Cross-validation folds (0 = leave-one-out)")
+      ->capture_default_str();
+  cmd->add_option("--seed", opt->train.seed, "Seed of the fold assignment (with --folds)")
+      ->capture_default_str();
+  cmd->add_option(
+      "--problem-out", opt->problem_out,
+      "Also write this problem file (YAML): --problem-base with the calibrated observation table");
+  cmd->add_option(
+         "--problem-base", opt->problem_base,
+         "Problem whose objects, actions, rewards and planner settings --problem-out keeps")
+      ->capture_default_str();
+  cmd->callback([opt] {
+    opt->train.reject = !opt->no_reject;
+    // Read the base problem first: a wrong path should fail before minutes of training.
+    std::optional<pomdp::Problem> base;
+    if (!opt->problem_out.empty()) base = pomdp::load_problem(opt->problem_base);
+    const perception::RecordingSet set = perception::load_recording_set(opt->data);
+    if (base) {
+      // The problem's objects and sensing actions must all have recordings: say so before training.
+      const auto* object_model =
+          dynamic_cast<const pomdp::ObjectIdentificationModel*>(base->model.get());
+      if (object_model != nullptr) {
+        for (const auto& object : object_model->data().objects)
+          if (set.object_index(object) < 0)
+            throw InputError(
+                opt->problem_base, 0,
+                fmt::format("object '{}' of the problem has no recordings in {} (objects: {})",
+                            object, opt->data, fmt::join(set.objects, ", ")));
+        for (const auto& action : object_model->data().sensing)
+          if (std::find(set.actions.begin(), set.actions.end(), action.name) == set.actions.end())
+            throw InputError(
+                opt->problem_base, 0,
+                fmt::format(
+                    "sensing action '{}' of the problem has no recordings in {} (actions: {})",
+                    action.name, opt->data, fmt::join(set.actions, ", ")));
+      }
+    }
+    spdlog::info("{} recordings: {} objects x {} actions; classifier {}", set.recordings.size(),
+                 set.objects.size(), set.actions.size(), opt->train.classifier);
+    const perception::ObservationModel model = perception::train_observation_model(
+        set, opt->train, [](const std::string& stage, int done, int total) {
+          if (done == total || done % 20 == 0) spdlog::info("{} {}/{}", stage, done, total);
+        });
+    for (const auto& action : model.actions()) {
+      const auto& c = model.calibration(action);
+      print_confusion(
+          fmt::format(
+              "{} (cross-validated, {})", action,
+              opt->train.folds == 0 ? "leave-one-out" : fmt::format("{} folds", opt->train.folds)),
+          c.confusion);
+      fmt::print("  temperature {:.4g}, reject threshold {:.4g}\n", c.temperature,
+                 c.reject_threshold);
+    }
+    perception::save_observation_model(model, opt->out);
+    fmt::print("model: {}\n", opt->out);
+    if (base) {
+      const pomdp::ObjectProblemData data = calibrated_problem(*base, model);
+      std::ofstream out(opt->problem_out);
+      if (!out) throw InputError(opt->problem_out, 0, "cannot write the problem file");
+      out << "# Written by: echoplan train --data " << opt->data << " --classifier "
+          << opt->train.classifier << "\n# Base problem: " << opt->problem_base
+          << "; observation table calibrated from " << opt->out
+          << " (cross-validated, Dirichlet alpha " << opt->train.dirichlet_alpha << ").\n";
+      pomdp::write_problem_yaml(out, data, base->belief, base->planner);
+      out.close();
+      if (!out) throw InputError(opt->problem_out, 0, "could not finish writing the problem file");
+      fmt::print("problem: {}\n", opt->problem_out);
+    }
+  });
+}
+
+}  // namespace echoplan::cli

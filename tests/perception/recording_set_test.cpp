@@ -1,0 +1,144 @@
+// Tests of the recording-set loader: layouts, the manifest, and every malformed folder's error.
+#include "perception/recording_set.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "common/error.h"
+#include "synthetic_sounds.h"
+
+namespace echoplan::perception {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+void write_clip(const fs::path& path) {
+  fs::create_directories(path.parent_path());
+  audio::AudioClip clip;
+  clip.sample_rate = 8000;
+  clip.samples.assign(800, 0.1f);
+  audio::write_audio(path.string(), clip);
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream(path) << text;
+}
+
+// Expects load_recording_set(dir) to throw an InputError whose message holds every fragment.
+void expect_error(const fs::path& dir, const std::vector<std::string>& fragments) {
+  try {
+    load_recording_set(dir.string());
+    ADD_FAILURE() << "no error for " << dir;
+  } catch (const InputError& e) {
+    for (const auto& f : fragments) EXPECT_THAT(std::string(e.what()), HasSubstr(f));
+  }
+}
+
+class RecordingSetTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = test_sounds::fresh_dir("set");
+    for (const char* object : {"mug", "cup"})
+      for (const char* action : {"strike", "slide"})
+        for (const char* file : {"b.wav", "a.wav"}) write_clip(dir_ / object / action / file);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+TEST_F(RecordingSetTest, WithoutManifestEverythingIsSortedByName) {
+  const RecordingSet set = load_recording_set(dir_.string());
+  EXPECT_EQ(set.objects, (std::vector<std::string>{"cup", "mug"}));
+  EXPECT_EQ(set.actions, (std::vector<std::string>{"slide", "strike"}));
+  ASSERT_EQ(set.recordings.size(), 8u);
+  EXPECT_EQ(set.recordings[0].path, (dir_ / "cup/slide/a.wav").string());
+  EXPECT_EQ(set.recordings[1].path, (dir_ / "cup/slide/b.wav").string());
+  EXPECT_EQ(set.recordings[2].object, "mug");
+  EXPECT_EQ(set.of_action("strike").size(), 4u);
+  EXPECT_EQ(set.object_index("mug"), 1);
+  EXPECT_EQ(set.object_index("bowl"), -1);
+}
+
+TEST_F(RecordingSetTest, ManifestOrderWins) {
+  std::string manifest = "file,object,action,seed\n";
+  for (const char* object : {"mug", "cup"})
+    for (const char* action : {"strike", "slide"})
+      for (const char* file : {"b.wav", "a.wav"})
+        manifest +=
+            std::string(object) + "/" + action + "/" + file + "," + object + "," + action + ",7\n";
+  write_text(dir_ / "manifest.csv", manifest);
+  const RecordingSet set = load_recording_set(dir_.string());
+  EXPECT_EQ(set.objects, (std::vector<std::string>{"mug", "cup"}));
+  EXPECT_EQ(set.actions, (std::vector<std::string>{"strike", "slide"}));
+  EXPECT_EQ(set.recordings[0].path, (dir_ / "mug/strike/b.wav").string());
+}
+
+TEST_F(RecordingSetTest, MissingOrNotAFolder) {
+  expect_error(dir_ / "nope", {"nope", "does not exist"});
+  write_text(dir_ / "file.txt", "x");
+  expect_error(dir_ / "file.txt", {"file.txt", "not a folder"});
+}
+
+TEST_F(RecordingSetTest, FileWhereAnObjectFolderBelongs) {
+  write_text(dir_ / "notes.txt", "x");
+  expect_error(dir_, {"notes.txt", "folder per object"});
+}
+
+TEST_F(RecordingSetTest, NotARecording) {
+  write_text(dir_ / "mug/strike/notes.txt", "x");
+  expect_error(dir_, {"mug/strike/notes.txt", "not a recording"});
+}
+
+TEST_F(RecordingSetTest, HiddenFilesAreSkipped) {
+  write_text(dir_ / "mug/strike/.DS_Store", "x");
+  EXPECT_EQ(load_recording_set(dir_.string()).recordings.size(), 8u);
+}
+
+TEST_F(RecordingSetTest, EmptyClassFolder) {
+  fs::create_directories(dir_ / "bowl/strike");
+  expect_error(dir_, {"bowl/strike", "no recordings"});
+}
+
+TEST_F(RecordingSetTest, ActionForOneObjectOnly) {
+  write_clip(dir_ / "mug/shake/a.wav");
+  expect_error(dir_, {"cup/shake", "every object needs recordings for every action"});
+}
+
+TEST_F(RecordingSetTest, ManifestProblemsNameTheLine) {
+  write_text(dir_ / "manifest.csv", "file,object\nmug/strike/a.wav,mug\n");
+  expect_error(dir_, {"manifest.csv:1", "'action'"});
+  write_text(dir_ / "manifest.csv", "file,object,action\nmug/strike/zzz.wav,mug,strike\n");
+  expect_error(dir_, {"manifest.csv:2", "zzz.wav", "does not exist"});
+  write_text(dir_ / "manifest.csv", "file,object,action\nmug/strike/a.wav,cup,strike\n");
+  expect_error(dir_, {"manifest.csv:2", "not inside its folder cup/strike/"});
+  write_text(dir_ / "manifest.csv", "file,object,action\nmug/strike/a.wav,mug\n");
+  expect_error(dir_, {"manifest.csv:2", "2 cells"});
+  write_text(dir_ / "manifest.csv", "file,object,action\nmug/strike/a.wav,mug,strike\n");
+  expect_error(dir_, {"not listed in manifest.csv"});
+}
+
+TEST(ReadRecording, MixesChannelsAndResamples) {
+  const auto dir = test_sounds::fresh_dir("read");
+  audio::AudioClip stereo;
+  stereo.sample_rate = 22050;
+  stereo.channels = 2;
+  for (int i = 0; i < 22050; ++i) {
+    stereo.samples.push_back(0.5f);
+    stereo.samples.push_back(-0.25f);
+  }
+  audio::write_audio((dir / "s.flac").string(), stereo, {.format = audio::FileFormat::flac});
+  const audio::AudioClip clip = read_recording((dir / "s.flac").string(), 44100);
+  EXPECT_EQ(clip.channels, 1);
+  EXPECT_EQ(clip.sample_rate, 44100);
+  EXPECT_EQ(clip.frames(), 44100u);
+  EXPECT_NEAR(clip.samples[22050], 0.125f, 1e-3);
+  EXPECT_THROW(read_recording((dir / "missing.wav").string(), 44100), InputError);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace echoplan::perception
