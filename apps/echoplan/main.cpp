@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
 
   echoplan::cli::add_version_command(app);
   echoplan::cli::add_trials_command(app);
+  echoplan::cli::add_run_command(app);
   echoplan::cli::add_make_problem_command(app);
   echoplan::cli::add_check_command(app);
   echoplan::cli::add_solve_command(app);
@@ -34,6 +35,8 @@ int main(int argc, char** argv) {
   echoplan::cli::add_dataset_command(app);
   echoplan::cli::add_features_command(app);
   echoplan::cli::add_heatmap_command(app);
+  echoplan::cli::add_experiment_command(app);
+  echoplan::cli::add_merge_command(app);
   echoplan::cli::add_train_command(app);
   echoplan::cli::add_classify_command(app);
   echoplan::cli::add_evaluate_command(app);

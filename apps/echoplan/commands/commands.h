@@ -14,6 +14,7 @@ struct Interrupted {};
 
 void add_version_command(CLI::App& app);
 void add_trials_command(CLI::App& app);
+void add_run_command(CLI::App& app);
 void add_make_problem_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_solve_command(CLI::App& app);
@@ -22,6 +23,8 @@ void add_synth_command(CLI::App& app);
 void add_dataset_command(CLI::App& app);
 void add_features_command(CLI::App& app);
 void add_heatmap_command(CLI::App& app);
+void add_experiment_command(CLI::App& app);
+void add_merge_command(CLI::App& app);
 void add_train_command(CLI::App& app);
 void add_classify_command(CLI::App& app);
 void add_evaluate_command(CLI::App& app);

@@ -11,56 +11,23 @@
 #include "commands/commands.h"
 #include "commands/perception_report.h"
 #include "common/error.h"
+#include "experiment/calibrated_problem.h"
+#include "experiment/robot_environment.h"
 #include "perception/observation_model.h"
 #include "pomdp/problem.h"
 
 namespace echoplan::cli {
 namespace {
 
-// The base problem with its observation model replaced by the trained one: symbols are the model's
-// (classes, then `unknown` with the reject option), rows are the base problem's objects, which must
-// all be classes of the model, for each of its sensing actions, which must all be actions of the
-// model.
+// The base problem with its observation model replaced by the trained one
+// (experiment::calibrated_problem), errors naming the base problem's file.
 pomdp::ObjectProblemData calibrated_problem(const pomdp::Problem& base,
                                             const perception::ObservationModel& model) {
-  const auto* object_model =
-      dynamic_cast<const pomdp::ObjectIdentificationModel*>(base.model.get());
-  if (object_model == nullptr)
-    throw InputError(
-        base.source_path, 0,
-        "not an object-identification problem (YAML); cannot take a trained observation table");
-  pomdp::ObjectProblemData data = object_model->data();
-  const auto& classes = model.classes();
-  for (const auto& object : data.objects)
-    if (std::find(classes.begin(), classes.end(), object) == classes.end())
-      throw InputError(
-          base.source_path, 0,
-          fmt::format("object '{}' of the problem has no recordings in the model (classes: {})",
-                      object, fmt::join(classes, ", ")));
-  data.observation_symbols = model.observation_symbols();
-  data.observation_table.clear();
-  for (const auto& action : data.sensing) {
-    const auto& actions = model.actions();
-    if (std::find(actions.begin(), actions.end(), action.name) == actions.end())
-      throw InputError(
-          base.source_path, 0,
-          fmt::format(
-              "sensing action '{}' of the problem has no recordings in the model (actions: {})",
-              action.name, fmt::join(actions, ", ")));
-    const auto& table = model.observation_table(action.name);
-    std::vector<std::vector<double>> rows;
-    for (const auto& object : data.objects)
-      rows.push_back(table[static_cast<std::size_t>(
-          std::find(classes.begin(), classes.end(), object) - classes.begin())]);
-    data.observation_table.push_back(std::move(rows));
-  }
   try {
-    pomdp::validate_object_problem(data);
-  } catch (const std::invalid_argument& e) {
-    throw InputError(base.source_path, 0,
-                     std::string("the calibrated problem is not valid: ") + e.what());
+    return experiment::calibrated_problem(experiment::object_problem(*base.model).data(), model);
+  } catch (const InputError& e) {
+    throw InputError(base.source_path, 0, e.problem());
   }
-  return data;
 }
 
 }  // namespace

@@ -1,0 +1,51 @@
+// The robot: executes the planner's actions in the world and says how they went.
+//
+// One of the three narrow execution interfaces of the seed's architecture (section 4.4): Robot,
+// Recorder, ObservationService. The planner side never learns whether the arm is simulated, a real
+// arm behind a driver, or a ROS node; each implementation answers the same calls.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace echoplan::robot {
+
+// What the world is told when a trial begins.
+struct TrialContext {
+  int trial = 0;
+  // The true object's name. Simulated and replayed worlds use it to build the scene or choose
+  // recordings; a real robot ignores it (an operator placed the object).
+  std::string object;
+  // Seed of the world's own random stream for this trial (simulated variability, replay choice).
+  std::uint64_t seed = 0;
+};
+
+enum class ActionStatus {
+  done,       // the action ran to its end
+  collision,  // the arm or the object hit the table or the workspace; the action stopped there
+  failed,     // the action could not be carried out (object out of reach, driver error, ...)
+};
+
+// How one action went. Physical outcomes are reported here, never thrown.
+struct ActionReport {
+  std::string action;
+  ActionStatus status = ActionStatus::done;
+  std::string reason;      // for collision and failed: what happened, in words, for the log
+  double duration_s = 0;   // from the command to the end of the action (simulated or wall time)
+};
+
+const char* to_string(ActionStatus status);
+
+class Robot {
+ public:
+  virtual ~Robot() = default;
+  // Prepares a trial: a simulated robot resets its world around `context.object`; a real arm moves to
+  // its initial configuration. The world then keeps its state through the trial: a slide moves the
+  // object, and the next action starts where the last one ended.
+  virtual void begin_trial(const TrialContext& context) = 0;
+  // Executes a sensing action ("slide", "strike") or a sorting action (e.g. "move_to_A"), blocking
+  // until it has finished. Throws InputError for an action name this robot does not know.
+  virtual ActionReport execute(const std::string& action) = 0;
+};
+
+}  // namespace echoplan::robot
