@@ -45,8 +45,9 @@ CampaignConfig tiny_config(int arms = 1, const std::string& second_problem = kPr
 // (< 0: never), then rebuilds the report (no figures: gnuplot is tested by the CLI tests).
 int run(const CampaignConfig& config, const fs::path& dir, int workers, Shard shard = {},
         int stop_after = -1) {
-  const Campaign campaign = open_campaign(config, dir);
+  Campaign campaign = open_campaign(config, dir);
   std::atomic<bool> stop{false};
+  EXPECT_TRUE(prepare_training(campaign, {}, stop));
   int finished = 0;
   TrialJournal journal(dir / "journal.jsonl");
   CampaignRunOptions options;
