@@ -9,6 +9,7 @@
 
 #include "common/data_dir.h"
 #include "common/error.h"
+#include "common/stable_hash.h"
 #include "common/yaml_reader.h"
 
 namespace echoplan::experiment {
@@ -30,18 +31,14 @@ bool is_label(const std::string& name) {
   return true;
 }
 
-// FNV-1a of a file's bytes, as 16 hex digits; "" when the path is empty.
+// A fingerprint of a file's bytes, as 16 hex digits; "" when the path is empty.
 std::string content_hash(const std::string& path) {
   if (path.empty()) return "";
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot open");
-  std::uint64_t h = 1469598103934665603ull;
-  char c;
-  while (in.get(c)) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 1099511628211ull;
-  }
-  return fmt::format("{:016x}", h);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  return fmt::format("{:016x}", stable_hash(bytes.str()));
 }
 
 CampaignConfig read_campaign(const std::string& yaml_text, const std::string& source);
