@@ -21,15 +21,15 @@ int main(int argc, char** argv) {
   app.add_flag("-v,--verbose", verbose, "Log debug messages to stderr");
   // Logs and progress go to stderr, so stdout carries only what a command prints as its result.
   spdlog::set_default_logger(spdlog::stderr_color_mt("echoplan"));
-  app.parse_complete_callback([&] {
-    spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info);
-  });
+  app.parse_complete_callback(
+      [&] { spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info); });
 
   echoplan::cli::add_version_command(app);
   echoplan::cli::add_trials_command(app);
   echoplan::cli::add_make_problem_command(app);
   echoplan::cli::add_check_command(app);
   echoplan::cli::add_solve_command(app);
+  echoplan::cli::add_certify_command(app);
   echoplan::cli::add_synth_command(app);
   echoplan::cli::add_dataset_command(app);
   echoplan::cli::add_features_command(app);

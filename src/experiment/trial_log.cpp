@@ -26,7 +26,117 @@ std::string csv_field(const std::string& text) {
   for (char c : text) quoted += (c == '"') ? std::string("\"\"") : std::string(1, c);
   return quoted + "\"";
 }
+// Splits one CSV line into fields, undoing csv_field()'s quoting. Returns false on an unterminated
+// quote.
+bool split_csv_line(const std::string& line, std::vector<std::string>& fields) {
+  fields.clear();
+  std::string field;
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        field += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        field += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.push_back(std::move(field));
+      field.clear();
+    } else if (c != '\r') {
+      field += c;
+    }
+  }
+  fields.push_back(std::move(field));
+  return !quoted;
+}
+
+int index_of(const std::vector<std::string>& names, const std::string& name) {
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return static_cast<int>(i);
+  return -1;
+}
 }  // namespace
+
+std::vector<LoggedTrial> read_steps_csv(const std::filesystem::path& path,
+                                        const pomdp::ModelSpec& spec) {
+  const std::string file = path.string();
+  std::ifstream in(path);
+  if (!in) throw InputError(file, 0, "cannot open the steps file");
+  if (!spec.observation.discrete)
+    throw InputError(file, 0, "the problem's observations are continuous; steps need symbols");
+  std::string line;
+  std::vector<std::string> header, fields;
+  if (!std::getline(in, line) || !split_csv_line(line, header))
+    throw InputError(file, 1, "empty file or broken header (expected trial,step,action,...)");
+  const int c_trial = index_of(header, "trial"), c_step = index_of(header, "step");
+  const int c_action = index_of(header, "action"), c_obs = index_of(header, "observation");
+  const int c_reward = index_of(header, "reward");
+  for (const char* needed : {"trial", "step", "action", "observation"})
+    if (index_of(header, needed) < 0)
+      throw InputError(file, 1, fmt::format("no '{}' column in the header", needed));
+
+  auto integer = [&](const std::string& text, int line_no, const char* what) {
+    std::size_t used = 0;
+    int value = 0;
+    try {
+      value = std::stoi(text, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != text.size() || value < 0)
+      throw InputError(file, line_no, fmt::format("{} '{}' is not a count >= 0", what, text));
+    return value;
+  };
+
+  std::vector<LoggedTrial> trials;
+  for (int line_no = 2; std::getline(in, line); ++line_no) {
+    if (line.empty() || line == "\r") continue;
+    if (!split_csv_line(line, fields)) throw InputError(file, line_no, "unterminated quote");
+    if (fields.size() != header.size())
+      throw InputError(file, line_no,
+                       fmt::format("{} fields, the header has {}", fields.size(), header.size()));
+    LoggedStep step;
+    step.line = line_no;
+    const int trial = integer(fields[c_trial], line_no, "trial");
+    step.step = integer(fields[c_step], line_no, "step");
+    step.action = index_of(spec.action_names, fields[c_action]);
+    if (step.action < 0)
+      throw InputError(file, line_no,
+                       fmt::format("unknown action '{}' for this problem", fields[c_action]));
+    step.observation = index_of(spec.observation.names, fields[c_obs]);
+    if (step.observation < 0)
+      throw InputError(file, line_no,
+                       fmt::format("unknown observation '{}' for this problem", fields[c_obs]));
+    if (c_reward >= 0) {
+      try {
+        step.reward = std::stod(fields[c_reward]);
+      } catch (const std::exception&) {
+        throw InputError(file, line_no,
+                         fmt::format("reward '{}' is not a number", fields[c_reward]));
+      }
+    }
+    if (trials.empty() || trials.back().trial != trial) {
+      for (const LoggedTrial& t : trials)
+        if (t.trial == trial)
+          throw InputError(file, line_no,
+                           fmt::format("trial {} continues after another trial's rows", trial));
+      trials.push_back(LoggedTrial{trial, {}});
+    }
+    LoggedTrial& current = trials.back();
+    if (step.step != static_cast<int>(current.steps.size()))
+      throw InputError(file, line_no,
+                       fmt::format("trial {}: step {} where step {} was expected", trial, step.step,
+                                   current.steps.size()));
+    current.steps.push_back(step);
+  }
+  return trials;
+}
 
 TrialLog::TrialLog(const std::filesystem::path& directory, const pomdp::ModelSpec& spec,
                    int belief_particles, std::vector<std::string> extra_columns)

@@ -13,6 +13,10 @@
 // reader of the columns above finds them where they always were.
 //   belief columns are particle counts ("particles_<value>", the columns of the seed's Table 5.2)
 //   when the belief holds `belief_particles` > 0 particles, probabilities ("p_<value>") otherwise.
+//
+// read_steps_csv() reads steps.csv back (the action and observation history of every trial), for
+// `echoplan certify`; any writer of the same columns (the closed loop, another planner) can be
+// read.
 #pragma once
 
 #include <filesystem>
@@ -53,6 +57,27 @@ class TrialLog final : public TrialObserver {
   std::ofstream trials_;
   std::ofstream steps_;
 };
+
+// One logged decision: the action taken and what was heard after it.
+struct LoggedStep {
+  int step = 0;
+  int action = 0;       // index into the model's action names
+  int observation = 0;  // index into the model's (discrete) observation names
+  double reward = 0.0;
+  int line = 0;  // 1-based line in steps.csv, for messages
+};
+
+struct LoggedTrial {
+  int trial = 0;
+  std::vector<LoggedStep> steps;  // in step order, 0, 1, 2, ...
+};
+
+// Reads steps.csv (columns found by their header names: trial, step, action, observation, reward;
+// others are ignored), naming actions and observations as in `spec`. Trials come in file order.
+// Throws InputError naming the file and line of a missing column, an unknown action or
+// observation, a bad number, or a step out of order.
+std::vector<LoggedTrial> read_steps_csv(const std::filesystem::path& path,
+                                        const pomdp::ModelSpec& spec);
 
 // The summary as JSON (the content of summary.json without the run description).
 nlohmann::json summary_json(const TrialSummary& summary, const pomdp::ModelSpec& spec);

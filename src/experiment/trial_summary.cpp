@@ -1,6 +1,6 @@
 #include "experiment/trial_summary.h"
 
-#include <cmath>
+#include "common/statistics.h"
 
 namespace echoplan::experiment {
 
@@ -18,16 +18,11 @@ TrialSummary summarize(const std::vector<TrialRecord>& trials, int num_actions) 
     s.collisions += t.collision;
     s.capped += t.capped;
   }
-  if (trials.size() > 1) {
-    double squares = 0.0;
-    for (const TrialRecord& t : trials) {
-      const double d = t.discounted_reward - s.mean_discounted_reward;
-      squares += d * d;
-    }
-    s.sd_discounted_reward = std::sqrt(squares / (n - 1.0));
-    // 1.96 standard errors: the normal approximation, fine for the >= 30 trials studies use.
-    s.ci95 = 1.96 * s.sd_discounted_reward / std::sqrt(n);
-  }
+  std::vector<double> rewards;
+  for (const TrialRecord& t : trials) rewards.push_back(t.discounted_reward);
+  const MeanInterval m = mean_ci95(rewards);
+  s.sd_discounted_reward = m.sd;
+  s.ci95 = m.half_width;
   return s;
 }
 

@@ -13,7 +13,7 @@ struct TrialSummary {
   double accuracy = 0.0;  // fraction of trials whose final belief's mode is the truth
   double mean_discounted_reward = 0.0;
   double sd_discounted_reward = 0.0;  // sample standard deviation (n - 1); 0 for one trial
-  double ci95 = 0.0;                  // half-width of the normal-approximation 95% CI of the mean
+  double ci95 = 0.0;                  // half-width of the 95% CI of the mean (Student's t)
   double mean_steps = 0.0;
   std::vector<double> mean_action_counts;  // per action
   int collisions = 0;

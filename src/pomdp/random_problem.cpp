@@ -61,6 +61,8 @@ ObjectProblemData make_random_object_problem(const RandomProblemSettings& s, Rng
   if (!(s.concentration > 0.0) || !std::isfinite(s.concentration)) {
     throw std::invalid_argument("concentration must be positive");
   }
+  if (s.bins < 2 || s.bins > 26 || s.bins > s.objects)
+    throw std::invalid_argument("2 to 26 sorting bins, and no more bins than objects");
   if (s.objects * kResolution > 0.5)
     throw std::invalid_argument("too many objects for 4-decimal rows");
   ObjectProblemData d;
@@ -74,7 +76,7 @@ ObjectProblemData make_random_object_problem(const RandomProblemSettings& s, Rng
   d.initial_offset = {0.1, 0.0, 0.0};
   for (int a = 0; a < s.sensing_actions; ++a)
     d.sensing.push_back(SensingAction{numbered("sense", a, s.sensing_actions)});
-  d.sorting = {"move_to_A", "move_to_B"};
+  for (int j = 0; j < s.bins; ++j) d.sorting.push_back(std::string("move_to_") + char('A' + j));
 
   const double diagonal = s.concentration * (s.objects - 1);
   d.observation_table.assign(s.sensing_actions, {});
@@ -86,19 +88,18 @@ ObjectProblemData make_random_object_problem(const RandomProblemSettings& s, Rng
     }
   }
 
-  // Groups: a uniformly random half of the objects goes to A.
+  // Groups: objects in a uniformly random order, floor(K / J) to each bin but the last, which takes
+  // the rest (with 2 bins: a random half, rounded down, goes to A).
   std::vector<int> order(s.objects);
   std::iota(order.begin(), order.end(), 0);
   for (int i = s.objects - 1; i > 0; --i) {
     const int j = static_cast<int>(uniform01(rng) * (i + 1));
     std::swap(order[i], order[std::min(j, i)]);
   }
-  d.sorting_reward.assign(2, std::vector<double>(s.objects, 0.0));
-  for (int i = 0; i < s.objects; ++i) {
-    const bool to_a = i < s.objects / 2;
-    d.sorting_reward[0][order[i]] = to_a ? 10.0 : -100.0;
-    d.sorting_reward[1][order[i]] = to_a ? -100.0 : 10.0;
-  }
+  const int group = s.objects / s.bins;
+  d.sorting_reward.assign(s.bins, std::vector<double>(s.objects, -100.0));
+  for (int i = 0; i < s.objects; ++i)
+    d.sorting_reward[std::min(s.bins - 1, i / group)][order[i]] = 10.0;
   return d;
 }
 

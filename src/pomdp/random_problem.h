@@ -5,8 +5,10 @@
 // expected probability of hearing the right class is concentration / (concentration + 1),
 // whatever the number of objects (1.5 gives 0.6, close to the seed's table). Rows are rounded
 // to 4 decimals with a floor of 1e-4 (no observation is impossible) and the diagonal absorbs the
-// rounding so every row sums to 1. A random half of the objects (rounded down) belongs at A, the
-// rest at B; sorting right pays +10 and wrong -100, each sensing action -1, as in the seed.
+// rounding so every row sums to 1. The objects are split at random into `bins` groups (sorting
+// actions move_to_A, move_to_B, ...): floor(K / bins) objects each, the last bin takes the rest
+// (with 2 bins, a random half rounded down belongs at A). Sorting right pays +10 and wrong -100,
+// each sensing action -1, as in the seed.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +22,7 @@ struct RandomProblemSettings {
   int objects = 16;            // >= 2
   int sensing_actions = 4;     // >= 1
   double concentration = 1.5;  // > 0, see above
+  int bins = 2;                // sorting actions, 2 to min(26, objects)
   std::uint64_t seed = 1;      // recorded in the problem's name
 };
 

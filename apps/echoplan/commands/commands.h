@@ -1,5 +1,6 @@
 // The subcommands of `echoplan`. Each add_*_command() adds one subcommand to the app and sets its
-// callback; the callback throws echoplan::InputError for bad input (main turns it into exit status 2).
+// callback; the callback throws echoplan::InputError for bad input (main turns it into exit status
+// 2).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -16,6 +17,7 @@ void add_trials_command(CLI::App& app);
 void add_make_problem_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_solve_command(CLI::App& app);
+void add_certify_command(CLI::App& app);
 void add_synth_command(CLI::App& app);
 void add_dataset_command(CLI::App& app);
 void add_features_command(CLI::App& app);

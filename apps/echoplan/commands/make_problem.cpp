@@ -21,15 +21,19 @@ void add_make_problem_command(CLI::App& app) {
   auto options = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
       "make-problem",
-      "Write a random object-identification problem (YAML) with N objects and M sensing actions.\n"
-      "Observation rows are Dirichlet draws with more mass on the true class; a random half of "
-      "the\n"
-      "objects belongs at A, the rest at B. The same seed writes the same file.");
+      "Write a random object-identification problem (YAML) with N objects, M sensing actions and\n"
+      "J sorting bins.\n"
+      "Observation rows are Dirichlet draws with more mass on the true class; the objects are "
+      "split\n"
+      "at random among the bins. The same seed writes the same file.");
   cmd->add_option("--objects", options->settings.objects, "Number of objects (2-1000)")->required();
   cmd->add_option("--sensing-actions", options->settings.sensing_actions,
                   "Number of sensing actions (1-100)")
       ->required();
   cmd->add_option("--seed", options->settings.seed, "Random seed")->required();
+  cmd->add_option("--bins", options->settings.bins,
+                  "Number of sorting actions (bins A, B, ...), 2 to 26; objects split evenly")
+      ->capture_default_str();
   cmd->add_option("--concentration", options->settings.concentration,
                   "Diagonal weight C: the right class is heard with probability C/(C+1) on average")
       ->capture_default_str();
@@ -46,12 +50,13 @@ void add_make_problem_command(CLI::App& app) {
     if (!out) throw InputError(options->output, 0, "cannot write the problem file");
     out << "# Written by: echoplan make-problem --objects " << options->settings.objects
         << " --sensing-actions " << options->settings.sensing_actions << " --seed "
-        << options->settings.seed << " --concentration " << options->settings.concentration << "\n";
+        << options->settings.seed << " --concentration " << options->settings.concentration
+        << " --bins " << options->settings.bins << "\n";
     pomdp::write_problem_yaml(out, data, pomdp::BeliefSettings{}, pomdp::PlannerDefaults{});
     out.close();
     if (!out) throw InputError(options->output, 0, "could not finish writing the problem file");
-    fmt::print("wrote {} ({} objects, {} sensing actions)\n", options->output, data.objects.size(),
-               data.sensing.size());
+    fmt::print("wrote {} ({} objects, {} sensing actions, {} bins)\n", options->output,
+               data.objects.size(), data.sensing.size(), data.sorting.size());
   });
 }
 

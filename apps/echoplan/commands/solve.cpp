@@ -1,14 +1,19 @@
-// `echoplan solve`: bounds on the optimal value V*(b0) of a discrete problem, from the offline
-// point-based solver; optionally the policy (alpha vectors) for later runs.
+// `echoplan solve`: bounds on the optimal value V*(b0) of a discrete problem, from the exact
+// identification solver when the problem has that shape, else from the offline point-based solver
+// (which can also save its policy, alpha vectors, for later runs).
 #include <fmt/core.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "commands/commands.h"
 #include "common/error.h"
 #include "pomdp/problem.h"
+#include "solvers/identification_solver.h"
 #include "solvers/offline/dense_pomdp.h"
 #include "solvers/offline/point_based_solver.h"
 #include "solvers/offline/policy_file.h"
@@ -23,19 +28,127 @@ struct SolveArgs {
   double epsilon = 1e-4;
   double time_limit = 60.0;
   std::uint64_t seed = 1;
+  long max_trials = 0;
+  std::string method = "auto";
   std::string out;
 };
+
+std::string action_label(const pomdp::Problem& problem, int a) {
+  const auto& names = problem.model->spec().action_names;
+  return a < static_cast<int>(names.size()) ? names[a] : std::to_string(a);
+}
+
+// The exact identification solver: refines V*(b0) in one-second slices (for progress), then the
+// Q-value of every action at b0 to the same gap.
+void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
+               const pomdp::TabularModel& tables) {
+  solvers::IdentificationSolver solver(tables);
+  const auto root = solver.root();
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  auto target = [&](solvers::Bounds b) {
+    return args.epsilon * std::max({1.0, std::abs(b.lower), std::abs(b.upper)});
+  };
+  spdlog::info("solving {} exactly over count vectors (epsilon {}, time limit {} s{})",
+               args.problem, args.epsilon, args.time_limit,
+               args.max_trials > 0 ? fmt::format(", at most {} trials", args.max_trials) : "");
+  for (;;) {
+    const double remaining = args.time_limit - elapsed();
+    const long trials_left = args.max_trials > 0 ? args.max_trials - solver.expansions() : 0;
+    if (remaining <= 0.0 || (args.max_trials > 0 && trials_left <= 0)) break;
+    solvers::RefineLimits limits;
+    limits.target_gap = target(solver.value(root));
+    limits.seconds = std::min(1.0, remaining);
+    limits.expansions = trials_left;
+    const double slice_start = elapsed();
+    const bool reached = solver.refine(root, limits);
+    const solvers::Bounds v = solver.value(root);
+    spdlog::info("{:7.1f} s  trials {:8}  V* in [{:.6f}, {:.6f}]  gap {:.3g}  nodes {}", elapsed(),
+                 solver.expansions(), v.lower, v.upper, v.gap(), solver.num_nodes());
+    // The relative target shrinks with |V| as the bounds close in: check it again.
+    if (reached && v.gap() <= target(v)) break;
+    // Otherwise go on only when the slice ran out of time (not stalled, not at the node cap).
+    if (!reached && elapsed() - slice_start < limits.seconds) break;
+  }
+  const solvers::Bounds v = solver.value(root);
+  const bool converged = v.gap() <= target(v);
+  std::vector<solvers::Bounds> q(solver.num_actions());
+  for (int a = 0; a < solver.num_actions(); ++a) {
+    solvers::RefineLimits limits;
+    limits.target_gap = target(v);
+    limits.seconds = std::max(0.1, args.time_limit - elapsed());
+    solver.refine_action(root, a, limits);
+    q[a] = solver.action_value(root, a);
+  }
+  int best = 0;
+  for (int a = 1; a < solver.num_actions(); ++a)
+    if (q[a].lower > q[best].lower) best = a;
+  const double seconds = elapsed();
+
+  if (args.json) {
+    nlohmann::ordered_json out;
+    out["method"] = "exact";
+    out["lower"] = v.lower;
+    out["upper"] = v.upper;
+    out["gap"] = v.gap();
+    out["target_gap"] = target(v);
+    out["converged"] = converged;
+    out["trials"] = solver.expansions();
+    out["nodes"] = solver.num_nodes();
+    out["seconds"] = seconds;
+    out["best_action"] = action_label(problem, best);
+    nlohmann::ordered_json actions = nlohmann::ordered_json::object();
+    for (int a = 0; a < solver.num_actions(); ++a)
+      actions[action_label(problem, a)] = {{"lower", q[a].lower}, {"upper", q[a].upper}};
+    out["actions"] = std::move(actions);
+    fmt::print("{}\n", out.dump());
+    return;
+  }
+  fmt::print("V*(b0) of {} (exact identification solver)\n", args.problem);
+  fmt::print("  lower {:.6f}\n  upper {:.6f}\n  gap   {:.3g} ({} target {:.3g})\n", v.lower,
+             v.upper, v.gap(), converged ? "reached" : "NOT reached:", target(v));
+  fmt::print("  {} trials in {:.2f} s, {} belief nodes\n", solver.expansions(), seconds,
+             solver.num_nodes());
+  fmt::print("first action: {} (Q* bounds per action at b0:", action_label(problem, best));
+  for (int a = 0; a < solver.num_actions(); ++a)
+    fmt::print(" {} [{:.4f}, {:.4f}]", action_label(problem, a), q[a].lower, q[a].upper);
+  fmt::print(")\n");
+}
 
 void run_solve(const SolveArgs& args) {
   namespace off = solvers::offline;
   if (!(args.epsilon >= 0.0)) throw InputError("--epsilon must be >= 0");
   if (!(args.time_limit > 0.0)) throw InputError("--time-limit must be > 0 seconds");
+  if (args.max_trials < 0) throw InputError("--max-trials must be >= 0 (0: no limit)");
   const pomdp::Problem problem = pomdp::load_problem(args.problem);
   const pomdp::TabularModel* tables = problem.model->tabular();
   if (tables == nullptr) {
     throw InputError(args.problem, 0,
                      "this problem has no tables (continuous observations?); the offline solver "
                      "needs a discrete problem: a .pomdp file or an object-identification YAML");
+  }
+  const auto shape_problem = solvers::identification_shape_problem(*tables);
+  if (args.method == "exact" && shape_problem) {
+    throw InputError(args.problem, 0,
+                     "--method exact needs an identification problem, and this one is not: " +
+                         *shape_problem + " (use --method point-based)");
+  }
+  if (args.method == "exact" && !args.out.empty()) {
+    throw InputError("--out saves a point-based policy; use it with --method point-based");
+  }
+  if (args.method == "auto" && args.out.empty() && !shape_problem) {
+    run_exact(args, problem, *tables);
+    return;
+  }
+  if (args.method == "exact") {
+    run_exact(args, problem, *tables);
+    return;
+  }
+  if (args.method == "auto" && shape_problem) {
+    spdlog::info("not an identification problem ({}): using the point-based solver",
+                 *shape_problem);
   }
   auto dense =
       std::make_shared<const off::DensePomdp>(off::make_dense_pomdp(*tables, args.problem));
@@ -44,6 +157,7 @@ void run_solve(const SolveArgs& args) {
   options.epsilon = args.epsilon;
   options.time_limit_seconds = args.time_limit;
   options.seed = args.seed;
+  options.max_trials = args.max_trials;
   off::PointBasedSolver solver(dense, options);
   // Progress through spdlog (stderr, see main.cpp) so that stdout holds only the result.
   spdlog::info("solving {} ({} states, {} actions, {} observations; epsilon {}, time limit {} s)",
@@ -110,9 +224,12 @@ void add_solve_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "solve",
       "Bound the optimal value V*(b0) of a discrete problem (.pomdp or object-identification "
-      "YAML)\n"
-      "with the offline point-based solver (HSVI style), and optionally save its policy.\n"
-      "Progress goes to stderr; the bounds to stdout.");
+      "YAML).\n"
+      "Identification problems (the state stays fixed until an action ends the episode) are "
+      "solved\n"
+      "by exact search over observation counts; others by the point-based solver (HSVI style), "
+      "which\n"
+      "can also save its policy. Progress goes to stderr; the bounds to stdout.");
   cmd->add_option("--problem", args->problem, "Problem file (problems/*.yaml or *.pomdp)")
       ->required();
   cmd->add_flag("--json", args->json,
@@ -122,7 +239,16 @@ void add_solve_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--time-limit", args->time_limit, "Stop after this many seconds")
       ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of the solver's random choices")
+  cmd->add_option("--seed", args->seed, "Seed of the point-based solver's random choices")
+      ->capture_default_str();
+  cmd->add_option("--method", args->method,
+                  "auto (exact when the problem qualifies and no --out is given), exact, or "
+                  "point-based")
+      ->check(CLI::IsMember({"auto", "exact", "point-based"}))
+      ->capture_default_str();
+  cmd->add_option("--max-trials", args->max_trials,
+                  "Stop after this many trials (0: no limit); unlike --time-limit, the result "
+                  "repeats on any machine")
       ->capture_default_str();
   cmd->add_option(
       "--out", args->out,

@@ -1,0 +1,141 @@
+// `echoplan certify`: how far from optimal the decisions of a logged run were, measured exactly
+// (experiment/regret_certificate.h): per-trial discounted regret against V*, its mean and 95% CI,
+// and the share of V* the planner is certified to reach.
+#include <fmt/core.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "commands/commands.h"
+#include "common/error.h"
+#include "experiment/regret_certificate.h"
+#include "experiment/trial_log.h"
+#include "pomdp/problem.h"
+#include "solvers/identification_solver.h"
+
+namespace echoplan::cli {
+
+namespace {
+
+struct CertifyArgs {
+  std::string problem;
+  std::string steps;
+  bool json = false;
+  double gap = experiment::CertifyOptions{}.decision_gap;
+  long expansions = experiment::CertifyOptions{}.expansions_per_belief;
+  int worst = 5;
+};
+
+void run_certify(const CertifyArgs& args) {
+  if (!(args.gap > 0.0)) throw InputError("--gap must be > 0");
+  if (args.worst < 0) throw InputError("--worst must be >= 0");
+  if (args.expansions < 1) throw InputError("--expansions must be >= 1");
+  const pomdp::Problem problem = pomdp::load_problem(args.problem);
+  const pomdp::TabularModel* tables = problem.model->tabular();
+  if (tables == nullptr)
+    throw InputError(args.problem, 0, "certify needs a discrete problem with tables");
+  if (auto why = solvers::identification_shape_problem(*tables))
+    throw InputError(args.problem, 0,
+                     "certify needs an identification problem (the state stays fixed until an "
+                     "action ends the episode), and this one is not: " +
+                         *why);
+  const pomdp::ModelSpec& spec = problem.model->spec();
+  const auto trials = experiment::read_steps_csv(args.steps, spec);
+  if (trials.empty()) throw InputError(args.steps, 0, "no trials in the steps file");
+
+  const auto start = std::chrono::steady_clock::now();
+  solvers::IdentificationSolver solver(*tables);
+  spdlog::info("certifying {} trials of {} against {}", trials.size(), args.steps, args.problem);
+  experiment::CertifyOptions options;
+  options.decision_gap = args.gap;
+  options.worst = args.worst;
+  options.expansions_per_belief = args.expansions;
+  const experiment::Certificate c = experiment::certify_trials(solver, trials, options, args.steps);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double vstar = 0.5 * (c.vstar.lower + c.vstar.upper);
+
+  if (args.json) {
+    nlohmann::ordered_json out;
+    out["vstar_lower"] = c.vstar.lower;
+    out["vstar_upper"] = c.vstar.upper;
+    out["regret_mean"] = c.regret.mean;
+    out["regret_ci95"] = c.regret.half_width;
+    out["trials"] = c.regret.n;
+    out["regret_lower_mean"] = c.regret_lower_mean;
+    out["share_of_vstar"] = c.share_of_vstar();
+    out["decisions"] = c.decisions;
+    out["unconverged_beliefs"] = c.unconverged_beliefs;
+    fmt::print("{}\n", out.dump());
+    return;
+  }
+  fmt::print("Certificate of {} on {}\n", args.steps, args.problem);
+  fmt::print("  V*(b0) in [{:.5f}, {:.5f}]\n", c.vstar.lower, c.vstar.upper);
+  fmt::print(
+      "  regret per trial (discounted, vs V*): {:.4f} ± {:.4f} (95% CI, {} trials, {} "
+      "decisions)\n",
+      c.regret.mean, c.regret.half_width, c.regret.n, c.decisions);
+  fmt::print("  certified share of V*: {:.2f}% (95% CI {:.2f}% to {:.2f}%)\n",
+             100.0 * c.share_of_vstar(),
+             100.0 * (1.0 - (c.regret.mean + c.regret.half_width) / vstar),
+             100.0 * (1.0 - (c.regret.mean - c.regret.half_width) / vstar));
+  fmt::print("  (bounds at each belief within {:g}; regret from their lower ends: {:.4f}{})\n",
+             args.gap, c.regret_lower_mean,
+             c.unconverged_beliefs > 0
+                 ? fmt::format("; {} beliefs missed that gap, their bounds still hold",
+                               c.unconverged_beliefs)
+                 : "");
+  const int capped = static_cast<int>(
+      std::count_if(c.trials.begin(), c.trials.end(), [](const auto& t) { return !t.ended; }));
+  if (capped > 0)
+    fmt::print("  {} trials were cut short; γ^T V*(b_T) of each counts as regret\n", capped);
+  if (!c.worst.empty()) fmt::print("largest single losses V*(b) - Q*(b, a):\n");
+  const auto& states = spec.state.discrete_value_names;
+  for (const auto& d : c.worst) {
+    std::string belief;
+    for (std::size_t s = 0; s < d.belief.size(); ++s) {
+      if (d.belief[s] <= 0.0) continue;
+      const std::string name =
+          !states.empty() && s < states[0].size() ? states[0][s] : std::to_string(s);
+      belief += fmt::format("{}{} {:.3f}", belief.empty() ? "" : ", ", name, d.belief[s]);
+    }
+    fmt::print("  {:.4f}  trial {} step {} (line {}): {} where {} was best; belief {}\n", d.loss,
+               d.trial, d.step, d.line, spec.action_names[d.action],
+               spec.action_names[d.best_action], belief);
+  }
+  spdlog::info("certified in {:.2f} s ({} belief nodes)", seconds, solver.num_nodes());
+}
+
+}  // namespace
+
+void add_certify_command(CLI::App& app) {
+  auto args = std::make_shared<CertifyArgs>();
+  auto* cmd = app.add_subcommand(
+      "certify",
+      "Measure how far a logged run's decisions were from optimal. For an identification problem,\n"
+      "each decision's loss V*(b) - Q*(b, a) is computed exactly at the belief recomputed from "
+      "the\n"
+      "logged actions and observations; the discounted sum per trial estimates V*(b0) minus the\n"
+      "planner's value, with its 95% CI and the share of V* it implies.");
+  cmd->add_option("--problem", args->problem, "The problem the run used (YAML or .pomdp)")
+      ->required();
+  cmd->add_option("--steps", args->steps, "steps.csv written by `echoplan trials --out DIR`")
+      ->required();
+  cmd->add_flag("--json", args->json,
+                "Print {\"vstar_lower\", \"vstar_upper\", \"regret_mean\", \"regret_ci95\", "
+                "\"trials\", ...} instead of text");
+  cmd->add_option("--gap", args->gap,
+                  "Target gap of the V* and Q* bounds at each visited belief (reward units)")
+      ->capture_default_str();
+  cmd->add_option("--expansions", args->expansions,
+                  "Search limit per belief (node expansions): more gives tighter bounds and a "
+                  "smaller gap between the two regret figures")
+      ->capture_default_str();
+  cmd->add_option("--worst", args->worst, "How many of the largest single losses to list")
+      ->capture_default_str();
+  cmd->callback([args] { run_certify(*args); });
+}
+
+}  // namespace echoplan::cli

@@ -1,0 +1,109 @@
+#include "experiment/regret_certificate.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/error.h"
+
+namespace echoplan::experiment {
+
+double Certificate::share_of_vstar() const {
+  const double v = 0.5 * (vstar.lower + vstar.upper);
+  return v != 0.0 ? 1.0 - regret.mean / v : 0.0;
+}
+
+Certificate certify_trials(solvers::IdentificationSolver& solver,
+                           const std::vector<LoggedTrial>& trials, const CertifyOptions& options,
+                           const std::string& steps_file) {
+  using NodeId = solvers::IdentificationSolver::NodeId;
+  solvers::RefineLimits limits;
+  limits.target_gap = options.decision_gap;
+  limits.expansions = options.expansions_per_belief;
+
+  Certificate c;
+  if (!solver.refine(solver.root(), limits)) ++c.unconverged_beliefs;
+  c.vstar = solver.value(solver.root());
+  const double gamma = solver.discount();
+  std::vector<double> regrets;
+  // Every decision's loss with its node, to list the worst at the end.
+  struct Visited {
+    DecisionLoss loss;
+    NodeId node;
+  };
+  std::vector<Visited> visited;
+
+  for (const LoggedTrial& trial : trials) {
+    TrialRegret r;
+    r.trial = trial.trial;
+    NodeId node = solver.root();
+    double weight = 1.0;  // γ^t
+    for (const LoggedStep& step : trial.steps) {
+      if (r.ended)
+        throw InputError(steps_file, step.line,
+                         fmt::format("trial {} goes on after its episode ended", trial.trial));
+      if (!solver.refine(node, limits)) ++c.unconverged_beliefs;
+      if (!solver.refine_action(node, step.action, limits)) ++c.unconverged_beliefs;
+      const solvers::Bounds v = solver.value(node);
+      const solvers::Bounds q = solver.action_value(node, step.action);
+      DecisionLoss d;
+      d.trial = trial.trial;
+      d.step = step.step;
+      d.line = step.line;
+      d.action = step.action;
+      d.loss = std::max(0.0, v.upper - q.lower);
+      d.loss_lower = std::max(0.0, v.lower - q.upper);
+      r.regret += weight * d.loss;
+      r.regret_lower += weight * d.loss_lower;
+      visited.push_back({d, node});
+      ++c.decisions;
+      weight *= gamma;
+      if (solver.is_terminal_action(step.action)) {
+        r.ended = true;
+        continue;
+      }
+      const NodeId next = solver.child(node, step.action, step.observation);
+      if (next == solvers::IdentificationSolver::kEnded) {
+        // Heard only when the episode ends (a collision's "none"); impossible otherwise.
+        if (&step != &trial.steps.back())
+          throw InputError(steps_file, step.line,
+                           fmt::format("trial {}: this observation cannot follow the logged "
+                                       "history under the problem's model",
+                                       trial.trial));
+        r.ended = true;
+        continue;
+      }
+      node = next;
+    }
+    if (!r.ended) {
+      // Cut short (step cap): the value the planner never collected is part of its regret.
+      if (!solver.refine(node, limits)) ++c.unconverged_beliefs;
+      r.regret += weight * solver.value(node).upper;
+      r.regret_lower += weight * solver.value(node).lower;
+    }
+    regrets.push_back(r.regret);
+    c.regret_lower_mean += r.regret_lower / static_cast<double>(trials.size());
+    c.trials.push_back(r);
+  }
+  c.regret = mean_ci95(regrets);
+
+  // The worst decisions, with the action that was best there.
+  std::sort(visited.begin(), visited.end(),
+            [](const Visited& a, const Visited& b) { return a.loss.loss > b.loss.loss; });
+  const std::size_t n = std::min<std::size_t>(visited.size(), std::max(0, options.worst));
+  for (std::size_t i = 0; i < n; ++i) {
+    Visited& w = visited[i];
+    double best = -1e300;
+    for (int a = 0; a < solver.num_actions(); ++a) {
+      solver.refine_action(w.node, a, limits);
+      const double lower = solver.action_value(w.node, a).lower;
+      if (lower > best) best = lower, w.loss.best_action = a;
+    }
+    w.loss.belief = solver.belief(w.node);
+    c.worst.push_back(w.loss);
+  }
+  return c;
+}
+
+}  // namespace echoplan::experiment

@@ -1,0 +1,69 @@
+// How far a logged run's decisions were from optimal, measured exactly: the regret certificate
+// behind `echoplan certify`.
+//
+// For an identification problem (solvers/identification_solver.h), each logged decision's loss is
+//   V*(b_t) − Q*(b_t, a_t) ≥ 0
+// at the exact belief b_t recomputed from the trial's action/observation history (the belief the
+// log holds is not trusted: a particle filter's is approximate). By the performance-difference
+// identity, the discounted sum of losses along a trial, plus γ^T V*(b_T) when the trial was cut
+// short before ending, has expectation V*(b0) − V^planner(b0), with far less variance than the
+// returns themselves. V* and Q* come as bounds from the exact solver, refined at every visited
+// belief to `decision_gap`; the per-trial regret reported is the upper end (U_V − L_Q clipped at
+// 0), so the certified share of V* errs on the planner's side only by sampling, never by bounds.
+#pragma once
+
+#include <vector>
+
+#include "common/statistics.h"
+#include "experiment/trial_log.h"
+#include "solvers/identification_solver.h"
+
+namespace echoplan::experiment {
+
+struct CertifyOptions {
+  double decision_gap = 1e-3;  // absolute target gap of V* and Q* at every visited belief
+  // Refinement limit per belief and per bound, in node expansions (a count, so results repeat);
+  // bounds stay valid when it is hit, the regret then counts the remaining gap against the run.
+  long expansions_per_belief = 20000;
+  int worst = 10;  // how many of the largest single losses to list
+};
+
+// One decision with its loss (undiscounted) and where it happened.
+struct DecisionLoss {
+  int trial = 0;
+  int step = 0;
+  int line = 0;  // in steps.csv
+  int action = 0;
+  int best_action = 0;         // the action with the highest lower bound on Q* there
+  double loss = 0.0;           // upper end: V*_upper − Q*_lower, at least 0
+  double loss_lower = 0.0;     // lower end: V*_lower − Q*_upper, at least 0
+  std::vector<double> belief;  // exact belief over the model's states
+};
+
+struct TrialRegret {
+  int trial = 0;
+  double regret = 0.0;        // Σ γ^t loss_t (+ γ^T V*_upper(b_T) when cut short)
+  double regret_lower = 0.0;  // the same from the lower ends
+  bool ended = false;         // a terminal action (or a collision) ended the trial
+};
+
+struct Certificate {
+  solvers::Bounds vstar;  // V*(b0)
+  std::vector<TrialRegret> trials;
+  MeanInterval regret;             // over trials, of TrialRegret::regret
+  double regret_lower_mean = 0.0;  // mean of TrialRegret::regret_lower
+  int decisions = 0;
+  int unconverged_beliefs = 0;      // beliefs whose bounds missed decision_gap (still valid)
+  std::vector<DecisionLoss> worst;  // largest losses first
+  // Share of V*(b0) the planner is certified to reach: 1 − regret.mean / V*, at the midpoint of V*.
+  double share_of_vstar() const;
+};
+
+// Certifies `trials` (read from steps.csv) against the exact solver's bounds. Throws InputError
+// naming the steps.csv line of a history the model cannot produce (an observation impossible after
+// the logged history, a step after the episode ended).
+Certificate certify_trials(solvers::IdentificationSolver& solver,
+                           const std::vector<LoggedTrial>& trials, const CertifyOptions& options,
+                           const std::string& steps_file);
+
+}  // namespace echoplan::experiment

@@ -1,0 +1,350 @@
+#include "solvers/identification_solver.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace echoplan::solvers {
+
+namespace {
+
+// Transition and reward entries are compared exactly against 0 and 1 where the shape depends on
+// them; tables read from files keep exact zeros, and a row sum is checked elsewhere.
+constexpr double kZero = 0.0;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// splitmix64: the codes only need to be fixed and well mixed, not drawn from the user's seed (they
+// do not change any result, only how nodes are found).
+std::uint64_t splitmix64(std::uint64_t& x) {
+  std::uint64_t z = (x += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+// The default node cap: about 2 GB of beliefs and bounds.
+std::size_t default_max_nodes(int live_states) {
+  const std::size_t bytes_per_node = 8 * static_cast<std::size_t>(live_states) + 16 + 16 + 48;
+  return std::size_t{2} * 1024 * 1024 * 1024 / bytes_per_node;
+}
+
+}  // namespace
+
+std::optional<std::string> identification_shape_problem(const pomdp::TabularModel& m) {
+  const int S = m.num_states(), A = m.num_actions();
+  const std::vector<double> b0 = m.initial_belief();
+  for (int s = 0; s < S; ++s) {
+    if (!m.terminal(s)) continue;
+    for (int a = 0; a < A; ++a) {
+      if (m.transition(s, a, s) != 1.0 || m.reward(s, a) != kZero)
+        return fmt::format("absorbing state {} is left or pays a reward under action {}", s, a);
+    }
+    if (b0[s] > kZero) return fmt::format("the start belief puts mass on absorbing state {}", s);
+  }
+  bool any_terminal_action = false;
+  for (int a = 0; a < A; ++a) {
+    bool ends_everywhere = true;
+    for (int s = 0; s < S; ++s) {
+      if (m.terminal(s)) continue;
+      for (int t = 0; t < S; ++t) {
+        if (t == s || m.terminal(t) || m.transition(s, a, t) <= kZero) continue;
+        return fmt::format(
+            "action {} moves state {} to state {}: the hidden state must stay fixed until an "
+            "action ends the episode (for example, Tiger's doors reset the state instead)",
+            a, s, t);
+      }
+      if (m.transition(s, a, s) > kZero) ends_everywhere = false;
+    }
+    any_terminal_action = any_terminal_action || ends_everywhere;
+  }
+  if (!any_terminal_action)
+    return std::string(
+        "no action ends the episode from every state (an identification problem ends by "
+        "committing, e.g. sorting the object)");
+  return std::nullopt;
+}
+
+IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m, std::size_t max_nodes) {
+  if (auto why = identification_shape_problem(m)) {
+    throw std::invalid_argument("not an identification problem: " + *why);
+  }
+  num_states_ = m.num_states();
+  num_actions_ = m.num_actions();
+  num_observations_ = m.num_observations();
+  discount_ = m.discount();
+  for (int s = 0; s < num_states_; ++s)
+    if (!m.terminal(s)) live_states_.push_back(s);
+  num_live_ = static_cast<int>(live_states_.size());
+  max_nodes_ = max_nodes > 0 ? max_nodes : default_max_nodes(num_live_);
+
+  const int L = num_live_, O = num_observations_, A = num_actions_;
+  kind_.assign(A, ActionKind::terminal);
+  reward_.assign(std::size_t(A) * L, 0.0);
+  stay_.assign(std::size_t(A) * L, 0.0);
+  emission_.assign(std::size_t(A) * O * L, 0.0);
+  for (int a = 0; a < A; ++a) {
+    for (int l = 0; l < L; ++l) {
+      const int s = live_states_[l];
+      reward_[a * L + l] = m.reward(s, a);
+      stay_[a * L + l] = m.transition(s, a, s);
+      if (stay_[a * L + l] > kZero) kind_[a] = ActionKind::sensing;
+      for (int o = 0; o < O; ++o)
+        emission_[(std::size_t(a) * O + o) * L + l] = stay_[a * L + l] * m.observation(a, s, o);
+    }
+  }
+  // The value of a known state: with the state fixed, the best stationary plan either ends the
+  // episode now or repeats one sensing action for ever (until a collision ends it).
+  known_value_.assign(L, -std::numeric_limits<double>::infinity());
+  for (int l = 0; l < L; ++l) {
+    for (int a = 0; a < A; ++a) {
+      const double r = reward_[a * L + l];
+      const double v =
+          kind_[a] == ActionKind::terminal ? r : r / (1.0 - discount_ * stay_[a * L + l]);
+      known_value_[l] = std::max(known_value_[l], v);
+    }
+  }
+  std::uint64_t state = 0x6964656e74696679ULL;  // "identify"
+  pair_code_.resize(std::size_t(A) * O);
+  for (Key& k : pair_code_) k = Key{splitmix64(state), splitmix64(state)};
+
+  std::vector<double> b0_all = m.initial_belief();
+  std::vector<double> b0(L);
+  double total = 0.0;
+  for (int l = 0; l < L; ++l) total += b0_all[live_states_[l]];
+  for (int l = 0; l < L; ++l) b0[l] = b0_all[live_states_[l]] / total;
+  insert(Key{}, b0.data(), 0.0, nullptr);
+  belief_scratch_.resize(L);
+  children_scratch_.resize(O);
+}
+
+double IdentificationSolver::expected_reward(const double* b, int a) const {
+  double r = 0.0;
+  for (int l = 0; l < num_live_; ++l) r += b[l] * reward_[a * num_live_ + l];
+  return r;
+}
+
+Bounds IdentificationSolver::frontier_bounds(const double* b) const {
+  double lower = -std::numeric_limits<double>::infinity(), upper = lower;
+  for (int a = 0; a < num_actions_; ++a) {
+    const double r = expected_reward(b, a);
+    if (kind_[a] == ActionKind::terminal) {
+      lower = std::max(lower, r);
+      upper = std::max(upper, r);
+    } else {
+      double future = 0.0;
+      for (int l = 0; l < num_live_; ++l)
+        future += b[l] * stay_[a * num_live_ + l] * known_value_[l];
+      upper = std::max(upper, r + discount_ * future);
+    }
+  }
+  return {lower, std::max(lower, upper)};
+}
+
+double IdentificationSolver::child_belief(const double* b, int a, int o, double* out) const {
+  const double* e = &emission_[(std::size_t(a) * num_observations_ + o) * num_live_];
+  double weight = 0.0;
+  for (int l = 0; l < num_live_; ++l) {
+    out[l] = b[l] * e[l];
+    weight += out[l];
+  }
+  if (weight > 0.0)
+    for (int l = 0; l < num_live_; ++l) out[l] /= weight;
+  return weight;
+}
+
+IdentificationSolver::Key IdentificationSolver::child_key(NodeId node, int a, int o) const {
+  const Key& k = keys_[node];
+  const Key& c = pair_code_[std::size_t(a) * num_observations_ + o];
+  return Key{k.a + c.a, k.b + c.b};
+}
+
+IdentificationSolver::NodeId IdentificationSolver::insert(const Key& key, const double* b,
+                                                          double log_reach,
+                                                          const std::uint16_t* counts) {
+  const auto id = static_cast<NodeId>(lower_.size());
+  beliefs_.insert(beliefs_.end(), b, b + num_live_);
+  const std::size_t pairs = std::size_t(num_actions_) * num_observations_;
+  if (counts != nullptr)
+    counts_.insert(counts_.end(), counts, counts + pairs);
+  else
+    counts_.resize(counts_.size() + pairs, 0);
+  log_reach_.push_back(log_reach);
+  keys_.push_back(key);
+  const Bounds f = frontier_bounds(b);
+  lower_.push_back(f.lower);
+  upper_.push_back(f.upper);
+  expanded_at_.push_back(std::numeric_limits<double>::infinity());
+  index_.emplace(key, id);
+  return id;
+}
+
+IdentificationSolver::NodeId IdentificationSolver::child(NodeId node, int action, int observation) {
+  if (node < 0 || static_cast<std::size_t>(node) >= num_nodes())
+    throw std::invalid_argument("no such node");
+  if (action < 0 || action >= num_actions_ || kind_[action] != ActionKind::sensing)
+    throw std::invalid_argument(fmt::format("action {} is not a sensing action", action));
+  if (observation < 0 || observation >= num_observations_)
+    throw std::invalid_argument(fmt::format("observation {} is out of range", observation));
+  const Key key = child_key(node, action, observation);
+  if (auto it = index_.find(key); it != index_.end()) return it->second;
+  std::vector<double> b(num_live_);
+  const double p = child_belief(node_belief(node), action, observation, b.data());
+  if (p <= 0.0) return kEnded;
+  // The child's reach weight: every history with the same counts has the same probability, and
+  // there are at most Π_a n_a! / Π_o n_ao! of them; one more (a, o) multiplies that count by
+  // (n_a + 1) / (n_ao + 1).
+  const std::size_t pairs = std::size_t(num_actions_) * num_observations_;
+  std::vector<std::uint16_t> counts(&counts_[node * pairs], &counts_[node * pairs] + pairs);
+  int n_a = 0;
+  for (int o = 0; o < num_observations_; ++o) n_a += counts[action * num_observations_ + o];
+  std::uint16_t& n_ao = counts[action * num_observations_ + observation];
+  if (n_ao == std::numeric_limits<std::uint16_t>::max())
+    throw std::length_error("identification search: a count outgrew 65535");
+  const double log_reach = log_reach_[node] + std::log(discount_ * p) +
+                           std::log(static_cast<double>(n_a + 1) / (n_ao + 1.0));
+  ++n_ao;
+  return insert(key, b.data(), log_reach, counts.data());
+}
+
+Bounds IdentificationSolver::value(NodeId node) const { return {lower_[node], upper_[node]}; }
+
+Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView>& children) const {
+  const double* b = node_belief(node);
+  const double r = expected_reward(b, a);
+  if (kind_[a] == ActionKind::terminal) return {r, r};
+  double* scratch = belief_scratch_.data();
+  Bounds q{r, r};
+  for (int o = 0; o < num_observations_; ++o) {
+    ChildView& c = children[o];
+    c = ChildView{};
+    const Key key = child_key(node, a, o);
+    if (auto it = index_.find(key); it != index_.end()) {
+      c.id = it->second;
+      // The probability still comes from this node's belief (the child's belief is normalised).
+      const double* e = &emission_[(std::size_t(a) * num_observations_ + o) * num_live_];
+      for (int l = 0; l < num_live_; ++l) c.probability += b[l] * e[l];
+      c.bounds = value(c.id);
+    } else {
+      c.probability = child_belief(b, a, o, scratch);
+      if (c.probability <= 0.0) continue;
+      c.bounds = frontier_bounds(scratch);
+    }
+    q.lower += discount_ * c.probability * c.bounds.lower;
+    q.upper += discount_ * c.probability * c.bounds.upper;
+  }
+  return q;
+}
+
+Bounds IdentificationSolver::action_value(NodeId node, int action) const {
+  if (action < 0 || action >= num_actions_) throw std::invalid_argument("action out of range");
+  std::vector<ChildView> children(num_observations_);
+  return lookahead(node, action, children);
+}
+
+double IdentificationSolver::observation_probability(NodeId node, int action, int o) const {
+  if (kind_[action] != ActionKind::sensing) return 0.0;
+  const double* b = node_belief(node);
+  const double* e = &emission_[(std::size_t(action) * num_observations_ + o) * num_live_];
+  double p = 0.0;
+  for (int l = 0; l < num_live_; ++l) p += b[l] * e[l];
+  return p;
+}
+
+std::vector<double> IdentificationSolver::belief(NodeId node) const {
+  std::vector<double> full(num_states_, 0.0);
+  const double* b = node_belief(node);
+  for (int l = 0; l < num_live_; ++l) full[live_states_[l]] = b[l];
+  return full;
+}
+
+bool IdentificationSolver::backup(NodeId node) {
+  double lower = -std::numeric_limits<double>::infinity(), upper = lower;
+  for (int a = 0; a < num_actions_; ++a) {
+    const Bounds q = lookahead(node, a, children_scratch_);
+    lower = std::max(lower, q.lower);
+    upper = std::max(upper, q.upper);
+  }
+  // Both the old and the new bounds are sound, so keep the tighter of each.
+  const bool tightened = lower > lower_[node] || upper < upper_[node];
+  lower_[node] = std::max(lower_[node], lower);
+  upper_[node] = std::min(upper_[node], upper);
+  return tightened;
+}
+
+void IdentificationSolver::expand(NodeId node, double delta, int forced_action, Budget& budget) {
+  const bool forced = forced_action >= 0;
+  if (!forced && std::exp(log_reach_[node]) * (upper_[node] - lower_[node]) <= delta) return;
+  if (!forced && expanded_at_[node] <= delta) return;
+  if (budget.exhausted(*this)) return;
+  ++expansions_;
+  ++budget.expansions;
+  std::vector<ChildView> children(num_observations_);
+  for (int a = 0; a < num_actions_; ++a) {
+    if (kind_[a] != ActionKind::sensing) continue;
+    if (forced && a != forced_action) continue;
+    // An action whose best case is worse than what the node already guarantees cannot be
+    // optimal here: its subtree cannot change V's bounds.
+    const Bounds q = lookahead(node, a, children);
+    if (!forced && q.upper <= lower_[node]) continue;
+    for (int o = 0; o < num_observations_; ++o) {
+      if (children[o].probability <= 0.0) continue;
+      NodeId next = children[o].id;
+      if (next == kEnded) next = child(node, a, o);
+      expand(next, delta, -1, budget);
+    }
+  }
+  backup(node);
+  if (!budget.stopped && !forced) expanded_at_[node] = std::min(expanded_at_[node], delta);
+}
+
+bool IdentificationSolver::Budget::exhausted(const IdentificationSolver& solver) {
+  if (stopped) return true;
+  if (limits.expansions > 0 && expansions >= limits.expansions) stopped = true;
+  if (solver.num_nodes() >= solver.max_nodes_) stopped = true;
+  // The clock is read every 256 expansions only.
+  if (limits.seconds > 0.0 && (expansions & 255) == 0 && seconds_since(start) >= limits.seconds)
+    stopped = true;
+  return stopped;
+}
+
+bool IdentificationSolver::refine_to(NodeId node, int action, const RefineLimits& limits) {
+  Budget budget{limits, std::chrono::steady_clock::now()};
+  auto gap = [&] {
+    return action < 0 ? upper_[node] - lower_[node] : action_value(node, action).gap();
+  };
+  // Passes of shrinking δ: each expands every belief whose weighted gap γ^t P(path) · gap exceeds
+  // δ; a pass that reaches no such belief leaves the gap below what δ allows, so δ halves until
+  // the target is met.
+  // δ is absolute (in units of weighted gap at b0); relative to this node it is δ / reach(node).
+  // Starting coarse spreads the first passes over the likely beliefs instead of one deep corner;
+  // a node already expanded to some δ (an earlier call) resumes below it.
+  const double reach = std::exp(log_reach_[node]);
+  double delta = std::min(0.25 * gap() * reach, 0.5 * expanded_at_[node]);
+  while (gap() > limits.target_gap) {
+    const long before = expansions_;
+    expand(node, delta, action, budget);
+    if (budget.stopped) return gap() <= limits.target_gap;
+    if (expansions_ == before || gap() > limits.target_gap) delta *= 0.5;
+    if (delta < 1e-300) return false;
+  }
+  return true;
+}
+
+bool IdentificationSolver::refine(NodeId node, const RefineLimits& limits) {
+  return refine_to(node, -1, limits);
+}
+
+bool IdentificationSolver::refine_action(NodeId node, int action, const RefineLimits& limits) {
+  if (action < 0 || action >= num_actions_) throw std::invalid_argument("action out of range");
+  if (kind_[action] == ActionKind::terminal) return true;
+  return refine_to(node, action, limits);
+}
+
+}  // namespace echoplan::solvers

@@ -1,0 +1,179 @@
+// Exact bounds on V*(b) and Q*(b, a) for identification problems: tabular POMDPs whose hidden state
+// never changes while the agent senses, and whose episodes end with terminal actions (the seed's
+// "which object is it, then sort it" problem, `make-problem` output, .pomdp files of that shape).
+//
+// Why it can be exact: when the state is fixed, the belief after any history is
+//   b(s) ∝ b0(s) · Π_(a,o) [stay(s, a) · O(a, s, o)]^n_ao
+// where n_ao counts how often sensing action a heard o. Histories with the same counts share one
+// belief, so a memoised search over count vectors reaches beliefs arbitrarily deep without the
+// approximation a point-based solver makes. Every node holds sound bounds:
+//   lower: the best terminal action now, max_a R(b, a)      (a policy anyone can follow)
+//   upper: max(commit now, max over sensing a of R(b, a) + γ Σ_s b(s) stay(s, a) V_known(s))
+//          where V_known(s) is the value when s is known (sensing once more reveals everything)
+// and Bellman backups over children tighten both. Refinement works in passes of shrinking δ: a
+// pass expands, depth first, every belief whose reach · (upper − lower) exceeds δ (skipping actions
+// whose upper bound is below what the belief already guarantees), and backs the bounds up; δ
+// halves until the gap at the belief asked about meets the target. A belief's reach is
+// γ^t · P(one history to it) · (the number of histories with its counts, at most
+// Π_a n_a! / Π_o n_ao!): every history with the same counts is equally likely, so this bounds what
+// the belief's gap can add to the gap at b0, whichever way it is reached. Weighting by reach stops
+// the search down paths of negligible probability, which at γ = 0.99 a per-depth threshold (HSVI's
+// ε γ^-t) would follow for hundreds of steps. Every call is anytime: the bounds are valid whenever
+// it stops.
+//
+// Shape accepted (identification_shape() explains a refusal in words):
+//   - absorbing states: every action keeps them with reward 0 (Cassandra's goal-state rule);
+//   - from a live state, every action either keeps the state or ends the episode (moves it to an
+//     absorbing state, e.g. a sorting action or a collision), never to another live state;
+//   - at least one terminal action (ends the episode from every live state);
+//   - the start belief puts no mass on absorbing states.
+// A collision (a sensing action that sometimes ends the episode) is allowed: its mass leaves the
+// live belief, whose value is then scaled, V*(mixture) = (1 - q) V*(live part), since absorbing
+// states earn nothing whatever is done.
+//
+// Nodes are found by a 128-bit key, the sum of two independent random 64-bit codes per (a, o) pair
+// times its count (order-free, so every path to the same counts meets the same node); two count
+// vectors share a key with probability about 2^-128 per pair of nodes.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "pomdp/model.h"
+
+namespace echoplan::solvers {
+
+// Why `model` is not an identification problem, or nothing when it is one.
+std::optional<std::string> identification_shape_problem(const pomdp::TabularModel& model);
+
+// Lower and upper bound on one value: lower <= true value <= upper.
+struct Bounds {
+  double lower = 0.0;
+  double upper = 0.0;
+  double gap() const { return upper - lower; }
+};
+
+// When a refinement call stops (whichever comes first); a call that stops early leaves valid
+// bounds.
+struct RefineLimits {
+  double target_gap = 1e-4;  // absolute, in reward units
+  double seconds = 0.0;      // wall time; <= 0 means no limit
+  long expansions = 0;       // node expansions; <= 0 means no limit (repeats on any machine)
+};
+
+// Not thread-safe (even const calls share scratch space): one solver per thread.
+class IdentificationSolver {
+ public:
+  using NodeId = std::int32_t;
+  // The child of a node when the observation cannot be heard from any live state (it signals the
+  // end of the episode, e.g. a collision's "none").
+  static constexpr NodeId kEnded = -1;
+
+  // Reads the tables once (the model is not kept). Throws std::invalid_argument with
+  // identification_shape_problem()'s reason when the model does not qualify. `max_nodes` caps the
+  // memory: refinement stops (bounds stay valid) when that many nodes exist.
+  explicit IdentificationSolver(const pomdp::TabularModel& model, std::size_t max_nodes = 0);
+
+  NodeId root() const { return 0; }
+  // The node after sensing action `action` heard observation `observation` at `node`, created if
+  // needed; kEnded when no live state can emit it. Throws std::invalid_argument when `action` is
+  // not a sensing action or an index is out of range.
+  NodeId child(NodeId node, int action, int observation);
+
+  // Bounds on V*(b) at the node's belief b (over live states only; see the header comment).
+  Bounds value(NodeId node) const;
+  // Bounds on Q*(b, a) from the current bounds of the children (one backup, no search).
+  Bounds action_value(NodeId node, int action) const;
+  // P(observation | b, action) for a sensing action, counting only outcomes that stay live.
+  double observation_probability(NodeId node, int action, int observation) const;
+  // The node's belief over all model states (absorbing ones 0).
+  std::vector<double> belief(NodeId node) const;
+
+  // Tightens value(node) until its gap is at most limits.target_gap (or a limit is hit).
+  // Returns true when the target was reached.
+  bool refine(NodeId node, const RefineLimits& limits);
+  // Tightens action_value(node, action) the same way (a terminal action's value is exact).
+  bool refine_action(NodeId node, int action, const RefineLimits& limits);
+
+  bool is_terminal_action(int action) const { return kind_[action] == ActionKind::terminal; }
+  bool is_sensing_action(int action) const { return kind_[action] == ActionKind::sensing; }
+  int num_actions() const { return num_actions_; }
+  int num_observations() const { return num_observations_; }
+  double discount() const { return discount_; }
+  std::size_t num_nodes() const { return lower_.size(); }
+  long expansions() const { return expansions_; }
+
+ private:
+  enum class ActionKind { sensing, terminal };
+  struct Key {
+    std::uint64_t a = 0, b = 0;
+    friend bool operator==(const Key&, const Key&) = default;
+  };
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const { return k.a ^ (k.b * 0x9e3779b97f4a7c15ULL); }
+  };
+  // What a one-step lookahead at a node says about its children.
+  struct ChildView {
+    double probability = 0.0;
+    Bounds bounds;
+    NodeId id = kEnded;  // kEnded when the child is not stored yet
+  };
+
+  const double* node_belief(NodeId node) const { return &beliefs_[std::size_t(node) * num_live_]; }
+  // The child's live belief (unnormalised weight returned) into `out`.
+  double child_belief(const double* belief, int action, int observation, double* out) const;
+  Bounds frontier_bounds(const double* belief) const;
+  double expected_reward(const double* belief, int action) const;
+  NodeId insert(const Key& key, const double* belief, double log_reach,
+                const std::uint16_t* counts);
+  Key child_key(NodeId node, int action, int observation) const;
+  // Bounds on Q(node, action) from its children's bounds; fills `children` (one per observation).
+  Bounds lookahead(NodeId node, int action, std::vector<ChildView>& children) const;
+  // Bellman backup of both bounds; true when either tightened.
+  bool backup(NodeId node);
+  // What one refine call may still spend.
+  struct Budget {
+    RefineLimits limits;
+    std::chrono::steady_clock::time_point start;
+    long expansions = 0;
+    bool stopped = false;
+    bool exhausted(const IdentificationSolver& solver);
+  };
+  // Expands `node` and, recursively, every descendant whose reach · gap exceeds `delta`, then
+  // backs it up; at `node` only `forced_action` when it is >= 0 (and regardless of its gap).
+  void expand(NodeId node, double delta, int forced_action, Budget& budget);
+  // refine() (action < 0) or refine_action().
+  bool refine_to(NodeId node, int action, const RefineLimits& limits);
+
+  int num_states_ = 0, num_actions_ = 0, num_observations_ = 0, num_live_ = 0;
+  double discount_ = 0.0;
+  std::size_t max_nodes_ = 0;
+  std::vector<int> live_states_;     // model state of each live index
+  std::vector<ActionKind> kind_;     // per action
+  std::vector<double> reward_;       // [a * L + l] = R(live l, a)
+  std::vector<double> emission_;     // [(a * O + o) * L + l] = stay(l, a) · O(a, l, o)
+  std::vector<double> stay_;         // [a * L + l] = P(state kept | live l, a)
+  std::vector<double> known_value_;  // [l] = V*(state l known)
+  std::vector<Key> pair_code_;       // [a * O + o]
+
+  // Nodes: flat arrays indexed by NodeId.
+  std::vector<double> beliefs_;  // [node * L + l], normalised over live states
+  std::vector<Key> keys_;
+  std::vector<double> lower_, upper_;
+  // log of the node's reach weight γ^t · (number of histories with its counts, bounded) ·
+  // P(one such history): an upper bound on how much its gap can add to the gap at b0.
+  std::vector<double> log_reach_;
+  std::vector<std::uint16_t> counts_;  // [node * A * O + a * O + o] = n_ao
+  // The smallest δ each node was expanded with; +inf when never.
+  std::vector<double> expanded_at_;
+  std::unordered_map<Key, NodeId, KeyHash> index_;
+  long expansions_ = 0;
+  std::vector<ChildView> children_scratch_;     // backup()'s lookahead
+  mutable std::vector<double> belief_scratch_;  // lookahead()'s child belief
+};
+
+}  // namespace echoplan::solvers

@@ -1,0 +1,111 @@
+// The regret certificate on logs whose regret follows by hand, on a real ABT run's log (through the
+// shipped TrialLog, ObjectIdentificationModel and ParticleBelief), and its errors on bad logs.
+#include "experiment/regret_certificate.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "common/error.h"
+#include "pomdp/object_identification_model.h"
+#include "pomdp/problem.h"
+
+namespace echoplan::experiment {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string repo_file(const std::string& relative) {
+  return std::string(ECHOPLAN_SOURCE_DIR) + "/" + relative;
+}
+
+pomdp::ObjectProblemData perfect_sensing_seed() {
+  const pomdp::Problem p = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
+  auto d = dynamic_cast<const pomdp::ObjectIdentificationModel&>(*p.model).data();
+  for (auto& action : d.observation_table)
+    for (std::size_t k = 0; k < action.size(); ++k)
+      for (std::size_t o = 0; o < action[k].size(); ++o) action[k][o] = (o == k) ? 1.0 : 0.0;
+  return d;
+}
+
+fs::path write_steps(const std::string& name, const std::string& rows) {
+  const fs::path path = fs::temp_directory_path() / ("echoplan_certify_" + name + ".csv");
+  std::ofstream out(path);
+  out << "trial,step,action,observation,p_a,p_b,p_c,p_d,reward,episodes\n" << rows;
+  return path;
+}
+
+Certificate certify_file(const pomdp::ObjectIdentificationModel& model, const fs::path& steps) {
+  solvers::IdentificationSolver solver(*model.tabular());
+  CertifyOptions options;
+  options.decision_gap = 1e-9;
+  return certify_trials(solver, read_steps_csv(steps, model.spec()), options, steps.string());
+}
+
+TEST(RegretCertificate, HandComputedRegretsOnPerfectSensing) {
+  // With perfect sensing V*(b0) = -1 + 0.99 * 10 = 8.9. Trial 0 plays optimally (regret 0);
+  // trial 1 sorts blind (-45: regret 53.9); trial 2 senses, then sorts wrongly after hearing the
+  // mug (a known mug sorted to A: V* = 10, Q = -100, discounted by 0.99: regret 108.9).
+  const pomdp::ObjectIdentificationModel model(perfect_sensing_seed());
+  const fs::path steps = write_steps("hand",
+                                     "0,0,strike,coffee_mug,0,0,0,0,-1,10\n"
+                                     "0,1,move_to_B,none,0,0,0,0,10,10\n"
+                                     "1,0,move_to_A,none,0,0,0,0,-100,10\n"
+                                     "2,0,slide,coffee_mug,0,0,0,0,-1,10\n"
+                                     "2,1,move_to_A,none,0,0,0,0,-100,10\n");
+  const Certificate c = certify_file(model, steps);
+  ASSERT_EQ(c.trials.size(), 3u);
+  EXPECT_NEAR(c.vstar.lower, 8.9, 1e-9);
+  EXPECT_NEAR(c.trials[0].regret, 0.0, 1e-9);
+  EXPECT_NEAR(c.trials[1].regret, 53.9, 1e-9);
+  EXPECT_NEAR(c.trials[2].regret, 0.99 * 110.0, 1e-9);
+  EXPECT_NEAR(c.regret.mean, (53.9 + 108.9) / 3.0, 1e-9);
+  // Three trials: the t quantile with 2 degrees of freedom, 4.303, not 1.96.
+  const double sd = c.regret.sd;
+  EXPECT_NEAR(c.regret.half_width, 4.302652730 * sd / std::sqrt(3.0), 1e-9);
+  ASSERT_FALSE(c.worst.empty());
+  EXPECT_NEAR(c.worst[0].loss, 110.0, 1e-9);
+  EXPECT_EQ(c.worst[0].best_action, 3);  // move_to_B: the mug belongs at B
+  fs::remove(steps);
+}
+
+TEST(RegretCertificate, CutShortTrialsCountTheValueLeftBehind) {
+  // One sense then the step cap: regret 0 for the sense, plus 0.99 * V*(known mug) = 0.99 * 10.
+  const pomdp::ObjectIdentificationModel model(perfect_sensing_seed());
+  const fs::path steps = write_steps("capped", "0,0,strike,coffee_mug,0,0,0,0,-1,10\n");
+  const Certificate c = certify_file(model, steps);
+  ASSERT_EQ(c.trials.size(), 1u);
+  EXPECT_FALSE(c.trials[0].ended);
+  EXPECT_NEAR(c.trials[0].regret, 9.9, 1e-9);
+  fs::remove(steps);
+}
+
+TEST(RegretCertificate, BadLogsNameTheLine) {
+  const pomdp::ObjectIdentificationModel model(perfect_sensing_seed());
+  auto expect_error_at = [&](const std::string& rows, int line, const std::string& words) {
+    const fs::path steps = write_steps("bad", rows);
+    try {
+      certify_file(model, steps);
+      ADD_FAILURE() << "no error for " << rows;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.line(), line) << e.what();
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+    fs::remove(steps);
+  };
+  expect_error_at("0,0,jump,none,0,0,0,0,-1,10\n", 2, "unknown action 'jump'");
+  expect_error_at("0,0,strike,banana,0,0,0,0,-1,10\n", 2, "unknown observation 'banana'");
+  expect_error_at("0,1,strike,coffee_mug,0,0,0,0,-1,10\n", 2, "step 1 where step 0");
+  expect_error_at("0,0,move_to_A,none,0,0,0,0,-1,10\n0,1,strike,coffee_mug,0,0,0,0,-1,10\n", 3,
+                  "after its episode ended");
+  // Perfect sensing heard the mug, then the can: no object sounds like both.
+  expect_error_at(
+      "0,0,strike,coffee_mug,0,0,0,0,-1,10\n0,1,strike,pringles_can,0,0,0,0,-1,10\n"
+      "0,2,move_to_A,none,0,0,0,0,-1,10\n",
+      3, "cannot follow");
+  expect_error_at("0,0,strike\n", 2, "fields");
+}
+
+}  // namespace
+}  // namespace echoplan::experiment
