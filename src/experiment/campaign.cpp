@@ -10,8 +10,11 @@
 
 #include "common/error.h"
 #include "common/rng.h"
+#include "experiment/calibrated_problem.h"
 #include "experiment/campaign_figures.h"
+#include "experiment/environment_factory.h"
 #include "experiment/html_report.h"
+#include "perception/recording_set.h"
 #include "pomdp/model_environment.h"
 #include "pomdp/problem.h"
 #include "sim/catalogue.h"
@@ -72,7 +75,57 @@ void check_writable(const fs::path& directory) {
   fs::remove(probe, error);
 }
 
+// The object-identification data of a loaded problem (calibration replaces its table).
+const pomdp::ObjectProblemData& object_data(const pomdp::Problem& problem) {
+  const auto* model = dynamic_cast<const pomdp::ObjectIdentificationModel*>(problem.model.get());
+  if (!model)
+    throw InputError(problem.source_path, 0,
+                     "an arm that calibrates needs an object-identification problem");
+  return model->data();
+}
+
+sim::Catalogue campaign_catalogue(const CampaignConfig& config) {
+  return sim::load_catalogue(config.training.catalogue.empty() ? sim::default_catalogue_path()
+                                                               : config.training.catalogue);
+}
+
+sim::SimConfig campaign_sim_config(const CampaignConfig& config) {
+  return config.training.sim_config.empty() ? sim::SimConfig{}
+                                            : sim::load_sim_config(config.training.sim_config);
+}
+
+// The closed-loop settings of the world for trials of `group`.
+LoopSettings loop_settings(const CampaignConfig& config,
+                           std::shared_ptr<const perception::ObservationModel> model,
+                           const ObjectGroup& group) {
+  LoopSettings settings;
+  settings.model = pomdp::load_problem(config.world.problem).model;
+  settings.world.kind = WorldSettings::Kind::simulator;
+  settings.world.catalogue = campaign_catalogue(config);
+  settings.world.config = campaign_sim_config(config);
+  settings.classifier = std::move(model);
+  if (group.object != group.plays) settings.world_objects[group.plays] = group.object;
+  return settings;
+}
+
+// Checks that `model` fits the campaign (calibrating arms and a simulated world); InputError if
+// not.
+void check_classifier(const CampaignConfig& config,
+                      const std::shared_ptr<const perception::ObservationModel>& model) {
+  for (const ArmConfig& arm : config.arms)
+    if (arm.calibrate) calibrated_problem(object_data(pomdp::load_problem(arm.problem)), *model);
+  if (config.world.type == "simulated")
+    for (const ObjectGroup& group : config.groups)
+      make_environment_factory(loop_settings(config, model, group));
+}
+
 }  // namespace
+
+bool needs_classifier(const CampaignConfig& config) {
+  if (config.world.type == "simulated") return true;
+  return std::any_of(config.arms.begin(), config.arms.end(),
+                     [](const ArmConfig& a) { return a.calibrate; });
+}
 
 Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) {
   Campaign c;
@@ -148,6 +201,22 @@ Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) 
   if (!config.training.recordings.empty() && !fs::is_directory(config.training.recordings))
     throw InputError(config.training.recordings, 0, "the recordings folder does not exist");
   if (!config.training.sim_config.empty()) sim::load_sim_config(config.training.sim_config);
+  for (const pomdp::Problem& p : problems)
+    for (const ArmConfig& arm : config.arms)
+      if (arm.calibrate && arm.problem == p.source_path) object_data(p);
+  // A given model must be one for these objects and actions.
+  if (!config.training.model.empty() && needs_classifier(config)) {
+    c.observation_model = std::make_shared<const perception::ObservationModel>(
+        perception::load_observation_model(config.training.model));
+    check_classifier(config, c.observation_model);
+  } else if (needs_classifier(config) && config.training.recordings_per_pair == 0 &&
+             config.training.recordings.empty()) {
+    throw InputError(
+        config.source, 0,
+        "a calibrating arm or a simulated world needs a classifier: give training_set.model, "
+        "training_set.recordings or recordings_per_pair > 0");
+  }
+  c.planning = config;
 
   // The output folder: writable, and either new or holding this same campaign.
   check_writable(directory);
@@ -171,9 +240,11 @@ fs::path training_recordings(const Campaign& campaign) {
   return campaign.directory / "training" / "recordings";
 }
 
-bool synthesise_training_set(const Campaign& campaign,
-                             const std::function<void(int, int)>& progress,
-                             const std::atomic<bool>& stop) {
+namespace {
+
+// Synthesises the training set unless complete already; false when stopped.
+bool synthesise(const Campaign& campaign, const perception::ProgressFn& progress,
+                const std::atomic<bool>& stop) {
   const CampaignConfig& config = campaign.config;
   if (!config.training.recordings.empty() || config.training.recordings_per_pair == 0) return true;
   const fs::path folder = training_recordings(campaign);
@@ -188,12 +259,6 @@ bool synthesise_training_set(const Campaign& campaign,
     while (std::getline(manifest, line)) ++rows;
     if (rows == total) return true;
   }
-  const sim::Catalogue catalogue =
-      sim::load_catalogue(config.training.catalogue.empty() ? sim::default_catalogue_path()
-                                                            : config.training.catalogue);
-  const sim::SimConfig sim_config = config.training.sim_config.empty()
-                                        ? sim::SimConfig{}
-                                        : sim::load_sim_config(config.training.sim_config);
   sim::DatasetOptions options;
   options.objects = campaign.training_objects;
   options.actions = campaign.training_actions;
@@ -202,12 +267,84 @@ bool synthesise_training_set(const Campaign& campaign,
       derive_seed(config.seed, {0x747261696eull});  // "train": the training set's own stream
   options.output_dir = folder.string();
   const sim::DatasetSummary summary = sim::write_dataset(
-      catalogue, sim_config, options,
-      [&](int done, int all, const std::string&) { progress(done, all); }, stop);
+      campaign_catalogue(config), campaign_sim_config(config), options,
+      [&](int done, int all, const std::string&) {
+        if (progress) progress("synthesise", done, all);
+      },
+      stop);
   return !summary.interrupted;
 }
 
+}  // namespace
+
+bool prepare_training(Campaign& campaign, const perception::ProgressFn& progress,
+                      const std::atomic<bool>& stop) {
+  if (!synthesise(campaign, progress, stop)) return false;
+  const CampaignConfig& config = campaign.config;
+  campaign.planning = config;
+  if (!needs_classifier(config)) return true;
+  const fs::path training = campaign.directory / "training";
+  fs::create_directories(training);
+  if (!campaign.observation_model) {
+    const fs::path saved = training / "model.json";
+    if (fs::exists(saved)) {
+      campaign.observation_model = std::make_shared<const perception::ObservationModel>(
+          perception::load_observation_model(saved.string()));
+    } else {
+      perception::TrainOptions options;
+      if (!config.training.classifier.empty()) options.classifier = config.training.classifier;
+      // Both arms must hear the same symbols to be compared trial by trial: no reject option.
+      options.reject = false;
+      options.seed = derive_seed(config.seed, {0x63616c6962ull});  // "calib": fold assignment
+      perception::ObservationModel model = perception::train_observation_model(
+          perception::load_recording_set(training_recordings(campaign).string()), options,
+          progress);
+      if (stop) return false;
+      // Written under a temporary name, then renamed: a model.json on disk is always whole.
+      const fs::path temporary = training / "model.json.tmp";
+      perception::save_observation_model(model, temporary.string());
+      fs::rename(temporary, saved);
+      campaign.observation_model =
+          std::make_shared<const perception::ObservationModel>(std::move(model));
+    }
+    check_classifier(config, campaign.observation_model);
+  }
+  for (ArmConfig& arm : campaign.planning.arms) {
+    if (!arm.calibrate) continue;
+    const pomdp::Problem base = pomdp::load_problem(arm.problem);
+    const pomdp::ObjectProblemData data =
+        calibrated_problem(object_data(base), *campaign.observation_model);
+    const fs::path file = training / (arm.name + ".problem.yaml");
+    std::ostringstream text;
+    pomdp::write_problem_yaml(text, data, base.belief, base.planner);
+    write_text(file, text.str());
+    arm.problem = file.string();
+    // The world reports symbols by the world problem's indices; the arm must read them the same
+    // way.
+    const pomdp::Problem calibrated = pomdp::load_problem(arm.problem);
+    const pomdp::Problem world = pomdp::load_problem(config.world.problem);
+    if (names_of(calibrated.model->spec()) != names_of(world.model->spec()))
+      throw InputError(
+          arm.problem, 0,
+          fmt::format(
+              "the calibrated problem has {}, the world's {} has {}: train on the problem's "
+              "objects in its order",
+              names_of(calibrated.model->spec()), world.source_path,
+              names_of(world.model->spec())));
+  }
+  return true;
+}
+
 WorldFactory make_world(const Campaign& campaign) {
+  if (campaign.config.world.type == "simulated") {
+    if (!campaign.observation_model)
+      throw std::logic_error("make_world: call prepare_training() first");
+    const CampaignConfig config = campaign.config;
+    const auto model = campaign.observation_model;
+    return [config, model](const ObjectGroup& group) -> std::unique_ptr<pomdp::Environment> {
+      return make_environment_factory(loop_settings(config, model, group))();
+    };
+  }
   const std::string problem = campaign.config.world.problem;
   // The model as the world: each worker loads its own copy, so no state is shared between threads.
   return [problem](const ObjectGroup&) -> std::unique_ptr<pomdp::Environment> {

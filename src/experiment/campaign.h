@@ -1,25 +1,27 @@
 // A campaign from start to report: every check before any work, the training set, the trials, and
 // the report rebuilt from what is on disk.
 //
-// The output folder DIR holds
-//   campaign.json        the campaign: its configuration and identity (written before any trial)
-//   training/recordings  the synthesised training set (DIR/<object>/<action>/NNN.wav +
-//   manifest.csv) journal.jsonl        one line per finished trial (trial_journal.h), in id order
-//   once complete trials.csv, steps.csv, arms/<arm>/, summary.json, summary.txt, figures/,
-//   index.html
-//                        the report: a pure function of the above, rebuilt at the end of every run
+// The output folder DIR holds:
+// - campaign.json: the campaign, its configuration and identity (written before any trial);
+// - training/: the synthesised training set (recordings/<object>/<action>/NNN.wav, manifest.csv),
+//   the classifier trained on it (model.json) and each calibrating arm's problem;
+// - journal.jsonl: one line per finished trial (trial_journal.h), in id order once complete;
+// - the report, a pure function of the above rebuilt at the end of every run: trials.csv,
+//   steps.csv, arms/<arm>/, summary.json, summary.txt, figures/, index.html.
 // Running the same command again continues the campaign in DIR: finished trials are skipped.
 #pragma once
 
 #include <atomic>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "experiment/campaign_config.h"
 #include "experiment/campaign_report.h"
 #include "experiment/campaign_runner.h"
+#include "perception/observation_model.h"
 
 namespace echoplan::experiment {
 
@@ -30,24 +32,34 @@ struct Campaign {
   CampaignResults results;                    // spec, particles, planned trials (entries: none yet)
   std::vector<std::string> training_objects;  // the training set's objects and actions
   std::vector<std::string> training_actions;
+  // Filled by prepare_training(): the trained classifier (when needed), and the configuration the
+  // workers run, in which each calibrating arm plans with its calibrated problem file.
+  std::shared_ptr<const perception::ObservationModel> observation_model;
+  CampaignConfig planning;
 };
+
+// True when the campaign needs a trained classifier: an arm calibrates or the world is simulated.
+bool needs_classifier(const CampaignConfig& config);
 
 // Checks everything a campaign needs before any work starts, and claims `directory` for it (writes
 // campaign.json). Throws InputError, naming the file and the problem, for: a problem that does not
 // load or whose objects, actions or observations differ from the other arms' or the world's; an
 // object the problems do not know; an object with no catalogue entry; a missing recordings folder;
-// an unknown solver; an output folder that cannot be written or that holds a different campaign.
+// a given model trained for other objects or actions; an unknown solver; an output folder that
+// cannot be written or that holds a different campaign.
 Campaign open_campaign(const CampaignConfig& config, const std::filesystem::path& directory);
 
 // Where the training recordings are: training_set.recordings, else DIR/training/recordings.
 std::filesystem::path training_recordings(const Campaign& campaign);
 
-// Synthesises the training set into DIR/training/recordings unless it is complete already or the
-// campaign uses existing recordings. `progress(done, total)` after each clip. Returns false when
-// stopped.
-bool synthesise_training_set(const Campaign& campaign,
-                             const std::function<void(int, int)>& progress,
-                             const std::atomic<bool>& stop);
+// Prepares what the trials need: synthesises the training set into DIR/training/recordings (unless
+// it is complete already or the campaign uses existing recordings), then, when needs_classifier(),
+// trains and calibrates the classifier on it (or loads training_set.model, or
+// DIR/training/model.json of an earlier run) and writes each calibrating arm's problem.
+// `progress(stage, done, total)` reports "synthesise" clips and the trainer's stages. Returns false
+// when stopped.
+bool prepare_training(Campaign& campaign, const perception::ProgressFn& progress,
+                      const std::atomic<bool>& stop);
 
 // The world of the campaign's trials, for run_campaign_trials.
 WorldFactory make_world(const Campaign& campaign);

@@ -9,6 +9,7 @@
 
 #include "common/data_dir.h"
 #include "common/error.h"
+#include "common/stable_hash.h"
 #include "common/yaml_reader.h"
 
 namespace echoplan::experiment {
@@ -30,18 +31,14 @@ bool is_label(const std::string& name) {
   return true;
 }
 
-// FNV-1a of a file's bytes, as 16 hex digits; "" when the path is empty.
+// A fingerprint of a file's bytes, as 16 hex digits; "" when the path is empty.
 std::string content_hash(const std::string& path) {
   if (path.empty()) return "";
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot open");
-  std::uint64_t h = 1469598103934665603ull;
-  char c;
-  while (in.get(c)) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 1099511628211ull;
-  }
-  return fmt::format("{:016x}", h);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  return fmt::format("{:016x}", stable_hash(bytes.str()));
 }
 
 CampaignConfig read_campaign(const std::string& yaml_text, const std::string& source);
@@ -58,12 +55,16 @@ nlohmann::json CampaignConfig::identity() const {
   nlohmann::json j;
   j["seed"] = seed;
   for (const ArmConfig& arm : arms)
-    j["arms"].push_back({{"name", arm.name}, {"problem_sha", content_hash(arm.problem)}});
+    j["arms"].push_back({{"name", arm.name},
+                         {"problem_sha", content_hash(arm.problem)},
+                         {"calibrate", arm.calibrate}});
   j["world"] = {{"type", world.type}, {"problem_sha", content_hash(world.problem)}};
   j["training_set"] = {{"recordings_per_pair", training.recordings_per_pair},
                        {"objects", training.objects},
                        {"actions", training.actions},
                        {"recordings", training.recordings},
+                       {"model_sha", content_hash(training.model)},
+                       {"classifier", training.classifier},
                        {"catalogue_sha", content_hash(training.catalogue)},
                        {"sim_config_sha", content_hash(training.sim_config)}};
   for (const ObjectGroup& g : groups)
@@ -102,7 +103,7 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
   if (!arms.IsSequence() || arms.size() == 0) f.fail(arms, "arms must be a non-empty list");
   for (const YAML::Node& a : arms) {
     f.expect_map(a, "an arm");
-    f.only_keys(a, {"name", "problem"}, "an arm");
+    f.only_keys(a, {"name", "problem", "calibrate"}, "an arm");
     ArmConfig arm;
     arm.name = f.name(f.require(a, "name", "an arm"), "arm name");
     if (!is_label(arm.name))
@@ -110,6 +111,7 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
     for (const ArmConfig& other : c.arms)
       if (other.name == arm.name) f.fail(a, "two arms are named '" + arm.name + "'");
     arm.problem = resolve(source, f.name(f.require(a, "problem", "an arm"), "arm problem"));
+    if (auto n = f.optional(a, "calibrate", "an arm")) arm.calibrate = f.boolean(n, "calibrate");
     c.arms.push_back(arm);
   }
 
@@ -117,15 +119,20 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
   f.expect_map(world, "world");
   f.only_keys(world, {"type", "problem"}, "world");
   c.world.type = f.name(f.require(world, "type", "world"), "world type");
-  if (c.world.type != "model")
-    f.fail(world, "world type '" + c.world.type + "' is not one of: model");
+  if (c.world.type != "model" && c.world.type != "simulated")
+    f.fail(world, "world type '" + c.world.type + "' is not one of: model, simulated");
   c.world.problem = resolve(source, f.name(f.require(world, "problem", "world"), "world problem"));
 
   if (auto t = f.optional(root, "training_set", "campaign")) {
     f.expect_map(t, "training_set");
-    f.only_keys(
-        t, {"recordings_per_pair", "objects", "actions", "recordings", "catalogue", "sim_config"},
-        "training_set");
+    f.only_keys(t,
+                {"recordings_per_pair", "objects", "actions", "recordings", "model", "classifier",
+                 "catalogue", "sim_config"},
+                "training_set");
+    if (auto n = f.optional(t, "model", "training_set"))
+      c.training.model = resolve(source, f.name(n, "model"));
+    if (auto n = f.optional(t, "classifier", "training_set"))
+      c.training.classifier = f.name(n, "classifier");
     if (auto n = f.optional(t, "recordings", "training_set"))
       c.training.recordings = resolve(source, f.name(n, "recordings"));
     if (auto n = f.optional(t, "recordings_per_pair", "training_set"))
@@ -192,12 +199,15 @@ nlohmann::json to_json(const CampaignConfig& c) {
   j["source"] = c.source;
   j["seed"] = c.seed;
   for (const ArmConfig& arm : c.arms)
-    j["arms"].push_back({{"name", arm.name}, {"problem", arm.problem}});
+    j["arms"].push_back(
+        {{"name", arm.name}, {"problem", arm.problem}, {"calibrate", arm.calibrate}});
   j["world"] = {{"type", c.world.type}, {"problem", c.world.problem}};
   j["training_set"] = {{"recordings_per_pair", c.training.recordings_per_pair},
                        {"objects", c.training.objects},
                        {"actions", c.training.actions},
                        {"recordings", c.training.recordings},
+                       {"model", c.training.model},
+                       {"classifier", c.training.classifier},
                        {"catalogue", c.training.catalogue},
                        {"sim_config", c.training.sim_config}};
   for (const ObjectGroup& g : c.groups)
@@ -215,7 +225,8 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
     c.source = j.at("source").get<std::string>();
     c.seed = j.at("seed").get<std::uint64_t>();
     for (const auto& a : j.at("arms"))
-      c.arms.push_back({a.at("name").get<std::string>(), a.at("problem").get<std::string>()});
+      c.arms.push_back({a.at("name").get<std::string>(), a.at("problem").get<std::string>(),
+                        a.at("calibrate").get<bool>()});
     c.world.type = j.at("world").at("type").get<std::string>();
     c.world.problem = j.at("world").at("problem").get<std::string>();
     const auto& t = j.at("training_set");
@@ -223,6 +234,8 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
     c.training.objects = t.at("objects").get<std::vector<std::string>>();
     c.training.actions = t.at("actions").get<std::vector<std::string>>();
     c.training.recordings = t.at("recordings").get<std::string>();
+    c.training.model = t.at("model").get<std::string>();
+    c.training.classifier = t.at("classifier").get<std::string>();
     c.training.catalogue = t.at("catalogue").get<std::string>();
     c.training.sim_config = t.at("sim_config").get<std::string>();
     for (const auto& g : j.at("trials"))

@@ -17,6 +17,9 @@ namespace echoplan::experiment {
 struct ArmConfig {
   std::string name;     // a label: letters, digits, '_' and '-'
   std::string problem;  // path of the problem file the planner uses
+  // Plan with `problem`'s observation table replaced by the trained classifier's calibrated one
+  // (what calibration buys is this arm against one planning with the file's own table).
+  bool calibrate = false;
 };
 
 // A group of trials with one object in the world. `object` is what the world holds (a catalogue
@@ -32,8 +35,11 @@ struct ObjectGroup {
 struct WorldConfig {
   // "model": the world draws observations from `problem`'s own table (a planner study, no sound);
   // a variant object behaves as the object it plays.
+  // "simulated": the closed loop: the simulated robot acts on the group's object, the simulated
+  // recorder records, the trained classifier hears; `problem` gives rewards, kinematics and
+  // symbols.
   std::string type = "model";
-  std::string problem;  // the world's table for type "model"
+  std::string problem;
 };
 
 // The training set synthesised before the trials (`echoplan dataset`'s library code).
@@ -43,6 +49,9 @@ struct TrainingSetConfig {
   std::vector<std::string> actions;  // empty: the planning problems' sensing actions
   std::string recordings;  // an existing DIR/<object>/<action>/*.wav folder to use instead
                            // of synthesising (e.g. real recordings); empty: synthesise
+  std::string model;       // an existing trained model file to use instead of training on the
+                           // training set; empty: train
+  std::string classifier;  // perception's classifier name; empty: its default
   std::string catalogue;   // empty: the shipped catalogue
   std::string sim_config;  // empty: built-in defaults
 };

@@ -219,7 +219,10 @@ std::string summary_text(const CampaignResults& results) {
       current_arm = row.arm;
       std::string problem;
       for (const ArmConfig& a : results.config.arms)
-        if (a.name == row.arm) problem = a.problem;
+        if (a.name == row.arm)
+          problem = a.calibrate
+                        ? a.problem + ", its observation table calibrated on the training set"
+                        : a.problem;
       out += fmt::format("\narm {} (plans with {})\n", row.arm, problem);
       out += fmt::format("  {:<24}{:>7}{:>10}{:>22}{:>7}", "objects", "trials", "accuracy",
                          "reward (95% CI)", "steps");

@@ -8,6 +8,7 @@
 
 #include "common/error.h"
 #include "common/rng.h"
+#include "common/stable_hash.h"
 #include "pomdp/make_belief.h"
 #include "pomdp/problem.h"
 #include "solvers/make_solver.h"
@@ -15,16 +16,6 @@
 namespace echoplan::experiment {
 
 namespace {
-
-// A stable number for a name (FNV-1a), so a group's streams follow its object, not its position.
-std::uint64_t name_stream(const std::string& name) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : name) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
 
 int object_index(const pomdp::Problem& problem, const std::string& object) {
   const auto& names = problem.model->spec().state.discrete_value_names;
@@ -106,7 +97,7 @@ std::vector<TrialJob> campaign_jobs(const CampaignConfig& config) {
 }
 
 std::uint64_t group_seed(const CampaignConfig& config, int group) {
-  return derive_seed(config.seed, {name_stream(config.groups[group].object)});
+  return derive_seed(config.seed, {stable_hash(config.groups[group].object)});
 }
 
 Shard parse_shard(const std::string& text) {

@@ -104,6 +104,16 @@ std::string html_report(const fs::path& directory, const CampaignResults& result
       results.config.planner.episodes > 0
           ? fmt::format("{} episodes per step", results.config.planner.episodes)
           : fmt::format("{} ms per step", results.config.planner.step_ms));
+  if (results.config.world.type == "simulated")
+    h += "<p class=\"note\">The world here is the simulator: the simulated robot slides or strikes "
+         "the object "
+         "(a weighted variant with its added mass), the simulated recorder records, and the "
+         "classifier trained on "
+         "the synthesised training set reports what it heard. If simulated objects are easier to "
+         "tell apart than "
+         "the lab's real ones, the numbers here are better than the report's for that reason, not "
+         "because of the "
+         "planner.</p>\n";
   if (results.config.world.type == "model")
     h += fmt::format(
         "<p class=\"note\">The world here is a problem file's own observation table "

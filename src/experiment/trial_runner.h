@@ -73,14 +73,14 @@ class TrialObserver {
 
 // What a trial run needs; the callers own all of it.
 struct TrialSetup {
-  const pomdp::Model* model = nullptr;                      // the planning model (for names, discount)
-  pomdp::Environment* environment = nullptr;                // where actions happen
-  solvers::Solver* solver = nullptr;                        // reset at the start of every trial
-  std::function<pomdp::BeliefPtr(Rng&)> make_belief;        // the initial belief of a trial
-  const std::atomic<bool>* stop_requested = nullptr;        // optional: checked between steps
+  const pomdp::Model* model = nullptr;                // the planning model (for names, discount)
+  pomdp::Environment* environment = nullptr;          // where actions happen
+  solvers::Solver* solver = nullptr;                  // reset at the start of every trial
+  std::function<pomdp::BeliefPtr(Rng&)> make_belief;  // the initial belief of a trial
+  const std::atomic<bool>* stop_requested = nullptr;  // optional: checked between steps
   // Optional: called after every step with its record and the belief after it, or nullptr when the
-  // step ended the trial (no update follows a sorting action or a collision). For printing a trial as
-  // it goes; trial_finished still gets every step.
+  // step ended the trial (no update follows a sorting action or a collision). For printing a trial
+  // as it goes; trial_finished still gets every step.
   std::function<void(const StepRecord&, const pomdp::Belief*)> step_finished;
 };
 

@@ -12,29 +12,16 @@
 #include "audio/io.h"
 #include "common/error.h"
 #include "common/rng.h"
+#include "common/stable_hash.h"
 #include "sim/simulated_recorder.h"
 #include "sim/simulated_robot.h"
 
 namespace echoplan::sim {
 
-namespace {
-
-// FNV-1a: a stable 64-bit hash of a name, so streams do not depend on list order.
-std::uint64_t name_hash(const std::string& name) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (unsigned char c : name) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
-}  // namespace
-
 std::uint64_t clip_seed(std::uint64_t seed, const std::string& object, const std::string& action,
                         int index) {
   return derive_seed(seed,
-                     {name_hash(object), name_hash(action), static_cast<std::uint64_t>(index)});
+                     {stable_hash(object), stable_hash(action), static_cast<std::uint64_t>(index)});
 }
 
 DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config,

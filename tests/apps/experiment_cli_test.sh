@@ -120,6 +120,20 @@ expect_input_error "missing config" "cannot open the campaign file" \
 sed 's/seed: 4/sed: 4/' "$config" >"$work/typo.yaml"
 expect_input_error "typo in the config" "typo.yaml:1: unknown key 'sed'" \
   experiment --config "$work/typo.yaml" --out "$work/err_out"
+# A model trained for two of the four objects: the campaign that trains it stops with exit 2 (the
+# calibrated arm needs all four), leaving the trained model; given as training_set.model it is refused
+# before any work.
+sed -e 's|training_set: {recordings_per_pair: 1}|training_set: {recordings_per_pair: 2, objects: [pringles_can, coffee_mug]}|' \
+  -e 's|  - {name: hand_tuned, problem: \(.*\)}|  - {name: calibrated, problem: \1, calibrate: true}|' "$config" >"$work/two.yaml"
+"$bin" experiment --config "$work/two.yaml" --out "$work/two" >/dev/null 2>"$work/two.err"
+[ $? -eq 2 ] && grep -q "observation model was trained for" "$work/two.err" \
+  || { fail "training for two objects should fail with exit 2 naming the model's objects"; cat "$work/two.err"; }
+[ -s "$work/two/training/model.json" ] || fail "the two-object model was not kept"
+sed -e "s|training_set: {recordings_per_pair: 1}|training_set: {model: $work/two/training/model.json}|" \
+  -e 's|  - {name: hand_tuned, problem: \(.*\)}|  - {name: calibrated, problem: \1, calibrate: true}|' "$config" >"$work/given.yaml"
+expect_input_error "model trained for other objects" "observation model was trained for" \
+  experiment --config "$work/given.yaml" --out "$work/err_out"
+
 cp -r "$work/shard2" "$work/other"
 sed -i 's/"seed": 4/"seed": 99/' "$work/other/campaign.json"
 expect_input_error "merging other campaigns" "holds another campaign" \

@@ -45,8 +45,9 @@ CampaignConfig tiny_config(int arms = 1, const std::string& second_problem = kPr
 // (< 0: never), then rebuilds the report (no figures: gnuplot is tested by the CLI tests).
 int run(const CampaignConfig& config, const fs::path& dir, int workers, Shard shard = {},
         int stop_after = -1) {
-  const Campaign campaign = open_campaign(config, dir);
+  Campaign campaign = open_campaign(config, dir);
   std::atomic<bool> stop{false};
+  EXPECT_TRUE(prepare_training(campaign, {}, stop));
   int finished = 0;
   TrialJournal journal(dir / "journal.jsonl");
   CampaignRunOptions options;
@@ -169,6 +170,31 @@ TEST(Campaign, TrialsOfAGroupHaveItsObjectAsTruth) {
     EXPECT_EQ(e.result.record.true_state, expected) << e.object;
     EXPECT_EQ(e.result.steps.size(), static_cast<std::size_t>(e.result.record.steps));
   }
+}
+
+TEST(Campaign, ClosedLoopRunsWithACalibratedArmAndGivesTheSameFilesOnAnyNumberOfWorkers) {
+  const std::string text = "seed: 5\narms:\n  - {name: calibrated, problem: " + kProblem +
+                           ", calibrate: true}\n  - {name: hand_tuned, problem: " + kProblem +
+                           "}\nworld: {type: simulated, problem: " + kProblem +
+                           "}\ntraining_set: {recordings_per_pair: 2, catalogue: " + std::string(ECHOPLAN_SOURCE_DIR) +
+                           "/objects/catalogue.yaml}\n"
+                           "trials:\n  - {object: paper_base, trials: 1}\n"
+                           "  - {object: coffee_mug_weighted, plays: coffee_mug, trials: 1}\n"
+                           "planner: {solver: abt, episodes: 200, max_steps: 12}\n";
+  const CampaignConfig config = parse_campaign_config(text, "closed_loop.yaml");
+  const fs::path one = fresh_dir("loop_one"), two = fresh_dir("loop_two");
+  EXPECT_EQ(run(config, one, 1), 4);
+  EXPECT_EQ(run(config, two, 2), 4);
+  expect_same_files(one, two);
+  // The calibrated arm plans with the trained classifier's table, written next to the model.
+  EXPECT_TRUE(fs::exists(one / "training" / "model.json"));
+  EXPECT_TRUE(fs::exists(one / "training" / "calibrated.problem.yaml"));
+  // Every sensing step was classified: its heard probability is logged.
+  for (const JournalEntry& e : read_journal(one / "journal.jsonl"))
+    for (const StepRecord& s : e.result.steps)
+      if (s.observation.index < 4) {
+        EXPECT_TRUE(s.heard_probability.has_value()) << "trial " << e.id;
+      }
 }
 
 // The InputError message of opening `config` in `dir`.

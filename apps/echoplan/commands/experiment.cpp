@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <memory>
 #include <thread>
 
 #include "commands/commands.h"
@@ -33,7 +34,7 @@ void run_experiment(const ExperimentFlags& f) {
   const experiment::Shard shard = experiment::parse_shard(f.shard);
   const int workers = f.workers > 0 ? f.workers : std::max(1u, std::thread::hardware_concurrency());
   // Every check before any work.
-  const experiment::Campaign campaign = experiment::open_campaign(config, f.out);
+  experiment::Campaign campaign = experiment::open_campaign(config, f.out);
 
   // Ctrl-C (or SIGTERM) stops the workers after their step in progress; finished trials are in the
   // journal already, and the report is rebuilt from them before exiting.
@@ -45,25 +46,29 @@ void run_experiment(const ExperimentFlags& f) {
       "campaign {} -> {} ({} trials{}, {} workers)", config_path, f.out, config.total_trials(),
       shard.count > 1 ? fmt::format(", shard {}/{}", shard.index, shard.count) : "", workers);
   {
-    experiment::ProgressBar bar("training clips", 1);
-    bool started = false;
-    const bool complete = experiment::synthesise_training_set(
+    // One bar per stage of the preparation (synthesis, then the trainer's stages).
+    std::unique_ptr<experiment::ProgressBar> bar;
+    std::string stage;
+    const bool complete = experiment::prepare_training(
         campaign,
-        [&](int done, int total) {
-          if (!started) bar = experiment::ProgressBar("training clips", total);
-          started = true;
-          bar.update(done);
+        [&](const std::string& what, int done, int total) {
+          if (what != stage) {
+            if (bar) bar->finish();
+            stage = what;
+            bar = std::make_unique<experiment::ProgressBar>(
+                what == "synthesise" ? "training clips" : what, total);
+          }
+          bar->update(done);
         },
         stop_requested);
-    if (started) bar.finish();
+    if (bar) bar->finish();
     if (!complete) {
       spdlog::warn(
-          "interrupted while synthesising the training set; run the same command again to "
-          "continue");
+          "interrupted while preparing the training set; run the same command again to continue");
       throw Interrupted{};
     }
   }
-  const double synthesis_seconds =
+  const double preparation_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const std::vector<experiment::TrialJob> jobs = experiment::remaining_jobs(campaign, shard);
@@ -84,8 +89,8 @@ void run_experiment(const ExperimentFlags& f) {
   const auto trials_start = std::chrono::steady_clock::now();
   if (!jobs.empty()) {
     bar.update(done);
-    experiment::run_campaign_trials(config, jobs, experiment::make_world(campaign), journal,
-                                    options);
+    experiment::run_campaign_trials(campaign.planning, jobs, experiment::make_world(campaign),
+                                    journal, options);
     bar.finish();
   }
   const double trial_seconds =
@@ -96,8 +101,8 @@ void run_experiment(const ExperimentFlags& f) {
   const double report_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - report_start).count();
   fmt::print("{}\n", summary);
-  fmt::print("time: training set {:.1f} s, trials {:.1f} s, report {:.1f} s\n", synthesis_seconds,
-             trial_seconds, report_seconds);
+  fmt::print("time: training set and classifier {:.1f} s, trials {:.1f} s, report {:.1f} s\n",
+             preparation_seconds, trial_seconds, report_seconds);
   fmt::print("report: {}/index.html\n", f.out);
   if (stop_requested) {
     spdlog::warn("interrupted: {} of {} trials are in {}; the same command continues the campaign",
