@@ -26,6 +26,10 @@ packages=(
   libmujoco-dev libqhull-dev libeigen3-dev
   gnuplot-nox
   clang libclang-rt-14-dev   # scripts/fuzz.sh (libFuzzer)
+  portaudio19-dev            # live capture: echoplan devices/record, the ROS listener
+  # ROS 1 from Debian (docs/real-robot.md): nodes, their services, a master and roslaunch for the ros_* tests
+  libroscpp-dev catkin ros-message-generation libstd-msgs-dev
+  python3-roslaunch python3-rosparam python3-rosservice python3-rostest librostest-dev
 )
 
 install_deps() {

@@ -21,9 +21,8 @@ int main(int argc, char** argv) {
   app.add_flag("-v,--verbose", verbose, "Log debug messages to stderr");
   // Logs and progress go to stderr, so stdout carries only what a command prints as its result.
   spdlog::set_default_logger(spdlog::stderr_color_mt("echoplan"));
-  app.parse_complete_callback([&] {
-    spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info);
-  });
+  app.parse_complete_callback(
+      [&] { spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info); });
 
   echoplan::cli::add_version_command(app);
   echoplan::cli::add_trials_command(app);
@@ -34,6 +33,10 @@ int main(int argc, char** argv) {
   echoplan::cli::add_dataset_command(app);
   echoplan::cli::add_features_command(app);
   echoplan::cli::add_heatmap_command(app);
+#ifdef ECHOPLAN_HAVE_PORTAUDIO
+  echoplan::cli::add_devices_command(app);
+  echoplan::cli::add_record_command(app);
+#endif
 
   try {
     app.parse(argc, argv);
