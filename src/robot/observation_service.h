@@ -14,16 +14,16 @@ namespace echoplan::robot {
 struct HeardObservation {
   std::string label;
   bool unknown = false;
-  double probability = 0;  // calibrated probability of `label`
+  double probability = 0;                                     // calibrated probability of `label`
   std::vector<std::pair<std::string, double>> probabilities;  // per class, calibrated, sums to 1
-  double distance = 0;     // the classifier's distance to the chosen class (for the reject option)
+  double distance = 0;  // the classifier's distance to the chosen class (for the reject option)
 };
 
 class ObservationService {
  public:
   virtual ~ObservationService() = default;
-  // Classifies `clip`, recorded during `action`. Throws InputError when the service has no model for
-  // `action`.
+  // Classifies `clip`, recorded during `action`. Throws InputError when the service has no model
+  // for `action`.
   virtual HeardObservation observe(const audio::AudioClip& clip, const std::string& action) = 0;
 };
 
