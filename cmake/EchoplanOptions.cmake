@@ -8,13 +8,22 @@ if(ECHOPLAN_SANITIZE)
 endif()
 
 # echoplan_module(NAME SOURCES... DEPS ...): one static library per module, with src/ on the include
-# path so headers are included as "module/header.h".
+# path so headers are included as "module/header.h". Installed (cmake/EchoplanInstall.cmake) as
+# echoplan::NAME with its headers under include/echoplan/<folder>/, so the same includes work in a
+# project that uses find_package(echoplan). Link a dependency your public headers do not need PRIVATE.
+include(GNUInstallDirs)
 function(echoplan_module name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
   add_library(echoplan_${name} STATIC ${ARG_SOURCES})
-  target_include_directories(echoplan_${name} PUBLIC ${PROJECT_SOURCE_DIR}/src)
-  target_link_libraries(echoplan_${name} PUBLIC ${ARG_DEPS} PRIVATE echoplan_options)
+  target_include_directories(echoplan_${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/src>
+                                                     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/echoplan>)
+  target_link_libraries(echoplan_${name} PUBLIC ${ARG_DEPS} PRIVATE $<BUILD_INTERFACE:echoplan_options>)
+  set_target_properties(echoplan_${name} PROPERTIES EXPORT_NAME ${name})
   add_library(echoplan::${name} ALIAS echoplan_${name})
+  install(TARGETS echoplan_${name} EXPORT echoplanTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  file(RELATIVE_PATH folder ${PROJECT_SOURCE_DIR}/src ${CMAKE_CURRENT_SOURCE_DIR})
+  file(GLOB headers CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.h)
+  install(FILES ${headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/echoplan/${folder})
 endfunction()
 
 # echoplan_test(NAME SOURCES... DEPS ...): one GoogleTest binary, registered with ctest.

@@ -3,11 +3,13 @@
 #
 #   scripts/setup.sh          install dependencies and build (build/)
 #   scripts/setup.sh run      ... then run the main job with its default configuration
-#   scripts/setup.sh test     ... then run all tests: the normal build and an ASan+UBSan build
+#   scripts/setup.sh test     ... then run all tests: the normal build, an install into a temporary prefix
+#                             with a project built on it (scripts/check-install.sh), an ASan+UBSan build
 #   scripts/setup.sh deps     only install dependencies
 #
 # Environment: JOBS (parallel build jobs, default: number of cores), BUILD_DIR (default: build),
-# SAN_BUILD_DIR (default: build-san).
+# SAN_BUILD_DIR (default: build-san), ECHOPLAN_CHECK_FORMAT (1: `test` first checks the layout of every
+# C++ file with scripts/check-format.sh; default 0 until the tree is formatted once).
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -26,6 +28,7 @@ packages=(
   libmujoco-dev libqhull-dev libeigen3-dev
   gnuplot-nox
   clang libclang-rt-14-dev   # scripts/fuzz.sh (libFuzzer)
+  clang-format-14            # scripts/check-format.sh
   portaudio19-dev            # live capture: echoplan devices/record, the ROS listener
   # ROS 1 from Debian (docs/real-robot.md): nodes, their services, a master and roslaunch for the ros_* tests
   libroscpp-dev catkin ros-message-generation libstd-msgs-dev
@@ -66,8 +69,10 @@ case "$mode" in
     ;;
   test)
     install_deps
+    if [ "${ECHOPLAN_CHECK_FORMAT:-0}" = 1 ]; then scripts/check-format.sh; fi
     build "$build_dir"
     ctest --test-dir "$build_dir" -j"$jobs" --output-on-failure
+    scripts/check-install.sh "$build_dir"
     echo "setup: sanitizer build (ASan + UBSan)"
     build "$san_build_dir" -DECHOPLAN_SANITIZE=ON -DECHOPLAN_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \

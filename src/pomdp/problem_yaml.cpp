@@ -3,26 +3,22 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iomanip>
-#include <map>
 #include <ostream>
-#include <set>
 #include <sstream>
 
 #include "common/error.h"
+#include "common/yaml_reader.h"
 #include "pomdp/cassandra_reader.h"
 #include "pomdp/distribution.h"
 #include "pomdp/problem.h"
-#include "pomdp/yaml_fields.h"
 
 namespace echoplan::pomdp {
 
 namespace {
 
 // Index of `name` in `list`, or an error at `node` listing the known names.
-int index_of(const YamlFields& f, const YAML::Node& node, const std::vector<std::string>& list,
+int index_of(const YamlReader& f, const YAML::Node& node, const std::vector<std::string>& list,
              const std::string& name, const std::string& kind) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     if (list[i] == name) return static_cast<int>(i);
@@ -33,7 +29,7 @@ int index_of(const YamlFields& f, const YAML::Node& node, const std::vector<std:
 }
 
 // A `type:` key that must be one of the kinds this version supports.
-void check_type(const YamlFields& f, const YAML::Node& section, const std::string& what,
+void check_type(const YamlReader& f, const YAML::Node& section, const std::string& what,
                 const std::string& expected) {
   const YAML::Node t = f.require(section, "type", what);
   const std::string got = f.name(t, what + ".type");
@@ -42,7 +38,7 @@ void check_type(const YamlFields& f, const YAML::Node& section, const std::strin
 }
 
 // A probability row: entries in [0, 1] summing to 1 within kProbabilityTolerance.
-std::vector<double> probability_row(const YamlFields& f, const YAML::Node& node, std::size_t size,
+std::vector<double> probability_row(const YamlReader& f, const YAML::Node& node, std::size_t size,
                                     const std::string& what) {
   std::vector<double> row = f.numbers(node, what);
   if (row.size() != size) {
@@ -60,19 +56,15 @@ std::vector<double> probability_row(const YamlFields& f, const YAML::Node& node,
 }
 
 template <std::size_t N>
-std::array<double, N> fixed_vector(const YamlFields& f, const YAML::Node& node,
+std::array<double, N> fixed_vector(const YamlReader& f, const YAML::Node& node,
                                    const std::string& what) {
-  const std::vector<double> v = f.numbers(node, what);
-  if (v.size() != N) {
-    f.fail(node,
-           what + " needs " + std::to_string(N) + " numbers, got " + std::to_string(v.size()));
-  }
+  const std::vector<double> v = f.numbers(node, what, N);
   std::array<double, N> out{};
   std::copy(v.begin(), v.end(), out.begin());
   return out;
 }
 
-void read_initial_belief(const YamlFields& f, const YAML::Node& root, ObjectProblemData& d) {
+void read_initial_belief(const YamlReader& f, const YAML::Node& root, ObjectProblemData& d) {
   const YAML::Node ib = f.require(root, "initial_belief", "the problem");
   f.only_keys(ib, {"type", "joints", "offset", "objects"}, "initial_belief");
   check_type(f, ib, "initial_belief", "fixed_configuration");
@@ -101,7 +93,7 @@ void read_initial_belief(const YamlFields& f, const YAML::Node& root, ObjectProb
   for (double& p : d.prior) p /= total;
 }
 
-void read_transition(const YamlFields& f, const YAML::Node& root, ObjectProblemData& d) {
+void read_transition(const YamlReader& f, const YAML::Node& root, ObjectProblemData& d) {
   const YAML::Node t = f.require(root, "transition", "the problem");
   f.only_keys(t, {"type", "offset_change", "collision_probability"}, "transition");
   check_type(f, t, "transition", "kinematic");
@@ -128,7 +120,7 @@ void read_transition(const YamlFields& f, const YAML::Node& root, ObjectProblemD
   }
 }
 
-void read_observation(const YamlFields& f, const YAML::Node& root, ObjectProblemData& d) {
+void read_observation(const YamlReader& f, const YAML::Node& root, ObjectProblemData& d) {
   const YAML::Node o = f.require(root, "observation", "the problem");
   f.only_keys(o, {"type", "symbols", "table"}, "observation");
   check_type(f, o, "observation", "table");
@@ -168,13 +160,13 @@ void read_observation(const YamlFields& f, const YAML::Node& root, ObjectProblem
 }
 
 // Every key of `map` must name an entry of `list` (catches misspelt action and object names).
-void keys_must_name(const YamlFields& f, const YAML::Node& map,
+void keys_must_name(const YamlReader& f, const YAML::Node& map,
                     const std::vector<std::string>& list, const std::string& kind) {
   for (auto it = map.begin(); it != map.end(); ++it)
     index_of(f, it->first, list, f.name(it->first, kind), kind);
 }
 
-void read_reward(const YamlFields& f, const YAML::Node& root, ObjectProblemData& d) {
+void read_reward(const YamlReader& f, const YAML::Node& root, ObjectProblemData& d) {
   const YAML::Node r = f.require(root, "reward", "the problem");
   f.only_keys(r, {"sensing", "sorting", "collision"}, "reward");
   std::vector<std::string> sensing_names;
@@ -206,7 +198,7 @@ void read_reward(const YamlFields& f, const YAML::Node& root, ObjectProblemData&
   }
 }
 
-BeliefSettings read_belief(const YamlFields& f, const YAML::Node& root) {
+BeliefSettings read_belief(const YamlReader& f, const YAML::Node& root) {
   BeliefSettings b;
   const YAML::Node node = f.optional(root, "belief", "the problem");
   if (!node.IsDefined()) return b;
@@ -229,7 +221,7 @@ BeliefSettings read_belief(const YamlFields& f, const YAML::Node& root) {
   return b;
 }
 
-PlannerDefaults read_planner(const YamlFields& f, const YAML::Node& root) {
+PlannerDefaults read_planner(const YamlReader& f, const YAML::Node& root) {
   PlannerDefaults p;
   const YAML::Node node = f.optional(root, "planner", "the problem");
   if (!node.IsDefined()) return p;
@@ -267,30 +259,13 @@ PlannerDefaults read_planner(const YamlFields& f, const YAML::Node& root) {
   return p;
 }
 
-// YAML allows a key twice in one mapping and keeps one silently; in a problem file that is
-// always a mistake (two rows for one object, say), so reject it where the second one is.
-void reject_duplicate_keys(const YamlFields& f, const YAML::Node& node) {
-  if (node.IsSequence()) {
-    for (const auto& item : node) reject_duplicate_keys(f, item);
-    return;
-  }
-  if (!node.IsMap()) return;
-  std::set<std::string> seen;
-  for (auto it = node.begin(); it != node.end(); ++it) {
-    if (it->first.IsScalar() && !seen.insert(it->first.Scalar()).second) {
-      f.fail(it->first, "key '" + it->first.Scalar() + "' appears twice in the same mapping");
-    }
-    reject_duplicate_keys(f, it->second);
-  }
-}
-
-Problem read_problem(const YamlFields& f, const YAML::Node& root) {
+Problem read_problem(const YamlReader& f, const YAML::Node& root) {
   if (!root.IsDefined() || root.IsNull()) {
     throw InputError(f.file(), 1,
                      "the file is empty; expected a YAML problem (see docs/problems.md)");
   }
   if (!root.IsMap()) f.fail(root, "expected a YAML mapping of problem keys (see docs/problems.md)");
-  reject_duplicate_keys(f, root);
+  f.reject_duplicate_keys(root);
   f.only_keys(root,
               {"name", "discount", "objects", "actions", "initial_belief", "transition",
                "observation", "reward", "terminal", "heuristic", "belief", "planner"},
@@ -358,40 +333,21 @@ std::string flow_list(const Range& values) {
 }  // namespace
 
 Problem parse_problem_yaml(const std::string& text, const std::string& source_name) {
-  const YamlFields f(source_name);
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw InputError(source_name, std::max(0, e.mark.line + 1), "not valid YAML: " + e.msg);
-  }
-  try {
-    return read_problem(f, root);
-  } catch (const YAML::Exception& e) {
-    // A node shape the checks above did not anticipate: still report it with its position.
-    throw InputError(source_name, std::max(0, e.mark.line + 1),
-                     "unexpected YAML structure: " + e.msg);
-  }
+  const YAML::Node root = parse_yaml(text, source_name);
+  return read_yaml_guarded(source_name,
+                           [&] { return read_problem(YamlReader(source_name), root); });
 }
 
 Problem load_problem(const std::string& path) {
-  // A directory opens as a stream on Linux and reads as empty; say what is really wrong.
-  std::error_code ec;
-  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
-    throw InputError(path, 0, "not a regular file; expected a problem file (.yaml or .pomdp)");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open the problem file");
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = read_text_file(path, "problem file (.yaml or .pomdp)");
   if (path.size() >= 6 && path.compare(path.size() - 6, 6, ".pomdp") == 0) {
     Problem p;
-    p.model = parse_cassandra_pomdp(text.str(), path);
+    p.model = parse_cassandra_pomdp(text, path);
     p.belief.type = BeliefSettings::Type::exact;
     p.source_path = path;
     return p;
   }
-  return parse_problem_yaml(text.str(), path);
+  return parse_problem_yaml(text, path);
 }
 
 void write_problem_yaml(std::ostream& out, const ObjectProblemData& d, const BeliefSettings& belief,

@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "common/data_dir.h"
 #include "common/error.h"
 #include "sim/yaml_file.h"
 
@@ -275,7 +276,7 @@ Catalogue load_catalogue(const std::string& path) {
 std::string default_catalogue_path() {
   const std::string local = "objects/catalogue.yaml";
   if (std::filesystem::exists(local)) return local;
-  return std::string(ECHOPLAN_DATA_DIR) + "/objects/catalogue.yaml";
+  return shipped_file("objects/catalogue.yaml");
 }
 
 }  // namespace echoplan::sim

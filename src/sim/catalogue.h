@@ -91,8 +91,8 @@ Catalogue load_catalogue(const std::string& path);
 // As load_catalogue, from YAML text; `source` names it in error messages.
 Catalogue parse_catalogue(const std::string& yaml_text, const std::string& source);
 
-// The catalogue shipped with echoplan: objects/catalogue.yaml in the working directory if it exists,
-// else the one in the source tree echoplan was built from.
+// The catalogue shipped with echoplan: objects/catalogue.yaml in the working directory if it
+// exists, else the one shipped with echoplan (common/data_dir.h says where that is found).
 std::string default_catalogue_path();
 
 }  // namespace echoplan::sim

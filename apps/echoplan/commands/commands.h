@@ -1,14 +1,14 @@
 // The subcommands of `echoplan`. Each add_*_command() adds one subcommand to the app and sets its
-// callback; the callback throws echoplan::InputError for bad input (main turns it into exit status
-// 2).
+// callback; the callback throws echoplan::InputError for bad input (main turns it into exit status 2).
 #pragma once
 
 #include <CLI/CLI.hpp>
 
 namespace echoplan::cli {
 
-// Thrown by a command that was interrupted (Ctrl-C) after it saved what it had finished; main turns
-// it into exit status 130, the shell's convention for SIGINT.
+// Thrown by a command that was interrupted (Ctrl-C, see common/stop_signal.h for the one way to
+// catch it) after it saved what it had finished; main turns it into exit status 130, the shell's
+// convention for SIGINT.
 struct Interrupted {};
 
 void add_version_command(CLI::App& app);

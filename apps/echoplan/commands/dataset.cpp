@@ -1,23 +1,13 @@
 // `echoplan dataset`: record every (object, action) pair several times into a folder with a manifest.
-#include <fmt/core.h>
+#include "sim/dataset.h"
 
-#include <atomic>
-#include <csignal>
+#include <fmt/core.h>
 
 #include "commands/commands.h"
 #include "commands/sim_options.h"
-#include "sim/dataset.h"
+#include "common/stop_signal.h"
 
 namespace echoplan::cli {
-
-namespace {
-
-// Ctrl-C asks the writer to stop after the clip in progress, so every file on disk is complete and
-// listed in the manifest.
-std::atomic<bool> interrupt_requested{false};
-extern "C" void request_stop(int) { interrupt_requested = true; }
-
-}  // namespace
 
 void add_dataset_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
@@ -43,13 +33,15 @@ void add_dataset_command(CLI::App& app) {
   add_sim_file_options(*cmd, opt->files);
   cmd->callback([opt] {
     const SimSetup setup = load_sim_setup(opt->files);
-    interrupt_requested = false;
-    const auto previous = std::signal(SIGINT, request_stop);
+    // Ctrl-C stops the writer after the clip in progress, so every file on disk is complete and
+    // listed in the manifest.
+    const StopSignal stop;
     const sim::DatasetSummary summary = sim::write_dataset(
         setup.catalogue, setup.config, opt->dataset,
-        [](int done, int total, const std::string& file) { fmt::print(stderr, "[{}/{}] {}\n", done, total, file); },
-        interrupt_requested);
-    std::signal(SIGINT, previous);
+        [](int done, int total, const std::string& file) {
+          fmt::print(stderr, "[{}/{}] {}\n", done, total, file);
+        },
+        stop.flag());
     fmt::print("{} recordings in {} ({} with the arm touching the table); manifest: {}/manifest.csv\n", summary.written,
                opt->dataset.output_dir, summary.collisions, opt->dataset.output_dir);
     if (summary.interrupted) {

@@ -2,13 +2,12 @@
 #include <fmt/core.h>
 #include <spdlog/spdlog.h>
 
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <nlohmann/json.hpp>
 
 #include "commands/commands.h"
 #include "common/error.h"
+#include "common/stop_signal.h"
 #include "experiment/trial_log.h"
 #include "experiment/trial_runner.h"
 #include "experiment/trial_summary.h"
@@ -22,10 +21,6 @@
 namespace echoplan::cli {
 
 namespace {
-
-// Ctrl-C asks the runner to stop between steps; finished trials and the summary are still written.
-std::atomic<bool> interrupt_requested{false};
-extern "C" void on_interrupt(int) { interrupt_requested = true; }
 
 struct TrialsFlags {
   std::string problem;
@@ -142,17 +137,16 @@ void run_trials_command(const TrialsFlags& f) {
   setup.environment = &environment;
   setup.solver = solver.get();
   setup.make_belief = [&problem](Rng& rng) { return pomdp::make_belief(problem, rng); };
-  setup.stop_requested = &interrupt_requested;
+  // Ctrl-C stops the runner between steps; finished trials and the summary are still written.
+  const StopSignal stop;
+  setup.stop_requested = &stop.flag();
 
   spdlog::info("{} trials of {} on {} ({}), results in {}", total, solver_name, spec.name,
                budget_text(trial_options.budget), f.out);
-  interrupt_requested = false;
-  auto previous = std::signal(SIGINT, on_interrupt);
   const auto start = std::chrono::steady_clock::now();
   const auto records = experiment::run_trials(setup, trial_options, progress);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::signal(SIGINT, previous);
 
   const experiment::TrialSummary summary = experiment::summarize(records, problem.model->num_actions());
   nlohmann::json run = {
@@ -172,10 +166,10 @@ void run_trials_command(const TrialsFlags& f) {
         {"expand_after", options.leaf.expand_after},
         {"root_particles", options.root_particles},
         {"branch_threshold", options.branching.continuous_threshold}}},
-      {"interrupted", interrupt_requested.load()}};
+      {"interrupted", stop.requested()}};
   log.write_summary(summary, run);
   print_summary(summary, spec, solver_name, trial_options.budget, seconds);
-  if (interrupt_requested) {
+  if (stop.requested()) {
     spdlog::warn("interrupted: {} of {} trials finished and written to {}", records.size(), total, f.out);
     throw Interrupted{};
   }

@@ -1,0 +1,206 @@
+#include "common/yaml_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "common/error.h"
+
+namespace echoplan {
+
+namespace {
+
+// Shortest text for a bound in a message: 0.5, 1e+09, 20000.
+std::string bound_text(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+}  // namespace
+
+std::string read_text_file(const std::string& path, const std::string& what) {
+  // A directory opens as a stream on Linux and reads as empty; say what is really wrong.
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
+    throw InputError(path, 0, "not a regular file; expected the " + what);
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot open the " + what);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+YAML::Node parse_yaml(const std::string& text, const std::string& source) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw InputError(source, std::max(0, e.mark.line + 1), "not valid YAML: " + e.msg);
+  }
+}
+
+YAML::Node load_yaml_file(const std::string& path, const std::string& what) {
+  return parse_yaml(read_text_file(path, what), path);
+}
+
+bool NumberRange::contains(double x) const {
+  const bool above_low = low_inclusive ? x >= low : x > low;
+  const bool below_high = high_inclusive ? x <= high : x < high;
+  return above_low && below_high;
+}
+
+std::string NumberRange::describe() const {
+  const bool has_low = std::isfinite(low);
+  const bool has_high = std::isfinite(high);
+  if (has_low && has_high && low_inclusive == high_inclusive) {
+    return std::string("in ") + (low_inclusive ? "[" : "(") + bound_text(low) + ", " +
+           bound_text(high) + (high_inclusive ? "]" : ")");
+  }
+  std::string out;
+  if (has_low) out = (low_inclusive ? ">= " : "> ") + bound_text(low);
+  if (has_high) {
+    out += (out.empty() ? "" : " and ") + std::string(high_inclusive ? "<= " : "< ") +
+           bound_text(high);
+  }
+  return out.empty() ? "finite" : out;
+}
+
+int YamlReader::line_of(const YAML::Node& node) {
+  if (!node.IsDefined()) return 0;
+  return std::max(0, node.Mark().line + 1);
+}
+
+void YamlReader::fail(const YAML::Node& node, const std::string& problem) const {
+  throw InputError(file_, line_of(node), problem);
+}
+
+void YamlReader::expect_map(const YAML::Node& node, const std::string& what) const {
+  if (!node.IsMap()) fail(node, what + " must be a mapping of key: value lines");
+}
+
+YAML::Node YamlReader::optional(const YAML::Node& map, const std::string& key,
+                                const std::string& what) const {
+  expect_map(map, what);
+  return map[key];
+}
+
+YAML::Node YamlReader::require(const YAML::Node& map, const std::string& key,
+                               const std::string& what) const {
+  YAML::Node value = optional(map, key, what);
+  if (!value.IsDefined()) fail(map, "missing key '" + key + "' in " + what);
+  return value;
+}
+
+void YamlReader::only_keys(const YAML::Node& map, const std::vector<std::string>& allowed,
+                           const std::string& what) const {
+  expect_map(map, what);
+  for (auto it = map.begin(); it != map.end(); ++it) {
+    const std::string key = it->first.IsScalar() ? it->first.Scalar() : std::string("?");
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+      std::string list;
+      for (const auto& k : allowed) list += (list.empty() ? "" : ", ") + k;
+      fail(it->first, "unknown key '" + key + "' in " + what + " (expected one of: " + list + ")");
+    }
+  }
+}
+
+void YamlReader::only_keys(const YAML::Node& map, std::initializer_list<const char*> allowed,
+                           const std::string& what) const {
+  only_keys(map, std::vector<std::string>(allowed.begin(), allowed.end()), what);
+}
+
+void YamlReader::reject_duplicate_keys(const YAML::Node& node) const {
+  if (node.IsSequence()) {
+    for (const auto& item : node) reject_duplicate_keys(item);
+    return;
+  }
+  if (!node.IsMap()) return;
+  std::set<std::string> seen;
+  for (auto it = node.begin(); it != node.end(); ++it) {
+    if (it->first.IsScalar() && !seen.insert(it->first.Scalar()).second) {
+      fail(it->first, "key '" + it->first.Scalar() + "' appears twice in the same mapping");
+    }
+    reject_duplicate_keys(it->second);
+  }
+}
+
+double YamlReader::number(const YAML::Node& node, const std::string& what,
+                          const NumberRange& range) const {
+  if (!node.IsScalar()) fail(node, what + " must be a number like 0.5");
+  double value = 0.0;
+  if (!YAML::convert<double>::decode(node, value) || !std::isfinite(value)) {
+    fail(node, what + " must be a number like 0.5, got '" + node.Scalar() + "'");
+  }
+  if (!range.contains(value)) {
+    fail(node, what + " must be " + range.describe() + ", got " + node.Scalar());
+  }
+  return value;
+}
+
+int YamlReader::non_negative_int(const YAML::Node& node, const std::string& what) const {
+  if (!node.IsScalar()) fail(node, what + " must be a whole number");
+  long long value = 0;
+  if (!YAML::convert<long long>::decode(node, value)) {
+    fail(node, what + " must be a whole number, got '" + node.Scalar() + "'");
+  }
+  if (value < 0) fail(node, what + " must not be negative, got " + std::to_string(value));
+  if (value > 1'000'000'000) fail(node, what + " is too large (" + std::to_string(value) + ")");
+  return static_cast<int>(value);
+}
+
+bool YamlReader::boolean(const YAML::Node& node, const std::string& what) const {
+  bool value = false;
+  if (!node.IsScalar() || !YAML::convert<bool>::decode(node, value)) {
+    fail(node, what + " must be true or false");
+  }
+  return value;
+}
+
+std::string YamlReader::name(const YAML::Node& node, const std::string& what) const {
+  if (!node.IsScalar() || node.Scalar().empty()) fail(node, what + " must be a non-empty name");
+  return node.Scalar();
+}
+
+std::vector<double> YamlReader::numbers(const YAML::Node& node, const std::string& what) const {
+  if (!node.IsSequence()) fail(node, what + " must be a list of numbers like [0.5, 0.5]");
+  std::vector<double> out;
+  for (const auto& item : node) out.push_back(number(item, "each entry of " + what));
+  return out;
+}
+
+std::vector<double> YamlReader::numbers(const YAML::Node& node, const std::string& what,
+                                        std::size_t count) const {
+  const std::vector<double> out = numbers(node, what);
+  if (out.size() != count) {
+    fail(node,
+         what + " needs " + std::to_string(count) + " numbers, got " + std::to_string(out.size()));
+  }
+  return out;
+}
+
+std::vector<std::string> YamlReader::names(const YAML::Node& node, const std::string& what) const {
+  if (!node.IsSequence()) fail(node, what + " must be a list of names like [a, b]");
+  std::vector<std::string> out;
+  std::set<std::string> seen;
+  for (const auto& item : node) {
+    out.push_back(name(item, "each entry of " + what));
+    if (!seen.insert(out.back()).second)
+      fail(item, "duplicate name '" + out.back() + "' in " + what);
+  }
+  if (out.empty()) fail(node, what + " must not be empty");
+  return out;
+}
+
+namespace detail {
+
+void rethrow_yaml_exception(const std::string& file, const YAML::Exception& e) {
+  throw InputError(file, std::max(0, e.mark.line + 1), "unexpected YAML structure: " + e.msg);
+}
+
+}  // namespace detail
+
+}  // namespace echoplan

@@ -1,0 +1,180 @@
+#include "experiment/robot_environment.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+#include "common/error.h"
+
+namespace echoplan::experiment {
+
+namespace {
+
+constexpr const char* kUnknownSymbol = "unknown";
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}  // namespace
+
+const pomdp::ObjectIdentificationModel& object_problem(const pomdp::Model& model) {
+  const auto* problem = dynamic_cast<const pomdp::ObjectIdentificationModel*>(&model);
+  if (!problem)
+    throw InputError(fmt::format(
+        "problem '{}': the robot loop needs an object-identification problem (a YAML file "
+        "with objects, sensing and sorting actions, as in problems/audio_objects.yaml), "
+        "not a tabular .pomdp problem",
+        model.spec().name));
+  return *problem;
+}
+
+RobotEnvironment::RobotEnvironment(pomdp::ModelPtr model, RobotParts parts,
+                                   std::map<std::string, std::string> world_objects)
+    : model_(std::move(model)), parts_(std::move(parts)), world_objects_(std::move(world_objects)) {
+  if (!model_ || !parts_.robot || !parts_.recorder || !parts_.service)
+    throw std::invalid_argument(
+        "RobotEnvironment: a model, a robot, a recorder and a service are all needed");
+  problem_ = &object_problem(*model_);
+  const pomdp::ObjectProblemData& data = problem_->data();
+  for (std::size_t i = 0; i < data.observation_symbols.size(); ++i)
+    symbol_index_[data.observation_symbols[i]] = static_cast<int>(i);
+  for (const auto& [object, world] : world_objects_)
+    if (!contains(data.objects, object))
+      throw InputError(
+          fmt::format("object variant '{}' stands for '{}', which is not an object of problem '{}' "
+                      "(objects: {})",
+                      world, object, data.name, fmt::join(data.objects, ", ")));
+
+  // A service that says what it reports is checked now, so no trial starts with a mismatch.
+  const auto vocabulary = parts_.service->vocabulary();
+  if (!vocabulary) return;
+  std::vector<std::string> trained;
+  for (const auto& [action, labels] : vocabulary->labels) trained.push_back(action);
+  for (const auto& act : data.sensing) {
+    const auto it = vocabulary->labels.find(act.name);
+    if (it == vocabulary->labels.end())
+      throw InputError(fmt::format(
+          "the observation model has no classifier for sensing action '{}' of problem "
+          "'{}' (it was trained for: {}); train it on recordings of every sensing action",
+          act.name, data.name, fmt::join(trained, ", ")));
+    for (const std::string& label : it->second)
+      if (!symbol_index_.count(label))
+        throw InputError(
+            fmt::format("the observation model reports '{}' for '{}', which is not an observation "
+                        "symbol of problem '{}' (symbols: {}); the model was trained for other "
+                        "objects - plan on the problem `echoplan train --problem-out` wrote for it",
+                        label, act.name, data.name, fmt::join(data.observation_symbols, ", ")));
+    for (const std::string& symbol : data.observation_symbols)
+      if (symbol != kUnknownSymbol && !contains(it->second, symbol))
+        throw InputError(fmt::format(
+            "problem '{}' expects to hear '{}' after '{}', but the observation model was "
+            "not trained for it (its classes: {}); train it on recordings of the "
+            "problem's objects",
+            data.name, symbol, act.name, fmt::join(it->second, ", ")));
+  }
+  if (vocabulary->may_report_unknown && !symbol_index_.count(kUnknownSymbol))
+    throw InputError(fmt::format(
+        "the observation model can report 'unknown' (its reject option is on) but problem "
+        "'{}' has no 'unknown' observation symbol; plan on the problem `echoplan train "
+        "--problem-out` wrote, or train without the reject option",
+        data.name));
+}
+
+void RobotEnvironment::reset(const pomdp::State& true_state, Rng& rng) {
+  const pomdp::ObjectProblemData& data = problem_->data();
+  if (true_state.discrete.empty() || true_state.discrete[0] < 0 ||
+      true_state.discrete[0] >= static_cast<int>(data.objects.size()))
+    throw std::invalid_argument(
+        "RobotEnvironment::reset: the state names no object of the problem");
+  state_ = true_state;
+  const std::string& object = data.objects[state_.discrete[0]];
+  const auto variant = world_objects_.find(object);
+  world_object_ = variant == world_objects_.end() ? object : variant->second;
+  ++trial_;
+  step_ = 0;
+  robot::TrialContext context;
+  context.trial = trial_;
+  context.object = world_object_;
+  context.seed = rng();
+  parts_.robot->begin_trial(context);
+  parts_.recorder->begin_trial(context);
+  ended_ = false;
+}
+
+pomdp::Observation RobotEnvironment::symbol_for(const robot::HeardObservation& heard,
+                                                const std::string& action) const {
+  const std::string& label = heard.unknown ? std::string(kUnknownSymbol) : heard.label;
+  const auto it = symbol_index_.find(label);
+  if (it == symbol_index_.end())
+    throw InputError(fmt::format(
+        "the observation service heard '{}' for '{}', which is not an observation symbol "
+        "of problem '{}' (symbols: {})",
+        label, action, problem_->data().name,
+        fmt::join(problem_->data().observation_symbols, ", ")));
+  pomdp::Observation o;
+  o.index = it->second;
+  return o;
+}
+
+pomdp::Outcome RobotEnvironment::execute(int action, Rng& /*rng*/) {
+  if (ended_)
+    throw std::logic_error("RobotEnvironment::execute after the trial ended; call reset()");
+  if (action < 0 || action >= problem_->num_actions())
+    throw std::out_of_range("RobotEnvironment: no such action");
+  const pomdp::ObjectProblemData& data = problem_->data();
+  const int object = state_.discrete[0];
+
+  LoopStep step;
+  step.trial = trial_;
+  step.step = step_++;
+  step.action = action;
+  step.action_name = model_->spec().action_names[action];
+  step.observation.index = problem_->none_symbol();
+
+  if (!problem_->is_sensing(action)) {
+    step.report = parts_.robot->execute(step.action_name);
+    step.reward = data.sorting_reward[action - problem_->num_sensing()][object];
+    step.terminal = true;
+  } else {
+    parts_.recorder->start(step.action_name);
+    step.report = parts_.robot->execute(step.action_name);
+    step.clip = parts_.recorder->stop();
+    step.recorded = true;
+    if (step.report.status == robot::ActionStatus::done) {
+      // What the latency target measures: from the clip in hand to the planner's observation.
+      const auto heard_from = std::chrono::steady_clock::now();
+      step.heard = parts_.service->observe(step.clip, step.action_name);
+      step.observation = symbol_for(step.heard, step.action_name);
+      step.observe_ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - heard_from)
+              .count();
+      step.classified = true;
+      step.reward = data.sensing[action].reward;
+      // The model's kinematic transition, so true_state() follows the world (a slide moves the
+      // object).
+      const auto& change = data.sensing[action].offset_change;
+      if (state_.continuous.size() == pomdp::ObjectIdentificationModel::kNumContinuous)
+        for (int i = 0; i < 3; ++i)
+          state_.continuous[pomdp::ObjectIdentificationModel::kOffsetX + i] += change[i];
+    } else {
+      // A collision or a failed action ends the trial as the model's collision does.
+      step.reward = data.collision_reward;
+      step.terminal = true;
+    }
+  }
+  step.observation_name = model_->spec().observation.names[step.observation.index];
+  ended_ = step.terminal;
+
+  pomdp::Outcome outcome;
+  outcome.observation = step.observation;
+  outcome.reward = step.reward;
+  outcome.terminal = step.terminal;
+  outcome.collision = step.report.status != robot::ActionStatus::done;
+  if (listener_) listener_(step);
+  return outcome;
+}
+
+}  // namespace echoplan::experiment

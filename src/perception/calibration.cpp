@@ -1,0 +1,122 @@
+#include "perception/calibration.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace echoplan::perception {
+
+ConfusionMatrix ConfusionMatrix::zeros(std::vector<std::string> objects,
+                                       std::vector<std::string> symbols) {
+  ConfusionMatrix m;
+  m.counts.assign(objects.size(), std::vector<int>(symbols.size(), 0));
+  m.objects = std::move(objects);
+  m.symbols = std::move(symbols);
+  return m;
+}
+
+double ConfusionMatrix::accuracy() const {
+  int right = 0, all = 0;
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    const auto it = std::find(symbols.begin(), symbols.end(), objects[k]);
+    if (it == symbols.end()) continue;
+    right += counts[k][static_cast<std::size_t>(it - symbols.begin())];
+    all += std::accumulate(counts[k].begin(), counts[k].end(), 0);
+  }
+  return all == 0 ? 0.0 : static_cast<double>(right) / all;
+}
+
+int ConfusionMatrix::total() const {
+  int sum = 0;
+  for (const auto& row : counts) sum += std::accumulate(row.begin(), row.end(), 0);
+  return sum;
+}
+
+std::vector<std::vector<double>> dirichlet_smoothed(const ConfusionMatrix& confusion,
+                                                    double alpha) {
+  if (!(alpha >= 0.0)) throw std::invalid_argument("Dirichlet pseudo-count alpha must be >= 0");
+  std::vector<std::vector<double>> table;
+  for (std::size_t k = 0; k < confusion.counts.size(); ++k) {
+    const auto& row = confusion.counts[k];
+    const double n = std::accumulate(row.begin(), row.end(), 0.0);
+    const double denominator = n + alpha * static_cast<double>(row.size());
+    if (!(denominator > 0.0))
+      throw std::invalid_argument("confusion row '" + confusion.objects[k] +
+                                  "' has no counts and alpha is 0");
+    std::vector<double> p(row.size());
+    for (std::size_t o = 0; o < row.size(); ++o) p[o] = (row[o] + alpha) / denominator;
+    table.push_back(std::move(p));
+  }
+  return table;
+}
+
+std::vector<double> softmax(std::span<const double> log_scores, double temperature) {
+  std::vector<double> p(log_scores.size());
+  if (p.empty()) return p;
+  const double top = *std::max_element(log_scores.begin(), log_scores.end());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    sum += p[i] = std::exp((log_scores[i] - top) / temperature);
+  for (double& v : p) v /= sum;
+  return p;
+}
+
+namespace {
+
+double cross_entropy(std::span<const std::vector<double>> log_scores, std::span<const int> labels,
+                     double smoothing, double t) {
+  double loss = 0.0;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const auto& s = log_scores[i];
+    const double top = *std::max_element(s.begin(), s.end());
+    double sum = 0.0, mean_scaled = 0.0;
+    for (double v : s) {
+      sum += std::exp((v - top) / t);
+      mean_scaled += (v - top) / t;
+    }
+    mean_scaled /= static_cast<double>(s.size());
+    const double log_sum = std::log(sum);
+    // -log p_c = log_sum - scaled_c; the target's mass: 1 - smoothing on the label, smoothing
+    // spread evenly.
+    loss += (1.0 - smoothing) * (log_sum - (s[static_cast<std::size_t>(labels[i])] - top) / t) +
+            smoothing * (log_sum - mean_scaled);
+  }
+  return loss;
+}
+
+}  // namespace
+
+double fit_temperature(std::span<const std::vector<double>> log_scores, std::span<const int> labels,
+                       double smoothing) {
+  if (labels.empty()) return 1.0;
+  if (!(smoothing >= 0.0 && smoothing < 1.0))
+    throw std::invalid_argument("label smoothing must be in [0, 1)");
+  // The cross-entropy of temperature scaling is convex in 1/T, hence unimodal in log T:
+  // golden-section search.
+  double lo = std::log(1e-3), hi = std::log(1e3);
+  const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
+  auto f = [&](double log_t) {
+    return cross_entropy(log_scores, labels, smoothing, std::exp(log_t));
+  };
+  double a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
+  double fa = f(a), fb = f(b);
+  for (int i = 0; i < 80; ++i) {
+    if (fa <= fb) {
+      hi = b;
+      b = a;
+      fb = fa;
+      a = hi - ratio * (hi - lo);
+      fa = f(a);
+    } else {
+      lo = a;
+      a = b;
+      fa = fb;
+      b = lo + ratio * (hi - lo);
+      fb = f(b);
+    }
+  }
+  return std::exp((lo + hi) / 2.0);
+}
+
+}  // namespace echoplan::perception

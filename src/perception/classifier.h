@@ -1,0 +1,68 @@
+// The interface every observation classifier implements, and the registry of classifiers by name.
+//
+// A classifier is fitted on the analysed recordings of one sensing action (one classifier per
+// action) and then scores a new clip against every class. Scores are turned into calibrated
+// probabilities and a reject decision by the ObservationModel (perception/observation_model.h), so
+// a classifier only has to say how alike the clip is to each class, in two forms: log-scores
+// (higher = more alike; their softmax after temperature calibration is P(class | clip)) and
+// distances (>= 0, smaller = more alike; the distance to the nearest class decides whether a clip
+// is `unknown`).
+#pragma once
+
+#include <memory>
+#include <nlohmann/json_fwd.hpp>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "perception/clip_analysis.h"
+
+namespace echoplan::perception {
+
+// How one clip compares with each class; both vectors have one entry per class.
+struct ClassScores {
+  std::vector<double> log_scores;  // higher = more alike; differences are log-likelihood-like
+  std::vector<double> distances;   // >= 0, in the classifier's own units; smaller = more alike
+};
+
+class Classifier {
+ public:
+  virtual ~Classifier() = default;
+
+  // The registry name ("seed-template", ...).
+  virtual std::string name() const = 0;
+
+  // Fits on clips of one action: examples[i] is a recording of class labels[i] in [0, num_classes).
+  // Every class needs at least one example (throws InputError otherwise). Refitting replaces the
+  // fit.
+  virtual void fit(std::span<const ClipAnalysis* const> examples, std::span<const int> labels,
+                   int num_classes) = 0;
+
+  // Classes of the current fit (0 before fit).
+  virtual int num_classes() const = 0;
+
+  // Scores `clip` against every class. Requires a fit.
+  virtual ClassScores score(const ClipAnalysis& clip) const = 0;
+
+  // A new, unfitted classifier of the same kind and settings (cross-validation fits copies).
+  virtual std::unique_ptr<Classifier> clone_unfitted() const = 0;
+
+  // The fitted parameters as JSON (the model file's per-action "classifier" object, without its
+  // name).
+  virtual nlohmann::json save() const = 0;
+  // Restores a fit written by save(). Throws InputError(source, 0, ...) naming the missing or
+  // malformed field, e.g. "classifier.templates[2]: expected 150 x 26 numbers".
+  virtual void load(const nlohmann::json& fit, const std::string& source) = 0;
+};
+
+// The classifier the commands use when none is named.
+inline constexpr std::string_view kDefaultClassifier = "summary-lda";
+
+// Names of every registered classifier, default first.
+std::vector<std::string> classifier_names();
+
+// A new unfitted classifier. Throws InputError listing the names for an unknown one.
+std::unique_ptr<Classifier> make_classifier(std::string_view name);
+
+}  // namespace echoplan::perception

@@ -1,0 +1,57 @@
+// A labelled set of recordings on disk: DIR/<object>/<action>/<file>, optionally with the
+// manifest.csv that `echoplan dataset` writes.
+//
+// Training and evaluation read recordings through this one loader so that every tool sees the same
+// objects, actions and files in the same order, and every malformed folder gets the same clear
+// error (InputError naming the path and the problem) before any audio is decoded.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "audio/clip.h"
+
+namespace echoplan::perception {
+
+// One recording: where it is and what it is a recording of.
+struct Recording {
+  std::string path;    // as opened (DIR joined with the relative path)
+  std::string object;  // the class label
+  std::string action;  // the sensing action that made the sound
+};
+
+// Every recording of a folder, grouped by (object, action). Invariants (load_recording_set checks
+// them): every object has recordings for every action and at least one recording per (object,
+// action).
+struct RecordingSet {
+  std::string root;                  // the folder it was read from
+  std::vector<std::string> objects;  // manifest order if there is a manifest, else sorted by name
+  std::vector<std::string> actions;  // same rule
+  std::vector<Recording>
+      recordings;  // grouped by action, then object, then file name (or manifest order)
+
+  // Recordings of one action, in set order. Empty if the action is not in the set.
+  std::vector<const Recording*> of_action(const std::string& action) const;
+  // Index of `object` in `objects`, or -1.
+  int object_index(const std::string& object) const;
+};
+
+// File extensions read as recordings (lower case, with the dot): .wav, .flac, .aiff, .aif.
+bool is_recording_file(const std::string& path);
+
+// Reads DIR. With DIR/manifest.csv (header with at least the columns file, object and action), the
+// set is the manifest's rows: each row's file must exist and lie in <object>/<action>/; a recording
+// file on disk that the manifest does not list is an error. Without a manifest, every file under
+// DIR/<object>/<action>/ is a recording. Errors (InputError naming the path, and the manifest line
+// where there is one): DIR missing or not a folder; a file where an object or action folder
+// belongs; a file that is not a recording (hidden files are skipped); an (object, action) folder
+// with no recordings; an action recorded for some objects and not others; a manifest row naming a
+// missing file or a file outside its folder.
+RecordingSet load_recording_set(const std::string& dir);
+
+// Decodes one recording as the classifiers see it: channels averaged into one, resampled to
+// `sample_rate` Hz (any file format, rate, channel count and bit depth libsndfile reads). Throws
+// InputError naming the file for anything that is not readable audio.
+audio::AudioClip read_recording(const std::string& path, int sample_rate);
+
+}  // namespace echoplan::perception

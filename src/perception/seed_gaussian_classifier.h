@@ -1,0 +1,39 @@
+// `seed-gaussian`: the seed report's first attempt, kept for the record: each class is a Gaussian
+// over two whole-clip features, the spectral centroid (Hz) and the RMS level, with independent
+// dimensions. The report discarded it; the benchmark shows why (docs/BENCHMARKS.md).
+//
+// With 3-10 recordings a class's own variance is a poor estimate, so each class variance is floored
+// at 5% of the variance pooled over all classes (never zero: identical recordings stay
+// classifiable).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "perception/classifier.h"
+
+namespace echoplan::perception {
+
+class SeedGaussianClassifier final : public Classifier {
+ public:
+  std::string name() const override { return "seed-gaussian"; }
+  void fit(std::span<const ClipAnalysis* const> examples, std::span<const int> labels,
+           int num_classes) override;
+  int num_classes() const override { return static_cast<int>(means_.size()); }
+  // log_scores: Gaussian log-densities; distances: Mahalanobis distances (diagonal covariance).
+  ClassScores score(const ClipAnalysis& clip) const override;
+  std::unique_ptr<Classifier> clone_unfitted() const override {
+    return std::make_unique<SeedGaussianClassifier>();
+  }
+  nlohmann::json save() const override;
+  void load(const nlohmann::json& fit, const std::string& source) override;
+
+  // (centroid_hz, rms) of the whole clip (audio::global_features).
+  static std::array<double, 2> features(const ClipAnalysis& clip);
+
+ private:
+  std::vector<std::array<double, 2>> means_;
+  std::vector<std::array<double, 2>> variances_;
+};
+
+}  // namespace echoplan::perception

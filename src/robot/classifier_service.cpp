@@ -1,0 +1,68 @@
+#include "robot/classifier_service.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace echoplan::robot {
+
+ClassifierService::ClassifierService(std::shared_ptr<const perception::ObservationModel> model)
+    : model_(std::move(model)),
+      analyzer_((model_ ? *model_ : throw std::invalid_argument("ClassifierService: no model"))
+                    .analysis()) {}
+
+std::optional<ServiceVocabulary> ClassifierService::vocabulary() const {
+  ServiceVocabulary v;
+  for (const std::string& action : model_->actions()) v.labels[action] = model_->classes();
+  v.may_report_unknown = model_->reject();
+  return v;
+}
+
+HeardObservation ClassifierService::observe(const audio::AudioClip& clip,
+                                            const std::string& action) {
+  model_->calibration(
+      action);  // an action the model was not trained for: InputError listing its actions
+  analyzer_.analyse(clip, "the recording of " + action, analysis_);
+  const perception::Prediction p = model_->classify(analysis_, action);
+  HeardObservation heard;
+  heard.label = p.label;
+  heard.unknown = p.unknown;
+  heard.probability = p.probabilities.at(static_cast<std::size_t>(p.best_class));
+  const auto& classes = model_->classes();
+  for (std::size_t k = 0; k < classes.size(); ++k)
+    heard.probabilities.emplace_back(classes[k], p.probabilities[k]);
+  heard.distance = p.distance;
+  heard.features = clip_summary(analysis_, analyzer_.settings().sample_rate);
+  return heard;
+}
+
+std::vector<std::pair<std::string, double>> clip_summary(const perception::ClipAnalysis& a,
+                                                         int sample_rate) {
+  const audio::Features& f = a.features;
+  const std::size_t frames = f.rms.rows;
+  const double hop = a.hop_seconds;
+  double peak = 0;
+  for (std::size_t t = 0; t < frames; ++t)
+    peak = std::max(peak, static_cast<double>(f.rms.at(t, 0)));
+  // The event's frames: from the onset for 1.5 s (a slide lasts about that long), loud enough to be
+  // the event rather than the room.
+  constexpr double kEventSeconds = 1.5, kFloorRatio = 0.01;  // 40 dB below the peak
+  const std::size_t end =
+      std::min(frames, a.onset_frame + static_cast<std::size_t>(kEventSeconds / hop));
+  double centroid = 0, flatness = 0;
+  int counted = 0;
+  for (std::size_t t = a.onset_frame; t < end && t < f.centroid.rows; ++t) {
+    if (f.rms.at(t, 0) < kFloorRatio * peak) continue;
+    centroid += f.centroid.at(t, 0);
+    flatness += f.flatness.at(t, 0);
+    ++counted;
+  }
+  const double n = std::max(counted, 1);
+  return {{"onset_s", static_cast<double>(a.onset_frame) * hop},
+          {"duration_s", static_cast<double>(a.mono.size()) / sample_rate},
+          {"peak_dbfs", peak > 0 ? 20.0 * std::log10(peak) : -200.0},
+          {"centroid_hz", centroid / n},
+          {"flatness", flatness / n}};
+}
+
+}  // namespace echoplan::robot

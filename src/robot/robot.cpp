@@ -1,0 +1,17 @@
+#include "robot/robot.h"
+
+namespace echoplan::robot {
+
+const char* to_string(ActionStatus status) {
+  switch (status) {
+    case ActionStatus::done:
+      return "done";
+    case ActionStatus::collision:
+      return "collision";
+    case ActionStatus::failed:
+      return "failed";
+  }
+  return "unknown";
+}
+
+}  // namespace echoplan::robot

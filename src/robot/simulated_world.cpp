@@ -1,0 +1,122 @@
+#include "robot/simulated_world.h"
+
+#include <fmt/core.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "common/error.h"
+
+namespace echoplan::robot {
+
+namespace {
+
+// Independent streams of a trial's world, so that listening (which draws sound) never shifts the
+// physics of later actions.
+enum WorldStream : std::uint64_t { physics = 1, sound = 2 };
+
+}  // namespace
+
+SimulatedWorld::SimulatedWorld(sim::Catalogue catalogue, sim::SimConfig config,
+                               std::vector<std::string> sorting_actions)
+    : catalogue_(std::move(catalogue)),
+      config_(std::move(config)),
+      sorting_actions_(std::move(sorting_actions)) {
+  for (const std::string& a : sorting_actions_) {
+    const auto sensing = sensing_actions();
+    if (std::find(sensing.begin(), sensing.end(), a) != sensing.end())
+      throw InputError("sorting action '" + a +
+                       "' has the name of one of the simulator's sensing actions");
+  }
+}
+
+SimulatedWorld::~SimulatedWorld() = default;
+
+std::vector<std::string> SimulatedWorld::sensing_actions() { return {sim::kSlide, sim::kStrike}; }
+
+void SimulatedWorld::check_object(const std::string& object) const { catalogue_.object(object); }
+
+bool SimulatedWorld::is_sorting(const std::string& action) const {
+  return std::find(sorting_actions_.begin(), sorting_actions_.end(), action) !=
+         sorting_actions_.end();
+}
+
+void SimulatedWorld::check_action(const std::string& action) const {
+  const auto sensing = sensing_actions();
+  if (is_sorting(action) || std::find(sensing.begin(), sensing.end(), action) != sensing.end())
+    return;
+  throw InputError(fmt::format("the simulated robot has no action '{}' (sensing: {}; sorting: {})",
+                               action, fmt::join(sensing, ", "),
+                               fmt::join(sorting_actions_, ", ")));
+}
+
+void SimulatedWorld::begin_trial(const TrialContext& context) {
+  auto it = rigs_.find(context.object);
+  if (it == rigs_.end()) {
+    // Compiling a MuJoCo scene takes milliseconds; trials of the same object reuse it.
+    ObjectRig rig;
+    rig.robot = std::make_unique<sim::SimulatedRobot>(catalogue_, context.object, config_);
+    rig.recorder =
+        std::make_unique<sim::SimulatedRecorder>(rig.robot->object(), rig.robot->table(), config_);
+    it = rigs_.emplace(context.object, std::move(rig)).first;
+  }
+  rig_ = &it->second;
+  physics_rng_.seed(derive_seed(context.seed, {physics}));
+  sound_rng_.seed(derive_seed(context.seed, {sound}));
+  listening_ = false;
+  heard_ = {};
+  last_outcome_.reset();
+}
+
+ActionReport SimulatedWorld::execute(const std::string& action) {
+  if (!rig_) throw std::logic_error("SimulatedWorld::execute before begin_trial()");
+  if (is_sorting(action)) return ActionReport{action, ActionStatus::done, "", 0.0};
+  check_action(action);
+  return execute_sensing(action);
+}
+
+ActionReport SimulatedWorld::execute_sensing(const std::string& action) {
+  sim::ActionOutcome outcome = rig_->robot->execute(action, physics_rng_);
+  if (listening_) hear(rig_->recorder->record(outcome, sound_rng_));
+  ActionReport report{action, ActionStatus::done, "", outcome.duration_s};
+  if (outcome.collision) {
+    report.status = ActionStatus::collision;
+    report.reason = outcome.collision_time_s < 0
+                        ? "the arm touched the table while moving to the object"
+                        : fmt::format("the arm touched the table {:.3f} s into the action",
+                                      outcome.collision_time_s);
+  }
+  last_outcome_ = std::move(outcome);
+  return report;
+}
+
+void SimulatedWorld::hear(const audio::AudioClip& clip) {
+  if (heard_.samples.empty()) {
+    heard_ = clip;
+    return;
+  }
+  // The same microphone rendered both, so rate and channels agree; later sound follows earlier.
+  heard_.samples.insert(heard_.samples.end(), clip.samples.begin(), clip.samples.end());
+}
+
+void SimulatedWorld::start_listening() {
+  if (!rig_) throw std::logic_error("SimulatedWorld::start_listening before begin_trial()");
+  listening_ = true;
+  heard_ = {};
+}
+
+audio::AudioClip SimulatedWorld::stop_listening() {
+  if (!listening_)
+    throw std::logic_error("SimulatedWorld::stop_listening without start_listening()");
+  listening_ = false;
+  // Nothing happened while listening: the microphone hears the room alone, for the usual length.
+  if (heard_.samples.empty()) {
+    sim::ActionOutcome quiet;
+    if (last_outcome_) quiet.trace.object_position = last_outcome_->trace.object_position;
+    return rig_->recorder->record(quiet, sound_rng_);
+  }
+  return std::move(heard_);
+}
+
+}  // namespace echoplan::robot

@@ -1,0 +1,160 @@
+#include "common/yaml_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "common/error.h"
+
+namespace echoplan {
+namespace {
+
+// The InputError `read` throws; fails the test when it throws none.
+template <class Read>
+InputError error_of(Read&& read) {
+  try {
+    read();
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no InputError thrown";
+  return InputError("", 0, "");
+}
+
+bool has(const InputError& e, const std::string& text) {
+  return e.problem().find(text) != std::string::npos;
+}
+
+const char* const kDoc =
+    "name: tiger\n"       // line 1
+    "discount: 0.95\n"    // line 2
+    "size: [1, 2, 3]\n"   // line 3
+    "names: [a, b, a]\n"  // line 4
+    "count: -3\n"         // line 5
+    "flag: maybe\n"       // line 6
+    "section:\n"          // line 7
+    "  inner: x\n"        // line 8
+    "  discont: 1\n";     // line 9
+
+class YamlReaderTest : public testing::Test {
+ protected:
+  YAML::Node root = parse_yaml(kDoc, "doc.yaml");
+  YamlReader r{"doc.yaml"};
+};
+
+TEST_F(YamlReaderTest, ReadsWellFormedValues) {
+  EXPECT_EQ(r.name(root["name"], "name"), "tiger");
+  EXPECT_DOUBLE_EQ(r.number(root["discount"], "discount", NumberRange::open(0, 1)), 0.95);
+  EXPECT_EQ(r.numbers(root["size"], "size", 3), (std::vector<double>{1, 2, 3}));
+  EXPECT_TRUE(r.boolean(YAML::Load("yes"), "flag"));
+  EXPECT_FALSE(r.boolean(YAML::Load("false"), "flag"));
+  EXPECT_EQ(r.non_negative_int(YAML::Load("42"), "count"), 42);
+  EXPECT_EQ(r.names(YAML::Load("[a, b]"), "names"), (std::vector<std::string>{"a", "b"}));
+}
+
+TEST_F(YamlReaderTest, ErrorsNameFileLineFieldAndWhatIsExpected) {
+  InputError e =
+      error_of([&] { r.number(root["discount"], "discount", NumberRange::closed(0, 0.5)); });
+  EXPECT_EQ(e.file(), "doc.yaml");
+  EXPECT_EQ(e.line(), 2);
+  EXPECT_TRUE(has(e, "discount must be in [0, 0.5], got 0.95")) << e.what();
+
+  e = error_of([&] { r.numbers(root["size"], "offset", 2); });
+  EXPECT_EQ(e.line(), 3);
+  EXPECT_TRUE(has(e, "offset needs 2 numbers, got 3")) << e.what();
+
+  e = error_of([&] { r.names(root["names"], "objects"); });
+  EXPECT_EQ(e.line(), 4);
+  EXPECT_TRUE(has(e, "duplicate name 'a' in objects")) << e.what();
+
+  e = error_of([&] { r.non_negative_int(root["count"], "particles"); });
+  EXPECT_EQ(e.line(), 5);
+  EXPECT_TRUE(has(e, "particles must not be negative")) << e.what();
+
+  e = error_of([&] { r.boolean(root["flag"], "closed"); });
+  EXPECT_EQ(e.line(), 6);
+  EXPECT_TRUE(has(e, "closed must be true or false")) << e.what();
+
+  e = error_of([&] { r.number(root["name"], "discount"); });
+  EXPECT_EQ(e.line(), 1);
+  EXPECT_TRUE(has(e, "discount must be a number like 0.5, got 'tiger'")) << e.what();
+}
+
+TEST_F(YamlReaderTest, UnknownKeysAreListedWithTheAllowedOnes) {
+  const InputError e = error_of([&] {
+    r.only_keys(root["section"], {"inner", "discount"}, "section");
+  });
+  EXPECT_EQ(e.line(), 9);
+  EXPECT_TRUE(has(e, "unknown key 'discont' in section (expected one of: inner, discount)"))
+      << e.what();
+}
+
+TEST_F(YamlReaderTest, MissingKeyPointsAtTheMapping) {
+  const InputError e = error_of([&] { r.require(root["section"], "outer", "section"); });
+  EXPECT_EQ(e.line(), 8);
+  EXPECT_TRUE(has(e, "missing key 'outer' in section")) << e.what();
+  EXPECT_FALSE(r.optional(root["section"], "outer", "section").IsDefined());
+}
+
+TEST_F(YamlReaderTest, NonMappingWhereAMappingBelongs) {
+  const InputError e = error_of([&] { r.optional(root["size"], "x", "size"); });
+  EXPECT_EQ(e.line(), 3);
+  EXPECT_TRUE(has(e, "size must be a mapping")) << e.what();
+}
+
+TEST(YamlReader, DuplicateKeysAreRejectedAtTheSecondOccurrence) {
+  const YAML::Node root = parse_yaml("a:\n  b: 1\n  c: 2\n  b: 3\n", "dup.yaml");
+  const InputError e = error_of([&] { YamlReader("dup.yaml").reject_duplicate_keys(root); });
+  EXPECT_EQ(e.line(), 4);
+  EXPECT_TRUE(has(e, "key 'b' appears twice")) << e.what();
+}
+
+TEST(YamlReader, SyntaxErrorsCarryTheirLine) {
+  const InputError e = error_of([] { parse_yaml("a: 1\nb: [1, 2\n", "bad.yaml"); });
+  EXPECT_EQ(e.file(), "bad.yaml");
+  EXPECT_GE(e.line(), 2);
+  EXPECT_TRUE(has(e, "not valid YAML")) << e.what();
+}
+
+TEST(YamlReader, UnanticipatedShapesBecomeInputErrors) {
+  const YAML::Node root = parse_yaml("a: [1, 2]\n", "shape.yaml");
+  const InputError e =
+      error_of([&] { read_yaml_guarded("shape.yaml", [&] { return root["a"].as<double>(); }); });
+  EXPECT_EQ(e.file(), "shape.yaml");
+  EXPECT_EQ(e.line(), 1);
+  EXPECT_TRUE(has(e, "unexpected YAML structure")) << e.what();
+  EXPECT_EQ(read_yaml_guarded("shape.yaml", [&] { return root["a"][1].as<int>(); }), 2);
+}
+
+TEST(YamlReader, FilesThatCannotBeReadAreNamed) {
+  const std::string missing = testing::TempDir() + "/echoplan_no_such_file.yaml";
+  InputError e = error_of([&] { load_yaml_file(missing, "sim config"); });
+  EXPECT_EQ(e.file(), missing);
+  EXPECT_TRUE(has(e, "cannot open the sim config")) << e.what();
+
+  e = error_of([] { load_yaml_file(testing::TempDir(), "sim config"); });
+  EXPECT_TRUE(has(e, "not a regular file")) << e.what();
+
+  const std::string path = testing::TempDir() + "/echoplan_yaml_reader_test.yaml";
+  std::ofstream(path) << "x: 1\n";
+  EXPECT_EQ(load_yaml_file(path, "test file")["x"].as<int>(), 1);
+  std::remove(path.c_str());
+}
+
+TEST(NumberRange, DescribesAndContainsItsBounds) {
+  EXPECT_EQ(NumberRange::open(0, 1).describe(), "in (0, 1)");
+  EXPECT_EQ(NumberRange::closed(0, 1).describe(), "in [0, 1]");
+  EXPECT_EQ(NumberRange::above(0).describe(), "> 0");
+  EXPECT_EQ(NumberRange::at_least(0).below(0.5).describe(), ">= 0 and < 0.5");
+  EXPECT_EQ(NumberRange{}.describe(), "finite");
+  EXPECT_FALSE(NumberRange::above(0).contains(0));
+  EXPECT_TRUE(NumberRange::at_least(0).contains(0));
+  EXPECT_FALSE(NumberRange::at_least(0).below(0.5).contains(0.5));
+  EXPECT_TRUE(NumberRange::closed(0, 1).contains(1));
+}
+
+}  // namespace
+}  // namespace echoplan
