@@ -99,16 +99,17 @@ std::vector<TrialRecord> run_trials(const TrialSetup& setup, const TrialOptions&
       record.steps = step + 1;
       if (outcome.terminal || outcome.collision) {
         record.collision = outcome.collision;
+        if (setup.step_finished) setup.step_finished(s, nullptr);
         break;
       }
+      belief->update(s.action, outcome.observation, belief_rng);
+      if (setup.step_finished) setup.step_finished(s, belief.get());
       if (record.steps >= options.max_steps) {
         // The belief after the last step is the final one.
-        belief->update(s.action, outcome.observation, belief_rng);
         record.believed_state = most_likely(belief->discrete_marginal(0));
         record.capped = true;
         break;
       }
-      belief->update(s.action, outcome.observation, belief_rng);
       setup.solver->update(s.action, outcome.observation, *belief, planner_rng);
     }
     if (interrupted) break;

@@ -73,6 +73,10 @@ struct TrialSetup {
   solvers::Solver* solver = nullptr;                        // reset at the start of every trial
   std::function<pomdp::BeliefPtr(Rng&)> make_belief;        // the initial belief of a trial
   const std::atomic<bool>* stop_requested = nullptr;        // optional: checked between steps
+  // Optional: called after every step with its record and the belief after it, or nullptr when the
+  // step ended the trial (no update follows a sorting action or a collision). For printing a trial as
+  // it goes; trial_finished still gets every step.
+  std::function<void(const StepRecord&, const pomdp::Belief*)> step_finished;
 };
 
 // Runs the trials, reporting each to `observer`. Returns the finished trials (fewer than asked when

@@ -64,6 +64,9 @@ void SimulatedWorld::begin_trial(const TrialContext& context) {
   rig_ = &it->second;
   physics_rng_.seed(derive_seed(context.seed, {physics}));
   sound_rng_.seed(derive_seed(context.seed, {sound}));
+  // The lab's reset: arm home, object at its place (with the trial's placement drawn); every action
+  // of the trial then continues from where the last one left the world.
+  rig_->robot->reset_trial(physics_rng_);
   listening_ = false;
   heard_ = {};
   last_outcome_.reset();
@@ -79,13 +82,16 @@ ActionReport SimulatedWorld::execute(const std::string& action) {
 ActionReport SimulatedWorld::execute_sensing(const std::string& action) {
   sim::ActionOutcome outcome = rig_->robot->execute(action, physics_rng_);
   if (listening_) hear(rig_->recorder->record(outcome, sound_rng_));
-  ActionReport report{action, ActionStatus::done, "", outcome.duration_s};
-  if (outcome.collision) {
-    report.status = ActionStatus::collision;
-    report.reason = outcome.collision_time_s < 0
-                        ? "the arm touched the table while moving to the object"
-                        : fmt::format("the arm touched the table {:.3f} s into the action",
-                                      outcome.collision_time_s);
+  ActionReport report{action, ActionStatus::done, outcome.reason, outcome.duration_s};
+  switch (outcome.status) {
+    case sim::ActionStatus::done:
+      break;
+    case sim::ActionStatus::collision:
+      report.status = ActionStatus::collision;
+      break;
+    case sim::ActionStatus::failed:  // pushed out of reach, fallen over
+      report.status = ActionStatus::failed;
+      break;
   }
   last_outcome_ = std::move(outcome);
   return report;
@@ -113,7 +119,7 @@ audio::AudioClip SimulatedWorld::stop_listening() {
   // Nothing happened while listening: the microphone hears the room alone, for the usual length.
   if (heard_.samples.empty()) {
     sim::ActionOutcome quiet;
-    if (last_outcome_) quiet.trace.object_position = last_outcome_->trace.object_position;
+    quiet.trace.object_position = rig_->robot->object_position();
     return rig_->recorder->record(quiet, sound_rng_);
   }
   return std::move(heard_);

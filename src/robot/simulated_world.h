@@ -7,12 +7,17 @@
 // executed meanwhile, one after the other, or the room's background alone when nothing happened.
 // Sound is only synthesized while a microphone listens.
 //
+// The world keeps its state through a trial: begin_trial() is the lab's reset (arm home, object at
+// its place), and every action continues from where the last one left the arm and the object, so a
+// slide moves the object 5 cm and the next action starts there. Pushing the object out of reach, or
+// over, is reported as a failed action and a collision as a collision (ActionReport), never thrown.
+//
 // Sensing actions are the simulator's ("slide", "strike"). Sorting actions (e.g. "move_to_A") are
 // reported done without motion or sound: the simulator has no sorting motion, and the loop only
 // needs to know that the trial ended there.
 //
 // One world serves one thread: MuJoCo's data and the synthesis buffers are not shared. A parallel
-// campaign builds one world per worker (see experiment/robot_environment.h).
+// campaign builds one world per worker (see experiment/environment_factory.h).
 #pragma once
 
 #include <map>
@@ -51,9 +56,9 @@ class SimulatedWorld {
   // world's sorting actions.
   void check_action(const std::string& action) const;
 
-  // Places `context.object` in the scene (the MuJoCo model of each object is compiled once per
-  // world and reused) and seeds the trial's physics and sound streams from `context.seed`. Stops
-  // listening.
+  // Resets the scene of `context.object` (the MuJoCo model of each object is compiled once per
+  // world and reused), seeds the trial's physics and sound streams from `context.seed` and draws
+  // the trial's placement from the physics stream. Stops listening.
   void begin_trial(const TrialContext& context);
 
   // Executes `action` (see the file comment). Throws InputError for an unknown action and

@@ -7,7 +7,8 @@ namespace {
 Eigen::Isometry3d joint_origin(const ArmJoint& j) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   t.translate(Eigen::Vector3d(j.xyz[0], j.xyz[1], j.xyz[2]));
-  t.rotate(Eigen::AngleAxisd(j.rpy[2], Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(j.rpy[1], Eigen::Vector3d::UnitY()) *
+  t.rotate(Eigen::AngleAxisd(j.rpy[2], Eigen::Vector3d::UnitZ()) *
+           Eigen::AngleAxisd(j.rpy[1], Eigen::Vector3d::UnitY()) *
            Eigen::AngleAxisd(j.rpy[0], Eigen::Vector3d::UnitX()));
   return t;
 }

@@ -2,7 +2,8 @@
 // and its forward kinematics computed directly from that table.
 //
 // The MuJoCo scene is generated from the same table; the direct forward kinematics here places the
-// table under the end effector before the scene is compiled, and checks the compiled model in tests.
+// table under the end effector before the scene is compiled, and checks the compiled model in
+// tests.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -10,8 +11,8 @@
 
 namespace echoplan::sim {
 
-// One revolute joint: its origin relative to the previous link (xyz in m, roll-pitch-yaw in rad as in
-// URDF, i.e. R = Rz(yaw) Ry(pitch) Rx(roll)); it rotates about its own local z.
+// One revolute joint: its origin relative to the previous link (xyz in m, roll-pitch-yaw in rad as
+// in URDF, i.e. R = Rz(yaw) Ry(pitch) Rx(roll)); it rotates about its own local z.
 struct ArmJoint {
   std::array<double, 3> xyz;
   std::array<double, 3> rpy;

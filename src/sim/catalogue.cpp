@@ -21,7 +21,8 @@ double Material::decay_rate(double frequency_hz) const {
 
 namespace {
 
-// The wall (a tube) and the base (a disc) share the object's own mass in proportion to their volumes.
+// The wall (a tube) and the base (a disc) share the object's own mass in proportion to their
+// volumes.
 struct ShellParts {
   double wall_mass, base_mass;
 };
@@ -43,7 +44,8 @@ double ObjectSpec::total_mass() const {
 
 std::array<double, 3> ObjectSpec::centre_of_mass() const {
   const auto parts = split_shell_mass(*this);
-  std::array<double, 3> moment{0.0, 0.0, parts.wall_mass * height / 2.0 + parts.base_mass * base_thickness / 2.0};
+  std::array<double, 3> moment{
+      0.0, 0.0, parts.wall_mass * height / 2.0 + parts.base_mass * base_thickness / 2.0};
   for (const auto& a : added_masses)
     for (int k = 0; k < 3; ++k) moment[k] += a.mass * a.position[k];
   const double m = total_mass();
@@ -64,8 +66,8 @@ std::array<double, 3> ObjectSpec::inertia_diagonal() const {
     inertia[1] += ixx + m * (dx * dx + dz * dz);
     inertia[2] += izz + m * (dx * dx + dy * dy);
   };
-  add_body(parts.wall_mass, parts.wall_mass * (r2 / 4.0 + height * height / 12.0), parts.wall_mass * r2 / 2.0,
-           {0.0, 0.0, height / 2.0});
+  add_body(parts.wall_mass, parts.wall_mass * (r2 / 4.0 + height * height / 12.0),
+           parts.wall_mass * r2 / 2.0, {0.0, 0.0, height / 2.0});
   add_body(parts.base_mass,
            parts.base_mass * (radius * radius / 4.0 + base_thickness * base_thickness / 12.0),
            parts.base_mass * radius * radius / 2.0, {0.0, 0.0, base_thickness / 2.0});
@@ -129,7 +131,8 @@ class EntryReader {
     return has(key) ? checked(node_[key], key, low, strict, high) : fallback;
   }
 
-  double checked(const YAML::Node& v, const std::string& key, double low, bool strict, double high) const {
+  double checked(const YAML::Node& v, const std::string& key, double low, bool strict,
+                 double high) const {
     const double x = number(v, key);
     if (!std::isfinite(x) || (strict ? x <= low : x < low) || x >= high) {
       std::ostringstream msg;
@@ -175,8 +178,10 @@ Material read_material(const std::string& source, const std::string& name, const
   return m;
 }
 
-std::vector<ListedMode> read_modes(const std::string& source, const std::string& entry, const YAML::Node& node) {
-  if (!node.IsSequence()) throw InputError(source, node.Mark().line + 1, entry + ": 'modes' must be a list");
+std::vector<ListedMode> read_modes(const std::string& source, const std::string& entry,
+                                   const YAML::Node& node) {
+  if (!node.IsSequence())
+    throw InputError(source, node.Mark().line + 1, entry + ": 'modes' must be a list");
   std::vector<ListedMode> modes;
   for (std::size_t i = 0; i < node.size(); ++i) {
     EntryReader r(source, entry + ".modes[" + std::to_string(i) + "]", node[i]);
@@ -200,7 +205,8 @@ ObjectSpec read_original(const Catalogue& c, const std::string& name, const Entr
   ObjectSpec o;
   o.name = name;
   o.shape = r.text("shape");
-  if (o.shape != "cylinder_shell") r.fail(r.child("shape"), "unknown shape '" + o.shape + "' (known: cylinder_shell)");
+  if (o.shape != "cylinder_shell")
+    r.fail(r.child("shape"), "unknown shape '" + o.shape + "' (known: cylinder_shell)");
   o.radius = r.number("radius", 0, true);
   o.height = r.number("height", 0, true);
   o.wall_thickness = r.number("wall_thickness", 0, true, o.radius);
@@ -219,7 +225,8 @@ ObjectSpec read_modified(const Catalogue& c, const std::string& name, const Entr
   const std::string base = r.text("base");
   auto it = c.objects.find(base);
   if (it == c.objects.end() || !it->second.base_object.empty())
-    r.fail(r.child("base"), "unknown base object '" + base + "' (it must be an original object listed above)");
+    r.fail(r.child("base"),
+           "unknown base object '" + base + "' (it must be an original object listed above)");
   ObjectSpec o = it->second;
   o.name = name;
   o.base_object = base;
@@ -227,7 +234,8 @@ ObjectSpec read_modified(const Catalogue& c, const std::string& name, const Entr
   AddedMass a;
   a.mass = added.number("mass", 0, true);
   YAML::Node pos = added.required("position");
-  if (!pos.IsSequence() || pos.size() != 3) added.fail(pos, "field 'position' must be [x, y, z] in metres");
+  if (!pos.IsSequence() || pos.size() != 3)
+    added.fail(pos, "field 'position' must be [x, y, z] in metres");
   for (int k = 0; k < 3; ++k) a.position[k] = added.number(pos[k], "position");
   o.added_masses.push_back(a);
   return o;
@@ -255,7 +263,8 @@ Catalogue parse_catalogue(const std::string& yaml_text, const std::string& sourc
 
   // Originals first, so a modified object can name any original regardless of order in the file.
   const YAML::Node objects = top.required("objects");
-  if (!objects.IsMap() || objects.size() == 0) top.fail(objects, "'objects' must map names to objects");
+  if (!objects.IsMap() || objects.size() == 0)
+    top.fail(objects, "'objects' must map names to objects");
   for (const auto& kv : objects) {
     const auto name = kv.first.as<std::string>();
     EntryReader r(source, "objects." + name, kv.second);

@@ -2,8 +2,8 @@
 // YAML (objects/catalogue.yaml; format in docs/simulator.md).
 //
 // Everything here is a plain value that never changes after loading. A modified object (an original
-// plus an added mass) is resolved at load time into a full ObjectSpec whose mass, centre of mass and
-// inertia include the added mass, so the rest of the simulator sees one kind of object.
+// plus an added mass) is resolved at load time into a full ObjectSpec whose mass, centre of mass
+// and inertia include the added mass, so the rest of the simulator sees one kind of object.
 #pragma once
 
 #include <array>
@@ -37,8 +37,8 @@ struct ListedMode {
 // A point mass added to an object (the "weighted" variants), in the object's frame: origin at the
 // centre of its base, z along its axis.
 struct AddedMass {
-  double mass = 0;                       // kg, > 0
-  std::array<double, 3> position{};      // m
+  double mass = 0;                   // kg, > 0
+  std::array<double, 3> position{};  // m
 };
 
 // A rigid object the robot can slide or strike: a thin-walled cylinder with a base.

@@ -2,11 +2,11 @@
 // DIR/<object>/<action>/NNN.wav, with DIR/manifest.csv listing each file, its seed and the trial's
 // sampled parameters.
 //
-// Each clip has its own seed, derived from the dataset seed and the clip's object, action and index,
-// so `echoplan synth --object O --action A --seed <manifest seed>` reproduces any file bit for bit and
-// adding objects does not change the others' recordings. Files appear atomically (written under a
-// temporary name, then renamed) and each manifest row is flushed after its file, so an interrupted run
-// leaves only finished files, each with its row.
+// Each clip has its own seed, derived from the dataset seed and the clip's object, action and
+// index, so `echoplan synth --object O --action A --seed <manifest seed>` reproduces any file bit
+// for bit and adding objects does not change the others' recordings. Files appear atomically
+// (written under a temporary name, then renamed) and each manifest row is flushed after its file,
+// so an interrupted run leaves only finished files, each with its row.
 #pragma once
 
 #include <atomic>
@@ -23,24 +23,26 @@ namespace echoplan::sim {
 struct DatasetOptions {
   std::vector<std::string> objects;  // catalogue names; empty = every object in the catalogue
   std::vector<std::string> actions{"slide", "strike"};
-  int per_pair = 10;                 // recordings per (object, action), >= 1
+  int per_pair = 10;  // recordings per (object, action), >= 1
   std::uint64_t seed = 0;
   std::string output_dir;
 };
 
 struct DatasetSummary {
-  int written = 0;      // clips written (and rows in the manifest)
-  int collisions = 0;   // of which the arm touched the table
+  int written = 0;     // clips written (and rows in the manifest)
+  int collisions = 0;  // of which the arm touched the table
   bool interrupted = false;
 };
 
 // The seed of clip `index` of (object, action) in a dataset with seed `seed`.
-std::uint64_t clip_seed(std::uint64_t seed, const std::string& object, const std::string& action, int index);
+std::uint64_t clip_seed(std::uint64_t seed, const std::string& object, const std::string& action,
+                        int index);
 
 // Writes the dataset. `progress(done, total, file)` is called after each clip. Stops early, with
 // summary.interrupted set, when `stop` becomes true (checked between clips). Throws InputError for
 // unknown object or action names (before writing anything) and if a file cannot be written.
-DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config, const DatasetOptions& options,
+DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config,
+                             const DatasetOptions& options,
                              const std::function<void(int, int, const std::string&)>& progress,
                              const std::atomic<bool>& stop);
 

@@ -9,7 +9,8 @@ namespace {
 
 // sqrt(E / (12 rho (1 - nu^2))): the bending wave speed factor of a plate or shell wall (m/s).
 double bending_speed(const Material& m) {
-  return std::sqrt(m.youngs_modulus / (12.0 * m.density * (1.0 - m.poisson_ratio * m.poisson_ratio)));
+  return std::sqrt(m.youngs_modulus /
+                   (12.0 * m.density * (1.0 - m.poisson_ratio * m.poisson_ratio)));
 }
 
 double decay_of(const ListedMode& listed, const Material& material) {
@@ -49,7 +50,8 @@ std::vector<Mode> object_modes(const ObjectSpec& o, double max_frequency_hz) {
 
 std::vector<Mode> table_modes(const TableSpec& table) {
   std::vector<Mode> modes;
-  for (const auto& l : table.modes) modes.push_back({l.frequency, decay_of(l, table.material), l.gain, 0});
+  for (const auto& l : table.modes)
+    modes.push_back({l.frequency, decay_of(l, table.material), l.gain, 0});
   return modes;
 }
 

@@ -17,11 +17,12 @@ struct Mode {
   double frequency_hz = 0;  // > 0
   double decay_per_s = 0;   // >= 0
   double gain = 1;          // relative amplitude for a unit force at the reference point
-  int azimuthal_order = 0;  // n of a shell ring mode (cos n theta around the axis); 0 = axisymmetric
+  int azimuthal_order =
+      0;  // n of a shell ring mode (cos n theta around the axis); 0 = axisymmetric
 };
 
-// The object's modes below `max_frequency_hz`: the listed ones, or derived from geometry: shell ring
-// modes n = 2..ring_modes (Love's inextensional ring-bending frequencies for a thin cylinder,
+// The object's modes below `max_frequency_hz`: the listed ones, or derived from geometry: shell
+// ring modes n = 2..ring_modes (Love's inextensional ring-bending frequencies for a thin cylinder,
 // f_n = h/(2 pi R^2) sqrt(E / (12 rho (1 - nu^2))) n (n^2 - 1) / sqrt(n^2 + 1)), the base plate's
 // first mode (clamped disc, lambda^2 = 10.21), and for a closed tube its air cavity at c / 2L.
 // Decay from the material's Rayleigh damping unless listed.
@@ -38,8 +39,8 @@ double effective_modulus(const Material& a, const Material& b);
 double hertz_contact_time(double mass_kg, double radius_m, double e_star_pa, double speed_m_s);
 
 // Magnitude of the Fourier transform of a half-sine force pulse of duration `duration_s` and unit
-// impulse, at angular frequency `omega` (rad/s). 1 at omega = 0; falls off above omega ~ pi/duration,
-// which is why longer contacts sound duller.
+// impulse, at angular frequency `omega` (rad/s). 1 at omega = 0; falls off above omega ~
+// pi/duration, which is why longer contacts sound duller.
 double half_sine_pulse_spectrum(double omega, double duration_s);
 
 }  // namespace echoplan::sim

@@ -16,12 +16,13 @@ namespace echoplan::sim {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& source, const YAML::Node& at, const std::string& problem) {
+[[noreturn]] void fail(const std::string& source, const YAML::Node& at,
+                       const std::string& problem) {
   throw InputError(source, at.Mark().line + 1, problem);
 }
 
-double read_number(const std::string& source, const YAML::Node& v, const std::string& field, double low,
-                   double high) {
+double read_number(const std::string& source, const YAML::Node& v, const std::string& field,
+                   double low, double high) {
   double x = 0;
   try {
     x = v.as<double>();
@@ -38,7 +39,8 @@ double read_number(const std::string& source, const YAML::Node& v, const std::st
 
 // One section of the config: a table of field name -> setter, so unknown fields are reported
 // instead of silently ignored (a misspelt spread would otherwise keep its default).
-using FieldSetters = std::map<std::string, std::function<void(const YAML::Node&, const std::string&)>>;
+using FieldSetters =
+    std::map<std::string, std::function<void(const YAML::Node&, const std::string&)>>;
 
 void read_section(const std::string& source, const YAML::Node& root, const std::string& name,
                   const FieldSetters& fields) {
@@ -57,15 +59,17 @@ void read_section(const std::string& source, const YAML::Node& root, const std::
   }
 }
 
-std::function<void(const YAML::Node&, const std::string&)> number_into(const std::string& source, double& target,
-                                                                        double low, double high) {
+std::function<void(const YAML::Node&, const std::string&)> number_into(const std::string& source,
+                                                                       double& target, double low,
+                                                                       double high) {
   return [&source, &target, low, high](const YAML::Node& v, const std::string& field) {
     target = read_number(source, v, field, low, high);
   };
 }
 
-std::function<void(const YAML::Node&, const std::string&)> spread_into(const std::string& source, Spread& target,
-                                                                        double low, double high) {
+std::function<void(const YAML::Node&, const std::string&)> spread_into(const std::string& source,
+                                                                       Spread& target, double low,
+                                                                       double high) {
   return [&source, &target, low, high](const YAML::Node& v, const std::string& field) {
     if (!v.IsMap() || !v["mean"] || !v["spread"] || v.size() != 2)
       fail(source, v, "'" + field + "' must be {mean: ..., spread: ...}");
@@ -81,26 +85,35 @@ SimConfig parse_sim_config(const std::string& yaml_text, const std::string& sour
   SimConfig c;
   if (root.IsNull()) return c;
   if (!root.IsMap()) fail(source, root, "a sim config must be a mapping of sections");
-  const std::vector<std::string> sections{"variability", "microphone", "room", "recording", "physics"};
+  const std::vector<std::string> sections{"variability", "microphone", "room", "recording",
+                                          "physics"};
   for (const auto& kv : root) {
     const auto key = kv.first.as<std::string>();
     if (std::find(sections.begin(), sections.end(), key) == sections.end())
-      fail(source, kv.first, "unknown section '" + key + "' (known: variability, microphone, room, recording, physics)");
+      fail(source, kv.first,
+           "unknown section '" + key +
+               "' (known: variability, microphone, room, recording, physics)");
   }
   auto& v = c.variability;
   read_section(source, root, "variability",
                {{"impact_speed", spread_into(source, v.impact_speed, 0.005, 1.0)},
                 {"impact_tilt_deg", spread_into(source, v.impact_tilt_deg, 0.0, 30.0)},
                 {"grasp_height", spread_into(source, v.grasp_height, -0.05, 0.20)},
+                {"grasp_offset", spread_into(source, v.grasp_offset, -0.02, 0.02)},
                 {"push_speed", spread_into(source, v.push_speed, 0.005, 0.5)},
+                {"push_offset", spread_into(source, v.push_offset, -0.02, 0.02)},
                 {"placement_x", spread_into(source, v.placement_x, -0.05, 0.05)},
-                {"placement_y", spread_into(source, v.placement_y, -0.05, 0.05)}});
+                {"placement_y", spread_into(source, v.placement_y, -0.05, 0.05)},
+                {"microphone_distance", spread_into(source, v.microphone_distance, -0.3, 0.3)},
+                {"background_db", spread_into(source, v.background_db, -20.0, 20.0)}});
   auto& mic = c.microphone;
   read_section(source, root, "microphone",
                {{"position",
                  [&](const YAML::Node& n, const std::string& field) {
-                   if (!n.IsSequence() || n.size() != 3) fail(source, n, "'" + field + "' must be [x, y, z] in metres");
-                   for (int k = 0; k < 3; ++k) mic.position[k] = read_number(source, n[k], field, -10.0, 10.0);
+                   if (!n.IsSequence() || n.size() != 3)
+                     fail(source, n, "'" + field + "' must be [x, y, z] in metres");
+                   for (int k = 0; k < 3; ++k)
+                     mic.position[k] = read_number(source, n[k], field, -10.0, 10.0);
                  }},
                 {"capsule_spacing", number_into(source, mic.capsule_spacing, 0.0, 1.0)}});
   auto& room = c.room;
@@ -118,7 +131,8 @@ SimConfig parse_sim_config(const std::string& yaml_text, const std::string& sour
                 {"output_gain", number_into(source, rec.output_gain, 0.0, 1000.0)},
                 {"friction_gain", number_into(source, rec.friction_gain, 0.0, 1000.0)}});
   rec.sample_rate = static_cast<int>(std::lround(sample_rate));
-  read_section(source, root, "physics", {{"timestep_s", number_into(source, c.physics.timestep_s, 0.0005, 0.005)}});
+  read_section(source, root, "physics",
+               {{"timestep_s", number_into(source, c.physics.timestep_s, 0.0005, 0.005)}});
   return c;
 }
 
@@ -141,25 +155,43 @@ double draw(const Spread& s, Rng& rng) {
 
 }  // namespace
 
-TrialParameters sample_trial(const VariabilityConfig& v, Rng& rng) {
-  TrialParameters p;
-  p.impact_speed = draw(v.impact_speed, rng);
+ActionVariation sample_action(const VariabilityConfig& v, Rng& rng) {
+  ActionVariation p;
+  p.impact_speed = std::max(draw(v.impact_speed, rng), 0.001);
   // A tilt is an angle from vertical, so its sign is folded into the azimuth.
   p.impact_tilt_deg = std::abs(draw(v.impact_tilt_deg, rng));
   p.tilt_azimuth_deg = 360.0 * uniform01(rng);
   p.grasp_height = draw(v.grasp_height, rng);
-  p.push_speed = draw(v.push_speed, rng);
-  p.placement_x = draw(v.placement_x, rng);
-  p.placement_y = draw(v.placement_y, rng);
-  p.impact_speed = std::max(p.impact_speed, 0.001);
-  p.push_speed = std::max(p.push_speed, 0.001);
+  p.grasp_offset_x = draw(v.grasp_offset, rng);
+  p.grasp_offset_y = draw(v.grasp_offset, rng);
+  p.push_speed = std::max(draw(v.push_speed, rng), 0.001);
+  p.push_offset = draw(v.push_offset, rng);
   return p;
 }
 
-std::vector<std::pair<std::string, double>> TrialParameters::named() const {
-  return {{"impact_speed", impact_speed}, {"impact_tilt_deg", impact_tilt_deg},
-          {"tilt_azimuth_deg", tilt_azimuth_deg}, {"grasp_height", grasp_height},
-          {"push_speed", push_speed}, {"placement_x", placement_x}, {"placement_y", placement_y}};
+std::vector<std::pair<std::string, double>> ActionVariation::named() const {
+  return {{"impact_speed", impact_speed},
+          {"impact_tilt_deg", impact_tilt_deg},
+          {"tilt_azimuth_deg", tilt_azimuth_deg},
+          {"grasp_height", grasp_height},
+          {"grasp_offset_x", grasp_offset_x},
+          {"grasp_offset_y", grasp_offset_y},
+          {"push_speed", push_speed},
+          {"push_offset", push_offset}};
+}
+
+TrialSetup sample_setup(const VariabilityConfig& v, Rng& rng) {
+  TrialSetup s;
+  s.placement_x = draw(v.placement_x, rng);
+  s.placement_y = draw(v.placement_y, rng);
+  s.orientation_deg = 360.0 * uniform01(rng);
+  return s;
+}
+
+std::vector<std::pair<std::string, double>> TrialSetup::named() const {
+  return {{"placement_x", placement_x},
+          {"placement_y", placement_y},
+          {"orientation_deg", orientation_deg}};
 }
 
 }  // namespace echoplan::sim

@@ -19,33 +19,49 @@ struct Spread {
   double spread = 0;  // >= 0
 };
 
+// The ranges and their physical reasons are in docs/simulator.md ("Variability").
 struct VariabilityConfig {
-  Spread impact_speed{0.10, 0.01};      // m/s, the strike's descent speed
-  Spread impact_tilt_deg{0.0, 2.0};     // degrees between the object's axis and vertical at impact
-  Spread grasp_height{0.085, 0.003};     // m, end-effector height above the table when at the object
-  Spread push_speed{0.05, 0.005};       // m/s, the slide's speed
-  Spread placement_x{0.0, 0.003};       // m, object offset from its nominal place
-  Spread placement_y{0.0, 0.003};       // m
+  // Per action (ActionVariation):
+  Spread impact_speed{
+      0.10, 0.01};  // m/s, the strike's descent speed (servo tracking of a 0.1 m/s command)
+  Spread impact_tilt_deg{
+      0.0, 2.0};  // degrees between the object's axis and vertical at impact: rim or base first
+  Spread grasp_height{0.085, 0.003};  // m, end-effector height above the table when at the object
+  Spread grasp_offset{
+      0.0, 0.003};  // m, hand off the object's axis when it closes (each horizontal axis)
+  Spread push_speed{0.05, 0.005};  // m/s, the slide's speed
+  Spread push_offset{0.0, 0.005};  // m, the pad off the object's centre line across the push
+  // Per trial (TrialSetup): where the operator put the object.
+  Spread placement_x{0.0, 0.003};  // m, object offset from its nominal place
+  Spread placement_y{0.0, 0.003};  // m
+  // Per recording (drawn by the recorder):
+  Spread microphone_distance{
+      0.0, 0.05};  // m added to the microphone-object distance (mic stand not fixed)
+  Spread background_db{0.0,
+                       3.0};  // dB added to recording.noise_dbfs (room noise changes over a day)
 };
 
 struct MicrophoneConfig {
-  std::array<double, 3> position{-0.30, 0.40, 0.40};  // m, world frame (the arm's base at the origin)
-  double capsule_spacing = 0.10;  // m between the two capsules, along world y; sets the delay between channels
+  std::array<double, 3> position{-0.30, 0.40,
+                                 0.40};  // m, world frame (the arm's base at the origin)
+  double capsule_spacing =
+      0.10;  // m between the two capsules, along world y; sets the delay between channels
 };
 
 struct RoomConfig {
-  double rt60_s = 0.25;           // s, reverberation time of the decaying-noise tail, > 0
-  double length_s = 0.08;         // s, impulse response length kept, > 0
-  double taps_per_s = 500;        // sparse noise taps per second of impulse response, > 0
-  double reverb_level = 0.25;     // tail amplitude relative to the direct sound, >= 0
+  double rt60_s = 0.25;        // s, reverberation time of the decaying-noise tail, > 0
+  double length_s = 0.08;      // s, impulse response length kept, > 0
+  double taps_per_s = 500;     // sparse noise taps per second of impulse response, > 0
+  double reverb_level = 0.25;  // tail amplitude relative to the direct sound, >= 0
 };
 
 struct RecordingConfig {
-  int sample_rate = 44100;           // Hz
-  double duration_s = 3.0;           // s, minimum recording length (longer if the action is)
-  double noise_dbfs = -65;           // background noise level, dB re full scale (RMS)
-  double output_gain = 25;           // full-scale per unit of synthesized pressure (fixed: loudness carries information)
-  double friction_gain = 1e-5;       // scale of sliding excitation relative to impacts
+  int sample_rate = 44100;  // Hz
+  double duration_s = 3.0;  // s, minimum recording length (longer if the action is)
+  double noise_dbfs = -65;  // background noise level, dB re full scale (RMS)
+  double output_gain =
+      25;  // full-scale per unit of synthesized pressure (fixed: loudness carries information)
+  double friction_gain = 1e-5;  // scale of sliding excitation relative to impacts
 };
 
 struct PhysicsConfig {
@@ -60,27 +76,41 @@ struct SimConfig {
   PhysicsConfig physics;
 };
 
-// Reads a sim config file; missing fields keep their defaults. Throws InputError naming the file, the
-// line and the field for a wrong type or out-of-range value or an unknown field.
+// Reads a sim config file; missing fields keep their defaults. Throws InputError naming the file,
+// the line and the field for a wrong type or out-of-range value or an unknown field.
 SimConfig load_sim_config(const std::string& path);
 SimConfig parse_sim_config(const std::string& yaml_text, const std::string& source);
 
-// The parameters drawn for one trial: what the manifest records.
-struct TrialParameters {
-  double impact_speed = 0;      // m/s
-  double impact_tilt_deg = 0;   // degrees
-  double tilt_azimuth_deg = 0;  // degrees, direction of the tilt around the vertical, uniform
-  double grasp_height = 0;      // m
-  double push_speed = 0;        // m/s
-  double placement_x = 0;       // m
-  double placement_y = 0;       // m
+// How one action varies (drawn per action): what the manifest records with the TrialSetup.
+struct ActionVariation {
+  double impact_speed = 0;     // m/s
+  double impact_tilt_deg = 0;  // degrees
+  double tilt_azimuth_deg =
+      0;  // degrees, direction of the tilt around the vertical, uniform: which rim point lands
+  double grasp_height = 0;    // m
+  double grasp_offset_x = 0;  // m, world frame
+  double grasp_offset_y = 0;  // m
+  double push_speed = 0;      // m/s
+  double push_offset = 0;     // m, along world y
 
   // (name, value) pairs in a fixed order, for manifests and logs.
   std::vector<std::pair<std::string, double>> named() const;
 };
 
-// Draws one trial's parameters. Always consumes the same number of draws from `rng`.
-TrialParameters sample_trial(const VariabilityConfig& variability, Rng& rng);
+// Draws one action's variation. Always consumes the same number of draws from `rng`.
+ActionVariation sample_action(const VariabilityConfig& variability, Rng& rng);
+
+// Where the object stands when a trial begins (drawn per trial).
+struct TrialSetup {
+  double placement_x = 0;      // m, from the nominal place (0.1 m ahead of the end effector)
+  double placement_y = 0;      // m
+  double orientation_deg = 0;  // rotation of the object about its own axis, uniform in [0, 360)
+
+  std::vector<std::pair<std::string, double>> named() const;
+};
+
+// Draws one trial's setup. Always consumes the same number of draws from `rng`.
+TrialSetup sample_setup(const VariabilityConfig& variability, Rng& rng);
 
 // A standard normal variate from `rng` (Box-Muller on uniform01, identical on every platform).
 double standard_normal(Rng& rng);

@@ -13,14 +13,17 @@ namespace echoplan::sim {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double kRingGainFloor = 0.15;      // real objects are not perfectly round: every ring mode hears a hit
-constexpr double kTableCoupling = 0.4;       // share of the contact force's effect that rings the table
-constexpr double kProfileSpacing = 2.0e-6;   // m between surface-profile samples (12.5 kHz at 5 cm/s)
+constexpr double kRingGainFloor =
+    0.15;  // real objects are not perfectly round: every ring mode hears a hit
+constexpr double kTableCoupling = 0.4;  // share of the contact force's effect that rings the table
+constexpr double kProfileSpacing =
+    2.0e-6;  // m between surface-profile samples (12.5 kHz at 5 cm/s)
 constexpr double kReferenceSlideSpeed = 0.05;  // m/s at which friction_gain is calibrated
-constexpr double kStaticSpeed = 1e-4;        // m/s: slower creep is static contact (the solver's drift), silent
-constexpr double kTailDecay = 11.5;          // ln(1e5): a mode is rendered until it fell by 100 dB
-constexpr double kSourceHeight = 0.02;       // m above the table: where the object radiates from
-constexpr double kDirectPathGain = 0.3;      // pressure at 1 m per unit modal amplitude
+constexpr double kStaticSpeed =
+    1e-4;  // m/s: slower creep is static contact (the solver's drift), silent
+constexpr double kTailDecay = 11.5;      // ln(1e5): a mode is rendered until it fell by 100 dB
+constexpr double kSourceHeight = 0.02;   // m above the table: where the object radiates from
+constexpr double kDirectPathGain = 0.3;  // pressure at 1 m per unit modal amplitude
 
 // One mode's excitation: impulses at given samples plus (optionally) a shared continuous drive.
 struct ModeDrive {
@@ -30,9 +33,11 @@ struct ModeDrive {
 
 // Renders mode `mode` driven by `drive` into `out` (added): the resonator
 // y[n] = 2 r cos(w) y[n-1] - r^2 y[n-2] + sin(w) x[n] has impulse response r^n sin(w (n + 1)).
-// `friction_span` is [first, last] sample where the friction excitation is non-zero (first > last: none).
+// `friction_span` is [first, last] sample where the friction excitation is non-zero (first > last:
+// none).
 void render_mode(const Mode& mode, const ModeDrive& drive, const std::vector<float>& friction,
-                 std::pair<std::size_t, std::size_t> friction_span, int rate, std::vector<float>& out) {
+                 std::pair<std::size_t, std::size_t> friction_span, int rate,
+                 std::vector<float>& out) {
   const double w = kTwoPi * mode.frequency_hz / rate;
   const double r = std::exp(-mode.decay_per_s / rate);
   const double a1 = 2.0 * r * std::cos(w), a2 = -r * r, b = std::sin(w);
@@ -48,12 +53,14 @@ void render_mode(const Mode& mode, const ModeDrive& drive, const std::vector<flo
     last = std::max(last, friction_span.second);
   }
   if (first >= n_total) return;
-  const double tail = mode.decay_per_s > 0 ? kTailDecay / mode.decay_per_s * rate : static_cast<double>(n_total);
+  const double tail =
+      mode.decay_per_s > 0 ? kTailDecay / mode.decay_per_s * rate : static_cast<double>(n_total);
   const std::size_t end = std::min(n_total, last + static_cast<std::size_t>(tail) + 1);
   std::vector<double> x(end - first, 0.0);
   for (const auto& [at, amp] : drive.impulses) x[at - first] += amp;
   if (drive.continuous_gain != 0)
-    for (std::size_t n = first; n < std::min(end, friction.size()); ++n) x[n - first] += drive.continuous_gain * friction[n];
+    for (std::size_t n = first; n < std::min(end, friction.size()); ++n)
+      x[n - first] += drive.continuous_gain * friction[n];
   double y1 = 0, y2 = 0;
   for (std::size_t n = first; n < end; ++n) {
     const double y = a1 * y1 + a2 * y2 + b * x[n - first];
@@ -63,8 +70,8 @@ void render_mode(const Mode& mode, const ModeDrive& drive, const std::vector<flo
   }
 }
 
-// |sum_i f_i e^{i n theta_i}| / sum_i f_i: how strongly a contact pattern drives ring mode n. A single
-// point drives it fully; contacts spread evenly round the rim (a flat landing) cancel.
+// |sum_i f_i e^{i n theta_i}| / sum_i f_i: how strongly a contact pattern drives ring mode n. A
+// single point drives it fully; contacts spread evenly round the rim (a flat landing) cancel.
 double ring_excitation(const std::vector<RimContact>& contacts, int order) {
   if (order == 0) return 1.0;
   std::complex<double> sum = 0;
@@ -78,8 +85,8 @@ double ring_excitation(const std::vector<RimContact>& contacts, int order) {
 }
 
 // Zero-mean, unit-variance noise: Irwin-Hall sum of four 16-bit uniforms from one 64-bit SplitMix64
-// output. The generator is seeded once from the recording's Rng: one engine call per clip instead of
-// one per sample, and identical on every platform.
+// output. The generator is seeded once from the recording's Rng: one engine call per clip instead
+// of one per sample, and identical on every platform.
 class NoiseSource {
  public:
   explicit NoiseSource(Rng& rng) : state_(rng()) {}
@@ -88,7 +95,8 @@ class NoiseSource {
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     z ^= z >> 31;
-    const std::uint64_t sum = (z & 0xFFFF) + ((z >> 16) & 0xFFFF) + ((z >> 32) & 0xFFFF) + (z >> 48);
+    const std::uint64_t sum =
+        (z & 0xFFFF) + ((z >> 16) & 0xFFFF) + ((z >> 32) & 0xFFFF) + (z >> 48);
     return static_cast<float>((static_cast<double>(sum) / 65536.0 - 2.0) * std::numbers::sqrt3);
   }
 
@@ -112,7 +120,8 @@ std::vector<float> fractal_profile(std::size_t count, NoiseSource& noise) {
       kiss_fftr_alloc(static_cast<int>(nfft), 1, nullptr, nullptr), kiss_fftr_free);
   kiss_fftri(cfg.get(), spectrum.data(), profile.data());
   double slope_energy = 0;
-  for (std::size_t i = 1; i < nfft; ++i) slope_energy += (profile[i] - profile[i - 1]) * (profile[i] - profile[i - 1]);
+  for (std::size_t i = 1; i < nfft; ++i)
+    slope_energy += (profile[i] - profile[i - 1]) * (profile[i] - profile[i - 1]);
   const double scale = 1.0 / std::sqrt(slope_energy / static_cast<double>(nfft - 1));
   for (auto& h : profile) h = static_cast<float>(h * scale);
   profile.resize(count);
@@ -121,19 +130,21 @@ std::vector<float> fractal_profile(std::size_t count, NoiseSource& noise) {
 
 // The friction excitation at audio rate: normal force times the profile's change as it passes the
 // contact at the sliding speed (per-step physics values interpolated linearly).
-std::vector<float> friction_excitation(const ContactTrace& trace, int rate, std::size_t frames, double gain,
-                                       NoiseSource& noise) {
+std::vector<float> friction_excitation(const ContactTrace& trace, int rate, std::size_t frames,
+                                       double gain, NoiseSource& noise) {
   std::vector<float> e(frames, 0.0f);
   double distance = 0;
   for (double v : trace.sliding_speed) distance += v * trace.timestep_s;
   if (distance <= 0 || gain == 0) return e;
-  const auto profile = fractal_profile(static_cast<std::size_t>(distance / kProfileSpacing) + 4, noise);
+  const auto profile =
+      fractal_profile(static_cast<std::size_t>(distance / kProfileSpacing) + 4, noise);
   const std::size_t n_end = std::min(frames, static_cast<std::size_t>(trace.duration_s() * rate));
   double x = 0;  // m travelled
   double previous_height = profile[0];
   for (std::size_t n = 0; n < n_end; ++n) {
     const double step_pos = static_cast<double>(n) / rate / trace.timestep_s;
-    const std::size_t i = std::min(static_cast<std::size_t>(step_pos), static_cast<std::size_t>(trace.steps - 1));
+    const std::size_t i =
+        std::min(static_cast<std::size_t>(step_pos), static_cast<std::size_t>(trace.steps - 1));
     const std::size_t j = std::min(i + 1, static_cast<std::size_t>(trace.steps - 1));
     const double f = step_pos - static_cast<double>(i);
     const double v = trace.sliding_speed[i] * (1 - f) + trace.sliding_speed[j] * f;
@@ -164,14 +175,17 @@ std::vector<std::pair<std::size_t, float>> reverb_taps(const RoomConfig& room, i
     const double sign = uniform01(rng) < 0.5 ? -1.0 : 1.0;
     const double envelope = std::pow(10.0, -3.0 * t / room.rt60_s);
     // Scaled so that the tail's energy, not its tap count, is set by reverb_level.
-    const double amplitude = sign * room.reverb_level * envelope * std::sqrt(1000.0 / room.taps_per_s);
-    taps.emplace_back(static_cast<std::size_t>(std::lround(t * rate)), static_cast<float>(amplitude));
+    const double amplitude =
+        sign * room.reverb_level * envelope * std::sqrt(1000.0 / room.taps_per_s);
+    taps.emplace_back(static_cast<std::size_t>(std::lround(t * rate)),
+                      static_cast<float>(amplitude));
   }
   return taps;
 }
 
 // out[i + delay] += gain * in[i] over the overlap (vectorises).
-void add_delayed(const std::vector<float>& in, std::size_t delay, float gain, std::vector<float>& out) {
+void add_delayed(const std::vector<float>& in, std::size_t delay, float gain,
+                 std::vector<float>& out) {
   if (delay >= out.size()) return;
   const std::size_t n = std::min(in.size(), out.size() - delay);
   float* o = out.data() + delay;
@@ -186,17 +200,21 @@ double hertz_pulse_envelope(double omega, double duration_s) {
   return 1.0 / std::sqrt(1.0 + x * x * x * x);
 }
 
-SimulatedRecorder::SimulatedRecorder(const ObjectSpec& object, const TableSpec& table, const SimConfig& config)
+SimulatedRecorder::SimulatedRecorder(const ObjectSpec& object, const TableSpec& table,
+                                     const SimConfig& config)
     : object_(object),
       config_(config),
       object_modes_(sim::object_modes(object, 0.45 * config.recording.sample_rate)),
       table_modes_(sim::table_modes(table)),
       contact_modulus_(effective_modulus(object.material, table.material)) {
-  std::erase_if(table_modes_, [&](const Mode& m) { return m.frequency_hz >= 0.45 * config.recording.sample_rate; });
+  std::erase_if(table_modes_, [&](const Mode& m) {
+    return m.frequency_hz >= 0.45 * config.recording.sample_rate;
+  });
 }
 
 double SimulatedRecorder::contact_time(const Impact& impact) const {
-  return hertz_contact_time(impact.effective_mass, object_.contact_radius, contact_modulus_, impact.normal_speed);
+  return hertz_contact_time(impact.effective_mass, object_.contact_radius, contact_modulus_,
+                            impact.normal_speed);
 }
 
 audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rng) const {
@@ -206,8 +224,8 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
   const auto frames = static_cast<std::size_t>(std::lround(seconds * rate));
   const ContactTrace& trace = outcome.trace;
 
-  // Per-mode drives: each impact is an impulse of momentum m_eff v weighted by the pulse spectrum at
-  // the mode's frequency and, for ring modes, by the rim contact pattern.
+  // Per-mode drives: each impact is an impulse of momentum m_eff v weighted by the pulse spectrum
+  // at the mode's frequency and, for ring modes, by the rim contact pattern.
   std::vector<ModeDrive> object_drives(object_modes_.size()), table_drives(table_modes_.size());
   for (const Impact& impact : trace.impacts) {
     const auto at = static_cast<std::size_t>(std::lround(impact.time_s * rate));
@@ -223,13 +241,17 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
     for (std::size_t k = 0; k < table_modes_.size(); ++k) {
       const Mode& m = table_modes_[k];
       table_drives[k].impulses.emplace_back(
-          at, kTableCoupling * momentum * m.gain * hertz_pulse_envelope(kTwoPi * m.frequency_hz, tau));
+          at,
+          kTableCoupling * momentum * m.gain * hertz_pulse_envelope(kTwoPi * m.frequency_hz, tau));
     }
   }
   NoiseSource noise(rng);
-  const std::vector<float> friction = friction_excitation(trace, rate, frames, rec.friction_gain, noise);
-  for (std::size_t k = 0; k < object_modes_.size(); ++k) object_drives[k].continuous_gain = object_modes_[k].gain;
-  for (std::size_t k = 0; k < table_modes_.size(); ++k) table_drives[k].continuous_gain = kTableCoupling * table_modes_[k].gain;
+  const std::vector<float> friction =
+      friction_excitation(trace, rate, frames, rec.friction_gain, noise);
+  for (std::size_t k = 0; k < object_modes_.size(); ++k)
+    object_drives[k].continuous_gain = object_modes_[k].gain;
+  for (std::size_t k = 0; k < table_modes_.size(); ++k)
+    table_drives[k].continuous_gain = kTableCoupling * table_modes_[k].gain;
 
   std::pair<std::size_t, std::size_t> friction_span{frames, 0};
   for (std::size_t n = 0; n < friction.size(); ++n)
@@ -244,13 +266,14 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
   for (std::size_t k = 0; k < table_modes_.size(); ++k)
     render_mode(table_modes_[k], table_drives[k], friction, friction_span, rate, dry);
 
-  // The room: the dry sound plus its reverberant tail, shared by both capsules (they are centimetres
-  // apart in the same room).
+  // The room: the dry sound plus its reverberant tail, shared by both capsules (they are
+  // centimetres apart in the same room).
   std::vector<float> room = dry;
-  for (const auto& [delay, gain] : reverb_taps(config_.room, rate, rng)) add_delayed(dry, delay, gain, room);
+  for (const auto& [delay, gain] : reverb_taps(config_.room, rate, rng))
+    add_delayed(dry, delay, gain, room);
 
-  // Two capsules either side of the microphone position along y; each hears the room's sound with its
-  // own delay and 1/r gain, plus its own background noise.
+  // Two capsules either side of the microphone position along y; each hears the room's sound with
+  // its own delay and 1/r gain, plus its own background noise.
   audio::AudioClip clip;
   clip.sample_rate = rate;
   clip.channels = 2;
@@ -269,14 +292,16 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
                 static_cast<float>(rec.output_gain * kDirectPathGain / distance), heard);
     const float full_scale_max = 32767.0f / 32768.0f;
     for (std::size_t i = 0; i < frames; ++i)
-      clip.samples[2 * i + channel] = std::clamp(heard[i] + noise_rms * noise.next(), -1.0f, full_scale_max);
+      clip.samples[2 * i + channel] =
+          std::clamp(heard[i] + noise_rms * noise.next(), -1.0f, full_scale_max);
   }
   return clip;
 }
 
-Recording simulate_recording(SimulatedRobot& robot, const SimulatedRecorder& recorder, const std::string& action,
-                             Rng& rng) {
+Recording simulate_recording(SimulatedRobot& robot, const SimulatedRecorder& recorder,
+                             const std::string& action, Rng& rng) {
   Recording r;
+  robot.reset_trial(rng);
   r.outcome = robot.execute(action, rng);
   r.clip = recorder.record(r.outcome, rng);
   return r;

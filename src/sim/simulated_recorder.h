@@ -1,14 +1,16 @@
-// The simulated microphone: renders what it hears during one action from the action's contact trace,
-// by modal synthesis (van den Doel, Kry & Pai 2001).
+// The simulated microphone: renders what it hears during one action from the action's contact
+// trace, by modal synthesis (van den Doel, Kry & Pai 2001).
 //
 // Signal chain, per recording:
 //   impacts  -> Hertz force pulse (duration from effective mass, contact radius, E*, speed), whose
 //               spectrum weights each mode, and the rim contact pattern weights shell ring modes;
-//   sliding  -> a fractal (1/f^2) surface profile read at the sliding speed, scaled by normal force;
-//   both     -> the object's modes and the table's modes (damped resonators);
+//   sliding  -> a fractal (1/f^2) surface profile read at the sliding speed, scaled by normal
+//   force; both     -> the object's modes and the table's modes (damped resonators);
 //   -> a short room response (the direct sound plus a sparse, exponentially decaying noise tail);
-//   -> two microphone capsules, each with its own delay and 1/r gain from its distance to the object;
-//   -> background noise; -> a fixed output gain (loudness carries information, so no normalisation).
+//   -> two microphone capsules, each with its own delay and 1/r gain from its distance to the
+//   object;
+//   -> background noise; -> a fixed output gain (loudness carries information, so no
+//   normalisation).
 #pragma once
 
 #include <vector>
@@ -45,17 +47,18 @@ class SimulatedRecorder {
   double contact_modulus_ = 0;  // Pa, E* of object material on table material
 };
 
-// Runs `action` on `robot` and records it: the outcome and its clip, both from `rng`.
+// Begins a trial on `robot`, runs `action` as its first action and records it: the setup, the
+// outcome and its clip, all from `rng` (so one seed gives one file).
 struct Recording {
   ActionOutcome outcome;
   audio::AudioClip clip;
 };
-Recording simulate_recording(SimulatedRobot& robot, const SimulatedRecorder& recorder, const std::string& action,
-                             Rng& rng);
+Recording simulate_recording(SimulatedRobot& robot, const SimulatedRecorder& recorder,
+                             const std::string& action, Rng& rng);
 
 // The envelope of a Hertz pulse's spectrum used for synthesis: 1 / sqrt(1 + (omega tau / pi)^4).
-// It follows the half-sine spectrum's fall-off (1 at low frequency, (pi / omega tau)^2 above) without
-// its exact zeros, which a real, not exactly half-sine, pulse does not have.
+// It follows the half-sine spectrum's fall-off (1 at low frequency, (pi / omega tau)^2 above)
+// without its exact zeros, which a real, not exactly half-sine, pulse does not have.
 double hertz_pulse_envelope(double omega, double duration_s);
 
 }  // namespace echoplan::sim

@@ -2,13 +2,23 @@
 // reports what happened, including the object-table contacts the sound synthesis needs.
 //
 // Actions (the names used across echoplan):
-//   "slide"  - the fingertip pad pushes the object 5 cm along +x at the trial's push speed;
-//   "strike" - grasp (weld on), lift 5 cm, bring it down at the trial's impact speed onto the table,
-//              release (weld off).
-// Each execute() starts from the original system's initial configuration with the object at its
-// nominal place plus the trial's placement offset (a lab reset between actions). The move from the
-// initial configuration to the object is silent and done kinematically (checked for arm-table
-// contact at waypoints); the action proper is simulated dynamically and its time starts at 0.
+//   "slide"  - the fingertip pad pushes the object 5 cm along +x at the action's push speed;
+//   "strike" - the hand closes on the object (a compliant grasp), lifts it 5 cm, brings it down at
+//   the
+//              action's impact speed onto the table, levels it and holds it while the contact
+//              settles, then opens: one impact.
+//
+// A trial is a sequence of actions on one object: reset_trial() puts the arm in the original
+// system's initial configuration and the object at its nominal place (plus the trial's placement
+// and orientation); every execute() then continues from the state the previous action left (the
+// object where it ended, the arm where it stopped). The move from the arm's current pose to the
+// object is silent and kinematic (checked for arm-table contact at waypoints); the action proper is
+// simulated dynamically and its time starts at 0. Physical outcomes (the arm hits the table, the
+// object has been pushed out of reach or has fallen over) are reported in the outcome, never
+// thrown.
+//
+// The MuJoCo models are never written: the grasp is a spring-damper applied through mjData, and the
+// pad's contact with the object is chosen by stepping the compiled model variant the action needs.
 #pragma once
 
 #include <array>
@@ -28,41 +38,74 @@ class Scene;
 inline constexpr const char* kSlide = "slide";
 inline constexpr const char* kStrike = "strike";
 
+// How an action ended (the robot module's ActionStatus mirrors these).
+enum class ActionStatus {
+  done,       // ran to its end
+  collision,  // the arm touched the table; the action stopped there
+  failed,     // not carried out: the object is out of reach or has fallen over (see `reason`)
+};
+
+const char* to_string(ActionStatus status);
+
 struct ActionOutcome {
   std::string action;
-  bool collision = false;      // the arm touched the table; the action stopped there
-  double collision_time_s = 0; // s from the start of the action (negative: during the approach)
-  double duration_s = 0;       // s simulated, from the start of the action to its end (or the collision)
-  TrialParameters parameters;  // what was drawn for this trial
-  std::array<double, 3> object_displacement{};  // m, world frame: where the object ended minus where it began
-  ContactTrace trace;          // object-table contacts
+  ActionStatus status = ActionStatus::done;
+  std::string reason;           // for collision and failed: what happened, in words
+  double collision_time_s = 0;  // s from the start of the action (negative: during the approach)
+  double duration_s = 0;  // s simulated, from the start of the action to its end (or the collision)
+  TrialSetup setup;       // the trial's setup (the same for every action of a trial)
+  ActionVariation variation;             // what was drawn for this action
+  std::array<double, 3> object_start{};  // m, world: the object's base centre when the action began
+  std::array<double, 3>
+      object_displacement{};  // m, world frame: where the object ended minus where it began
+  ContactTrace trace;         // object-table contacts
+
+  bool collision() const { return status == ActionStatus::collision; }
 };
 
 class SimulatedRobot {
  public:
   // Builds the scene for `object` (compiling the MuJoCo model once). The catalogue and config are
-  // copied.
+  // copied. No trial has begun: the first execute() begins one (drawing its setup from its rng).
   SimulatedRobot(const Catalogue& catalogue, const std::string& object, const SimConfig& config);
   ~SimulatedRobot();
   SimulatedRobot(const SimulatedRobot&) = delete;
   SimulatedRobot& operator=(const SimulatedRobot&) = delete;
 
-  // Runs `action` ("slide" or "strike") once, drawing the trial's variability from `rng`.
-  // Throws InputError for an unknown action name.
+  // Begins a trial: arm in the initial configuration, grasp open, object at rest at its nominal
+  // place moved by `setup`. Drawing it from `rng` consumes sample_setup's draws.
+  void reset_trial(const TrialSetup& setup);
+  void reset_trial(Rng& rng);
+
+  // Runs `action` ("slide" or "strike") from the current state, drawing the action's variation from
+  // `rng` (and, if no trial has begun, the trial's setup first). Throws InputError for an unknown
+  // action name.
   ActionOutcome execute(const std::string& action, Rng& rng);
 
-  // As execute(), with the trial's parameters given instead of drawn.
-  ActionOutcome execute(const std::string& action, const TrialParameters& parameters);
+  // As execute(), with the action's variation given instead of drawn (a trial must have begun, or
+  // one with the nominal setup is begun).
+  ActionOutcome execute(const std::string& action, const ActionVariation& variation);
+
+  // The object's base centre (m, world) and whether a trial is under way.
+  std::array<double, 3> object_position() const;
+  bool trial_begun() const { return trial_begun_; }
+  const TrialSetup& setup() const { return setup_; }
 
   const ObjectSpec& object() const { return object_; }
   const TableSpec& table() const { return table_; }
   const SimConfig& config() const { return config_; }
+  // The MuJoCo scene (for inspection and tests; its models are never written).
+  const Scene& scene() const;
 
  private:
   ObjectSpec object_;
   TableSpec table_;
   SimConfig config_;
   std::unique_ptr<Scene> scene_;
+  bool trial_begun_ = false;
+  TrialSetup setup_;
+  std::array<double, 7>
+      joint_targets_{};  // rad, the arm's servo targets where the last action left them
 };
 
 }  // namespace echoplan::sim

@@ -1,5 +1,5 @@
-// Reading the simulator's YAML files (catalogue, sim config): the text of a file and its parse tree,
-// with failures as InputError naming the file (and, for a syntax error, the line).
+// Reading the simulator's YAML files (catalogue, sim config): the text of a file and its parse
+// tree, with failures as InputError naming the file (and, for a syntax error, the line).
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -8,7 +8,8 @@
 
 namespace echoplan::sim {
 
-// The whole text of `path`; throws InputError(path, 0, "cannot open the <what>") if it cannot be read.
+// The whole text of `path`; throws InputError(path, 0, "cannot open the <what>") if it cannot be
+// read.
 std::string read_text_file(const std::string& path, const std::string& what);
 
 // Parses YAML `text`; throws InputError(source, line, "not valid YAML: ...") on a syntax error.

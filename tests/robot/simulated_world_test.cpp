@@ -82,7 +82,7 @@ TEST(SimulatedWorld, SameSeedSameSoundAndListeningDoesNotChangeThePhysics) {
   mic_b.start("strike");
   arm_a.execute("strike");
   arm_b.execute("strike");
-  EXPECT_EQ(a->last_outcome()->parameters.named(), b->last_outcome()->parameters.named());
+  EXPECT_EQ(a->last_outcome()->variation.named(), b->last_outcome()->variation.named());
   EXPECT_EQ(a->last_outcome()->trace.impacts.size(), b->last_outcome()->trace.impacts.size());
   const audio::AudioClip clip_a = mic_a.stop(), clip_b = mic_b.stop();
   EXPECT_EQ(clip_a.samples.size(), clip_b.samples.size());

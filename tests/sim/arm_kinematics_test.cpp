@@ -2,10 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include "shipped_catalogue.h"
 #include "sim/catalogue.h"
 #include "sim/scene.h"
-
-#include "shipped_catalogue.h"
 
 namespace echoplan::sim {
 namespace {
@@ -15,17 +14,19 @@ TEST(ArmKinematics, MujocoModelAgreesWithTheJointTable) {
   // MJCF. Several configurations, including the initial one; agreement to 1e-9 m (double rounding).
   const Catalogue& c = shipped_catalogue();
   Scene scene(c.object("coffee_mug"), c.table, PhysicsConfig{});
-  mjModel* m = scene.model();
+  const mjModel* m = scene.model();
   mjData* d = scene.data();
-  std::vector<std::array<double, 7>> configurations{kInitialArmConfiguration, {0, 0, 0, 0, 0, 0, 0},
-                                                    {0.3, -1.0, 0.5, 1.2, -0.7, 0.9, 2.0}};
+  std::vector<std::array<double, 7>> configurations{
+      kInitialArmConfiguration, {0, 0, 0, 0, 0, 0, 0}, {0.3, -1.0, 0.5, 1.2, -0.7, 0.9, 2.0}};
   for (const auto& q : configurations) {
     for (int i = 0; i < 7; ++i) d->qpos[i] = q[i];
     mj_kinematics(m, d);
     const Eigen::Isometry3d pose = end_effector_pose(q);
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(d->site_xpos[3 * scene.end_effector_site + k], pose.translation()[k], 1e-9);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(d->site_xpos[3 * scene.end_effector_site + k], pose.translation()[k], 1e-9);
     for (int k = 0; k < 9; ++k)
-      EXPECT_NEAR(d->site_xmat[9 * scene.end_effector_site + k], pose.rotation()(k / 3, k % 3), 1e-9);
+      EXPECT_NEAR(d->site_xmat[9 * scene.end_effector_site + k], pose.rotation()(k / 3, k % 3),
+                  1e-9);
   }
 }
 

@@ -53,10 +53,11 @@ InputError parse_error(const std::string& text) {
 
 TEST(Catalogue, ShippedCatalogueHasTheProjectsObjects) {
   const Catalogue c = load_catalogue(kCatalogue);
-  for (const char* name : {"pringles_can", "coffee_mug", "plastic_cup", "paper_base", "pringles_can_weighted",
-                           "coffee_mug_weighted"})
+  for (const char* name : {"pringles_can", "coffee_mug", "plastic_cup", "paper_base",
+                           "pringles_can_weighted", "coffee_mug_weighted"})
     EXPECT_TRUE(c.objects.count(name)) << name;
-  for (const char* name : {"ceramic", "glass", "wood", "plastic", "polycarbonate", "steel", "paper", "cardboard"})
+  for (const char* name :
+       {"ceramic", "glass", "wood", "plastic", "polycarbonate", "steel", "paper", "cardboard"})
     EXPECT_TRUE(c.materials.count(name)) << name;
   EXPECT_DOUBLE_EQ(c.materials.at("ceramic").youngs_modulus, 7.2e10);
   EXPECT_DOUBLE_EQ(c.materials.at("steel").beta, 3e-8);
@@ -114,15 +115,24 @@ TEST(Catalogue, MissingFieldNamesTheEntryAndField) {
 }
 
 TEST(Catalogue, OtherErrorsAreReportedWithTheirEntry) {
-  EXPECT_NE(parse_error(replace(kValid, "base: mug", "base: cup")).problem().find("unknown base object 'cup'"),
+  EXPECT_NE(parse_error(replace(kValid, "base: mug", "base: cup"))
+                .problem()
+                .find("unknown base object 'cup'"),
             std::string::npos);
-  EXPECT_NE(parse_error(replace(kValid, "poisson_ratio: 0.19", "poisson_ratio: 0.7")).problem().find("materials.ceramic"),
+  EXPECT_NE(parse_error(replace(kValid, "poisson_ratio: 0.19", "poisson_ratio: 0.7"))
+                .problem()
+                .find("materials.ceramic"),
             std::string::npos);
-  EXPECT_NE(parse_error(replace(kValid, "radius: 0.04", "radius: big")).problem().find("must be a number"),
+  EXPECT_NE(parse_error(replace(kValid, "radius: 0.04", "radius: big"))
+                .problem()
+                .find("must be a number"),
             std::string::npos);
-  EXPECT_NE(parse_error(replace(kValid, "mass: 0.2,", "mass: 0,")).problem().find("heavy_mug.added_mass"),
-            std::string::npos);
-  EXPECT_NE(parse_error(replace(kValid, "wall_thickness: 0.005", "wall_thickness: 0.05")).problem().find("wall_thickness"),
+  EXPECT_NE(
+      parse_error(replace(kValid, "mass: 0.2,", "mass: 0,")).problem().find("heavy_mug.added_mass"),
+      std::string::npos);
+  EXPECT_NE(parse_error(replace(kValid, "wall_thickness: 0.005", "wall_thickness: 0.05"))
+                .problem()
+                .find("wall_thickness"),
             std::string::npos);
   EXPECT_EQ(parse_error("materials: [unclosed").line(), 1);
 }

@@ -9,9 +9,8 @@
 
 #include "audio/io.h"
 #include "common/error.h"
-#include "sim/simulated_recorder.h"
-
 #include "shipped_catalogue.h"
+#include "sim/simulated_recorder.h"
 
 namespace echoplan::sim {
 namespace {
@@ -40,18 +39,21 @@ TEST(Dataset, WritesEveryPairAndAManifestThatReproducesEachFile) {
   options.output_dir = dir.string();
   std::atomic<bool> stop{false};
   int calls = 0;
-  const DatasetSummary s = write_dataset(shipped_catalogue(), SimConfig{}, options,
-                                         [&](int done, int total, const std::string&) {
-                                           ++calls;
-                                           EXPECT_EQ(total, 8);
-                                           EXPECT_EQ(done, calls);
-                                         },
-                                         stop);
+  const DatasetSummary s = write_dataset(
+      shipped_catalogue(), SimConfig{}, options,
+      [&](int done, int total, const std::string&) {
+        ++calls;
+        EXPECT_EQ(total, 8);
+        EXPECT_EQ(done, calls);
+      },
+      stop);
   EXPECT_EQ(s.written, 8);
   EXPECT_FALSE(s.interrupted);
   const auto rows = lines_of(dir / "manifest.csv");
   ASSERT_EQ(rows.size(), 9u);
-  EXPECT_EQ(rows[0].rfind("file,object,action,seed,collision,duration_s,impacts,impact_speed,", 0), 0u) << rows[0];
+  EXPECT_EQ(rows[0].rfind("file,object,action,seed,collision,duration_s,impacts,impact_speed,", 0),
+            0u)
+      << rows[0];
   EXPECT_TRUE(fs::exists(dir / "plastic_cup/strike/001.wav"));
   EXPECT_TRUE(fs::exists(dir / "coffee_mug/slide/000.wav"));
 
@@ -84,14 +86,16 @@ TEST(Dataset, StoppingKeepsFinishedFilesAndTheirRows) {
   options.per_pair = 5;
   options.output_dir = dir.string();
   std::atomic<bool> stop{false};
-  const DatasetSummary s =
-      write_dataset(shipped_catalogue(), SimConfig{}, options, [&](int done, int, const std::string&) { stop = done == 2; }, stop);
+  const DatasetSummary s = write_dataset(
+      shipped_catalogue(), SimConfig{}, options,
+      [&](int done, int, const std::string&) { stop = done == 2; }, stop);
   EXPECT_TRUE(s.interrupted);
   EXPECT_EQ(s.written, 2);
   EXPECT_EQ(lines_of(dir / "manifest.csv").size(), 3u);
   EXPECT_TRUE(fs::exists(dir / "paper_base/strike/001.wav"));
   EXPECT_FALSE(fs::exists(dir / "paper_base/strike/002.wav"));
-  for (const auto& entry : fs::recursive_directory_iterator(dir)) EXPECT_NE(entry.path().extension(), ".part");
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    EXPECT_NE(entry.path().extension(), ".part");
   fs::remove_all(dir);
 }
 

@@ -29,7 +29,8 @@ ObjectSpec mug() {
 
 TEST(ModalModel, RayleighDecay) {
   // alpha/2 + beta w^2/2 at 1 kHz: 3 + 1e-7 * (2 pi 1000)^2 / 2 = 3 + 1.9739...
-  EXPECT_NEAR(ceramic().decay_rate(1000.0), 3.0 + 1e-7 * std::pow(2 * std::numbers::pi * 1000, 2) / 2, 1e-12);
+  EXPECT_NEAR(ceramic().decay_rate(1000.0),
+              3.0 + 1e-7 * std::pow(2 * std::numbers::pi * 1000, 2) / 2, 1e-12);
 }
 
 TEST(ModalModel, RingModesFollowLovesFormula) {
@@ -40,7 +41,8 @@ TEST(ModalModel, RingModesFollowLovesFormula) {
   EXPECT_NEAR(modes[0].frequency_hz, 2026.35, 0.01);
   EXPECT_EQ(modes[0].azimuthal_order, 2);
   // n = 3 is n(n^2-1)/sqrt(n^2+1) = 24/sqrt(10) against 6/sqrt(5): a ratio of 2.8284.
-  EXPECT_NEAR(modes[1].frequency_hz / modes[0].frequency_hz, 24 / std::sqrt(10.0) / (6 / std::sqrt(5.0)), 1e-9);
+  EXPECT_NEAR(modes[1].frequency_hz / modes[0].frequency_hz,
+              24 / std::sqrt(10.0) / (6 / std::sqrt(5.0)), 1e-9);
   EXPECT_DOUBLE_EQ(modes[0].decay_per_s, ceramic().decay_rate(modes[0].frequency_hz));
 }
 
@@ -54,7 +56,8 @@ TEST(ModalModel, ClosedTubeRingsAtHalfWavelengthCavity) {
     if (std::abs(m.frequency_hz - kSpeedOfSound / (2 * 0.23)) < 1e-9) ++cavities;
   EXPECT_EQ(cavities, 1);
   can.closed = false;
-  for (const auto& m : object_modes(can, 20000)) EXPECT_GT(std::abs(m.frequency_hz - kSpeedOfSound / (2 * 0.23)), 1.0);
+  for (const auto& m : object_modes(can, 20000))
+    EXPECT_GT(std::abs(m.frequency_hz - kSpeedOfSound / (2 * 0.23)), 1.0);
 }
 
 TEST(ModalModel, ListedModesReplaceDerivedOnesAndModesAboveTheLimitAreDropped) {
@@ -89,7 +92,8 @@ TEST(ModalModel, HalfSineSpectrumMatchesNumericalFourierTransform) {
     const int n = 20000;
     for (int i = 0; i < n; ++i) {
       const double t = (i + 0.5) * tau / n;
-      sum += std::numbers::pi / (2 * tau) * std::sin(std::numbers::pi * t / tau) * std::polar(1.0, -w * t) * (tau / n);
+      sum += std::numbers::pi / (2 * tau) * std::sin(std::numbers::pi * t / tau) *
+             std::polar(1.0, -w * t) * (tau / n);
     }
     EXPECT_NEAR(half_sine_pulse_spectrum(w, tau), std::abs(sum), 1e-6) << f;
   }
@@ -110,7 +114,8 @@ TEST(ModalModel, SynthesisEnvelopeFollowsTheHalfSineSpectrumsLobes) {
     EXPECT_GE(half_sine_pulse_spectrum(w, tau), hertz_pulse_envelope(w, tau)) << x;
   }
   // A longer contact is duller: less at 3 kHz.
-  EXPECT_LT(hertz_pulse_envelope(2 * std::numbers::pi * 3000, 1.2e-3), hertz_pulse_envelope(2 * std::numbers::pi * 3000, 1e-3));
+  EXPECT_LT(hertz_pulse_envelope(2 * std::numbers::pi * 3000, 1.2e-3),
+            hertz_pulse_envelope(2 * std::numbers::pi * 3000, 1e-3));
 }
 
 }  // namespace

@@ -9,14 +9,15 @@
 namespace echoplan::sim {
 
 inline const Catalogue& shipped_catalogue() {
-  static const Catalogue c = load_catalogue(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml");
+  static const Catalogue c =
+      load_catalogue(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml");
   return c;
 }
 
 // Every spread at its mean, no tilt.
-inline TrialParameters nominal_trial() {
+inline ActionVariation nominal_trial() {
   const VariabilityConfig v;
-  TrialParameters p;
+  ActionVariation p;
   p.impact_speed = v.impact_speed.mean;
   p.grasp_height = v.grasp_height.mean;
   p.push_speed = v.push_speed.mean;

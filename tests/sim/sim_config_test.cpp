@@ -20,10 +20,11 @@ TEST(SimConfig, EmptyTextGivesDefaults) {
 
 TEST(SimConfig, ShippedExampleStatesTheDefaults) {
   // objects/sim_config.yaml documents the defaults: loading it must change nothing.
-  const SimConfig c = load_sim_config(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/sim_config.yaml");
+  const SimConfig c =
+      load_sim_config(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/sim_config.yaml");
   const SimConfig d;
   Rng a(3), b(3);
-  EXPECT_EQ(sample_trial(c.variability, a).named(), sample_trial(d.variability, b).named());
+  EXPECT_EQ(sample_action(c.variability, a).named(), sample_action(d.variability, b).named());
   EXPECT_EQ(c.microphone.position, d.microphone.position);
   EXPECT_EQ(c.recording.sample_rate, d.recording.sample_rate);
   const std::vector<std::tuple<const char*, double, double>> fields{
@@ -76,17 +77,20 @@ TEST(SimConfig, ErrorsNameFileLineAndField) {
   const InputError range = error_of("physics:\n  timestep_s: 0.1\n");
   EXPECT_EQ(range.line(), 2);
   EXPECT_NE(range.problem().find("physics.timestep_s"), std::string::npos);
-  EXPECT_NE(error_of("variability:\n  push_speed: 0.1\n").problem().find("{mean: ..., spread: ...}"), std::string::npos);
+  EXPECT_NE(
+      error_of("variability:\n  push_speed: 0.1\n").problem().find("{mean: ..., spread: ...}"),
+      std::string::npos);
   EXPECT_NE(error_of("colour: red\n").problem().find("unknown section"), std::string::npos);
-  EXPECT_NE(error_of("microphone:\n  position: [1, 2]\n").problem().find("[x, y, z]"), std::string::npos);
+  EXPECT_NE(error_of("microphone:\n  position: [1, 2]\n").problem().find("[x, y, z]"),
+            std::string::npos);
 }
 
 TEST(SimConfig, TrialsAreReproducibleAndWithinThreeSpreads) {
   VariabilityConfig v;
   Rng a(42), b(42);
   for (int i = 0; i < 200; ++i) {
-    const TrialParameters p = sample_trial(v, a);
-    const TrialParameters q = sample_trial(v, b);
+    const ActionVariation p = sample_action(v, a);
+    const ActionVariation q = sample_action(v, b);
     EXPECT_EQ(p.named(), q.named());
     EXPECT_LE(std::abs(p.impact_speed - v.impact_speed.mean), 3 * v.impact_speed.spread + 1e-15);
     EXPECT_LE(std::abs(p.grasp_height - v.grasp_height.mean), 3 * v.grasp_height.spread + 1e-15);

@@ -13,7 +13,6 @@
 
 #include "audio/features.h"
 #include "audio/io.h"
-
 #include "shipped_catalogue.h"
 
 namespace echoplan::sim {
@@ -29,8 +28,8 @@ SimConfig quiet() {
 
 // Magnitude spectrum of `count` frames of `channel` from `start`, Hann-windowed, zero-padded to a
 // power of two >= 4 * count (bins of rate / nfft Hz).
-std::vector<double> spectrum(const audio::AudioClip& clip, int channel, std::size_t start, std::size_t count,
-                             double* bin_hz) {
+std::vector<double> spectrum(const audio::AudioClip& clip, int channel, std::size_t start,
+                             std::size_t count, double* bin_hz) {
   std::size_t nfft = 1;
   while (nfft < 4 * count) nfft *= 2;
   std::vector<float> x(nfft, 0.0f);
@@ -49,14 +48,15 @@ std::vector<double> spectrum(const audio::AudioClip& clip, int channel, std::siz
 }
 
 // The nominal trial with a small tilt, so the rim lands first and every ring mode is excited.
-TrialParameters nominal() {
-  TrialParameters p = nominal_trial();
+ActionVariation nominal() {
+  ActionVariation p = nominal_trial();
   p.impact_tilt_deg = 3;
   return p;
 }
 
 TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
-  // An object with listed modes; the peak nearest each must sit on it, far above the spectrum floor.
+  // An object with listed modes; the peak nearest each must sit on it, far above the spectrum
+  // floor.
   Catalogue c = shipped_catalogue();
   ObjectSpec bell = c.object("coffee_mug");
   bell.listed_modes = {{900, 1.0, 8.0}, {2300, 1.0, 8.0}, {4100, 1.0, 8.0}};
@@ -78,7 +78,8 @@ TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
     // Search +-100 Hz around the mode. A decay of 8/s makes a peak with a half-power half-width of
     // 8/(2 pi) = 1.3 Hz; the rim hit and the flat landing that follows interfere within it, so the
     // maximum lies within 1 Hz of the mode.
-    const auto lo = static_cast<std::size_t>((f - 100) / bin), hi = static_cast<std::size_t>((f + 100) / bin);
+    const auto lo = static_cast<std::size_t>((f - 100) / bin),
+               hi = static_cast<std::size_t>((f + 100) / bin);
     const auto peak = std::max_element(mag.begin() + lo, mag.begin() + hi) - mag.begin();
     EXPECT_NEAR(peak * bin, f, 1.0) << f;
     EXPECT_GT(mag[peak], 100 * floor) << f;  // 40 dB above the median level
@@ -98,7 +99,8 @@ TEST(SimulatedRecorder, DerivedModesOfTheMugAppearInItsStrike) {
   int checked = 0;
   for (const Mode& m : recorder.object_modes()) {
     if (m.frequency_hz > 8000) continue;  // beyond the Hertz pulse's reach at this contact time
-    const auto lo = static_cast<std::size_t>((m.frequency_hz - 50) / bin), hi = static_cast<std::size_t>((m.frequency_hz + 50) / bin);
+    const auto lo = static_cast<std::size_t>((m.frequency_hz - 50) / bin),
+               hi = static_cast<std::size_t>((m.frequency_hz + 50) / bin);
     const auto peak = std::max_element(mag.begin() + lo, mag.begin() + hi) - mag.begin();
     // Faster decay (tens per second) widens the peak: within 1 Hz.
     EXPECT_NEAR(peak * bin, m.frequency_hz, 1.0) << m.frequency_hz;
@@ -132,7 +134,8 @@ TEST(SimulatedRecorder, HeavierObjectSoundsDuller) {
     SimulatedRecorder recorder(robot.object(), robot.table(), config);
     const ActionOutcome out = robot.execute("strike", nominal());
     Rng rng(11);
-    share[i] = high_frequency_share(recorder.record(out, rng), out.trace.impacts.front().time_s, 1500);
+    share[i] =
+        high_frequency_share(recorder.record(out, rng), out.trace.impacts.front().time_s, 1500);
   }
   // Same modes, longer contact: measurably less of the energy above 1.5 kHz (at least 10% less).
   EXPECT_LT(share[1], share[0] * 0.9) << share[0] << " " << share[1];
@@ -151,7 +154,8 @@ TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
   // Expected: each capsule hears the source (0.02 m above the object's base) at its own distance.
   double distance[2];
   for (int ch = 0; ch < 2; ++ch) {
-    const double dy = config.microphone.position[1] + (ch == 0 ? 0.1 : -0.1) - out.trace.object_position[1];
+    const double dy =
+        config.microphone.position[1] + (ch == 0 ? 0.1 : -0.1) - out.trace.object_position[1];
     const double dx = config.microphone.position[0] - out.trace.object_position[0];
     const double dz = config.microphone.position[2] - out.trace.object_position[2] - 0.02;
     distance[ch] = std::sqrt(dx * dx + dy * dy + dz * dz);
@@ -164,7 +168,8 @@ TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
   const long n = static_cast<long>(clip.frames());
   for (long lag = -40; lag <= 40; ++lag) {
     double sum = 0;
-    for (long i = 100; i < n - 100; ++i) sum += clip.samples[2 * (i + lag)] * clip.samples[2 * i + 1];
+    for (long i = 100; i < n - 100; ++i)
+      sum += clip.samples[2 * (i + lag)] * clip.samples[2 * i + 1];
     if (sum > best) {
       best = sum;
       best_lag = lag;
@@ -176,14 +181,16 @@ TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
   // (to float rounding, 1e-4).
   double energy[2] = {0, 0};
   for (std::size_t i = 0; i < clip.frames(); ++i)
-    for (int ch = 0; ch < 2; ++ch) energy[ch] += clip.samples[2 * i + ch] * clip.samples[2 * i + ch];
+    for (int ch = 0; ch < 2; ++ch)
+      energy[ch] += clip.samples[2 * i + ch] * clip.samples[2 * i + ch];
   EXPECT_NEAR(std::sqrt(energy[0] / energy[1]), distance[1] / distance[0], 1e-4);
 }
 
 TEST(SimulatedRecorder, BackgroundNoiseHasTheConfiguredLevel) {
   SimConfig config;
   config.recording.noise_dbfs = -40;
-  SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table, config);
+  SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
+                             config);
   ActionOutcome silent;  // no contacts at all
   Rng rng(9);
   const audio::AudioClip clip = recorder.record(silent, rng);
@@ -217,19 +224,22 @@ TEST(SimulatedRecorder, SameSeedGivesIdenticalFiles) {
   std::filesystem::remove_all(dir);
 }
 
-// The seed's observation feature: the MFCC matrix (frames x coefficients) of the whole clip, channels
-// averaged, flattened (every clip here is 3 s long, so the vectors have equal length).
-std::vector<double> mfcc_features(const audio::AudioClip& clip, audio::FeatureExtractor& extractor) {
+// The seed's observation feature: the MFCC matrix (frames x coefficients) of the whole clip,
+// channels averaged, flattened (every clip here is 3 s long, so the vectors have equal length).
+std::vector<double> mfcc_features(const audio::AudioClip& clip,
+                                  audio::FeatureExtractor& extractor) {
   std::vector<float> mono(clip.frames());
-  for (std::size_t i = 0; i < clip.frames(); ++i) mono[i] = 0.5f * (clip.samples[2 * i] + clip.samples[2 * i + 1]);
+  for (std::size_t i = 0; i < clip.frames(); ++i)
+    mono[i] = 0.5f * (clip.samples[2 * i] + clip.samples[2 * i + 1]);
   audio::Features features;
   extractor.compute(mono, features);
   return {features.mfcc.values.begin(), features.mfcc.values.end()};
 }
 
 TEST(SimulatedRecorder, NearestCentroidTellsTheFourObjectsApart) {
-  // Sanity check, not the classifier: 6 training and 4 test recordings per (object, action) with the
-  // default variability; a nearest-centroid on MFCC (librosa preset) must beat chance (25%) by far.
+  // Sanity check, not the classifier: 6 training and 4 test recordings per (object, action) with
+  // the default variability; a nearest-centroid on MFCC (librosa preset) must beat chance (25%) by
+  // far.
   const SimConfig config;
   audio::FeatureExtractor extractor(audio::librosa_preset(config.recording.sample_rate));
   const std::vector<std::string> objects{"pringles_can", "coffee_mug", "plastic_cup", "paper_base"};
@@ -240,8 +250,10 @@ TEST(SimulatedRecorder, NearestCentroidTellsTheFourObjectsApart) {
       SimulatedRobot robot(shipped_catalogue(), name, config);
       SimulatedRecorder recorder(robot.object(), robot.table(), config);
       for (int i = 0; i < 10; ++i) {
-        Rng rng(derive_seed(2024, {static_cast<std::uint64_t>(i), name.size(), static_cast<std::uint64_t>(action[1])}));
-        const auto features = mfcc_features(simulate_recording(robot, recorder, action, rng).clip, extractor);
+        Rng rng(derive_seed(2024, {static_cast<std::uint64_t>(i), name.size(),
+                                   static_cast<std::uint64_t>(action[1])}));
+        const auto features =
+            mfcc_features(simulate_recording(robot, recorder, action, rng).clip, extractor);
         (i < 6 ? train : test)[name].push_back(features);
       }
     }

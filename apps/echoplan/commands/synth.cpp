@@ -9,19 +9,22 @@
 namespace echoplan::cli {
 
 void add_synth_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("synth",
-                                 "Simulate one action (slide or strike) on one object and write the stereo "
-                                 "16-bit recording.\nExample: echoplan synth --object coffee_mug --action strike "
-                                 "--seed 7 -o clip.wav");
+  auto* cmd = app.add_subcommand(
+      "synth",
+      "Simulate one action (slide or strike) on one object and write the stereo "
+      "16-bit recording.\nExample: echoplan synth --object coffee_mug --action strike "
+      "--seed 7 -o clip.wav");
   struct Options {
     SimFiles files;
     std::string object, action = "strike", output;
     std::uint64_t seed = 0;
   };
   auto opt = std::make_shared<Options>();
-  cmd->add_option("--object", opt->object, "Object name from the catalogue (e.g. coffee_mug)")->required();
+  cmd->add_option("--object", opt->object, "Object name from the catalogue (e.g. coffee_mug)")
+      ->required();
   cmd->add_option("--action", opt->action, "slide or strike")->capture_default_str();
-  cmd->add_option("--seed", opt->seed, "Seed of every random choice; a dataset's manifest lists each file's seed")
+  cmd->add_option("--seed", opt->seed,
+                  "Seed of every random choice; a dataset's manifest lists each file's seed")
       ->capture_default_str();
   cmd->add_option("-o,--output", opt->output, "WAV (or .flac) file to write")->required();
   add_sim_file_options(*cmd, opt->files);
@@ -35,12 +38,19 @@ void add_synth_command(CLI::App& app) {
 
     // What happened, for people: the trial's parameters and each impact.
     const auto& out = r.outcome;
-    fmt::print("{} {} (seed {}): {:.2f} s simulated, {:.2f} s recorded{}\n", opt->object, opt->action, opt->seed,
-               out.duration_s, r.clip.duration_seconds(), out.collision ? ", COLLISION: the arm touched the table" : "");
-    for (const auto& [name, value] : out.parameters.named()) fmt::print("  {:<17} {:.4g}\n", name, value);
+    fmt::print("{} {} (seed {}): {:.2f} s simulated, {:.2f} s recorded{}\n", opt->object,
+               opt->action, opt->seed, out.duration_s, r.clip.duration_seconds(),
+               out.status == sim::ActionStatus::done
+                   ? ""
+                   : fmt::format(", {}: {}", to_string(out.status), out.reason));
+    for (const auto& [name, value] : out.setup.named())
+      fmt::print("  {:<17} {:.4g}\n", name, value);
+    for (const auto& [name, value] : out.variation.named())
+      fmt::print("  {:<17} {:.4g}\n", name, value);
     for (const auto& impact : out.trace.impacts)
-      fmt::print("  impact at {:.3f} s: {:.3f} m/s, effective mass {:.3f} kg, contact {:.2f} ms\n", impact.time_s,
-                 impact.normal_speed, impact.effective_mass, 1e3 * recorder.contact_time(impact));
+      fmt::print("  impact at {:.3f} s: {:.3f} m/s, effective mass {:.3f} kg, contact {:.2f} ms\n",
+                 impact.time_s, impact.normal_speed, impact.effective_mass,
+                 1e3 * recorder.contact_time(impact));
     fmt::print("wrote {}\n", opt->output);
   });
 }

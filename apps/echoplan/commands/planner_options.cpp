@@ -1,0 +1,95 @@
+#include "commands/planner_options.h"
+
+#include <fmt/core.h>
+#include <spdlog/spdlog.h>
+
+#include "solvers/make_solver.h"
+#include "solvers/offline/offline_policy_solver.h"
+
+namespace echoplan::cli {
+
+void add_planner_options(CLI::App& cmd, PlannerFlags& f) {
+  cmd.add_option("--solver", f.solver, "abt, pomcp or offline (default: the problem file's)");
+  cmd.add_option("--policy", f.policy,
+                 "--solver offline: policy.json from `echoplan solve --out` (else solved now)");
+  auto* episodes = cmd.add_option(
+      "--episodes", f.episodes,
+      "Search episodes per step (reproducible bit for bit; default: the problem file's budget)");
+  auto* step_ms = cmd.add_option("--step-ms", f.step_ms, "Search wall time per step, ms");
+  episodes->excludes(step_ms);
+  cmd.add_option("--exploration", f.exploration,
+                 "UCB exploration constant c, reward units (default: the problem file's)");
+  cmd.add_option("--depth", f.depth, "Maximum search depth (default: the problem file's)");
+  cmd.add_option("--leaf", f.leaf, "Leaf value: lookahead, heuristic or rollout")
+      ->capture_default_str();
+  cmd.add_option("--expand-after", f.expand_after,
+                 "Visits a new node is valued as a leaf before it branches")
+      ->capture_default_str();
+  cmd.add_option("--root-particles", f.root_particles,
+                 "Particles drawn into the search root (default: the problem's belief size)");
+  cmd.add_option("--branch-threshold", f.branch_threshold,
+                 "Continuous observations closer than this share a branch")
+      ->capture_default_str();
+}
+
+namespace {
+
+solvers::SearchOptions search_options(const PlannerFlags& f, const pomdp::Problem& problem) {
+  solvers::SearchOptions o;
+  o.exploration = f.exploration >= 0 ? f.exploration : problem.planner.exploration;
+  o.max_depth = f.depth >= 0 ? f.depth : problem.planner.depth;
+  o.leaf.mode = solvers::parse_leaf_mode(f.leaf);
+  o.leaf.expand_after = f.expand_after;
+  o.root_particles = f.root_particles >= 0 ? f.root_particles : problem.belief.particles;
+  o.branching.continuous_threshold = f.branch_threshold;
+  o.validate();
+  return o;
+}
+
+solvers::Budget budget(const PlannerFlags& f, const pomdp::Problem& problem) {
+  if (f.episodes > 0) return solvers::Budget::episodes(f.episodes);
+  if (f.step_ms > 0) return solvers::Budget::milliseconds(f.step_ms);
+  if (problem.planner.episodes > 0) return solvers::Budget::episodes(problem.planner.episodes);
+  return solvers::Budget::milliseconds(static_cast<std::int64_t>(problem.planner.step_ms));
+}
+
+}  // namespace
+
+Planner make_planner(const PlannerFlags& f, const pomdp::Problem& problem,
+                     const std::string& problem_path) {
+  Planner p;
+  p.name = f.solver.empty() ? problem.planner.solver : f.solver;
+  p.options = search_options(f, problem);
+  p.budget = budget(f, problem);
+  if (p.name == "offline") {
+    // The policy file when given, else the point-based solver run now (to its default precision or
+    // time limit).
+    if (f.policy.empty()) spdlog::info("solving {} offline (no --policy given)", problem_path);
+    p.solver = solvers::offline::make_offline_solver(problem.model, {}, f.policy, problem_path);
+  } else {
+    p.solver = solvers::make_solver(p.name, problem.model, p.options);
+  }
+  return p;
+}
+
+std::string Planner::describe() const {
+  return budget.kind == solvers::Budget::Kind::episodes
+             ? fmt::format("{}, {} episodes/step", name, budget.amount)
+             : fmt::format("{}, {} ms/step", name, budget.amount);
+}
+
+nlohmann::json Planner::to_json() const {
+  return {
+      {"solver", name},
+      {"budget",
+       {{budget.kind == solvers::Budget::Kind::episodes ? "episodes" : "step_ms", budget.amount}}},
+      {"search",
+       {{"exploration", options.exploration},
+        {"max_depth", options.max_depth},
+        {"leaf", solvers::leaf_mode_name(options.leaf.mode)},
+        {"expand_after", options.leaf.expand_after},
+        {"root_particles", options.root_particles},
+        {"branch_threshold", options.branching.continuous_threshold}}}};
+}
+
+}  // namespace echoplan::cli

@@ -1,0 +1,91 @@
+#include "experiment/loop_log.h"
+
+#include <fmt/format.h>
+
+#include "audio/io.h"
+#include "common/error.h"
+
+namespace echoplan::experiment {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::ofstream open_for_writing(const fs::path& path) {
+  std::ofstream out(path, std::ios::trunc);
+  if (!out) throw InputError(path.string(), 0, "cannot write this file (is the folder writable?)");
+  return out;
+}
+
+nlohmann::json named_values(const std::vector<std::string>& names,
+                            const std::vector<double>& values) {
+  nlohmann::json j = nlohmann::json::object();
+  for (std::size_t i = 0; i < names.size() && i < values.size(); ++i) j[names[i]] = values[i];
+  return j;
+}
+
+}  // namespace
+
+LoopLog::LoopLog(const fs::path& directory, const pomdp::ObjectIdentificationModel& model)
+    : directory_(directory), objects_(model.data().objects) {
+  std::error_code ec;
+  fs::create_directories(directory_ / "clips", ec);
+  if (ec)
+    throw InputError(directory_.string(), 0, "cannot create the output folder: " + ec.message());
+  csv_ = open_for_writing(directory_ / "loop_steps.csv");
+  jsonl_ = open_for_writing(directory_ / "loop_steps.jsonl");
+  csv_ << "trial,step,action,status,heard,probability,observation";
+  for (const auto& o : objects_) csv_ << ",p_" << o;
+  csv_ << ",reward,clip\n" << std::flush;
+}
+
+nlohmann::json LoopLog::write_step(const LoopStep& step, const std::vector<double>& belief_before,
+                                   const std::vector<double>* belief_after) {
+  std::string clip;
+  if (step.recorded) {
+    clip = fmt::format("clips/{:03d}_{:02d}_{}.wav", step.trial, step.step, step.action_name);
+    audio::write_audio((directory_ / clip).string(), step.clip);
+  }
+  const std::string heard =
+      step.classified ? (step.heard.unknown ? "unknown" : step.heard.label) : "";
+  csv_ << step.trial << ',' << step.step << ',' << step.action_name << ','
+       << robot::to_string(step.report.status) << ',' << heard << ','
+       << (step.classified ? fmt::format("{:.4f}", step.heard.probability) : "") << ','
+       << step.observation_name;
+  for (std::size_t k = 0; k < objects_.size(); ++k)
+    csv_ << ',' << (belief_after ? fmt::format("{:.4f}", (*belief_after)[k]) : "");
+  csv_ << ',' << fmt::format("{:g}", step.reward) << ',' << clip << '\n' << std::flush;
+
+  nlohmann::json j = {
+      {"trial", step.trial},
+      {"step", step.step},
+      {"action", step.action_name},
+      {"report",
+       {{"status", robot::to_string(step.report.status)},
+        {"reason", step.report.reason},
+        {"duration_s", step.report.duration_s}}},
+      {"observation", step.observation_name},
+      {"reward", step.reward},
+      {"terminal", step.terminal},
+      {"belief_before", named_values(objects_, belief_before)},
+      {"belief_after",
+       belief_after ? named_values(objects_, *belief_after) : nlohmann::json(nullptr)},
+      {"clip", clip.empty() ? nlohmann::json(nullptr) : nlohmann::json(clip)},
+  };
+  if (step.classified) {
+    nlohmann::json probabilities = nlohmann::json::object(), features = nlohmann::json::object();
+    for (const auto& [name, p] : step.heard.probabilities) probabilities[name] = p;
+    for (const auto& [name, v] : step.heard.features) features[name] = v;
+    j["heard"] = {{"label", step.heard.label},
+                  {"unknown", step.heard.unknown},
+                  {"probability", step.heard.probability},
+                  {"probabilities", probabilities},
+                  {"distance", step.heard.distance},
+                  {"observe_ms", step.observe_ms}};
+    j["features"] = features;
+  }
+  jsonl_ << j.dump() << '\n' << std::flush;
+  return j;
+}
+
+}  // namespace echoplan::experiment
