@@ -48,7 +48,14 @@ int main(int argc, char** argv) {
       throw echoplan::InputError("~out", 0, "the parameter is required: the folder for the logs");
     priv.param("trials", settings.trials, 1);
     priv.param("max_steps", settings.max_steps, 100);
-    priv.param<std::string>("seed", seed_text, "1");  // a string: XML-RPC integers are 32-bit
+    // XML-RPC integers are 32-bit: a larger seed is given as a string ("_seed:='\"12345678901\"'").
+    if (int small_seed = 0; priv.getParam("seed", small_seed)) {
+      if (small_seed < 0)
+        throw echoplan::InputError("~seed", 0, fmt::format("must be >= 0, got {}", small_seed));
+      seed_text = std::to_string(small_seed);
+    } else {
+      priv.getParam("seed", seed_text);
+    }
     priv.param<std::string>("solver", settings.solver, "");
     priv.param("episodes", episodes, 0);
     priv.param("step_ms", step_ms, 0);

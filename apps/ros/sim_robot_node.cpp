@@ -96,6 +96,13 @@ class SimRobotNode {
         clip.sequence = ++sequence_;
         clip.action = request.action;
         echoplan::robot::fill_message(world_.stop_listening(), clip);
+        // A listener that has just started may not be connected yet; a clip published before that
+        // is lost, so give the connection a moment.
+        for (int i = 0; i < 200 && clips_.getNumSubscribers() == 0; ++i)
+          ros::WallDuration(0.01).sleep();
+        if (clips_.getNumSubscribers() == 0)
+          ROS_WARN("nobody listens on %s: the clip of '%s' is lost", names::kSimClipTopic,
+                   request.action.c_str());
         clips_.publish(clip);
       }
       response.status = report.status == ActionStatus::done        ? Response::DONE

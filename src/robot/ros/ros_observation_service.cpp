@@ -18,12 +18,20 @@ HeardObservation RosObservationService::observe(const audio::AudioClip& clip,
                                                 const std::string& action) {
   const char* name = ros_names::kObserveService;
   if (!client_ || !client_.isValid()) {
+    // A persistent connection that closed means the node went away: fail now unless it is back,
+    // rather than wait the whole timeout for a service that is gone.
+    if (connected_before_ && !ros::service::exists(name, false))
+      throw std::runtime_error(
+          fmt::format("the observation service {} went away (its connection closed; did "
+                      "echoplan_observation die?)",
+                      name));
     if (!ros::service::waitForService(name, ros::Duration(wait_timeout_s_)))
       throw std::runtime_error(
           fmt::format("the observation service {} is not available (waited {:g} s; is "
                       "echoplan_observation running?)",
                       name, wait_timeout_s_));
     client_ = node_.serviceClient<echoplan_ros::Observe>(name, true);
+    connected_before_ = true;
   }
   echoplan_ros::Observe call;
   call.request.action = action;

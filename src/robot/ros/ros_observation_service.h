@@ -26,6 +26,7 @@ class RosObservationService final : public ObservationService {
   ros::NodeHandle& node_;
   double wait_timeout_s_;
   ros::ServiceClient client_;
+  bool connected_before_ = false;  // a connection was made once: losing it means the node died
 };
 
 }  // namespace echoplan::robot

@@ -17,6 +17,10 @@ RosRobot::RosRobot(ros::NodeHandle& node, double wait_timeout_s, bool begin_tria
 // re-made when it broke; waits for the service to appear up to the timeout.
 ros::ServiceClient& RosRobot::connected(ros::ServiceClient& client, const char* name) {
   if (client && client.isValid()) return client;
+  // A persistent connection that closed means the driver went away: fail now unless it is back.
+  if (connected_.count(name) > 0 && !ros::service::exists(name, false))
+    throw std::runtime_error(fmt::format(
+        "the robot's service {} went away (its connection closed; did the driver die?)", name));
   if (!ros::service::waitForService(name, ros::Duration(wait_timeout_s_)))
     throw std::runtime_error(fmt::format("the robot's service {} is not available (waited {:g} s)",
                                          name, wait_timeout_s_));
@@ -24,6 +28,7 @@ ros::ServiceClient& RosRobot::connected(ros::ServiceClient& client, const char* 
     client = node_.serviceClient<echoplan_ros::ExecuteAction>(name, true);
   else
     client = node_.serviceClient<echoplan_ros::BeginTrial>(name, true);
+  connected_.insert(name);
   return client;
 }
 

@@ -9,6 +9,7 @@
 
 #include <ros/ros.h>
 
+#include <set>
 #include <string>
 
 #include "robot/robot.h"
@@ -34,6 +35,7 @@ class RosRobot final : public Robot {
   bool begin_trial_required_;
   ros::ServiceClient execute_;
   ros::ServiceClient begin_trial_;
+  std::set<std::string> connected_;  // services connected once: losing one means the driver died
 };
 
 }  // namespace echoplan::robot

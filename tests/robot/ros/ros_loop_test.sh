@@ -1,0 +1,119 @@
+#!/bin/bash
+# The ROS 1 loop end to end: a real roscore on 127.0.0.1 on a free port, echoplan_sim_robot,
+# echoplan_listener, echoplan_observation and echoplan_planner, compared with the in-process loop.
+#
+# Usage: ros_loop_test.sh CASE BUILD_DIR
+#   sim               the all-simulated layout (listener hears the simulated robot's clips): the trials
+#                     end in a sorting action and loop_steps.csv equals the in-process loop's, byte for byte
+#   mic               the listener records from a capture device that reads a file (private ALSA
+#                     configuration): same comparison, with the in-process loop on the same device
+#   kill_observation  the observation node is killed mid-trial: the planner stops within seconds with a
+#                     logged failure naming the service, exit status 1, the finished steps kept
+set -u
+case_name=$1
+build=$2
+work=$(mktemp -d)
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+pgids=()
+cleanup() {
+  for g in "${pgids[@]}"; do kill -TERM -- "-$g" 2>/dev/null; done
+  sleep 0.3
+  for g in "${pgids[@]}"; do kill -KILL -- "-$g" 2>/dev/null; done
+  wait 2>/dev/null
+  rm -rf "$work"
+}
+trap cleanup EXIT
+
+# Each process in its own process group (setsid), so stopping it stops its children (roscore's
+# rosmaster and rosout) and nothing else.
+start() {  # start NAME COMMAND...: runs in the background, output in $work/NAME.log; sets $started
+  local name=$1; shift
+  setsid "$@" >"$work/$name.log" 2>&1 &
+  started=$!
+  pgids+=("$started")
+}
+
+export ROS_HOME=$work/ros ROS_LOG_DIR=$work/ros/log ROS_IP=127.0.0.1 ROSCONSOLE_STDOUT_LINE_BUFFERED=1
+port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+export ROS_MASTER_URI=http://127.0.0.1:$port
+start roscore roscore -p "$port"
+for _ in $(seq 100); do rosparam list >/dev/null 2>&1 && break; sleep 0.1; done
+rosparam list >/dev/null 2>&1 || { fail "roscore on port $port did not come up"; cat "$work/roscore.log"; exit 1; }
+
+"$build/tests/robot/ros/ros_loop_reference" prepare "$work" || { fail "preparing the model"; exit 1; }
+seed=3
+episodes=300
+trials=2
+source=simulation
+if [ "$case_name" = mic ]; then
+  source=microphone
+  # The microphone hears a synthesized coffee-mug strike, as raw float32 stereo (what the stream opens).
+  "$build/echoplan" synth --object coffee_mug --action strike --seed 5 -o "$work/mic.wav" >/dev/null
+  /usr/bin/python3 - "$work" <<'PY'
+import struct, sys, wave
+w = wave.open(sys.argv[1] + "/mic.wav")
+n = w.getnframes() * w.getnchannels()
+values = struct.unpack("<%dh" % n, w.readframes(w.getnframes()))
+open(sys.argv[1] + "/mic.raw", "wb").write(struct.pack("<%df" % n, *[v / 32768 for v in values]))
+PY
+  cat >"$work/asound.conf" <<CONF
+pcm.silent { type null }
+pcm.filemic { type file slave.pcm "silent" file "/dev/null" infile "$work/mic.raw" format "raw" }
+pcm.!default { type asym capture.pcm "filemic" playback.pcm "silent" }
+CONF
+  export ALSA_CONFIG_PATH=$work/asound.conf
+fi
+[ "$case_name" = kill_observation ] && trials=3
+
+start sim_robot "$build/echoplan_sim_robot"
+start listener "$build/echoplan_listener" _source:=$source _max_seconds:=0.5
+start observation "$build/echoplan_observation" _model:="$work/model.json"
+observation_pid=$started
+start planner timeout 120 "$build/echoplan_planner" _problem:="$work/problem.yaml" _out:="$work/ros_run" \
+  _seed:=$seed _episodes:=$episodes _trials:=$trials _wait_timeout_s:=10
+planner_pid=$started
+
+if [ "$case_name" = kill_observation ]; then
+  # Kill the observation node once it has answered its first request.
+  for _ in $(seq 300); do grep -q "heard" "$work/observation.log" && break; sleep 0.05; done
+  { kill -KILL "$observation_pid"; wait "$observation_pid"; } 2>/dev/null
+  killed_at=$(date +%s.%N)
+fi
+wait "$planner_pid"
+status=$?
+
+case "$case_name" in
+  sim | mic)
+    [ "$status" -eq 0 ] || { fail "echoplan_planner exited $status"; cat "$work/planner.log"; }
+    ref_source=sim
+    [ "$case_name" = mic ] && ref_source=mic
+    "$build/tests/robot/ros/ros_loop_reference" run "$work" "$work/in_process" $ref_source $seed $episodes $trials 0.5 \
+      >"$work/reference.log" 2>&1 || { fail "the in-process reference failed"; cat "$work/reference.log"; }
+    if ! cmp -s "$work/ros_run/loop_steps.csv" "$work/in_process/loop_steps.csv"; then
+      fail "loop_steps.csv over ROS differs from the in-process loop's"
+      diff "$work/ros_run/loop_steps.csv" "$work/in_process/loop_steps.csv"
+    fi
+    # Every trial ends in a sorting action.
+    ended=$(awk -F, 'NR > 1 && $3 ~ /^move_to_/ {n++} END {print n + 0}' "$work/ros_run/loop_steps.csv")
+    [ "$ended" -eq "$trials" ] || { fail "$ended of $trials trials ended in a sorting action"; cat "$work/ros_run/loop_steps.csv"; }
+    # The recorded clips are the same audio.
+    for clip in "$work"/in_process/clips/*.wav; do
+      cmp -s "$clip" "$work/ros_run/clips/$(basename "$clip")" || fail "clip $(basename "$clip") differs"
+    done
+    ;;
+  kill_observation)
+    took=$(/usr/bin/python3 -c "import time; print(round(time.time() - $killed_at, 1))")
+    [ "$status" -eq 1 ] || fail "echoplan_planner exited $status, expected 1"
+    grep -q "trial stopped: .*/echoplan/observe" "$work/planner.log" \
+      || { fail "the planner's log does not name the failed service"; cat "$work/planner.log"; }
+    /usr/bin/python3 -c "import sys; sys.exit(0 if $took < 15 else 1)" || fail "the planner took $took s to give up"
+    [ "$(wc -l <"$work/ros_run/loop_steps.csv")" -ge 2 ] || fail "the steps finished before the kill were not kept"
+    echo "planner stopped $took s after the kill: $(grep -o 'trial stopped: .*' "$work/planner.log")"
+    ;;
+  *) fail "unknown case $case_name" ;;
+esac
+
+[ "$failures" -eq 0 ] && echo "ros_$case_name: all checks passed"
+exit "$failures"
