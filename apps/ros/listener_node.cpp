@@ -2,19 +2,19 @@
 // and publishes each recording on /echoplan/clip (and saves it as WAV when ~save_dir is set).
 //
 // Private parameters:
-//   ~source       "microphone" (default): capture with PortAudio; "simulation": collect the clips
-//   the
-//                 simulated robot publishes on /echoplan/sim_clip while recording
-//   ~device       input device (index or part of its name; default: the system's default input)
-//   ~rate         Hz (44100), ~channels (2): what the microphone records
-//   ~max_seconds  a recording stops growing after this long (30)
-//   ~save_dir     when set, each clip is also written to ~save_dir/NNNN_<action>.wav
-//   ~poll_hz      how often the record parameter is read (1000; it is pushed by the master, so a
-//   read
-//                 costs no network round trip)
+//   ~source        "microphone" (default): capture with PortAudio; "simulation": collect the
+//                  clips the simulated robot publishes on /echoplan/sim_clip while recording
+//   ~device        input device (index or part of its name; default: the default input)
+//   ~rate          Hz (44100), ~channels (2): what the microphone records
+//   ~max_seconds   a recording stops growing after this long (30)
+//   ~save_dir      when set, each clip is also written to ~save_dir/NNNN_<action>.wav
+//   ~poll_hz       how often the record parameter is read (200)
+//   ~cached_param  false (default): each read asks the master (one XML-RPC call on loopback,
+//                  about 1 ms), so capture starts within a poll period of the flip; true: read
+//                  roscpp's cache, which the master updates by pushing - no load on the master,
+//                  but the push took tens of milliseconds here (docs/BENCHMARKS.md)
 //   ~sim_clip_wait_s  simulation source: how long to wait at the end of a recording for a clip
-//   still
-//                 on its way (2.0)
+//                  still on its way (2.0)
 //
 // It publishes its state on /echoplan/recording (latched) whenever it starts or stops, so a planner
 // knows capture has started before the arm moves (robot/ros/ros_recorder.h).
@@ -93,7 +93,11 @@ T private_param(ros::NodeHandle& priv, const char* name, T fallback) {
 int run(ros::NodeHandle& node, ros::NodeHandle& priv) {
   const std::string source = private_param<std::string>(priv, "source", "microphone");
   const std::string save_dir = private_param<std::string>(priv, "save_dir", "");
-  const double poll_hz = private_param<double>(priv, "poll_hz", 1000.0);
+  const double poll_hz = private_param<double>(priv, "poll_hz", 200.0);
+  const bool cached_param = private_param<bool>(priv, "cached_param", false);
+  auto read_param = [cached_param](const char* name, auto& value) {
+    return cached_param ? ros::param::getCached(name, value) : ros::param::get(name, value);
+  };
   if (source != "microphone" && source != "simulation")
     throw echoplan::InputError("~source", 0,
                                fmt::format("'{}' is not 'microphone' or 'simulation'", source));
@@ -135,10 +139,10 @@ int run(ros::NodeHandle& node, ros::NodeHandle& priv) {
   while (ros::ok()) {
     ros::spinOnce();
     bool wanted = false;
-    ros::param::getCached(names::kRecordParam, wanted);
+    read_param(names::kRecordParam, wanted);
     if (wanted && !recording) {
       action.clear();
-      ros::param::getCached(names::kRecordActionParam, action);
+      read_param(names::kRecordActionParam, action);
       try {
         if (microphone) microphone->start(action);
         if (simulated) simulated->start();
@@ -150,7 +154,7 @@ int run(ros::NodeHandle& node, ros::NodeHandle& priv) {
         // Do not retry until the parameter falls and rises again.
         while (ros::ok() && wanted) {
           rate.sleep();
-          ros::param::getCached(names::kRecordParam, wanted);
+          read_param(names::kRecordParam, wanted);
         }
       }
     } else if (!wanted && recording) {

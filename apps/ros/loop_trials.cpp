@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <chrono>
+
 #include "commands/planner_options.h"
 #include "common/error.h"
 #include "experiment/loop_log.h"
@@ -11,6 +14,52 @@
 namespace echoplan::ros_app {
 
 namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_between(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// Wrappers that time the loop's latencies without changing what the parts do: when each action
+// ended, and how long a recorder took to start (for ROS: parameter set -> listener capturing).
+class TimedRobot final : public robot::Robot {
+ public:
+  explicit TimedRobot(std::unique_ptr<robot::Robot> inner) : inner_(std::move(inner)) {}
+  void begin_trial(const robot::TrialContext& context) override { inner_->begin_trial(context); }
+  robot::ActionReport execute(const std::string& action) override {
+    robot::ActionReport report = inner_->execute(action);
+    action_end = Clock::now();
+    return report;
+  }
+  Clock::time_point action_end;
+
+ private:
+  std::unique_ptr<robot::Robot> inner_;
+};
+
+class TimedRecorder final : public robot::Recorder {
+ public:
+  explicit TimedRecorder(std::unique_ptr<robot::Recorder> inner) : inner_(std::move(inner)) {}
+  void begin_trial(const robot::TrialContext& context) override { inner_->begin_trial(context); }
+  void start(const std::string& action) override {
+    const auto t0 = Clock::now();
+    inner_->start(action);
+    start_ms.push_back(ms_between(t0, Clock::now()));
+  }
+  audio::AudioClip stop() override { return inner_->stop(); }
+  std::vector<double> start_ms;
+
+ private:
+  std::unique_ptr<robot::Recorder> inner_;
+};
 
 // A TrialObserver that says how each trial ended.
 class TrialSayer final : public experiment::TrialObserver {
@@ -39,7 +88,8 @@ class TrialSayer final : public experiment::TrialObserver {
 
 std::vector<experiment::TrialRecord> run_loop_trials(
     const LoopTrialSettings& settings, experiment::RobotParts parts,
-    const std::function<void(const std::string&)>& say, const std::atomic<bool>* stop_requested) {
+    const std::function<void(const std::string&)>& say, const std::atomic<bool>* stop_requested,
+    LoopTimings* timings_out) {
   if (settings.out.empty()) throw InputError("", 0, "an output folder is required");
   const pomdp::Problem problem = pomdp::load_problem(settings.problem);
   cli::PlannerFlags flags;
@@ -48,6 +98,12 @@ std::vector<experiment::TrialRecord> run_loop_trials(
   flags.step_ms = settings.step_ms;
   const cli::Planner planner = cli::make_planner(flags, problem, settings.problem);
 
+  auto timed_robot = std::make_unique<TimedRobot>(std::move(parts.robot));
+  auto timed_recorder = std::make_unique<TimedRecorder>(std::move(parts.recorder));
+  TimedRobot* robot_clock = timed_robot.get();
+  TimedRecorder* recorder_clock = timed_recorder.get();
+  parts.robot = std::move(timed_robot);
+  parts.recorder = std::move(timed_recorder);
   experiment::RobotEnvironment environment(problem.model, std::move(parts));
   experiment::LoopLog log(settings.out, environment.model());
   experiment::LoopStep last;
@@ -69,9 +125,15 @@ std::vector<experiment::TrialRecord> run_loop_trials(
   setup.solver = planner.solver.get();
   setup.make_belief = [&problem](Rng& rng) { return pomdp::make_belief(problem, rng); };
   setup.stop_requested = stop_requested;
+  LoopTimings timings;
   setup.step_finished = [&](const experiment::StepRecord& s, const pomdp::Belief* after) {
     std::vector<double> marginal;
     if (after) marginal = after->discrete_marginal(0);
+    // The runner calls this right after the belief update: the end of the round trip.
+    if (after && last.classified) {
+      timings.action_end_to_belief_ms.push_back(ms_between(robot_clock->action_end, Clock::now()));
+      timings.observe_ms.push_back(last.observe_ms);
+    }
     log.write_step(last, s.belief, after ? &marginal : nullptr);
   };
   experiment::TrialOptions options;
@@ -83,7 +145,17 @@ std::vector<experiment::TrialRecord> run_loop_trials(
   say(fmt::format("planning on {} ({}), {} trial(s), seed {}", settings.problem, planner.describe(),
                   settings.trials, settings.seed));
   TrialSayer sayer(problem.model->spec(), say);
-  return experiment::run_trials(setup, options, sayer);
+  auto records = experiment::run_trials(setup, options, sayer);
+  timings.capture_start_ms = recorder_clock->start_ms;
+  if (!timings.observe_ms.empty())
+    say(
+        fmt::format("latency, median of {} sensing steps: end of action -> belief updated {:.2f} "
+                    "ms, of which the "
+                    "observation service call {:.2f} ms; recorder start {:.2f} ms",
+                    timings.observe_ms.size(), median(timings.action_end_to_belief_ms),
+                    median(timings.observe_ms), median(timings.capture_start_ms)));
+  if (timings_out) *timings_out = std::move(timings);
+  return records;
 }
 
 }  // namespace echoplan::ros_app

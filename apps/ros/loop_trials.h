@@ -28,12 +28,22 @@ struct LoopTrialSettings {
   std::string out;  // LoopLog folder: loop_steps.csv, loop_steps.jsonl, clips/
 };
 
+// Latencies of the loop's sensing steps, in milliseconds, one entry per step.
+struct LoopTimings {
+  std::vector<double>
+      action_end_to_belief_ms;     // the robot's answer -> the belief updated (recording
+                                   // stopped, clip delivered, classified, belief updated)
+  std::vector<double> observe_ms;  // of which the observation service call
+  std::vector<double>
+      capture_start_ms;  // recorder start() (ROS: parameter set -> listener capturing)
+};
+
 // Runs the trials, writing the LoopLog and telling `say` one line per step and per trial (as
 // `echoplan run` prints them). Throws InputError for bad settings and whatever a part throws (a
 // node that died: std::runtime_error naming it), after logging the steps finished so far.
 std::vector<experiment::TrialRecord> run_loop_trials(
     const LoopTrialSettings& settings, experiment::RobotParts parts,
     const std::function<void(const std::string&)>& say,
-    const std::atomic<bool>* stop_requested = nullptr);
+    const std::atomic<bool>* stop_requested = nullptr, LoopTimings* timings = nullptr);
 
 }  // namespace echoplan::ros_app

@@ -1,0 +1,69 @@
+#!/bin/bash
+# Latency of the loop over ROS (docs/BENCHMARKS.md): the four nodes on a roscore on 127.0.0.1, TRIALS
+# trials at EPISODES search episodes per step, then the same trials in process (the baseline: same
+# parts without ROS). Prints the planner's median latencies (end of action -> belief updated, the
+# observation call within it, recorder start = parameter set -> listener capturing) and the
+# observation node's own classification time per request.
+#
+# Usage: bench/ros_latency.sh BUILD_DIR [sim|mic] [TRIALS] [EPISODES]
+#   sim: the listener hears the simulated robot; mic: the listener records with PortAudio from a
+#   capture device reading a file (ALSA file plugin, not paced in real time).
+set -eu
+build=$1
+layout=${2:-sim}
+trials=${3:-10}
+episodes=${4:-300}
+work=$(mktemp -d)
+pgids=()
+cleanup() {
+  for g in "${pgids[@]}"; do kill -TERM -- "-$g" 2>/dev/null || true; done
+  sleep 0.3
+  for g in "${pgids[@]}"; do kill -KILL -- "-$g" 2>/dev/null || true; done
+  wait 2>/dev/null || true
+  rm -rf "$work"
+}
+trap cleanup EXIT
+start() { local name=$1; shift; setsid "$@" >"$work/$name.log" 2>&1 & started=$!; pgids+=("$started"); }
+
+export ROS_HOME=$work/ros ROS_LOG_DIR=$work/ros/log ROS_IP=127.0.0.1 ROSCONSOLE_STDOUT_LINE_BUFFERED=1
+port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+export ROS_MASTER_URI=http://127.0.0.1:$port
+start roscore roscore -p "$port"
+for _ in $(seq 100); do rosparam list >/dev/null 2>&1 && break; sleep 0.1; done
+"$build/tests/robot/ros/ros_loop_reference" prepare "$work"
+
+source=simulation
+ref=sim
+if [ "$layout" = mic ]; then
+  source=microphone
+  ref=mic
+  "$build/echoplan" synth --object coffee_mug --action strike --seed 5 -o "$work/mic.wav" >/dev/null
+  /usr/bin/python3 - "$work" <<'PY'
+import struct, sys, wave
+w = wave.open(sys.argv[1] + "/mic.wav")
+n = w.getnframes() * w.getnchannels()
+values = struct.unpack("<%dh" % n, w.readframes(w.getnframes()))
+open(sys.argv[1] + "/mic.raw", "wb").write(struct.pack("<%df" % n, *[v / 32768 for v in values]))
+PY
+  cat >"$work/asound.conf" <<CONF
+pcm.silent { type null }
+pcm.filemic { type file slave.pcm "silent" file "/dev/null" infile "$work/mic.raw" format "raw" }
+pcm.!default { type asym capture.pcm "filemic" playback.pcm "silent" }
+CONF
+  export ALSA_CONFIG_PATH=$work/asound.conf
+fi
+start sim_robot "$build/echoplan_sim_robot"
+start listener "$build/echoplan_listener" _source:=$source _max_seconds:=0.5
+start observation "$build/echoplan_observation" _model:="$work/model.json"
+"$build/echoplan_planner" _problem:="$work/problem.yaml" _out:="$work/ros_run" _seed:=1 _episodes:="$episodes" \
+  _trials:="$trials" >"$work/planner.log" 2>&1
+echo "over ROS ($layout layout, $trials trials):"
+grep -o 'latency, .*ms' "$work/planner.log" | sed 's/^/  planner: /'
+grep -o 'in [0-9.]* ms' "$work/observation.log" | awk '{print $2}' | sort -n |
+  awk '{v[NR] = $1} END {m = NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2;
+       printf "  observation node: classification median %.2f ms over %d requests\n", m, NR}'
+"$build/tests/robot/ros/ros_loop_reference" run "$work" "$work/in_process" $ref 1 "$episodes" "$trials" 0.5 \
+  >"$work/reference.log" 2>&1
+echo "in process (baseline, same trials):"
+grep -o 'latency, .*ms' "$work/reference.log" | sed 's/^/  /'
+cmp -s "$work/ros_run/loop_steps.csv" "$work/in_process/loop_steps.csv" && echo "logs identical: yes" || echo "logs identical: NO"
