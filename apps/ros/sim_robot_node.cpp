@@ -9,6 +9,9 @@
 // Private parameters:
 //   ~catalogue        object catalogue YAML (default: the shipped objects/catalogue.yaml)
 //   ~sim_config       simulator configuration YAML (default: built-in)
+//   ~min_duration_s   answer no sooner than this after a request (0): a real arm takes seconds,
+//                     and a microphone that reads faster than real time (the tests' file-backed
+//                     device) needs the time to fill its recording
 //   ~sorting_actions  the sorting actions it accepts, comma-separated (default:
 //   "move_to_A,move_to_B")
 #include <fmt/format.h>
@@ -40,7 +43,8 @@ std::vector<std::string> split_commas(const std::string& text) {
 
 class SimRobotNode {
  public:
-  SimRobotNode(ros::NodeHandle& node, echoplan::robot::SimulatedWorld& world) : world_(world) {
+  SimRobotNode(ros::NodeHandle& node, echoplan::robot::SimulatedWorld& world, double min_duration_s)
+      : world_(world), min_duration_s_(min_duration_s) {
     clips_ = node.advertise<echoplan_ros::Clip>(names::kSimClipTopic, 8);
     execute_ = node.advertiseService(names::kExecuteActionService, &SimRobotNode::execute, this);
     begin_ = node.advertiseService(names::kBeginTrialService, &SimRobotNode::begin_trial, this);
@@ -115,6 +119,9 @@ class SimRobotNode {
       response.reason = e.what();
       ROS_ERROR("'%s' failed: %s", request.action.c_str(), e.what());
     }
+    const double elapsed_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (elapsed_s < min_duration_s_) ros::WallDuration(min_duration_s_ - elapsed_s).sleep();
     ROS_INFO(
         "%s: %s%s%s (%.1f ms)", request.action.c_str(),
         echoplan::robot::to_string(response.status == Response::DONE ? ActionStatus::done
@@ -127,6 +134,7 @@ class SimRobotNode {
   }
 
   echoplan::robot::SimulatedWorld& world_;
+  double min_duration_s_;
   ros::Publisher clips_;
   ros::ServiceServer execute_;
   ros::ServiceServer begin_;
@@ -151,7 +159,9 @@ int main(int argc, char** argv) {
     if (!config_path.empty()) config = echoplan::sim::load_sim_config(config_path);
     echoplan::robot::SimulatedWorld world(std::move(catalogue), std::move(config),
                                           split_commas(sorting));
-    SimRobotNode server(node, world);
+    double min_duration_s = 0;
+    priv.param("min_duration_s", min_duration_s, 0.0);
+    SimRobotNode server(node, world, min_duration_s);
     ROS_INFO("simulated robot ready: %s, %s", names::kExecuteActionService,
              names::kBeginTrialService);
     // One thread: MuJoCo's data is not shared, and actions run one at a time like on an arm.

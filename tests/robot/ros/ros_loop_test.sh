@@ -47,8 +47,10 @@ seed=3
 episodes=300
 trials=2
 source=simulation
+min_duration=0
 if [ "$case_name" = mic ]; then
   source=microphone
+  min_duration=0.1  # the file-backed device fills 0.5 s in a few ms; leave it time under load
   # The microphone hears a synthesized coffee-mug strike, as raw float32 stereo (what the stream opens).
   "$build/echoplan" synth --object coffee_mug --action strike --seed 5 -o "$work/mic.wav" >/dev/null
   /usr/bin/python3 - "$work" <<'PY'
@@ -67,7 +69,7 @@ CONF
 fi
 [ "$case_name" = kill_observation ] && trials=3
 
-start sim_robot "$build/echoplan_sim_robot"
+start sim_robot "$build/echoplan_sim_robot" _min_duration_s:=$min_duration
 start listener "$build/echoplan_listener" _source:=$source _max_seconds:=0.5
 start observation "$build/echoplan_observation" _model:="$work/model.json"
 observation_pid=$started
