@@ -100,13 +100,14 @@ class SimRobotNode {
         clip.sequence = ++sequence_;
         clip.action = request.action;
         echoplan::robot::fill_message(world_.stop_listening(), clip);
-        // A listener that has just started may not be connected yet; a clip published before that
-        // is lost, so give the connection a moment.
-        for (int i = 0; i < 200 && clips_.getNumSubscribers() == 0; ++i)
-          ros::WallDuration(0.01).sleep();
-        if (clips_.getNumSubscribers() == 0)
-          ROS_WARN("nobody listens on %s: the clip of '%s' is lost", names::kSimClipTopic,
-                   request.action.c_str());
+        // A listener started with this node may not be connected yet at the first clip, which would
+        // be lost: give the connection a moment, once (with a microphone listener nobody
+        // subscribes).
+        if (!waited_for_listener_) {
+          for (int i = 0; i < 200 && clips_.getNumSubscribers() == 0; ++i)
+            ros::WallDuration(0.01).sleep();
+          waited_for_listener_ = true;
+        }
         clips_.publish(clip);
       }
       response.status = report.status == ActionStatus::done        ? Response::DONE
@@ -140,6 +141,7 @@ class SimRobotNode {
   ros::ServiceServer begin_;
   std::uint32_t sequence_ = 0;
   bool in_trial_ = false;
+  bool waited_for_listener_ = false;
 };
 
 }  // namespace
