@@ -7,6 +7,7 @@
 #                     end in a sorting action and loop_steps.csv equals the in-process loop's, byte for byte
 #   mic               the listener records from a capture device that reads a file (private ALSA
 #                     configuration): same comparison, with the in-process loop on the same device
+#   launch            the all-simulated layout started by simulated_layout.launch: same comparison
 #   kill_observation  the observation node is killed mid-trial: the planner stops within seconds with a
 #                     logged failure naming the service, exit status 1, the finished steps kept
 set -u
@@ -69,14 +70,22 @@ CONF
 fi
 [ "$case_name" = kill_observation ] && trials=3
 
-start sim_robot "$build/echoplan_sim_robot" _min_duration_s:=$min_duration
-start listener "$build/echoplan_listener" _source:=$source _max_seconds:=0.5
-start observation "$build/echoplan_observation" _model:="$work/model.json"
-observation_pid=$started
-start planner timeout 120 "$build/echoplan_planner" _problem:="$work/problem.yaml" _out:="$work/ros_run" \
-  _seed:=$seed _episodes:=$episodes _trials:=$trials _wait_timeout_s:=10
-planner_pid=$started
-
+if [ "$case_name" = launch ]; then
+  # The all-simulated layout as its launch file starts it (the package the build makes in build/ros).
+  ROS_PACKAGE_PATH=$build/ros setsid timeout 120 roslaunch "$build/ros/echoplan/launch/simulated_layout.launch" \
+    model:="$work/model.json" problem:="$work/problem.yaml" out:="$work/ros_run" trials:=$trials seed:=$seed \
+    episodes:=$episodes >"$work/planner.log" 2>&1 &
+  planner_pid=$!
+  pgids+=("$planner_pid")
+else
+  start sim_robot "$build/echoplan_sim_robot" _min_duration_s:=$min_duration
+  start listener "$build/echoplan_listener" _source:=$source _max_seconds:=0.5
+  start observation "$build/echoplan_observation" _model:="$work/model.json"
+  observation_pid=$started
+  start planner timeout 120 "$build/echoplan_planner" _problem:="$work/problem.yaml" _out:="$work/ros_run" \
+    _seed:=$seed _episodes:=$episodes _trials:=$trials _wait_timeout_s:=10
+  planner_pid=$started
+fi
 if [ "$case_name" = kill_observation ]; then
   # Kill the observation node once it has answered its first request.
   for _ in $(seq 300); do grep -q "heard" "$work/observation.log" && break; sleep 0.05; done
@@ -87,7 +96,7 @@ wait "$planner_pid"
 status=$?
 
 case "$case_name" in
-  sim | mic)
+  sim | mic | launch)
     [ "$status" -eq 0 ] || { fail "echoplan_planner exited $status"; cat "$work/planner.log"; }
     ref_source=sim
     [ "$case_name" = mic ] && ref_source=mic
