@@ -8,6 +8,7 @@
 # Usage: bench/ros_latency.sh BUILD_DIR [sim|mic] [TRIALS] [EPISODES]
 #   sim: the listener hears the simulated robot; mic: the listener records with PortAudio from a
 #   capture device reading a file (ALSA file plugin, not paced in real time).
+# LISTENER_ARGS (environment) adds private parameters to the listener, e.g. _cached_param:=true.
 set -eu
 build=$1
 layout=${2:-sim}
@@ -55,7 +56,7 @@ CONF
   export ALSA_CONFIG_PATH=$work/asound.conf
 fi
 start sim_robot "$build/echoplan_sim_robot" _min_duration_s:=$min_duration
-start listener "$build/echoplan_listener" _source:=$source _max_seconds:=0.5
+start listener "$build/echoplan_listener" _source:=$source _max_seconds:=0.5 ${LISTENER_ARGS:-}
 start observation "$build/echoplan_observation" _model:="$work/model.json"
 "$build/echoplan_planner" _problem:="$work/problem.yaml" _out:="$work/ros_run" _seed:=1 _episodes:="$episodes" \
   _trials:="$trials" >"$work/planner.log" 2>&1
