@@ -6,12 +6,12 @@
 #
 # Layout under the prefix:
 #   bin/echoplan
-#   share/echoplan/{problems,objects}/   found by the binary relative to itself (common/data_dir.h)
+#   share/echoplan/{problems,objects,experiments}/   found by the binary relative to itself (common/data_dir.h)
 #   include/echoplan/<module>/*.h        included as "pomdp/model.h", as inside this repository
 #   lib/libechoplan_<module>.a, lib/cmake/echoplan/
 include(CMakePackageConfigHelpers)
 
-set(ECHOPLAN_SHIPPED_DATA problems objects)
+set(ECHOPLAN_SHIPPED_DATA problems objects experiments)
 install(TARGETS echoplan RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 foreach(folder IN LISTS ECHOPLAN_SHIPPED_DATA)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder} DESTINATION ${CMAKE_INSTALL_DATADIR}/echoplan)

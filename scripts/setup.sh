@@ -27,6 +27,8 @@ packages=(
   libsndfile1-dev libsamplerate0-dev libkissfft-dev
   libmujoco-dev libqhull-dev libeigen3-dev
   gnuplot-nox
+  slurmctld slurmd slurm-client   # tests/apps/experiment_slurm_cli_test.sh: a one-node cluster runs an array job
+  chromium                        # tests/apps/experiment_html_cli_test.sh: the campaign page rendered headless
   clang libclang-rt-14-dev   # scripts/fuzz.sh (libFuzzer)
   clang-format-14            # scripts/check-format.sh
   portaudio19-dev            # live capture: echoplan devices/record, the ROS listener
@@ -62,10 +64,10 @@ case "$mode" in
   build) install_deps; build "$build_dir" ;;
   run)
     install_deps; build "$build_dir"
-    # The report's experiment (10 trials per object, ABT). The report planned 2 s per step; 100 ms reaches
-    # the same quality here (docs/BENCHMARKS.md) and keeps the first run under a minute.
-    exec "$build_dir/echoplan" trials --problem problems/audio_objects.yaml --solver abt --per-object 10 \
-      --step-ms 100 --seed 1 --out results/main
+    # The main job: the report's chapter 5 (experiments/chapter5.yaml) on all cores. Running it again
+    # continues an interrupted campaign; a finished one is only re-reported.
+    "$build_dir/echoplan" experiment --out results/chapter5
+    echo "setup: the report is $here/results/chapter5/index.html"
     ;;
   test)
     install_deps

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
 
   echoplan::cli::add_version_command(app);
   echoplan::cli::add_trials_command(app);
+  echoplan::cli::add_run_command(app);
   echoplan::cli::add_make_problem_command(app);
   echoplan::cli::add_check_command(app);
   echoplan::cli::add_solve_command(app);
@@ -33,6 +34,8 @@ int main(int argc, char** argv) {
   echoplan::cli::add_dataset_command(app);
   echoplan::cli::add_features_command(app);
   echoplan::cli::add_heatmap_command(app);
+  echoplan::cli::add_experiment_command(app);
+  echoplan::cli::add_merge_command(app);
 #ifdef ECHOPLAN_HAVE_PORTAUDIO
   echoplan::cli::add_devices_command(app);
   echoplan::cli::add_record_command(app);

@@ -173,6 +173,7 @@ pomdp::Outcome RobotEnvironment::execute(int action, Rng& /*rng*/) {
   outcome.reward = step.reward;
   outcome.terminal = step.terminal;
   outcome.collision = step.report.status != robot::ActionStatus::done;
+  if (step.classified) outcome.heard_probability = step.heard.probability;
   if (listener_) listener_(step);
   return outcome;
 }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "common/error.h"
 
@@ -28,22 +29,31 @@ std::string csv_field(const std::string& text) {
 }  // namespace
 
 TrialLog::TrialLog(const std::filesystem::path& directory, const pomdp::ModelSpec& spec,
-                   int belief_particles)
-    : directory_(directory), spec_(spec), belief_particles_(belief_particles) {
+                   int belief_particles, std::vector<std::string> extra_columns)
+    : directory_(directory),
+      spec_(spec),
+      belief_particles_(belief_particles),
+      extra_columns_(std::move(extra_columns)) {
   std::error_code error;
   std::filesystem::create_directories(directory_, error);
-  if (error) throw InputError(directory_.string(), 0, "cannot create output folder: " + error.message());
+  if (error)
+    throw InputError(directory_.string(), 0, "cannot create output folder: " + error.message());
   trials_ = open_for_writing(directory_ / "trials.csv");
   steps_ = open_for_writing(directory_ / "steps.csv");
 
   trials_ << "trial,true_state,believed_state,steps";
   for (const auto& action : spec_.action_names) trials_ << ",n_" << csv_field(action);
-  trials_ << ",discounted_reward,collision\n";
+  trials_ << ",discounted_reward,collision";
+  for (const auto& column : extra_columns_) trials_ << ',' << csv_field(column);
+  trials_ << '\n';
   steps_ << "trial,step,action,observation";
   const char* prefix = belief_particles_ > 0 ? ",particles_" : ",p_";
   if (!spec_.state.discrete_value_names.empty())
-    for (const auto& value : spec_.state.discrete_value_names[0]) steps_ << prefix << csv_field(value);
-  steps_ << ",reward,episodes\n";
+    for (const auto& value : spec_.state.discrete_value_names[0])
+      steps_ << prefix << csv_field(value);
+  steps_ << ",reward,episodes,heard_probability";
+  for (const auto& column : extra_columns_) steps_ << ',' << csv_field(column);
+  steps_ << '\n';
   trials_.flush();
   steps_.flush();
 }
@@ -58,7 +68,8 @@ std::string TrialLog::state_name(int value) const {
 std::string TrialLog::observation_text(const pomdp::Observation& observation) const {
   if (observation.index >= 0) {
     const auto& names = spec_.observation.names;
-    if (observation.index < static_cast<int>(names.size())) return csv_field(names[observation.index]);
+    if (observation.index < static_cast<int>(names.size()))
+      return csv_field(names[observation.index]);
     return std::to_string(observation.index);
   }
   // A continuous observation: its components separated by spaces, in one field.
@@ -68,6 +79,15 @@ std::string TrialLog::observation_text(const pomdp::Observation& observation) co
 }
 
 void TrialLog::trial_finished(const TrialRecord& trial, const std::vector<StepRecord>& steps) {
+  write_trial(trial, steps, std::vector<std::string>(extra_columns_.size()));
+}
+
+void TrialLog::write_trial(const TrialRecord& trial, const std::vector<StepRecord>& steps,
+                           const std::vector<std::string>& extra_values) {
+  if (extra_values.size() != extra_columns_.size())
+    throw std::invalid_argument("TrialLog::write_trial: one value per extra column expected");
+  std::string extras;
+  for (const auto& value : extra_values) extras += ',' + csv_field(value);
   for (const StepRecord& s : steps) {
     steps_ << s.trial << ',' << s.step << ',' << csv_field(spec_.action_names[s.action]) << ','
            << observation_text(s.observation);
@@ -77,12 +97,15 @@ void TrialLog::trial_finished(const TrialRecord& trial, const std::vector<StepRe
       else
         steps_ << ',' << number(p);
     }
-    steps_ << ',' << number(s.reward) << ',' << s.episodes << '\n';
+    steps_ << ',' << number(s.reward) << ',' << s.episodes << ','
+           << (s.heard_probability ? number(*s.heard_probability) : std::string()) << extras
+           << '\n';
   }
   trials_ << trial.trial << ',' << state_name(trial.true_state) << ','
           << state_name(trial.believed_state) << ',' << trial.steps;
   for (int count : trial.action_counts) trials_ << ',' << count;
-  trials_ << ',' << number(trial.discounted_reward) << ',' << (trial.collision ? 1 : 0) << '\n';
+  trials_ << ',' << number(trial.discounted_reward) << ',' << (trial.collision ? 1 : 0) << extras
+          << '\n';
   // Flush per trial: an interrupted run keeps every finished trial, and no half rows.
   steps_.flush();
   trials_.flush();

@@ -1,16 +1,18 @@
-// Trials: plan, act in an environment, hear, update the belief, until the episode ends - many times.
+// Trials: plan, act in an environment, hear, update the belief, until the episode ends - many
+// times.
 //
 // Each trial draws the hidden true state (from the model's initial belief, or with the object fixed
 // when trials are run K per object), resets the environment, the belief and the solver, then loops
 //   plan (solver.improve(budget)) -> act (environment.execute) -> belief.update -> solver.update
-// until a terminal step, a collision or the step cap. Every random stream of trial t is derived from
-// (seed, t), so a trial's outcome does not depend on the trials before it and an episode budget
-// replays bit for bit.
+// until a terminal step, a collision or the step cap. Every random stream of trial t is derived
+// from (seed, t), so a trial's outcome does not depend on the trials before it and an episode
+// budget replays bit for bit.
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,10 +24,10 @@
 namespace echoplan::experiment {
 
 struct TrialOptions {
-  int trials = 40;        // trials with the true state drawn from the initial belief (per_object == 0)
-  int per_object = 0;     // > 0: this many trials for each value of discrete state variable 0
+  int trials = 40;     // trials with the true state drawn from the initial belief (per_object == 0)
+  int per_object = 0;  // > 0: this many trials for each value of discrete state variable 0
   solvers::Budget budget = solvers::Budget::episodes(1000);  // search per real step
-  int max_steps = 100;    // a trial stops after this many steps even without a terminal step; >= 1
+  int max_steps = 100;  // a trial stops after this many steps even without a terminal step; >= 1
   std::uint64_t seed = 1;
 
   // Throws InputError naming the offending option.
@@ -43,6 +45,9 @@ struct StepRecord {
   std::vector<double> belief;
   double reward = 0.0;
   std::int64_t episodes = 0;  // search episodes run for this decision
+  // The observation service's calibrated probability of the heard class; absent when the world
+  // has no classifier (the model as the world samples its table).
+  std::optional<double> heard_probability;
 };
 
 // One finished trial. `believed_state` is the most likely value of discrete variable 0 under the
@@ -55,7 +60,7 @@ struct TrialRecord {
   std::vector<int> action_counts;  // per action
   double discounted_reward = 0.0;  // sum_t gamma^t r_t
   bool collision = false;
-  bool capped = false;             // stopped by max_steps rather than by a terminal step
+  bool capped = false;  // stopped by max_steps rather than by a terminal step
 };
 
 // Receives results as they happen, so a log can be written trial by trial.
@@ -78,6 +83,19 @@ struct TrialSetup {
   // it goes; trial_finished still gets every step.
   std::function<void(const StepRecord&, const pomdp::Belief*)> step_finished;
 };
+
+// One trial's results: the record and its steps.
+struct TrialResult {
+  TrialRecord record;
+  std::vector<StepRecord> steps;
+};
+
+// Runs trial number `trial` alone: its random streams come from (options.seed, trial), so the
+// result is the same whichever trials ran before it, in this process or another. `fixed_value` >= 0
+// fixes discrete state variable 0 of the true state (the object); -1 draws it from the initial
+// belief. Returns nothing when stopped before the trial ended (a cut-short trial is dropped whole).
+std::optional<TrialResult> run_trial(const TrialSetup& setup, const TrialOptions& options,
+                                     int trial, int fixed_value);
 
 // Runs the trials, reporting each to `observer`. Returns the finished trials (fewer than asked when
 // stopped); a trial cut short by a stop request is dropped whole.

@@ -1,4 +1,5 @@
-// The statistics of a set of trials: accuracy, mean discounted reward and its 95% confidence interval.
+// The statistics of a set of trials: accuracy, mean discounted reward and its 95% confidence
+// interval.
 #pragma once
 
 #include <vector>
@@ -9,14 +10,14 @@ namespace echoplan::experiment {
 
 struct TrialSummary {
   int trials = 0;
-  double accuracy = 0.0;                // fraction of trials whose final belief's mode is the truth
+  double accuracy = 0.0;  // fraction of trials whose final belief's mode is the truth
   double mean_discounted_reward = 0.0;
-  double sd_discounted_reward = 0.0;    // sample standard deviation (n - 1); 0 for one trial
-  double ci95 = 0.0;                    // half-width of the normal-approximation 95% CI of the mean
+  double sd_discounted_reward = 0.0;  // sample standard deviation (n - 1); 0 for one trial
+  double ci95 = 0.0;                  // half-width of the normal-approximation 95% CI of the mean
   double mean_steps = 0.0;
   std::vector<double> mean_action_counts;  // per action
   int collisions = 0;
-  int capped = 0;                        // trials stopped by --max-steps
+  int capped = 0;  // trials stopped by --max-steps
 };
 
 TrialSummary summarize(const std::vector<TrialRecord>& trials, int num_actions);

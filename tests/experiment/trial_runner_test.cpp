@@ -10,11 +10,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "../solvers/toy_models.h"
 #include "common/error.h"
 #include "experiment/trial_log.h"
 #include "experiment/trial_summary.h"
 #include "solvers/abt_solver.h"
-#include "../solvers/toy_models.h"
 
 namespace echoplan::experiment {
 namespace {
@@ -43,7 +43,9 @@ struct Harness {
     s.model = model.get();
     s.environment = &environment;
     s.solver = &solver;
-    s.make_belief = [m = model](Rng& rng) { return std::make_unique<ToyParticleBelief>(m, 1000, rng); };
+    s.make_belief = [m = model](Rng& rng) {
+      return std::make_unique<ToyParticleBelief>(m, 1000, rng);
+    };
     return s;
   }
 };
@@ -111,7 +113,7 @@ TEST(Trials, FilesHoldOneRowPerTrialAndPerStep) {
   std::getline(lines, first);
   EXPECT_EQ(header,
             "trial,step,action,observation,particles_pringles_can,particles_coffee_mug,"
-            "particles_plastic_cup,particles_paper_base,reward,episodes");
+            "particles_plastic_cup,particles_paper_base,reward,episodes,heard_probability");
   std::vector<std::string> fields;
   std::stringstream row(first);
   for (std::string f; std::getline(row, f, ',');) fields.push_back(f);
@@ -195,11 +197,11 @@ TEST(Trials, AbtReachesTheOptimalValueOnTheSeedProblem) {
   // V*(b0) = 2.9534 (DESIGN.md, exact search). A trial's discounted reward is about +5..+9 with a
   // 1-3% chance of a wrong sort (about -100), so its standard deviation is about 11-16 and 300
   // trials give a standard error of about 0.7-0.9. No policy beats V* in expectation, and ABT with
-  // 1500 episodes per step is close to it (measured: docs/BENCHMARKS.md), so the mean must lie within
-  // 4 measured standard errors of V* (false-alarm probability < 1e-4 for a planner at V*). That
-  // rejects random-rollout planners (about -28) and any planner that sorts on too little evidence.
-  // The optimal policy sorts correctly 98.9% of the time; 300 trials at p = 0.989 see more than 9
-  // wrong sorts with probability < 0.3%, so at most 9 (3%) are allowed.
+  // 1500 episodes per step is close to it (measured: docs/BENCHMARKS.md), so the mean must lie
+  // within 4 measured standard errors of V* (false-alarm probability < 1e-4 for a planner at V*).
+  // That rejects random-rollout planners (about -28) and any planner that sorts on too little
+  // evidence. The optimal policy sorts correctly 98.9% of the time; 300 trials at p = 0.989 see
+  // more than 9 wrong sorts with probability < 0.3%, so at most 9 (3%) are allowed.
   Harness h;
   struct CountSorts : TrialObserver {
     int wrong = 0;
@@ -214,8 +216,9 @@ TEST(Trials, AbtReachesTheOptimalValueOnTheSeedProblem) {
   const TrialSummary s = summarize(run_trials(h.setup(), options, sorts), h.model->num_actions());
   const double standard_error = s.sd_discounted_reward / std::sqrt(s.trials);
   EXPECT_NEAR(s.mean_discounted_reward, 2.9534, 4 * standard_error);
-  std::printf("ABT, %d trials of 1500 episodes/step: %.3f +- %.3f (standard error), %d wrong sorts\n",
-              s.trials, s.mean_discounted_reward, standard_error, sorts.wrong);
+  std::printf(
+      "ABT, %d trials of 1500 episodes/step: %.3f +- %.3f (standard error), %d wrong sorts\n",
+      s.trials, s.mean_discounted_reward, standard_error, sorts.wrong);
   EXPECT_LT(standard_error, 1.0);
   EXPECT_LE(sorts.wrong, 9);
   EXPECT_EQ(s.capped, 0);

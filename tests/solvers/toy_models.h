@@ -169,7 +169,7 @@ class ToyEnvironment final : public pomdp::Environment {
   pomdp::Outcome execute(int action, Rng& rng) override {
     pomdp::StepResult r = model_->step(state_, action, rng);
     state_ = r.next;
-    return {r.observation, r.reward, r.terminal, r.collision};
+    return {r.observation, r.reward, r.terminal, r.collision, std::nullopt};
   }
   const pomdp::State& true_state() const override { return state_; }
 

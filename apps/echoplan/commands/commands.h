@@ -13,6 +13,7 @@ struct Interrupted {};
 
 void add_version_command(CLI::App& app);
 void add_trials_command(CLI::App& app);
+void add_run_command(CLI::App& app);
 void add_make_problem_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_solve_command(CLI::App& app);
@@ -20,6 +21,8 @@ void add_synth_command(CLI::App& app);
 void add_dataset_command(CLI::App& app);
 void add_features_command(CLI::App& app);
 void add_heatmap_command(CLI::App& app);
+void add_experiment_command(CLI::App& app);
+void add_merge_command(CLI::App& app);
 // Live capture (built when PortAudio is found: ECHOPLAN_HAVE_PORTAUDIO).
 void add_devices_command(CLI::App& app);
 void add_record_command(CLI::App& app);

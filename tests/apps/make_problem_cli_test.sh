@@ -1,7 +1,7 @@
 #!/bin/sh
 # End-to-end checks of `echoplan make-problem` and `echoplan check`: a generated problem loads and is
 # clean, the same seed writes the same file, another seed a different one, and bad input exits 2.
-# Usage: cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
+# Usage: make_problem_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
 set -u
 bin=$1
 src=$2

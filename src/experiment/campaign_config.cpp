@@ -1,0 +1,248 @@
+#include "experiment/campaign_config.h"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "common/data_dir.h"
+#include "common/error.h"
+#include "common/yaml_reader.h"
+
+namespace echoplan::experiment {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A path from the file, relative to the file's folder unless absolute.
+std::string resolve(const std::string& source, const std::string& path) {
+  if (path.empty() || fs::path(path).is_absolute()) return path;
+  return (fs::path(source).parent_path() / path).lexically_normal().string();
+}
+
+bool is_label(const std::string& name) {
+  if (name.empty()) return false;
+  for (char c : name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) return false;
+  return true;
+}
+
+// FNV-1a of a file's bytes, as 16 hex digits; "" when the path is empty.
+std::string content_hash(const std::string& path) {
+  if (path.empty()) return "";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot open");
+  std::uint64_t h = 1469598103934665603ull;
+  char c;
+  while (in.get(c)) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ull;
+  }
+  return fmt::format("{:016x}", h);
+}
+
+CampaignConfig read_campaign(const std::string& yaml_text, const std::string& source);
+
+}  // namespace
+
+int CampaignConfig::total_trials() const {
+  int per_arm = 0;
+  for (const ObjectGroup& g : groups) per_arm += g.trials;
+  return per_arm * static_cast<int>(arms.size());
+}
+
+nlohmann::json CampaignConfig::identity() const {
+  nlohmann::json j;
+  j["seed"] = seed;
+  for (const ArmConfig& arm : arms)
+    j["arms"].push_back({{"name", arm.name}, {"problem_sha", content_hash(arm.problem)}});
+  j["world"] = {{"type", world.type}, {"problem_sha", content_hash(world.problem)}};
+  j["training_set"] = {{"recordings_per_pair", training.recordings_per_pair},
+                       {"objects", training.objects},
+                       {"actions", training.actions},
+                       {"recordings", training.recordings},
+                       {"catalogue_sha", content_hash(training.catalogue)},
+                       {"sim_config_sha", content_hash(training.sim_config)}};
+  for (const ObjectGroup& g : groups)
+    j["trials"].push_back({{"object", g.object}, {"plays", g.plays}, {"trials", g.trials}});
+  j["planner"] = {{"solver", planner.solver},
+                  {"episodes", planner.episodes},
+                  {"step_ms", planner.step_ms},
+                  {"max_steps", planner.max_steps}};
+  return j;
+}
+
+CampaignConfig parse_campaign_config(const std::string& yaml_text, const std::string& source) {
+  return read_yaml_guarded(source, [&] { return read_campaign(yaml_text, source); });
+}
+
+namespace {
+
+CampaignConfig read_campaign(const std::string& yaml_text, const std::string& source) {
+  const YamlReader f(source);
+  const YAML::Node root = parse_yaml(yaml_text, source);
+  f.expect_map(root, "the campaign");
+  f.reject_duplicate_keys(root);
+  f.only_keys(root, {"seed", "arms", "world", "training_set", "trials", "planner"}, "the campaign");
+
+  CampaignConfig c;
+  c.source = source;
+  if (auto n = f.optional(root, "seed", "campaign")) {
+    try {
+      c.seed = n.as<std::uint64_t>();
+    } catch (const YAML::Exception&) {
+      f.fail(n, "seed must be a non-negative integer");
+    }
+  }
+
+  const YAML::Node arms = f.require(root, "arms", "the campaign");
+  if (!arms.IsSequence() || arms.size() == 0) f.fail(arms, "arms must be a non-empty list");
+  for (const YAML::Node& a : arms) {
+    f.expect_map(a, "an arm");
+    f.only_keys(a, {"name", "problem"}, "an arm");
+    ArmConfig arm;
+    arm.name = f.name(f.require(a, "name", "an arm"), "arm name");
+    if (!is_label(arm.name))
+      f.fail(a, "arm name '" + arm.name + "' may hold only letters, digits, '_' and '-'");
+    for (const ArmConfig& other : c.arms)
+      if (other.name == arm.name) f.fail(a, "two arms are named '" + arm.name + "'");
+    arm.problem = resolve(source, f.name(f.require(a, "problem", "an arm"), "arm problem"));
+    c.arms.push_back(arm);
+  }
+
+  const YAML::Node world = f.require(root, "world", "the campaign");
+  f.expect_map(world, "world");
+  f.only_keys(world, {"type", "problem"}, "world");
+  c.world.type = f.name(f.require(world, "type", "world"), "world type");
+  if (c.world.type != "model")
+    f.fail(world, "world type '" + c.world.type + "' is not one of: model");
+  c.world.problem = resolve(source, f.name(f.require(world, "problem", "world"), "world problem"));
+
+  if (auto t = f.optional(root, "training_set", "campaign")) {
+    f.expect_map(t, "training_set");
+    f.only_keys(
+        t, {"recordings_per_pair", "objects", "actions", "recordings", "catalogue", "sim_config"},
+        "training_set");
+    if (auto n = f.optional(t, "recordings", "training_set"))
+      c.training.recordings = resolve(source, f.name(n, "recordings"));
+    if (auto n = f.optional(t, "recordings_per_pair", "training_set"))
+      c.training.recordings_per_pair = f.non_negative_int(n, "recordings_per_pair");
+    if (auto n = f.optional(t, "objects", "training_set"))
+      c.training.objects = f.names(n, "objects");
+    if (auto n = f.optional(t, "actions", "training_set"))
+      c.training.actions = f.names(n, "actions");
+    if (auto n = f.optional(t, "catalogue", "training_set"))
+      c.training.catalogue = resolve(source, f.name(n, "catalogue"));
+    if (auto n = f.optional(t, "sim_config", "training_set"))
+      c.training.sim_config = resolve(source, f.name(n, "sim_config"));
+  }
+
+  const YAML::Node trials = f.require(root, "trials", "the campaign");
+  if (!trials.IsSequence() || trials.size() == 0)
+    f.fail(trials, "trials must be a non-empty list of object groups");
+  for (const YAML::Node& g : trials) {
+    f.expect_map(g, "a trial group");
+    f.only_keys(g, {"object", "plays", "trials"}, "a trial group");
+    ObjectGroup group;
+    group.object = f.name(f.require(g, "object", "a trial group"), "object");
+    group.plays = group.object;
+    if (auto n = f.optional(g, "plays", "a trial group")) group.plays = f.name(n, "plays");
+    if (auto n = f.optional(g, "trials", "a trial group")) {
+      group.trials = f.non_negative_int(n, "trials");
+      if (group.trials < 1) f.fail(n, "trials must be >= 1");
+    }
+    for (const ObjectGroup& other : c.groups)
+      if (other.object == group.object)
+        f.fail(g, "object '" + group.object + "' has two trial groups");
+    c.groups.push_back(group);
+  }
+
+  if (auto p = f.optional(root, "planner", "campaign")) {
+    f.expect_map(p, "planner");
+    f.only_keys(p, {"solver", "episodes", "step_ms", "max_steps"}, "planner");
+    if (auto n = f.optional(p, "solver", "planner")) c.planner.solver = f.name(n, "solver");
+    if (c.planner.solver != "abt" && c.planner.solver != "pomcp")
+      f.fail(p, "planner solver '" + c.planner.solver + "' is not one of: abt, pomcp");
+    if (auto n = f.optional(p, "episodes", "planner"))
+      c.planner.episodes = f.non_negative_int(n, "episodes");
+    if (auto n = f.optional(p, "step_ms", "planner"))
+      c.planner.step_ms = f.non_negative_int(n, "step_ms");
+    if (auto n = f.optional(p, "max_steps", "planner"))
+      c.planner.max_steps = f.non_negative_int(n, "max_steps");
+    if ((c.planner.episodes > 0) == (c.planner.step_ms > 0))
+      f.fail(p, "give exactly one planning budget: episodes (reproducible) or step_ms");
+    if (c.planner.max_steps < 1) f.fail(p, "max_steps must be >= 1");
+  } else {
+    f.fail(root, "missing key 'planner' (its budget: episodes or step_ms)");
+  }
+  return c;
+}
+
+}  // namespace
+
+CampaignConfig load_campaign_config(const std::string& path) {
+  return parse_campaign_config(read_text_file(path, "campaign file"), path);
+}
+
+nlohmann::json to_json(const CampaignConfig& c) {
+  nlohmann::json j;
+  j["source"] = c.source;
+  j["seed"] = c.seed;
+  for (const ArmConfig& arm : c.arms)
+    j["arms"].push_back({{"name", arm.name}, {"problem", arm.problem}});
+  j["world"] = {{"type", c.world.type}, {"problem", c.world.problem}};
+  j["training_set"] = {{"recordings_per_pair", c.training.recordings_per_pair},
+                       {"objects", c.training.objects},
+                       {"actions", c.training.actions},
+                       {"recordings", c.training.recordings},
+                       {"catalogue", c.training.catalogue},
+                       {"sim_config", c.training.sim_config}};
+  for (const ObjectGroup& g : c.groups)
+    j["trials"].push_back({{"object", g.object}, {"plays", g.plays}, {"trials", g.trials}});
+  j["planner"] = {{"solver", c.planner.solver},
+                  {"episodes", c.planner.episodes},
+                  {"step_ms", c.planner.step_ms},
+                  {"max_steps", c.planner.max_steps}};
+  return j;
+}
+
+CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::string& source) {
+  try {
+    CampaignConfig c;
+    c.source = j.at("source").get<std::string>();
+    c.seed = j.at("seed").get<std::uint64_t>();
+    for (const auto& a : j.at("arms"))
+      c.arms.push_back({a.at("name").get<std::string>(), a.at("problem").get<std::string>()});
+    c.world.type = j.at("world").at("type").get<std::string>();
+    c.world.problem = j.at("world").at("problem").get<std::string>();
+    const auto& t = j.at("training_set");
+    c.training.recordings_per_pair = t.at("recordings_per_pair").get<int>();
+    c.training.objects = t.at("objects").get<std::vector<std::string>>();
+    c.training.actions = t.at("actions").get<std::vector<std::string>>();
+    c.training.recordings = t.at("recordings").get<std::string>();
+    c.training.catalogue = t.at("catalogue").get<std::string>();
+    c.training.sim_config = t.at("sim_config").get<std::string>();
+    for (const auto& g : j.at("trials"))
+      c.groups.push_back({g.at("object").get<std::string>(), g.at("plays").get<std::string>(),
+                          g.at("trials").get<int>()});
+    const auto& p = j.at("planner");
+    c.planner.solver = p.at("solver").get<std::string>();
+    c.planner.episodes = p.at("episodes").get<std::int64_t>();
+    c.planner.step_ms = p.at("step_ms").get<std::int64_t>();
+    c.planner.max_steps = p.at("max_steps").get<int>();
+    return c;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(source, 0, std::string("not a campaign description: ") + e.what());
+  }
+}
+
+std::string default_campaign_path() {
+  const std::string local = "experiments/chapter5.yaml";
+  if (fs::exists(local)) return local;
+  return shipped_file("experiments/chapter5.yaml");
+}
+
+}  // namespace echoplan::experiment

@@ -1,0 +1,92 @@
+// A campaign: the report's chapter 5 as data. Which training set to synthesise, which problems the
+// arms plan with, which objects the world holds and how often, the planner's budget and the seed.
+//
+// Read from YAML (format and defaults: experiments/chapter5.yaml, docs/experiment.md). Relative
+// paths in the file are relative to the file's folder. Everything is checked at load time, so a
+// campaign never fails halfway through because of its configuration.
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace echoplan::experiment {
+
+// One arm: the same trials planned with one problem file.
+struct ArmConfig {
+  std::string name;     // a label: letters, digits, '_' and '-'
+  std::string problem;  // path of the problem file the planner uses
+};
+
+// A group of trials with one object in the world. `object` is what the world holds (a catalogue
+// name, e.g. "pringles_can_weighted"); `plays` is the problem's object that counts as the truth
+// (the object it is a variant of, e.g. "pringles_can"); equal for an original object.
+struct ObjectGroup {
+  std::string object;
+  std::string plays;
+  int trials = 10;  // >= 1
+};
+
+// Where actions happen.
+struct WorldConfig {
+  // "model": the world draws observations from `problem`'s own table (a planner study, no sound);
+  // a variant object behaves as the object it plays.
+  std::string type = "model";
+  std::string problem;  // the world's table for type "model"
+};
+
+// The training set synthesised before the trials (`echoplan dataset`'s library code).
+struct TrainingSetConfig {
+  int recordings_per_pair = 10;      // 0: no synthesis (and no template figures)
+  std::vector<std::string> objects;  // catalogue names; empty: the planning problems' objects
+  std::vector<std::string> actions;  // empty: the planning problems' sensing actions
+  std::string recordings;  // an existing DIR/<object>/<action>/*.wav folder to use instead
+                           // of synthesising (e.g. real recordings); empty: synthesise
+  std::string catalogue;   // empty: the shipped catalogue
+  std::string sim_config;  // empty: built-in defaults
+};
+
+struct PlannerConfig {
+  std::string solver = "abt";  // "abt" or "pomcp"
+  std::int64_t episodes = 0;   // search episodes per step (reproducible); exactly one budget > 0
+  std::int64_t step_ms = 0;    // wall time per step (not reproducible bit for bit)
+  int max_steps = 100;         // a trial stops after this many steps
+};
+
+struct CampaignConfig {
+  std::string source;  // the file it was read from
+  std::uint64_t seed = 1;
+  std::vector<ArmConfig> arms;
+  WorldConfig world;
+  TrainingSetConfig training;
+  std::vector<ObjectGroup> groups;  // trials per object, in report order
+  PlannerConfig planner;
+
+  int total_trials() const;  // arms x sum of the groups' trials
+
+  // Everything that decides the results, as JSON with paths replaced by the files' contents'
+  // hashes, so a resumed or merged run can check it continues the same campaign.
+  nlohmann::json identity() const;
+};
+
+// Reads a campaign file; throws InputError naming the file, the line and the problem.
+CampaignConfig load_campaign_config(const std::string& path);
+
+// As load_campaign_config, from text; `source` names it in messages and anchors relative paths.
+CampaignConfig parse_campaign_config(const std::string& yaml_text, const std::string& source);
+
+// The shipped default: experiments/chapter5.yaml in the working directory if it exists, else the
+// one in the source tree echoplan was built from.
+std::string default_campaign_path();
+
+}  // namespace echoplan::experiment
+
+namespace echoplan::experiment {
+
+// The configuration as JSON (paths as resolved) and back, for campaign.json: a resumed run and
+// `echoplan merge` rebuild the report from it. Throws InputError(source, 0, ...) for bad JSON.
+nlohmann::json to_json(const CampaignConfig& config);
+CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::string& source);
+
+}  // namespace echoplan::experiment

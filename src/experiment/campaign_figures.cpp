@@ -1,0 +1,295 @@
+#include "experiment/campaign_figures.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <fstream>
+
+#include "audio/features.h"
+#include "audio/io.h"
+#include "audio/onsets.h"
+#include "common/error.h"
+#include "experiment/gnuplot.h"
+
+namespace echoplan::experiment {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::size_t kFramesBefore = 5;
+constexpr std::size_t kFramesAfter = 40;
+
+// gnuplot string literal in double quotes, taken literally ('noenhanced' keeps '_' as is).
+std::string gnuplot_text(const std::string& text) {
+  std::string q = "\"";
+  for (char c : text) {
+    if (c == '\n') {
+      q += "\\n";  // a line break inside the title
+      continue;
+    }
+    if (c == '"' || c == '\\') q += '\\';
+    q += c;
+  }
+  return q + "\"";
+}
+
+std::string tic_labels(const std::vector<std::string>& names) {
+  std::string tics = "(";
+  for (std::size_t i = 0; i < names.size(); ++i)
+    tics += fmt::format("{}{} {}", i ? ", " : "", gnuplot_text(names[i]), i);
+  return tics + ")";
+}
+
+// Each figure as a list of gnuplot commands after "set output"; the same for PNG and SVG.
+struct Drawing {
+  Figure figure;
+  int width = 1200;
+  int height = 600;
+  std::string commands;
+};
+
+Drawing belief_drawing(const CampaignResults& results, const std::string& arm,
+                       const ObjectGroup& group, const fs::path& data_dir) {
+  std::vector<const JournalEntry*> trials;
+  for (const JournalEntry& e : results.entries)
+    if (e.arm == arm && e.object == group.object) trials.push_back(&e);
+  const auto& objects = results.spec.state.discrete_value_names.at(0);
+  const auto& actions = results.spec.action_names;
+  const bool particles = results.belief_particles > 0;
+  const int columns = std::min<int>(5, static_cast<int>(trials.size()));
+  const int rows = (static_cast<int>(trials.size()) + columns - 1) / columns;
+
+  Drawing d;
+  d.figure.stem = fmt::format("belief_{}_{}", arm, group.object);
+  d.figure.title =
+      fmt::format("Belief at each decision: {} in the world, arm {}", group.object, arm);
+  std::string legend;
+  for (std::size_t a = 0; a < actions.size(); ++a)
+    legend += fmt::format("{}{} = {}", a ? ", " : "", a + 1, actions[a]);
+  d.figure.caption = fmt::format(
+      "One panel per trial (as the report's Figure 5.1): {} of each object before each decision. "
+      "Panel titles: trial id, the believed object at the end (✓ when right), the discounted "
+      "reward and "
+      "the actions taken ({}).",
+      particles ? "belief particles" : "probability", legend);
+  d.width = 330 * columns;
+  d.height = 280 * rows + 40;
+  std::string& c = d.commands;
+  c += fmt::format("set multiplot layout {},{} title {} noenhanced\n", rows, columns,
+                   gnuplot_text(d.figure.title));
+  c += fmt::format("set yrange [0:{}]\nset xlabel 'decision'\nset key off\nset grid\n",
+                   particles ? results.belief_particles : 1);
+  for (std::size_t t = 0; t < trials.size(); ++t) {
+    const JournalEntry& e = *trials[t];
+    const std::string file = fmt::format("belief_{}.dat", e.id);
+    std::ofstream data(data_dir / file);
+    for (const StepRecord& s : e.result.steps) {
+      data << s.step;
+      for (double p : s.belief) data << ' ' << (particles ? p * results.belief_particles : p);
+      data << '\n';
+    }
+    std::string sequence;
+    for (const StepRecord& s : e.result.steps) sequence += fmt::format(" {}", s.action + 1);
+    const bool right = e.result.record.believed_state == e.result.record.true_state;
+    if (sequence.size() > 36) sequence = sequence.substr(0, 33) + " ...";
+    c += fmt::format(
+        "set title {} noenhanced font ',8'\n",
+        gnuplot_text(fmt::format("#{} {}{}, {:.2f}\nactions{}", e.id,
+                                 objects[e.result.record.believed_state], right ? " ✓" : " ✗",
+                                 e.result.record.discounted_reward, sequence)));
+    const std::size_t last = std::max<std::size_t>(1, e.result.steps.size() - 1);
+    c += fmt::format("set xrange [-0.2:{}]\nset xtics {}\n", last + 0.2,
+                     last <= 10 ? 1 : (last + 9) / 10);
+    // The legend once, in the first panel.
+    c += t == 0 ? "set key top left font ',8' opaque box\n" : "set key off\n";
+    c += "plot ";
+    for (std::size_t k = 0; k < objects.size(); ++k)
+      c += fmt::format("{}'{}' using 1:{} with linespoints lw 2 title {} noenhanced", k ? ", " : "",
+                       file, k + 2, gnuplot_text(objects[k]));
+    c += '\n';
+  }
+  c += "unset multiplot\n";
+  return d;
+}
+
+Drawing confusion_drawing(const CampaignResults& results, const std::string& arm,
+                          const fs::path& data_dir) {
+  std::vector<ConfusionCounts> matrices;
+  for (ConfusionCounts& c : confusion_counts(results))
+    if (c.arm == arm) matrices.push_back(std::move(c));
+  Drawing d;
+  d.figure.stem = fmt::format("confusion_{}", arm);
+  d.figure.title = fmt::format("What was heard, arm {}", arm);
+  d.figure.caption =
+      "Counts of each heard class (columns) against the object in the world (rows), over every "
+      "sensing "
+      "step of the arm's trials, one panel per sensing action.";
+  if (matrices.empty()) return d;
+  d.width = 560 * static_cast<int>(matrices.size());
+  d.height = 520;
+  std::string& c = d.commands;
+  c += fmt::format("set multiplot layout 1,{} title {} noenhanced\n", matrices.size(),
+                   gnuplot_text(d.figure.title));
+  c += "set palette defined (0 'white', 1 '#08519c')\nunset colorbox\nset key off\nset xlabel "
+       "'heard'\n"
+       "set xtics rotate by 30 right\nset size ratio -1\n";
+  for (const ConfusionCounts& m : matrices) {
+    const std::string file = fmt::format("confusion_{}_{}.dat", arm, m.action);
+    std::ofstream data(data_dir / file);
+    int largest = 1;
+    for (std::size_t r = 0; r < m.rows.size(); ++r)
+      for (std::size_t k = 0; k < m.columns.size(); ++k) {
+        data << k << ' ' << r << ' ' << m.counts[r][k] << '\n';
+        largest = std::max(largest, m.counts[r][k]);
+      }
+    c += fmt::format("set title {} noenhanced\n", gnuplot_text(m.action));
+    c += fmt::format("set xtics {} noenhanced\nset ytics {} noenhanced\n", tic_labels(m.columns),
+                     tic_labels(m.rows));
+    c += fmt::format("set xrange [-0.5:{}]\nset yrange [{}:-0.5]\nset cbrange [0:{}]\n",
+                     m.columns.size() - 0.5, m.rows.size() - 0.5, largest);
+    c += fmt::format(
+        "plot '{}' using 1:2:3 with image, '' using 1:2:(sprintf('%d', $3)) with labels\n", file);
+  }
+  c += "unset multiplot\n";
+  return d;
+}
+
+Drawing templates_drawing(const std::vector<TemplateMatrix>& templates, const fs::path& data_dir) {
+  std::vector<std::string> objects, actions;
+  for (const TemplateMatrix& t : templates) {
+    if (std::find(objects.begin(), objects.end(), t.object) == objects.end())
+      objects.push_back(t.object);
+    if (std::find(actions.begin(), actions.end(), t.action) == actions.end())
+      actions.push_back(t.action);
+  }
+  Drawing d;
+  d.figure.stem = "templates";
+  d.figure.title = "Mean log-mel spectrogram of each object and action in the training set";
+  d.figure.caption = fmt::format(
+      "As the report's Figures 3.1 and 3.2: the mean over each pair's recordings of the log-mel "
+      "energies "
+      "(psf preset), aligned on each recording's first onset ({} frames before, {} after).",
+      kFramesBefore, kFramesAfter);
+  d.width = 330 * static_cast<int>(objects.size());
+  d.height = 280 * static_cast<int>(actions.size()) + 40;
+  std::string& c = d.commands;
+  c += fmt::format("set multiplot layout {},{} title {} noenhanced\n", actions.size(),
+                   objects.size(), gnuplot_text(d.figure.title));
+  c += "set palette rgbformulae 33,13,10\nset xlabel 'time from window start (s)'\nset ylabel 'mel "
+       "band'\n"
+       "set autoscale xfix\nset autoscale yfix\nset key off\nset xtics 0.1 format '%.1f'\n";
+  for (const std::string& action : actions)
+    for (const std::string& object : objects) {
+      auto it = std::find_if(templates.begin(), templates.end(), [&](const TemplateMatrix& t) {
+        return t.object == object && t.action == action;
+      });
+      if (it == templates.end()) {
+        c += "set multiplot next\n";
+        continue;
+      }
+      const std::string file = fmt::format("template_{}_{}.dat", object, action);
+      std::ofstream data(data_dir / file);
+      for (std::size_t r = 0; r < it->mean.rows; ++r) {
+        for (std::size_t k = 0; k < it->mean.cols; ++k)
+          data << fmt::format("{:.6g} {} {:.6g}\n", r * it->hop_seconds, k,
+                              it->mean.values[r * it->mean.cols + k]);
+        data << '\n';
+      }
+      c += fmt::format(
+          "set title {} noenhanced\n",
+          gnuplot_text(fmt::format("{}, {} ({} recordings)", object, action, it->recordings)));
+      c += fmt::format("plot '{}' using 1:2:3 with image\n", file);
+    }
+  c += "unset multiplot\n";
+  return d;
+}
+
+}  // namespace
+
+std::vector<TemplateMatrix> template_matrices(const fs::path& recordings,
+                                              const std::vector<std::string>& objects,
+                                              const std::vector<std::string>& actions) {
+  std::vector<TemplateMatrix> templates;
+  for (const std::string& object : objects)
+    for (const std::string& action : actions) {
+      const fs::path folder = recordings / object / action;
+      std::error_code error;
+      if (!fs::is_directory(folder, error)) continue;
+      std::vector<fs::path> files;
+      for (const auto& entry : fs::directory_iterator(folder))
+        if (entry.path().extension() == ".wav") files.push_back(entry.path());
+      std::sort(files.begin(), files.end());
+      if (files.empty()) continue;
+      TemplateMatrix t;
+      t.object = object;
+      t.action = action;
+      for (const fs::path& file : files) {
+        audio::ReadOptions read;
+        read.channel_policy = audio::ChannelPolicy::mean;
+        const audio::AudioClip clip = audio::read_audio(file.string(), read);
+        const audio::FeatureConfig config = audio::preset_by_name("psf", clip.sample_rate);
+        audio::FeatureExtractor extractor(config);
+        audio::Features features;
+        extractor.compute(clip.samples, features);
+        const std::size_t anchor = audio::alignment_frame(features.flux, audio::OnsetChoice::first);
+        const audio::FeatureMatrix window =
+            audio::onset_window(features.log_mel, anchor, kFramesBefore, kFramesAfter);
+        if (t.recordings == 0) {
+          t.mean = window;
+          t.hop_seconds = static_cast<double>(config.stft.framing.hop) / clip.sample_rate;
+        } else {
+          if (window.cols != t.mean.cols)
+            throw InputError(file.string(), 0,
+                             "has another sample rate than the other recordings of its pair");
+          for (std::size_t v = 0; v < window.values.size(); ++v)
+            t.mean.values[v] += window.values[v];
+        }
+        ++t.recordings;
+      }
+      for (float& v : t.mean.values) v /= static_cast<float>(t.recordings);
+      templates.push_back(std::move(t));
+    }
+  return templates;
+}
+
+std::vector<Figure> draw_figures(const fs::path& directory, const CampaignResults& results,
+                                 const std::vector<TemplateMatrix>& templates) {
+  const fs::path figures = directory / "figures";
+  fs::create_directories(figures);
+  const TemporaryFolder work("echoplan-figures");
+  std::vector<Drawing> drawings;
+  if (!templates.empty()) drawings.push_back(templates_drawing(templates, work.path()));
+  for (const ArmConfig& arm : results.config.arms) {
+    for (const ObjectGroup& group : results.config.groups) {
+      const bool any = std::any_of(
+          results.entries.begin(), results.entries.end(),
+          [&](const JournalEntry& e) { return e.arm == arm.name && e.object == group.object; });
+      if (any) drawings.push_back(belief_drawing(results, arm.name, group, work.path()));
+    }
+    Drawing confusion = confusion_drawing(results, arm.name, work.path());
+    if (!confusion.commands.empty()) drawings.push_back(std::move(confusion));
+  }
+
+  std::vector<Figure> drawn;
+  for (const char* format : {"png", "svg"}) {
+    std::string script;
+    for (const Drawing& d : drawings) {
+      const std::string terminal =
+          std::string(format) == "png"
+              ? fmt::format("pngcairo size {},{} font 'sans,9'", d.width, d.height)
+              : fmt::format("svg size {},{} font 'sans,9' background '#ffffff'", d.width, d.height);
+      script +=
+          fmt::format("reset\nset terminal {}\nset output {}\n{}set output\n", terminal,
+                      gnuplot_text(fs::absolute(figures / (d.figure.stem + "." + format)).string()),
+                      d.commands);
+    }
+    std::string error;
+    if (!run_gnuplot(script, work.path(), error))
+      throw InputError((figures / "").string(), 0, "gnuplot failed drawing the figures: " + error);
+  }
+  for (const Drawing& d : drawings) drawn.push_back(d.figure);
+  return drawn;
+}
+
+}  // namespace echoplan::experiment

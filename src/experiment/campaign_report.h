@@ -1,0 +1,75 @@
+// A campaign's results as tables and numbers: trials.csv and steps.csv (Tables 5.1 and 5.2 of the
+// report, plus arm and object), per-arm copies that `echoplan certify` reads with the arm's
+// problem, summary.json and the terminal summary, each next to the report's own numbers.
+//
+// Everything here is a pure function of the campaign's configuration and its journal entries sorted
+// by id, so a resumed, parallel, sharded-and-merged or one-core run writes the same bytes.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "experiment/campaign_config.h"
+#include "experiment/trial_journal.h"
+#include "experiment/trial_summary.h"
+#include "pomdp/model.h"
+
+namespace echoplan::experiment {
+
+// What the report needs besides the entries: the campaign and the planning problems' shared names.
+struct CampaignResults {
+  CampaignConfig config;
+  pomdp::ModelSpec spec;     // objects, actions and observation names, the same for every arm
+  int belief_particles = 0;  // > 0: steps.csv shows particle counts (Table 5.2); 0: probabilities
+  std::vector<JournalEntry> entries;  // sorted by id, at most one per id
+  int planned_trials = 0;             // what the campaign (all shards) asks for
+};
+
+// The seed report's result for one object (Tables 5.1 and 5.3): trials, correct ones, mean
+// discounted reward and mean steps.
+struct ReportedResult {
+  int trials = 0;
+  int correct = 0;
+  double mean_discounted_reward = 0.0;
+  double mean_steps = 0.0;
+};
+
+// The report's numbers for a catalogue object ("pringles_can", ..., "coffee_mug_weighted"), or for
+// "original objects" (Table 5.1 as a whole); nothing for objects the report did not try.
+std::optional<ReportedResult> reported_result(const std::string& object);
+
+// One line of the summary: an arm's trials of one group, or of several.
+struct SummaryRow {
+  std::string arm;
+  std::string label;  // the object, "original objects", "variants" or "all"
+  TrialSummary summary;
+  std::optional<ReportedResult> reported;
+};
+
+// The rows: per arm, each group, then the original objects together, the variants together and all.
+std::vector<SummaryRow> summary_rows(const CampaignResults& results);
+
+// Confusion counts of one arm and sensing action: counts[group][symbol], symbol over the
+// observation names (the heard classes), over every sensing step of the arm's trials.
+struct ConfusionCounts {
+  std::string arm;
+  std::string action;
+  std::vector<std::string> rows;     // the groups' objects
+  std::vector<std::string> columns;  // the heard classes
+  std::vector<std::vector<int>> counts;
+};
+std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results);
+
+// Writes trials.csv, steps.csv and arms/<arm>/{trials,steps}.csv into `directory`.
+void write_tables(const std::filesystem::path& directory, const CampaignResults& results);
+
+// The content of summary.json.
+nlohmann::json summary_json(const CampaignResults& results);
+
+// The summary as the terminal shows it (also saved as summary.txt).
+std::string summary_text(const CampaignResults& results);
+
+}  // namespace echoplan::experiment

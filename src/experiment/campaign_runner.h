@@ -1,0 +1,66 @@
+// Running a campaign's trials: numbering them, sharing them out (threads on this machine, shards
+// across machines), and journalling each as it finishes.
+//
+// Trial `id` numbers the campaign's trials arm by arm, then group by group (config order), then
+// 0..trials-1 within the group. A trial's random streams depend only on the campaign seed, its
+// group's object and its index in the group, not on the arm, the worker, the shard or what ran
+// before: both arms see the same true objects and the same world noise (a paired comparison), and
+// any split of the work gives the same results.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "experiment/campaign_config.h"
+#include "experiment/trial_journal.h"
+#include "pomdp/environment.h"
+
+namespace echoplan::experiment {
+
+struct TrialJob {
+  int id = 0;
+  int arm = 0;    // index into CampaignConfig::arms
+  int group = 0;  // index into CampaignConfig::groups
+  int index = 0;  // 0-based within the group
+};
+
+// Every trial of the campaign, in id order.
+std::vector<TrialJob> campaign_jobs(const CampaignConfig& config);
+
+// The seed of the trial streams of group `group` (trial_runner.h derives each trial's streams from
+// it).
+std::uint64_t group_seed(const CampaignConfig& config, int group);
+
+// One share of the trials: `--shard I/N` takes ids with id % N == I - 1 (I in 1..N), so shards are
+// balanced across arms and objects.
+struct Shard {
+  int index = 1;
+  int count = 1;
+  bool contains(int id) const { return id % count == index - 1; }
+};
+
+// Parses "I/N"; throws InputError for anything else or I outside 1..N.
+Shard parse_shard(const std::string& text);
+
+// Builds a worker's own world for trials of `group`; called once per worker and group.
+using WorldFactory = std::function<std::unique_ptr<pomdp::Environment>(const ObjectGroup& group)>;
+
+struct CampaignRunOptions {
+  int workers = 1;                          // threads, >= 1; results do not depend on it
+  const std::atomic<bool>* stop = nullptr;  // optional: no new steps once set
+  // Called after each trial is journalled, from one thread at a time.
+  std::function<void(const JournalEntry&)> on_trial;
+};
+
+// Runs `jobs` (normally those of this shard the journal does not hold yet), appending each finished
+// trial to `journal`. Each worker loads its own problems, solver and world. Returns the number of
+// trials finished; fewer than asked when stopped. Rethrows the first error of any worker after the
+// others have finished their trial in progress.
+int run_campaign_trials(const CampaignConfig& config, const std::vector<TrialJob>& jobs,
+                        const WorldFactory& world, TrialJournal& journal,
+                        const CampaignRunOptions& options);
+
+}  // namespace echoplan::experiment

@@ -1,0 +1,226 @@
+#include "experiment/html_report.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <iterator>
+
+#include "common/error.h"
+
+namespace echoplan::experiment {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), 0, "cannot read the figure");
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+const char* kStyle = R"(
+body { font-family: sans-serif; margin: 2em auto; max-width: 1250px; color: #222; line-height: 1.4; }
+h1 { font-size: 1.6em; } h2 { border-bottom: 1px solid #ccc; padding-bottom: .2em; margin-top: 2em; }
+table { border-collapse: collapse; margin: .8em 0; font-size: .9em; }
+th, td { border: 1px solid #bbb; padding: .25em .6em; text-align: right; }
+th { background: #e8eef6; } td.l, th.l { text-align: left; }
+tr.total td { font-weight: bold; background: #f4f4f4; }
+td.bad { background: #fbe3e3; } td.good { background: #e3f4e3; }
+.note { background: #fff8e0; border-left: 4px solid #e0b000; padding: .6em 1em; }
+figure { margin: 1.5em 0; } figure img { max-width: 100%; border: 1px solid #ddd; }
+figcaption { font-size: .9em; color: #444; }
+details { margin: 1em 0; }
+)";
+
+}  // namespace
+
+std::string base64(const std::string& bytes) {
+  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  std::size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
+                       (static_cast<unsigned char>(bytes[i + 1]) << 8) |
+                       static_cast<unsigned char>(bytes[i + 2]);
+    out += alphabet[(v >> 18) & 63];
+    out += alphabet[(v >> 12) & 63];
+    out += alphabet[(v >> 6) & 63];
+    out += alphabet[v & 63];
+  }
+  if (i + 1 == bytes.size()) {
+    const unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
+    out += alphabet[(v >> 18) & 63];
+    out += alphabet[(v >> 12) & 63];
+    out += "==";
+  } else if (i + 2 == bytes.size()) {
+    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
+                       (static_cast<unsigned char>(bytes[i + 1]) << 8);
+    out += alphabet[(v >> 18) & 63];
+    out += alphabet[(v >> 12) & 63];
+    out += alphabet[(v >> 6) & 63];
+    out += '=';
+  }
+  return out;
+}
+
+std::string html_report(const fs::path& directory, const CampaignResults& results,
+                        const std::vector<Figure>& figures) {
+  const auto& spec = results.spec;
+  const auto& objects = spec.state.discrete_value_names.at(0);
+  std::string h;
+  h += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+  h += "<title>echoplan campaign: the report's chapter 5</title>\n<style>" + std::string(kStyle) +
+       "</style>\n";
+  h += "</head>\n<body>\n<h1>echoplan campaign: the report's chapter 5</h1>\n";
+  h += fmt::format(
+      "<p>{} of {} trials finished; campaign <code>{}</code>, seed {}, planner {} with {}.</p>\n",
+      results.entries.size(), results.planned_trials, escape(results.config.source),
+      results.config.seed, escape(results.config.planner.solver),
+      results.config.planner.episodes > 0
+          ? fmt::format("{} episodes per step", results.config.planner.episodes)
+          : fmt::format("{} ms per step", results.config.planner.step_ms));
+  if (results.config.world.type == "model")
+    h += fmt::format(
+        "<p class=\"note\">The world here is a problem file's own observation table "
+        "(<code>{}</code>): "
+        "observations are drawn from it, no sound is synthesised or classified during the trials, "
+        "and a "
+        "variant object (e.g. a weighted can) behaves exactly as the object it plays. These trials "
+        "measure "
+        "the planner; they say nothing about how well sound tells the objects apart.</p>\n",
+        escape(results.config.world.problem));
+
+  // Results next to the report's.
+  h +=
+      "<h2>Results and the report's</h2>\n<table>\n<tr><th class=\"l\">arm</th><th "
+      "class=\"l\">objects</th>"
+      "<th>trials</th><th>accuracy</th><th>mean discounted reward (95% CI)</th><th>mean steps</th>";
+  for (const auto& a : spec.action_names) h += "<th>mean " + escape(a) + "</th>";
+  h += "<th>report: correct</th><th>report: reward</th></tr>\n";
+  for (const SummaryRow& row : summary_rows(results)) {
+    const TrialSummary& s = row.summary;
+    const bool total =
+        row.label == "all" || row.label == "original objects" || row.label == "variants";
+    h += fmt::format(
+        "<tr{}><td class=\"l\">{}</td><td class=\"l\">{}</td><td>{}</td><td "
+        "class=\"{}\">{:.0f}%</td>"
+        "<td>{:.2f} ± {:.2f}</td><td>{:.2f}</td>",
+        total ? " class=\"total\"" : "", escape(row.arm), escape(row.label), s.trials,
+        s.accuracy >= 0.999 ? "good" : (s.accuracy < 0.8 ? "bad" : ""), 100.0 * s.accuracy,
+        s.mean_discounted_reward, s.ci95, s.mean_steps);
+    for (double c : s.mean_action_counts) h += fmt::format("<td>{:.2f}</td>", c);
+    if (row.reported)
+      h += fmt::format("<td>{}/{}</td><td>{:.2f}</td></tr>\n", row.reported->correct,
+                       row.reported->trials, row.reported->mean_discounted_reward);
+    else
+      h += "<td></td><td></td></tr>\n";
+  }
+  h += "</table>\n";
+  const nlohmann::json summary = summary_json(results);
+  if (summary.contains("paired_differences")) {
+    h += "<p>Paired comparison of the arms (each trial of one arm against the trial of the other "
+         "with the same "
+         "object and the same world noise):</p>\n<ul>\n";
+    for (const auto& d : summary["paired_differences"])
+      h += fmt::format(
+          "<li>{} minus {}: {:+.2f} ± {:.2f} discounted reward (95% CI, {} pairs)</li>\n",
+          escape(d["arm"].get<std::string>()), escape(d["minus"].get<std::string>()),
+          d["mean_discounted_reward_difference"].get<double>(), d["ci95"].get<double>(),
+          d["pairs"].get<int>());
+    h += "</ul>\n";
+  }
+  h += "<p>The report's numbers come from its Tables 5.1 (four objects, 40/40 correct, mean "
+       "discounted reward "
+       "7.77) and 5.3 (weighted can 7/10, weighted mug 9/10). If simulated objects are easier to "
+       "tell apart than "
+       "the lab's, results here are better for that reason, not because of the planner.</p>\n";
+
+  for (const Figure& f : figures) {
+    h += fmt::format(
+        "<h2>{}</h2>\n<figure><img alt=\"{}\" src=\"data:image/png;base64,{}\">"
+        "<figcaption>{} (also <code>figures/{}.svg</code>)</figcaption></figure>\n",
+        escape(f.title), escape(f.title),
+        base64(read_bytes(directory / "figures" / (f.stem + ".png"))), escape(f.caption),
+        escape(f.stem));
+  }
+
+  // Table 5.1: every trial.
+  h += "<h2>Every trial (the report's Table 5.1)</h2>\n<details "
+       "open><summary>trials.csv</summary>\n<table>\n"
+       "<tr><th>trial</th><th class=\"l\">arm</th><th class=\"l\">object</th><th class=\"l\">true "
+       "state</th>"
+       "<th class=\"l\">final belief</th><th>steps</th>";
+  for (const auto& a : spec.action_names) h += "<th>" + escape(a) + "</th>";
+  h += "<th>discounted reward</th></tr>\n";
+  for (const JournalEntry& e : results.entries) {
+    const TrialRecord& r = e.result.record;
+    h += fmt::format(
+        "<tr><td>{}</td><td class=\"l\">{}</td><td class=\"l\">{}</td><td class=\"l\">{}</td>"
+        "<td class=\"l{}\">{}</td><td>{}</td>",
+        e.id, escape(e.arm), escape(e.object), escape(objects.at(r.true_state)),
+        r.believed_state == r.true_state ? "" : " bad", escape(objects.at(r.believed_state)),
+        r.steps);
+    for (int c : r.action_counts) h += fmt::format("<td>{}</td>", c);
+    h += fmt::format("<td>{:.4f}</td></tr>\n", r.discounted_reward);
+  }
+  h += "</table>\n</details>\n";
+
+  // Table 5.2: every decision.
+  const bool particles = results.belief_particles > 0;
+  h += "<h2>Every decision (the report's Table "
+       "5.2)</h2>\n<details><summary>steps.csv</summary>\n<table>\n"
+       "<tr><th>trial</th><th>step</th>";
+  for (const auto& o : objects)
+    h += "<th>" + escape(o) + (particles ? " particles" : " p") + "</th>";
+  h += "<th class=\"l\">action</th><th class=\"l\">heard</th><th>heard p</th></tr>\n";
+  for (const JournalEntry& e : results.entries)
+    for (const StepRecord& s : e.result.steps) {
+      h += fmt::format("<tr><td>{}</td><td>{}</td>", e.id, s.step);
+      for (double p : s.belief)
+        h += particles ? fmt::format("<td>{}</td>", std::llround(p * results.belief_particles))
+                       : fmt::format("<td>{:.3f}</td>", p);
+      const std::string heard =
+          s.observation.index >= 0 &&
+                  s.observation.index < static_cast<int>(spec.observation.names.size())
+              ? spec.observation.names[s.observation.index]
+              : std::string();
+      h += fmt::format(
+          "<td class=\"l\">{}</td><td class=\"l\">{}</td><td>{}</td></tr>\n",
+          escape(spec.action_names.at(s.action)), escape(heard),
+          s.heard_probability ? fmt::format("{:.3f}", *s.heard_probability) : std::string());
+    }
+  h += "</table>\n</details>\n";
+  h += "<p>Files in this folder: trials.csv, steps.csv, arms/&lt;arm&gt;/ (the same per arm, for "
+       "<code>echoplan certify</code>), summary.json, summary.txt, figures/ (PNG and SVG), "
+       "journal.jsonl "
+       "(one line per finished trial; everything else is rebuilt from it).</p>\n";
+  h += "</body>\n</html>\n";
+  return h;
+}
+
+}  // namespace echoplan::experiment

@@ -1,0 +1,130 @@
+#!/bin/sh
+# `echoplan experiment` and `echoplan merge` end to end on a small campaign: the same seed gives the
+# same files; kill -9 or Ctrl-C in the middle and the same command again gives the files of one
+# uninterrupted run; a one-core run equals a parallel one; merged shards equal the unsharded run; every
+# bad input exits 2 with a message before any work. Usage: experiment_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
+set -u
+bin=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# campaign FILE [EXTRA YAML LINES]: a small campaign, 12 trials, one recording per pair.
+campaign() {
+  cat >"$1" <<YAML
+seed: 4
+arms:
+  - {name: hand_tuned, problem: $src/problems/audio_objects.yaml}
+world: {type: model, problem: $src/problems/audio_objects.yaml}
+training_set: {recordings_per_pair: 1}
+trials:
+  - {object: pringles_can, trials: 4}
+  - {object: plastic_cup, trials: 4}
+  - {object: coffee_mug_weighted, plays: coffee_mug, trials: 4}
+planner: {solver: abt, episodes: 1000, max_steps: 30}
+YAML
+}
+config=$work/campaign.yaml
+campaign "$config"
+
+# same_files A B WHAT: every file of A is in B with the same bytes, and no more.
+same_files() {
+  diff -r "$1" "$2" >"$work/diff" 2>&1 || { fail "$3: folders differ"; head -5 "$work/diff"; }
+}
+
+# A whole run on all cores, and one on one core.
+"$bin" experiment --config "$config" --out "$work/whole" >"$work/whole.out" 2>"$work/whole.err" \
+  || { fail "whole run exited $?"; cat "$work/whole.err"; }
+for file in trials.csv steps.csv summary.json summary.txt index.html journal.jsonl campaign.json \
+  arms/hand_tuned/steps.csv figures/templates.png figures/templates.svg figures/confusion_hand_tuned.png \
+  figures/belief_hand_tuned_coffee_mug_weighted.svg; do
+  [ -s "$work/whole/$file" ] || fail "the whole run did not write $file"
+done
+[ "$(wc -l <"$work/whole/trials.csv")" -eq 13 ] || fail "trials.csv should hold a header and 12 rows"
+grep -q "report: $work/whole/index.html" "$work/whole.out" || fail "stdout does not say where the report is"
+grep -q "original objects" "$work/whole.out" || fail "the terminal summary lacks the original objects' row"
+"$bin" experiment --config "$config" --out "$work/one_core" --workers 1 >/dev/null 2>&1 || fail "one-core run exited $?"
+same_files "$work/whole" "$work/one_core" "one core against all cores"
+
+# kill -9 after two trials are journalled, then the same command again.
+"$bin" experiment --config "$config" --out "$work/killed" --workers 1 >/dev/null 2>&1 &
+pid=$!
+waited=0
+while [ "$(cat "$work/killed/journal.jsonl" 2>/dev/null | wc -l)" -lt 2 ] && [ "$waited" -lt 3000 ]; do
+  sleep 0.02
+  waited=$((waited + 1))
+done
+kill -9 "$pid"
+wait "$pid" 2>/dev/null
+kept=$(wc -l <"$work/killed/journal.jsonl")
+[ "$kept" -ge 2 ] && [ "$kept" -lt 12 ] || fail "after kill -9 the journal holds $kept trials (expected 2..11)"
+"$bin" experiment --config "$config" --out "$work/killed" >"$work/resumed.out" 2>"$work/resumed.err" \
+  || fail "resumed run exited $?"
+grep -q "$kept of 12 trials already in" "$work/resumed.err" || fail "the resumed run does not say it skips $kept trials"
+same_files "$work/whole" "$work/killed" "killed and resumed against one run"
+
+# Ctrl-C: exit 130 with the finished trials kept, then the same command again.
+"$bin" experiment --config "$config" --out "$work/interrupted" --workers 1 >/dev/null 2>"$work/int.err" &
+pid=$!
+waited=0
+while [ "$(cat "$work/interrupted/journal.jsonl" 2>/dev/null | wc -l)" -lt 1 ] && [ "$waited" -lt 3000 ]; do
+  sleep 0.02
+  waited=$((waited + 1))
+done
+kill -INT "$pid"
+wait "$pid"
+status=$?
+[ "$status" -eq 130 ] || fail "exit status $status after SIGINT, expected 130"
+[ -s "$work/interrupted/index.html" ] || fail "an interrupted run still writes its report"
+"$bin" experiment --config "$config" --out "$work/interrupted" >/dev/null 2>&1 || fail "run after Ctrl-C exited $?"
+same_files "$work/whole" "$work/interrupted" "interrupted and resumed against one run"
+
+# Shards and merge.
+"$bin" experiment --config "$config" --out "$work/shard1" --shard 1/2 >/dev/null 2>&1 || fail "shard 1/2 exited $?"
+"$bin" experiment --config "$config" --out "$work/shard2" --shard 2/2 >/dev/null 2>&1 || fail "shard 2/2 exited $?"
+[ "$(wc -l <"$work/shard1/journal.jsonl")" -eq 6 ] || fail "shard 1/2 should run 6 trials"
+"$bin" merge --out "$work/merged" "$work/shard1" "$work/shard2" >/dev/null 2>"$work/merge.err" \
+  || { fail "merge exited $?"; cat "$work/merge.err"; }
+same_files "$work/whole" "$work/merged" "merged shards against the unsharded run"
+
+# expect_input_error DESCRIPTION MESSAGE COMMAND ARGS...: exit 2, MESSAGE on stderr, nothing trained or run.
+expect_input_error() {
+  description=$1
+  message=$2
+  shift 2
+  "$bin" "$@" >"$work/out" 2>"$work/err"
+  status=$?
+  if [ "$status" -ne 2 ]; then
+    fail "$description: exit status $status, expected 2"; cat "$work/err"
+  elif ! grep -q -- "$message" "$work/err"; then
+    fail "$description: stderr lacks '$message':"; cat "$work/err"
+  fi
+  [ ! -e "$work/err_out/journal.jsonl" ] && [ ! -e "$work/err_out/training" ] || fail "$description: work started"
+}
+sed "s/object: plastic_cup/object: teapot, plays: plastic_cup/" "$config" >"$work/teapot.yaml"
+expect_input_error "object without catalogue entry" "object 'teapot' has no entry in the catalogue" \
+  experiment --config "$work/teapot.yaml" --out "$work/err_out"
+sed "s|training_set: {recordings_per_pair: 1}|training_set: {recordings: $work/no_recordings}|" "$config" >"$work/norec.yaml"
+expect_input_error "missing recordings folder" "no_recordings: the recordings folder does not exist" \
+  experiment --config "$work/norec.yaml" --out "$work/err_out"
+touch "$work/a_file"
+expect_input_error "unwritable output folder" "cannot create the output folder" \
+  experiment --config "$config" --out "$work/a_file/out"
+expect_input_error "a folder of another campaign" "holds a different campaign" \
+  experiment --config "$config" --out "$work/whole" --seed 99
+expect_input_error "bad shard" "must be I/N" experiment --config "$config" --out "$work/err_out" --shard 3/2
+expect_input_error "missing config" "cannot open the campaign file" \
+  experiment --config "$work/nope.yaml" --out "$work/err_out"
+sed 's/seed: 4/sed: 4/' "$config" >"$work/typo.yaml"
+expect_input_error "typo in the config" "typo.yaml:1: unknown key 'sed'" \
+  experiment --config "$work/typo.yaml" --out "$work/err_out"
+cp -r "$work/shard2" "$work/other"
+sed -i 's/"seed": 4/"seed": 99/' "$work/other/campaign.json"
+expect_input_error "merging other campaigns" "holds another campaign" \
+  merge --out "$work/err_merge" "$work/shard1" "$work/other"
+[ ! -e "$work/err_merge" ] || fail "a refused merge created its folder"
+
+[ "$failures" -eq 0 ] && echo "all experiment CLI checks passed"
+exit "$failures"

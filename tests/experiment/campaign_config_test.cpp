@@ -1,0 +1,94 @@
+// Campaign files: the shipped default is the report's chapter 5, and mistakes are InputErrors
+// naming the file and line.
+#include "experiment/campaign_config.h"
+
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+
+namespace echoplan::experiment {
+namespace {
+
+const std::string kMinimal = R"(
+arms:
+  - {name: a, problem: p.yaml}
+world: {type: model, problem: w.yaml}
+trials:
+  - {object: mug, trials: 3}
+planner: {episodes: 100}
+)";
+
+// The InputError of parsing `text`, as "line: problem".
+std::string error_of(const std::string& text) {
+  try {
+    parse_campaign_config(text, "/dir/c.yaml");
+  } catch (const InputError& e) {
+    return std::to_string(e.line()) + ": " + e.problem();
+  }
+  return "no error";
+}
+
+TEST(CampaignConfig, ShippedDefaultIsTheReportsChapter5) {
+  const CampaignConfig c =
+      load_campaign_config(std::string(ECHOPLAN_SOURCE_DIR) + "/experiments/chapter5.yaml");
+  ASSERT_EQ(c.groups.size(), 6u);
+  for (int g = 0; g < 4; ++g) {
+    EXPECT_EQ(c.groups[g].trials, 10);
+    EXPECT_EQ(c.groups[g].object, c.groups[g].plays);
+  }
+  EXPECT_EQ(c.groups[4].object, "pringles_can_weighted");
+  EXPECT_EQ(c.groups[4].plays, "pringles_can");
+  EXPECT_EQ(c.groups[5].object, "coffee_mug_weighted");
+  EXPECT_EQ(c.groups[5].plays, "coffee_mug");
+  EXPECT_EQ(c.training.recordings_per_pair, 10);
+  EXPECT_EQ(c.planner.solver, "abt");
+  EXPECT_GT(c.planner.episodes, 0);  // reproducible budget by default
+  EXPECT_EQ(c.planner.step_ms, 0);
+  EXPECT_EQ(c.total_trials(), 60 * static_cast<int>(c.arms.size()));
+}
+
+TEST(CampaignConfig, RelativePathsAreRelativeToTheFile) {
+  const CampaignConfig c = parse_campaign_config(kMinimal, "/dir/c.yaml");
+  EXPECT_EQ(c.arms.at(0).problem, "/dir/p.yaml");
+  EXPECT_EQ(c.world.problem, "/dir/w.yaml");
+  EXPECT_EQ(c.groups.at(0).plays, "mug");
+}
+
+TEST(CampaignConfig, JsonRoundTrip) {
+  const CampaignConfig c = parse_campaign_config(kMinimal, "/dir/c.yaml");
+  const CampaignConfig back = campaign_config_from_json(to_json(c), "campaign.json");
+  EXPECT_EQ(to_json(back), to_json(c));
+}
+
+TEST(CampaignConfig, MistakesNameTheLine) {
+  const std::string typo = error_of(kMinimal + "planer: {}\n");
+  EXPECT_EQ(typo.substr(0, 2), "8:") << typo;
+  EXPECT_NE(typo.find("unknown key 'planer'"), std::string::npos) << typo;
+}
+
+TEST(CampaignConfig, RejectsBadValues) {
+  auto replaced = [](const std::string& from, const std::string& to) {
+    std::string text = kMinimal;
+    text.replace(text.find(from), from.size(), to);
+    return text;
+  };
+  EXPECT_NE(error_of(replaced("{episodes: 100}", "{episodes: 100, step_ms: 5}"))
+                .find("exactly one planning budget"),
+            std::string::npos);
+  EXPECT_NE(error_of(replaced("{episodes: 100}", "{}")).find("exactly one planning budget"),
+            std::string::npos);
+  EXPECT_NE(error_of(replaced("type: model", "type: robot")).find("world type 'robot'"),
+            std::string::npos);
+  EXPECT_NE(error_of(replaced("trials: 3", "trials: 0")).find("trials must be >= 1"),
+            std::string::npos);
+  EXPECT_NE(error_of(replaced("name: a", "name: a b")).find("arm name 'a b'"), std::string::npos);
+  EXPECT_NE(error_of(replaced("{episodes: 100}", "{episodes: 100, solver: greedy}"))
+                .find("solver 'greedy'"),
+            std::string::npos);
+  EXPECT_EQ(error_of(replaced("trials: 3", "trials: 3")).substr(0, 8), "no error");
+  const std::string line = error_of(replaced("trials: 3", "trials: 0"));
+  EXPECT_EQ(line.substr(0, 2), "6:") << line;
+}
+
+}  // namespace
+}  // namespace echoplan::experiment

@@ -1,0 +1,237 @@
+// Campaigns end to end through the library: any split of the work (threads, stops and resumes,
+// shards) writes the same files as one uninterrupted one-core run; both arms see the same trials;
+// every bad input is refused before any work.
+#include "experiment/campaign.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "common/error.h"
+
+namespace echoplan::experiment {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kProblem = std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml";
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / "echoplan_campaign_test" / name;
+  fs::remove_all(dir);
+  return dir;
+}
+
+// A small campaign: 3 groups x 3 trials per arm, small budgets.
+CampaignConfig tiny_config(int arms = 1, const std::string& second_problem = kProblem) {
+  std::string text = "seed: 11\narms:\n  - {name: hand_tuned, problem: " + kProblem + "}\n";
+  if (arms > 1) text += "  - {name: second, problem: " + second_problem + "}\n";
+  text += "world: {type: model, problem: " + kProblem +
+          "}\n"
+          "training_set: {recordings_per_pair: 0, catalogue: " +
+          std::string(ECHOPLAN_SOURCE_DIR) +
+          "/objects/catalogue.yaml}\n"
+          "trials:\n"
+          "  - {object: pringles_can, trials: 3}\n"
+          "  - {object: paper_base, trials: 3}\n"
+          "  - {object: coffee_mug_weighted, plays: coffee_mug, trials: 3}\n"
+          "planner: {solver: abt, episodes: 200, max_steps: 25}\n";
+  return parse_campaign_config(text, "tiny.yaml");
+}
+
+// Runs `shard` of the campaign in `dir` with `workers` threads, stopping after `stop_after` trials
+// (< 0: never), then rebuilds the report (no figures: gnuplot is tested by the CLI tests).
+int run(const CampaignConfig& config, const fs::path& dir, int workers, Shard shard = {},
+        int stop_after = -1) {
+  const Campaign campaign = open_campaign(config, dir);
+  std::atomic<bool> stop{false};
+  int finished = 0;
+  TrialJournal journal(dir / "journal.jsonl");
+  CampaignRunOptions options;
+  options.workers = workers;
+  options.stop = &stop;
+  options.on_trial = [&](const JournalEntry&) {
+    if (++finished == stop_after) stop = true;
+  };
+  const int n = run_campaign_trials(config, remaining_jobs(campaign, shard), make_world(campaign),
+                                    journal, options);
+  rebuild_report(campaign, false);
+  return n;
+}
+
+// Every regular file under `dir`, by relative path, with its bytes.
+std::map<std::string, std::string> files_of(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (!entry.is_regular_file()) continue;
+    std::ifstream in(entry.path(), std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    files[fs::relative(entry.path(), dir).string()] = bytes.str();
+  }
+  return files;
+}
+
+void expect_same_files(const fs::path& a, const fs::path& b) {
+  const auto fa = files_of(a);
+  const auto fb = files_of(b);
+  std::vector<std::string> names_a, names_b;
+  for (const auto& [name, bytes] : fa) names_a.push_back(name);
+  for (const auto& [name, bytes] : fb) names_b.push_back(name);
+  ASSERT_EQ(names_a, names_b);
+  for (const auto& [name, bytes] : fa) EXPECT_TRUE(bytes == fb.at(name)) << name << " differs";
+}
+
+int lines_of(const fs::path& file) {
+  std::ifstream in(file);
+  int n = 0;
+  std::string line;
+  while (std::getline(in, line)) ++n;
+  return n;
+}
+
+TEST(Campaign, ParallelRunWritesTheFilesOfAOneCoreRun) {
+  const CampaignConfig config = tiny_config();
+  const fs::path one = fresh_dir("one_core"), many = fresh_dir("three_workers");
+  EXPECT_EQ(run(config, one, 1), 9);
+  EXPECT_EQ(run(config, many, 3), 9);
+  expect_same_files(one, many);
+  EXPECT_EQ(lines_of(one / "trials.csv"), 10);
+  // Table 5.2's columns stay where `echoplan trials` writes them; arm and object come last.
+  std::ifstream steps(one / "steps.csv");
+  std::string header;
+  std::getline(steps, header);
+  EXPECT_EQ(header,
+            "trial,step,action,observation,particles_pringles_can,particles_coffee_mug,particles_"
+            "plastic_cup,"
+            "particles_paper_base,reward,episodes,heard_probability,arm,object");
+}
+
+TEST(Campaign, StoppedAndResumedRunWritesTheFilesOfOneRun) {
+  const CampaignConfig config = tiny_config();
+  const fs::path whole = fresh_dir("whole"), resumed = fresh_dir("resumed");
+  run(config, whole, 1);
+  // Stopped after the 4th trial: the other worker may still finish the trial it is in.
+  const int first = run(config, resumed, 2, {}, 4);
+  EXPECT_GE(first, 4);
+  EXPECT_LT(first, 9);
+  EXPECT_EQ(lines_of(resumed / "journal.jsonl"), first);
+  EXPECT_EQ(run(config, resumed, 2), 9 - first);  // only the rest
+  expect_same_files(whole, resumed);
+}
+
+TEST(Campaign, MergedShardsEqualTheUnshardedRun) {
+  const CampaignConfig config = tiny_config(2);
+  const fs::path whole = fresh_dir("unsharded");
+  run(config, whole, 2);
+  std::vector<fs::path> shards;
+  for (int i = 1; i <= 3; ++i) {
+    shards.push_back(fresh_dir("shard" + std::to_string(i)));
+    EXPECT_EQ(run(config, shards.back(), 1, {i, 3}), 6);
+  }
+  const fs::path merged = fresh_dir("merged");
+  // The merged report draws figures; so does the reference, rebuilt with them.
+  merge_campaigns(merged, shards);
+  rebuild_report(open_campaign(config, whole), true);
+  expect_same_files(whole, merged);
+}
+
+TEST(Campaign, ArmsWithTheSameProblemPlayTheSameTrials) {
+  const CampaignConfig config = tiny_config(2);
+  const fs::path dir = fresh_dir("paired");
+  run(config, dir, 2);
+  const std::vector<JournalEntry> entries = read_journal(dir / "journal.jsonl");
+  ASSERT_EQ(entries.size(), 18u);
+  for (std::size_t k = 0; k < 9; ++k) {
+    JournalEntry second = entries[k + 9];
+    EXPECT_EQ(second.arm, "second");
+    second.id = entries[k].id;
+    second.arm = entries[k].arm;
+    second.result.record.trial = entries[k].result.record.trial;
+    for (std::size_t s = 0; s < second.result.steps.size(); ++s)
+      second.result.steps[s].trial = entries[k].id;
+    EXPECT_EQ(second, entries[k]) << "trial " << k;
+  }
+  std::ifstream summary(dir / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(summary);
+  EXPECT_EQ(j["paired_differences"][0]["pairs"], 9);
+  EXPECT_EQ(j["paired_differences"][0]["mean_discounted_reward_difference"], 0.0);
+}
+
+TEST(Campaign, TrialsOfAGroupHaveItsObjectAsTruth) {
+  const CampaignConfig config = tiny_config();
+  const fs::path dir = fresh_dir("truth");
+  run(config, dir, 2);
+  for (const JournalEntry& e : read_journal(dir / "journal.jsonl")) {
+    const int expected = e.object == "pringles_can" ? 0 : e.object == "paper_base" ? 3 : 1;
+    EXPECT_EQ(e.result.record.true_state, expected) << e.object;
+    EXPECT_EQ(e.result.steps.size(), static_cast<std::size_t>(e.result.record.steps));
+  }
+}
+
+// The InputError message of opening `config` in `dir`.
+std::string open_error(const CampaignConfig& config, const fs::path& dir) {
+  try {
+    open_campaign(config, dir);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Campaign, RefusesBadInputBeforeAnyWork) {
+  const fs::path dir = fresh_dir("errors");
+  CampaignConfig config = tiny_config();
+  config.groups[2].object = "teapot";
+  EXPECT_NE(open_error(config, dir).find("object 'teapot' has no entry in the catalogue"),
+            std::string::npos)
+      << open_error(config, dir);
+
+  config = tiny_config();
+  config.groups[2].plays = "teapot";
+  EXPECT_NE(open_error(config, dir).find("plays 'teapot', which is not an object of"),
+            std::string::npos);
+
+  config = tiny_config();
+  config.training.recordings = (dir / "no_such_recordings").string();
+  EXPECT_NE(
+      open_error(config, dir).find("no_such_recordings: the recordings folder does not exist"),
+      std::string::npos);
+
+  config = tiny_config(2, std::string(ECHOPLAN_SOURCE_DIR) + "/problems/tiger.pomdp");
+  EXPECT_NE(open_error(config, dir).find("must share objects, actions and observations"),
+            std::string::npos)
+      << open_error(config, dir);
+
+  // A file where the folder should be: nothing can be created under it (even as root).
+  fs::create_directories(dir);
+  std::ofstream(dir / "a_file") << "x";
+  EXPECT_NE(
+      open_error(tiny_config(), dir / "a_file" / "out").find("cannot create the output folder"),
+      std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "hand_tuned"));  // nothing was written for the refused campaigns
+
+  // A folder holding another campaign.
+  const fs::path used = fresh_dir("used");
+  open_campaign(tiny_config(), used);
+  config = tiny_config();
+  config.seed = 12;
+  EXPECT_NE(open_error(config, used).find("holds a different campaign"), std::string::npos);
+}
+
+TEST(Campaign, ShardsParseAndPartitionTheTrials) {
+  EXPECT_EQ(parse_shard("2/5").index, 2);
+  EXPECT_EQ(parse_shard("2/5").count, 5);
+  for (const char* bad : {"0/3", "4/3", "1", "a/b", "1/0", "1/3x", "-1/3"})
+    EXPECT_THROW(parse_shard(bad), InputError) << bad;
+  const std::vector<TrialJob> jobs = campaign_jobs(tiny_config(2));
+  std::vector<int> owners(jobs.size(), 0);
+  for (int i = 1; i <= 4; ++i)
+    for (const TrialJob& job : jobs) owners[job.id] += Shard{i, 4}.contains(job.id);
+  for (int n : owners) EXPECT_EQ(n, 1);
+}
+
+}  // namespace
+}  // namespace echoplan::experiment
