@@ -1,12 +1,14 @@
 #include "loop_trials.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <chrono>
 
 #include "commands/planner_options.h"
 #include "common/error.h"
+#include "common/rng.h"
 #include "experiment/loop_log.h"
 #include "pomdp/make_belief.h"
 #include "pomdp/problem.h"
@@ -145,7 +147,27 @@ std::vector<experiment::TrialRecord> run_loop_trials(
   say(fmt::format("planning on {} ({}), {} trial(s), seed {}", settings.problem, planner.describe(),
                   settings.trials, settings.seed));
   TrialSayer sayer(problem.model->spec(), say);
-  auto records = experiment::run_trials(setup, options, sayer);
+  std::vector<experiment::TrialRecord> records;
+  if (settings.object.empty()) {
+    records = experiment::run_trials(setup, options, sayer);
+  } else {
+    const auto& objects = environment.model().data().objects;
+    const auto it = std::find(objects.begin(), objects.end(), settings.object);
+    if (it == objects.end())
+      throw InputError("", 0,
+                       fmt::format("object '{}' is not one of the problem's ({})", settings.object,
+                                   fmt::join(objects, ", ")));
+    // `echoplan run`'s trial stream (apps/echoplan/commands/run.cpp: derive_seed(seed, {2})).
+    constexpr std::uint64_t kRunTrialStream = 2;
+    options.seed = derive_seed(settings.seed, {kRunTrialStream});
+    for (int t = 0; t < settings.trials; ++t) {
+      auto result =
+          experiment::run_trial(setup, options, t, static_cast<int>(it - objects.begin()));
+      if (!result) break;
+      sayer.trial_finished(result->record, result->steps);
+      records.push_back(result->record);
+    }
+  }
   timings.capture_start_ms = recorder_clock->start_ms;
   if (!timings.observe_ms.empty())
     say(

@@ -22,7 +22,13 @@ struct LoopTrialSettings {
   std::int64_t episodes =
       0;  // search episodes per step (deterministic); 0: the problem file's budget
   std::int64_t step_ms = 0;  // or wall time per step
-  int trials = 1;            // true objects drawn from the problem's initial belief
+  int trials = 1;            // number of trials
+  // The true object (a problem object): the one an operator placed on a real robot, the one the
+  // simulated robot builds. Empty: each trial draws it from the problem's initial belief. When set,
+  // trial t's streams are those of `echoplan run --seed` (derived with its trial stream), so trial
+  // 0 writes the same log as `echoplan run --object OBJECT` with the same problem, model and
+  // budget.
+  std::string object;
   int max_steps = 100;
   std::uint64_t seed = 1;
   std::string out;  // LoopLog folder: loop_steps.csv, loop_steps.jsonl, clips/

@@ -12,6 +12,9 @@
 //                 docs/real-robot.md)
 //   ~out          folder for loop_steps.csv, loop_steps.jsonl and the clips (required)
 //   ~trials (1), ~max_steps (100), ~seed (1)
+//   ~object       the true object (placed by the operator; built by the simulated robot); empty:
+//                 drawn per trial from the problem's initial belief. With it, trial 0 logs exactly
+//                 what `echoplan run --object` logs with the same seed, problem, model and budget
 //   ~solver, ~episodes, ~step_ms   the planner and its budget per step (default: the problem
 //   file's) ~wait_timeout_s  how long to wait for a node to appear or answer before failing (10)
 //
@@ -47,6 +50,7 @@ int main(int argc, char** argv) {
     if (!priv.getParam("out", settings.out))
       throw echoplan::InputError("~out", 0, "the parameter is required: the folder for the logs");
     priv.param("trials", settings.trials, 1);
+    priv.param<std::string>("object", settings.object, "");
     priv.param("max_steps", settings.max_steps, 100);
     // XML-RPC integers are 32-bit: a larger seed is given as a string ("_seed:='\"12345678901\"'").
     if (int small_seed = 0; priv.getParam("seed", small_seed)) {

@@ -7,6 +7,8 @@
 #                     end in a sorting action and loop_steps.csv equals the in-process loop's, byte for byte
 #   mic               the listener records from a capture device that reads a file (private ALSA
 #                     configuration): same comparison, with the in-process loop on the same device
+#   run               the all-simulated layout with the planner told the true object: its log equals
+#                     `echoplan run --object` (the in-process loop's command), byte for byte
 #   launch            the all-simulated layout started by simulated_layout.launch: same comparison
 #   kill_observation  the observation node is killed mid-trial: the planner stops within seconds with a
 #                     logged failure naming the service, exit status 1, the finished steps kept
@@ -69,6 +71,11 @@ CONF
   export ALSA_CONFIG_PATH=$work/asound.conf
 fi
 [ "$case_name" = kill_observation ] && trials=3
+object_param=()
+if [ "$case_name" = run ]; then
+  trials=1
+  object_param=(_object:=coffee_mug)
+fi
 
 if [ "$case_name" = launch ]; then
   # The all-simulated layout as its launch file starts it (the package the build makes in build/ros).
@@ -83,7 +90,7 @@ else
   start observation "$build/echoplan_observation" _model:="$work/model.json"
   observation_pid=$started
   start planner timeout 120 "$build/echoplan_planner" _problem:="$work/problem.yaml" _out:="$work/ros_run" \
-    _seed:=$seed _episodes:=$episodes _trials:=$trials _wait_timeout_s:=10
+    _seed:=$seed _episodes:=$episodes _trials:=$trials _wait_timeout_s:=10 "${object_param[@]}"
   planner_pid=$started
 fi
 if [ "$case_name" = kill_observation ]; then
@@ -96,12 +103,18 @@ wait "$planner_pid"
 status=$?
 
 case "$case_name" in
-  sim | mic | launch)
+  sim | mic | launch | run)
     [ "$status" -eq 0 ] || { fail "echoplan_planner exited $status"; cat "$work/planner.log"; }
     ref_source=sim
     [ "$case_name" = mic ] && ref_source=mic
-    "$build/tests/robot/ros/ros_loop_reference" run "$work" "$work/in_process" $ref_source $seed $episodes $trials 0.5 \
-      >"$work/reference.log" 2>&1 || { fail "the in-process reference failed"; cat "$work/reference.log"; }
+    if [ "$case_name" = run ]; then
+      "$build/echoplan" run --object coffee_mug --problem "$work/problem.yaml" --model "$work/model.json" \
+        --seed $seed --episodes $episodes --out "$work/in_process" >"$work/reference.log" 2>&1 \
+        || { fail "echoplan run failed"; cat "$work/reference.log"; }
+    else
+      "$build/tests/robot/ros/ros_loop_reference" run "$work" "$work/in_process" $ref_source $seed $episodes $trials \
+        0.5 >"$work/reference.log" 2>&1 || { fail "the in-process reference failed"; cat "$work/reference.log"; }
+    fi
     if ! cmp -s "$work/ros_run/loop_steps.csv" "$work/in_process/loop_steps.csv"; then
       fail "loop_steps.csv over ROS differs from the in-process loop's"
       diff "$work/ros_run/loop_steps.csv" "$work/in_process/loop_steps.csv"
