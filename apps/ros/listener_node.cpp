@@ -14,7 +14,7 @@
 //                  roscpp's cache, which the master updates by pushing - no load on the master,
 //                  but the push took tens of milliseconds here (docs/BENCHMARKS.md)
 //   ~sim_clip_wait_s  simulation source: how long to wait at the end of a recording for a clip
-//                  still on its way (2.0)
+//                  still on its way (5.0)
 //
 // It publishes its state on /echoplan/recording (latched) whenever it starts or stops, so a planner
 // knows capture has started before the arm moves (robot/ros/ros_recorder.h).
@@ -116,7 +116,7 @@ int run(ros::NodeHandle& node, ros::NodeHandle& priv) {
              microphone->device().name.c_str(), config.channels, config.sample_rate);
   } else {
     simulated = std::make_unique<SimulatedSource>(
-        node, private_param<double>(priv, "sim_clip_wait_s", 2.0));
+        node, private_param<double>(priv, "sim_clip_wait_s", 5.0));
     ROS_INFO("listening to the simulated robot on %s", names::kSimClipTopic);
   }
 

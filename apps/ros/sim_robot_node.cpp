@@ -104,7 +104,7 @@ class SimRobotNode {
         // be lost: give the connection a moment, once (with a microphone listener nobody
         // subscribes).
         if (!waited_for_listener_) {
-          for (int i = 0; i < 200 && clips_.getNumSubscribers() == 0; ++i)
+          for (int i = 0; i < 500 && clips_.getNumSubscribers() == 0; ++i)
             ros::WallDuration(0.01).sleep();
           waited_for_listener_ = true;
         }

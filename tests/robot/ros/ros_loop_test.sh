@@ -139,5 +139,9 @@ case "$case_name" in
   *) fail "unknown case $case_name" ;;
 esac
 
-[ "$failures" -eq 0 ] && echo "ros_$case_name: all checks passed"
+if [ "$failures" -eq 0 ]; then
+  echo "ros_$case_name: all checks passed"
+else
+  for log in "$work"/*.log; do echo "--- $(basename "$log")"; tail -20 "$log"; done
+fi
 exit "$failures"
