@@ -14,23 +14,8 @@ build=$1
 layout=${2:-sim}
 trials=${3:-10}
 episodes=${4:-300}
-work=$(mktemp -d)
-pgids=()
-cleanup() {
-  for g in "${pgids[@]}"; do kill -TERM -- "-$g" 2>/dev/null || true; done
-  sleep 0.3
-  for g in "${pgids[@]}"; do kill -KILL -- "-$g" 2>/dev/null || true; done
-  wait 2>/dev/null || true
-  rm -rf "$work"
-}
-trap cleanup EXIT
-start() { local name=$1; shift; setsid "$@" >"$work/$name.log" 2>&1 & started=$!; pgids+=("$started"); }
-
-export ROS_HOME=$work/ros ROS_LOG_DIR=$work/ros/log ROS_IP=127.0.0.1 ROSCONSOLE_STDOUT_LINE_BUFFERED=1
-port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
-export ROS_MASTER_URI=http://127.0.0.1:$port
-start roscore roscore -p "$port"
-for _ in $(seq 100); do rosparam list >/dev/null 2>&1 && break; sleep 0.1; done
+. "$(dirname "$0")/../tests/robot/ros/ros_session.sh"
+ros_session_begin
 "$build/tests/robot/ros/ros_loop_reference" prepare "$work"
 
 source=simulation
@@ -40,20 +25,7 @@ if [ "$layout" = mic ]; then
   source=microphone
   min_duration=0.1  # the file-backed device fills 0.5 s in a few ms; leave it time under load
   ref=mic
-  "$build/echoplan" synth --object coffee_mug --action strike --seed 5 -o "$work/mic.wav" >/dev/null
-  /usr/bin/python3 - "$work" <<'PY'
-import struct, sys, wave
-w = wave.open(sys.argv[1] + "/mic.wav")
-n = w.getnframes() * w.getnchannels()
-values = struct.unpack("<%dh" % n, w.readframes(w.getnframes()))
-open(sys.argv[1] + "/mic.raw", "wb").write(struct.pack("<%df" % n, *[v / 32768 for v in values]))
-PY
-  cat >"$work/asound.conf" <<CONF
-pcm.silent { type null }
-pcm.filemic { type file slave.pcm "silent" file "/dev/null" infile "$work/mic.raw" format "raw" }
-pcm.!default { type asym capture.pcm "filemic" playback.pcm "silent" }
-CONF
-  export ALSA_CONFIG_PATH=$work/asound.conf
+  file_microphone "$build/echoplan"
 fi
 start sim_robot "$build/echoplan_sim_robot" _min_duration_s:=$min_duration
 start listener "$build/echoplan_listener" _source:=$source _max_seconds:=0.5 ${LISTENER_ARGS:-}

@@ -15,35 +15,10 @@
 set -u
 case_name=$1
 build=$2
-work=$(mktemp -d)
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-pgids=()
-cleanup() {
-  for g in "${pgids[@]}"; do kill -TERM -- "-$g" 2>/dev/null; done
-  sleep 0.3
-  for g in "${pgids[@]}"; do kill -KILL -- "-$g" 2>/dev/null; done
-  wait 2>/dev/null
-  rm -rf "$work"
-}
-trap cleanup EXIT
-
-# Each process in its own process group (setsid), so stopping it stops its children (roscore's
-# rosmaster and rosout) and nothing else.
-start() {  # start NAME COMMAND...: runs in the background, output in $work/NAME.log; sets $started
-  local name=$1; shift
-  setsid "$@" >"$work/$name.log" 2>&1 &
-  started=$!
-  pgids+=("$started")
-}
-
-export ROS_HOME=$work/ros ROS_LOG_DIR=$work/ros/log ROS_IP=127.0.0.1 ROSCONSOLE_STDOUT_LINE_BUFFERED=1
-port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
-export ROS_MASTER_URI=http://127.0.0.1:$port
-start roscore roscore -p "$port"
-for _ in $(seq 100); do rosparam list >/dev/null 2>&1 && break; sleep 0.1; done
-rosparam list >/dev/null 2>&1 || { fail "roscore on port $port did not come up"; cat "$work/roscore.log"; exit 1; }
+. "$(dirname "$0")/ros_session.sh"
+ros_session_begin || { fail "roscore"; exit 1; }
 
 "$build/tests/robot/ros/ros_loop_reference" prepare "$work" || { fail "preparing the model"; exit 1; }
 seed=3
@@ -54,21 +29,7 @@ min_duration=0
 if [ "$case_name" = mic ]; then
   source=microphone
   min_duration=0.1  # the file-backed device fills 0.5 s in a few ms; leave it time under load
-  # The microphone hears a synthesized coffee-mug strike, as raw float32 stereo (what the stream opens).
-  "$build/echoplan" synth --object coffee_mug --action strike --seed 5 -o "$work/mic.wav" >/dev/null
-  /usr/bin/python3 - "$work" <<'PY'
-import struct, sys, wave
-w = wave.open(sys.argv[1] + "/mic.wav")
-n = w.getnframes() * w.getnchannels()
-values = struct.unpack("<%dh" % n, w.readframes(w.getnframes()))
-open(sys.argv[1] + "/mic.raw", "wb").write(struct.pack("<%df" % n, *[v / 32768 for v in values]))
-PY
-  cat >"$work/asound.conf" <<CONF
-pcm.silent { type null }
-pcm.filemic { type file slave.pcm "silent" file "/dev/null" infile "$work/mic.raw" format "raw" }
-pcm.!default { type asym capture.pcm "filemic" playback.pcm "silent" }
-CONF
-  export ALSA_CONFIG_PATH=$work/asound.conf
+  file_microphone "$build/echoplan" || { fail "making the file-backed microphone"; exit 1; }
 fi
 [ "$case_name" = kill_observation ] && trials=3
 object_param=()
