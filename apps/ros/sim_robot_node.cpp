@@ -46,8 +46,10 @@ class SimRobotNode {
   SimRobotNode(ros::NodeHandle& node, echoplan::robot::SimulatedWorld& world, double min_duration_s)
       : world_(world), min_duration_s_(min_duration_s) {
     clips_ = node.advertise<echoplan_ros::Clip>(names::kSimClipTopic, 8);
-    execute_ = node.advertiseService(names::kExecuteActionService, &SimRobotNode::execute, this);
+    // BeginTrial first: a planner that finds ExecuteAction takes a missing BeginTrial for an arm
+    // reset by hand.
     begin_ = node.advertiseService(names::kBeginTrialService, &SimRobotNode::begin_trial, this);
+    execute_ = node.advertiseService(names::kExecuteActionService, &SimRobotNode::execute, this);
   }
 
  private:

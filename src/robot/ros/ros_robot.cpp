@@ -33,6 +33,9 @@ ros::ServiceClient& RosRobot::connected(ros::ServiceClient& client, const char* 
 }
 
 void RosRobot::begin_trial(const TrialContext& context) {
+  // Wait for the driver itself first: a driver serves BeginTrial, if at all, from the moment it
+  // serves ExecuteAction (echoplan_sim_robot advertises BeginTrial first).
+  connected(execute_, ros_names::kExecuteActionService);
   if (!begin_trial_required_ && !ros::service::exists(ros_names::kBeginTrialService, false)) {
     ROS_INFO("trial %d: no %s service; the arm is expected at its initial configuration",
              context.trial, ros_names::kBeginTrialService);
