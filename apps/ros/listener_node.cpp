@@ -28,6 +28,7 @@
 
 #include "audio/io.h"
 #include "common/error.h"
+#include "node_main.h"
 #include "robot/portaudio_recorder.h"
 #include "robot/ros/clip_message.h"
 #include "robot/ros/ros_messages.h"
@@ -193,13 +194,5 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "echoplan_listener");
   ros::NodeHandle node;
   ros::NodeHandle priv("~");
-  try {
-    return run(node, priv);
-  } catch (const echoplan::InputError& e) {
-    ROS_FATAL("%s", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    ROS_FATAL("%s", e.what());
-    return 1;
-  }
+  return echoplan::ros_app::run_node([&] { return run(node, priv); });
 }

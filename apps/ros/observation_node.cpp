@@ -16,6 +16,7 @@
 
 #include "audio/io.h"
 #include "common/error.h"
+#include "node_main.h"
 #include "perception/observation_model.h"
 #include "robot/classifier_service.h"
 #include "robot/ros/clip_message.h"
@@ -76,7 +77,7 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "echoplan_observation");
   ros::NodeHandle node;
   ros::NodeHandle priv("~");
-  try {
+  return echoplan::ros_app::run_node([&] {
     std::string model_path;
     if (!priv.getParam("model", model_path) || model_path.empty())
       throw echoplan::InputError(
@@ -87,11 +88,5 @@ int main(int argc, char** argv) {
     ROS_INFO("observation service %s ready (model %s)", names::kObserveService, model_path.c_str());
     ros::spin();  // one thread: the classifier service's analyser is reused from clip to clip
     return 0;
-  } catch (const echoplan::InputError& e) {
-    ROS_FATAL("%s", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    ROS_FATAL("%s", e.what());
-    return 1;
-  }
+  });
 }

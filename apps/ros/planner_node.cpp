@@ -27,6 +27,7 @@
 
 #include "common/error.h"
 #include "loop_trials.h"
+#include "node_main.h"
 #include "robot/ros/ros_observation_service.h"
 #include "robot/ros/ros_recorder.h"
 #include "robot/ros/ros_robot.h"
@@ -39,54 +40,54 @@ int main(int argc, char** argv) {
   // thread.
   ros::AsyncSpinner spinner(1);
   spinner.start();
-  try {
-    echoplan::ros_app::LoopTrialSettings settings;
-    int episodes = 0, step_ms = 0;
-    double wait_timeout_s = 10.0;
-    std::string seed_text = "1";
-    if (!priv.getParam("problem", settings.problem))
-      throw echoplan::InputError("~problem", 0,
-                                 "the parameter is required: the problem YAML to plan on");
-    if (!priv.getParam("out", settings.out))
-      throw echoplan::InputError("~out", 0, "the parameter is required: the folder for the logs");
-    priv.param("trials", settings.trials, 1);
-    priv.param<std::string>("object", settings.object, "");
-    priv.param("max_steps", settings.max_steps, 100);
-    // XML-RPC integers are 32-bit: a larger seed is given as a string ("_seed:='\"12345678901\"'").
-    if (int small_seed = 0; priv.getParam("seed", small_seed)) {
-      if (small_seed < 0)
-        throw echoplan::InputError("~seed", 0, fmt::format("must be >= 0, got {}", small_seed));
-      seed_text = std::to_string(small_seed);
-    } else {
-      priv.getParam("seed", seed_text);
-    }
-    priv.param<std::string>("solver", settings.solver, "");
-    priv.param("episodes", episodes, 0);
-    priv.param("step_ms", step_ms, 0);
-    priv.param("wait_timeout_s", wait_timeout_s, 10.0);
-    try {
-      settings.seed = std::stoull(seed_text);
-    } catch (const std::exception&) {
-      throw echoplan::InputError("~seed", 0,
-                                 fmt::format("'{}' is not a non-negative integer", seed_text));
-    }
-    settings.episodes = episodes;
-    settings.step_ms = step_ms;
+  return echoplan::ros_app::run_node(
+      [&] {
+        echoplan::ros_app::LoopTrialSettings settings;
+        int episodes = 0, step_ms = 0;
+        double wait_timeout_s = 10.0;
+        std::string seed_text = "1";
+        if (!priv.getParam("problem", settings.problem))
+          throw echoplan::InputError("~problem", 0,
+                                     "the parameter is required: the problem YAML to plan on");
+        if (!priv.getParam("out", settings.out))
+          throw echoplan::InputError("~out", 0,
+                                     "the parameter is required: the folder for the logs");
+        priv.param("trials", settings.trials, 1);
+        priv.param<std::string>("object", settings.object, "");
+        priv.param("max_steps", settings.max_steps, 100);
+        // XML-RPC integers are 32-bit: a larger seed is given as a string
+        // ("_seed:='\"12345678901\"'").
+        if (int small_seed = 0; priv.getParam("seed", small_seed)) {
+          if (small_seed < 0)
+            throw echoplan::InputError("~seed", 0, fmt::format("must be >= 0, got {}", small_seed));
+          seed_text = std::to_string(small_seed);
+        } else {
+          priv.getParam("seed", seed_text);
+        }
+        priv.param<std::string>("solver", settings.solver, "");
+        priv.param("episodes", episodes, 0);
+        priv.param("step_ms", step_ms, 0);
+        priv.param("wait_timeout_s", wait_timeout_s, 10.0);
+        try {
+          settings.seed = std::stoull(seed_text);
+        } catch (const std::exception&) {
+          throw echoplan::InputError("~seed", 0,
+                                     fmt::format("'{}' is not a non-negative integer", seed_text));
+        }
+        settings.episodes = episodes;
+        settings.step_ms = step_ms;
 
-    echoplan::experiment::RobotParts parts;
-    parts.robot = std::make_unique<echoplan::robot::RosRobot>(node, wait_timeout_s,
-                                                              /*begin_trial_required=*/false);
-    parts.recorder = std::make_unique<echoplan::robot::RosRecorder>(node, wait_timeout_s);
-    parts.service = std::make_unique<echoplan::robot::RosObservationService>(node, wait_timeout_s);
-    const auto trials = echoplan::ros_app::run_loop_trials(
-        settings, std::move(parts), [](const std::string& line) { ROS_INFO("%s", line.c_str()); });
-    ROS_INFO("%zu trial(s) finished; logs in %s", trials.size(), settings.out.c_str());
-    return 0;
-  } catch (const echoplan::InputError& e) {
-    ROS_FATAL("%s", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    ROS_FATAL("trial stopped: %s", e.what());
-    return 1;
-  }
+        echoplan::experiment::RobotParts parts;
+        parts.robot = std::make_unique<echoplan::robot::RosRobot>(node, wait_timeout_s,
+                                                                  /*begin_trial_required=*/false);
+        parts.recorder = std::make_unique<echoplan::robot::RosRecorder>(node, wait_timeout_s);
+        parts.service =
+            std::make_unique<echoplan::robot::RosObservationService>(node, wait_timeout_s);
+        const auto trials = echoplan::ros_app::run_loop_trials(
+            settings, std::move(parts),
+            [](const std::string& line) { ROS_INFO("%s", line.c_str()); });
+        ROS_INFO("%zu trial(s) finished; logs in %s", trials.size(), settings.out.c_str());
+        return 0;
+      },
+      "trial stopped: ");
 }

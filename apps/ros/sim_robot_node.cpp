@@ -21,6 +21,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "node_main.h"
 #include "robot/ros/clip_message.h"
 #include "robot/ros/ros_messages.h"
 #include "robot/ros/ros_protocol.h"
@@ -152,7 +153,7 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "echoplan_sim_robot");
   ros::NodeHandle node;
   ros::NodeHandle priv("~");
-  try {
+  return echoplan::ros_app::run_node([&] {
     std::string catalogue_path, config_path, sorting;
     priv.param<std::string>("catalogue", catalogue_path, "");
     priv.param<std::string>("sim_config", config_path, "");
@@ -171,11 +172,5 @@ int main(int argc, char** argv) {
     // One thread: MuJoCo's data is not shared, and actions run one at a time like on an arm.
     ros::spin();
     return 0;
-  } catch (const echoplan::InputError& e) {
-    ROS_FATAL("%s", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    ROS_FATAL("%s", e.what());
-    return 1;
-  }
+  });
 }
