@@ -32,6 +32,10 @@ packages=(
   clang libclang-rt-14-dev   # scripts/fuzz.sh (libFuzzer)
   clang-format-14            # scripts/check-format.sh
   python3-numpy python3-scipy python3-soundfile   # bench/sim_realism.py (with /usr/bin/python3)
+  portaudio19-dev            # live capture: echoplan devices/record, the ROS listener
+  # ROS 1 from Debian (docs/real-robot.md): nodes, their services, a master and roslaunch for the ros_* tests
+  libroscpp-dev catkin ros-message-generation libstd-msgs-dev
+  python3-roslaunch python3-rosparam python3-rosservice python3-rostest librostest-dev
 )
 
 install_deps() {

@@ -1,0 +1,198 @@
+// echoplan_listener: the seed's listener node. Records while the parameter /echoplan/record is true
+// and publishes each recording on /echoplan/clip (and saves it as WAV when ~save_dir is set).
+//
+// Private parameters:
+//   ~source        "microphone" (default): capture with PortAudio; "simulation": collect the
+//                  clips the simulated robot publishes on /echoplan/sim_clip while recording
+//   ~device        input device (index or part of its name; default: the default input)
+//   ~rate          Hz (44100), ~channels (2): what the microphone records
+//   ~max_seconds   a recording stops growing after this long (30)
+//   ~save_dir      when set, each clip is also written to ~save_dir/NNNN_<action>.wav
+//   ~poll_hz       how often the record parameter is read (200)
+//   ~cached_param  false (default): each read asks the master (one XML-RPC call on loopback,
+//                  about 1 ms), so capture starts within a poll period of the flip; true: read
+//                  roscpp's cache, which the master updates by pushing - no load on the master,
+//                  but the push took tens of milliseconds here (docs/BENCHMARKS.md)
+//   ~sim_clip_wait_s  simulation source: how long to wait at the end of a recording for a clip
+//                  still on its way (5.0)
+//
+// It publishes its state on /echoplan/recording (latched) whenever it starts or stops, so a planner
+// knows capture has started before the arm moves (robot/ros/ros_recorder.h).
+#include <fmt/format.h>
+#include <ros/callback_queue.h>
+#include <ros/ros.h>
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "audio/io.h"
+#include "common/error.h"
+#include "node_main.h"
+#include "robot/portaudio_recorder.h"
+#include "robot/ros/clip_message.h"
+#include "robot/ros/ros_messages.h"
+#include "robot/ros/ros_protocol.h"
+
+namespace {
+
+namespace names = echoplan::robot::ros_names;
+using echoplan::audio::AudioClip;
+
+// The clips the simulated robot publishes while a recording runs, concatenated.
+class SimulatedSource {
+ public:
+  SimulatedSource(ros::NodeHandle& node, double wait_s) : wait_s_(wait_s) {
+    sub_ = node.subscribe(names::kSimClipTopic, 8, &SimulatedSource::on_clip, this,
+                          ros::TransportHints().tcpNoDelay());
+  }
+  void start() {
+    recording_ = true;
+    heard_.reset();
+  }
+  // Waits (spinning) up to wait_s for a clip when none has arrived yet.
+  AudioClip stop() {
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(wait_s_);
+    while (!heard_ && ros::ok() && ros::WallTime::now() < deadline) {
+      ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.001));
+    }
+    recording_ = false;
+    if (!heard_)
+      throw std::runtime_error(
+          fmt::format("no clip on {} within {:g} s", names::kSimClipTopic, wait_s_));
+    return *std::exchange(heard_, std::nullopt);
+  }
+
+ private:
+  void on_clip(const echoplan_ros::Clip::ConstPtr& message) {
+    if (!recording_) return;
+    AudioClip clip = echoplan::robot::clip_from_message(*message, names::kSimClipTopic);
+    if (!heard_) {
+      heard_ = std::move(clip);
+    } else if (heard_->sample_rate == clip.sample_rate && heard_->channels == clip.channels) {
+      heard_->samples.insert(heard_->samples.end(), clip.samples.begin(), clip.samples.end());
+    } else {
+      ROS_ERROR("%s: a clip at %d Hz x %d does not match the recording's %d Hz x %d; dropped",
+                names::kSimClipTopic, clip.sample_rate, clip.channels, heard_->sample_rate,
+                heard_->channels);
+    }
+  }
+
+  double wait_s_;
+  ros::Subscriber sub_;
+  bool recording_ = false;
+  std::optional<AudioClip> heard_;
+};
+
+template <typename T>
+T private_param(ros::NodeHandle& priv, const char* name, T fallback) {
+  T value = fallback;
+  priv.param<T>(name, value, fallback);
+  return value;
+}
+
+int run(ros::NodeHandle& node, ros::NodeHandle& priv) {
+  const std::string source = private_param<std::string>(priv, "source", "microphone");
+  const std::string save_dir = private_param<std::string>(priv, "save_dir", "");
+  const double poll_hz = private_param<double>(priv, "poll_hz", 200.0);
+  const bool cached_param = private_param<bool>(priv, "cached_param", false);
+  auto read_param = [cached_param](const char* name, auto& value) {
+    return cached_param ? ros::param::getCached(name, value) : ros::param::get(name, value);
+  };
+  if (source != "microphone" && source != "simulation")
+    throw echoplan::InputError("~source", 0,
+                               fmt::format("'{}' is not 'microphone' or 'simulation'", source));
+  if (!save_dir.empty()) std::filesystem::create_directories(save_dir);
+
+  std::unique_ptr<echoplan::robot::PortAudioRecorder> microphone;
+  std::unique_ptr<SimulatedSource> simulated;
+  if (source == "microphone") {
+    echoplan::robot::CaptureConfig config;
+    config.device = private_param<std::string>(priv, "device", "");
+    config.sample_rate = private_param<int>(priv, "rate", 44100);
+    config.channels = private_param<int>(priv, "channels", 2);
+    config.max_seconds = private_param<double>(priv, "max_seconds", 30.0);
+    microphone = std::make_unique<echoplan::robot::PortAudioRecorder>(config);
+    ROS_INFO("listening on [%d] %s (%d channels, %d Hz)", microphone->device().index,
+             microphone->device().name.c_str(), config.channels, config.sample_rate);
+  } else {
+    simulated = std::make_unique<SimulatedSource>(
+        node, private_param<double>(priv, "sim_clip_wait_s", 5.0));
+    ROS_INFO("listening to the simulated robot on %s", names::kSimClipTopic);
+  }
+
+  ros::Publisher clips = node.advertise<echoplan_ros::Clip>(names::kClipTopic, 4);
+  ros::Publisher states =
+      node.advertise<echoplan_ros::RecordingState>(names::kRecordingTopic, 4, /*latch=*/true);
+  auto publish_state = [&](bool recording, const std::string& action, const std::string& error) {
+    echoplan_ros::RecordingState state;
+    state.recording = recording;
+    state.action = action;
+    state.error = error;
+    states.publish(state);
+  };
+  publish_state(false, "", "");
+
+  bool recording = false;
+  std::string action;
+  std::uint32_t sequence = 0;
+  ros::WallRate rate(poll_hz);
+  while (ros::ok()) {
+    ros::spinOnce();
+    bool wanted = false;
+    read_param(names::kRecordParam, wanted);
+    if (wanted && !recording) {
+      action.clear();
+      read_param(names::kRecordActionParam, action);
+      try {
+        if (microphone) microphone->start(action);
+        if (simulated) simulated->start();
+        recording = true;
+        publish_state(true, action, "");
+      } catch (const std::exception& e) {
+        ROS_ERROR("cannot record '%s': %s", action.c_str(), e.what());
+        publish_state(false, action, e.what());
+        // Do not retry until the parameter falls and rises again.
+        while (ros::ok() && wanted) {
+          rate.sleep();
+          read_param(names::kRecordParam, wanted);
+        }
+      }
+    } else if (!wanted && recording) {
+      recording = false;
+      echoplan_ros::Clip message;
+      message.sequence = ++sequence;
+      message.action = action;
+      try {
+        const AudioClip clip = microphone ? microphone->stop() : simulated->stop();
+        echoplan::robot::fill_message(clip, message);
+        if (microphone && !microphone->last_report().stream_error.empty())
+          message.error = microphone->last_report().stream_error;
+        if (!save_dir.empty()) {
+          message.path =
+              (std::filesystem::path(save_dir) / fmt::format("{:04d}_{}.wav", sequence, action))
+                  .string();
+          echoplan::audio::write_audio(message.path, clip);
+        }
+      } catch (const std::exception& e) {
+        ROS_ERROR("recording '%s' failed: %s", action.c_str(), e.what());
+        message.error = e.what();
+        message.sample_rate = microphone ? microphone->config().sample_rate : 0;
+        message.channels = microphone ? microphone->config().channels : 0;
+      }
+      clips.publish(message);
+      publish_state(false, action, "");
+    }
+    rate.sleep();
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "echoplan_listener");
+  ros::NodeHandle node;
+  ros::NodeHandle priv("~");
+  return echoplan::ros_app::run_node([&] { return run(node, priv); });
+}

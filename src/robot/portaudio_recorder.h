@@ -1,0 +1,107 @@
+// Live capture from a sound card through PortAudio: the real robot's microphone as a Recorder.
+//
+// A PortAudioRecorder opens one input stream per recording (start() opens it, stop() closes it), so
+// a device unplugged between actions is found at the next start(), and each recording starts clean.
+// The audio callback only copies samples into a preallocated single-producer/single-consumer ring;
+// a drain thread moves them into the clip, so the callback never allocates or locks.
+//
+// Defined outcomes (each logged through spdlog):
+//   - no input device, an unknown device name, a rate or channel count the device cannot do:
+//     InputError from the constructor, naming the device and what it can do;
+//   - an input overflow (the sound card dropped samples before PortAudio saw them): a warning at
+//     stop() with the number of callbacks that reported one; the clip keeps what was delivered;
+//   - the ring full (the drain thread fell behind): the frames that did not fit are dropped,
+//   counted
+//     and reported in a warning at stop();
+//   - the stream ends by itself (the device disappeared or failed): stop() logs an error and
+//   returns
+//     what was captured before; if nothing was, it throws std::runtime_error saying so;
+//   - the clip reaches CaptureConfig::max_seconds: capture stops there (a recording left running
+//     cannot exhaust memory) and stop() returns exactly that many frames.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "audio/clip.h"
+#include "robot/recorder.h"
+
+namespace echoplan::robot {
+
+// How to capture. Defaults: the default input device, 2 channels at 44.1 kHz (the seed's
+// recordings).
+struct CaptureConfig {
+  // Which input device: empty for the system's default input, a device index as listed by
+  // `echoplan devices`, or a (case-sensitive) substring of a device name.
+  std::string device;
+  int sample_rate = 44100;      // Hz, >= 1
+  int channels = 2;             // >= 1
+  int frames_per_buffer = 512;  // frames per audio callback (latency vs. callback rate)
+  double max_seconds = 600.0;   // a recording stops growing after this long; > 0
+
+  // Throws InputError naming the bad field.
+  void validate() const;
+};
+
+// One input device as PortAudio sees it.
+struct InputDevice {
+  int index = 0;  // PortAudio device index (stable while the device set is unchanged)
+  std::string name;
+  std::string host_api;  // e.g. "ALSA", "JACK Audio Connection Kit"
+  int max_input_channels = 0;
+  double default_sample_rate = 0;  // Hz
+  bool is_default = false;         // the default input device of the default host API
+};
+
+// Every device with at least one input channel. Throws std::runtime_error when PortAudio cannot
+// start.
+std::vector<InputDevice> list_input_devices();
+
+// What went wrong or was lost in the last recording (reset by start()).
+struct CaptureReport {
+  std::size_t frames = 0;          // frames in the clip stop() returned
+  int overflow_callbacks = 0;      // callbacks flagged paInputOverflow by the host
+  std::size_t dropped_frames = 0;  // frames lost because the ring was full
+  bool limit_reached = false;      // capture stopped at max_seconds
+  std::string stream_error;        // non-empty when the stream ended by itself (device gone)
+};
+
+class PortAudioRecorder final : public Recorder {
+ public:
+  // Starts PortAudio, resolves `config.device` and checks that it can record `config.channels`
+  // channels at `config.sample_rate` as 32-bit float. Throws InputError otherwise.
+  explicit PortAudioRecorder(const CaptureConfig& config);
+  ~PortAudioRecorder() override;
+  PortAudioRecorder(const PortAudioRecorder&) = delete;
+  PortAudioRecorder& operator=(const PortAudioRecorder&) = delete;
+
+  // Opens and starts the input stream. Throws std::runtime_error when the device cannot be opened
+  // (gone since construction, busy) and logic_error when a recording is already running.
+  void start(const std::string& action) override;
+  // Stops the stream and returns every frame captured since start() (see the defined outcomes
+  // above).
+  audio::AudioClip stop() override;
+
+  // Frames captured so far in the running recording (for fixed-length recordings).
+  std::size_t frames_captured() const;
+  // True once the running recording cannot grow any more: max_seconds reached or the stream ended.
+  bool finished() const;
+  // What happened in the last finished recording.
+  const CaptureReport& last_report() const { return report_; }
+  // The device actually used.
+  const InputDevice& device() const { return device_; }
+  const CaptureConfig& config() const { return config_; }
+
+  struct Stream;  // the running stream's shared state (callback, ring, drain thread)
+
+ private:
+  CaptureConfig config_;
+  InputDevice device_;
+  CaptureReport report_;
+  std::unique_ptr<Stream> stream_;
+};
+
+}  // namespace echoplan::robot

@@ -1,0 +1,32 @@
+// An ObservationService behind ROS: each clip goes, with its samples, to the Observe service of
+// echoplan_observation, which classifies it with its trained model.
+//
+// A service that is not there is waited for up to `wait_timeout_s`; a service node that dies during
+// a call closes the connection, so the call fails at once. Both throw std::runtime_error naming the
+// service. An error the service reports for the request (no model for the action, bad clip) is an
+// InputError, as the interface promises.
+#pragma once
+
+#include <ros/ros.h>
+
+#include <string>
+
+#include "robot/observation_service.h"
+
+namespace echoplan::robot {
+
+class RosObservationService final : public ObservationService {
+ public:
+  // `node` must outlive the service client.
+  RosObservationService(ros::NodeHandle& node, double wait_timeout_s);
+
+  HeardObservation observe(const audio::AudioClip& clip, const std::string& action) override;
+
+ private:
+  ros::NodeHandle& node_;
+  double wait_timeout_s_;
+  ros::ServiceClient client_;
+  bool connected_before_ = false;  // a connection was made once: losing it means the node died
+};
+
+}  // namespace echoplan::robot

@@ -1,0 +1,91 @@
+#include "robot/ros/ros_recorder.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <stdexcept>
+
+#include "robot/ros/clip_message.h"
+#include "robot/ros/ros_protocol.h"
+
+namespace echoplan::robot {
+
+RosRecorder::RosRecorder(ros::NodeHandle& node, double wait_timeout_s)
+    : wait_timeout_s_(wait_timeout_s) {
+  // Clips can be large (2 s of stereo is 700 kB): keep a few, never drop the one we wait for.
+  state_sub_ = node.subscribe(ros_names::kRecordingTopic, 10, &RosRecorder::on_state, this,
+                              ros::TransportHints().tcpNoDelay());
+  clip_sub_ = node.subscribe(ros_names::kClipTopic, 4, &RosRecorder::on_clip, this,
+                             ros::TransportHints().tcpNoDelay());
+}
+
+void RosRecorder::on_state(const echoplan_ros::RecordingState::ConstPtr& state) {
+  std::lock_guard lock(mutex_);
+  ++states_received_;
+  last_state_ = *state;
+  changed_.notify_all();
+}
+
+void RosRecorder::on_clip(const echoplan_ros::Clip::ConstPtr& clip) {
+  std::lock_guard lock(mutex_);
+  ++clips_received_;
+  last_clip_ = clip;
+  changed_.notify_all();
+}
+
+void RosRecorder::start(const std::string& action) {
+  if (recording_) throw std::logic_error("RosRecorder::start: a recording is already running");
+  std::unique_lock lock(mutex_);
+  const std::uint64_t states_before = states_received_;
+  const auto t0 = std::chrono::steady_clock::now();
+  ros::param::set(ros_names::kRecordActionParam, action);
+  ros::param::set(ros_names::kRecordParam, true);
+  action_ = action;
+  recording_ = true;
+  // Wait for a state published after our parameter change that says capture started (or failed).
+  const bool answered =
+      changed_.wait_for(lock, std::chrono::duration<double>(wait_timeout_s_), [&] {
+        return states_received_ > states_before &&
+               (last_state_.recording || !last_state_.error.empty());
+      });
+  if (!answered || !last_state_.error.empty()) {
+    const std::string why =
+        answered ? "the listener could not start recording: " + last_state_.error
+                 : fmt::format(
+                       "the listener did not report recording within {:g} s after {} was "
+                       "set (is echoplan_listener running?)",
+                       wait_timeout_s_, ros_names::kRecordParam);
+    ros::param::set(ros_names::kRecordParam, false);
+    recording_ = false;
+    throw std::runtime_error(fmt::format("recording '{}': {}", action, why));
+  }
+  last_start_latency_s_ =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+audio::AudioClip RosRecorder::stop() {
+  if (!recording_) throw std::logic_error("RosRecorder::stop: no recording is running");
+  recording_ = false;
+  std::unique_lock lock(mutex_);
+  const std::uint64_t clips_before = clips_received_;
+  ros::param::set(ros_names::kRecordParam, false);
+  const bool answered = changed_.wait_for(lock, std::chrono::duration<double>(wait_timeout_s_),
+                                          [&] { return clips_received_ > clips_before; });
+  if (!answered)
+    throw std::runtime_error(
+        fmt::format("recording '{}': no clip on {} within {:g} s after {} fell (is "
+                    "echoplan_listener running?)",
+                    action_, ros_names::kClipTopic, wait_timeout_s_, ros_names::kRecordParam));
+  const echoplan_ros::Clip::ConstPtr clip = last_clip_;
+  lock.unlock();
+  if (!clip->error.empty()) {
+    if (clip->samples.empty())
+      throw std::runtime_error(
+          fmt::format("recording '{}': the listener recorded nothing: {}", action_, clip->error));
+    ROS_ERROR("recording '%s': %s (keeping the %zu samples captured)", action_.c_str(),
+              clip->error.c_str(), clip->samples.size());
+  }
+  return clip_from_message(*clip, ros_names::kClipTopic);
+}
+
+}  // namespace echoplan::robot

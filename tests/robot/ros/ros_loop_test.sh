@@ -1,0 +1,108 @@
+#!/bin/bash
+# The ROS 1 loop end to end: a real roscore on 127.0.0.1 on a free port, echoplan_sim_robot,
+# echoplan_listener, echoplan_observation and echoplan_planner, compared with the in-process loop.
+#
+# Usage: ros_loop_test.sh CASE BUILD_DIR
+#   sim               the all-simulated layout (listener hears the simulated robot's clips): the trials
+#                     end in a sorting action and loop_steps.csv equals the in-process loop's, byte for byte
+#   mic               the listener records from a capture device that reads a file (private ALSA
+#                     configuration): same comparison, with the in-process loop on the same device
+#   run               the all-simulated layout with the planner told the true object: its log equals
+#                     `echoplan run --object` (the in-process loop's command), byte for byte
+#   launch            the all-simulated layout started by simulated_layout.launch: same comparison
+#   kill_observation  the observation node is killed mid-trial: the planner stops within seconds with a
+#                     logged failure naming the service, exit status 1, the finished steps kept
+set -u
+case_name=$1
+build=$2
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+. "$(dirname "$0")/ros_session.sh"
+ros_session_begin || { fail "roscore"; exit 1; }
+
+"$build/tests/robot/ros/ros_loop_reference" prepare "$work" || { fail "preparing the model"; exit 1; }
+seed=3
+episodes=300
+trials=2
+source=simulation
+min_duration=0
+if [ "$case_name" = mic ]; then
+  source=microphone
+  min_duration=0.1  # the file-backed device fills 0.5 s in a few ms; leave it time under load
+  file_microphone "$build/echoplan" || { fail "making the file-backed microphone"; exit 1; }
+fi
+[ "$case_name" = kill_observation ] && trials=3
+object_param=()
+if [ "$case_name" = run ]; then
+  trials=1
+  object_param=(_object:=coffee_mug)
+fi
+
+if [ "$case_name" = launch ]; then
+  # The all-simulated layout as its launch file starts it (the package the build makes in build/ros).
+  ROS_PACKAGE_PATH=$build/ros setsid timeout 120 roslaunch "$build/ros/echoplan/launch/simulated_layout.launch" \
+    model:="$work/model.json" problem:="$work/problem.yaml" out:="$work/ros_run" trials:=$trials seed:=$seed \
+    episodes:=$episodes >"$work/planner.log" 2>&1 &
+  planner_pid=$!
+  pgids+=("$planner_pid")
+else
+  start sim_robot "$build/echoplan_sim_robot" _min_duration_s:=$min_duration
+  start listener "$build/echoplan_listener" _source:=$source _max_seconds:=0.5
+  start observation "$build/echoplan_observation" _model:="$work/model.json"
+  observation_pid=$started
+  start planner timeout 120 "$build/echoplan_planner" _problem:="$work/problem.yaml" _out:="$work/ros_run" \
+    _seed:=$seed _episodes:=$episodes _trials:=$trials _wait_timeout_s:=10 "${object_param[@]}"
+  planner_pid=$started
+fi
+if [ "$case_name" = kill_observation ]; then
+  # Kill the observation node once it has answered its first request.
+  for _ in $(seq 300); do grep -q "heard" "$work/observation.log" && break; sleep 0.05; done
+  { kill -KILL "$observation_pid"; wait "$observation_pid"; } 2>/dev/null
+  killed_at=$(date +%s.%N)
+fi
+wait "$planner_pid"
+status=$?
+
+case "$case_name" in
+  sim | mic | launch | run)
+    [ "$status" -eq 0 ] || { fail "echoplan_planner exited $status"; cat "$work/planner.log"; }
+    ref_source=sim
+    [ "$case_name" = mic ] && ref_source=mic
+    if [ "$case_name" = run ]; then
+      "$build/echoplan" run --object coffee_mug --problem "$work/problem.yaml" --model "$work/model.json" \
+        --seed $seed --episodes $episodes --out "$work/in_process" >"$work/reference.log" 2>&1 \
+        || { fail "echoplan run failed"; cat "$work/reference.log"; }
+    else
+      "$build/tests/robot/ros/ros_loop_reference" run "$work" "$work/in_process" $ref_source $seed $episodes $trials \
+        0.5 >"$work/reference.log" 2>&1 || { fail "the in-process reference failed"; cat "$work/reference.log"; }
+    fi
+    if ! cmp -s "$work/ros_run/loop_steps.csv" "$work/in_process/loop_steps.csv"; then
+      fail "loop_steps.csv over ROS differs from the in-process loop's"
+      diff "$work/ros_run/loop_steps.csv" "$work/in_process/loop_steps.csv"
+    fi
+    # Every trial ends in a sorting action.
+    ended=$(awk -F, 'NR > 1 && $3 ~ /^move_to_/ {n++} END {print n + 0}' "$work/ros_run/loop_steps.csv")
+    [ "$ended" -eq "$trials" ] || { fail "$ended of $trials trials ended in a sorting action"; cat "$work/ros_run/loop_steps.csv"; }
+    # The recorded clips are the same audio.
+    for clip in "$work"/in_process/clips/*.wav; do
+      cmp -s "$clip" "$work/ros_run/clips/$(basename "$clip")" || fail "clip $(basename "$clip") differs"
+    done
+    ;;
+  kill_observation)
+    took=$(/usr/bin/python3 -c "import time; print(round(time.time() - $killed_at, 1))")
+    [ "$status" -eq 1 ] || fail "echoplan_planner exited $status, expected 1"
+    grep -q "trial stopped: .*/echoplan/observe" "$work/planner.log" \
+      || { fail "the planner's log does not name the failed service"; cat "$work/planner.log"; }
+    /usr/bin/python3 -c "import sys; sys.exit(0 if $took < 15 else 1)" || fail "the planner took $took s to give up"
+    [ "$(wc -l <"$work/ros_run/loop_steps.csv")" -ge 2 ] || fail "the steps finished before the kill were not kept"
+    echo "planner stopped $took s after the kill: $(grep -o 'trial stopped: .*' "$work/planner.log")"
+    ;;
+  *) fail "unknown case $case_name" ;;
+esac
+
+if [ "$failures" -eq 0 ]; then
+  echo "ros_$case_name: all checks passed"
+else
+  for log in "$work"/*.log; do echo "--- $(basename "$log")"; tail -20 "$log"; done
+fi
+exit "$failures"
