@@ -66,7 +66,9 @@ grep -q "$kept of 12 trials already in" "$work/resumed.err" || fail "the resumed
 same_files "$work/whole" "$work/killed" "killed and resumed against one run"
 
 # Ctrl-C: exit 130 with the finished trials kept, then the same command again.
-"$bin" experiment --config "$config" --out "$work/interrupted" --workers 1 >/dev/null 2>"$work/int.err" &
+# A shell starts background jobs with SIGINT ignored (and StopSignal keeps an ignored signal ignored):
+# `env --default-signal=INT` gives the command the default disposition, as a terminal would.
+env --default-signal=INT "$bin" experiment --config "$config" --out "$work/interrupted" --workers 1 >/dev/null 2>"$work/int.err" &
 pid=$!
 waited=0
 while [ "$(cat "$work/interrupted/journal.jsonl" 2>/dev/null | wc -l)" -lt 1 ] && [ "$waited" -lt 3000 ]; do
