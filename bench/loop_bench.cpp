@@ -1,10 +1,10 @@
 // Observation latency of the closed loop: from the end of a recording (the clip in hand) to the
 // belief updated with what was heard. Target: <= 5 ms (issue 9). Results: docs/BENCHMARKS.md.
 //
-// The clip is a 3 s stereo 44.1 kHz simulated strike (what SimulatedMicrophone hands back); the model
-// is trained on 5 simulated recordings per object and action of the report's four objects; the
-// belief is the problem's particle filter (1000 particles) on the calibrated problem. The parts are
-// timed alone too, so the sum can be checked against the whole.
+// The clip is a 3 s stereo 44.1 kHz simulated strike (what SimulatedMicrophone hands back); the
+// model is trained on 5 simulated recordings per object and action of the report's four objects;
+// the belief is the problem's particle filter (1000 particles) on the calibrated problem. The parts
+// are timed alone too, so the sum can be checked against the whole.
 #include <benchmark/benchmark.h>
 
 #include <atomic>
@@ -44,9 +44,11 @@ struct Fixture {
     training.directory = std::filesystem::temp_directory_path() / "echoplan_loop_bench";
     const std::atomic<bool> never{false};
     model = std::make_shared<const perception::ObservationModel>(
-        experiment::train_on_simulated_recordings(catalogue, sim::SimConfig{}, training, {}, never));
+        experiment::train_on_simulated_recordings(catalogue, sim::SimConfig{}, training, {},
+                                                  never));
     std::filesystem::remove_all(training.directory);
-    problem = std::make_shared<pomdp::ObjectIdentificationModel>(experiment::calibrated_problem(data, *model));
+    problem = std::make_shared<pomdp::ObjectIdentificationModel>(
+        experiment::calibrated_problem(data, *model));
     sim::SimulatedRobot robot(catalogue, "coffee_mug", sim::SimConfig{});
     sim::SimulatedRecorder recorder(robot.object(), robot.table(), sim::SimConfig{});
     Rng rng(12345);
@@ -56,8 +58,9 @@ struct Fixture {
   pomdp::Observation symbol(const robot::HeardObservation& heard) const {
     const auto& names = problem->spec().observation.names;
     pomdp::Observation o;
-    o.index = static_cast<int>(std::find(names.begin(), names.end(), heard.unknown ? "unknown" : heard.label) -
-                               names.begin());
+    o.index = static_cast<int>(
+        std::find(names.begin(), names.end(), heard.unknown ? "unknown" : heard.label) -
+        names.begin());
     return o;
   }
 };

@@ -1,5 +1,5 @@
-// Search speed of the online solvers: episodes per second of ABT and POMCP growing a fresh tree from
-// the initial belief of a problem file (the cost of a planning step's first episodes).
+// Search speed of the online solvers: episodes per second of ABT and POMCP growing a fresh tree
+// from the initial belief of a problem file (the cost of a planning step's first episodes).
 //
 //   build/bench/planner_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
@@ -13,7 +13,8 @@ namespace {
 using namespace echoplan;
 
 void search_from_b0(benchmark::State& state, const char* problem_file, const char* solver_name) {
-  const pomdp::Problem problem = pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/" + problem_file);
+  const pomdp::Problem problem =
+      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/" + problem_file);
   solvers::SearchOptions options;
   options.max_depth = problem.planner.depth;
   auto solver = solvers::make_solver(solver_name, problem.model, options);
@@ -29,8 +30,12 @@ void search_from_b0(benchmark::State& state, const char* problem_file, const cha
   state.SetItemsProcessed(state.iterations() * episodes);  // items/s = episodes per second
 }
 
-void abt_audio_objects(benchmark::State& s) { search_from_b0(s, "problems/audio_objects.yaml", "abt"); }
-void pomcp_audio_objects(benchmark::State& s) { search_from_b0(s, "problems/audio_objects.yaml", "pomcp"); }
+void abt_audio_objects(benchmark::State& s) {
+  search_from_b0(s, "problems/audio_objects.yaml", "abt");
+}
+void pomcp_audio_objects(benchmark::State& s) {
+  search_from_b0(s, "problems/audio_objects.yaml", "pomcp");
+}
 void abt_tiger(benchmark::State& s) { search_from_b0(s, "problems/tiger.pomdp", "abt"); }
 void pomcp_tiger(benchmark::State& s) { search_from_b0(s, "problems/tiger.pomdp", "pomcp"); }
 

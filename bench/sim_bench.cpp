@@ -11,7 +11,8 @@ namespace {
 using echoplan::sim::SimConfig;
 
 const echoplan::sim::Catalogue& catalogue() {
-  static const auto c = echoplan::sim::load_catalogue(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml");
+  static const auto c =
+      echoplan::sim::load_catalogue(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml");
   return c;
 }
 
@@ -35,7 +36,8 @@ void BM_Recording(benchmark::State& state) {
     benchmark::DoNotOptimize(r.clip.samples.data());
   }
   state.SetLabel(std::string(object) + "/" + action);
-  state.counters["audio_s_per_s"] = benchmark::Counter(audio_seconds * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["audio_s_per_s"] =
+      benchmark::Counter(audio_seconds * state.iterations(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_Recording)->ArgsProduct({{0, 1, 2, 3}, {0, 1}})->Unit(benchmark::kMillisecond);
 
@@ -65,7 +67,8 @@ BENCHMARK(BM_SynthesisOnly)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 // Baseline for the ratio: compiling the scene once (paid per object, not per recording).
 void BM_SceneCompile(benchmark::State& state) {
   const SimConfig config;
-  for (auto _ : state) benchmark::DoNotOptimize(echoplan::sim::SimulatedRobot(catalogue(), kObjects[0], config));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(echoplan::sim::SimulatedRobot(catalogue(), kObjects[0], config));
 }
 BENCHMARK(BM_SceneCompile)->Unit(benchmark::kMillisecond);
 

@@ -9,7 +9,7 @@
 #
 # Environment: JOBS (parallel build jobs, default: number of cores), BUILD_DIR (default: build),
 # SAN_BUILD_DIR (default: build-san), ECHOPLAN_CHECK_FORMAT (1: `test` first checks the layout of every
-# C++ file with scripts/check-format.sh; default 0 until the tree is formatted once).
+# C++ file with scripts/check-format.sh; default 1; 0 skips it).
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -72,7 +72,7 @@ case "$mode" in
     ;;
   test)
     install_deps
-    if [ "${ECHOPLAN_CHECK_FORMAT:-0}" = 1 ]; then scripts/check-format.sh; fi
+    if [ "${ECHOPLAN_CHECK_FORMAT:-1}" = 1 ]; then scripts/check-format.sh; fi
     build "$build_dir"
     ctest --test-dir "$build_dir" -j"$jobs" --output-on-failure
     scripts/check-install.sh "$build_dir"

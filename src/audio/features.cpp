@@ -25,19 +25,23 @@ FeatureExtractor::FeatureExtractor(const FeatureConfig& config)
   for (std::size_t i = 0; i < n_mfcc; ++i) {
     const double scale = std::sqrt((i == 0 ? 1.0 : 2.0) / static_cast<double>(n_mels));
     for (std::size_t m = 0; m < n_mels; ++m)
-      dct_[i * n_mels + m] =
-          scale * std::cos(std::numbers::pi * static_cast<double>(i) * (2.0 * static_cast<double>(m) + 1.0) / (2.0 * static_cast<double>(n_mels)));
+      dct_[i * n_mels + m] = scale * std::cos(std::numbers::pi * static_cast<double>(i) *
+                                              (2.0 * static_cast<double>(m) + 1.0) /
+                                              (2.0 * static_cast<double>(n_mels)));
   }
   lifter_.assign(n_mfcc, 1.0);
   if (config.lifter > 0)
     for (std::size_t i = 0; i < n_mfcc; ++i)
-      lifter_[i] = 1.0 + config.lifter / 2.0 * std::sin(std::numbers::pi * static_cast<double>(i) / config.lifter);
+      lifter_[i] = 1.0 + config.lifter / 2.0 *
+                             std::sin(std::numbers::pi * static_cast<double>(i) / config.lifter);
   bin_hz_.resize(bins);
-  for (std::size_t k = 0; k < bins; ++k) bin_hz_[k] = static_cast<double>(k) * config.sample_rate / config.stft.fft_size;
+  for (std::size_t k = 0; k < bins; ++k)
+    bin_hz_[k] = static_cast<double>(k) * config.sample_rate / config.stft.fft_size;
   magnitude_.resize(bins);
   previous_magnitude_.resize(bins);
   mel_energy_.resize(n_mels);
-  frame_.resize(static_cast<std::size_t>(std::max(config.stft.framing.frame_length, config.zcr_framing.frame_length)));
+  frame_.resize(static_cast<std::size_t>(
+      std::max(config.stft.framing.frame_length, config.zcr_framing.frame_length)));
 }
 
 void FeatureExtractor::preemphasise(std::span<const float> signal) {
@@ -46,7 +50,8 @@ void FeatureExtractor::preemphasise(std::span<const float> signal) {
   emphasised_[0] = signal[0];
   const double a = config_.preemphasis;
   for (std::size_t n = 1; n < signal.size(); ++n)
-    emphasised_[n] = static_cast<float>(static_cast<double>(signal[n]) - a * static_cast<double>(signal[n - 1]));
+    emphasised_[n] =
+        static_cast<float>(static_cast<double>(signal[n]) - a * static_cast<double>(signal[n - 1]));
 }
 
 void FeatureExtractor::power_spectrogram(std::span<const float> signal, FeatureMatrix& out) {
@@ -58,8 +63,8 @@ void FeatureExtractor::power_spectrogram(std::span<const float> signal, FeatureM
   }
   stft_.power(source, out);
   if (out.rows == 0)
-    throw InputError(fmt::format("signal of {} samples is shorter than one frame ({} samples)", signal.size(),
-                                 config_.stft.framing.frame_length));
+    throw InputError(fmt::format("signal of {} samples is shorter than one frame ({} samples)",
+                                 signal.size(), config_.stft.framing.frame_length));
 }
 
 void FeatureExtractor::compute(std::span<const float> signal, Features& out) {
@@ -69,13 +74,14 @@ void FeatureExtractor::compute(std::span<const float> signal, Features& out) {
   time_domain(signal, out);
 }
 
-// Centroid, bandwidth, roll-off, flatness and flux from the magnitude spectrum |X| = sqrt(power), as
-// librosa defines them (bandwidth p = 2; flatness over max(|X|^2, amin)). Each quantity is its own simple
-// loop so that the compiler vectorises it.
+// Centroid, bandwidth, roll-off, flatness and flux from the magnitude spectrum |X| = sqrt(power),
+// as librosa defines them (bandwidth p = 2; flatness over max(|X|^2, amin)). Each quantity is its
+// own simple loop so that the compiler vectorises it.
 void FeatureExtractor::spectral_shape(Features& out) {
   const std::size_t frames = power_.rows;
   const std::size_t bins = power_.cols;
-  for (FeatureMatrix* m : {&out.centroid, &out.bandwidth, &out.rolloff, &out.flatness, &out.flux}) m->resize(frames, 1);
+  for (FeatureMatrix* m : {&out.centroid, &out.bandwidth, &out.rolloff, &out.flatness, &out.flux})
+    m->resize(frames, 1);
   const float amin = static_cast<float>(config_.amin);
   const double* hz = bin_hz_.data();
   for (std::size_t t = 0; t < frames; ++t) {
@@ -91,7 +97,8 @@ void FeatureExtractor::spectral_shape(Features& out) {
     }
     const double centroid = total > 0.0 ? weighted / total : 0.0;
     double spread = 0.0;
-    for (std::size_t k = 0; k < bins; ++k) spread += mag[k] * (hz[k] - centroid) * (hz[k] - centroid);
+    for (std::size_t k = 0; k < bins; ++k)
+      spread += mag[k] * (hz[k] - centroid) * (hz[k] - centroid);
     double flux = 0.0;
     for (std::size_t k = 0; k < bins; ++k) flux += std::max(0.0f, mag[k] - prev[k]);
     // Roll-off: the first bin whose cumulative magnitude reaches the fraction of the total.
@@ -103,8 +110,8 @@ void FeatureExtractor::spectral_shape(Features& out) {
       if (cumulative >= threshold) break;
     }
     // Flatness needs mean(log p): the product of 16 clamped powers in double stays within range
-    // ((1e-18)^16 and, with fft_size <= 2^24, (2^48)^16 are normal doubles), so one log per 16 bins replaces
-    // one per bin.
+    // ((1e-18)^16 and, with fft_size <= 2^24, (2^48)^16 are normal doubles), so one log per 16 bins
+    // replaces one per bin.
     double log_sum = 0.0;
     double power_sum = 0.0;
     std::size_t k = 0;
@@ -125,7 +132,8 @@ void FeatureExtractor::spectral_shape(Features& out) {
     out.centroid.at(t, 0) = static_cast<float>(centroid);
     out.bandwidth.at(t, 0) = static_cast<float>(total > 0.0 ? std::sqrt(spread / total) : 0.0);
     out.rolloff.at(t, 0) = static_cast<float>(bin_hz_[rolloff_bin]);
-    out.flatness.at(t, 0) = static_cast<float>(std::exp(log_sum / static_cast<double>(bins)) / (power_sum / static_cast<double>(bins)));
+    out.flatness.at(t, 0) = static_cast<float>(std::exp(log_sum / static_cast<double>(bins)) /
+                                               (power_sum / static_cast<double>(bins)));
     out.flux.at(t, 0) = static_cast<float>(t == 0 ? 0.0 : flux);
     std::swap(magnitude_, previous_magnitude_);
   }
@@ -146,7 +154,8 @@ void FeatureExtractor::cepstra(Features& out) {
     auto row = out.log_mel.row(t);
     for (std::size_t m = 0; m < n_mels; ++m) {
       const double e = mel_energy_[m] * power_scale;
-      const double value = decibel ? 10.0 * std::log10(std::max(e, config_.amin)) : std::log(e == 0.0 ? DBL_EPSILON : e);
+      const double value = decibel ? 10.0 * std::log10(std::max(e, config_.amin))
+                                   : std::log(e == 0.0 ? DBL_EPSILON : e);
       row[m] = static_cast<float>(value);
       db_max = std::max(db_max, value);
     }
@@ -174,7 +183,8 @@ void FeatureExtractor::cepstra(Features& out) {
   }
 }
 
-// RMS over the STFT framing and zero-crossing rate over its own framing, on the raw (unemphasised) signal.
+// RMS over the STFT framing and zero-crossing rate over its own framing, on the raw (unemphasised)
+// signal.
 void FeatureExtractor::time_domain(std::span<const float> signal, Features& out) {
   const auto& framing = config_.stft.framing;
   const std::size_t frames = power_.rows;
@@ -187,9 +197,9 @@ void FeatureExtractor::time_domain(std::span<const float> signal, Features& out)
     out.rms.at(t, 0) = static_cast<float>(std::sqrt(sum / static_cast<double>(frame.size())));
   }
 
-  // librosa.zero_crossings: values within the threshold are zero, and zero counts as positive. Crossings
-  // are integers, so frames wholly inside the signal take exact differences of a running count; frames
-  // that reach into the padding are counted directly.
+  // librosa.zero_crossings: values within the threshold are zero, and zero counts as positive.
+  // Crossings are integers, so frames wholly inside the signal take exact differences of a running
+  // count; frames that reach into the padding are counted directly.
   const auto& zcr_framing = config_.zcr_framing;
   const std::size_t zcr_frames = frame_count(zcr_framing, signal.size());
   out.zcr.resize(zcr_frames, 1);
@@ -204,16 +214,19 @@ void FeatureExtractor::time_domain(std::span<const float> signal, Features& out)
   const auto length = static_cast<std::size_t>(zcr_framing.frame_length);
   const std::span<float> zframe(frame_.data(), length);
   for (std::size_t t = 0; t < zcr_frames; ++t) {
-    const std::ptrdiff_t start =
-        static_cast<std::ptrdiff_t>(t) * zcr_framing.hop - (zcr_framing.center ? zcr_framing.frame_length / 2 : 0);
+    const std::ptrdiff_t start = static_cast<std::ptrdiff_t>(t) * zcr_framing.hop -
+                                 (zcr_framing.center ? zcr_framing.frame_length / 2 : 0);
     std::size_t crossings = 0;
     if (start >= 0 && static_cast<std::size_t>(start) + length <= signal.size()) {
-      crossings = crossings_before_[static_cast<std::size_t>(start) + length - 1] - crossings_before_[static_cast<std::size_t>(start)];
+      crossings = crossings_before_[static_cast<std::size_t>(start) + length - 1] -
+                  crossings_before_[static_cast<std::size_t>(start)];
     } else {
       copy_frame(zcr_framing, signal, t, zframe);
-      for (std::size_t n = 1; n < length; ++n) crossings += negative(zframe[n]) != negative(zframe[n - 1]) ? 1 : 0;
+      for (std::size_t n = 1; n < length; ++n)
+        crossings += negative(zframe[n]) != negative(zframe[n - 1]) ? 1 : 0;
     }
-    out.zcr.at(t, 0) = static_cast<float>(static_cast<double>(crossings) / static_cast<double>(length));
+    out.zcr.at(t, 0) =
+        static_cast<float>(static_cast<double>(crossings) / static_cast<double>(length));
   }
 }
 

@@ -1,15 +1,16 @@
 #include "audio/framing.h"
 
-#include <algorithm>
-
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "common/error.h"
 
 namespace echoplan::audio {
 
 void validate_framing(const FramingConfig& config) {
-  if (config.frame_length < 1) throw InputError(fmt::format("frame_length {} must be at least 1 sample", config.frame_length));
+  if (config.frame_length < 1)
+    throw InputError(fmt::format("frame_length {} must be at least 1 sample", config.frame_length));
   if (config.hop < 1) throw InputError(fmt::format("hop {} must be at least 1 sample", config.hop));
 }
 
@@ -26,7 +27,8 @@ std::size_t frame_count(const FramingConfig& config, std::size_t length) {
   return 1 + (config.pad_tail ? (rest + hop - 1) / hop : rest / hop);
 }
 
-void copy_frame(const FramingConfig& config, std::span<const float> signal, std::size_t index, std::span<float> out) {
+void copy_frame(const FramingConfig& config, std::span<const float> signal, std::size_t index,
+                std::span<float> out) {
   const auto length = static_cast<std::ptrdiff_t>(signal.size());
   const auto frame = static_cast<std::ptrdiff_t>(config.frame_length);
   // First sample of the frame in signal coordinates; negative or past the end means padding.
@@ -41,8 +43,10 @@ void copy_frame(const FramingConfig& config, std::span<const float> signal, std:
   for (std::ptrdiff_t n = 0; n < frame; ++n) {
     const std::ptrdiff_t i = start + n;
     float value = 0.0f;
-    if (i >= 0 && i < length) value = signal[static_cast<std::size_t>(i)];
-    else if (edge && length > 0) value = signal[static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(i, 0, length - 1))];
+    if (i >= 0 && i < length)
+      value = signal[static_cast<std::size_t>(i)];
+    else if (edge && length > 0)
+      value = signal[static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(i, 0, length - 1))];
     out[static_cast<std::size_t>(n)] = value;
   }
 }

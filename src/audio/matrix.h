@@ -13,7 +13,8 @@ struct FeatureMatrix {
   std::size_t cols = 0;
   std::vector<float> values;
 
-  // Reshapes to rows x cols; keeps the allocation when the size does not grow. Contents are unspecified.
+  // Reshapes to rows x cols; keeps the allocation when the size does not grow. Contents are
+  // unspecified.
   void resize(std::size_t new_rows, std::size_t new_cols) {
     rows = new_rows;
     cols = new_cols;

@@ -1,10 +1,13 @@
 // Mel filterbanks: triangular filters on the mel scale, applied to a power spectrum.
 //
 // Two constructions, one per reference library:
-//  - psf_bins (python_speech_features): HTK mel scale 2595 log10(1 + f/700) (the same as 1125 ln(1 + f/700));
+//  - psf_bins (python_speech_features): HTK mel scale 2595 log10(1 + f/700) (the same as 1125 ln(1
+//  + f/700));
 //    filter edges snapped to FFT bins floor((N + 1) f / sr); peak weight 1; no normalisation;
-//  - slaney (librosa default): Slaney's mel scale (linear below 1 kHz, logarithmic above); continuous
-//    triangles over the bin frequencies k sr / N; each filter scaled by 2 / (upper edge - lower edge) Hz.
+//  - slaney (librosa default): Slaney's mel scale (linear below 1 kHz, logarithmic above);
+//  continuous
+//    triangles over the bin frequencies k sr / N; each filter scaled by 2 / (upper edge - lower
+//    edge) Hz.
 #pragma once
 
 #include <cstddef>
@@ -30,8 +33,8 @@ struct MelConfig {
   double fmax_hz = 0.0;  // 0 means sample_rate / 2
 };
 
-// A filterbank precomputed for one (sample rate, FFT size); stored sparsely (each filter's non-zero run)
-// so applying it costs one multiply-add per non-zero weight.
+// A filterbank precomputed for one (sample rate, FFT size); stored sparsely (each filter's non-zero
+// run) so applying it costs one multiply-add per non-zero weight.
 class MelFilterbank {
  public:
   MelFilterbank(const MelConfig& config, int sample_rate, int fft_size);
@@ -39,7 +42,8 @@ class MelFilterbank {
   std::size_t filters() const { return first_bin_.size(); }
   std::size_t bins() const { return bins_; }
 
-  // out[m] = sum_k weight[m][k] * power[k], accumulated in double. power has bins() values, out filters().
+  // out[m] = sum_k weight[m][k] * power[k], accumulated in double. power has bins() values, out
+  // filters().
   void apply(std::span<const float> power, std::span<double> out) const;
 
   // Dense weight of filter m at bin k (0 outside its support); for tests and plots.
@@ -47,8 +51,8 @@ class MelFilterbank {
 
  private:
   std::size_t bins_ = 0;
-  std::vector<std::size_t> first_bin_;          // per filter: first bin with a non-zero weight
-  std::vector<std::vector<double>> weights_;    // per filter: weights from first_bin_ on
+  std::vector<std::size_t> first_bin_;        // per filter: first bin with a non-zero weight
+  std::vector<std::vector<double>> weights_;  // per filter: weights from first_bin_ on
 };
 
 }  // namespace echoplan::audio

@@ -1,5 +1,5 @@
-// Internal to the audio module: lookups in the small (enum, name) tables that map command-line and file
-// names to enums, so every such table behaves the same way.
+// Internal to the audio module: lookups in the small (enum, name) tables that map command-line and
+// file names to enums, so every such table behaves the same way.
 #pragma once
 
 #include <array>
@@ -12,7 +12,8 @@ namespace echoplan::audio::detail {
 template <typename Enum, std::size_t N>
 using NameTable = std::array<std::pair<Enum, std::string_view>, N>;
 
-// The name of `value` in `table` (the first entry's name if absent, which a complete table never is).
+// The name of `value` in `table` (the first entry's name if absent, which a complete table never
+// is).
 template <typename Enum, std::size_t N>
 std::string_view name_of(const NameTable<Enum, N>& table, Enum value) {
   for (const auto& [known, name] : table)

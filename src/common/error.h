@@ -1,8 +1,8 @@
 // Errors that carry where the problem is and what to do about it.
 //
-// Libraries never print and exit: they throw InputError for bad user input (a file, a flag, a value)
-// and let the caller decide. The `echoplan` command turns an InputError into one line on stderr and
-// exit status 2.
+// Libraries never print and exit: they throw InputError for bad user input (a file, a flag, a
+// value) and let the caller decide. The `echoplan` command turns an InputError into one line on
+// stderr and exit status 2.
 #pragma once
 
 #include <stdexcept>
@@ -10,8 +10,8 @@
 
 namespace echoplan {
 
-// Bad input from the user: a file, a command-line value, a recording. `file` may be empty (for flags);
-// `line` is 1-based, 0 when unknown. what() is the full message "file:line: problem".
+// Bad input from the user: a file, a command-line value, a recording. `file` may be empty (for
+// flags); `line` is 1-based, 0 when unknown. what() is the full message "file:line: problem".
 class InputError : public std::runtime_error {
  public:
   InputError(std::string file, int line, std::string problem);

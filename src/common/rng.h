@@ -2,8 +2,8 @@
 //
 // Every random choice in the project flows from a single user-set seed: functions take an `Rng&`
 // argument (never a global), and a component that needs its own stream (a trial, a recording, a
-// planner) derives it with `derive_seed(seed, stream...)` so that adding a stream elsewhere does not
-// shift the numbers this one sees.
+// planner) derives it with `derive_seed(seed, stream...)` so that adding a stream elsewhere does
+// not shift the numbers this one sees.
 #pragma once
 
 #include <cstdint>
@@ -18,8 +18,8 @@ using Rng = std::mt19937_64;
 // statistically independent seeds.
 std::uint64_t derive_seed(std::uint64_t seed, std::initializer_list<std::uint64_t> stream);
 
-// A uniform double in [0, 1) from `rng`, identical on every platform (std::uniform_real_distribution
-// is not specified bit for bit across standard libraries).
+// A uniform double in [0, 1) from `rng`, identical on every platform
+// (std::uniform_real_distribution is not specified bit for bit across standard libraries).
 inline double uniform01(Rng& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
 }  // namespace echoplan

@@ -1,8 +1,9 @@
-// Beliefs: what the agent thinks the hidden state is, and how that changes with what it does and hears.
+// Beliefs: what the agent thinks the hidden state is, and how that changes with what it does and
+// hears.
 //
 // Two implementations live in this module: ParticleBelief (sequential importance resampling with
-// reinvigoration, as the report's OPPT setup used) and ExactBelief (Bayes filter over a TabularModel).
-// Solvers only sample from a belief; the execution loop updates it.
+// reinvigoration, as the report's OPPT setup used) and ExactBelief (Bayes filter over a
+// TabularModel). Solvers only sample from a belief; the execution loop updates it.
 #pragma once
 
 #include <memory>
@@ -21,8 +22,8 @@ class Belief {
   virtual State sample(Rng& rng) const = 0;
 
   // Conditions the belief on having taken `action` and received `observation`. Never leaves the
-  // belief empty: when nothing explains the observation, implementations recover (reinvigoration for
-  // particles, a documented fallback for exact beliefs) and report it through the return value.
+  // belief empty: when nothing explains the observation, implementations recover (reinvigoration
+  // for particles, a documented fallback for exact beliefs) and report it through the return value.
   // Returns true when the update was regular, false when it had to recover.
   virtual bool update(int action, const Observation& observation, Rng& rng) = 0;
 

@@ -1,7 +1,7 @@
 // The planning-side model of a POMDP: what a solver may ask of a problem.
 //
-// In the spirit of OPPT's plugins and POMDPs.jl's generative interface: a solver only ever samples an
-// initial state, steps a state with an action, and weighs an observation. The model never holds
+// In the spirit of OPPT's plugins and POMDPs.jl's generative interface: a solver only ever samples
+// an initial state, steps a state with an action, and weighs an observation. The model never holds
 // mutable state of its own (beliefs, trees and simulators keep theirs elsewhere) and every random
 // choice comes from the `Rng&` passed in, so a rollout can be replayed from its seed.
 //
@@ -18,8 +18,8 @@
 namespace echoplan::pomdp {
 
 // A state: a vector of continuous variables (joint angles, object offset, ...) and one of discrete
-// ones (object identity, ...). `StateSpec` names them. For a tabular problem, discrete[0] is the state
-// index and continuous is empty.
+// ones (object identity, ...). `StateSpec` names them. For a tabular problem, discrete[0] is the
+// state index and continuous is empty.
 struct State {
   std::vector<double> continuous;
   std::vector<int> discrete;
@@ -92,12 +92,12 @@ class Model {
   virtual double observation_likelihood(const State& next_state, int action,
                                         const Observation& observation) const = 0;
 
-  // An estimate of the optimal value from `state` (used at new leaves of search trees). The default,
-  // 0, is always available but is a poor guide; models should override it.
+  // An estimate of the optimal value from `state` (used at new leaves of search trees). The
+  // default, 0, is always available but is a poor guide; models should override it.
   virtual double heuristic_value(const State& /*state*/) const { return 0.0; }
 
-  // The same model as explicit tables, when it is small and discrete (enables the exact Bayes filter
-  // and the offline bound solver); nullptr otherwise.
+  // The same model as explicit tables, when it is small and discrete (enables the exact Bayes
+  // filter and the offline bound solver); nullptr otherwise.
   virtual const TabularModel* tabular() const { return nullptr; }
 
   // The full model state that tabular state `s` stands for at the start of an episode (only
@@ -114,7 +114,8 @@ class Model {
 //   transition(s, a, s') = P(s' | s, a)
 //   observation(a, s', o) = P(o | s', a)
 //   reward(s, a)          = expected immediate reward
-// A state whose every action leaves it unchanged with zero reward is absorbing (treated as terminal).
+// A state whose every action leaves it unchanged with zero reward is absorbing (treated as
+// terminal).
 class TabularModel {
  public:
   virtual ~TabularModel() = default;

@@ -18,7 +18,7 @@ struct HeardObservation {
   bool unknown = false;
   double probability = 0;  // calibrated probability of `label` (when unknown: of the nearest class)
   std::vector<std::pair<std::string, double>> probabilities;  // per class, calibrated, sums to 1
-  double distance = 0;     // the classifier's distance to the chosen class (for the reject option)
+  double distance = 0;  // the classifier's distance to the chosen class (for the reject option)
   // A few named numbers that describe the clip as the service analysed it (onset, level, ...), for
   // logs; may be empty.
   std::vector<std::pair<std::string, double>> features;
@@ -38,8 +38,8 @@ class ObservationService {
   // What this service can report. The default, nothing, is for services that cannot tell in advance
   // (a remote classifier); the loop then checks each observation as it comes.
   virtual std::optional<ServiceVocabulary> vocabulary() const { return std::nullopt; }
-  // Classifies `clip`, recorded during `action`. Throws InputError when the service has no model for
-  // `action`.
+  // Classifies `clip`, recorded during `action`. Throws InputError when the service has no model
+  // for `action`.
   virtual HeardObservation observe(const audio::AudioClip& clip, const std::string& action) = 0;
 };
 

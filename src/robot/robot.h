@@ -30,8 +30,8 @@ enum class ActionStatus {
 struct ActionReport {
   std::string action;
   ActionStatus status = ActionStatus::done;
-  std::string reason;      // for collision and failed: what happened, in words, for the log
-  double duration_s = 0;   // from the command to the end of the action (simulated or wall time)
+  std::string reason;     // for collision and failed: what happened, in words, for the log
+  double duration_s = 0;  // from the command to the end of the action (simulated or wall time)
 };
 
 const char* to_string(ActionStatus status);
@@ -39,9 +39,9 @@ const char* to_string(ActionStatus status);
 class Robot {
  public:
   virtual ~Robot() = default;
-  // Prepares a trial: a simulated robot resets its world around `context.object`; a real arm moves to
-  // its initial configuration. The world then keeps its state through the trial: a slide moves the
-  // object, and the next action starts where the last one ended.
+  // Prepares a trial: a simulated robot resets its world around `context.object`; a real arm moves
+  // to its initial configuration. The world then keeps its state through the trial: a slide moves
+  // the object, and the next action starts where the last one ended.
   virtual void begin_trial(const TrialContext& context) = 0;
   // Executes a sensing action ("slide", "strike") or a sorting action (e.g. "move_to_A"), blocking
   // until it has finished. Throws InputError for an action name this robot does not know.

@@ -35,7 +35,8 @@ void AbtSolver::run_episode(Rng& rng) {
   // The root's particle set changes on update (replenishment), so its Q values are refreshed here.
   BeliefNode& top = root();
   for (std::size_t a = 0; a < top.actions.size(); ++a)
-    if (top.actions[a] && top.actions[a]->visits > 0) top.actions[a]->value = action_value(top, static_cast<int>(a));
+    if (top.actions[a] && top.actions[a]->visits > 0)
+      top.actions[a]->value = action_value(top, static_cast<int>(a));
 
   // Walk down: the root's particle is already filed in the root; deeper nodes receive theirs.
   BeliefNode* node = &top;

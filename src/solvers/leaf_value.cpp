@@ -16,9 +16,12 @@ LeafMode parse_leaf_mode(const std::string& text) {
 
 const char* leaf_mode_name(LeafMode mode) {
   switch (mode) {
-    case LeafMode::lookahead: return "lookahead";
-    case LeafMode::heuristic: return "heuristic";
-    case LeafMode::rollout: return "rollout";
+    case LeafMode::lookahead:
+      return "lookahead";
+    case LeafMode::heuristic:
+      return "heuristic";
+    case LeafMode::rollout:
+      return "rollout";
   }
   return "?";
 }
@@ -62,7 +65,8 @@ void LeafEstimate::add(const LeafOptions& options, const pomdp::Model& model,
       const double gamma = model.spec().discount;
       sums_.resize(actions, 0.0);
       for (int a = 0; a < actions; ++a) {
-        const pomdp::StepResult step = one_step_each ? (*one_step_each)[a] : model.step(state, a, rng);
+        const pomdp::StepResult step =
+            one_step_each ? (*one_step_each)[a] : model.step(state, a, rng);
         sums_[a] += step.reward + (step.terminal ? 0.0 : gamma * model.heuristic_value(step.next));
       }
       return;

@@ -1,15 +1,15 @@
 // The value a search tree assigns to a belief node it has not expanded yet.
 //
-// Why this matters: on the seed's problem a uniformly random rollout makes sensing look worthless next
-// to the -100 of a wrong sort (random play sorts wrongly half the time), so a planner valuing leaves
-// by random rollouts commits after about one observation (about -28 against V* = 2.95). Three
-// estimators are offered:
+// Why this matters: on the seed's problem a uniformly random rollout makes sensing look worthless
+// next to the -100 of a wrong sort (random play sorts wrongly half the time), so a planner valuing
+// leaves by random rollouts commits after about one observation (about -28 against V* = 2.95).
+// Three estimators are offered:
 //
 //   lookahead (default)  the belief-level value of the best single next step: for each action, the
 //                        mean over the node's particles of r(s, a) + gamma * h(s') (h = the model's
 //                        heuristic_value; 0 after a terminal step), maximised over actions. For an
-//                        object-identification problem that is "commit now to the best sorting action
-//                        for this belief, or sense once more and then rely on h".
+//                        object-identification problem that is "commit now to the best sorting
+//                        action for this belief, or sense once more and then rely on h".
 //   heuristic            the mean of the model's heuristic_value over the node's particles.
 //   rollout              the mean discounted return of uniformly random play from each particle
 //                        (classic POMCP), plus gamma^k * h at the depth limit. For comparison.
@@ -41,8 +41,8 @@ struct LeafOptions {
 class LeafEstimate {
  public:
   // Adds `state` (a particle that reached the node) to the estimate. `steps_left` bounds a rollout.
-  // `one_step_each` (optional): the result of stepping `state` once with each action, when the caller
-  // already has it; the lookahead estimate then reuses it instead of stepping again.
+  // `one_step_each` (optional): the result of stepping `state` once with each action, when the
+  // caller already has it; the lookahead estimate then reuses it instead of stepping again.
   void add(const LeafOptions& options, const pomdp::Model& model, const pomdp::State& state,
            int steps_left, Rng& rng, const std::vector<pomdp::StepResult>* one_step_each = nullptr);
   // The current estimate; 0 before any particle was added.

@@ -1,10 +1,10 @@
 // Which child of an action node an observation leads to.
 //
 // Discrete observations branch by symbol: one child per index. Continuous observations (feature
-// vectors) never repeat exactly, so they branch by distance: an observation joins the first existing
-// child whose representative observation lies within `continuous_threshold` (Euclidean distance, in
-// the observation's own units); otherwise it opens a new child and becomes that child's
-// representative. A threshold of 0 gives one child per distinct vector.
+// vectors) never repeat exactly, so they branch by distance: an observation joins the first
+// existing child whose representative observation lies within `continuous_threshold` (Euclidean
+// distance, in the observation's own units); otherwise it opens a new child and becomes that
+// child's representative. A threshold of 0 gives one child per distinct vector.
 #pragma once
 
 #include "pomdp/model.h"

@@ -97,7 +97,8 @@ std::vector<double> TreeSearchSolver::root_action_values() const {
 void TreeSearchSolver::update(int action, const pomdp::Observation& observation,
                               const pomdp::Belief& belief_after, Rng& rng) {
   if (!root_) throw std::logic_error("update() before reset()");
-  if (action < 0 || action >= model_->num_actions()) throw std::out_of_range("update(): bad action");
+  if (action < 0 || action >= model_->num_actions())
+    throw std::out_of_range("update(): bad action");
   // Keep the subtree the real step leads to; everything else goes when the old root is destroyed.
   std::unique_ptr<BeliefNode> kept;
   if (ActionNode* taken = root_->actions[action].get()) {
@@ -190,8 +191,8 @@ int TreeSearchSolver::select_action(const BeliefNode& node) const {
   for (std::size_t a = 0; a < node.actions.size(); ++a) {
     const ActionNode* action = node.actions[a].get();
     if (!action || action->visits == 0) return static_cast<int>(a);
-    const double score =
-        action->value + options_.exploration * std::sqrt(log_n / static_cast<double>(action->visits));
+    const double score = action->value + options_.exploration *
+                                             std::sqrt(log_n / static_cast<double>(action->visits));
     if (score > best_score) best = static_cast<int>(a), best_score = score;
   }
   return best;

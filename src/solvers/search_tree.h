@@ -1,11 +1,12 @@
-// The belief tree that ABT and POMCP share, and the parts of a tree-search solver they have in common.
+// The belief tree that ABT and POMCP share, and the parts of a tree-search solver they have in
+// common.
 //
 // A BeliefNode stands for a history (the root: the agent's current belief). It holds the particles
 // (sampled states) that episodes brought to it, one ActionNode per action tried from it, and a leaf
-// estimate while it is unexpanded. An ActionNode branches on observations (see observation_branch.h)
-// to child BeliefNodes. The solvers differ only in how an episode's returns flow back up:
-// ABT (abt_solver.h) recomputes each Q from its children's values (a max backup over the stored
-// episodes), POMCP (pomcp_solver.h) averages the sampled returns (Monte-Carlo backup).
+// estimate while it is unexpanded. An ActionNode branches on observations (see
+// observation_branch.h) to child BeliefNodes. The solvers differ only in how an episode's returns
+// flow back up: ABT (abt_solver.h) recomputes each Q from its children's values (a max backup over
+// the stored episodes), POMCP (pomcp_solver.h) averages the sampled returns (Monte-Carlo backup).
 //
 // TreeSearchSolver owns the tree: reset, the budget loop, UCB action selection, re-rooting and
 // pruning on update, root replenishment and statistics. Every node registers itself in the solver's
@@ -25,9 +26,9 @@ namespace echoplan::solvers {
 
 // Options shared by the tree-search solvers. Validated by validate().
 struct SearchOptions {
-  double exploration = 20.0;     // UCB constant c (reward units): Q + c sqrt(ln N / n); >= 0
-  int max_depth = 60;            // belief nodes deeper than this are valued by the leaf estimate; >= 1
-  int root_particles = 1000;     // particles drawn from the belief at reset / replenishment; >= 1
+  double exploration = 20.0;  // UCB constant c (reward units): Q + c sqrt(ln N / n); >= 0
+  int max_depth = 60;         // belief nodes deeper than this are valued by the leaf estimate; >= 1
+  int root_particles = 1000;  // particles drawn from the belief at reset / replenishment; >= 1
   int min_root_particles = 100;  // after update, a root with fewer particles is replenished; >= 0
   LeafOptions leaf;
   ObservationBranching branching;
@@ -51,7 +52,7 @@ struct BeliefNode {
   BeliefNode& operator=(const BeliefNode&) = delete;
 
   NodeCounts* counts;
-  std::vector<pomdp::State> particles;              // states episodes brought here
+  std::vector<pomdp::State> particles;               // states episodes brought here
   std::vector<std::unique_ptr<ActionNode>> actions;  // indexed by action; null until tried
   std::int64_t visits = 0;                           // episodes that reached this node
   std::int64_t action_visits = 0;                    // episodes that took an action here
@@ -67,8 +68,8 @@ struct BeliefNode {
 struct ObservationChild {
   pomdp::Observation observation;  // the branch's representative observation
   std::unique_ptr<BeliefNode> node;
-  std::int64_t arrivals = 0;    // non-terminal transitions into this branch (ABT weights)
-  double counted_value = 0.0;   // the child's value as last folded into the parent's future_sum
+  std::int64_t arrivals = 0;   // non-terminal transitions into this branch (ABT weights)
+  double counted_value = 0.0;  // the child's value as last folded into the parent's future_sum
 };
 
 struct ActionNode {
@@ -110,7 +111,8 @@ class TreeSearchSolver : public Solver {
   // One episode from a particle of the root, including its backup.
   virtual void run_episode(Rng& rng) = 0;
   // Called for each particle reset() or replenishment adds to the root.
-  virtual void root_particle_added(BeliefNode& /*root*/, const pomdp::State& /*state*/, Rng& /*rng*/) {}
+  virtual void root_particle_added(BeliefNode& /*root*/, const pomdp::State& /*state*/,
+                                   Rng& /*rng*/) {}
 
   const pomdp::Model& model() const { return *model_; }
   BeliefNode& root() { return *root_; }

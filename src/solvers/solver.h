@@ -4,9 +4,10 @@
 //   reset(belief)            once per episode, to root a fresh tree at the initial belief;
 //   improve(budget)          to grow the tree (a wall-time or an episode budget);
 //   best_action()            to read the decision;
-//   update(a, o, belief)     after executing a and hearing o: the child for (a, o) becomes the root, the
-//                            rest of the tree is freed, and the root is topped up from the real belief
-//                            when it holds too few particles.
+//   update(a, o, belief)     after executing a and hearing o: the child for (a, o) becomes the
+//   root, the
+//                            rest of the tree is freed, and the root is topped up from the real
+//                            belief when it holds too few particles.
 // Every random choice comes from the Rng passed in, so an episode budget replays exactly.
 #pragma once
 
@@ -57,8 +58,8 @@ class Solver {
   virtual std::vector<double> root_action_values() const = 0;
 
   // Moves the root to the child reached by (action, observation) and frees the rest of the tree.
-  // `belief_after` is the agent's real belief after the step; the new root is topped up from it when
-  // it holds too few particles (or when the tree never saw this observation).
+  // `belief_after` is the agent's real belief after the step; the new root is topped up from it
+  // when it holds too few particles (or when the tree never saw this observation).
   virtual void update(int action, const pomdp::Observation& observation,
                       const pomdp::Belief& belief_after, Rng& rng) = 0;
 

@@ -1,5 +1,5 @@
-// Tests of audio/io.h: round trips through libsndfile, channel policies, resampling, and every kind of bad
-// file the reader must reject with an InputError naming the file.
+// Tests of audio/io.h: round trips through libsndfile, channel policies, resampling, and every kind
+// of bad file the reader must reject with an InputError naming the file.
 #include "audio/io.h"
 
 #include <gtest/gtest.h>
@@ -18,7 +18,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kInputs = std::string(ECHOPLAN_SOURCE_DIR) + "/tests/data/reference/audio/inputs/";
+const std::string kInputs =
+    std::string(ECHOPLAN_SOURCE_DIR) + "/tests/data/reference/audio/inputs/";
 
 fs::path temp_path(const std::string& name) {
   fs::path dir = fs::temp_directory_path() / ("echoplan_io_test_" + std::to_string(::getpid()));
@@ -28,7 +29,8 @@ fs::path temp_path(const std::string& name) {
 
 void write_bytes(const fs::path& path, const std::vector<std::uint8_t>& bytes) {
   std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
 }
 
 std::vector<std::uint8_t> read_bytes(const fs::path& path) {
@@ -48,22 +50,29 @@ AudioClip sine_clip(int rate, int channels, int frames, double hz) {
   return clip;
 }
 
-// Succeeds when `fn` throws an InputError whose file is `file` and whose message contains `fragment`.
+// Succeeds when `fn` throws an InputError whose file is `file` and whose message contains
+// `fragment`.
 template <typename Fn>
-::testing::AssertionResult throws_input_error(Fn fn, const std::string& file, const std::string& fragment) {
+::testing::AssertionResult throws_input_error(Fn fn, const std::string& file,
+                                              const std::string& fragment) {
   try {
     fn();
   } catch (const InputError& e) {
-    if (e.file() != file) return ::testing::AssertionFailure() << "InputError names '" << e.file() << "', not '" << file << "'";
+    if (e.file() != file)
+      return ::testing::AssertionFailure()
+             << "InputError names '" << e.file() << "', not '" << file << "'";
     if (std::string(e.what()).find(fragment) == std::string::npos)
-      return ::testing::AssertionFailure() << "InputError '" << e.what() << "' lacks '" << fragment << "'";
+      return ::testing::AssertionFailure()
+             << "InputError '" << e.what() << "' lacks '" << fragment << "'";
     return ::testing::AssertionSuccess();
   }
-  return ::testing::AssertionFailure() << "expected InputError containing '" << fragment << "', nothing thrown";
+  return ::testing::AssertionFailure()
+         << "expected InputError containing '" << fragment << "', nothing thrown";
 }
 
 // 16-bit PCM quantises to 1/32768; a round trip may be off by half a step (plus float rounding).
-constexpr double kPcm16Step = 1.0 / 32768.0;  // exact: writing rounds to nearest, reading divides by 2^15
+constexpr double kPcm16Step =
+    1.0 / 32768.0;  // exact: writing rounds to nearest, reading divides by 2^15
 
 TEST(AudioIo, Pcm16WavRoundTripKeepsShapeAndSamplesToHalfAStep) {
   const AudioClip clip = sine_clip(44100, 2, 4410, 440.0);
@@ -73,7 +82,8 @@ TEST(AudioIo, Pcm16WavRoundTripKeepsShapeAndSamplesToHalfAStep) {
   EXPECT_EQ(back.sample_rate, 44100);
   EXPECT_EQ(back.channels, 2);
   ASSERT_EQ(back.samples.size(), clip.samples.size());
-  for (std::size_t i = 0; i < clip.samples.size(); ++i) EXPECT_NEAR(back.samples[i], clip.samples[i], 0.5 * kPcm16Step);
+  for (std::size_t i = 0; i < clip.samples.size(); ++i)
+    EXPECT_NEAR(back.samples[i], clip.samples[i], 0.5 * kPcm16Step);
 }
 
 TEST(AudioIo, FlacRoundTripIsLossless) {
@@ -95,12 +105,17 @@ TEST(AudioIo, Float32WavRoundTripIsExact) {
   const auto path = temp_path("f.wav").string();
   write_audio(path, clip, {FileFormat::wav, SampleEncoding::float32});
   EXPECT_EQ(read_audio(path).samples, clip.samples);
-  EXPECT_TRUE(throws_input_error([&] { write_audio(temp_path("f.flac").string(), clip, {FileFormat::flac, SampleEncoding::float32}); },
-                     temp_path("f.flac").string(), "integer"));
+  EXPECT_TRUE(throws_input_error(
+      [&] {
+        write_audio(temp_path("f.flac").string(), clip,
+                    {FileFormat::flac, SampleEncoding::float32});
+      },
+      temp_path("f.flac").string(), "integer"));
 }
 
 // Writes mono 44.1 kHz `samples` with `options` and reads them back.
-std::vector<float> round_trip(const std::vector<float>& samples, const std::string& name, const WriteOptions& options = {}) {
+std::vector<float> round_trip(const std::vector<float>& samples, const std::string& name,
+                              const WriteOptions& options = {}) {
   AudioClip clip;
   clip.samples = samples;
   const auto path = temp_path(name).string();
@@ -130,9 +145,10 @@ TEST(AudioIo, IntegerPcmIsDividedByTwoToTheBitsMinusOne) {
 TEST(AudioIo, MeanPolicyAveragesChannelsAndSelectPicksOne) {
   const AudioClip stereo = read_audio(kInputs + "impact_dull_44k_stereo.wav");
   ASSERT_EQ(stereo.channels, 2);
-  const AudioClip mean = read_audio(kInputs + "impact_dull_44k_stereo.wav", {.channel_policy = ChannelPolicy::mean});
-  const AudioClip right =
-      read_audio(kInputs + "impact_dull_44k_stereo.wav", {.channel_policy = ChannelPolicy::select, .channel = 1});
+  const AudioClip mean =
+      read_audio(kInputs + "impact_dull_44k_stereo.wav", {.channel_policy = ChannelPolicy::mean});
+  const AudioClip right = read_audio(kInputs + "impact_dull_44k_stereo.wav",
+                                     {.channel_policy = ChannelPolicy::select, .channel = 1});
   ASSERT_EQ(mean.channels, 1);
   ASSERT_EQ(mean.frames(), stereo.frames());
   for (std::size_t f = 0; f < stereo.frames(); f += 97) {
@@ -140,7 +156,10 @@ TEST(AudioIo, MeanPolicyAveragesChannelsAndSelectPicksOne) {
     EXPECT_EQ(right.samples[f], stereo.samples[2 * f + 1]);
   }
   EXPECT_TRUE(throws_input_error(
-      [&] { read_audio(kInputs + "impact_dull_44k_stereo.wav", {.channel_policy = ChannelPolicy::select, .channel = 2}); },
+      [&] {
+        read_audio(kInputs + "impact_dull_44k_stereo.wav",
+                   {.channel_policy = ChannelPolicy::select, .channel = 2});
+      },
       kInputs + "impact_dull_44k_stereo.wav", "channel 2 requested"));
 }
 
@@ -151,15 +170,16 @@ TEST(AudioIo, ReadsFlacReferenceInputs) {
 }
 
 TEST(AudioIo, ResamplingPreservesASineAndSetsLength) {
-  // A 440 Hz sine resampled 44.1 -> 16 kHz keeps its frequency: compare with the analytic sine at the new
-  // rate away from the edges (sinc filter transients). Best-quality SRC has ~ -97 dB stopband; 1e-3
-  // absolute covers its passband ripple at 440 Hz.
+  // A 440 Hz sine resampled 44.1 -> 16 kHz keeps its frequency: compare with the analytic sine at
+  // the new rate away from the edges (sinc filter transients). Best-quality SRC has ~ -97 dB
+  // stopband; 1e-3 absolute covers its passband ripple at 440 Hz.
   const AudioClip clip = sine_clip(44100, 1, 44100, 440.0);
   const AudioClip out = convert_clip(clip, {.target_sample_rate = 16000}, "sine");
   EXPECT_EQ(out.sample_rate, 16000);
   ASSERT_EQ(out.frames(), 16000u);
   for (int f = 1000; f < 15000; f += 37)
-    EXPECT_NEAR(out.samples[static_cast<std::size_t>(f)], 0.5 * std::sin(2 * std::numbers::pi * 440.0 * f / 16000), 1e-3);
+    EXPECT_NEAR(out.samples[static_cast<std::size_t>(f)],
+                0.5 * std::sin(2 * std::numbers::pi * 440.0 * f / 16000), 1e-3);
 }
 
 TEST(AudioIo, PureSilenceIsValidAndReadAsZeros) {
@@ -172,45 +192,73 @@ TEST(AudioIo, PureSilenceIsValidAndReadAsZeros) {
 }
 
 TEST(AudioIo, MissingEmptyAndNonAudioFilesAreInputErrors) {
-  EXPECT_TRUE(throws_input_error([] { read_audio("/nonexistent/x.wav"); }, "/nonexistent/x.wav", "cannot decode"));
+  EXPECT_TRUE(throws_input_error([] { read_audio("/nonexistent/x.wav"); }, "/nonexistent/x.wav",
+                                 "cannot decode"));
   const auto empty = temp_path("empty.wav");
   write_bytes(empty, {});
-  EXPECT_TRUE(throws_input_error([&] { read_audio(empty.string()); }, empty.string(), "cannot decode"));
+  EXPECT_TRUE(
+      throws_input_error([&] { read_audio(empty.string()); }, empty.string(), "cannot decode"));
   EXPECT_TRUE(throws_input_error([] { read_audio_memory({}, "mem", {}); }, "mem", "empty"));
   const auto text = temp_path("text.wav");
-  const std::string words = "this is not a sound file, just some words that go on for a while......";
+  const std::string words =
+      "this is not a sound file, just some words that go on for a while......";
   write_bytes(text, std::vector<std::uint8_t>(words.begin(), words.end()));
-  EXPECT_TRUE(throws_input_error([&] { read_audio(text.string()); }, text.string(), "cannot decode"));
+  EXPECT_TRUE(
+      throws_input_error([&] { read_audio(text.string()); }, text.string(), "cannot decode"));
 }
 
 TEST(AudioIo, TruncatedHeaderIsAnInputErrorAndTruncatedDataReadsWhatIsThere) {
   const auto bytes = read_bytes(kInputs + "chirp_1s_22k_mono.wav");
   const std::vector<std::uint8_t> header_only(bytes.begin(), bytes.begin() + 20);
-  EXPECT_TRUE(throws_input_error([&] { read_audio_memory(header_only, "cut.wav"); }, "cut.wav", "cannot decode"));
-  // Header intact but the data chunk cut after 1000 bytes (500 16-bit frames): the reader returns what
-  // is there instead of trusting the header's length.
+  EXPECT_TRUE(throws_input_error([&] { read_audio_memory(header_only, "cut.wav"); }, "cut.wav",
+                                 "cannot decode"));
+  // Header intact but the data chunk cut after 1000 bytes (500 16-bit frames): the reader returns
+  // what is there instead of trusting the header's length.
   std::size_t data_offset = 0;
   for (std::size_t i = 12; i + 8 <= bytes.size(); ++i)
-    if (std::memcmp(bytes.data() + i, "data", 4) == 0) { data_offset = i + 8; break; }
+    if (std::memcmp(bytes.data() + i, "data", 4) == 0) {
+      data_offset = i + 8;
+      break;
+    }
   ASSERT_GT(data_offset, 0u);
-  const std::vector<std::uint8_t> cut(bytes.begin(), bytes.begin() + static_cast<long>(data_offset + 1000));
+  const std::vector<std::uint8_t> cut(bytes.begin(),
+                                      bytes.begin() + static_cast<long>(data_offset + 1000));
   const AudioClip clip = read_audio_memory(cut, "cut.wav");
   EXPECT_EQ(clip.frames(), 500u);
-  const std::vector<std::uint8_t> no_data(bytes.begin(), bytes.begin() + static_cast<long>(data_offset));
-  EXPECT_TRUE(throws_input_error([&] { read_audio_memory(no_data, "nodata.wav"); }, "nodata.wav", ""));
+  const std::vector<std::uint8_t> no_data(bytes.begin(),
+                                          bytes.begin() + static_cast<long>(data_offset));
+  EXPECT_TRUE(
+      throws_input_error([&] { read_audio_memory(no_data, "nodata.wav"); }, "nodata.wav", ""));
 }
 
-// Builds a minimal canonical WAV header (44 bytes) with arbitrary fields, for headers no encoder writes.
-std::vector<std::uint8_t> wav_bytes(std::uint16_t format_tag, std::uint16_t channels, std::uint32_t rate,
-                                    std::uint16_t bits, const std::vector<std::uint8_t>& data) {
+// Builds a minimal canonical WAV header (44 bytes) with arbitrary fields, for headers no encoder
+// writes.
+std::vector<std::uint8_t> wav_bytes(std::uint16_t format_tag, std::uint16_t channels,
+                                    std::uint32_t rate, std::uint16_t bits,
+                                    const std::vector<std::uint8_t>& data) {
   std::vector<std::uint8_t> out;
-  auto put = [&](std::uint64_t value, int n) { for (int i = 0; i < n; ++i) out.push_back(static_cast<std::uint8_t>(value >> (8 * i))); };
-  auto tag = [&](const char* s) { put(static_cast<std::uint64_t>(std::uint8_t(s[0])) | std::uint64_t(std::uint8_t(s[1])) << 8 |
-                                          std::uint64_t(std::uint8_t(s[2])) << 16 | std::uint64_t(std::uint8_t(s[3])) << 24, 4); };
+  auto put = [&](std::uint64_t value, int n) {
+    for (int i = 0; i < n; ++i) out.push_back(static_cast<std::uint8_t>(value >> (8 * i)));
+  };
+  auto tag = [&](const char* s) {
+    put(static_cast<std::uint64_t>(std::uint8_t(s[0])) | std::uint64_t(std::uint8_t(s[1])) << 8 |
+            std::uint64_t(std::uint8_t(s[2])) << 16 | std::uint64_t(std::uint8_t(s[3])) << 24,
+        4);
+  };
   const std::uint16_t block = static_cast<std::uint16_t>(channels * bits / 8);
-  tag("RIFF"); put(36 + data.size(), 4); tag("WAVE");
-  tag("fmt "); put(16, 4); put(format_tag, 2); put(channels, 2); put(rate, 4); put(rate * block, 4); put(block, 2); put(bits, 2);
-  tag("data"); put(data.size(), 4);
+  tag("RIFF");
+  put(36 + data.size(), 4);
+  tag("WAVE");
+  tag("fmt ");
+  put(16, 4);
+  put(format_tag, 2);
+  put(channels, 2);
+  put(rate, 4);
+  put(rate * block, 4);
+  put(block, 2);
+  put(bits, 2);
+  tag("data");
+  put(data.size(), 4);
   out.insert(out.end(), data.begin(), data.end());
   return out;
 }
@@ -221,12 +269,14 @@ TEST(AudioIo, ZeroChannelHeaderIsAnInputError) {
 }
 
 TEST(AudioIo, NonFiniteFloatSamplesAreInputErrors) {
-  for (float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+  for (float bad :
+       {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
     std::vector<float> samples = {0.1f, 0.2f, bad, 0.3f};
     std::vector<std::uint8_t> data(samples.size() * 4);
     std::memcpy(data.data(), samples.data(), data.size());
     const auto bytes = wav_bytes(3, 1, 8000, 32, data);  // format tag 3 = IEEE float
-    EXPECT_TRUE(throws_input_error([&] { read_audio_memory(bytes, "nan.wav"); }, "nan.wav", "sample 2 of channel 0 is not a finite"));
+    EXPECT_TRUE(throws_input_error([&] { read_audio_memory(bytes, "nan.wav"); }, "nan.wav",
+                                   "sample 2 of channel 0 is not a finite"));
   }
 }
 
@@ -234,10 +284,11 @@ TEST(AudioIo, FilesLongerThanTheLimitAreRejectedBeforeDecoding) {
   const AudioClip clip = sine_clip(8000, 1, 8000 * 3, 100.0);
   const auto path = temp_path("long.wav").string();
   write_audio(path, clip);
-  EXPECT_TRUE(throws_input_error([&] { read_audio(path, {.max_duration_seconds = 2.0}); }, path, "limit of 2.0 s"));
+  EXPECT_TRUE(throws_input_error([&] { read_audio(path, {.max_duration_seconds = 2.0}); }, path,
+                                 "limit of 2.0 s"));
   EXPECT_EQ(read_audio(path, {.max_duration_seconds = 3.0}).frames(), 24000u);
-  // A header that claims ~6.8 hours (the maximum 32-bit data size) over 100 real bytes: only the 50 frames
-  // present are decoded, nothing is allocated for the claimed length.
+  // A header that claims ~6.8 hours (the maximum 32-bit data size) over 100 real bytes: only the 50
+  // frames present are decoded, nothing is allocated for the claimed length.
   auto bytes = wav_bytes(1, 1, 44100, 16, std::vector<std::uint8_t>(100, 0));
   for (int i = 0; i < 4; ++i) bytes[40 + static_cast<std::size_t>(i)] = 0xFF;
   EXPECT_EQ(read_audio_memory(bytes, "huge.wav").frames(), 50u);
@@ -247,10 +298,14 @@ TEST(AudioIo, MalformedClipsCannotBeWritten) {
   AudioClip clip;
   clip.channels = 2;
   clip.samples = {0.1f, 0.2f, 0.3f};
-  EXPECT_TRUE(throws_input_error([&] { write_audio(temp_path("bad.wav").string(), clip); }, temp_path("bad.wav").string(), "whole number"));
+  EXPECT_TRUE(throws_input_error([&] { write_audio(temp_path("bad.wav").string(), clip); },
+                                 temp_path("bad.wav").string(), "whole number"));
   clip.channels = 0;
-  EXPECT_TRUE(throws_input_error([&] { write_audio(temp_path("bad.wav").string(), clip); }, temp_path("bad.wav").string(), "0 channels"));
-  EXPECT_TRUE(throws_input_error([&] { write_audio("/nonexistent/dir/x.wav", sine_clip(8000, 1, 10, 1.0)); }, "/nonexistent/dir/x.wav", "cannot open"));
+  EXPECT_TRUE(throws_input_error([&] { write_audio(temp_path("bad.wav").string(), clip); },
+                                 temp_path("bad.wav").string(), "0 channels"));
+  EXPECT_TRUE(throws_input_error(
+      [&] { write_audio("/nonexistent/dir/x.wav", sine_clip(8000, 1, 10, 1.0)); },
+      "/nonexistent/dir/x.wav", "cannot open"));
 }
 
 }  // namespace

@@ -42,11 +42,12 @@ TEST(Onsets, SilenceHasNoOnsetsAndAlignsOnFrameZero) {
 }
 
 TEST(Onsets, FindsAnImpactInASignal) {
-  // 0.5 s of silence then a decaying 800 Hz burst: the first onset is the burst's frame (librosa framing,
-  // hop 512 at 22050 Hz, centred: sample 11025 is frame 21.5; the flux peaks at frame 22).
+  // 0.5 s of silence then a decaying 800 Hz burst: the first onset is the burst's frame (librosa
+  // framing, hop 512 at 22050 Hz, centred: sample 11025 is frame 21.5; the flux peaks at frame 22).
   std::vector<float> x(22050, 0.0f);
   for (std::size_t n = 11025; n < x.size(); ++n)
-    x[n] = static_cast<float>(0.8 * std::exp(-double(n - 11025) / 2000.0) * std::sin(2 * std::numbers::pi * 800.0 * double(n) / 22050.0));
+    x[n] = static_cast<float>(0.8 * std::exp(-double(n - 11025) / 2000.0) *
+                              std::sin(2 * std::numbers::pi * 800.0 * double(n) / 22050.0));
   FeatureExtractor extractor(librosa_preset(22050));
   Features f;
   extractor.compute(x, f);
@@ -58,7 +59,10 @@ TEST(Onsets, FindsAnImpactInASignal) {
 TEST(Onsets, WindowHasFixedShapeAndRepeatsEdges) {
   FeatureMatrix m;
   m.resize(5, 2);
-  for (std::size_t r = 0; r < 5; ++r) { m.at(r, 0) = float(r); m.at(r, 1) = float(10 * r); }
+  for (std::size_t r = 0; r < 5; ++r) {
+    m.at(r, 0) = float(r);
+    m.at(r, 1) = float(10 * r);
+  }
   const FeatureMatrix w = onset_window(m, 1, 3, 3);
   ASSERT_EQ(w.rows, 6u);
   ASSERT_EQ(w.cols, 2u);

@@ -173,14 +173,15 @@ TEST(Campaign, TrialsOfAGroupHaveItsObjectAsTruth) {
 }
 
 TEST(Campaign, ClosedLoopRunsWithACalibratedArmAndGivesTheSameFilesOnAnyNumberOfWorkers) {
-  const std::string text = "seed: 5\narms:\n  - {name: calibrated, problem: " + kProblem +
-                           ", calibrate: true}\n  - {name: hand_tuned, problem: " + kProblem +
-                           "}\nworld: {type: simulated, problem: " + kProblem +
-                           "}\ntraining_set: {recordings_per_pair: 2, catalogue: " + std::string(ECHOPLAN_SOURCE_DIR) +
-                           "/objects/catalogue.yaml}\n"
-                           "trials:\n  - {object: paper_base, trials: 1}\n"
-                           "  - {object: coffee_mug_weighted, plays: coffee_mug, trials: 1}\n"
-                           "planner: {solver: abt, episodes: 200, max_steps: 12}\n";
+  const std::string text =
+      "seed: 5\narms:\n  - {name: calibrated, problem: " + kProblem +
+      ", calibrate: true}\n  - {name: hand_tuned, problem: " + kProblem +
+      "}\nworld: {type: simulated, problem: " + kProblem +
+      "}\ntraining_set: {recordings_per_pair: 2, catalogue: " + std::string(ECHOPLAN_SOURCE_DIR) +
+      "/objects/catalogue.yaml}\n"
+      "trials:\n  - {object: paper_base, trials: 1}\n"
+      "  - {object: coffee_mug_weighted, plays: coffee_mug, trials: 1}\n"
+      "planner: {solver: abt, episodes: 200, max_steps: 12}\n";
   const CampaignConfig config = parse_campaign_config(text, "closed_loop.yaml");
   const fs::path one = fresh_dir("loop_one"), two = fresh_dir("loop_two");
   EXPECT_EQ(run(config, one, 1), 4);

@@ -46,8 +46,8 @@ TEST(LeafEstimate, HeuristicAveragesTheModelHeuristic) {
 
 TEST(LeafEstimate, RandomRolloutIsPoorOnTheSeedProblem) {
   // The reason lookahead is the default: random play sorts wrongly half of the time. Its mean over
-  // many rollouts lies far below 0. Exactly: each step senses (-1, continue) or sorts (mean -45) with
-  // probability 1/2, so V = 0.5 (-45) + 0.5 (-1 + 0.99 V), V = -23 / 0.505.
+  // many rollouts lies far below 0. Exactly: each step senses (-1, continue) or sorts (mean -45)
+  // with probability 1/2, so V = 0.5 (-45) + 0.5 (-1 + 0.99 V), V = -23 / 0.505.
   ToyAudioObjects model;
   Rng rng(3);
   LeafEstimate leaf;

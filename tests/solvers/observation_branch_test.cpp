@@ -19,8 +19,8 @@ TEST(ObservationBranching, ContinuousObservationsBranchByEuclideanDistance) {
   const ObservationBranching branching{1.0};
   pomdp::Observation centre, near, far;
   centre.values = {0.0, 0.0};
-  near.values = {0.6, 0.8};   // distance exactly 1.0: inside (the threshold is inclusive)
-  far.values = {0.6, 0.81};   // just beyond
+  near.values = {0.6, 0.8};  // distance exactly 1.0: inside (the threshold is inclusive)
+  far.values = {0.6, 0.81};  // just beyond
   EXPECT_TRUE(branching.same_branch(centre, near));
   EXPECT_FALSE(branching.same_branch(centre, far));
   pomdp::Observation other_dimension;

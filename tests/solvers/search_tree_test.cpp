@@ -1,5 +1,5 @@
-// ABT and POMCP over the shared belief tree: tree reuse and pruning, determinism, the seed problem's
-// optimal first action, option validation.
+// ABT and POMCP over the shared belief tree: tree reuse and pruning, determinism, the seed
+// problem's optimal first action, option validation.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,14 +19,16 @@ using testing::ToyTiger;
 
 enum class Kind { abt, pomcp };
 
-std::unique_ptr<TreeSearchSolver> make_solver(Kind kind, pomdp::ModelPtr model, SearchOptions options = {}) {
+std::unique_ptr<TreeSearchSolver> make_solver(Kind kind, pomdp::ModelPtr model,
+                                              SearchOptions options = {}) {
   if (kind == Kind::abt) return std::make_unique<AbtSolver>(std::move(model), options);
   return std::make_unique<PomcpSolver>(std::move(model), options);
 }
 
 // A solver rooted at a fresh particle belief over `model`: where every test starts.
 struct Rooted {
-  Rooted(Kind kind, pomdp::ModelPtr m, std::uint64_t seed, int particles, SearchOptions options = {})
+  Rooted(Kind kind, pomdp::ModelPtr m, std::uint64_t seed, int particles,
+         SearchOptions options = {})
       : model(m), rng(seed), belief(m, particles, rng), solver(make_solver(kind, m, options)) {
     solver->reset(belief, rng);
   }
@@ -136,7 +138,9 @@ TEST_P(TreeSolvers, TigerListensFirst) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AbtAndPomcp, TreeSolvers, ::testing::Values(Kind::abt, Kind::pomcp),
-                         [](const auto& param_info) { return param_info.param == Kind::abt ? "abt" : "pomcp"; });
+                         [](const auto& param_info) {
+                           return param_info.param == Kind::abt ? "abt" : "pomcp";
+                         });
 
 TEST(AbtSolver, PrefersStrikeFirstOnTheSeedProblem) {
   // The optimal first action from the uniform belief is the strike (worth 2.9534 against 2.835 for

@@ -1,7 +1,8 @@
 // Small models for the solver and experiment tests, written against pomdp/model.h so these tests do
 // not depend on the problem loader.
 //
-//   ToyTiger          Kaelbling, Littman & Cassandra's tiger (discount 0.95, listening accuracy 0.85);
+//   ToyTiger          Kaelbling, Littman & Cassandra's tiger (discount 0.95, listening accuracy
+//   0.85);
 //                     opening a door resets the tiger uniformly. V*(uniform) = 19.371.
 //   ToyAudioObjects   the seed's problem (section 3.3): 4 objects, slide / strike / move_to_A /
 //                     move_to_B, the observation table exactly, discount 0.99. V*(b0) = 2.9534.
@@ -34,15 +35,21 @@ class ToyAudioObjects final : public pomdp::Model {
  public:
   static constexpr int slide = 0, strike = 1, move_to_A = 2, move_to_B = 3;
   // P(o | object, action) for the sensing actions, seed section 3.3.
-  static constexpr double table[2][4][4] = {
-      {{0.5, 0.3, 0.15, 0.05}, {0.11, 0.67, 0.11, 0.11}, {0.11, 0.11, 0.67, 0.11}, {0.01, 0.01, 0.48, 0.5}},
-      {{0.6, 0.05, 0.3, 0.05}, {0.05, 0.6, 0.3, 0.05}, {0.11, 0.11, 0.67, 0.11}, {0.11, 0.11, 0.11, 0.67}}};
+  static constexpr double table[2][4][4] = {{{0.5, 0.3, 0.15, 0.05},
+                                             {0.11, 0.67, 0.11, 0.11},
+                                             {0.11, 0.11, 0.67, 0.11},
+                                             {0.01, 0.01, 0.48, 0.5}},
+                                            {{0.6, 0.05, 0.3, 0.05},
+                                             {0.05, 0.6, 0.3, 0.05},
+                                             {0.11, 0.11, 0.67, 0.11},
+                                             {0.11, 0.11, 0.11, 0.67}}};
 
   ToyAudioObjects() {
     spec_.name = "toy_audio_objects";
     spec_.action_names = {"slide", "strike", "move_to_A", "move_to_B"};
     spec_.state.discrete_names = {"object"};
-    spec_.state.discrete_value_names = {{"pringles_can", "coffee_mug", "plastic_cup", "paper_base"}};
+    spec_.state.discrete_value_names = {
+        {"pringles_can", "coffee_mug", "plastic_cup", "paper_base"}};
     spec_.observation.names = {"O0", "O1", "O2", "O3"};
     spec_.discount = 0.99;
     spec_.min_reward = -100;
@@ -67,7 +74,8 @@ class ToyAudioObjects final : public pomdp::Model {
     }
     return r;
   }
-  double observation_likelihood(const pomdp::State& s, int a, const pomdp::Observation& o) const override {
+  double observation_likelihood(const pomdp::State& s, int a,
+                                const pomdp::Observation& o) const override {
     if (a == slide || a == strike) return table[a][s.discrete[0]][o.index];
     return o.index == 0 ? 1.0 : 0.0;
   }
@@ -110,7 +118,8 @@ class ToyTiger final : public pomdp::Model {
     }
     return r;
   }
-  double observation_likelihood(const pomdp::State& s, int a, const pomdp::Observation& o) const override {
+  double observation_likelihood(const pomdp::State& s, int a,
+                                const pomdp::Observation& o) const override {
     if (a == listen) return o.index == s.discrete[0] ? 0.85 : 0.15;
     return 0.5;
   }

@@ -26,12 +26,12 @@ void add_planner_options(CLI::App& cmd, PlannerFlags& f) {
   cmd.add_option("--solver", f.solver, "abt, pomcp or offline (default: the problem file's)");
   cmd.add_option("--policy", f.policy,
                  "--solver offline: policy.json from `echoplan solve --out` (else solved now)");
-  auto* episodes = cmd.add_option(
-      "--episodes", f.episodes,
-      "Search episodes per step (reproducible bit for bit; default: the problem file's budget)")
+  auto* episodes = cmd.add_option("--episodes", f.episodes,
+                                  "Search episodes per step (reproducible bit for bit; default: "
+                                  "the problem file's budget)")
                        ->check(positive());
-  auto* step_ms = cmd.add_option("--step-ms", f.step_ms, "Search wall time per step, ms")
-                      ->check(positive());
+  auto* step_ms =
+      cmd.add_option("--step-ms", f.step_ms, "Search wall time per step, ms")->check(positive());
   episodes->excludes(step_ms);
   cmd.add_option("--exploration", f.exploration,
                  "UCB exploration constant c, reward units (default: the problem file's)");

@@ -1,4 +1,5 @@
-// Options shared by the simulator's commands (synth, dataset): which catalogue and sim config to use.
+// Options shared by the simulator's commands (synth, dataset): which catalogue and sim config to
+// use.
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -3,10 +3,10 @@
 //       trains a small observation model on simulated recordings (DIR/model.json) and writes the
 //       shipped problem with that model's calibrated table (DIR/problem.yaml);
 //   ros_loop_reference run DIR OUT sim|mic SEED EPISODES TRIALS [MAX_SECONDS]
-//       runs the loop in process - the simulated arm, the simulated microphone (sim) or PortAudio on
-//       the default capture device (mic, recording MAX_SECONDS per action), the classifier - through
-//       the same run_loop_trials as echoplan_planner, writing OUT/loop_steps.csv: the log the ROS run
-//       must reproduce.
+//       runs the loop in process - the simulated arm, the simulated microphone (sim) or PortAudio
+//       on the default capture device (mic, recording MAX_SECONDS per action), the classifier -
+//       through the same run_loop_trials as echoplan_planner, writing OUT/loop_steps.csv: the log
+//       the ROS run must reproduce.
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -27,12 +27,14 @@ namespace {
 using namespace echoplan;
 
 int prepare(const std::string& dir) {
-  const pomdp::Problem base = pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+  const pomdp::Problem base =
+      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
   const auto& data = experiment::object_problem(*base.model).data();
   const auto model = testing::train_small_model(data.objects, {"slide", "strike"}, 3);
   perception::save_observation_model(*model, dir + "/model.json");
   std::ofstream out(dir + "/problem.yaml");
-  pomdp::write_problem_yaml(out, experiment::calibrated_problem(data, *model), base.belief, base.planner);
+  pomdp::write_problem_yaml(out, experiment::calibrated_problem(data, *model), base.belief,
+                            base.planner);
   return out ? 0 : 1;
 }
 
@@ -49,7 +51,8 @@ int run(int argc, char** argv) {
   const auto& data = experiment::object_problem(*problem.model).data();
   std::vector<std::string> sorting;
   sorting = data.sorting;
-  auto world = std::make_shared<robot::SimulatedWorld>(testing::shipped_catalogue(), sim::SimConfig{}, sorting);
+  auto world = std::make_shared<robot::SimulatedWorld>(testing::shipped_catalogue(),
+                                                       sim::SimConfig{}, sorting);
   experiment::RobotParts parts;
   parts.robot = std::make_unique<robot::SimulatedArm>(world);
   if (source == "mic") {
@@ -59,9 +62,11 @@ int run(int argc, char** argv) {
   } else {
     parts.recorder = std::make_unique<robot::SimulatedMicrophone>(world);
   }
-  parts.service = std::make_unique<robot::ClassifierService>(std::make_shared<const perception::ObservationModel>(
-      perception::load_observation_model(dir + "/model.json")));
-  ros_app::run_loop_trials(settings, std::move(parts), [](const std::string& line) { std::printf("%s\n", line.c_str()); });
+  parts.service = std::make_unique<robot::ClassifierService>(
+      std::make_shared<const perception::ObservationModel>(
+          perception::load_observation_model(dir + "/model.json")));
+  ros_app::run_loop_trials(settings, std::move(parts),
+                           [](const std::string& line) { std::printf("%s\n", line.c_str()); });
   return 0;
 }
 
@@ -71,6 +76,8 @@ int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
   if (mode == "prepare" && argc == 3) return prepare(argv[2]);
   if (mode == "run" && argc >= 8) return run(argc, argv);
-  std::fprintf(stderr, "usage: ros_loop_reference prepare DIR | run DIR OUT sim|mic SEED EPISODES TRIALS [MAX_SECONDS]\n");
+  std::fprintf(stderr,
+               "usage: ros_loop_reference prepare DIR | run DIR OUT sim|mic SEED EPISODES TRIALS "
+               "[MAX_SECONDS]\n");
   return 2;
 }
