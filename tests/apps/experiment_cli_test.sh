@@ -3,13 +3,7 @@
 # same files; kill -9 or Ctrl-C in the middle and the same command again gives the files of one
 # uninterrupted run; a one-core run equals a parallel one; merged shards equal the unsharded run; every
 # bad input exits 2 with a message before any work. Usage: experiment_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
-set -u
-bin=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+. "$(dirname "$0")/cli_test_lib.sh"
 
 # campaign FILE [EXTRA YAML LINES]: a small campaign, 12 trials, one recording per pair.
 campaign() {
@@ -142,5 +136,4 @@ expect_input_error "merging other campaigns" "holds another campaign" \
   merge --out "$work/err_merge" "$work/shard1" "$work/other"
 [ ! -e "$work/err_merge" ] || fail "a refused merge created its folder"
 
-[ "$failures" -eq 0 ] && echo "all experiment CLI checks passed"
-exit "$failures"
+finish "experiment CLI"

@@ -3,13 +3,7 @@
 # server: the DOM holds the result tables and inlined figures, and the screenshot shows a styled table
 # and coloured figures (screenshot_check.py). Exit 77 (skipped) when chromium is not installed.
 # Usage: experiment_html_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
-set -u
-bin=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+. "$(dirname "$0")/cli_test_lib.sh"
 command -v chromium >/dev/null || { echo "chromium is not installed (scripts/setup.sh deps)"; exit 77; }
 
 cat >"$work/campaign.yaml" <<YAML
@@ -42,5 +36,4 @@ chrome --screenshot="$work/page.png" --window-size=1300,1600 --hide-scrollbars "
 [ -s "$work/page.png" ] || { fail "no screenshot"; cat "$work/chromium.err"; }
 /usr/bin/python3 "$src/tests/apps/screenshot_check.py" "$work/page.png" || fail "the screenshot check failed"
 
-[ "$failures" -eq 0 ] && echo "all HTML checks passed"
-exit "$failures"
+finish "HTML"

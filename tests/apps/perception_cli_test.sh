@@ -2,13 +2,7 @@
 # `echoplan train`, `classify` and `evaluate` end to end on a small simulated dataset: the outputs a user
 # relies on, the problem file the planner reads back, and exit status 2 with a message for bad input.
 # Usage: perception_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
-set -u
-bin=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+. "$(dirname "$0")/cli_test_lib.sh"
 
 # expect_input_error DESCRIPTION EXPECTED_MESSAGE COMMAND ARGS...: exit status 2 and the message on stderr.
 expect_input_error() {
@@ -84,5 +78,4 @@ echo "not audio" >"$work/bad.wav"
 expect_input_error "corrupt recording" "bad.wav" classify --model "$work/model.json" --action strike "$work/bad.wav"
 expect_input_error "evaluate on missing folder" "does not exist" evaluate --model "$work/model.json" --data "$work/nope"
 
-[ "$failures" -eq 0 ] && echo "perception CLI: all checks passed"
-exit "$failures"
+finish "perception CLI"

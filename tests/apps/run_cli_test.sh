@@ -3,13 +3,7 @@
 # own model when none is given), the same seed giving the same files, a trial replayed from a folder of
 # recordings, a weighted variant standing in for its object, and each input error with exit status 2.
 # Usage: run_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
-set -u
-bin=$1
-src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+. "$(dirname "$0")/cli_test_lib.sh"
 # Small and fast: 3 training recordings per object and action, 300 search episodes per step.
 quick="--train-per-pair 3 --episodes 300"
 
@@ -98,5 +92,4 @@ touch "$work/file"
 expect_input_error "unwritable output folder" "cannot create the output folder" --object coffee_mug --out "$work/file/sub"
 [ -e "$work/e" ] && [ -n "$(ls "$work/e")" ] && fail "an input error left files in the output folder"
 
-[ "$failures" -eq 0 ] && echo "run CLI: all checks passed"
-exit "$failures"
+finish "run CLI"
