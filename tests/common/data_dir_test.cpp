@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include "common/error.h"
 
@@ -18,7 +19,10 @@ class DataDirTest : public testing::Test {
  protected:
   void SetUp() override {
     if (const char* old = std::getenv("ECHOPLAN_DATA_DIR")) saved_ = old;
-    root_ = fs::path(testing::TempDir()) / "echoplan_data_dir_test";
+    // One folder per test: ctest runs the tests of this fixture in parallel processes.
+    root_ = fs::path(testing::TempDir()) /
+            (std::string("echoplan_data_dir_test_") +
+             testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(root_);
   }
   void TearDown() override {
