@@ -41,7 +41,8 @@ std::string corrupt(std::string text, Rng& rng) {
 }
 
 template <class Parse>
-void fuzz(const std::string& file, Parse parse, std::uint64_t seed) {
+void expect_corruptions_rejected_as_input_errors(const std::string& file, Parse parse,
+                                                 std::uint64_t seed) {
   const std::string original = repo_text(file);
   Rng rng(seed);
   int rejected = 0;
@@ -66,14 +67,14 @@ void fuzz(const std::string& file, Parse parse, std::uint64_t seed) {
 }
 
 TEST(MalformedInput, YamlCorruptionsAreInputErrors) {
-  fuzz(
+  expect_corruptions_rejected_as_input_errors(
       "problems/audio_objects.yaml",
       [](const std::string& t) { parse_problem_yaml(t, "fuzz.yaml"); }, 1);
 }
 
 TEST(MalformedInput, PomdpCorruptionsAreInputErrors) {
   for (const char* file : {"problems/tiger.pomdp", "problems/audio_objects.pomdp"}) {
-    fuzz(
+    expect_corruptions_rejected_as_input_errors(
         file, [](const std::string& t) { parse_cassandra_pomdp(t, "fuzz.pomdp"); }, 2);
   }
 }
