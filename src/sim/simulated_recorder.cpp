@@ -259,16 +259,32 @@ void add_delayed(const std::vector<float>& in, std::size_t delay, float gain,
   for (std::size_t i = 0; i < n; ++i) o[i] += gain * x[i];
 }
 
-// The pressure the contact force radiates directly (the object and the table surface accelerated as
-// a whole: dipole radiation, proportional to dF/dt): for a half-sine force of impulse `momentum`
-// and duration `tau`, a single cosine cycle over the contact. Its spectrum peaks near 0.68 / tau:
-// why a light cup (short contact) sounds higher than a heavy mug on the same table.
-void add_contact_pulse(double momentum, double tau, std::size_t at, int rate,
-                       std::vector<float>& out) {
-  const auto length = static_cast<std::size_t>(std::ceil(tau * rate));
+// The pressure the contact radiates directly (the object and the table surface accelerated as a
+// whole: dipole radiation, proportional to dF/dt). The impact is the first half-cycle of the object
+// bouncing on the contact's Hertzian spring (its period 2 tau, tau the Hertz contact time); the
+// hand holds the object pressed onto the table after the strike, so the object does not fly off
+// and the oscillation rings on, losing energy into the table top (the table material's own decay
+// rate at that frequency) and into the fingers that hold it (the table's contact_loss_factor, the
+// same loss every object mode has while held on the table): `decay_per_s`. Its dF/dt is a cosine at
+// 1 / (2 tau) under that decay: why a strike is a short tonal thud near 500 Hz for a heavy mug and
+// near 800 Hz for a light cup (the lab's 560 and 904 Hz), and why the added mass of a weighted
+// object lowers it (tau ~ m^0.4).
+void add_contact_ring(double momentum, double tau, double decay_per_s, std::size_t at, int rate,
+                      std::vector<float>& out) {
   const double scale = kPulseGain * momentum * std::numbers::pi / (tau * kTwoPi * kReferenceHz);
-  for (std::size_t n = 0; n < length && at + n < out.size(); ++n)
-    out[at + n] += static_cast<float>(scale * std::cos(std::numbers::pi * (n + 0.5) / rate / tau));
+  const double omega = std::numbers::pi / tau;
+  const auto length = static_cast<std::size_t>(std::ceil(kTailDecay / decay_per_s * rate));
+  // cos(omega t) e^(-decay t) as a two-pole recursion (exact for the sampled sinusoid).
+  const double r = std::exp(-decay_per_s / rate), w = omega / rate;
+  double c1 = std::cos(0.5 * w) * std::exp(-0.5 * decay_per_s / rate), c2 = 0;  // n = 0 value
+  const double a1 = 2.0 * r * std::cos(w), a2 = -r * r;
+  double y_prev = std::cos(-0.5 * w) * std::exp(0.5 * decay_per_s / rate);  // n = -1
+  for (std::size_t n = 0; n < length && at + n < out.size(); ++n) {
+    out[at + n] += static_cast<float>(scale * c1);
+    c2 = a1 * c1 + a2 * y_prev;
+    y_prev = c1;
+    c1 = c2;
+  }
 }
 
 // The arm's motors and gears: broadband noise (a band around kMotorHz) whose amplitude follows the
@@ -354,6 +370,8 @@ SimulatedRecorder::SimulatedRecorder(const ObjectSpec& object, const TableSpec& 
       object_modes_(sim::object_modes(object, 0.45 * config.recording.sample_rate,
                                       table.contact_loss_factor)),
       table_modes_(sim::table_modes(table)),
+      table_material_(table.material),
+      contact_loss_factor_(table.contact_loss_factor),
       contact_modulus_(effective_modulus(object.material, table.material)),
       table_coincidence_hz_(coincidence_frequency(table.material, table.thickness)),
       object_mode_scale_(kReferenceModalMass / object.total_mass()) {
@@ -382,11 +400,8 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
 
   // What varies from recording to recording: where the microphone stand was, how loud the room was.
   const auto& var = config_.variability;
-  const double mic_offset =
-      var.microphone_distance.mean +
-      var.microphone_distance.spread * std::clamp(standard_normal(rng), -3.0, 3.0);
-  const double noise_db = rec.noise_dbfs + var.background_db.mean +
-                          var.background_db.spread * std::clamp(standard_normal(rng), -3.0, 3.0);
+  const double mic_offset = var.microphone_distance.draw(rng);
+  const double noise_db = rec.noise_dbfs + var.background_db.draw(rng);
 
   // Per-mode drives: each impact is an impulse of momentum m_eff v weighted by the pressure its
   // force pulse radiates at the mode's frequency (dipole radiation: omega times the pulse spectrum)
@@ -413,16 +428,23 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
                                                     radiated(m.frequency_hz) *
                                                     table_radiation(m.frequency_hz));
     }
-    add_contact_pulse(momentum, tau, at, rate, dry);
+    const double ring_hz = 0.5 / tau;
+    add_contact_ring(
+        momentum, tau,
+        table_material_.decay_rate(ring_hz) + std::numbers::pi * ring_hz * contact_loss_factor_, at,
+        rate, dry);
   }
   NoiseSource noise(rng);
   const std::vector<float> friction =
       friction_excitation(trace, rate, frames, rec.friction_gain, noise);
   // Friction drives every mode continuously, radiated like the impacts (dipole: rising with
-  // frequency).
+  // frequency). Roughness noise is a velocity source (the surfaces are made to follow each other's
+  // asperities, see friction_excitation), so unlike an impact's impulse it sets the modes' velocity
+  // whatever their modal mass: no 1 / mass scale here (a light cup does not sing louder when pushed
+  // than a heavy mug; the lab's cup slides were broadband, not tonal).
   for (std::size_t k = 0; k < object_modes_.size(); ++k)
     object_drives[k].continuous_gain =
-        object_mode_scale_ * object_modes_[k].gain * object_modes_[k].frequency_hz / kReferenceHz;
+        object_modes_[k].gain * object_modes_[k].frequency_hz / kReferenceHz;
   for (std::size_t k = 0; k < table_modes_.size(); ++k)
     table_drives[k].continuous_gain = kTableCoupling * table_modes_[k].gain *
                                       table_modes_[k].frequency_hz / kReferenceHz *

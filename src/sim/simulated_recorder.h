@@ -44,7 +44,9 @@ class SimulatedRecorder {
   SimConfig config_;
   std::vector<Mode> object_modes_;
   std::vector<Mode> table_modes_;
-  double contact_modulus_ = 0;  // Pa, E* of object material on table material
+  Material table_material_;         // the contact's oscillation loses energy into the table top
+  double contact_loss_factor_ = 0;  // and into the fingers holding the object (TableSpec)
+  double contact_modulus_ = 0;      // Pa, E* of object material on table material
   double table_coincidence_hz_ = 0;
   double object_mode_scale_ =
       1;  // the object's modes' response per unit impulse, relative (1 / mass)
@@ -52,7 +54,7 @@ class SimulatedRecorder {
   double table_radiation(double frequency_hz) const;
 };
 
-// Begins a trial on `robot`, runs `action` as its first action and records it: the setup, the
+// Begins a trial on `robot`, runs `action` as its first action and records it: the placement, the
 // outcome and its clip, all from `rng` (so one seed gives one file).
 struct Recording {
   ActionOutcome outcome;

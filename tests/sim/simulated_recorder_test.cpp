@@ -28,8 +28,8 @@ SimConfig quiet() {
   c.recording.lead_in_s = 0;
   c.recording.output_gain = 25;
   c.recording.limiter_ceiling_dbfs = 0;
-  c.variability.microphone_distance.spread = 0;
-  c.variability.background_db.spread = 0;
+  c.variability.microphone_distance.stddev = 0;
+  c.variability.background_db.stddev = 0;
   c.room.reverb_level = 0;
   return c;
 }
@@ -213,7 +213,7 @@ TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
 TEST(SimulatedRecorder, BackgroundNoiseHasTheConfiguredLevel) {
   SimConfig config;
   config.recording.noise_dbfs = -40;
-  config.variability.background_db.spread = 0;
+  config.variability.background_db.stddev = 0;
   SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
                              config);
   ActionOutcome silent;  // no contacts at all
