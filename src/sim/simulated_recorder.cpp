@@ -259,6 +259,27 @@ void add_delayed(const std::vector<float>& in, std::size_t delay, float gain,
   for (std::size_t i = 0; i < n; ++i) o[i] += gain * x[i];
 }
 
+// `room` = `dry` plus every tap's delayed copy, computed a block of output at a time so the block
+// stays in cache while all taps are added (taps in the same order for every sample, so the sums are
+// exactly those of adding one whole delayed copy after another).
+std::vector<float> add_room(const std::vector<float>& dry,
+                            const std::vector<std::pair<std::size_t, float>>& taps) {
+  constexpr std::size_t kBlock = 4096;
+  std::vector<float> room = dry;
+  const std::size_t frames = dry.size();
+  for (std::size_t start = 0; start < frames; start += kBlock) {
+    const std::size_t end = std::min(frames, start + kBlock);
+    float* o = room.data();
+    for (const auto& [delay, gain] : taps) {
+      if (delay >= end) continue;
+      const std::size_t from = std::max(start, delay);
+      const float* x = dry.data() + (from - delay);
+      for (std::size_t i = from; i < end; ++i) o[i] += gain * x[i - from];
+    }
+  }
+  return room;
+}
+
 // The pressure the contact radiates directly (the object and the table surface accelerated as a
 // whole: dipole radiation, proportional to dF/dt). The impact is the first half-cycle of the object
 // bouncing on the contact's Hertzian spring (its period 2 tau, tau the Hertz contact time); the
@@ -332,27 +353,42 @@ void apply_limiter(const RecordingConfig& rec, int rate,
   std::vector<float> peak(frames);
   for (std::size_t i = 0; i < frames; ++i)
     peak[i] = std::max(std::abs(channels[0][i]), std::abs(channels[1][i]));
-  // Sliding maximum of the peaks over [i, i + ahead] (monotonic deque of indices).
-  std::vector<std::size_t> window(frames + 1);
-  std::size_t head = 0, tail = 0, next = 0;
+  // The gain a sample needs is ceiling / (the largest peak over [i, i + ahead]) when that peak is
+  // above the ceiling, else 1. Few samples are above it (a strike's first milliseconds), so only
+  // the windows that hold one are scanned, and a stretch where nothing is needed and the gain is
+  // exactly 1 is skipped whole.
+  std::vector<std::size_t> over;
+  for (std::size_t i = 0; i < frames; ++i)
+    if (peak[i] > ceiling) over.push_back(i);
+  std::size_t next_over = 0;  // the first entry of `over` at or after i
   double gain = 1.0;
   std::size_t held_until = 0;
   for (std::size_t i = 0; i < frames; ++i) {
-    for (; next < frames && next <= i + ahead; ++next) {
-      while (tail > head && peak[window[tail - 1]] <= peak[next]) --tail;
-      window[tail++] = next;
+    while (next_over < over.size() && over[next_over] < i) ++next_over;
+    const bool limit = next_over < over.size() && over[next_over] <= i + ahead;
+    if (!limit && gain == 1.0) {
+      // Nothing to do until the window reaches the next sample above the ceiling.
+      if (next_over == over.size()) break;
+      i = over[next_over] - ahead - 1;  // the loop's ++i lands on the window's first such i
+      continue;
     }
-    while (window[head] < i) ++head;
-    const double needed =
-        std::min(1.0, ceiling / std::max(1e-12, static_cast<double>(peak[window[head]])));
+    double needed = 1.0;
+    if (limit) {
+      float window_peak = 0;
+      for (std::size_t k = i; k < frames && k <= i + ahead; ++k)
+        window_peak = std::max(window_peak, peak[k]);
+      needed = ceiling / window_peak;
+    }
     if (needed < gain) {
       gain = needed;
       held_until = i + hold;
     } else if (i >= held_until) {
       gain += recover * (needed - gain);
     }
-    channels[0][i] = static_cast<float>(channels[0][i] * gain);
-    channels[1][i] = static_cast<float>(channels[1][i] * gain);
+    if (gain != 1.0) {  // x * 1 is x: the untouched stretches are left as they are
+      channels[0][i] = static_cast<float>(channels[0][i] * gain);
+      channels[1][i] = static_cast<float>(channels[1][i] * gain);
+    }
   }
 }
 
@@ -470,9 +506,7 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
 
   // The room: the dry sound plus its reverberant tail, shared by both capsules (they are
   // centimetres apart in the same room).
-  std::vector<float> room = dry;
-  for (const auto& [delay, gain] : reverb_taps(config_.room, rate, rng))
-    add_delayed(dry, delay, gain, room);
+  const std::vector<float> room = add_room(dry, reverb_taps(config_.room, rate, rng));
 
   // Two capsules either side of the microphone position along y; each hears the room's sound with
   // its own delay and 1/r gain; the recorder's limiter acts on both alike; then its own noise.

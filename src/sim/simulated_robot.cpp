@@ -144,16 +144,16 @@ ActionOutcome SimulatedRobot::execute(const std::string& action, const ActionVar
 
   // The initial configuration's hand orientation: every action is done with it.
   std::array<double, kArmJoints> initial = kInitialArmConfiguration;
-  auto kin = std::unique_ptr<mjData, void (*)(mjData*)>(mj_makeData(m), mj_deleteData);
+  mjData* kin = s.scratch();  // every field it is read for is recomputed from qpos below
   mju_copy(kin->qpos, d->qpos, m->nq);
   for (int i = 0; i < kArmJoints; ++i) kin->qpos[i] = initial[i];
-  mj_kinematics(m, kin.get());
-  const Eigen::Quaterniond upright = site_orientation(kin.get(), s.end_effector_site);
+  mj_kinematics(m, kin);
+  const Eigen::Quaterniond upright = site_orientation(kin, s.end_effector_site);
   std::array<double, kArmJoints> q = joint_targets_;
   for (int i = 0; i < kArmJoints; ++i) kin->qpos[i] = q[i];
-  mj_kinematics(m, kin.get());
-  const Eigen::Vector3d start_pos = site_position(kin.get(), s.end_effector_site);
-  const Eigen::Quaterniond start_rot = site_orientation(kin.get(), s.end_effector_site);
+  mj_kinematics(m, kin);
+  const Eigen::Vector3d start_pos = site_position(kin, s.end_effector_site);
+  const Eigen::Quaterniond start_rot = site_orientation(kin, s.end_effector_site);
 
   // Where the action begins: for a strike the hand around the object's axis (off by the grasp
   // offset) at grasp height, for a slide the pad just behind the object.
@@ -172,17 +172,17 @@ ActionOutcome SimulatedRobot::execute(const std::string& action, const ActionVar
     const Eigen::Vector3d target = start_pos + (at_object - start_pos) * f;
     const Eigen::Quaterniond turn = start_rot.slerp(f, upright);
     for (int it = 0; it < (w == kWaypoints ? 4 * kIterations : kIterations); ++it)
-      dls_step(m, kin.get(), s.end_effector_site, q.data(), target, turn);
+      dls_step(m, kin, s.end_effector_site, q.data(), target, turn);
     mju_copy(kin->qpos, d->qpos, m->nq);
     for (int i = 0; i < kArmJoints; ++i) kin->qpos[i] = q[i];
-    mj_fwdPosition(m, kin.get());
-    if (arm_touches_table(kin.get(), s)) {
+    mj_fwdPosition(m, kin);
+    if (arm_touches_table(kin, s)) {
       outcome.collision_time_s = -1.0;
       return fail(ActionStatus::collision,
                   "the arm would touch the table on its way to the object");
     }
   }
-  if ((site_position(kin.get(), s.end_effector_site) - at_object).norm() > kReachTolerance)
+  if ((site_position(kin, s.end_effector_site) - at_object).norm() > kReachTolerance)
     return fail(ActionStatus::failed, "the object is out of the arm's reach");
   joint_targets_ = q;
   for (int i = 0; i < kArmJoints; ++i) {
@@ -260,7 +260,7 @@ ActionOutcome SimulatedRobot::execute(const std::string& action, const ActionVar
         tick_start = k - 1;
         tick_length = std::min(control_steps, steps - tick_start);
         const double f = seg.progress(seg.duration_s * (tick_start + tick_length) / steps);
-        dls_step(m, kin.get(), s.end_effector_site, q.data(), seg.from + (seg.to - seg.from) * f,
+        dls_step(m, kin, s.end_effector_site, q.data(), seg.from + (seg.to - seg.from) * f,
                  seg.turn_from.slerp(f, seg.turn_to));
       }
       const double ramp = static_cast<double>(k - tick_start) / tick_length;
@@ -300,9 +300,9 @@ ActionOutcome SimulatedRobot::execute(const std::string& action, const ActionVar
     }
     // At the edge of its workspace the arm cannot follow the path (the IK falls behind its target).
     for (int i = 0; i < kArmJoints; ++i) kin->qpos[i] = q[i];
-    mj_kinematics(m, kin.get());
+    mj_kinematics(m, kin);
     if (!seg.stop_on_contact &&
-        (site_position(kin.get(), s.end_effector_site) - seg.to).norm() > kTrackTolerance) {
+        (site_position(kin, s.end_effector_site) - seg.to).norm() > kTrackTolerance) {
       joint_targets_ = q;
       mju_zero(d->xfrc_applied, 6 * m->nbody);
       outcome.duration_s = time;
