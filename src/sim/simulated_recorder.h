@@ -2,15 +2,16 @@
 // trace, by modal synthesis (van den Doel, Kry & Pai 2001).
 //
 // Signal chain, per recording:
-//   impacts  -> Hertz force pulse (duration from effective mass, contact radius, E*, speed), whose
-//               spectrum weights each mode, and the rim contact pattern weights shell ring modes;
-//   sliding  -> a fractal (1/f^2) surface profile read at the sliding speed, scaled by normal
-//   force; both     -> the object's modes and the table's modes (damped resonators);
-//   -> a short room response (the direct sound plus a sparse, exponentially decaying noise tail);
-//   -> two microphone capsules, each with its own delay and 1/r gain from its distance to the
-//   object;
-//   -> background noise; -> a fixed output gain (loudness carries information, so no
-//   normalisation).
+// - impacts: a Hertz contact (duration from effective mass, contact radius, E*, speed) whose
+// spectrum
+//   weights each mode (the rim contact pattern weights the shell ring modes), radiating directly as
+//   the object ringing on its contact spring (the contact ring);
+// - sliding: a fractal (1/f^2) surface profile read at the sliding speed (roughness noise);
+// - both drive the object's modes and the table's modes (damped resonators); the arm's motors add
+//   band noise following the joints' speed;
+// - a short room response (the direct sound plus a sparse, exponentially decaying noise tail);
+// - two microphone capsules, each with its own delay and 1/r gain from its distance to the object;
+// - the recorder's limiter, then background noise. A fixed output gain, no normalisation.
 #pragma once
 
 #include <vector>
