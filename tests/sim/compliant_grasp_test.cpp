@@ -5,28 +5,15 @@
 
 #include <gtest/gtest.h>
 
-#include "shipped_catalogue.h"
-#include "sim/scene.h"
+#include "scene_fixture.h"
 
 namespace echoplan::sim {
 namespace {
 
-class CompliantGraspTest : public ::testing::Test {
+class CompliantGraspTest : public SceneAtInitialPose {
  protected:
-  CompliantGraspTest()
-      : object(shipped_catalogue().object("plastic_cup")),
-        scene(object, shipped_catalogue().table, PhysicsConfig{}) {
-    m = scene.model();
-    d = scene.data();
-    mj_resetData(m, d);
-    for (int i = 0; i < kArmJoints; ++i) d->qpos[i] = kInitialArmConfiguration[i];
-    mj_forward(m, d);
-  }
+  CompliantGraspTest() : SceneAtInitialPose("plastic_cup") {}
   Eigen::Vector3d force_on(int body) const { return Eigen::Vector3d(d->xfrc_applied + 6 * body); }
-  const ObjectSpec& object;
-  Scene scene;
-  const mjModel* m;
-  mjData* d;
 };
 
 TEST_F(CompliantGraspTest, HeldInPlaceItCarriesTheWeightInProportionToItsStrength) {

@@ -6,27 +6,14 @@
 
 #include <cmath>
 
-#include "shipped_catalogue.h"
-#include "sim/scene.h"
+#include "scene_fixture.h"
 
 namespace echoplan::sim {
 namespace {
 
-class ContactRecorderTest : public ::testing::Test {
+class ContactRecorderTest : public SceneAtInitialPose {
  protected:
-  ContactRecorderTest()
-      : object(shipped_catalogue().object("coffee_mug")),
-        scene(object, shipped_catalogue().table, PhysicsConfig{}) {
-    m = scene.model();
-    d = scene.data();
-    mj_resetData(m, d);
-    for (int i = 0; i < kArmJoints; ++i) d->qpos[i] = kInitialArmConfiguration[i];
-    mj_forward(m, d);
-  }
-  const ObjectSpec& object;
-  Scene scene;
-  const mjModel* m;
-  mjData* d;
+  ContactRecorderTest() : SceneAtInitialPose("coffee_mug") {}
 };
 
 TEST_F(ContactRecorderTest, EffectiveMassUnderTheCentreOfMassIsTheWholeMass) {
