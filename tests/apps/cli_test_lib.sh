@@ -5,7 +5,10 @@
 #   finish WHAT    print the verdict and exit with the number of failures (0: all passed);
 #   expect_input_error DESCRIPTION MESSAGE ARGS...
 #                  run "$bin" ARGS... and check it refuses the input as a user error: exit status 2 and
-#                  MESSAGE (a grep pattern) on stderr. Its output is left in $work/out and $work/err.
+#                  MESSAGE (a grep pattern) on stderr. Its output is left in $work/out and $work/err;
+#   wait_for_lines FILE LINES
+#                  wait (up to 60 s) until FILE holds at least LINES lines, e.g. before interrupting a
+#                  background run that has finished some work.
 set -u
 bin=$1
 src=$2
@@ -28,4 +31,11 @@ expect_input_error() {
   elif ! grep -q -- "$message" "$work/err"; then
     fail "$description: stderr lacks '$message':"; cat "$work/err"
   fi
+}
+wait_for_lines() {
+  waited=0
+  while [ "$(cat "$1" 2>/dev/null | wc -l)" -lt "$2" ] && [ "$waited" -lt 3000 ]; do
+    sleep 0.02
+    waited=$((waited + 1))
+  done
 }

@@ -45,11 +45,7 @@ same_files "$work/whole" "$work/one_core" "one core against all cores"
 # kill -9 after two trials are journalled, then the same command again.
 "$bin" experiment --config "$config" --out "$work/killed" --workers 1 >/dev/null 2>&1 &
 pid=$!
-waited=0
-while [ "$(cat "$work/killed/journal.jsonl" 2>/dev/null | wc -l)" -lt 2 ] && [ "$waited" -lt 3000 ]; do
-  sleep 0.02
-  waited=$((waited + 1))
-done
+wait_for_lines "$work/killed/journal.jsonl" 2
 kill -9 "$pid"
 wait "$pid" 2>/dev/null
 kept=$(wc -l <"$work/killed/journal.jsonl")
@@ -64,11 +60,7 @@ same_files "$work/whole" "$work/killed" "killed and resumed against one run"
 # `env --default-signal=INT` gives the command the default disposition, as a terminal would.
 env --default-signal=INT "$bin" experiment --config "$config" --out "$work/interrupted" --workers 1 >/dev/null 2>"$work/int.err" &
 pid=$!
-waited=0
-while [ "$(cat "$work/interrupted/journal.jsonl" 2>/dev/null | wc -l)" -lt 1 ] && [ "$waited" -lt 3000 ]; do
-  sleep 0.02
-  waited=$((waited + 1))
-done
+wait_for_lines "$work/interrupted/journal.jsonl" 1
 kill -INT "$pid"
 wait "$pid"
 status=$?
