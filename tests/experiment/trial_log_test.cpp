@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "../common/test_folder.h"
 #include "common/error.h"
 
 namespace echoplan::experiment {
@@ -68,19 +69,9 @@ std::string slurp(const fs::path& path) {
   return s.str();
 }
 
-class TrialLogTest : public ::testing::Test {
+class TrialLogTest : public TestFolder {
  protected:
-  void SetUp() override {
-    // One folder per test: ctest runs the tests of this binary in parallel processes.
-    dir_ = fs::temp_directory_path() /
-           ("echoplan_trial_log_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path write(const std::string& name, const std::string& text) {
-    fs::create_directories(dir_);
     std::ofstream(dir_ / name) << text;
     return dir_ / name;
   }
@@ -96,8 +87,6 @@ class TrialLogTest : public ::testing::Test {
     ADD_FAILURE() << "no InputError for:\n" << text;
     return InputError("");
   }
-
-  fs::path dir_;
 };
 
 TEST_F(TrialLogTest, ParticleCountsAndQuotedNames) {
