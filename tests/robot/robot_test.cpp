@@ -1,5 +1,5 @@
-// The names of the robot's action outcomes, as the loop's logs (loop_steps.csv, the ROS messages)
-// spell them.
+// The names of the robot's action outcomes, as the loop's logs (loop_steps.csv, loop_steps.jsonl)
+// and its printed steps spell them.
 #include "robot/robot.h"
 
 #include <gtest/gtest.h>
