@@ -113,8 +113,16 @@ class TreeSearchSolver : public Solver {
   // Called for each particle reset() or replenishment adds to the root.
   virtual void root_particle_added(BeliefNode& /*root*/, const pomdp::State& /*state*/,
                                    Rng& /*rng*/) {}
+  // Called by reset() and update() while the old tree still exists, before everything outside the
+  // subtree of `kept` (the new root; null when none is kept) is freed.
+  virtual void before_reroot(const BeliefNode* /*kept*/) {}
+  // Plans with `model` from now on (a model change, see model_change.h). Throws InputError when
+  // it does not share the old model's actions, observation names and discount.
+  void replace_model(pomdp::ModelPtr model);
 
   const pomdp::Model& model() const { return *model_; }
+  const pomdp::ModelPtr& model_ptr() const { return model_; }
+  bool has_root() const { return root_ != nullptr; }
   BeliefNode& root() { return *root_; }
   const pomdp::State& sample_root_particle(Rng& rng) const;
   // True when a node at `depth` reached for the visits-th time is valued as a leaf; otherwise the
