@@ -10,18 +10,6 @@ namespace echoplan::solvers {
 AbtSolver::AbtSolver(pomdp::ModelPtr model, SearchOptions options)
     : TreeSearchSolver(std::move(model), options) {}
 
-std::vector<double> AbtSolver::evaluate_particle(const pomdp::State& state, Rng& rng) {
-  const pomdp::Model& m = model();
-  const int actions = m.num_actions();
-  one_step_each_.clear();
-  std::vector<double> rewards(actions);
-  for (int a = 0; a < actions; ++a) {
-    one_step_each_.push_back(m.step(state, a, rng));
-    rewards[a] = one_step_each_.back().reward;
-  }
-  return rewards;
-}
-
 namespace {
 void add_particle_rewards(BeliefNode& node, const std::vector<double>& rewards, double sign) {
   node.particle_reward_sums.resize(rewards.size(), 0.0);
@@ -31,8 +19,22 @@ void add_particle_rewards(BeliefNode& node, const std::vector<double>& rewards, 
 }
 }  // namespace
 
+const std::vector<double>& AbtSolver::evaluate_particle(BeliefNode& node, const pomdp::State& state,
+                                                        Rng& rng) {
+  const pomdp::Model& m = model();
+  const int actions = m.num_actions();
+  one_step_each_.clear();
+  rewards_.resize(actions);
+  for (int a = 0; a < actions; ++a) {
+    one_step_each_.push_back(m.step(state, a, rng));
+    rewards_[a] = one_step_each_.back().reward;
+  }
+  add_particle_rewards(node, rewards_, +1.0);
+  return rewards_;
+}
+
 void AbtSolver::root_particle_added(BeliefNode& root, const pomdp::State& state, Rng& rng) {
-  add_particle_rewards(root, evaluate_particle(state, rng), +1.0);
+  evaluate_particle(root, state, rng);
 }
 
 double AbtSolver::action_value(const BeliefNode& node, int a) const {
@@ -64,23 +66,27 @@ void AbtSolver::simulate_from(Episode& episode, BeliefNode* node, pomdp::State s
                               Rng& rng) {
   const pomdp::Model& m = model();
   for (;; ++depth) {
+    const bool keep = options().keep_episodes;
     ++node->visits;
     EpisodeStep step;
     step.node = node;
     if (depth > 0) {
       node->particles.push_back(state);
-      step.particle_rewards = evaluate_particle(state, rng);
-      add_particle_rewards(*node, step.particle_rewards, +1.0);
+      const std::vector<double>& rewards = evaluate_particle(*node, state, rng);
+      if (keep) step.particle_rewards = rewards;
     }
     if (visit_as_leaf(*node, depth)) {
-      std::vector<double> before = node->leaf.sums();
+      std::vector<double> before;
+      if (keep) before = node->leaf.sums();
       node->leaf.add(options().leaf, m, state, options().max_depth - depth, rng,
                      depth > 0 ? &one_step_each_ : nullptr);
-      step.leaf_contribution = node->leaf.sums();
-      before.resize(step.leaf_contribution.size(), 0.0);
-      for (std::size_t i = 0; i < before.size(); ++i) step.leaf_contribution[i] -= before[i];
+      if (keep) {
+        step.leaf_contribution = node->leaf.sums();
+        before.resize(step.leaf_contribution.size(), 0.0);
+        for (std::size_t i = 0; i < before.size(); ++i) step.leaf_contribution[i] -= before[i];
+        step.state = std::move(state);
+      }
       node->value = node->leaf.value();
-      step.state = std::move(state);
       episode.push_back(std::move(step));
       return;
     }
@@ -90,15 +96,17 @@ void AbtSolver::simulate_from(Episode& episode, BeliefNode* node, pomdp::State s
     ++node->action_visits;
     ++action.visits;
     step.action = a;
-    step.observation = std::move(result.observation);
-    step.reward = result.reward;
     step.terminal = result.terminal;
-    step.state = std::move(state);
+    if (keep) {
+      step.observation = result.observation;
+      step.reward = result.reward;
+      step.state = std::move(state);
+    }
     if (result.terminal) {
       episode.push_back(std::move(step));
       return;
     }
-    const std::size_t child = child_for(action, step.observation);
+    const std::size_t child = child_for(action, result.observation);
     ObservationChild& c = action.children[child];
     ++c.arrivals;
     action.future_sum += c.counted_value;
@@ -129,6 +137,12 @@ void AbtSolver::run_episode(Rng& rng) {
     if (top.actions[a] && top.actions[a]->visits > 0)
       top.actions[a]->value = action_value(top, static_cast<int>(a));
 
+  if (!options().keep_episodes) {
+    path_.clear();
+    simulate_from(path_, &top, sample_root_particle(rng), 0, rng);
+    backup(path_, path_.size() - 1);
+    return;
+  }
   Episode episode;
   simulate_from(episode, &top, sample_root_particle(rng), 0, rng);
   backup(episode, episode.size() - 1);
@@ -190,6 +204,8 @@ pomdp::Observation AbtSolver::couple_observation(const pomdp::Model& before,
 
 RevisionStats AbtSolver::revise(const ModelChange& change, Rng& rng) {
   if (!has_root()) throw std::logic_error("revise() before reset()");
+  if (!options().keep_episodes)
+    throw std::logic_error("revise() needs SearchOptions::keep_episodes: no episodes were kept");
   const pomdp::ModelPtr before = model_ptr();
   replace_model(change.model);
   const bool discrete = model().spec().observation.discrete;

@@ -14,17 +14,18 @@
 // evidence. Particles stay in their nodes, so after a real step the kept child is a ready-made
 // belief.
 //
-// As published, the tree keeps every episode as its sequence of (state, action, observation,
-// reward) steps, each step linked to the belief node it was filed in, so that a model change
-// revises the tree instead of rebuilding it: revise() re-samples the observation of every step
-// that drew it from a changed row, and when the new observation leads to another branch, the
-// episode's old continuation is taken out of the tree (particles, visits, leaf estimates) and the
-// episode continues from the new branch with the search policy; the values along both paths are
-// backed up again. What differs from the paper and OPPT's implementation: the new observation is
-// drawn by a maximal coupling with the old one (kept with probability min(1, P_new(o)/P_old(o)),
-// otherwise drawn from the excess of P_new over P_old), which is exactly a draw from P_new but
-// keeps as many continuations as possible; and only observation-table changes are supported (the
-// only part of echoplan's models that can change while a robot runs, model_change.h).
+// As published (with SearchOptions::keep_episodes), the tree keeps every episode as its sequence
+// of (state, action, observation, reward) steps, each step linked to the belief node it was filed
+// in, so that a model change revises the tree instead of rebuilding it: revise() re-samples the
+// observation of every step that drew it from a changed row, and when the new observation leads to
+// another branch, the episode's old continuation is taken out of the tree (particles, visits, leaf
+// estimates) and the episode continues from the new branch with the search policy; the values along
+// both paths are backed up again. What differs from the paper and OPPT's implementation: the new
+// observation is drawn by a maximal coupling with the old one (kept with probability min(1,
+// P_new(o)/P_old(o)), otherwise drawn from the excess of P_new over P_old), which is exactly a draw
+// from P_new but keeps as many continuations as possible; and only observation-table changes are
+// supported (the only part of echoplan's models that can change while a robot runs,
+// model_change.h).
 #pragma once
 
 #include <cstdint>
@@ -52,10 +53,10 @@ class AbtSolver final : public TreeSearchSolver {
   // built (up to the search policy's choices, which stay as they were where nothing changed).
   // For a model with continuous observations, the affected step is re-stepped with the new model
   // instead of coupled. Throws InputError when the new model's actions, observations or discount
-  // differ, std::logic_error before reset().
+  // differ, std::logic_error before reset() or when options().keep_episodes is off.
   RevisionStats revise(const ModelChange& change, Rng& rng);
 
-  // Episodes stored in the tree (those passing through the current root).
+  // Episodes stored in the tree (those passing through the current root; 0 unless keep_episodes).
   std::int64_t stored_episodes() const { return static_cast<std::int64_t>(episodes_.size()); }
 
  protected:
@@ -78,11 +79,15 @@ class AbtSolver final : public TreeSearchSolver {
   };
   using Episode = std::vector<EpisodeStep>;
 
-  // Steps `state` once with every action (into one_step_each_) and returns the rewards.
-  std::vector<double> evaluate_particle(const pomdp::State& state, Rng& rng);
+  // Steps `state` once with every action (into one_step_each_) and adds the rewards to the node's
+  // sums; returns them (rewards_, valid until the next call).
+  const std::vector<double>& evaluate_particle(BeliefNode& node, const pomdp::State& state,
+                                               Rng& rng);
   // Q(b, a) from the node's particle rewards and the action's children.
   double action_value(const BeliefNode& node, int action) const;
-  // Walks `episode` on from `node` at `depth` with `state` (filed there unless depth is 0).
+  // Walks `episode` on from `node` at `depth` with `state` (filed there unless depth is 0). The
+  // steps record the path (node, action, branch); with keep_episodes also everything revise()
+  // needs to take the step back out.
   void simulate_from(Episode& episode, BeliefNode* node, pomdp::State state, int depth, Rng& rng);
   // Takes step `i` (depth > 0) of `episode` out of the tree's statistics.
   void remove_step(const EpisodeStep& step);
@@ -95,8 +100,10 @@ class AbtSolver final : public TreeSearchSolver {
   pomdp::Observation couple_observation(const pomdp::Model& before, const EpisodeStep& step,
                                         const pomdp::State& next, Rng& rng) const;
 
-  std::vector<Episode> episodes_;
+  std::vector<Episode> episodes_;                 // with keep_episodes
+  Episode path_;                                  // the current episode otherwise (reused)
   std::vector<pomdp::StepResult> one_step_each_;  // reused between particles
+  std::vector<double> rewards_;                   // reused between particles
 };
 
 }  // namespace echoplan::solvers

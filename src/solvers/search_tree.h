@@ -32,6 +32,11 @@ struct SearchOptions {
   int min_root_particles = 100;  // after update, a root with fewer particles is replenished; >= 0
   LeafOptions leaf;
   ObservationBranching branching;
+  // ABT only: keep every episode's (state, action, observation, reward) steps so that
+  // AbtSolver::revise() can revise the tree after a model change. Off by default: nothing in
+  // echoplan's commands changes the model mid-run, and keeping them costs ~60% more time per
+  // episode on the seed problem (docs/planning.md).
+  bool keep_episodes = false;
 
   // Throws InputError naming the offending option.
   void validate() const;

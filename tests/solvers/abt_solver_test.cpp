@@ -72,6 +72,7 @@ SearchOptions seed_options() {
   SearchOptions options;  // the shipped problem's planner section: exploration 110, depth 100
   options.exploration = 110;
   options.max_depth = 100;
+  options.keep_episodes = true;
   return options;
 }
 
@@ -213,6 +214,15 @@ TEST(AbtRevision, ChangedRowsAreFoundAndOtherChangesRefused) {
   ModelChange other;
   other.model = std::make_shared<const ObjectIdentificationModel>(std::move(data));
   EXPECT_THROW(solver.revise(other, rng), InputError);
+  // Without kept episodes there is nothing to revise.
+  SearchOptions plain = seed_options();
+  plain.keep_episodes = false;
+  AbtSolver forgetful(model, plain);
+  forgetful.reset(belief, rng);
+  forgetful.improve(Budget::episodes(10), rng);
+  EXPECT_EQ(forgetful.stored_episodes(), 0);
+  EXPECT_THROW(forgetful.revise(observation_table_change(*model, recalibrated(*model)), rng),
+               std::logic_error);
 }
 
 TEST(AbtRevision, UpdateKeepsTheEpisodesThroughTheNewRoot) {
