@@ -19,6 +19,7 @@
 #include "pomdp/particle_belief.h"
 #include "pomdp/problem.h"
 #include "solvers/abt_solver.h"
+#include "solvers/planner_overrides.h"
 
 namespace echoplan::experiment {
 namespace {
@@ -38,20 +39,11 @@ pomdp::Problem seed_problem() {
   return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
 }
 
-// The search options the problem file's planner section asks for.
-solvers::SearchOptions planner_options(const pomdp::Problem& problem) {
-  solvers::SearchOptions options;
-  options.exploration = problem.planner.exploration;
-  options.max_depth = problem.planner.depth;
-  options.root_particles = problem.belief.particles;
-  return options;
-}
-
 struct Harness {
   pomdp::Problem problem = seed_problem();
   pomdp::ModelPtr model = problem.model;
   pomdp::ModelEnvironment environment{model};
-  solvers::AbtSolver solver{model, planner_options(problem)};
+  solvers::AbtSolver solver{model, solvers::search_options({}, problem)};
   TrialSetup setup() {
     TrialSetup s;
     s.model = model.get();

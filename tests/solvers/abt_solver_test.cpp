@@ -13,6 +13,7 @@
 #include "pomdp/particle_belief.h"
 #include "pomdp/problem.h"
 #include "solvers/model_change.h"
+#include "solvers/planner_overrides.h"
 
 namespace echoplan::solvers {
 namespace {
@@ -22,10 +23,12 @@ using pomdp::ObjectProblemData;
 
 constexpr int kSlide = 0, kStrike = 1;
 
+pomdp::Problem seed_problem() {
+  return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+}
+
 std::shared_ptr<const ObjectIdentificationModel> seed_model() {
-  const pomdp::Problem p =
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
-  return std::dynamic_pointer_cast<const ObjectIdentificationModel>(p.model);
+  return std::dynamic_pointer_cast<const ObjectIdentificationModel>(seed_problem().model);
 }
 
 // The seed model with a recalibrated strike: the pringles can and the mug now sound the same when
@@ -68,10 +71,9 @@ class CountingModel final : public pomdp::Model {
   pomdp::ModelPtr inner_;
 };
 
+// The shipped problem's planner section (exploration 110, depth 100), keeping the episodes.
 SearchOptions seed_options() {
-  SearchOptions options;  // the shipped problem's planner section: exploration 110, depth 100
-  options.exploration = 110;
-  options.max_depth = 100;
+  SearchOptions options = search_options({}, seed_problem());
   options.keep_episodes = true;
   return options;
 }
