@@ -155,7 +155,7 @@ void AbtSolver::remove_step(const EpisodeStep& step) {
   auto it = std::find(node.particles.begin(), node.particles.end(), step.state);
   if (it == node.particles.end())
     throw std::logic_error("AbtSolver: an episode's particle is missing from its node");
-  *it = std::move(node.particles.back());
+  if (it + 1 != node.particles.end()) *it = std::move(node.particles.back());
   node.particles.pop_back();
   add_particle_rewards(node, step.particle_rewards, -1.0);
   if (step.action < 0) {
