@@ -2,6 +2,8 @@
 // likelihood, and belief updates. Results: docs/BENCHMARKS.md, section "pomdp".
 #include <benchmark/benchmark.h>
 
+#include <memory>
+
 #include "pomdp/exact_belief.h"
 #include "pomdp/particle_belief.h"
 #include "pomdp/problem.h"
@@ -49,19 +51,32 @@ void BM_ObjectModelLikelihood(benchmark::State& st) {
 }
 BENCHMARK(BM_ObjectModelLikelihood)->Arg(4)->Arg(16)->Arg(64);
 
-// One SIR update of the seed's 1000-particle belief (propagate, weight, resample).
-void BM_ParticleBeliefUpdate(benchmark::State& st) {
+// One SIR update of the seed's 1000-particle belief (propagate, weight, resample, and the fresh
+// particles replayed through the history against depletion), averaged over trials of 10 updates:
+// the fresh particles' cost grows with the history, so the belief starts over every 10 updates
+// (outside the timing). `fresh_share` 0 is plain SIR, the baseline.
+void particle_belief_update(benchmark::State& st, double fresh_share) {
   const ModelPtr model = object_model(static_cast<int>(st.range(0)));
   Rng rng(4);
-  ParticleBelief belief(model, 1000, rng);
+  auto belief = std::make_unique<ParticleBelief>(model, 1000, rng, fresh_share);
   int step = 0;
   for (auto _ : st) {
-    belief.update(step % 2, Observation{step % 3, {}}, rng);
+    if (step % 10 == 0) {
+      st.PauseTiming();
+      belief = std::make_unique<ParticleBelief>(model, 1000, rng, fresh_share);
+      st.ResumeTiming();
+    }
+    belief->update(step % 2, Observation{step % 3, {}}, rng);
     ++step;
   }
   st.SetItemsProcessed(st.iterations() * 1000);
 }
+void BM_ParticleBeliefUpdate(benchmark::State& st) {
+  particle_belief_update(st, ParticleBelief::kDefaultFreshShare);
+}
+void BM_ParticleBeliefUpdatePlainSir(benchmark::State& st) { particle_belief_update(st, 0.0); }
 BENCHMARK(BM_ParticleBeliefUpdate)->Arg(4)->Arg(16)->Arg(64);
+BENCHMARK(BM_ParticleBeliefUpdatePlainSir)->Arg(4)->Arg(16)->Arg(64);
 
 void BM_ExactBeliefUpdate(benchmark::State& st) {
   const ModelPtr model = object_model(static_cast<int>(st.range(0)));

@@ -14,40 +14,96 @@
 // evidence. Particles stay in their nodes, so after a real step the kept child is a ready-made
 // belief.
 //
-// Not done here: ABT's revision of stored episodes when the model changes (echoplan's models never
-// change while planning).
+// As published (with SearchOptions::keep_episodes), the tree keeps every episode as its sequence
+// of (state, action, observation, reward) steps, each step linked to the belief node it was filed
+// in, so that a model change revises the tree instead of rebuilding it: revise() re-samples the
+// observation of every step that drew it from a changed row, and when the new observation leads to
+// another branch, the episode's old continuation is taken out of the tree (particles, visits, leaf
+// estimates) and the episode continues from the new branch with the search policy; the values along
+// both paths are backed up again. What differs from the paper and OPPT's implementation: the new
+// observation is drawn by a maximal coupling with the old one (kept with probability min(1,
+// P_new(o)/P_old(o)), otherwise drawn from the excess of P_new over P_old), which is exactly a draw
+// from P_new but keeps as many continuations as possible; and only observation-table changes are
+// supported (the only part of echoplan's models that can change while a robot runs,
+// model_change.h).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
+#include "solvers/model_change.h"
 #include "solvers/search_tree.h"
 
 namespace echoplan::solvers {
+
+// What one revise() did.
+struct RevisionStats {
+  std::int64_t episodes = 0;              // episodes kept by the tree
+  std::int64_t affected_steps = 0;        // steps whose observation came from a changed row
+  std::int64_t kept_observations = 0;     // of those, steps whose observation stayed in its branch
+  std::int64_t resimulated_episodes = 0;  // episodes whose continuation was replaced
+};
 
 class AbtSolver final : public TreeSearchSolver {
  public:
   AbtSolver(pomdp::ModelPtr model, SearchOptions options);
 
+  // Plans with change.model from now on and revises the stored episodes that used a changed
+  // observation row, so that the tree is what episodes sampled from the new model would have
+  // built (up to the search policy's choices, which stay as they were where nothing changed).
+  // For a model with continuous observations, the affected step is re-stepped with the new model
+  // instead of coupled. Throws InputError when the new model's actions, observations or discount
+  // differ, std::logic_error before reset() or when options().keep_episodes is off.
+  RevisionStats revise(const ModelChange& change, Rng& rng);
+
+  // Episodes stored in the tree (those passing through the current root; 0 unless keep_episodes).
+  std::int64_t stored_episodes() const { return static_cast<std::int64_t>(episodes_.size()); }
+
  protected:
   void run_episode(Rng& rng) override;
   void root_particle_added(BeliefNode& root, const pomdp::State& state, Rng& rng) override;
+  void before_reroot(const BeliefNode* kept) override;
 
  private:
+  // One (state, action, observation, reward) step of a stored episode.
+  struct EpisodeStep {
+    BeliefNode* node;  // the belief node the state is filed in
+    pomdp::State state;
+    int action = -1;  // -1: the episode ended here, valued by the node's leaf estimate
+    pomdp::Observation observation;
+    double reward = 0.0;
+    bool terminal = false;
+    std::ptrdiff_t child = -1;              // the observation branch followed; -1 if none
+    std::vector<double> particle_rewards;   // the state's reward under every action, as filed
+    std::vector<double> leaf_contribution;  // leaf steps: what the state added to the estimate
+  };
+  using Episode = std::vector<EpisodeStep>;
+
   // Steps `state` once with every action (into one_step_each_) and adds the rewards to the node's
-  // per-action sums.
-  void evaluate_particle(BeliefNode& node, const pomdp::State& state, Rng& rng);
+  // sums; returns them (rewards_, valid until the next call).
+  const std::vector<double>& evaluate_particle(BeliefNode& node, const pomdp::State& state,
+                                               Rng& rng);
   // Q(b, a) from the node's particle rewards and the action's children.
   double action_value(const BeliefNode& node, int action) const;
+  // Walks `episode` on from `node` at `depth` with `state` (filed there unless depth is 0). The
+  // steps record the path (node, action, branch); with keep_episodes also everything revise()
+  // needs to take the step back out.
+  void simulate_from(Episode& episode, BeliefNode* node, pomdp::State state, int depth, Rng& rng);
+  // Takes step `i` (depth > 0) of `episode` out of the tree's statistics.
+  void remove_step(const EpisodeStep& step);
+  // Recomputes the values along episode steps [0, last], deepest first.
+  void backup(const Episode& episode, std::size_t last);
+  // Folds the current value of `action`'s child `child` into its future_sum.
+  static void refresh_child(ActionNode& action, std::size_t child);
+  void recompute_node_value(BeliefNode& node) const;
+  // Draws the new observation of an affected step by a maximal coupling with the old one.
+  pomdp::Observation couple_observation(const pomdp::Model& before, const EpisodeStep& step,
+                                        const pomdp::State& next, Rng& rng) const;
 
-  // One step of the episode's path: the belief node, the action taken there and the observation
-  // branch followed (-1 when the step was terminal).
-  struct PathStep {
-    BeliefNode* node;
-    int action;
-    std::ptrdiff_t child;
-  };
-  std::vector<PathStep> path_;                    // reused between episodes
+  std::vector<Episode> episodes_;                 // with keep_episodes
+  Episode path_;                                  // the current episode otherwise (reused)
   std::vector<pomdp::StepResult> one_step_each_;  // reused between particles
+  std::vector<double> rewards_;                   // reused between particles
 };
 
 }  // namespace echoplan::solvers

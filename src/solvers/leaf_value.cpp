@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 #include "common/error.h"
 
@@ -78,6 +79,13 @@ double LeafEstimate::value() const {
   if (count_ == 0) return 0.0;
   // One accumulator is a plain mean; several are per-action means, of which the best counts.
   return *std::max_element(sums_.begin(), sums_.end()) / count_;
+}
+
+void LeafEstimate::remove(const std::vector<double>& contribution) {
+  if (count_ == 0 || contribution.size() != sums_.size())
+    throw std::logic_error("LeafEstimate::remove(): not a contribution of this estimate");
+  for (std::size_t i = 0; i < sums_.size(); ++i) sums_[i] -= contribution[i];
+  --count_;
 }
 
 void LeafEstimate::release() {

@@ -48,6 +48,11 @@ class LeafEstimate {
   // The current estimate; 0 before any particle was added.
   double value() const;
   int count() const { return count_; }
+  // The accumulated sums; the difference across one add() is that particle's contribution.
+  const std::vector<double>& sums() const { return sums_; }
+  // Takes back one particle's `contribution` (as measured across its add()), for a solver that
+  // revises its episodes (AbtSolver::revise).
+  void remove(const std::vector<double>& contribution);
   // Frees the accumulators (the node was expanded and no longer needs them).
   void release();
 

@@ -37,7 +37,22 @@ std::unique_ptr<BeliefNode> TreeSearchSolver::new_belief_node() {
   return node;
 }
 
+void TreeSearchSolver::replace_model(pomdp::ModelPtr model) {
+  if (!model) throw std::invalid_argument("replace_model(): no model");
+  const pomdp::ModelSpec& old_spec = model_->spec();
+  const pomdp::ModelSpec& new_spec = model->spec();
+  if (new_spec.action_names != old_spec.action_names ||
+      new_spec.observation.names != old_spec.observation.names ||
+      new_spec.observation.discrete != old_spec.observation.discrete ||
+      new_spec.discount != old_spec.discount)
+    throw InputError("model change: the new model '" + new_spec.name +
+                     "' does not share the actions, observations and discount of '" +
+                     old_spec.name + "'");
+  model_ = std::move(model);
+}
+
 void TreeSearchSolver::reset(const pomdp::Belief& belief, Rng& rng) {
+  if (root_) before_reroot(nullptr);
   root_.reset();
   root_ = new_belief_node();
   root_->expanded = true;  // the root always branches: it is where the decision is made
@@ -108,6 +123,7 @@ void TreeSearchSolver::update(int action, const pomdp::Observation& observation,
         break;
       }
   }
+  before_reroot(kept.get());
   root_.reset();
   root_ = kept ? std::move(kept) : new_belief_node();
   if (!root_->expanded) {

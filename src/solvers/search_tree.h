@@ -32,6 +32,11 @@ struct SearchOptions {
   int min_root_particles = 100;  // after update, a root with fewer particles is replenished; >= 0
   LeafOptions leaf;
   ObservationBranching branching;
+  // ABT only: keep every episode's (state, action, observation, reward) steps so that
+  // AbtSolver::revise() can revise the tree after a model change. Off by default: nothing in
+  // echoplan's commands changes the model mid-run, and keeping them costs 1.3x (1,000 episodes)
+  // to 2.4x (10,000) the CPU time per episode on the seed problem (docs/BENCHMARKS.md).
+  bool keep_episodes = false;
 
   // Throws InputError naming the offending option.
   void validate() const;
@@ -113,8 +118,16 @@ class TreeSearchSolver : public Solver {
   // Called for each particle reset() or replenishment adds to the root.
   virtual void root_particle_added(BeliefNode& /*root*/, const pomdp::State& /*state*/,
                                    Rng& /*rng*/) {}
+  // Called by reset() and update() while the old tree still exists, before everything outside the
+  // subtree of `kept` (the new root; null when none is kept) is freed.
+  virtual void before_reroot(const BeliefNode* /*kept*/) {}
+  // Plans with `model` from now on (a model change, see model_change.h). Throws InputError when
+  // it does not share the old model's actions, observation names and discount.
+  void replace_model(pomdp::ModelPtr model);
 
   const pomdp::Model& model() const { return *model_; }
+  const pomdp::ModelPtr& model_ptr() const { return model_; }
+  bool has_root() const { return root_ != nullptr; }
   BeliefNode& root() { return *root_; }
   const pomdp::State& sample_root_particle(Rng& rng) const;
   // True when a node at `depth` reached for the visits-th time is valued as a leaf; otherwise the

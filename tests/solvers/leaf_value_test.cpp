@@ -3,17 +3,24 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "toy_models.h"
+#include "pomdp/problem.h"
 
 namespace echoplan::solvers {
 namespace {
 
-using testing::ToyAudioObjects;
+// The shipped seed problem: objects 0 and 2 belong at A, 1 and 3 at B; sorting right earns 10,
+// wrong -100; sensing costs 1; discount 0.99; the heuristic of a known object is 10 (sort it now).
+std::shared_ptr<const pomdp::Model> seed_model() {
+  return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml")
+      .model;
+}
 
-pomdp::State object(int k) { return {{}, {k}}; }
+// The full model state of object k at the start of an episode (arm joints and offset filled in).
+pomdp::State object(int k) { return seed_model()->tabular_state(k); }
 
 TEST(LeafEstimate, LookaheadCommitsWhenCertain) {
-  ToyAudioObjects model;
+  const auto shipped = seed_model();
+  const pomdp::Model& model = *shipped;
   Rng rng(1);
   LeafEstimate leaf;
   const LeafOptions options{LeafMode::lookahead, 1};
@@ -24,7 +31,8 @@ TEST(LeafEstimate, LookaheadCommitsWhenCertain) {
 }
 
 TEST(LeafEstimate, LookaheadSensesWhenTheGroupIsUncertain) {
-  ToyAudioObjects model;
+  const auto shipped = seed_model();
+  const pomdp::Model& model = *shipped;
   Rng rng(1);
   LeafEstimate leaf;
   const LeafOptions options{LeafMode::lookahead, 1};
@@ -35,7 +43,8 @@ TEST(LeafEstimate, LookaheadSensesWhenTheGroupIsUncertain) {
 }
 
 TEST(LeafEstimate, HeuristicAveragesTheModelHeuristic) {
-  ToyAudioObjects model;
+  const auto shipped = seed_model();
+  const pomdp::Model& model = *shipped;
   Rng rng(1);
   LeafEstimate leaf;
   leaf.add({LeafMode::heuristic, 1}, model, object(0), 10, rng);
@@ -48,7 +57,8 @@ TEST(LeafEstimate, RandomRolloutIsPoorOnTheSeedProblem) {
   // The reason lookahead is the default: random play sorts wrongly half of the time. Its mean over
   // many rollouts lies far below 0. Exactly: each step senses (-1, continue) or sorts (mean -45)
   // with probability 1/2, so V = 0.5 (-45) + 0.5 (-1 + 0.99 V), V = -23 / 0.505.
-  ToyAudioObjects model;
+  const auto shipped = seed_model();
+  const pomdp::Model& model = *shipped;
   Rng rng(3);
   LeafEstimate leaf;
   for (int i = 0; i < 4000; ++i) leaf.add({LeafMode::rollout, 1}, model, object(i % 4), 50, rng);

@@ -1,21 +1,28 @@
-// ABT and POMCP over the shared belief tree: tree reuse and pruning, determinism, the seed
-// problem's optimal first action, option validation.
+// ABT and POMCP over the shared belief tree, on the shipped problems (problems/audio_objects.yaml,
+// problems/tiger.pomdp) with the shipped ParticleBelief: tree reuse and pruning, determinism, the
+// seed problem's optimal first action, option validation.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
 
 #include "common/error.h"
+#include "pomdp/particle_belief.h"
+#include "pomdp/problem.h"
 #include "solvers/abt_solver.h"
 #include "solvers/pomcp_solver.h"
-#include "toy_models.h"
 
 namespace echoplan::solvers {
 namespace {
 
-using testing::ToyAudioObjects;
-using testing::ToyParticleBelief;
-using testing::ToyTiger;
+pomdp::ModelPtr shipped(const std::string& file) {
+  return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/" + file).model;
+}
+pomdp::ModelPtr seed_model() { return shipped("audio_objects.yaml"); }
+// Action indices: the seed problem lists its sensing actions, then its sorting actions; the tiger
+// file lists listen first.
+constexpr int kSlide = 0, kStrike = 1, kMoveToA = 2;
+constexpr int kListen = 0;
 
 enum class Kind { abt, pomcp };
 
@@ -34,14 +41,14 @@ struct Rooted {
   }
   pomdp::ModelPtr model;
   Rng rng;
-  ToyParticleBelief belief;
+  pomdp::ParticleBelief belief;
   std::unique_ptr<TreeSearchSolver> solver;
 };
 
 class TreeSolvers : public ::testing::TestWithParam<Kind> {};
 
 TEST_P(TreeSolvers, UpdateKeepsTheTakenBranchAndFreesTheRest) {
-  Rooted t(GetParam(), std::make_shared<ToyAudioObjects>(), 7, 1000);
+  Rooted t(GetParam(), seed_model(), 7, 1000);
   auto& solver = t.solver;
   auto& rng = t.rng;
   auto& belief = t.belief;
@@ -54,7 +61,7 @@ TEST_P(TreeSolvers, UpdateKeepsTheTakenBranchAndFreesTheRest) {
 
   pomdp::Observation heard;
   heard.index = 1;
-  const int action = ToyAudioObjects::strike;
+  const int action = kStrike;
   const std::int64_t kept = solver->subtree_belief_nodes(action, heard);
   ASSERT_GT(kept, 10) << "3000 episodes should have grown a real subtree under (strike, O1)";
   ASSERT_LT(kept, before.belief_nodes - 10) << "the siblings hold nodes too";
@@ -77,7 +84,7 @@ TEST_P(TreeSolvers, SmallRootIsReplenishedFromTheRealBelief) {
   SearchOptions options;
   options.root_particles = 300;
   options.min_root_particles = 1000000;  // every kept root counts as too small
-  Rooted t(GetParam(), std::make_shared<ToyAudioObjects>(), 11, 500, options);
+  Rooted t(GetParam(), seed_model(), 11, 500, options);
   auto& solver = t.solver;
   auto& rng = t.rng;
   auto& belief = t.belief;
@@ -85,30 +92,30 @@ TEST_P(TreeSolvers, SmallRootIsReplenishedFromTheRealBelief) {
   solver->improve(Budget::episodes(200), rng);
   pomdp::Observation heard;
   heard.index = 3;
-  belief.update(ToyAudioObjects::slide, heard, rng);
-  solver->update(ToyAudioObjects::slide, heard, belief, rng);
+  belief.update(kSlide, heard, rng);
+  solver->update(kSlide, heard, belief, rng);
   EXPECT_EQ(solver->stats().root_particles, 300);
 }
 
 TEST_P(TreeSolvers, UntriedActionStartsAFreshRootFromTheRealBelief) {
   SearchOptions options;
   options.root_particles = 150;
-  Rooted t(GetParam(), std::make_shared<ToyAudioObjects>(), 5, 200, options);
+  Rooted t(GetParam(), seed_model(), 5, 200, options);
   auto& solver = t.solver;
   auto& rng = t.rng;
   auto& belief = t.belief;
   solver->improve(Budget::episodes(2), rng);  // tries slide, then strike: nothing under move_to_A
-  ASSERT_TRUE(std::isnan(solver->root_action_values()[ToyAudioObjects::move_to_A]));
+  ASSERT_TRUE(std::isnan(solver->root_action_values()[kMoveToA]));
   pomdp::Observation heard;
   heard.index = 0;
-  solver->update(ToyAudioObjects::move_to_A, heard, belief, rng);
+  solver->update(kMoveToA, heard, belief, rng);
   EXPECT_EQ(solver->stats().belief_nodes, 1);
   EXPECT_EQ(solver->stats().action_nodes, 0);
   EXPECT_EQ(solver->stats().root_particles, 150);
 }
 
 TEST_P(TreeSolvers, SameSeedSameSearch) {
-  auto model = std::make_shared<ToyAudioObjects>();
+  auto model = seed_model();
   auto run = [&](std::uint64_t seed) {
     Rooted t(GetParam(), model, seed, 1000);
     t.solver->improve(Budget::episodes(2000), t.rng);
@@ -120,7 +127,7 @@ TEST_P(TreeSolvers, SameSeedSameSearch) {
 }
 
 TEST_P(TreeSolvers, TimeBudgetRunsAtLeastOneEpisode) {
-  Rooted t(GetParam(), std::make_shared<ToyAudioObjects>(), 1, 100);
+  Rooted t(GetParam(), seed_model(), 1, 100);
   auto& solver = t.solver;
   auto& rng = t.rng;
   solver->improve(Budget::milliseconds(1), rng);
@@ -130,11 +137,11 @@ TEST_P(TreeSolvers, TimeBudgetRunsAtLeastOneEpisode) {
 
 TEST_P(TreeSolvers, TigerListensFirst) {
   // From the uniform belief, opening a door is worth (10 - 100) / 2 = -45; listening is optimal.
-  Rooted t(GetParam(), std::make_shared<ToyTiger>(), 3, 1000);
+  Rooted t(GetParam(), shipped("tiger.pomdp"), 3, 1000);
   auto& solver = t.solver;
   auto& rng = t.rng;
   solver->improve(Budget::episodes(5000), rng);
-  EXPECT_EQ(solver->best_action(), ToyTiger::listen);
+  EXPECT_EQ(solver->best_action(), kListen);
 }
 
 INSTANTIATE_TEST_SUITE_P(AbtAndPomcp, TreeSolvers, ::testing::Values(Kind::abt, Kind::pomcp),
@@ -147,16 +154,16 @@ TEST(AbtSolver, PrefersStrikeFirstOnTheSeedProblem) {
   // the slide, DESIGN.md). The gap is small, so each search gets a decent budget; requiring every
   // one of 5 independent seeds to pick the strike makes a planner indifferent between the two fail
   // with probability 1 - 1/32.
-  auto model = std::make_shared<ToyAudioObjects>();
+  auto model = seed_model();
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     Rooted t(Kind::abt, model, seed, 1000);
     t.solver->improve(Budget::episodes(20000), t.rng);
-    EXPECT_EQ(t.solver->best_action(), ToyAudioObjects::strike) << "seed " << seed;
+    EXPECT_EQ(t.solver->best_action(), kStrike) << "seed " << seed;
   }
 }
 
 TEST(SearchOptions, RejectsNonsense) {
-  auto model = std::make_shared<ToyAudioObjects>();
+  auto model = seed_model();
   SearchOptions options;
   options.max_depth = 0;
   EXPECT_THROW(AbtSolver(model, options), InputError);
@@ -168,7 +175,7 @@ TEST(SearchOptions, RejectsNonsense) {
   EXPECT_THROW(AbtSolver(model, options), InputError);
   Rng rng(1);
   AbtSolver solver(model, {});
-  ToyParticleBelief belief(model, 10, rng);
+  pomdp::ParticleBelief belief(model, 10, rng);
   solver.reset(belief, rng);
   EXPECT_THROW(solver.improve(Budget::episodes(0), rng), InputError);
 }
