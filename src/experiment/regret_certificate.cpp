@@ -56,6 +56,7 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
       d.loss_lower = std::max(0.0, v.lower - q.upper);
       r.regret += weight * d.loss;
       r.regret_lower += weight * d.loss_lower;
+      r.bound_gap += weight * (v.gap() + q.gap());
       visited.push_back({d, node});
       ++c.decisions;
       weight *= gamma;
@@ -81,9 +82,11 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
       if (!solver.refine(node, limits)) ++c.unconverged_beliefs;
       r.regret += weight * solver.value(node).upper;
       r.regret_lower += weight * solver.value(node).lower;
+      r.bound_gap += weight * solver.value(node).gap();
     }
     regrets.push_back(r.regret);
     c.regret_lower_mean += r.regret_lower / static_cast<double>(trials.size());
+    c.bound_gap_mean += r.bound_gap / static_cast<double>(trials.size());
     c.trials.push_back(r);
   }
   c.regret = mean_ci95(regrets);

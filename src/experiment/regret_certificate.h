@@ -44,7 +44,10 @@ struct TrialRegret {
   int trial = 0;
   double regret = 0.0;        // Σ γ^t loss_t (+ γ^T V*_upper(b_T) when cut short)
   double regret_lower = 0.0;  // the same from the lower ends
-  bool ended = false;         // a terminal action (or a collision) ended the trial
+  // The certificate's own looseness on this trial: Σ γ^t (gap of V*(b_t) + gap of Q*(b_t, a_t))
+  // (+ γ^T gap of V*(b_T) when cut short); regret − regret_lower is at most this.
+  double bound_gap = 0.0;
+  bool ended = false;  // a terminal action (or a collision) ended the trial
 };
 
 struct Certificate {
@@ -52,6 +55,7 @@ struct Certificate {
   std::vector<TrialRegret> trials;
   MeanInterval regret;             // over trials, of TrialRegret::regret
   double regret_lower_mean = 0.0;  // mean of TrialRegret::regret_lower
+  double bound_gap_mean = 0.0;     // mean of TrialRegret::bound_gap: what the bounds add to regret
   int decisions = 0;
   int unconverged_beliefs = 0;      // beliefs whose bounds missed decision_gap (still valid)
   std::vector<DecisionLoss> worst;  // largest losses first
