@@ -92,11 +92,14 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
   }
   const solvers::Bounds v = solver.value(root);
   const bool converged = v.gap() <= target(v);
+  const double root_seconds = elapsed();
+  const long root_expansions = solver.expansions();
   std::vector<solvers::Bounds> q(solver.num_actions());
   for (int a = 0; a < solver.num_actions(); ++a) {
     solvers::RefineLimits limits;
     limits.target_gap = target(v);
     limits.seconds = std::max(0.1, args.time_limit - elapsed());
+    limits.expansions = args.max_trials;  // per action, so that the figures repeat too
     solver.refine_action(root, a, limits);
     q[a] = solver.action_value(root, a);
   }
@@ -114,6 +117,8 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
     out["target_gap"] = target(v);
     out["converged"] = converged;
     out["expansions"] = solver.expansions();
+    out["root_expansions"] = root_expansions;  // before the per-action refinement
+    out["root_seconds"] = root_seconds;
     out["nodes"] = solver.num_nodes();
     out["plans"] = solver.num_plans();
     out["upper_points"] = solver.num_upper_points();
