@@ -23,8 +23,9 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
   limits.expansions = options.expansions_per_belief;
 
   Certificate c;
-  if (!solver.refine(solver.root(), limits)) ++c.unconverged_beliefs;
-  c.vstar = solver.value(solver.root());
+  solvers::RefineLimits root_limits = limits;
+  root_limits.expansions = std::max(options.root_expansions, options.expansions_per_belief);
+  if (!solver.refine(solver.root(), root_limits)) ++c.unconverged_beliefs;
   const double gamma = solver.discount();
   std::vector<double> regrets;
   // Every decision's loss with its node, to list the worst at the end.
@@ -90,6 +91,7 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
     c.trials.push_back(r);
   }
   c.regret = mean_ci95(regrets);
+  c.vstar = solver.value(solver.root());
 
   // The worst decisions, with the action that was best there.
   std::sort(visited.begin(), visited.end(),

@@ -88,6 +88,7 @@ TEST(RegretCertificate, LoosenessBoundsTheDistanceBetweenTheTwoRegrets) {
   CertifyOptions options;
   options.decision_gap = 1e-9;
   options.expansions_per_belief = 30;
+  options.root_expansions = 30;
   const Certificate c =
       certify_trials(solver, read_steps_csv(steps, model.spec()), options, steps.string());
   ASSERT_EQ(c.trials.size(), 2u);
