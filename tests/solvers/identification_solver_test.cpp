@@ -176,7 +176,7 @@ TEST(IdentificationSolver, PlansAndSawtoothTightenTheFrontierForTheSameExpansion
   IdentificationSolver full_solver(*model.tabular()), plain_solver(*model.tabular(), plain);
   RefineLimits limits;
   limits.target_gap = 1e-6;
-  limits.expansions = 20000;
+  limits.expansions = 5000;
   full_solver.refine(full_solver.root(), limits);
   plain_solver.refine(plain_solver.root(), limits);
   const Bounds full = full_solver.value(full_solver.root());
