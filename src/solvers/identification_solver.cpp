@@ -30,8 +30,12 @@ std::uint64_t splitmix64(std::uint64_t& x) {
 }
 
 // The default node cap: about 2 GB of beliefs and bounds.
-std::size_t default_max_nodes(int live_states) {
-  const std::size_t bytes_per_node = 8 * static_cast<std::size_t>(live_states) + 16 + 16 + 48;
+std::size_t default_max_nodes(int live_states, int action_observation_pairs) {
+  // Belief and plan (L doubles each), counts (one uint16 per pair), key, bounds, reach, expansion
+  // mark, index entry.
+  const std::size_t bytes_per_node = 16 * static_cast<std::size_t>(live_states) +
+                                     2 * static_cast<std::size_t>(action_observation_pairs) + 16 +
+                                     16 + 48;
   return std::size_t{2} * 1024 * 1024 * 1024 / bytes_per_node;
 }
 
@@ -84,7 +88,9 @@ IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m,
   for (int s = 0; s < num_states_; ++s)
     if (!m.terminal(s)) live_states_.push_back(s);
   num_live_ = static_cast<int>(live_states_.size());
-  max_nodes_ = options.max_nodes > 0 ? options.max_nodes : default_max_nodes(num_live_);
+  max_nodes_ = options.max_nodes > 0
+                   ? options.max_nodes
+                   : default_max_nodes(num_live_, num_actions_ * num_observations_);
 
   const int L = num_live_, O = num_observations_, A = num_actions_;
   kind_.assign(A, ActionKind::terminal);
