@@ -24,7 +24,7 @@ struct CertifyOptions {
   double decision_gap = 1e-3;  // absolute target gap of V* and Q* at every visited belief
   // Refinement limit per belief and per bound, in node expansions (a count, so results repeat);
   // bounds stay valid when it is hit, the regret then counts the remaining gap against the run.
-  long expansions_per_belief = 5000;
+  long expansions_per_belief = 20000;
   // Refinement at b0 before the trials, in node expansions: every logged belief is a descendant of
   // b0, so this work (memoised) tightens the bounds the decisions are judged by.
   long root_expansions = 1000000;
