@@ -11,10 +11,9 @@ sound_measures.py (the tool that measured the real recordings), and prints next 
     sample peaks across objects (lab: within 0.3 dB);
   - the mug-vs-cup between/within log-mel distance ratio per action (lab: 1.5 strike, 1.2 slide; target
     1.0-2.0): mean absolute difference of level-removed mean 64-band log-mel spectra;
-  - leave-one-out accuracy of the seed's template classifier on the four objects, computed here (psf-style
-    logfbank, 26 filters, 25 ms / 10 ms, nfft 512; slide: last 140 frames, strike: frames -300..-150
-    after dropping the first 2000 samples; nearest template by mean absolute difference). The seed also
-    noise-reduced slides first; that step is not reproduced.
+  - leave-one-out accuracy of the perception module's `seed-template` classifier (the seed's rule: mean
+    logfbank template per object, nearest by mean absolute difference; docs/perception.md) on the four
+    objects, as `echoplan train --classifier seed-template --folds 0 --no-reject` reports it.
 
 Usage: bench/sim_realism.py [--per-pair 10] [--seed 1] [--echoplan build/echoplan]
                             [--measures ../shared/tools/sound_measures.py] [--keep DIR]
@@ -24,6 +23,7 @@ import argparse
 import importlib.util
 import itertools
 import os
+import re
 import statistics
 import subprocess
 import sys
@@ -72,52 +72,19 @@ def met(median, real, measure):
     return abs(median - mean) <= 0.25 * abs(mean)
 
 
-# ------------------------------------------------------------------ the seed's template classifier
-def psf_logfbank(x, sr, nfilt=26, nfft=512, winlen=0.025, winstep=0.01, preemph=0.97):
-    """python_speech_features.logfbank: pre-emphasis, rectangular frames (cut to nfft by the FFT), power
-    spectrum / nfft, triangular mel filters over 0..sr/2, natural log."""
-    x = np.append(x[0], x[1:] - preemph * x[:-1])
-    flen, fstep = int(round(winlen * sr)), int(round(winstep * sr))
-    nframes = 1 + int(np.ceil((max(len(x), flen) - flen) / fstep))
-    padded = np.concatenate([x, np.zeros((nframes - 1) * fstep + flen - len(x))])
-    idx = np.arange(flen)[None, :] + fstep * np.arange(nframes)[:, None]
-    frames = padded[idx]
-    power = np.abs(np.fft.rfft(frames, nfft)) ** 2 / nfft
-    mel = lambda hz: 2595 * np.log10(1 + hz / 700.0)
-    hz = lambda m: 700 * (10 ** (m / 2595.0) - 1)
-    bins = np.floor((nfft + 1) * hz(np.linspace(mel(0), mel(sr / 2), nfilt + 2)) / sr).astype(int)
-    fb = np.zeros((nfilt, nfft // 2 + 1))
-    for j in range(nfilt):
-        for i in range(bins[j], bins[j + 1]):
-            fb[j, i] = (i - bins[j]) / (bins[j + 1] - bins[j])
-        for i in range(bins[j + 1], bins[j + 2]):
-            fb[j, i] = (bins[j + 2] - i) / (bins[j + 2] - bins[j + 1])
-    energy = power @ fb.T
-    energy[energy == 0] = np.finfo(float).eps
-    return np.log(energy)
-
-
-def template_feature(path, action):
-    raw, sr = sf.read(path, dtype="float64", always_2d=True)
-    x = raw.mean(axis=1)
-    if action == "slide":
-        feat = psf_logfbank(x, sr)[-140:]
-    else:
-        feat = psf_logfbank(x[2000:], sr)[-300:-150]
-    return feat.mean(axis=0)
-
-
-def loo_accuracy(features):
-    """features: list of (object, vector). Leave one out: templates from the rest, nearest by mean |diff|."""
-    correct = 0
-    for i, (truth, v) in enumerate(features):
-        templates = {}
-        for j, (name, w) in enumerate(features):
-            if j != i:
-                templates.setdefault(name, []).append(w)
-        guess = min(templates, key=lambda n: np.mean(np.abs(np.mean(templates[n], axis=0) - v)))
-        correct += guess == truth
-    return correct / len(features)
+def seed_template_accuracy(echoplan, data, workdir):
+    """Leave-one-out accuracy per action of the perception module's `seed-template` classifier (the
+    seed's decision rule; docs/perception.md), as `echoplan train --folds 0` reports it. One
+    implementation: the same code the planner's observation model is trained with."""
+    model = os.path.join(workdir, "seed_template_model.json")
+    out = subprocess.run([echoplan, "train", "--data", data, "--classifier", "seed-template", "--folds", "0",
+                          "--no-reject", "-o", model], check=True, capture_output=True, text=True).stdout
+    accuracy = {}
+    for line in out.splitlines():
+        m = re.match(r"(\w+) \(cross-validated, leave-one-out\): accuracy ([0-9.]+) \((\d+) of (\d+)\)", line)
+        if m:
+            accuracy[m.group(1)] = (float(m.group(2)), int(m.group(3)), int(m.group(4)))
+    return accuracy
 
 
 def level_removed_logmel(sm, path):
@@ -189,10 +156,14 @@ def main():
         print(f"  {action:<7} between {between:.2f}, within cup {within:.2f}: ratio {ratio:.2f} "
               f"(lab {LAB_RATIO[action]}; target 1.0-2.0: {'yes' if 1.0 <= ratio <= 2.0 else 'NO'})")
 
-    print("\nseed template classifier (computed in this script), leave-one-out over the four objects:")
+    print("\nseed-template classifier (echoplan train --classifier seed-template --folds 0 --no-reject), "
+          "leave-one-out over the four objects:")
+    model_dir = tempfile.mkdtemp(prefix="echoplan_realism_model_")
+    accuracy = seed_template_accuracy(args.echoplan, out, model_dir)
+    subprocess.run(["rm", "-rf", model_dir], check=False)
     for action in ("strike", "slide"):
-        feats = [(o, template_feature(f, action)) for o in OBJECTS for f in files[(o, action)]]
-        print(f"  {action:<7} {loo_accuracy(feats):.2f} (chance 0.25)")
+        acc, right, total = accuracy[action]
+        print(f"  {action:<7} {acc:.2f} ({right} of {total}; chance 0.25)")
     if not args.keep:
         subprocess.run(["rm", "-rf", out], check=False)
 

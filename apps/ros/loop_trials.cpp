@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <chrono>
 
-#include "commands/planner_options.h"
 #include "common/error.h"
 #include "common/rng.h"
 #include "experiment/loop_log.h"
+#include "experiment/planner.h"
 #include "pomdp/make_belief.h"
 #include "pomdp/problem.h"
 
@@ -94,11 +94,12 @@ std::vector<experiment::TrialRecord> run_loop_trials(
     LoopTimings* timings_out) {
   if (settings.out.empty()) throw InputError("", 0, "an output folder is required");
   const pomdp::Problem problem = pomdp::load_problem(settings.problem);
-  cli::PlannerFlags flags;
-  flags.solver = settings.solver;
-  flags.episodes = settings.episodes;
-  flags.step_ms = settings.step_ms;
-  const cli::Planner planner = cli::make_planner(flags, problem, settings.problem);
+  solvers::PlannerOverrides overrides;
+  overrides.solver = settings.solver;
+  overrides.episodes = settings.episodes;
+  overrides.step_ms = settings.step_ms;
+  const experiment::Planner planner =
+      experiment::make_planner(overrides, problem, settings.problem);
 
   auto timed_robot = std::make_unique<TimedRobot>(std::move(parts.robot));
   auto timed_recorder = std::make_unique<TimedRecorder>(std::move(parts.recorder));

@@ -20,7 +20,6 @@
 #include "sim/catalogue.h"
 #include "sim/dataset.h"
 #include "sim/sim_config.h"
-#include "solvers/make_solver.h"
 
 namespace echoplan::experiment {
 
@@ -160,14 +159,7 @@ Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) 
       c.results.belief_particles = 0;  // arms disagree: show probabilities
 
   // Every solver can be built (unknown names and bad settings fail now, not in a worker).
-  for (const pomdp::Problem& p : problems) {
-    solvers::SearchOptions search;
-    search.exploration = p.planner.exploration;
-    search.max_depth = p.planner.depth;
-    search.root_particles = p.belief.particles;
-    search.validate();
-    solvers::make_solver(config.planner.solver, p.model, search);
-  }
+  for (const pomdp::Problem& p : problems) make_arm_planner(config, p);
 
   // Objects: each group plays an object of the problems, and every object named has a catalogue
   // entry.

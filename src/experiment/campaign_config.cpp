@@ -1,8 +1,10 @@
 #include "experiment/campaign_config.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -11,6 +13,7 @@
 #include "common/error.h"
 #include "common/stable_hash.h"
 #include "common/yaml_reader.h"
+#include "solvers/make_solver.h"
 
 namespace echoplan::experiment {
 
@@ -171,8 +174,11 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
     f.expect_map(p, "planner");
     f.only_keys(p, {"solver", "episodes", "step_ms", "max_steps"}, "planner");
     if (auto n = f.optional(p, "solver", "planner")) c.planner.solver = f.name(n, "solver");
-    if (c.planner.solver != "abt" && c.planner.solver != "pomcp")
-      f.fail(p, "planner solver '" + c.planner.solver + "' is not one of: abt, pomcp");
+    // The online solvers: a campaign plans within each trial's time, not from a stored policy.
+    const std::vector<std::string> online = solvers::solver_names();
+    if (std::find(online.begin(), online.end(), c.planner.solver) == online.end())
+      f.fail(p, fmt::format("planner solver '{}' is not one of: {}", c.planner.solver,
+                            fmt::join(online, ", ")));
     if (auto n = f.optional(p, "episodes", "planner"))
       c.planner.episodes = f.non_negative_int(n, "episodes");
     if (auto n = f.optional(p, "step_ms", "planner"))

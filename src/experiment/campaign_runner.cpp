@@ -11,7 +11,6 @@
 #include "common/stable_hash.h"
 #include "pomdp/make_belief.h"
 #include "pomdp/problem.h"
-#include "solvers/make_solver.h"
 
 namespace echoplan::experiment {
 
@@ -39,7 +38,7 @@ class Worker {
     TrialSetup setup;
     setup.model = arm.problem.model.get();
     setup.environment = &environment;
-    setup.solver = arm.solver.get();
+    setup.solver = arm.planner.solver.get();
     const pomdp::Problem& problem = arm.problem;
     setup.make_belief = [&problem](Rng& rng) { return pomdp::make_belief(problem, rng); };
     setup.stop_requested = stop;
@@ -47,16 +46,14 @@ class Worker {
     TrialOptions options;
     options.seed = group_seed(config_, job.group);
     options.max_steps = config_.planner.max_steps;
-    options.budget = config_.planner.episodes > 0
-                         ? solvers::Budget::episodes(config_.planner.episodes)
-                         : solvers::Budget::milliseconds(config_.planner.step_ms);
+    options.budget = arm.planner.budget;
     return run_trial(setup, options, job.index, object_index(problem, group.plays));
   }
 
  private:
   struct Arm {
     pomdp::Problem problem;
-    std::unique_ptr<solvers::Solver> solver;
+    Planner planner;
   };
 
   Arm& arm_for(int index) {
@@ -64,12 +61,7 @@ class Worker {
     if (it != arms_.end()) return it->second;
     Arm arm;
     arm.problem = pomdp::load_problem(config_.arms[index].problem);
-    solvers::SearchOptions search;
-    search.exploration = arm.problem.planner.exploration;
-    search.max_depth = arm.problem.planner.depth;
-    search.root_particles = arm.problem.belief.particles;
-    search.validate();
-    arm.solver = solvers::make_solver(config_.planner.solver, arm.problem.model, search);
+    arm.planner = make_arm_planner(config_, arm.problem);
     return arms_.emplace(index, std::move(arm)).first->second;
   }
 
@@ -86,6 +78,14 @@ class Worker {
 };
 
 }  // namespace
+
+Planner make_arm_planner(const CampaignConfig& config, const pomdp::Problem& problem) {
+  solvers::PlannerOverrides overrides;
+  overrides.solver = config.planner.solver;
+  overrides.episodes = config.planner.episodes;
+  overrides.step_ms = config.planner.step_ms;
+  return make_planner(overrides, problem, problem.source_path);
+}
 
 std::vector<TrialJob> campaign_jobs(const CampaignConfig& config) {
   std::vector<TrialJob> jobs;

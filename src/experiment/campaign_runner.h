@@ -15,8 +15,10 @@
 #include <vector>
 
 #include "experiment/campaign_config.h"
+#include "experiment/planner.h"
 #include "experiment/trial_journal.h"
 #include "pomdp/environment.h"
+#include "pomdp/problem.h"
 
 namespace echoplan::experiment {
 
@@ -44,6 +46,10 @@ struct Shard {
 
 // Parses "I/N"; throws InputError for anything else or I outside 1..N.
 Shard parse_shard(const std::string& text);
+
+// The planner of an arm on `problem`: the campaign's solver and budget, the problem file's search
+// settings. Throws InputError for settings the solver rejects.
+Planner make_arm_planner(const CampaignConfig& config, const pomdp::Problem& problem);
 
 // Builds a worker's own world for trials of `group`; called once per worker and group.
 using WorldFactory = std::function<std::unique_ptr<pomdp::Environment>(const ObjectGroup& group)>;

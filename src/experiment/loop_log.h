@@ -5,11 +5,11 @@
 //   clips/TTT_SS_<action>.wav  the recording of each sensing action (trial TTT, step SS), as heard
 //   loop_steps.csv             trial, step, action, status, heard, probability, observation,
 //                              p_<object>... (the belief after the step; empty when the trial ended
-//                              with it), reward, clip, observe_ms
+//                              with it), reward, clip
 //   loop_steps.jsonl           one JSON object per step with everything above plus the robot's
-//   reason
-//                              and duration, every class probability, the classifier's distance,
-//                              the clip's features and the belief before the step
+//                              reason and duration, every class probability, the classifier's
+//                              distance and time to answer (observe_ms), the clip's features and
+//                              the belief before the step
 #pragma once
 
 #include <filesystem>

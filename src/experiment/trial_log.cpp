@@ -114,12 +114,15 @@ std::vector<LoggedTrial> read_steps_csv(const std::filesystem::path& path,
       throw InputError(file, line_no,
                        fmt::format("unknown observation '{}' for this problem", fields[c_obs]));
     if (c_reward >= 0) {
+      std::size_t used = 0;
       try {
-        step.reward = std::stod(fields[c_reward]);
+        step.reward = std::stod(fields[c_reward], &used);
       } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used == 0 || used != fields[c_reward].size())
         throw InputError(file, line_no,
                          fmt::format("reward '{}' is not a number", fields[c_reward]));
-      }
     }
     if (trials.empty() || trials.back().trial != trial) {
       for (const LoggedTrial& t : trials)
@@ -152,15 +155,16 @@ TrialLog::TrialLog(const std::filesystem::path& directory, const pomdp::ModelSpe
   steps_ = open_for_writing(directory_ / "steps.csv");
 
   trials_ << "trial,true_state,believed_state,steps";
-  for (const auto& action : spec_.action_names) trials_ << ",n_" << csv_field(action);
+  // The whole field is quoted when a name holds a separator ("n_open,left" -> "\"n_open,left\"").
+  for (const auto& action : spec_.action_names) trials_ << ',' << csv_field("n_" + action);
   trials_ << ",discounted_reward,collision";
   for (const auto& column : extra_columns_) trials_ << ',' << csv_field(column);
   trials_ << '\n';
   steps_ << "trial,step,action,observation";
-  const char* prefix = belief_particles_ > 0 ? ",particles_" : ",p_";
+  const std::string prefix = belief_particles_ > 0 ? "particles_" : "p_";
   if (!spec_.state.discrete_value_names.empty())
     for (const auto& value : spec_.state.discrete_value_names[0])
-      steps_ << prefix << csv_field(value);
+      steps_ << ',' << csv_field(prefix + value);
   steps_ << ",reward,episodes,heard_probability";
   for (const auto& column : extra_columns_) steps_ << ',' << csv_field(column);
   steps_ << '\n';

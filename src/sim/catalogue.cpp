@@ -94,6 +94,7 @@ namespace {
 
 Material read_material(const YamlReader& f, const std::string& name, const YAML::Node& node) {
   const YamlMapping r(f, "materials." + name, node);
+  r.only_keys({"density", "youngs_modulus", "poisson_ratio", "alpha", "beta"});
   Material m;
   m.name = name;
   m.density = r.number("density", NumberRange::above(0));
@@ -110,6 +111,7 @@ std::vector<ListedMode> read_modes(const YamlReader& f, const std::string& entry
   std::vector<ListedMode> modes;
   for (std::size_t i = 0; i < node.size(); ++i) {
     const YamlMapping r(f, entry + ".modes[" + std::to_string(i) + "]", node[i]);
+    r.only_keys({"frequency", "gain", "decay"});
     ListedMode mode;
     mode.frequency = r.number("frequency", NumberRange::above(0));
     mode.gain = r.number_or("gain", 1.0, NumberRange::at_least(0));
@@ -127,6 +129,9 @@ const Material& find_material(const Catalogue& c, const YamlMapping& r) {
 }
 
 ObjectSpec read_original(const Catalogue& c, const std::string& name, const YamlMapping& r) {
+  r.only_keys({"shape", "radius", "height", "wall_thickness", "base_thickness", "mass",
+               "base_radius", "material", "closed", "contact_radius", "friction", "ring_modes",
+               "modes"});
   ObjectSpec o;
   o.name = name;
   o.shape = r.name("shape");
@@ -147,7 +152,10 @@ ObjectSpec read_original(const Catalogue& c, const std::string& name, const Yaml
   return o;
 }
 
+// A modified object is its original plus an added mass, nothing else: a field of the original here
+// (a new radius, say) would silently be ignored, so it is rejected like a misspelt one.
 ObjectSpec read_modified(const Catalogue& c, const std::string& name, const YamlMapping& r) {
+  r.only_keys({"base", "added_mass"});
   const std::string base = r.name("base");
   auto it = c.objects.find(base);
   if (it == c.objects.end() || !it->second.base_object.empty())
@@ -157,6 +165,7 @@ ObjectSpec read_modified(const Catalogue& c, const std::string& name, const Yaml
   o.name = name;
   o.base_object = base;
   const YamlMapping added(r.reader(), r.entry() + ".added_mass", r.required("added_mass"));
+  added.only_keys({"mass", "position", "loss_factor"});
   AddedMass a;
   a.mass = added.number("mass", NumberRange::above(0));
   const std::vector<double> position = added.numbers("position", 3);  // [x, y, z] in metres
@@ -174,6 +183,7 @@ Catalogue read_catalogue(const YamlReader& f, const YAML::Node& root) {
   Catalogue c;
   c.source = f.file();
   const YamlMapping top(f, "the catalogue", root);
+  top.only_keys({"materials", "table", "objects"});
 
   const YAML::Node materials = top.required("materials");
   if (!materials.IsMap()) top.fail(materials, "'materials' must map names to materials");
@@ -183,11 +193,14 @@ Catalogue read_catalogue(const YamlReader& f, const YAML::Node& root) {
   }
 
   const YamlMapping table(f, "table", top.required("table"));
+  table.only_keys(
+      {"material", "friction", "modes", "dense_modes", "thickness", "contact_loss_factor"});
   c.table.material = find_material(c, table);
   c.table.friction = table.number_or("friction", 0.45, NumberRange::above(0));
   if (table.has("modes")) c.table.modes = read_modes(f, "table", table.node()["modes"]);
   if (table.has("dense_modes")) {
     const YamlMapping dense(f, "table.dense_modes", table.node()["dense_modes"]);
+    dense.only_keys({"from", "to", "count"});
     c.table.dense.from_hz = dense.number("from", NumberRange::above(0));
     c.table.dense.to_hz = dense.number("to", NumberRange::above(c.table.dense.from_hz));
     c.table.dense.count =

@@ -47,7 +47,7 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
   if (!manifest) throw InputError(manifest_path.string(), 0, "cannot write the manifest");
   manifest << "file,object,action,seed,collision,duration_s,impacts";
   for (const auto& [name, value] : ActionVariation{}.named()) manifest << ',' << name;
-  for (const auto& [name, value] : TrialSetup{}.named()) manifest << ',' << name;
+  for (const auto& [name, value] : ObjectPlacement{}.named()) manifest << ',' << name;
   manifest << '\n' << std::flush;
 
   // The clips in manifest order. Workers take the next clip in turn; each keeps one robot and
@@ -117,7 +117,7 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
                                       r.outcome.trace.impacts.size());
         for (const auto& [name, value] : r.outcome.variation.named())
           row += fmt::format(",{:.6g}", value);
-        for (const auto& [name, value] : r.outcome.setup.named())
+        for (const auto& [name, value] : r.outcome.placement.named())
           row += fmt::format(",{:.6g}", value);
         std::lock_guard lock(mutex);
         done[k] = Done{relative, std::move(row), r.outcome.collision()};

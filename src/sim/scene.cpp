@@ -163,6 +163,7 @@ Scene::Scene(const ObjectSpec& object, const TableSpec& table, const PhysicsConf
   if (!same_data_layout(push_model_.get(), clear_model_.get()))
     throw std::runtime_error("the two scene variants differ in size; one mjData cannot serve both");
   data_.reset(mj_makeData(push_model_.get()));
+  scratch_.reset(mj_makeData(push_model_.get()));
 
   const mjModel* m = push_model_.get();
   end_effector_site = mj_name2id(m, mjOBJ_SITE, "end_effector");

@@ -60,6 +60,9 @@ class Scene {
     return pad == PadContact::pushes_object ? push_model_.get() : clear_model_.get();
   }
   mjData* data() const { return data_.get(); }
+  // A second mjData for kinematic look-ahead (the inverse kinematics' trial poses), never the
+  // trial's state: kept here so an action does not allocate one (mj_makeData zeroes megabytes).
+  mjData* scratch() const { return scratch_.get(); }
 
   // Ids into the model.
   int end_effector_site = -1;
@@ -86,7 +89,7 @@ class Scene {
     void operator()(mjData* d) const { mj_deleteData(d); }
   };
   std::unique_ptr<mjModel, ModelDeleter> push_model_, clear_model_;
-  std::unique_ptr<mjData, DataDeleter> data_;
+  std::unique_ptr<mjData, DataDeleter> data_, scratch_;
   std::array<double, 3> initial_end_effector_{};
 };
 

@@ -17,7 +17,7 @@ namespace echoplan::sim {
 namespace {
 
 // One section of the config: a table of field name -> setter, so unknown fields are reported
-// instead of silently ignored (a misspelt spread would otherwise keep its default).
+// instead of silently ignored (a misspelt field would otherwise keep its default).
 using FieldSetters =
     std::map<std::string, std::function<void(const YAML::Node&, const std::string&)>>;
 
@@ -40,15 +40,14 @@ std::function<void(const YAML::Node&, const std::string&)> number_into(const Yam
   };
 }
 
-std::function<void(const YAML::Node&, const std::string&)> spread_into(const YamlReader& f,
-                                                                       Spread& target, double low,
-                                                                       double high) {
+std::function<void(const YAML::Node&, const std::string&)> truncated_gaussian_into(
+    const YamlReader& f, TruncatedGaussian& target, double low, double high) {
   return [&f, &target, low, high](const YAML::Node& v, const std::string& field) {
-    if (!v.IsMap()) f.fail(v, field + " must be {mean: ..., spread: ...}");
-    f.only_keys(v, {"mean", "spread"}, field);
+    if (!v.IsMap()) f.fail(v, field + " must be {mean: ..., stddev: ...}");
+    f.only_keys(v, {"mean", "stddev"}, field);
     target.mean =
         f.number(f.require(v, "mean", field), field + ".mean", NumberRange::closed(low, high));
-    target.spread = f.number(f.require(v, "spread", field), field + ".spread",
+    target.stddev = f.number(f.require(v, "stddev", field), field + ".stddev",
                              NumberRange::closed(0.0, high - low));
   };
 }
@@ -61,17 +60,18 @@ SimConfig read_sim_config(const YamlReader& f, const YAML::Node& root) {
                                           "physics"};
   f.only_keys(root, sections, "the sim config");
   auto& v = c.variability;
-  read_section(f, root, "variability",
-               {{"impact_speed", spread_into(f, v.impact_speed, 0.005, 1.0)},
-                {"impact_tilt_deg", spread_into(f, v.impact_tilt_deg, 0.0, 30.0)},
-                {"grasp_height", spread_into(f, v.grasp_height, -0.05, 0.20)},
-                {"grasp_offset", spread_into(f, v.grasp_offset, -0.02, 0.02)},
-                {"push_speed", spread_into(f, v.push_speed, 0.005, 0.5)},
-                {"push_offset", spread_into(f, v.push_offset, -0.02, 0.02)},
-                {"placement_x", spread_into(f, v.placement_x, -0.05, 0.05)},
-                {"placement_y", spread_into(f, v.placement_y, -0.05, 0.05)},
-                {"microphone_distance", spread_into(f, v.microphone_distance, -0.3, 0.3)},
-                {"background_db", spread_into(f, v.background_db, -20.0, 20.0)}});
+  read_section(
+      f, root, "variability",
+      {{"impact_speed", truncated_gaussian_into(f, v.impact_speed, 0.005, 1.0)},
+       {"impact_tilt_deg", truncated_gaussian_into(f, v.impact_tilt_deg, 0.0, 30.0)},
+       {"grasp_height", truncated_gaussian_into(f, v.grasp_height, -0.05, 0.20)},
+       {"grasp_offset", truncated_gaussian_into(f, v.grasp_offset, -0.02, 0.02)},
+       {"push_speed", truncated_gaussian_into(f, v.push_speed, 0.005, 0.5)},
+       {"push_offset", truncated_gaussian_into(f, v.push_offset, -0.02, 0.02)},
+       {"placement_x", truncated_gaussian_into(f, v.placement_x, -0.05, 0.05)},
+       {"placement_y", truncated_gaussian_into(f, v.placement_y, -0.05, 0.05)},
+       {"microphone_distance", truncated_gaussian_into(f, v.microphone_distance, -0.3, 0.3)},
+       {"background_db", truncated_gaussian_into(f, v.background_db, -20.0, 20.0)}});
   auto& mic = c.microphone;
   read_section(f, root, "microphone",
                {{"position",
@@ -125,25 +125,21 @@ double standard_normal(Rng& rng) {
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
 }
 
-namespace {
-
-double draw(const Spread& s, Rng& rng) {
-  return s.mean + s.spread * std::clamp(standard_normal(rng), -3.0, 3.0);
+double TruncatedGaussian::draw(Rng& rng) const {
+  return mean + stddev * std::clamp(standard_normal(rng), -3.0, 3.0);
 }
-
-}  // namespace
 
 ActionVariation sample_action(const VariabilityConfig& v, Rng& rng) {
   ActionVariation p;
-  p.impact_speed = std::max(draw(v.impact_speed, rng), 0.001);
+  p.impact_speed = std::max(v.impact_speed.draw(rng), 0.001);
   // A tilt is an angle from vertical, so its sign is folded into the azimuth.
-  p.impact_tilt_deg = std::abs(draw(v.impact_tilt_deg, rng));
+  p.impact_tilt_deg = std::abs(v.impact_tilt_deg.draw(rng));
   p.tilt_azimuth_deg = 360.0 * uniform01(rng);
-  p.grasp_height = draw(v.grasp_height, rng);
-  p.grasp_offset_x = draw(v.grasp_offset, rng);
-  p.grasp_offset_y = draw(v.grasp_offset, rng);
-  p.push_speed = std::max(draw(v.push_speed, rng), 0.001);
-  p.push_offset = draw(v.push_offset, rng);
+  p.grasp_height = v.grasp_height.draw(rng);
+  p.grasp_offset_x = v.grasp_offset.draw(rng);
+  p.grasp_offset_y = v.grasp_offset.draw(rng);
+  p.push_speed = std::max(v.push_speed.draw(rng), 0.001);
+  p.push_offset = v.push_offset.draw(rng);
   return p;
 }
 
@@ -158,15 +154,15 @@ std::vector<std::pair<std::string, double>> ActionVariation::named() const {
           {"push_offset", push_offset}};
 }
 
-TrialSetup sample_setup(const VariabilityConfig& v, Rng& rng) {
-  TrialSetup s;
-  s.placement_x = draw(v.placement_x, rng);
-  s.placement_y = draw(v.placement_y, rng);
+ObjectPlacement sample_placement(const VariabilityConfig& v, Rng& rng) {
+  ObjectPlacement s;
+  s.placement_x = v.placement_x.draw(rng);
+  s.placement_y = v.placement_y.draw(rng);
   s.orientation_deg = 360.0 * uniform01(rng);
   return s;
 }
 
-std::vector<std::pair<std::string, double>> TrialSetup::named() const {
+std::vector<std::pair<std::string, double>> ObjectPlacement::named() const {
   return {{"placement_x", placement_x},
           {"placement_y", placement_y},
           {"orientation_deg", orientation_deg}};

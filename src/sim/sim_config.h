@@ -12,33 +12,39 @@
 
 namespace echoplan::sim {
 
-// A quantity that varies from trial to trial: Gaussian around `mean` with standard deviation
-// `spread`, cut at mean +- 3 spreads so that no trial is absurd.
-struct Spread {
+// A quantity that varies from action to action (or trial, or recording): a Gaussian around `mean`
+// with standard deviation `stddev`, truncated at mean +- 3 standard deviations so that no draw is
+// absurd (a negative speed, a grasp below the table).
+struct TruncatedGaussian {
   double mean = 0;
-  double spread = 0;  // >= 0
+  double stddev = 0;  // >= 0
+
+  // One draw: always consumes the same number of values from `rng` (standard_normal's two).
+  double draw(Rng& rng) const;
 };
 
 // The ranges and their physical reasons are in docs/simulator.md ("Variability").
 struct VariabilityConfig {
   // Per action (ActionVariation):
-  Spread impact_speed{
+  TruncatedGaussian impact_speed{
       0.10, 0.01};  // m/s, the strike's descent speed (servo tracking of a 0.1 m/s command)
-  Spread impact_tilt_deg{
+  TruncatedGaussian impact_tilt_deg{
       0.0, 2.0};  // degrees between the object's axis and vertical at impact: rim or base first
-  Spread grasp_height{0.085, 0.003};  // m, end-effector height above the table when at the object
-  Spread grasp_offset{
+  TruncatedGaussian grasp_height{
+      0.085, 0.003};  // m, end-effector height above the table when at the object
+  TruncatedGaussian grasp_offset{
       0.0, 0.003};  // m, hand off the object's axis when it closes (each horizontal axis)
-  Spread push_speed{0.05, 0.005};  // m/s, the slide's speed
-  Spread push_offset{0.0, 0.005};  // m, the pad off the object's centre line across the push
-  // Per trial (TrialSetup): where the operator put the object.
-  Spread placement_x{0.0, 0.003};  // m, object offset from its nominal place
-  Spread placement_y{0.0, 0.003};  // m
+  TruncatedGaussian push_speed{0.05, 0.005};  // m/s, the slide's speed
+  TruncatedGaussian push_offset{0.0,
+                                0.005};  // m, the pad off the object's centre line across the push
+  // Per trial (ObjectPlacement): where the operator put the object.
+  TruncatedGaussian placement_x{0.0, 0.003};  // m, object offset from its nominal place
+  TruncatedGaussian placement_y{0.0, 0.003};  // m
   // Per recording (drawn by the recorder):
-  Spread microphone_distance{
+  TruncatedGaussian microphone_distance{
       0.0, 0.05};  // m added to the microphone-object distance (mic stand not fixed)
-  Spread background_db{0.0,
-                       3.0};  // dB added to recording.noise_dbfs (room noise changes over a day)
+  TruncatedGaussian background_db{
+      0.0, 3.0};  // dB added to recording.noise_dbfs (room noise changes over a day)
 };
 
 struct MicrophoneConfig {
@@ -66,7 +72,7 @@ struct RecordingConfig {
   double output_gain = 1400;  // full scale per unit of synthesized pressure before the limiter
                               // (every strike reaches it)
   double friction_gain =
-      3.1e-7;  // scale of sliding excitation relative to impacts (slides 17 dB below strikes)
+      6.4e-7;  // scale of sliding excitation relative to impacts (slides 17 dB below strikes)
   double motor_noise_gain =
       1.8e-5;  // motor noise per rad/s of summed joint speed (about 20 dB below a slide)
   double limiter_ceiling_dbfs = -3;  // the recorder's limiter: no sample above this
@@ -91,7 +97,7 @@ struct SimConfig {
 SimConfig load_sim_config(const std::string& path);
 SimConfig parse_sim_config(const std::string& yaml_text, const std::string& source);
 
-// How one action varies (drawn per action): what the manifest records with the TrialSetup.
+// How one action varies (drawn per action): what the manifest records with the ObjectPlacement.
 struct ActionVariation {
   double impact_speed = 0;     // m/s
   double impact_tilt_deg = 0;  // degrees
@@ -111,7 +117,7 @@ struct ActionVariation {
 ActionVariation sample_action(const VariabilityConfig& variability, Rng& rng);
 
 // Where the object stands when a trial begins (drawn per trial).
-struct TrialSetup {
+struct ObjectPlacement {
   double placement_x = 0;      // m, from the nominal place (0.1 m ahead of the end effector)
   double placement_y = 0;      // m
   double orientation_deg = 0;  // rotation of the object about its own axis, uniform in [0, 360)
@@ -119,8 +125,8 @@ struct TrialSetup {
   std::vector<std::pair<std::string, double>> named() const;
 };
 
-// Draws one trial's setup. Always consumes the same number of draws from `rng`.
-TrialSetup sample_setup(const VariabilityConfig& variability, Rng& rng);
+// Draws one trial's placement. Always consumes the same number of draws from `rng`.
+ObjectPlacement sample_placement(const VariabilityConfig& variability, Rng& rng);
 
 // A standard normal variate from `rng` (Box-Muller on uniform01, identical on every platform).
 double standard_normal(Rng& rng);

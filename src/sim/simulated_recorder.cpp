@@ -259,16 +259,53 @@ void add_delayed(const std::vector<float>& in, std::size_t delay, float gain,
   for (std::size_t i = 0; i < n; ++i) o[i] += gain * x[i];
 }
 
-// The pressure the contact force radiates directly (the object and the table surface accelerated as
-// a whole: dipole radiation, proportional to dF/dt): for a half-sine force of impulse `momentum`
-// and duration `tau`, a single cosine cycle over the contact. Its spectrum peaks near 0.68 / tau:
-// why a light cup (short contact) sounds higher than a heavy mug on the same table.
-void add_contact_pulse(double momentum, double tau, std::size_t at, int rate,
-                       std::vector<float>& out) {
-  const auto length = static_cast<std::size_t>(std::ceil(tau * rate));
+// `room` = `dry` plus every tap's delayed copy, computed a block of output at a time so the block
+// stays in cache while all taps are added (taps in the same order for every sample, so the sums are
+// exactly those of adding one whole delayed copy after another).
+std::vector<float> add_room(const std::vector<float>& dry,
+                            const std::vector<std::pair<std::size_t, float>>& taps) {
+  constexpr std::size_t kBlock = 4096;
+  std::vector<float> room = dry;
+  const std::size_t frames = dry.size();
+  for (std::size_t start = 0; start < frames; start += kBlock) {
+    const std::size_t end = std::min(frames, start + kBlock);
+    float* o = room.data();
+    for (const auto& [delay, gain] : taps) {
+      if (delay >= end) continue;
+      const std::size_t from = std::max(start, delay);
+      const float* x = dry.data() + (from - delay);
+      for (std::size_t i = from; i < end; ++i) o[i] += gain * x[i - from];
+    }
+  }
+  return room;
+}
+
+// The pressure the contact radiates directly (the object and the table surface accelerated as a
+// whole: dipole radiation, proportional to dF/dt). The impact is the first half-cycle of the object
+// bouncing on the contact's Hertzian spring (its period 2 tau, tau the Hertz contact time); the
+// hand holds the object pressed onto the table after the strike, so the object does not fly off
+// and the oscillation rings on, losing energy into the table top (the table material's own decay
+// rate at that frequency) and into the fingers that hold it (the table's contact_loss_factor, the
+// same loss every object mode has while held on the table): `decay_per_s`. Its dF/dt is a cosine at
+// 1 / (2 tau) under that decay: why a strike is a short tonal thud near 500 Hz for a heavy mug and
+// near 800 Hz for a light cup (the lab's 560 and 904 Hz), and why the added mass of a weighted
+// object lowers it (tau ~ m^0.4).
+void add_contact_ring(double momentum, double tau, double decay_per_s, std::size_t at, int rate,
+                      std::vector<float>& out) {
   const double scale = kPulseGain * momentum * std::numbers::pi / (tau * kTwoPi * kReferenceHz);
-  for (std::size_t n = 0; n < length && at + n < out.size(); ++n)
-    out[at + n] += static_cast<float>(scale * std::cos(std::numbers::pi * (n + 0.5) / rate / tau));
+  const double omega = std::numbers::pi / tau;
+  const auto length = static_cast<std::size_t>(std::ceil(kTailDecay / decay_per_s * rate));
+  // cos(omega t) e^(-decay t) as a two-pole recursion (exact for the sampled sinusoid).
+  const double r = std::exp(-decay_per_s / rate), w = omega / rate;
+  double c1 = std::cos(0.5 * w) * std::exp(-0.5 * decay_per_s / rate), c2 = 0;  // n = 0 value
+  const double a1 = 2.0 * r * std::cos(w), a2 = -r * r;
+  double y_prev = std::cos(-0.5 * w) * std::exp(0.5 * decay_per_s / rate);  // n = -1
+  for (std::size_t n = 0; n < length && at + n < out.size(); ++n) {
+    out[at + n] += static_cast<float>(scale * c1);
+    c2 = a1 * c1 + a2 * y_prev;
+    y_prev = c1;
+    c1 = c2;
+  }
 }
 
 // The arm's motors and gears: broadband noise (a band around kMotorHz) whose amplitude follows the
@@ -316,27 +353,42 @@ void apply_limiter(const RecordingConfig& rec, int rate,
   std::vector<float> peak(frames);
   for (std::size_t i = 0; i < frames; ++i)
     peak[i] = std::max(std::abs(channels[0][i]), std::abs(channels[1][i]));
-  // Sliding maximum of the peaks over [i, i + ahead] (monotonic deque of indices).
-  std::vector<std::size_t> window(frames + 1);
-  std::size_t head = 0, tail = 0, next = 0;
+  // The gain a sample needs is ceiling / (the largest peak over [i, i + ahead]) when that peak is
+  // above the ceiling, else 1. Few samples are above it (a strike's first milliseconds), so only
+  // the windows that hold one are scanned, and a stretch where nothing is needed and the gain is
+  // exactly 1 is skipped whole.
+  std::vector<std::size_t> over;
+  for (std::size_t i = 0; i < frames; ++i)
+    if (peak[i] > ceiling) over.push_back(i);
+  std::size_t next_over = 0;  // the first entry of `over` at or after i
   double gain = 1.0;
   std::size_t held_until = 0;
   for (std::size_t i = 0; i < frames; ++i) {
-    for (; next < frames && next <= i + ahead; ++next) {
-      while (tail > head && peak[window[tail - 1]] <= peak[next]) --tail;
-      window[tail++] = next;
+    while (next_over < over.size() && over[next_over] < i) ++next_over;
+    const bool limit = next_over < over.size() && over[next_over] <= i + ahead;
+    if (!limit && gain == 1.0) {
+      // Nothing to do until the window reaches the next sample above the ceiling.
+      if (next_over == over.size()) break;
+      i = over[next_over] - ahead - 1;  // the loop's ++i lands on the window's first such i
+      continue;
     }
-    while (window[head] < i) ++head;
-    const double needed =
-        std::min(1.0, ceiling / std::max(1e-12, static_cast<double>(peak[window[head]])));
+    double needed = 1.0;
+    if (limit) {
+      float window_peak = 0;
+      for (std::size_t k = i; k < frames && k <= i + ahead; ++k)
+        window_peak = std::max(window_peak, peak[k]);
+      needed = ceiling / window_peak;
+    }
     if (needed < gain) {
       gain = needed;
       held_until = i + hold;
     } else if (i >= held_until) {
       gain += recover * (needed - gain);
     }
-    channels[0][i] = static_cast<float>(channels[0][i] * gain);
-    channels[1][i] = static_cast<float>(channels[1][i] * gain);
+    if (gain != 1.0) {  // x * 1 is x: the untouched stretches are left as they are
+      channels[0][i] = static_cast<float>(channels[0][i] * gain);
+      channels[1][i] = static_cast<float>(channels[1][i] * gain);
+    }
   }
 }
 
@@ -354,6 +406,8 @@ SimulatedRecorder::SimulatedRecorder(const ObjectSpec& object, const TableSpec& 
       object_modes_(sim::object_modes(object, 0.45 * config.recording.sample_rate,
                                       table.contact_loss_factor)),
       table_modes_(sim::table_modes(table)),
+      table_material_(table.material),
+      contact_loss_factor_(table.contact_loss_factor),
       contact_modulus_(effective_modulus(object.material, table.material)),
       table_coincidence_hz_(coincidence_frequency(table.material, table.thickness)),
       object_mode_scale_(kReferenceModalMass / object.total_mass()) {
@@ -382,11 +436,8 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
 
   // What varies from recording to recording: where the microphone stand was, how loud the room was.
   const auto& var = config_.variability;
-  const double mic_offset =
-      var.microphone_distance.mean +
-      var.microphone_distance.spread * std::clamp(standard_normal(rng), -3.0, 3.0);
-  const double noise_db = rec.noise_dbfs + var.background_db.mean +
-                          var.background_db.spread * std::clamp(standard_normal(rng), -3.0, 3.0);
+  const double mic_offset = var.microphone_distance.draw(rng);
+  const double noise_db = rec.noise_dbfs + var.background_db.draw(rng);
 
   // Per-mode drives: each impact is an impulse of momentum m_eff v weighted by the pressure its
   // force pulse radiates at the mode's frequency (dipole radiation: omega times the pulse spectrum)
@@ -413,16 +464,23 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
                                                     radiated(m.frequency_hz) *
                                                     table_radiation(m.frequency_hz));
     }
-    add_contact_pulse(momentum, tau, at, rate, dry);
+    const double ring_hz = 0.5 / tau;
+    add_contact_ring(
+        momentum, tau,
+        table_material_.decay_rate(ring_hz) + std::numbers::pi * ring_hz * contact_loss_factor_, at,
+        rate, dry);
   }
   NoiseSource noise(rng);
   const std::vector<float> friction =
       friction_excitation(trace, rate, frames, rec.friction_gain, noise);
   // Friction drives every mode continuously, radiated like the impacts (dipole: rising with
-  // frequency).
+  // frequency). Roughness noise is a velocity source (the surfaces are made to follow each other's
+  // asperities, see friction_excitation), so unlike an impact's impulse it sets the modes' velocity
+  // whatever their modal mass: no 1 / mass scale here (a light cup does not sing louder when pushed
+  // than a heavy mug; the lab's cup slides were broadband, not tonal).
   for (std::size_t k = 0; k < object_modes_.size(); ++k)
     object_drives[k].continuous_gain =
-        object_mode_scale_ * object_modes_[k].gain * object_modes_[k].frequency_hz / kReferenceHz;
+        object_modes_[k].gain * object_modes_[k].frequency_hz / kReferenceHz;
   for (std::size_t k = 0; k < table_modes_.size(); ++k)
     table_drives[k].continuous_gain = kTableCoupling * table_modes_[k].gain *
                                       table_modes_[k].frequency_hz / kReferenceHz *
@@ -448,9 +506,7 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
 
   // The room: the dry sound plus its reverberant tail, shared by both capsules (they are
   // centimetres apart in the same room).
-  std::vector<float> room = dry;
-  for (const auto& [delay, gain] : reverb_taps(config_.room, rate, rng))
-    add_delayed(dry, delay, gain, room);
+  const std::vector<float> room = add_room(dry, reverb_taps(config_.room, rate, rng));
 
   // Two capsules either side of the microphone position along y; each hears the room's sound with
   // its own delay and 1/r gain; the recorder's limiter acts on both alike; then its own noise.

@@ -2,15 +2,16 @@
 // trace, by modal synthesis (van den Doel, Kry & Pai 2001).
 //
 // Signal chain, per recording:
-//   impacts  -> Hertz force pulse (duration from effective mass, contact radius, E*, speed), whose
-//               spectrum weights each mode, and the rim contact pattern weights shell ring modes;
-//   sliding  -> a fractal (1/f^2) surface profile read at the sliding speed, scaled by normal
-//   force; both     -> the object's modes and the table's modes (damped resonators);
-//   -> a short room response (the direct sound plus a sparse, exponentially decaying noise tail);
-//   -> two microphone capsules, each with its own delay and 1/r gain from its distance to the
-//   object;
-//   -> background noise; -> a fixed output gain (loudness carries information, so no
-//   normalisation).
+// - impacts: a Hertz contact (duration from effective mass, contact radius, E*, speed) whose
+// spectrum
+//   weights each mode (the rim contact pattern weights the shell ring modes), radiating directly as
+//   the object ringing on its contact spring (the contact ring);
+// - sliding: a fractal (1/f^2) surface profile read at the sliding speed (roughness noise);
+// - both drive the object's modes and the table's modes (damped resonators); the arm's motors add
+//   band noise following the joints' speed;
+// - a short room response (the direct sound plus a sparse, exponentially decaying noise tail);
+// - two microphone capsules, each with its own delay and 1/r gain from its distance to the object;
+// - the recorder's limiter, then background noise. A fixed output gain, no normalisation.
 #pragma once
 
 #include <vector>
@@ -44,7 +45,9 @@ class SimulatedRecorder {
   SimConfig config_;
   std::vector<Mode> object_modes_;
   std::vector<Mode> table_modes_;
-  double contact_modulus_ = 0;  // Pa, E* of object material on table material
+  Material table_material_;         // the contact's oscillation loses energy into the table top
+  double contact_loss_factor_ = 0;  // and into the fingers holding the object (TableSpec)
+  double contact_modulus_ = 0;      // Pa, E* of object material on table material
   double table_coincidence_hz_ = 0;
   double object_mode_scale_ =
       1;  // the object's modes' response per unit impulse, relative (1 / mass)
@@ -52,7 +55,7 @@ class SimulatedRecorder {
   double table_radiation(double frequency_hz) const;
 };
 
-// Begins a trial on `robot`, runs `action` as its first action and records it: the setup, the
+// Begins a trial on `robot`, runs `action` as its first action and records it: the placement, the
 // outcome and its clip, all from `rng` (so one seed gives one file).
 struct Recording {
   ActionOutcome outcome;

@@ -53,7 +53,8 @@ struct ActionOutcome {
   std::string reason;           // for collision and failed: what happened, in words
   double collision_time_s = 0;  // s from the start of the action (negative: during the approach)
   double duration_s = 0;  // s simulated, from the start of the action to its end (or the collision)
-  TrialSetup setup;       // the trial's setup (the same for every action of a trial)
+  ObjectPlacement
+      placement;  // where the trial put the object (the same for every action of a trial)
   ActionVariation variation;             // what was drawn for this action
   std::array<double, 3> object_start{};  // m, world: the object's base centre when the action began
   std::array<double, 3>
@@ -66,30 +67,31 @@ struct ActionOutcome {
 class SimulatedRobot {
  public:
   // Builds the scene for `object` (compiling the MuJoCo model once). The catalogue and config are
-  // copied. No trial has begun: the first execute() begins one (drawing its setup from its rng).
+  // copied. No trial has begun: the first execute() begins one (drawing its placement from its
+  // rng).
   SimulatedRobot(const Catalogue& catalogue, const std::string& object, const SimConfig& config);
   ~SimulatedRobot();
   SimulatedRobot(const SimulatedRobot&) = delete;
   SimulatedRobot& operator=(const SimulatedRobot&) = delete;
 
   // Begins a trial: arm in the initial configuration, grasp open, object at rest at its nominal
-  // place moved by `setup`. Drawing it from `rng` consumes sample_setup's draws.
-  void reset_trial(const TrialSetup& setup);
+  // place moved by `placement`. Drawing it from `rng` consumes sample_placement's draws.
+  void reset_trial(const ObjectPlacement& placement);
   void reset_trial(Rng& rng);
 
   // Runs `action` ("slide" or "strike") from the current state, drawing the action's variation from
-  // `rng` (and, if no trial has begun, the trial's setup first). Throws InputError for an unknown
-  // action name.
+  // `rng` (and, if no trial has begun, the trial's placement first). Throws InputError for an
+  // unknown action name.
   ActionOutcome execute(const std::string& action, Rng& rng);
 
   // As execute(), with the action's variation given instead of drawn (a trial must have begun, or
-  // one with the nominal setup is begun).
+  // one with the nominal placement is begun).
   ActionOutcome execute(const std::string& action, const ActionVariation& variation);
 
   // The object's base centre (m, world) and whether a trial is under way.
   std::array<double, 3> object_position() const;
   bool trial_begun() const { return trial_begun_; }
-  const TrialSetup& setup() const { return setup_; }
+  const ObjectPlacement& placement() const { return placement_; }
 
   const ObjectSpec& object() const { return object_; }
   const TableSpec& table() const { return table_; }
@@ -103,7 +105,7 @@ class SimulatedRobot {
   SimConfig config_;
   std::unique_ptr<Scene> scene_;
   bool trial_begun_ = false;
-  TrialSetup setup_;
+  ObjectPlacement placement_;
   std::array<double, 7>
       joint_targets_{};  // rad, the arm's servo targets where the last action left them
 };

@@ -1,5 +1,8 @@
 #include "solvers/make_solver.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include "common/error.h"
 #include "solvers/abt_solver.h"
 #include "solvers/pomcp_solver.h"
@@ -12,7 +15,8 @@ std::unique_ptr<Solver> make_solver(const std::string& name, pomdp::ModelPtr mod
                                     const SearchOptions& options) {
   if (name == "abt") return std::make_unique<AbtSolver>(std::move(model), options);
   if (name == "pomcp") return std::make_unique<PomcpSolver>(std::move(model), options);
-  throw InputError("solver '" + name + "' is not one of abt, pomcp");
+  throw InputError(
+      fmt::format("solver '{}' is not one of {}", name, fmt::join(solver_names(), ", ")));
 }
 
 }  // namespace echoplan::solvers

@@ -1,13 +1,8 @@
 #!/bin/sh
 # `echoplan devices` and `echoplan record` end to end, on a capture device that reads a file (a private
 # ALSA configuration, no sound card): the WAV written holds exactly the file's samples; bad flags exit 2.
-# Usage: capture_cli_test.sh ECHOPLAN_BINARY
-set -u
-bin=$1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# Usage: capture_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
+. "$(dirname "$0")/cli_test_lib.sh"
 
 # 1 s of stereo 16-bit noise, as the raw float32 the stream opens with and as the 16-bit PCM we expect.
 /usr/bin/python3 - "$work" <<'PY'
@@ -39,24 +34,10 @@ data = w.readframes(11025)
 assert data == open(sys.argv[1] + "/expected.pcm", "rb").read()[:len(data)], "samples differ"
 PY
 
-# expect_input_error DESCRIPTION EXPECTED_MESSAGE ARGS...: exit status 2 and the message on stderr.
-expect_input_error() {
-  description=$1
-  message=$2
-  shift 2
-  "$bin" record "$@" >"$work/out" 2>"$work/err"
-  status=$?
-  if [ "$status" -ne 2 ]; then
-    fail "$description: exit status $status, expected 2"
-  elif ! grep -q -- "$message" "$work/err"; then
-    fail "$description: stderr lacks '$message':"; cat "$work/err"
-  fi
-}
-expect_input_error "unknown device" "no input device 'nope'" --device nope -o "$work/x.wav"
-expect_input_error "unsupported rate" "cannot record 2 channels at 3000000 Hz" --rate 3000000 -o "$work/x.wav"
-expect_input_error "zero seconds" "seconds must be > 0" --seconds 0 -o "$work/x.wav"
-expect_input_error "missing output" "output is required"
+expect_input_error "unknown device" "no input device 'nope'" record --device nope -o "$work/x.wav"
+expect_input_error "unsupported rate" "cannot record 2 channels at 3000000 Hz" record --rate 3000000 -o "$work/x.wav"
+expect_input_error "zero seconds" "seconds must be > 0" record --seconds 0 -o "$work/x.wav"
+expect_input_error "missing output" "output is required" record
 [ ! -e "$work/x.wav" ] || fail "a failed record wrote a file"
 
-[ "$failures" -eq 0 ] && echo "capture_cli: all checks passed"
-exit "$failures"
+finish "capture CLI"

@@ -2,7 +2,13 @@
 # Every script is run as <name>_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR. This sets `bin` and `src` from
 # those, `work` to a fresh folder removed at exit, and defines
 #   fail MESSAGE   report one failed check (the script goes on, so one run lists every failure);
-#   finish WHAT    print the verdict and exit with the number of failures (0: all passed).
+#   finish WHAT    print the verdict and exit with the number of failures (0: all passed);
+#   expect_input_error DESCRIPTION MESSAGE ARGS...
+#                  run "$bin" ARGS... and check it refuses the input as a user error: exit status 2 and
+#                  MESSAGE (a grep pattern) on stderr. Its output is left in $work/out and $work/err;
+#   wait_for_lines FILE LINES
+#                  wait (up to 60 s) until FILE holds at least LINES lines, e.g. before interrupting a
+#                  background run that has finished some work.
 set -u
 bin=$1
 src=$2
@@ -13,4 +19,23 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 finish() {
   [ "$failures" -eq 0 ] && echo "all $1 checks passed"
   exit "$failures"
+}
+expect_input_error() {
+  description=$1
+  message=$2
+  shift 2
+  "$bin" "$@" >"$work/out" 2>"$work/err"
+  status=$?
+  if [ "$status" -ne 2 ]; then
+    fail "$description: exit status $status, expected 2"; cat "$work/err"
+  elif ! grep -q -- "$message" "$work/err"; then
+    fail "$description: stderr lacks '$message':"; cat "$work/err"
+  fi
+}
+wait_for_lines() {
+  waited=0
+  while [ "$(cat "$1" 2>/dev/null | wc -l)" -lt "$2" ] && [ "$waited" -lt 3000 ]; do
+    sleep 0.02
+    waited=$((waited + 1))
+  done
 }

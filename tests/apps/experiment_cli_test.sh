@@ -45,11 +45,7 @@ same_files "$work/whole" "$work/one_core" "one core against all cores"
 # kill -9 after two trials are journalled, then the same command again.
 "$bin" experiment --config "$config" --out "$work/killed" --workers 1 >/dev/null 2>&1 &
 pid=$!
-waited=0
-while [ "$(cat "$work/killed/journal.jsonl" 2>/dev/null | wc -l)" -lt 2 ] && [ "$waited" -lt 3000 ]; do
-  sleep 0.02
-  waited=$((waited + 1))
-done
+wait_for_lines "$work/killed/journal.jsonl" 2
 kill -9 "$pid"
 wait "$pid" 2>/dev/null
 kept=$(wc -l <"$work/killed/journal.jsonl")
@@ -64,11 +60,7 @@ same_files "$work/whole" "$work/killed" "killed and resumed against one run"
 # `env --default-signal=INT` gives the command the default disposition, as a terminal would.
 env --default-signal=INT "$bin" experiment --config "$config" --out "$work/interrupted" --workers 1 >/dev/null 2>"$work/int.err" &
 pid=$!
-waited=0
-while [ "$(cat "$work/interrupted/journal.jsonl" 2>/dev/null | wc -l)" -lt 1 ] && [ "$waited" -lt 3000 ]; do
-  sleep 0.02
-  waited=$((waited + 1))
-done
+wait_for_lines "$work/interrupted/journal.jsonl" 1
 kill -INT "$pid"
 wait "$pid"
 status=$?
@@ -85,36 +77,27 @@ same_files "$work/whole" "$work/interrupted" "interrupted and resumed against on
   || { fail "merge exited $?"; cat "$work/merge.err"; }
 same_files "$work/whole" "$work/merged" "merged shards against the unsharded run"
 
-# expect_input_error DESCRIPTION MESSAGE COMMAND ARGS...: exit 2, MESSAGE on stderr, nothing trained or run.
-expect_input_error() {
-  description=$1
-  message=$2
-  shift 2
-  "$bin" "$@" >"$work/out" 2>"$work/err"
-  status=$?
-  if [ "$status" -ne 2 ]; then
-    fail "$description: exit status $status, expected 2"; cat "$work/err"
-  elif ! grep -q -- "$message" "$work/err"; then
-    fail "$description: stderr lacks '$message':"; cat "$work/err"
-  fi
-  [ ! -e "$work/err_out/journal.jsonl" ] && [ ! -e "$work/err_out/training" ] || fail "$description: work started"
+# expect_refused DESCRIPTION MESSAGE ARGS...: an input error (cli_test_lib.sh) that neither trained nor ran.
+expect_refused() {
+  expect_input_error "$@"
+  [ ! -e "$work/err_out/journal.jsonl" ] && [ ! -e "$work/err_out/training" ] || fail "$1: work started"
 }
 sed "s/object: plastic_cup/object: teapot, plays: plastic_cup/" "$config" >"$work/teapot.yaml"
-expect_input_error "object without catalogue entry" "object 'teapot' has no entry in the catalogue" \
+expect_refused "object without catalogue entry" "object 'teapot' has no entry in the catalogue" \
   experiment --config "$work/teapot.yaml" --out "$work/err_out"
 sed "s|training_set: {recordings_per_pair: 1}|training_set: {recordings: $work/no_recordings}|" "$config" >"$work/norec.yaml"
-expect_input_error "missing recordings folder" "no_recordings: the recordings folder does not exist" \
+expect_refused "missing recordings folder" "no_recordings: the recordings folder does not exist" \
   experiment --config "$work/norec.yaml" --out "$work/err_out"
 touch "$work/a_file"
-expect_input_error "unwritable output folder" "cannot create the output folder" \
+expect_refused "unwritable output folder" "cannot create the output folder" \
   experiment --config "$config" --out "$work/a_file/out"
-expect_input_error "a folder of another campaign" "holds a different campaign" \
+expect_refused "a folder of another campaign" "holds a different campaign" \
   experiment --config "$config" --out "$work/whole" --seed 99
-expect_input_error "bad shard" "must be I/N" experiment --config "$config" --out "$work/err_out" --shard 3/2
-expect_input_error "missing config" "cannot open the campaign file" \
+expect_refused "bad shard" "must be I/N" experiment --config "$config" --out "$work/err_out" --shard 3/2
+expect_refused "missing config" "cannot open the campaign file" \
   experiment --config "$work/nope.yaml" --out "$work/err_out"
 sed 's/seed: 4/sed: 4/' "$config" >"$work/typo.yaml"
-expect_input_error "typo in the config" "typo.yaml:1: unknown key 'sed'" \
+expect_refused "typo in the config" "typo.yaml:1: unknown key 'sed'" \
   experiment --config "$work/typo.yaml" --out "$work/err_out"
 # A model trained for two of the four objects: the campaign that trains it stops with exit 2 (the
 # calibrated arm needs all four), leaving the trained model; given as training_set.model it is refused
@@ -127,12 +110,12 @@ sed -e 's|training_set: {recordings_per_pair: 1}|training_set: {recordings_per_p
 [ -s "$work/two/training/model.json" ] || fail "the two-object model was not kept"
 sed -e "s|training_set: {recordings_per_pair: 1}|training_set: {model: $work/two/training/model.json}|" \
   -e 's|  - {name: hand_tuned, problem: \(.*\)}|  - {name: calibrated, problem: \1, calibrate: true}|' "$config" >"$work/given.yaml"
-expect_input_error "model trained for other objects" "observation model was trained for" \
+expect_refused "model trained for other objects" "observation model was trained for" \
   experiment --config "$work/given.yaml" --out "$work/err_out"
 
 cp -r "$work/shard2" "$work/other"
 sed -i 's/"seed": 4/"seed": 99/' "$work/other/campaign.json"
-expect_input_error "merging other campaigns" "holds another campaign" \
+expect_refused "merging other campaigns" "holds another campaign" \
   merge --out "$work/err_merge" "$work/shard1" "$work/other"
 [ ! -e "$work/err_merge" ] || fail "a refused merge created its folder"
 

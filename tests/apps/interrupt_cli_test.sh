@@ -9,12 +9,8 @@
 env --default-signal=INT "$bin" trials --problem "$src/problems/tiger.pomdp" --solver pomcp --trials 100000 --episodes 200 --seed 1 \
   --out "$work/run" >"$work/out" 2>"$work/err" &
 pid=$!
-# Wait (up to 60 s) until at least one trial is on disk: header plus one row.
-waited=0
-while [ "$(cat "$work/run/trials.csv" 2>/dev/null | wc -l)" -lt 2 ] && [ "$waited" -lt 600 ]; do
-  sleep 0.1
-  waited=$((waited + 1))
-done
+# At least one trial on disk: header plus one row.
+wait_for_lines "$work/run/trials.csv" 2
 kill -INT "$pid"
 wait "$pid"
 status=$?

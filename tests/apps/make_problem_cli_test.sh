@@ -17,9 +17,8 @@ cmp -s "$work/a.yaml" "$work/c.yaml" && fail "different seeds wrote the same fil
 [ $? -eq 2 ] || fail "--objects 1 should exit 2"
 sed 's/pringles_can: \[0.5, 0.3, 0.15, 0.05\]/pringles_can: [0.5, 0.3, 0.15, 0.06]/' \
   "$src/problems/audio_objects.yaml" > "$work/bad.yaml"
-msg=$("$bin" check --problem "$work/bad.yaml" 2>&1)
-[ $? -eq 2 ] || fail "bad row should exit 2"
-echo "$msg" | grep -q "bad.yaml:34: observation row (slide, pringles_can) sums to 1.01" || fail "message: $msg"
+expect_input_error "bad row" "bad.yaml:34: observation row (slide, pringles_can) sums to 1.01" \
+  check --problem "$work/bad.yaml"
 printf 'discount: 0.95\nstates: 2\n' > "$work/bad.pomdp"
 "$bin" check --problem "$work/bad.pomdp" 2>/dev/null
 [ $? -eq 2 ] || fail "incomplete .pomdp should exit 2"

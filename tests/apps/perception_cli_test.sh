@@ -4,20 +4,6 @@
 # Usage: perception_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
 . "$(dirname "$0")/cli_test_lib.sh"
 
-# expect_input_error DESCRIPTION EXPECTED_MESSAGE COMMAND ARGS...: exit status 2 and the message on stderr.
-expect_input_error() {
-  description=$1
-  message=$2
-  shift 2
-  "$bin" "$@" >"$work/out" 2>"$work/err"
-  status=$?
-  if [ "$status" -ne 2 ]; then
-    fail "$description: exit status $status, expected 2"; cat "$work/err"
-  elif ! grep -q -- "$message" "$work/err"; then
-    fail "$description: stderr lacks '$message':"; cat "$work/err"
-  fi
-}
-
 # Three recordings per (object, action) of the seed problem's four objects; a second seed is held out.
 objects=pringles_can,coffee_mug,plastic_cup,paper_base
 "$bin" dataset --per-pair 3 --seed 1 --objects $objects -o "$work/data" >/dev/null 2>&1 || fail "dataset 1"

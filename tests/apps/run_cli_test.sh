@@ -7,20 +7,6 @@
 # Small and fast: 3 training recordings per object and action, 300 search episodes per step.
 quick="--train-per-pair 3 --episodes 300"
 
-# expect_input_error DESCRIPTION EXPECTED_MESSAGE ARGS...: exit status 2 and the message on stderr.
-expect_input_error() {
-  description=$1
-  message=$2
-  shift 2
-  "$bin" run "$@" >"$work/out" 2>"$work/err"
-  status=$?
-  if [ "$status" -ne 2 ]; then
-    fail "$description: exit status $status, expected 2"; cat "$work/err"
-  elif ! grep -q -- "$message" "$work/err"; then
-    fail "$description: stderr lacks '$message':"; cat "$work/err"
-  fi
-}
-
 # check_trial DIR: a finished trial's files agree with each other and it ended by sorting.
 check_trial() {
   dir=$1
@@ -74,22 +60,22 @@ grep -q '"object": "coffee_mug_weighted"' "$work/d/trial.json" || fail "variant:
 grep -q '"true_state": "coffee_mug"' "$work/d/trial.json" || fail "variant: true state not the mug"
 
 # Errors, each before any work.
-expect_input_error "unknown object" "--object teapot: not an object of problem" --object teapot --out "$work/e"
-expect_input_error "replay without a model" "--recordings needs --model" \
+expect_input_error "unknown object" "--object teapot: not an object of problem" run --object teapot --out "$work/e"
+expect_input_error "replay without a model" "--recordings needs --model" run \
   --object coffee_mug --recordings "$work/recordings" --out "$work/e"
-expect_input_error "missing recordings folder" "nowhere: the recordings folder does not exist" \
+expect_input_error "missing recordings folder" "nowhere: the recordings folder does not exist" run \
   --object coffee_mug --model "$work/a/model.json" --recordings "$work/nowhere" --out "$work/e"
-expect_input_error "recordings lacking the object" "no recordings of 'coffee_mug_weighted'" \
+expect_input_error "recordings lacking the object" "no recordings of 'coffee_mug_weighted'" run \
   --object coffee_mug_weighted --model "$work/a/model.json" --recordings "$work/recordings" --out "$work/e"
-expect_input_error "missing model file" "nope.json" --object coffee_mug --model "$work/nope.json" --out "$work/e"
-expect_input_error "tabular problem" "object-identification problem" \
+expect_input_error "missing model file" "nope.json" run --object coffee_mug --model "$work/nope.json" --out "$work/e"
+expect_input_error "tabular problem" "object-identification problem" run \
   --object coffee_mug --problem "$src/problems/tiger.pomdp" --model "$work/a/model.json" --out "$work/e"
-expect_input_error "hand-tuned table with a rejecting model" "no 'unknown' observation symbol" \
+expect_input_error "hand-tuned table with a rejecting model" "no 'unknown' observation symbol" run \
   --object coffee_mug --problem "$src/problems/audio_objects.yaml" --model "$work/a/model.json" --out "$work/e"
-expect_input_error "too few training recordings" "train-per-pair must be at least 2" \
+expect_input_error "too few training recordings" "train-per-pair must be at least 2" run \
   --object coffee_mug --train-per-pair 1 --out "$work/e"
 touch "$work/file"
-expect_input_error "unwritable output folder" "cannot create the output folder" --object coffee_mug --out "$work/file/sub"
+expect_input_error "unwritable output folder" "cannot create the output folder" run --object coffee_mug --out "$work/file/sub"
 [ -e "$work/e" ] && [ -n "$(ls "$work/e")" ] && fail "an input error left files in the output folder"
 
 finish "run CLI"

@@ -20,9 +20,7 @@ done
 "$bin" solve --problem "$work/missing.pomdp" 2>/dev/null
 [ $? -eq 2 ] || fail "missing file should exit 2"
 printf 'discount: 0.95\nstates: 2\n' > "$work/bad.pomdp"
-msg=$("$bin" solve --problem "$work/bad.pomdp" 2>&1)
-[ $? -eq 2 ] || fail "incomplete .pomdp should exit 2"
-echo "$msg" | grep -q "bad.pomdp" || fail "message should name the file: $msg"
+expect_input_error "incomplete .pomdp" "bad.pomdp" solve --problem "$work/bad.pomdp"
 "$bin" solve --problem "$src/problems/tiger.pomdp" --epsilon -1 2>/dev/null
 [ $? -eq 2 ] || fail "negative epsilon should exit 2"
 "$bin" solve --problem "$src/problems/tiger.pomdp" --time-limit 0 2>/dev/null

@@ -13,10 +13,7 @@ cmp -s a.wav b.wav || fail "the same seed gave different recordings"
   >/dev/null 2>&1 || fail "synth with --catalogue"
 cmp -s a.wav c.wav || fail "the shipped catalogue found by the binary is not the source tree's"
 
-"$bin" synth --object teapot -o d.wav >/dev/null 2>err
-status=$?
-[ "$status" -eq 2 ] || fail "unknown object: exit status $status, expected 2"
-grep -q "catalogue.yaml: unknown object 'teapot'" err || fail "unknown object: stderr lacks the message: $(cat err)"
+expect_input_error "unknown object" "catalogue.yaml: unknown object 'teapot'" synth --object teapot -o d.wav
 
 "$bin" dataset --per-pair 1 --seed 1 --objects plastic_cup --actions strike -o set >/dev/null 2>err \
   || fail "dataset exited $?: $(cat err)"

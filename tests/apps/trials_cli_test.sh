@@ -4,34 +4,20 @@
 . "$(dirname "$0")/cli_test_lib.sh"
 problem=$src/problems/audio_objects.yaml
 
-# expect_input_error DESCRIPTION EXPECTED_MESSAGE ARGS...: exit status 2 and the message on stderr.
-expect_input_error() {
-  description=$1
-  message=$2
-  shift 2
-  "$bin" trials "$@" >"$work/out" 2>"$work/err"
-  status=$?
-  if [ "$status" -ne 2 ]; then
-    echo "FAIL: $description: exit status $status, expected 2"; failures=$((failures + 1))
-  elif ! grep -q -- "$message" "$work/err"; then
-    echo "FAIL: $description: stderr lacks '$message':"; cat "$work/err"; failures=$((failures + 1))
-  fi
-}
-
-expect_input_error "missing problem file" "nope.yaml: cannot open" --problem "$work/nope.yaml" --out "$work/o"
-expect_input_error "zero trials" "trials: must be a number greater than 0" --problem "$problem" --out "$work/o" --trials 0
-expect_input_error "negative per-object" "per-object: must be a number greater than 0" --problem "$problem" --out "$work/o" --per-object -2
-expect_input_error "negative episodes" "episodes: must be a number greater than 0, got -5" --problem "$problem" --out "$work/o" --episodes -5
-expect_input_error "zero step time" "step-ms: must be a number greater than 0" --problem "$problem" --out "$work/o" --step-ms 0
-expect_input_error "trials and per-object" "excludes" --problem "$problem" --out "$work/o" --trials 3 --per-object 2
-expect_input_error "policy with an online solver" "policy is for --solver offline" --problem "$problem" --out "$work/o" --solver abt --policy x.json
-expect_input_error "both budgets" "excludes" --problem "$problem" --out "$work/o" --episodes 5 --step-ms 3
-expect_input_error "unknown solver" "solver 'foo' is not one of" --problem "$problem" --out "$work/o" --solver foo
-expect_input_error "unknown leaf value" "leaf value 'random'" --problem "$problem" --out "$work/o" --leaf random
-expect_input_error "zero max steps" "max-steps must be >= 1" --problem "$problem" --out "$work/o" --max-steps 0
-expect_input_error "bad depth" "max depth must be >= 1" --problem "$problem" --out "$work/o" --depth 0
-expect_input_error "missing --out" "out is required" --problem "$problem"
-expect_input_error "not a number" "trials" --problem "$problem" --out "$work/o" --trials many
+expect_input_error "missing problem file" "nope.yaml: cannot open" trials --problem "$work/nope.yaml" --out "$work/o"
+expect_input_error "zero trials" "trials: must be a number greater than 0" trials --problem "$problem" --out "$work/o" --trials 0
+expect_input_error "negative per-object" "per-object: must be a number greater than 0" trials --problem "$problem" --out "$work/o" --per-object -2
+expect_input_error "negative episodes" "episodes: must be a number greater than 0, got -5" trials --problem "$problem" --out "$work/o" --episodes -5
+expect_input_error "zero step time" "step-ms: must be a number greater than 0" trials --problem "$problem" --out "$work/o" --step-ms 0
+expect_input_error "trials and per-object" "excludes" trials --problem "$problem" --out "$work/o" --trials 3 --per-object 2
+expect_input_error "policy with an online solver" "policy is for --solver offline" trials --problem "$problem" --out "$work/o" --solver abt --policy x.json
+expect_input_error "both budgets" "excludes" trials --problem "$problem" --out "$work/o" --episodes 5 --step-ms 3
+expect_input_error "unknown solver" "solver 'foo' is not one of" trials --problem "$problem" --out "$work/o" --solver foo
+expect_input_error "unknown leaf value" "leaf value 'random'" trials --problem "$problem" --out "$work/o" --leaf random
+expect_input_error "zero max steps" "max-steps must be >= 1" trials --problem "$problem" --out "$work/o" --max-steps 0
+expect_input_error "bad depth" "max depth must be >= 1" trials --problem "$problem" --out "$work/o" --depth 0
+expect_input_error "missing --out" "out is required" trials --problem "$problem"
+expect_input_error "not a number" "trials" trials --problem "$problem" --out "$work/o" --trials many
 
 # Same seed, same files, byte for byte.
 for run in a b; do
@@ -57,7 +43,7 @@ done
   --trials 3 --max-steps 10 --seed 1 --out "$work/offline" >/dev/null 2>&1 \
   || { echo "FAIL: offline trials on tiger"; failures=$((failures + 1)); }
 [ "$(wc -l <"$work/offline/steps.csv")" -eq 31 ] || { echo "FAIL: 3 tiger trials of 10 steps should log 30 steps"; failures=$((failures + 1)); }
-expect_input_error "policy of another problem" "the policy is for 2 states" --problem "$problem" --out "$work/o" \
+expect_input_error "policy of another problem" "the policy is for 2 states" trials --problem "$problem" --out "$work/o" \
   --solver offline --policy "$work/tiger_policy/policy.json"
 
 finish "trials CLI"

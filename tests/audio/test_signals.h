@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "common/error.h"
+#include "../common/input_error_message.h"
 #include "common/rng.h"
 
 namespace echoplan::audio::testing {
@@ -29,15 +29,6 @@ inline std::vector<float> noise(std::size_t n, std::uint64_t seed) {
   return x;
 }
 
-// The message of the InputError `fn` throws, or "(no InputError)".
-template <typename Fn>
-std::string input_error_message(Fn fn) {
-  try {
-    fn();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
+using echoplan::input_error_message;
 
 }  // namespace echoplan::audio::testing

@@ -8,22 +8,19 @@
 #include <string>
 
 #include "common/error.h"
+#include "test_folder.h"
 
 namespace echoplan {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Sets ECHOPLAN_DATA_DIR for one test and restores it after.
-class DataDirTest : public testing::Test {
+// Sets ECHOPLAN_DATA_DIR for one test and restores it after; the test's data folder is `dir_`.
+class DataDirTest : public TestFolder {
  protected:
   void SetUp() override {
     if (const char* old = std::getenv("ECHOPLAN_DATA_DIR")) saved_ = old;
-    // One folder per test: ctest runs the tests of this fixture in parallel processes.
-    root_ = fs::path(testing::TempDir()) /
-            (std::string("echoplan_data_dir_test_") +
-             testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(root_);
+    TestFolder::SetUp();
   }
   void TearDown() override {
     if (saved_.empty()) {
@@ -31,32 +28,30 @@ class DataDirTest : public testing::Test {
     } else {
       setenv("ECHOPLAN_DATA_DIR", saved_.c_str(), 1);
     }
-    fs::remove_all(root_);
+    TestFolder::TearDown();
   }
 
   std::string saved_;
-  fs::path root_;
 };
 
 TEST_F(DataDirTest, EnvironmentVariableNamesTheDataFolder) {
-  fs::create_directories(root_ / "problems");
-  fs::create_directories(root_ / "objects");
-  std::ofstream(root_ / "objects" / "catalogue.yaml") << "materials: {}\n";
-  setenv("ECHOPLAN_DATA_DIR", root_.c_str(), 1);
-  EXPECT_EQ(shipped_data_dir(), root_);
-  EXPECT_EQ(shipped_file("objects/catalogue.yaml"),
-            (root_ / "objects" / "catalogue.yaml").string());
+  fs::create_directories(dir_ / "problems");
+  fs::create_directories(dir_ / "objects");
+  std::ofstream(dir_ / "objects" / "catalogue.yaml") << "materials: {}\n";
+  setenv("ECHOPLAN_DATA_DIR", dir_.c_str(), 1);
+  EXPECT_EQ(shipped_data_dir(), dir_);
+  EXPECT_EQ(shipped_file("objects/catalogue.yaml"), (dir_ / "objects" / "catalogue.yaml").string());
   try {
     shipped_file("objects/missing.yaml");
     FAIL() << "a missing shipped file must be an InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), (root_ / "objects" / "missing.yaml").string());
+    EXPECT_EQ(e.file(), (dir_ / "objects" / "missing.yaml").string());
   }
 }
 
 TEST_F(DataDirTest, AFolderWithoutTheDataIsRefused) {
-  fs::create_directories(root_ / "problems");  // no objects/
-  setenv("ECHOPLAN_DATA_DIR", root_.c_str(), 1);
+  fs::create_directories(dir_ / "problems");  // no objects/
+  setenv("ECHOPLAN_DATA_DIR", dir_.c_str(), 1);
   try {
     shipped_data_dir();
     FAIL() << "expected InputError";

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "../common/input_error_message.h"
 #include "../robot/small_training_set.h"
 #include "audio/io.h"
 #include "common/error.h"
@@ -278,17 +279,6 @@ TEST(RobotEnvironment, ACollisionIsHeardAsNothingAndEndsTheTrial) {
   fs::remove_all(dir);
 }
 
-// The message of the InputError `f` throws ("" when it throws none).
-template <typename F>
-std::string input_error(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 bool mentions(const std::string& message, const std::string& what) {
   return message.find(what) != std::string::npos;
 }
@@ -300,7 +290,8 @@ TEST(EnvironmentFactory, AProblemObjectWithNoCatalogueEntryIsAnError) {
   for (auto& block : d.observation_table) block.push_back(block.back());
   for (auto& row : d.sorting_reward) row.push_back(-100);
   const auto problem = std::make_shared<pomdp::ObjectIdentificationModel>(d);
-  const std::string e = input_error([&] { make_environment_factory(simulator_settings(problem)); });
+  const std::string e =
+      input_error_message([&] { make_environment_factory(simulator_settings(problem)); });
   EXPECT_TRUE(mentions(e, "'teapot'") && mentions(e, "catalogue")) << e;
 }
 
@@ -309,7 +300,7 @@ TEST(EnvironmentFactory, AModelTrainedForOtherActionsOrObjectsIsAnError) {
   const auto strikes_only = testing::train_small_model(kObjects, {"strike"}, 2);
   LoopSettings settings = simulator_settings(calibrated(mug_or_cup()).model);
   settings.classifier = strikes_only;
-  std::string e = input_error([&] { make_environment_factory(settings); });
+  std::string e = input_error_message([&] { make_environment_factory(settings); });
   EXPECT_TRUE(mentions(e, "no classifier for sensing action 'slide'")) << e;
 
   // Trained on the mug and the cup, planning for the mug and the can.
@@ -318,7 +309,7 @@ TEST(EnvironmentFactory, AModelTrainedForOtherActionsOrObjectsIsAnError) {
   for (auto& block : can_or_mug.observation_table)
     for (auto& row : block) row = {0.45, 0.45, 0.1};
   settings = simulator_settings(std::make_shared<pomdp::ObjectIdentificationModel>(can_or_mug));
-  e = input_error([&] { make_environment_factory(settings); });
+  e = input_error_message([&] { make_environment_factory(settings); });
   EXPECT_TRUE(mentions(e, "reports 'plastic_cup'") && mentions(e, "other objects")) << e;
 }
 
@@ -326,7 +317,7 @@ TEST(EnvironmentFactory, UnknownNeedsAnUnknownSymbol) {
   // The hand-tuned kind of table: the objects as symbols and no `unknown`, with a rejecting model.
   LoopSettings settings =
       simulator_settings(std::make_shared<pomdp::ObjectIdentificationModel>(mug_or_cup()));
-  const std::string e = input_error([&] { make_environment_factory(settings); });
+  const std::string e = input_error_message([&] { make_environment_factory(settings); });
   EXPECT_TRUE(mentions(e, "no 'unknown' observation symbol")) << e;
 }
 
@@ -336,10 +327,11 @@ TEST(EnvironmentFactory, AReplayFolderWithoutAnObjectIsAnError) {
   LoopSettings settings = simulator_settings(calibrated(mug_or_cup()).model);
   settings.world.kind = WorldSettings::Kind::replay;
   settings.world.recordings = dir.string();
-  const std::string e = input_error([&] { make_environment_factory(settings); });
+  const std::string e = input_error_message([&] { make_environment_factory(settings); });
   EXPECT_TRUE(mentions(e, (dir / "plastic_cup").string())) << e;
   settings.world.recordings = (dir / "nowhere").string();
-  EXPECT_TRUE(mentions(input_error([&] { make_environment_factory(settings); }), "nowhere"));
+  EXPECT_TRUE(
+      mentions(input_error_message([&] { make_environment_factory(settings); }), "nowhere"));
   fs::remove_all(dir);
 }
 
@@ -347,7 +339,7 @@ TEST(EnvironmentFactory, ATabularProblemIsAnError) {
   const pomdp::Problem tiger =
       pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/tiger.pomdp");
   const std::string e =
-      input_error([&] { make_environment_factory(simulator_settings(tiger.model)); });
+      input_error_message([&] { make_environment_factory(simulator_settings(tiger.model)); });
   EXPECT_TRUE(mentions(e, "object-identification problem")) << e;
 }
 

@@ -7,6 +7,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "../common/test_folder.h"
 #include "audio/io.h"
 #include "common/error.h"
 
@@ -17,13 +18,10 @@ namespace fs = std::filesystem;
 
 // A recordings folder of short tones: DIR/<object>/strike/<i>.wav, each file its own frequency so
 // a test can tell which one was played.
-class ReplayFolder : public ::testing::Test {
+class ReplayFolder : public TestFolder {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("echoplan_replay_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
+    TestFolder::SetUp();
     int tone = 0;
     for (const char* object : {"cup", "mug"}) {
       for (int i = 0; i < kFiles; ++i) {
@@ -39,8 +37,6 @@ class ReplayFolder : public ::testing::Test {
       }
     }
   }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // The file whose content `clip` is.
   std::string which_file(const audio::AudioClip& clip) const {
     for (const auto& entry : fs::recursive_directory_iterator(dir_))
@@ -51,7 +47,6 @@ class ReplayFolder : public ::testing::Test {
   }
 
   static constexpr int kFiles = 3;
-  fs::path dir_;
 };
 
 TEST_F(ReplayFolder, PlaysRecordingsOfTheTrueObjectDealtFromTheSeed) {

@@ -62,14 +62,15 @@ TEST(SimulatedWorld, SortingIsSilentAndMotionless) {
   EXPECT_EQ(report.duration_s, 0.0);
   EXPECT_FALSE(world->last_outcome().has_value());
   // Only the room: the recorder's lead-in of digital zeros, then the background noise for the usual
-  // recording length, at the configured level give or take the day's variation (cut at 3 spreads).
+  // recording length, at the configured level give or take the day's variation (cut at 3 standard
+  // deviations).
   const sim::SimConfig config;
   EXPECT_NEAR(clip.duration_seconds(), config.recording.lead_in_s + config.recording.duration_s,
               0.01);
   const auto lead_in = static_cast<std::size_t>(config.recording.lead_in_s * clip.sample_rate) * 2;
   audio::AudioClip after = clip;
   after.samples.erase(after.samples.begin(), after.samples.begin() + lead_in);
-  const double margin_db = 3 * config.variability.background_db.spread + 0.5;
+  const double margin_db = 3 * config.variability.background_db.stddev + 0.5;
   EXPECT_GT(rms(after), noise_rms() * std::pow(10.0, -margin_db / 20));
   EXPECT_LT(rms(after), noise_rms() * std::pow(10.0, margin_db / 20));
 }

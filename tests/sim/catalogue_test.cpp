@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "common/error.h"
 
@@ -150,6 +151,40 @@ TEST(Catalogue, OtherErrorsAreReportedWithTheirEntry) {
                 .find("wall_thickness"),
             std::string::npos);
   EXPECT_EQ(parse_error("materials: [unclosed").line(), 1);
+}
+
+// A misspelt or misplaced key would otherwise keep a default silently (a "frction" leaves the
+// object at friction 0.4): every level of the catalogue names the key, its entry and its line.
+TEST(Catalogue, UnknownKeysAreRejectedWithFileLineAndEntry) {
+  struct Case {
+    std::string from, to;
+    int line;
+    std::string key, entry;
+  };
+  const std::vector<Case> cases{
+      {"    contact_radius: 0.004\n", "    contact_radius: 0.004\n    frction: 0.3\n", 18,
+       "frction", "objects.mug"},
+      {"alpha: 6,", "alpha: 6, gamma: 1,", 2, "gamma", "materials.ceramic"},
+      {"  material: wood\n", "  material: wood\n  colour: brown\n", 6, "colour", "table"},
+      {"{frequency: 150, gain: 0.5}", "{frequency: 150, gain: 0.5, q: 3}", 7, "q",
+       "table.modes[0]"},
+      {"    base: mug\n", "    base: mug\n    radius: 0.05\n", 20, "radius", "objects.heavy_mug"},
+      {"position: [0, 0, 0.01]}", "position: [0, 0, 0.01], colour: red}", 20, "colour",
+       "objects.heavy_mug.added_mass"},
+      {"objects:\n", "lights: on\nobjects:\n", 8, "lights", "the catalogue"},
+  };
+  for (const Case& c : cases) {
+    const InputError e = parse_error(replace(kValid, c.from, c.to));
+    EXPECT_EQ(e.file(), "test.yaml");
+    EXPECT_EQ(e.line(), c.line) << e.what();
+    EXPECT_NE(e.problem().find("unknown key '" + c.key + "' in " + c.entry), std::string::npos)
+        << e.what();
+  }
+  const InputError dense =
+      parse_error(replace(kValid, "  material: wood\n",
+                          "  material: wood\n  dense_modes: {from: 150, to: 8000, n: 3}\n"));
+  EXPECT_NE(dense.problem().find("unknown key 'n' in table.dense_modes"), std::string::npos)
+      << dense.what();
 }
 
 TEST(Catalogue, UnknownObjectListsTheKnownOnes) {

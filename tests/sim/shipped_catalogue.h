@@ -14,7 +14,7 @@ inline const Catalogue& shipped_catalogue() {
   return c;
 }
 
-// Every spread at its mean, no tilt.
+// Every truncated Gaussian at its mean, no tilt.
 inline ActionVariation nominal_trial() {
   const VariabilityConfig v;
   ActionVariation p;

@@ -43,7 +43,7 @@ TEST(SimConfig, ShippedExampleStatesTheDefaults) {
 
 TEST(SimConfig, FieldsOverrideDefaults) {
   const SimConfig c = parse_sim_config(R"(variability:
-  impact_speed: {mean: 0.2, spread: 0.02}
+  impact_speed: {mean: 0.2, stddev: 0.02}
 microphone:
   position: [1, 2, 3]
 recording:
@@ -53,7 +53,7 @@ physics:
 )",
                                        "c.yaml");
   EXPECT_DOUBLE_EQ(c.variability.impact_speed.mean, 0.2);
-  EXPECT_DOUBLE_EQ(c.variability.impact_speed.spread, 0.02);
+  EXPECT_DOUBLE_EQ(c.variability.impact_speed.stddev, 0.02);
   EXPECT_DOUBLE_EQ(c.microphone.position[2], 3);
   EXPECT_DOUBLE_EQ(c.recording.noise_dbfs, -80);
   EXPECT_DOUBLE_EQ(c.physics.timestep_s, 0.001);
@@ -70,7 +70,7 @@ TEST(SimConfig, ErrorsNameFileLineAndField) {
     ADD_FAILURE() << text;
     return InputError("", 0, "");
   };
-  const InputError misspelt = error_of("variability:\n  impact_sped: {mean: 0.1, spread: 0}\n");
+  const InputError misspelt = error_of("variability:\n  impact_sped: {mean: 0.1, stddev: 0}\n");
   EXPECT_EQ(misspelt.file(), "c.yaml");
   EXPECT_EQ(misspelt.line(), 2);
   EXPECT_NE(misspelt.problem().find("unknown key 'impact_sped' in variability (expected one of: "),
@@ -80,7 +80,7 @@ TEST(SimConfig, ErrorsNameFileLineAndField) {
   EXPECT_EQ(range.line(), 2);
   EXPECT_NE(range.problem().find("physics.timestep_s"), std::string::npos);
   EXPECT_NE(
-      error_of("variability:\n  push_speed: 0.1\n").problem().find("{mean: ..., spread: ...}"),
+      error_of("variability:\n  push_speed: 0.1\n").problem().find("{mean: ..., stddev: ...}"),
       std::string::npos);
   EXPECT_NE(error_of("colour: red\n").problem().find("unknown key 'colour' in the sim config"),
             std::string::npos);
@@ -98,8 +98,8 @@ TEST(SimConfig, TrialsAreReproducibleAndWithinThreeSpreads) {
     const ActionVariation p = sample_action(v, a);
     const ActionVariation q = sample_action(v, b);
     EXPECT_EQ(p.named(), q.named());
-    EXPECT_LE(std::abs(p.impact_speed - v.impact_speed.mean), 3 * v.impact_speed.spread + 1e-15);
-    EXPECT_LE(std::abs(p.grasp_height - v.grasp_height.mean), 3 * v.grasp_height.spread + 1e-15);
+    EXPECT_LE(std::abs(p.impact_speed - v.impact_speed.mean), 3 * v.impact_speed.stddev + 1e-15);
+    EXPECT_LE(std::abs(p.grasp_height - v.grasp_height.mean), 3 * v.grasp_height.stddev + 1e-15);
     EXPECT_GE(p.impact_tilt_deg, 0.0);
   }
 }

@@ -86,7 +86,7 @@ TEST(SimulatedRobot, HandDrivenIntoTheTableIsACollision) {
     EXPECT_TRUE(out.collision()) << action;
   }
   // And the same robot is fine at the nominal height in a new trial.
-  robot.reset_trial(TrialSetup{});
+  robot.reset_trial(ObjectPlacement{});
   EXPECT_FALSE(robot.execute("strike", nominal_trial()).collision());
 }
 
@@ -132,7 +132,7 @@ TEST(SimulatedRobot, SlideMakesNoImpact) {
 
 TEST(SimulatedRobot, ChainedSlideMovesTheObjectAndTheNextActionStartsThere) {
   SimulatedRobot robot(shipped_catalogue(), "plastic_cup", SimConfig{});
-  robot.reset_trial(TrialSetup{});
+  robot.reset_trial(ObjectPlacement{});
   const auto before = robot.object_position();
   const ActionOutcome first = robot.execute("slide", nominal_trial());
   ASSERT_EQ(first.status, ActionStatus::done);
@@ -150,13 +150,13 @@ TEST(SimulatedRobot, ChainedSlideMovesTheObjectAndTheNextActionStartsThere) {
   EXPECT_NEAR(strike.object_start[0] - before[0], 0.10, 0.006);
   EXPECT_NEAR(std::hypot(strike.object_displacement[0], strike.object_displacement[1]), 0.0, 0.002);
   // A new trial puts it back at its nominal place.
-  robot.reset_trial(TrialSetup{});
+  robot.reset_trial(ObjectPlacement{});
   EXPECT_EQ(robot.object_position(), before);
 }
 
 TEST(SimulatedRobot, ObjectPushedOutOfReachIsAnOutcomeNotACrash) {
   SimulatedRobot robot(shipped_catalogue(), "pringles_can", SimConfig{});
-  robot.reset_trial(TrialSetup{});
+  robot.reset_trial(ObjectPlacement{});
   ActionOutcome out;
   int slides = 0;
   do {

@@ -18,6 +18,7 @@
 #include "experiment/calibrated_problem.h"
 #include "experiment/environment_factory.h"
 #include "experiment/loop_log.h"
+#include "experiment/planner.h"
 #include "experiment/simulated_training.h"
 #include "experiment/trial_runner.h"
 #include "pomdp/make_belief.h"
@@ -39,7 +40,7 @@ struct RunFlags {
   int train_per_pair = 10;
   std::string out;
   SimFiles sim;
-  PlannerFlags planner;
+  solvers::PlannerOverrides planner;
 };
 
 // Independent streams drawn from --seed.
@@ -197,7 +198,7 @@ void run_command(const RunFlags& f) {
   if (truth.world != data.objects[truth.index])
     settings.world_objects[data.objects[truth.index]] = truth.world;
   auto environment = experiment::make_environment_factory(settings)();
-  const Planner planner = make_planner(f.planner, problem, problem_path);
+  const experiment::Planner planner = experiment::make_planner(f.planner, problem, problem_path);
   // Only now that everything fits are files written.
   if (f.problem.empty()) save_problem(problem, problem_path);
   experiment::LoopLog log(f.out, experiment::object_problem(*problem.model));

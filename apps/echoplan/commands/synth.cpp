@@ -43,7 +43,7 @@ void add_synth_command(CLI::App& app) {
                out.status == sim::ActionStatus::done
                    ? ""
                    : fmt::format(", {}: {}", to_string(out.status), out.reason));
-    for (const auto& [name, value] : out.setup.named())
+    for (const auto& [name, value] : out.placement.named())
       fmt::print("  {:<17} {:.4g}\n", name, value);
     for (const auto& [name, value] : out.variation.named())
       fmt::print("  {:<17} {:.4g}\n", name, value);

@@ -9,6 +9,7 @@
 #include "commands/planner_options.h"
 #include "common/error.h"
 #include "common/stop_signal.h"
+#include "experiment/planner.h"
 #include "experiment/trial_log.h"
 #include "experiment/trial_runner.h"
 #include "experiment/trial_summary.h"
@@ -27,11 +28,11 @@ struct TrialsFlags {
   int max_steps = 100;
   std::uint64_t seed = 1;
   std::string out;
-  PlannerFlags planner;
+  solvers::PlannerOverrides planner;
 };
 
 void print_summary(const experiment::TrialSummary& s, const pomdp::ModelSpec& spec,
-                   const Planner& planner, double seconds) {
+                   const experiment::Planner& planner, double seconds) {
   fmt::print("{:<24}{}\n", "problem", spec.name);
   fmt::print("{:<24}{}\n", "solver", planner.describe());
   fmt::print("{:<24}{}\n", "trials", s.trials);
@@ -69,7 +70,7 @@ class ProgressLog final : public experiment::TrialObserver {
 
 void run_trials_command(const TrialsFlags& f) {
   const pomdp::Problem problem = pomdp::load_problem(f.problem);
-  const Planner planner = make_planner(f.planner, problem, f.problem);
+  const experiment::Planner planner = experiment::make_planner(f.planner, problem, f.problem);
   pomdp::ModelEnvironment environment(problem.model);
 
   experiment::TrialOptions trial_options;

@@ -1,0 +1,53 @@
+// The campaign runner's parts that need no world: an arm's planner (the campaign's solver and
+// budget, the arm problem's search settings) and the numbering of the trials.
+#include "experiment/campaign_runner.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+
+namespace echoplan::experiment {
+namespace {
+
+// audio_objects.yaml asks for depth 100, exploration 110 and 1000 particles (its planner section).
+const std::string kProblem = std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml";
+
+TEST(CampaignRunner, AnArmPlansWithTheCampaignsSolverAndBudgetAndTheProblemsSearch) {
+  CampaignConfig config;
+  config.planner.solver = "pomcp";
+  config.planner.episodes = 120;
+  const pomdp::Problem problem = pomdp::load_problem(kProblem);
+  const Planner p = make_arm_planner(config, problem);
+  EXPECT_EQ(p.name, "pomcp");
+  EXPECT_EQ(p.budget.kind, solvers::Budget::Kind::episodes);
+  EXPECT_EQ(p.budget.amount, 120);
+  EXPECT_EQ(p.options.max_depth, 100);
+  EXPECT_EQ(p.options.exploration, 110.0);
+  EXPECT_EQ(p.options.root_particles, 1000);
+
+  config.planner.episodes = 0;
+  config.planner.step_ms = 40;
+  const Planner timed = make_arm_planner(config, problem);
+  EXPECT_EQ(timed.budget.kind, solvers::Budget::Kind::milliseconds);
+  EXPECT_EQ(timed.budget.amount, 40);
+}
+
+TEST(CampaignRunner, JobsNumberArmsThenGroupsThenTrials) {
+  CampaignConfig config;
+  config.arms.resize(2);
+  config.groups.resize(2);
+  config.groups[0].trials = 2;
+  config.groups[1].trials = 1;
+  const std::vector<TrialJob> jobs = campaign_jobs(config);
+  // (arm, group, index) in id order.
+  const std::vector<std::array<int, 3>> expected = {{0, 0, 0}, {0, 0, 1}, {0, 1, 0},
+                                                    {1, 0, 0}, {1, 0, 1}, {1, 1, 0}};
+  ASSERT_EQ(jobs.size(), expected.size());
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    EXPECT_EQ(jobs[i].id, static_cast<int>(i));
+    EXPECT_EQ((std::array<int, 3>{jobs[i].arm, jobs[i].group, jobs[i].index}), expected[i]) << i;
+  }
+}
+
+}  // namespace
+}  // namespace echoplan::experiment

@@ -1,0 +1,73 @@
+// make_planner(): the solver, search options and budget a problem file and a user's overrides ask
+// for, and how they are described in logs. The shipped problems are the fixtures:
+// audio_objects.yaml asks for abt, 2000 ms per step, depth 100, exploration 110 and 1000 particles;
+// tiger.pomdp has no planner section (abt, 1000 episodes per step).
+#include "experiment/planner.h"
+
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+#include "solvers/abt_solver.h"
+#include "solvers/pomcp_solver.h"
+
+namespace echoplan::experiment {
+namespace {
+
+std::string shipped(const std::string& name) {
+  return std::string(ECHOPLAN_SOURCE_DIR) + "/problems/" + name;
+}
+
+TEST(Planner, TheProblemFilesPlannerByDefault) {
+  const std::string path = shipped("audio_objects.yaml");
+  const Planner p = make_planner({}, pomdp::load_problem(path), path);
+  EXPECT_EQ(p.name, "abt");
+  EXPECT_NE(dynamic_cast<solvers::AbtSolver*>(p.solver.get()), nullptr);
+  EXPECT_EQ(p.options.exploration, 110.0);
+  EXPECT_EQ(p.options.max_depth, 100);
+  EXPECT_EQ(p.options.root_particles, 1000);
+  EXPECT_EQ(p.describe(), "abt, 2000 ms/step");
+  const nlohmann::json expected = {{"solver", "abt"},
+                                   {"budget", {{"step_ms", 2000}}},
+                                   {"search",
+                                    {{"exploration", 110.0},
+                                     {"max_depth", 100},
+                                     {"leaf", "lookahead"},
+                                     {"expand_after", solvers::LeafOptions{}.expand_after},
+                                     {"root_particles", 1000},
+                                     {"branch_threshold", 0.0}}}};
+  EXPECT_EQ(p.to_json(), expected);
+}
+
+TEST(Planner, OverridesChooseTheSolverAndBudget) {
+  const std::string path = shipped("tiger.pomdp");
+  solvers::PlannerOverrides f;
+  f.solver = "pomcp";
+  f.episodes = 250;
+  f.depth = 9;
+  const Planner p = make_planner(f, pomdp::load_problem(path), path);
+  EXPECT_EQ(p.name, "pomcp");
+  EXPECT_NE(dynamic_cast<solvers::PomcpSolver*>(p.solver.get()), nullptr);
+  EXPECT_EQ(p.options.max_depth, 9);
+  EXPECT_EQ(p.describe(), "pomcp, 250 episodes/step");
+  EXPECT_EQ(p.to_json()["budget"], nlohmann::json({{"episodes", 250}}));
+}
+
+TEST(Planner, BadChoicesAreInputErrors) {
+  const std::string path = shipped("tiger.pomdp");
+  const pomdp::Problem problem = pomdp::load_problem(path);
+  solvers::PlannerOverrides unknown;
+  unknown.solver = "greedy";
+  EXPECT_THROW(make_planner(unknown, problem, path), InputError);
+  // A policy file is only for the offline solver: with an online one it would be ignored.
+  solvers::PlannerOverrides policy;
+  policy.policy = "policy.json";
+  EXPECT_THROW(make_planner(policy, problem, path), InputError);
+  // The offline solver loads the policy file it is given (here: none there).
+  solvers::PlannerOverrides offline = policy;
+  offline.solver = "offline";
+  offline.policy = "/nonexistent/policy.json";
+  EXPECT_THROW(make_planner(offline, problem, path), InputError);
+}
+
+}  // namespace
+}  // namespace echoplan::experiment

@@ -1,0 +1,75 @@
+// The arm's Cartesian motions: the trapezoidal speed profile of a segment, and the damped
+// least-squares step that turns an end-effector pose into joint targets (checked against the
+// arm's forward kinematics computed independently from Kinova's joint table).
+#include "sim/cartesian_motion.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <memory>
+
+#include "shipped_catalogue.h"
+#include "sim/arm_kinematics.h"
+#include "sim/scene.h"
+
+namespace echoplan::sim {
+namespace {
+
+TEST(Segment, TrapezoidalProgressStartsAndEndsAtRestAndCruisesAtConstantSpeed) {
+  Segment s{};
+  s.duration_s = 1.0;
+  s.ease_in_s = s.ease_out_s = 0.2;
+  EXPECT_DOUBLE_EQ(s.progress(0.0), 0.0);
+  EXPECT_NEAR(s.progress(1.0), 1.0, 1e-12);
+  // Cruise speed: the whole path over the duration less half of each ramp (area of a trapezoid).
+  const double cruise = 1.0 / (1.0 - 0.1 - 0.1);
+  EXPECT_NEAR(s.progress(0.6) - s.progress(0.4), 0.2 * cruise, 1e-12);
+  // Speed near the ends tends to zero (no jump in speed); the profile is symmetric.
+  EXPECT_LT((s.progress(0.001) - s.progress(0.0)) / 0.001, 0.01 * cruise);
+  EXPECT_NEAR(s.progress(0.3), 1.0 - s.progress(0.7), 1e-12);
+  double previous = 0;
+  for (int k = 1; k <= 100; ++k) {
+    const double p = s.progress(k / 100.0);
+    EXPECT_GE(p, previous);
+    previous = p;
+  }
+}
+
+TEST(Segment, WithoutEasingTheSpeedIsConstant) {
+  Segment s{};
+  s.duration_s = 2.0;
+  EXPECT_DOUBLE_EQ(s.progress(0.5), 0.25);
+  EXPECT_DOUBLE_EQ(s.progress(1.5), 0.75);
+}
+
+TEST(DampedLeastSquares, ReachesANearbyPoseOfTheRealArm) {
+  const Scene scene(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
+                    PhysicsConfig{});
+  const mjModel* m = scene.model();
+  auto kin = std::unique_ptr<mjData, void (*)(mjData*)>(mj_makeData(m), mj_deleteData);
+  std::array<double, kArmJoints> q = kInitialArmConfiguration;
+  const Eigen::Isometry3d start = end_effector_pose(q);
+  // 4 cm forward and 3 cm up, the hand turned by 10 degrees about the vertical.
+  const Eigen::Vector3d want = start.translation() + Eigen::Vector3d(0.04, 0.0, 0.03);
+  const Eigen::Quaterniond want_rot =
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.17453, Eigen::Vector3d::UnitZ())) *
+      Eigen::Quaterniond(start.rotation());
+  for (int i = 0; i < 40; ++i)
+    dls_step(m, kin.get(), scene.end_effector_site, q.data(), want, want_rot);
+  const Eigen::Isometry3d reached = end_effector_pose(q);
+  EXPECT_LT((reached.translation() - want).norm(), 1e-4);
+  EXPECT_LT(Eigen::AngleAxisd(Eigen::Quaterniond(reached.rotation()) * want_rot.inverse()).angle(),
+            1e-3);
+  // site_position/site_orientation read the same pose from MuJoCo's kinematic copy.
+  for (int i = 0; i < kArmJoints; ++i) kin->qpos[i] = q[i];
+  mj_kinematics(m, kin.get());
+  EXPECT_LT((site_position(kin.get(), scene.end_effector_site) - reached.translation()).norm(),
+            1e-9);
+  EXPECT_LT(Eigen::AngleAxisd(site_orientation(kin.get(), scene.end_effector_site) *
+                              Eigen::Quaterniond(reached.rotation()).inverse())
+                .angle(),
+            1e-9);
+}
+
+}  // namespace
+}  // namespace echoplan::sim

@@ -1,0 +1,99 @@
+// The compiled MuJoCo scene: the object's rigid body is the catalogue's, the two model variants
+// differ only where they must (the pad's contact with the object), and the arm and object stand
+// where the original system's initial configuration puts them.
+#include "sim/scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "shipped_catalogue.h"
+#include "sim/arm_kinematics.h"
+
+namespace echoplan::sim {
+namespace {
+
+TEST(Scene, ObjectBodyCarriesTheCataloguesMassCentreAndInertia) {
+  // The weighted mug: its added mass moves the centre of mass down and raises the total mass, and
+  // the compiled body must say so (the effective mass of every impact comes from it).
+  const ObjectSpec& mug = shipped_catalogue().object("coffee_mug_weighted");
+  const Scene scene(mug, shipped_catalogue().table, PhysicsConfig{});
+  const mjModel* m = scene.model();
+  EXPECT_NEAR(m->body_mass[scene.object_body], mug.total_mass(), 1e-9);
+  const auto com = mug.centre_of_mass();
+  const auto inertia = mug.inertia_diagonal();
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(m->body_ipos[3 * scene.object_body + k], com[k], 1e-9);
+    // MuJoCo may reorder the principal axes; the mug is axisymmetric about z, so x and y agree.
+    EXPECT_NEAR(m->body_inertia[3 * scene.object_body + k], inertia[k], 1e-9 * inertia[2]);
+  }
+  // The collision cylinder spans the object: radius and half height as catalogued.
+  EXPECT_NEAR(m->geom_size[3 * scene.object_geom], mug.radius, 1e-12);
+  EXPECT_NEAR(m->geom_size[3 * scene.object_geom + 1], mug.height / 2, 1e-12);
+}
+
+TEST(Scene, VariantsDifferOnlyInWhetherThePadTouchesTheObject) {
+  const Scene scene(shipped_catalogue().object("plastic_cup"), shipped_catalogue().table,
+                    PhysicsConfig{});
+  const mjModel* push = scene.model(PadContact::pushes_object);
+  const mjModel* clear = scene.model(PadContact::clear_of_object);
+  ASSERT_EQ(push->ngeom, clear->ngeom);
+  ASSERT_EQ(push->nq, clear->nq);
+  for (int g = 0; g < push->ngeom; ++g) {
+    EXPECT_EQ(push->geom_contype[g], clear->geom_contype[g]) << g;
+    if (g == scene.pad_geom) continue;
+    EXPECT_EQ(push->geom_conaffinity[g], clear->geom_conaffinity[g]) << g;
+  }
+  // MuJoCo's filter: two geoms collide if (contype1 & conaffinity2) || (contype2 & conaffinity1).
+  auto collide = [&](const mjModel* m, int a, int b) {
+    return (m->geom_contype[a] & m->geom_conaffinity[b]) ||
+           (m->geom_contype[b] & m->geom_conaffinity[a]);
+  };
+  EXPECT_TRUE(collide(push, scene.pad_geom, scene.object_geom));
+  EXPECT_FALSE(collide(clear, scene.pad_geom, scene.object_geom));
+  EXPECT_TRUE(collide(clear, scene.pad_geom, scene.table_geom));
+}
+
+TEST(Scene, InitialPoseHasTheObjectAheadOfTheHandOnTheTable) {
+  const ObjectSpec& can = shipped_catalogue().object("pringles_can");
+  const Scene scene(can, shipped_catalogue().table, PhysicsConfig{});
+  const mjModel* m = scene.model();
+  mjData* d = scene.data();
+  mj_resetData(m, d);
+  for (int i = 0; i < kArmJoints; ++i) d->qpos[i] = kInitialArmConfiguration[i];
+  mj_forward(m, d);
+  const Eigen::Vector3d ee = end_effector_pose(kInitialArmConfiguration).translation();
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(d->site_xpos[3 * scene.end_effector_site + k], ee[k], 1e-9);
+  EXPECT_NEAR(scene.table_top_z, ee.z() - kNominalGraspHeight, 1e-12);
+  // The object's base centre: kObjectOffsetX ahead of the end effector along x, on the table top.
+  EXPECT_NEAR(d->xpos[3 * scene.object_body], ee.x() + kObjectOffsetX, 1e-9);
+  EXPECT_NEAR(d->xpos[3 * scene.object_body + 1], ee.y(), 1e-9);
+  EXPECT_NEAR(d->xpos[3 * scene.object_body + 2], scene.table_top_z, 1e-9);
+  // Nothing but the object rests on the table at the start: the arm is clear of it.
+  for (int i = 0; i < d->ncon; ++i) {
+    EXPECT_FALSE(scene.is_arm_geom(d->contact[i].geom1)) << i;
+    EXPECT_FALSE(scene.is_arm_geom(d->contact[i].geom2)) << i;
+  }
+}
+
+TEST(Scene, ArmGeomsAreTheLinksHandAndPadNotTableOrObject) {
+  const Scene scene(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
+                    PhysicsConfig{});
+  const mjModel* m = scene.model();
+  EXPECT_TRUE(scene.is_arm_geom(scene.pad_geom));
+  EXPECT_TRUE(scene.is_arm_geom(mj_name2id(m, mjOBJ_GEOM, "hand")));
+  EXPECT_FALSE(scene.is_arm_geom(scene.table_geom));
+  EXPECT_FALSE(scene.is_arm_geom(scene.object_geom));
+}
+
+TEST(Scene, PhysicsTimestepComesFromTheConfig) {
+  PhysicsConfig physics;
+  physics.timestep_s = 0.001;
+  const Scene scene(shipped_catalogue().object("paper_base"), shipped_catalogue().table, physics);
+  EXPECT_DOUBLE_EQ(scene.model(PadContact::pushes_object)->opt.timestep, 0.001);
+  EXPECT_DOUBLE_EQ(scene.model(PadContact::clear_of_object)->opt.timestep, 0.001);
+}
+
+}  // namespace
+}  // namespace echoplan::sim
