@@ -30,9 +30,9 @@ done
 [ "$(wc -l <"$work/a/trials.csv")" -eq 5 ] || { echo "FAIL: trials.csv should hold a header and 4 rows"; failures=$((failures + 1)); }
 
 # certify reads the steps.csv that trials wrote and answers with the documented JSON fields.
-"$bin" certify --problem "$problem" --steps "$work/a/steps.csv" --expansions 2000 --json >"$work/cert" 2>/dev/null \
+"$bin" certify --problem "$problem" --steps "$work/a/steps.csv" --expansions 2000 --root-expansions 2000 --json >"$work/cert" 2>/dev/null \
   || { echo "FAIL: certify exited $?"; failures=$((failures + 1)); }
-for key in vstar_lower vstar_upper regret_mean regret_ci95 '"trials":4'; do
+for key in vstar_lower vstar_upper regret_mean regret_ci95 '"trials":4' bound_gap_mean; do
   grep -q -- "$key" "$work/cert" || { echo "FAIL: certify --json lacks $key:"; cat "$work/cert"; failures=$((failures + 1)); }
 done
 
