@@ -18,15 +18,23 @@
 // change while planning).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "solvers/search_tree.h"
+#include "solvers/sensing_policy.h"
 
 namespace echoplan::solvers {
 
 class AbtSolver final : public TreeSearchSolver {
  public:
+  // Throws InputError when the leaf mode is `policy` and the model is not a tabular identification
+  // problem.
   AbtSolver(pomdp::ModelPtr model, SearchOptions options);
+
+  void reset(const pomdp::Belief& belief, Rng& rng) override;
+  void update(int action, const pomdp::Observation& observation, const pomdp::Belief& belief_after,
+              Rng& rng) override;
 
  protected:
   void run_episode(Rng& rng) override;
@@ -36,8 +44,9 @@ class AbtSolver final : public TreeSearchSolver {
   // Steps `state` once with every action (into one_step_each_) and adds the rewards to the node's
   // per-action sums.
   void evaluate_particle(BeliefNode& node, const pomdp::State& state, Rng& rng);
-  // Q(b, a) from the node's particle rewards and the action's children.
-  double action_value(const BeliefNode& node, int action) const;
+  // Q(b, a) from the action's children and the immediate reward: its expectation under the node's
+  // exact `belief` when there is one (leaf mode `policy`), else the mean over the node's particles.
+  double action_value(const BeliefNode& node, int action, const std::vector<double>* belief) const;
 
   // One step of the episode's path: the belief node, the action taken there and the observation
   // branch followed (-1 when the step was terminal).
@@ -46,7 +55,15 @@ class AbtSolver final : public TreeSearchSolver {
     int action;
     std::ptrdiff_t child;
   };
-  std::vector<PathStep> path_;                    // reused between episodes
+  std::vector<PathStep> path_;  // reused between episodes
+  // Leaf mode `policy` only: the default policy, and the root's exact belief over the model's
+  // tabular states (from the belief at reset, then by Bayes' rule from step to step).
+  std::optional<SensingPolicy> policy_;
+  std::vector<double> root_belief_;
+  // The exact belief at each node of the episode's path (path_beliefs_[i] at depth i; the last is
+  // the node the episode ended at).
+  std::vector<std::vector<double>> path_beliefs_;
+  std::vector<double> belief_scratch_;
   std::vector<pomdp::StepResult> one_step_each_;  // reused between particles
 };
 
