@@ -10,7 +10,7 @@ namespace echoplan::solvers {
 namespace {
 // Rollouts of the default policy each time an episode ends at a leaf: they cost a few belief
 // updates each, far less than the episode that reached the leaf.
-constexpr int kRolloutsPerLeafVisit = 4;
+constexpr int kRolloutsPerLeafVisit = 1;
 
 // The belief's marginal over discrete variable 0 as probabilities over the tabular states (for a
 // tabular model, discrete[0] is the state index), absorbing states excluded.
@@ -101,7 +101,7 @@ void AbtSolver::run_episode(Rng& rng) {
       node->particles.push_back(state);
       evaluate_particle(*node, state, rng);
     }
-    if (visit_as_leaf(*node, depth)) {
+    if (leaf_or_expand(*node, depth)) {
       if (policy_) {
         node->leaf.add_rollouts(*policy_, path_beliefs_.back(), options().max_depth - depth,
                                 kRolloutsPerLeafVisit, rng);

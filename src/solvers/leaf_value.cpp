@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "common/error.h"
+#include "solvers/identification_solver.h"
 
 namespace echoplan::solvers {
 
@@ -28,6 +29,13 @@ const char* leaf_mode_name(LeafMode mode) {
       return "rollout";
   }
   return "?";
+}
+
+LeafMode default_leaf_mode(const std::string& solver, const pomdp::Model& model) {
+  const pomdp::TabularModel* tables = model.tabular();
+  if (solver == "abt" && tables != nullptr && !identification_shape_problem(*tables))
+    return LeafMode::policy;
+  return LeafMode::lookahead;
 }
 
 namespace {

@@ -39,6 +39,10 @@ enum class LeafMode { policy, lookahead, heuristic, rollout };
 LeafMode parse_leaf_mode(const std::string& text);
 const char* leaf_mode_name(LeafMode mode);
 
+// The leaf value a solver uses unless told otherwise: `policy` for ABT on a tabular identification
+// problem (it measured best there, docs/BENCHMARKS.md), `lookahead` everywhere else.
+LeafMode default_leaf_mode(const std::string& solver, const pomdp::Model& model);
+
 struct LeafOptions {
   LeafMode mode = LeafMode::lookahead;
   int expand_after = 4;  // >= 1: visits a node spends as a leaf before it is expanded

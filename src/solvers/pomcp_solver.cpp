@@ -17,7 +17,7 @@ double PomcpSolver::simulate(BeliefNode& node, pomdp::State state, int depth, Rn
   const pomdp::Model& m = model();
   ++node.visits;
   if (depth > 0) node.particles.push_back(state);
-  if (visit_as_leaf(node, depth)) {
+  if (leaf_or_expand(node, depth)) {
     node.leaf.add(options().leaf, m, state, options().max_depth - depth, rng);
     return node.leaf.value();
   }

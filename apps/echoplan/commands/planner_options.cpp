@@ -36,8 +36,9 @@ void add_planner_options(CLI::App& cmd, PlannerFlags& f) {
   cmd.add_option("--exploration", f.exploration,
                  "UCB exploration constant c, reward units (default: the problem file's)");
   cmd.add_option("--depth", f.depth, "Maximum search depth (default: the problem file's)");
-  cmd.add_option("--leaf", f.leaf, "Leaf value: lookahead, heuristic or rollout")
-      ->capture_default_str();
+  cmd.add_option("--leaf", f.leaf,
+                 "Leaf value: policy (ABT only), lookahead, heuristic or rollout (default: policy "
+                 "for ABT on an identification problem, else lookahead)");
   cmd.add_option("--expand-after", f.expand_after,
                  "Visits a new node is valued as a leaf before it branches")
       ->capture_default_str();
@@ -50,11 +51,13 @@ void add_planner_options(CLI::App& cmd, PlannerFlags& f) {
 
 namespace {
 
-solvers::SearchOptions search_options(const PlannerFlags& f, const pomdp::Problem& problem) {
+solvers::SearchOptions search_options(const PlannerFlags& f, const pomdp::Problem& problem,
+                                      const std::string& solver) {
   solvers::SearchOptions o;
   o.exploration = f.exploration >= 0 ? f.exploration : problem.planner.exploration;
   o.max_depth = f.depth >= 0 ? f.depth : problem.planner.depth;
-  o.leaf.mode = solvers::parse_leaf_mode(f.leaf);
+  o.leaf.mode = f.leaf.empty() ? solvers::default_leaf_mode(solver, *problem.model)
+                               : solvers::parse_leaf_mode(f.leaf);
   o.leaf.expand_after = f.expand_after;
   o.root_particles = f.root_particles >= 0 ? f.root_particles : problem.belief.particles;
   o.branching.continuous_threshold = f.branch_threshold;
@@ -78,7 +81,7 @@ Planner make_planner(const PlannerFlags& f, const pomdp::Problem& problem,
   if (!f.policy.empty() && p.name != "offline")
     throw InputError("--policy is for --solver offline; the " + p.name +
                      " solver plans online and would ignore it");
-  p.options = search_options(f, problem);
+  p.options = search_options(f, problem, p.name);
   p.budget = budget(f, problem);
   if (p.name == "offline") {
     // The policy file when given, else the point-based solver run now (to its default precision or

@@ -23,7 +23,7 @@ struct PlannerFlags {
   // Search options; a negative value means "the problem file's (or the built-in) default".
   double exploration = -1;
   int depth = -1;
-  std::string leaf = "lookahead";
+  std::string leaf;  // empty: solvers::default_leaf_mode()
   int expand_after = solvers::LeafOptions{}.expand_after;
   int root_particles = -1;
   double branch_threshold = 0.0;
