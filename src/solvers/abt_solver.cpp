@@ -73,11 +73,24 @@ void AbtSolver::root_particle_added(BeliefNode& root, const pomdp::State& state,
 double AbtSolver::action_value(const BeliefNode& node, int a,
                                const std::vector<double>* belief) const {
   const ActionNode& action = *node.actions[a];
-  const double immediate =
-      belief ? policy_->expected_reward(*belief, a)
-             : node.particle_reward_sums[a] / static_cast<double>(node.particles_evaluated);
-  return immediate +
-         model().spec().discount * action.future_sum / static_cast<double>(action.visits);
+  const double gamma = model().spec().discount;
+  if (!belief)
+    return node.particle_reward_sums[a] / static_cast<double>(node.particles_evaluated) +
+           gamma * action.future_sum / static_cast<double>(action.visits);
+  // With the exact belief, the children are weighted by P(o | b, a) instead of by how often the
+  // episodes happened to hear o (observations never heard yet share the weight of those that were,
+  // in proportion); outcomes that end the episode count 0.
+  double future = 0.0;
+  if (!action.children.empty()) {
+    double weighted = 0.0, seen = 0.0;
+    for (const ObservationChild& child : action.children) {
+      const double p = policy_->observation_probability(*belief, a, child.observation.index);
+      weighted += p * child.node->value;
+      seen += p;
+    }
+    if (seen > 0.0) future = policy_->live_probability(*belief, a) * weighted / seen;
+  }
+  return policy_->expected_reward(*belief, a) + gamma * future;
 }
 
 void AbtSolver::run_episode(Rng& rng) {

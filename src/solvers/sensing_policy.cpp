@@ -72,6 +72,21 @@ double SensingPolicy::update(const std::vector<double>& belief, int a, int o,
   return total;
 }
 
+double SensingPolicy::observation_probability(const std::vector<double>& belief, int a,
+                                              int o) const {
+  const int S = num_states_;
+  const double* e = &emission_[static_cast<std::size_t>(a * num_observations_ + o) * S];
+  double p = 0.0;
+  for (int s = 0; s < S; ++s) p += belief[s] * e[s];
+  return p;
+}
+
+double SensingPolicy::live_probability(const std::vector<double>& belief, int a) const {
+  double p = 0.0;
+  for (int s = 0; s < num_states_; ++s) p += belief[s] * stay_[a * num_states_ + s];
+  return p;
+}
+
 double SensingPolicy::expected_reward(const std::vector<double>& belief, int a) const {
   double r = 0.0;
   for (int s = 0; s < num_states_; ++s) r += belief[s] * reward_[s * num_actions_ + a];

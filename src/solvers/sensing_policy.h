@@ -46,6 +46,11 @@ class SensingPolicy {
                 std::vector<double>& out) const;
   // True for an action that ends the episode from every live state.
   bool is_terminal(int action) const { return terminal_[action]; }
+  // P(o | b, a) for a sensing action, counting only outcomes that keep the episode going.
+  double observation_probability(const std::vector<double>& belief, int action,
+                                 int observation) const;
+  // P(the episode goes on | b, a): Σ_s b(s) stay(s, a).
+  double live_probability(const std::vector<double>& belief, int action) const;
   // Σ_s b(s) R(s, a).
   double expected_reward(const std::vector<double>& belief, int action) const;
   // The best terminal action's expected reward under `belief`.
