@@ -23,8 +23,9 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
   limits.expansions = options.expansions_per_belief;
 
   Certificate c;
-  if (!solver.refine(solver.root(), limits)) ++c.unconverged_beliefs;
-  c.vstar = solver.value(solver.root());
+  solvers::RefineLimits root_limits = limits;
+  root_limits.expansions = std::max(options.root_expansions, options.expansions_per_belief);
+  if (!solver.refine(solver.root(), root_limits)) ++c.unconverged_beliefs;
   const double gamma = solver.discount();
   std::vector<double> regrets;
   // Every decision's loss with its node, to list the worst at the end.
@@ -56,6 +57,7 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
       d.loss_lower = std::max(0.0, v.lower - q.upper);
       r.regret += weight * d.loss;
       r.regret_lower += weight * d.loss_lower;
+      r.bound_gap += weight * (v.gap() + q.gap());
       visited.push_back({d, node});
       ++c.decisions;
       weight *= gamma;
@@ -81,12 +83,15 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
       if (!solver.refine(node, limits)) ++c.unconverged_beliefs;
       r.regret += weight * solver.value(node).upper;
       r.regret_lower += weight * solver.value(node).lower;
+      r.bound_gap += weight * solver.value(node).gap();
     }
     regrets.push_back(r.regret);
     c.regret_lower_mean += r.regret_lower / static_cast<double>(trials.size());
+    c.bound_gap_mean += r.bound_gap / static_cast<double>(trials.size());
     c.trials.push_back(r);
   }
   c.regret = mean_ci95(regrets);
+  c.vstar = solver.value(solver.root());
 
   // The worst decisions, with the action that was best there.
   std::sort(visited.begin(), visited.end(),

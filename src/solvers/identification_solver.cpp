@@ -71,7 +71,9 @@ std::optional<std::string> identification_shape_problem(const pomdp::TabularMode
   return std::nullopt;
 }
 
-IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m, std::size_t max_nodes) {
+IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m,
+                                           const IdentificationOptions& options)
+    : options_(options) {
   if (auto why = identification_shape_problem(m)) {
     throw std::invalid_argument("not an identification problem: " + *why);
   }
@@ -82,7 +84,7 @@ IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m, std::si
   for (int s = 0; s < num_states_; ++s)
     if (!m.terminal(s)) live_states_.push_back(s);
   num_live_ = static_cast<int>(live_states_.size());
-  max_nodes_ = max_nodes > 0 ? max_nodes : default_max_nodes(num_live_);
+  max_nodes_ = options.max_nodes > 0 ? options.max_nodes : default_max_nodes(num_live_);
 
   const int L = num_live_, O = num_observations_, A = num_actions_;
   kind_.assign(A, ActionKind::terminal);
@@ -110,6 +112,25 @@ IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m, std::si
       known_value_[l] = std::max(known_value_[l], v);
     }
   }
+  // The plans every belief starts with: commit now (one vector per terminal action). The upper
+  // bound's vectors: each action followed by knowing the state (its FIB vectors, since the state
+  // is fixed); the corners are then the known-state values.
+  std::vector<std::vector<double>> one_more_sensing(A, std::vector<double>(L));
+  double reward_max = 0.0, reward_min = 0.0;
+  for (int a = 0; a < A; ++a) {
+    for (int l = 0; l < L; ++l) {
+      const double r = reward_[a * L + l];
+      reward_max = std::max(reward_max, r);
+      reward_min = std::min(reward_min, r);
+      one_more_sensing[a][l] =
+          kind_[a] == ActionKind::terminal ? r : r + discount_ * stay_[a * L + l] * known_value_[l];
+    }
+    if (kind_[a] == ActionKind::terminal)
+      plans_.add(AlphaVector{a, std::vector<double>(&reward_[a * L], &reward_[a * L] + L)});
+  }
+  upper_points_ = SawtoothUpperBound(std::move(one_more_sensing),
+                                     (reward_max - reward_min) / (1.0 - discount_));
+
   std::uint64_t state = 0x6964656e74696679ULL;  // "identify"
   pair_code_.resize(std::size_t(A) * O);
   for (Key& k : pair_code_) k = Key{splitmix64(state), splitmix64(state)};
@@ -121,6 +142,7 @@ IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m, std::si
   for (int l = 0; l < L; ++l) b0[l] = b0_all[live_states_[l]] / total;
   insert(Key{}, b0.data(), 0.0, nullptr);
   belief_scratch_.resize(L);
+  plan_scratch_.resize(L);
   children_scratch_.resize(O);
 }
 
@@ -130,12 +152,13 @@ double IdentificationSolver::expected_reward(const double* b, int a) const {
   return r;
 }
 
-Bounds IdentificationSolver::frontier_bounds(const double* b) const {
+Bounds IdentificationSolver::simple_bounds(const double* b, double* plan) const {
   double lower = -std::numeric_limits<double>::infinity(), upper = lower;
+  int best = -1;
   for (int a = 0; a < num_actions_; ++a) {
     const double r = expected_reward(b, a);
     if (kind_[a] == ActionKind::terminal) {
-      lower = std::max(lower, r);
+      if (r > lower) lower = r, best = a;
       upper = std::max(upper, r);
     } else {
       double future = 0.0;
@@ -144,7 +167,29 @@ Bounds IdentificationSolver::frontier_bounds(const double* b) const {
       upper = std::max(upper, r + discount_ * future);
     }
   }
+  if (plan != nullptr)
+    std::copy(&reward_[best * num_live_], &reward_[(best + 1) * num_live_], plan);
   return {lower, std::max(lower, upper)};
+}
+
+Bounds IdentificationSolver::frontier_bounds(const double* b, double* plan) const {
+  const BeliefVector belief(b, b + num_live_);
+  const AlphaVector& best = plans_.vectors()[plans_.best_index(belief)];
+  const double lower = dot(best.values, belief);
+  if (plan != nullptr) std::copy(best.values.begin(), best.values.end(), plan);
+  // Without points the sawtooth is max over the one-more-sensing vectors.
+  return {lower, std::max(lower, upper_points_.value(belief))};
+}
+
+void IdentificationSolver::refresh(NodeId node) {
+  const double* b = node_belief(node);
+  double* plan = &plan_[std::size_t(node) * num_live_];
+  const Bounds f = frontier_bounds(b, plan_scratch_.data());
+  if (f.lower > lower_[node]) {
+    lower_[node] = f.lower;
+    std::copy(plan_scratch_.begin(), plan_scratch_.end(), plan);
+  }
+  upper_[node] = std::max(lower_[node], std::min(upper_[node], f.upper));
 }
 
 double IdentificationSolver::child_belief(const double* b, int a, int o, double* out) const {
@@ -177,7 +222,8 @@ IdentificationSolver::NodeId IdentificationSolver::insert(const Key& key, const 
     counts_.resize(counts_.size() + pairs, 0);
   log_reach_.push_back(log_reach);
   keys_.push_back(key);
-  const Bounds f = frontier_bounds(b);
+  plan_.resize(plan_.size() + num_live_);
+  const Bounds f = simple_bounds(b, &plan_[std::size_t(id) * num_live_]);
   lower_.push_back(f.lower);
   upper_.push_back(f.upper);
   expanded_at_.push_back(std::numeric_limits<double>::infinity());
@@ -215,29 +261,37 @@ IdentificationSolver::NodeId IdentificationSolver::child(NodeId node, int action
 
 Bounds IdentificationSolver::value(NodeId node) const { return {lower_[node], upper_[node]}; }
 
-Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView>& children) const {
+Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView>& children,
+                                       double* plan) const {
   const double* b = node_belief(node);
   const double r = expected_reward(b, a);
+  const int L = num_live_;
+  if (plan != nullptr) std::copy(&reward_[a * L], &reward_[a * L] + L, plan);
   if (kind_[a] == ActionKind::terminal) return {r, r};
   double* scratch = belief_scratch_.data();
+  double* child_plan = plan_scratch_.data();
   Bounds q{r, r};
   for (int o = 0; o < num_observations_; ++o) {
     ChildView& c = children[o];
     c = ChildView{};
+    const double* e = &emission_[(std::size_t(a) * num_observations_ + o) * L];
     const Key key = child_key(node, a, o);
     if (auto it = index_.find(key); it != index_.end()) {
       c.id = it->second;
       // The probability still comes from this node's belief (the child's belief is normalised).
-      const double* e = &emission_[(std::size_t(a) * num_observations_ + o) * num_live_];
-      for (int l = 0; l < num_live_; ++l) c.probability += b[l] * e[l];
+      for (int l = 0; l < L; ++l) c.probability += b[l] * e[l];
       c.bounds = value(c.id);
+      if (plan != nullptr)
+        std::copy(&plan_[std::size_t(c.id) * L], &plan_[std::size_t(c.id) * L] + L, child_plan);
     } else {
       c.probability = child_belief(b, a, o, scratch);
       if (c.probability <= 0.0) continue;
-      c.bounds = frontier_bounds(scratch);
+      c.bounds = simple_bounds(scratch, child_plan);
     }
     q.lower += discount_ * c.probability * c.bounds.lower;
     q.upper += discount_ * c.probability * c.bounds.upper;
+    if (plan != nullptr)
+      for (int l = 0; l < L; ++l) plan[l] += discount_ * e[l] * child_plan[l];
   }
   return q;
 }
@@ -265,23 +319,52 @@ std::vector<double> IdentificationSolver::belief(NodeId node) const {
 }
 
 bool IdentificationSolver::backup(NodeId node) {
+  const int L = num_live_;
+  std::vector<double> plan(L), best_plan(L);
   double lower = -std::numeric_limits<double>::infinity(), upper = lower;
+  int best_action = 0;
   for (int a = 0; a < num_actions_; ++a) {
-    const Bounds q = lookahead(node, a, children_scratch_);
-    lower = std::max(lower, q.lower);
+    const Bounds q = lookahead(node, a, children_scratch_, plan.data());
+    if (q.lower > lower) {
+      lower = q.lower;
+      best_action = a;
+      best_plan.swap(plan);
+    }
     upper = std::max(upper, q.upper);
   }
   // Both the old and the new bounds are sound, so keep the tighter of each.
-  const bool tightened = lower > lower_[node] || upper < upper_[node];
-  lower_[node] = std::max(lower_[node], lower);
-  upper_[node] = std::min(upper_[node], upper);
-  return tightened;
+  const bool raised = lower > lower_[node], lowered = upper < upper_[node];
+  const double* b = node_belief(node);
+  if (raised) {
+    lower_[node] = lower;
+    std::copy(best_plan.begin(), best_plan.end(), &plan_[std::size_t(node) * L]);
+    // Stored only when it beats the plans at this belief: a plan that does not would never be the
+    // maximum where it was found, and every stored plan costs every later frontier evaluation.
+    if (options_.plan_lower_bound && plans_.size() < options_.max_frontier_entries &&
+        lower > plans_.value(BeliefVector(b, b + L)) + options_.frontier_margin)
+      plans_.add(AlphaVector{best_action, best_plan});
+  }
+  if (lowered) {
+    upper_[node] = std::max(lower_[node], upper);
+    if (options_.sawtooth_upper_bound &&
+        upper_points_.num_points() < options_.max_frontier_entries) {
+      const BeliefVector belief(b, b + L);
+      if (upper_[node] < upper_points_.value(belief) - options_.frontier_margin)
+        upper_points_.add(belief, upper_[node]);
+    }
+  }
+  return raised || lowered;
 }
 
 void IdentificationSolver::expand(NodeId node, double delta, int forced_action, Budget& budget) {
   const bool forced = forced_action >= 0;
-  if (!forced && std::exp(log_reach_[node]) * (upper_[node] - lower_[node]) <= delta) return;
+  const double reach = std::exp(log_reach_[node]);
+  if (!forced && reach * (upper_[node] - lower_[node]) <= delta) return;
   if (!forced && expanded_at_[node] <= delta) return;
+  // New nodes start with the cheap bounds; the plans and points are consulted only for a node
+  // about to be expanded, which they may spare.
+  refresh(node);
+  if (!forced && reach * (upper_[node] - lower_[node]) <= delta) return;
   if (budget.exhausted(*this)) return;
   ++expansions_;
   ++budget.expansions;
@@ -304,12 +387,73 @@ void IdentificationSolver::expand(NodeId node, double delta, int forced_action, 
   if (!budget.stopped && !forced) expanded_at_[node] = std::min(expanded_at_[node], delta);
 }
 
+bool IdentificationSolver::trial(NodeId start, int forced_action, double epsilon, Budget& budget) {
+  // Far deeper than any useful trial: a belief this deep is certain or its reach is negligible.
+  constexpr int kMaxDepth = 10000;
+  const std::size_t nodes_before = num_nodes();
+  std::vector<ChildView> children(num_observations_);
+  std::vector<NodeId> path{start};
+  bool changed = false;
+  double threshold = epsilon;  // ε γ^-t
+  NodeId node = start;
+  for (int depth = 0; depth < kMaxDepth; ++depth) {
+    const bool forced = depth == 0 && forced_action >= 0;
+    const Bounds before = value(node);
+    refresh(node);
+    changed = changed || value(node).lower > before.lower || value(node).upper < before.upper;
+    if (!forced && upper_[node] - lower_[node] <= threshold) break;
+    if (budget.exhausted(*this)) break;
+    // Children are made when their parent is on a trial (so later lookaheads read them instead of
+    // evaluating the frontier again); only the chosen action's are refreshed.
+    for (int a = 0; a < num_actions_; ++a) {
+      if (kind_[a] != ActionKind::sensing || (forced && a != forced_action)) continue;
+      for (int o = 0; o < num_observations_; ++o)
+        if (index_.find(child_key(node, a, o)) == index_.end()) child(node, a, o);
+    }
+    int action = forced_action;
+    if (!forced) {
+      // HSVI's choice: the action whose upper bound is highest (an optimistic policy).
+      double best = -std::numeric_limits<double>::infinity();
+      for (int a = 0; a < num_actions_; ++a) {
+        const double upper = lookahead(node, a, children).upper;
+        if (upper > best) best = upper, action = a;
+      }
+    }
+    if (kind_[action] == ActionKind::terminal) break;  // its value is exact
+    lookahead(node, action, children);
+    for (const ChildView& c : children)
+      if (c.id != kEnded) refresh(c.id);
+    lookahead(node, action, children);
+    // The observation whose child's gap, weighted by its probability, exceeds the child's share
+    // of ε the most.
+    int observation = -1;
+    double best_excess = 0.0;
+    for (int o = 0; o < num_observations_; ++o) {
+      const ChildView& c = children[o];
+      if (c.probability <= 0.0) continue;
+      const double excess = c.probability * (c.bounds.gap() - threshold / discount_);
+      if (excess > best_excess) best_excess = excess, observation = o;
+    }
+    if (observation < 0) break;
+    node = children[observation].id != kEnded ? children[observation].id
+                                              : child(node, action, observation);
+    path.push_back(node);
+    threshold /= discount_;
+  }
+  for (auto it = path.rbegin(); it != path.rend(); ++it) {
+    ++expansions_;
+    ++budget.expansions;
+    changed = backup(*it) || changed;
+  }
+  return changed || num_nodes() > nodes_before;
+}
+
 bool IdentificationSolver::Budget::exhausted(const IdentificationSolver& solver) {
   if (stopped) return true;
   if (limits.expansions > 0 && expansions >= limits.expansions) stopped = true;
   if (solver.num_nodes() >= solver.max_nodes_) stopped = true;
-  // The clock is read every 256 expansions only.
-  if (limits.seconds > 0.0 && (expansions & 255) == 0 && seconds_since(start) >= limits.seconds)
+  // The clock is read every 16 expansions only.
+  if (limits.seconds > 0.0 && (expansions & 15) == 0 && seconds_since(start) >= limits.seconds)
     stopped = true;
   return stopped;
 }
@@ -325,6 +469,21 @@ bool IdentificationSolver::refine_to(NodeId node, int action, const RefineLimits
   // δ is absolute (in units of weighted gap at b0); relative to this node it is δ / reach(node).
   // Starting coarse spreads the first passes over the likely beliefs instead of one deep corner;
   // a node already expanded to some δ (an earlier call) resumes below it.
+  if (options_.search == IdentificationOptions::Search::trials) {
+    // ε starts at half the gap (coarse trials spread over the likely beliefs first) and halves
+    // whenever a trial finds nothing above it to improve.
+    double scale = 0.5;
+    while (gap() > limits.target_gap) {
+      const double epsilon = std::max(limits.target_gap, scale * gap());
+      const bool progress = trial(node, action, epsilon, budget);
+      if (budget.stopped) return gap() <= limits.target_gap;
+      if (!progress) {
+        scale *= 0.5;
+        if (scale < 1e-12) return false;
+      }
+    }
+    return true;
+  }
   const double reach = std::exp(log_reach_[node]);
   double delta = std::min(0.25 * gap() * reach, 0.5 * expanded_at_[node]);
   while (gap() > limits.target_gap) {

@@ -6,20 +6,31 @@
 //   b(s) ∝ b0(s) · Π_(a,o) [stay(s, a) · O(a, s, o)]^n_ao
 // where n_ao counts how often sensing action a heard o. Histories with the same counts share one
 // belief, so a memoised search over count vectors reaches beliefs arbitrarily deep without the
-// approximation a point-based solver makes. Every node holds sound bounds:
-//   lower: the best terminal action now, max_a R(b, a)      (a policy anyone can follow)
-//   upper: max(commit now, max over sensing a of R(b, a) + γ Σ_s b(s) stay(s, a) V_known(s))
-//          where V_known(s) is the value when s is known (sensing once more reveals everything)
-// and Bellman backups over children tighten both. Refinement works in passes of shrinking δ: a
-// pass expands, depth first, every belief whose reach · (upper − lower) exceeds δ (skipping actions
-// whose upper bound is below what the belief already guarantees), and backs the bounds up; δ
-// halves until the gap at the belief asked about meets the target. A belief's reach is
-// γ^t · P(one history to it) · (the number of histories with its counts, at most
-// Π_a n_a! / Π_o n_ao!): every history with the same counts is equally likely, so this bounds what
-// the belief's gap can add to the gap at b0, whichever way it is reached. Weighting by reach stops
-// the search down paths of negligible probability, which at γ = 0.99 a per-depth threshold (HSVI's
-// ε γ^-t) would follow for hundreds of steps. Every call is anytime: the bounds are valid whenever
-// it stops.
+// approximation a point-based solver makes. Every node holds sound bounds, and Bellman backups over
+// its children tighten them. A belief met for the first time (the frontier) gets:
+//   lower: the best plan among those already found, max_α α·b (HSVI's lower bound). Every backed-up
+//          node has a plan (its best action by the lower bound, then its children's plans) whose
+//          value from each live state is the vector α = R(·, a) + γ Σ_o stay·O(a, ·, o) α_child(o);
+//          the plans start as "commit now" (one vector per terminal action).
+//   upper: the sawtooth interpolation (solvers/sawtooth_upper_bound.h) between the known-state
+//          values at the corners and the (belief, upper bound) of every backed-up node, capped by
+//          max(commit now, max over sensing a of R(b, a) + γ Σ_s b(s) stay(s, a) V_known(s)),
+//          where V_known(s) is the value when s is known ("one more sensing reveals the state").
+// Both are valid at any belief because V* over the live states is convex (a POMDP value).
+//
+// Refinement works in passes of shrinking δ (the default): a pass expands, depth first, every
+// belief whose reach · (upper − lower) exceeds δ (skipping actions whose upper bound is below what
+// the belief already guarantees), and backs the bounds up; δ halves until the gap at the belief
+// asked about meets the target. A belief's reach is γ^t · P(one history to it) · (the number of
+// histories with its counts, at most Π_a n_a! / Π_o n_ao!): every history with the same counts is
+// equally likely, so this bounds what the belief's gap can add to the gap at b0, whichever way it
+// is reached. Weighting by reach stops the search down paths of negligible probability. New nodes
+// start with the cheap bounds (commit now / one more sensing); the stored plans and points are
+// consulted when a node is about to be expanded, which they may spare. The alternative,
+// HSVI-style trials (Smith & Simmons 2005: descend the action with the highest upper bound and the
+// observation with the largest P(o) · (gap − ε γ^-t), back up along the path) measured worse here
+// (docs/BENCHMARKS.md) and is kept as an option for that comparison. Every call is anytime: the
+// bounds are valid whenever it stops.
 //
 // Shape accepted (identification_shape() explains a refusal in words):
 //   - absorbing states: every action keeps them with reward 0 (Cassandra's goal-state rule);
@@ -44,6 +55,8 @@
 #include <vector>
 
 #include "pomdp/model.h"
+#include "solvers/alpha_vector_set.h"
+#include "solvers/sawtooth_upper_bound.h"
 
 namespace echoplan::solvers {
 
@@ -65,6 +78,24 @@ struct RefineLimits {
   long expansions = 0;       // node expansions; <= 0 means no limit (repeats on any machine)
 };
 
+// How the solver bounds new beliefs and where it spends its expansions. The defaults are the
+// fastest measured (docs/BENCHMARKS.md); the others are there to measure what each part buys.
+struct IdentificationOptions {
+  enum class Search { trials, passes };
+  Search search = Search::passes;
+  bool plan_lower_bound = true;      // frontier lower bound from backed-up plans (else commit now)
+  bool sawtooth_upper_bound = true;  // frontier upper bound by sawtooth (else one-more-sensing)
+  // A backed-up node's plan (point) joins the frontier's lower (upper) bound only when it beats
+  // that bound at its belief by more than this: every stored plan and point costs every later
+  // frontier evaluation, and small gains are not worth it (reward units).
+  double frontier_margin = 1e-3;
+  // At most this many plans and this many points (the first found, which come from the beliefs
+  // nearest the root): a frontier evaluation costs (plans + points) · states.
+  std::size_t max_frontier_entries = 256;
+  // Memory cap: refinement stops (bounds stay valid) when this many nodes exist; 0: about 2 GB.
+  std::size_t max_nodes = 0;
+};
+
 // Not thread-safe (even const calls share scratch space): one solver per thread.
 class IdentificationSolver {
  public:
@@ -74,9 +105,9 @@ class IdentificationSolver {
   static constexpr NodeId kEnded = -1;
 
   // Reads the tables once (the model is not kept). Throws std::invalid_argument with
-  // identification_shape_problem()'s reason when the model does not qualify. `max_nodes` caps the
-  // memory: refinement stops (bounds stay valid) when that many nodes exist.
-  explicit IdentificationSolver(const pomdp::TabularModel& model, std::size_t max_nodes = 0);
+  // identification_shape_problem()'s reason when the model does not qualify.
+  explicit IdentificationSolver(const pomdp::TabularModel& model,
+                                const IdentificationOptions& options = {});
 
   NodeId root() const { return 0; }
   // The node after sensing action `action` heard observation `observation` at `node`, created if
@@ -106,6 +137,9 @@ class IdentificationSolver {
   double discount() const { return discount_; }
   std::size_t num_nodes() const { return lower_.size(); }
   long expansions() const { return expansions_; }
+  // How many plans bound new beliefs from below, and how many belief points from above.
+  std::size_t num_plans() const { return plans_.size(); }
+  std::size_t num_upper_points() const { return upper_points_.num_points(); }
 
  private:
   enum class ActionKind { sensing, terminal };
@@ -126,13 +160,21 @@ class IdentificationSolver {
   const double* node_belief(NodeId node) const { return &beliefs_[std::size_t(node) * num_live_]; }
   // The child's live belief (unnormalised weight returned) into `out`.
   double child_belief(const double* belief, int action, int observation, double* out) const;
-  Bounds frontier_bounds(const double* belief) const;
+  // Bounds at a belief not backed up yet; its best plan's vector into `plan` when not null.
+  // simple_bounds: commit now / one more sensing (cheap, what new nodes start with);
+  // frontier_bounds: the stored plans and the sawtooth (tighter, costs a pass over both).
+  Bounds simple_bounds(const double* belief, double* plan = nullptr) const;
+  Bounds frontier_bounds(const double* belief, double* plan = nullptr) const;
+  // Tightens a stored node's bounds with what the plans and points know now.
+  void refresh(NodeId node);
   double expected_reward(const double* belief, int action) const;
   NodeId insert(const Key& key, const double* belief, double log_reach,
                 const std::uint16_t* counts);
   Key child_key(NodeId node, int action, int observation) const;
-  // Bounds on Q(node, action) from its children's bounds; fills `children` (one per observation).
-  Bounds lookahead(NodeId node, int action, std::vector<ChildView>& children) const;
+  // Bounds on Q(node, action) from its children's bounds; fills `children` (one per observation)
+  // and, when `plan` is not null, the vector of the plan "action, then each child's plan".
+  Bounds lookahead(NodeId node, int action, std::vector<ChildView>& children,
+                   double* plan = nullptr) const;
   // Bellman backup of both bounds; true when either tightened.
   bool backup(NodeId node);
   // What one refine call may still spend.
@@ -146,6 +188,9 @@ class IdentificationSolver {
   // Expands `node` and, recursively, every descendant whose reach · gap exceeds `delta`, then
   // backs it up; at `node` only `forced_action` when it is >= 0 (and regardless of its gap).
   void expand(NodeId node, double delta, int forced_action, Budget& budget);
+  // One HSVI trial from `node` (first action `forced_action` when >= 0); true when it tightened a
+  // bound or made a node.
+  bool trial(NodeId node, int forced_action, double epsilon, Budget& budget);
   // refine() (action < 0) or refine_action().
   bool refine_to(NodeId node, int action, const RefineLimits& limits);
 
@@ -159,11 +204,15 @@ class IdentificationSolver {
   std::vector<double> stay_;         // [a * L + l] = P(state kept | live l, a)
   std::vector<double> known_value_;  // [l] = V*(state l known)
   std::vector<Key> pair_code_;       // [a * O + o]
+  IdentificationOptions options_;
+  AlphaVectorSet plans_;                           // over live states: the frontier's lower bound
+  SawtoothUpperBound upper_points_{{{0.0}}, 0.0};  // over live states: the frontier's upper bound
 
   // Nodes: flat arrays indexed by NodeId.
   std::vector<double> beliefs_;  // [node * L + l], normalised over live states
   std::vector<Key> keys_;
   std::vector<double> lower_, upper_;
+  std::vector<double> plan_;  // [node * L + l]: the plan achieving lower_ (lower_ = plan · belief)
   // log of the node's reach weight γ^t · (number of histories with its counts, bounded) ·
   // P(one such history): an upper bound on how much its gap can add to the gap at b0.
   std::vector<double> log_reach_;
@@ -174,6 +223,7 @@ class IdentificationSolver {
   long expansions_ = 0;
   std::vector<ChildView> children_scratch_;     // backup()'s lookahead
   mutable std::vector<double> belief_scratch_;  // lookahead()'s child belief
+  mutable std::vector<double> plan_scratch_;    // lookahead()'s child plan
 };
 
 }  // namespace echoplan::solvers

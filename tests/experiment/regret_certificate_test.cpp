@@ -67,6 +67,40 @@ TEST(RegretCertificate, HandComputedRegretsOnPerfectSensing) {
   ASSERT_FALSE(c.worst.empty());
   EXPECT_NEAR(c.worst[0].loss, 110.0, 1e-9);
   EXPECT_EQ(c.worst[0].best_action, 3);  // move_to_B: the mug belongs at B
+  // Every value here is exact, so the certificate adds no looseness of its own.
+  EXPECT_NEAR(c.bound_gap_mean, 0.0, 1e-9);
+  fs::remove(steps);
+}
+
+TEST(RegretCertificate, LoosenessBoundsTheDistanceBetweenTheTwoRegrets) {
+  // The noisy seed problem with a search limit too small to converge: the bounds stay valid, and
+  // the two regret figures (from the bounds' two ends) differ by at most the summed gaps reported.
+  const pomdp::Problem problem =
+      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+  const auto& model = dynamic_cast<const pomdp::ObjectIdentificationModel&>(*problem.model);
+  const fs::path steps = write_steps("loose",
+                                     "0,0,strike,coffee_mug,0,0,0,0,-1,10\n"
+                                     "0,1,strike,coffee_mug,0,0,0,0,-1,10\n"
+                                     "0,2,move_to_B,none,0,0,0,0,10,10\n"
+                                     "1,0,slide,plastic_cup,0,0,0,0,-1,10\n"
+                                     "1,1,move_to_A,none,0,0,0,0,10,10\n");
+  solvers::IdentificationSolver solver(*model.tabular());
+  CertifyOptions options;
+  options.decision_gap = 1e-9;
+  options.expansions_per_belief = 30;
+  options.root_expansions = 30;
+  const Certificate c =
+      certify_trials(solver, read_steps_csv(steps, model.spec()), options, steps.string());
+  ASSERT_EQ(c.trials.size(), 2u);
+  EXPECT_GT(c.unconverged_beliefs, 0);
+  EXPECT_GT(c.bound_gap_mean, 0.0);
+  double mean = 0.0;
+  for (const TrialRegret& t : c.trials) {
+    EXPECT_GE(t.regret, t.regret_lower);
+    EXPECT_LE(t.regret - t.regret_lower, t.bound_gap + 1e-9);
+    mean += t.bound_gap / 2.0;
+  }
+  EXPECT_NEAR(c.bound_gap_mean, mean, 1e-12);
   fs::remove(steps);
 }
 

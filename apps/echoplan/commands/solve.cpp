@@ -14,7 +14,7 @@
 #include "common/error.h"
 #include "pomdp/problem.h"
 #include "solvers/identification_solver.h"
-#include "solvers/offline/dense_pomdp.h"
+#include "solvers/offline/flat_pomdp.h"
 #include "solvers/offline/point_based_solver.h"
 #include "solvers/offline/policy_file.h"
 
@@ -31,7 +31,22 @@ struct SolveArgs {
   long max_trials = 0;
   std::string method = "auto";
   std::string out;
+  std::string exact_search = "passes";
+  std::string exact_frontier = "full";
+  double frontier_margin = solvers::IdentificationOptions{}.frontier_margin;
+  std::size_t frontier_entries = solvers::IdentificationOptions{}.max_frontier_entries;
 };
+
+solvers::IdentificationOptions exact_options(const SolveArgs& args) {
+  solvers::IdentificationOptions options;
+  options.search = args.exact_search == "passes" ? solvers::IdentificationOptions::Search::passes
+                                                 : solvers::IdentificationOptions::Search::trials;
+  options.plan_lower_bound = args.exact_frontier == "full" || args.exact_frontier == "plans";
+  options.sawtooth_upper_bound = args.exact_frontier == "full" || args.exact_frontier == "sawtooth";
+  options.frontier_margin = args.frontier_margin;
+  options.max_frontier_entries = args.frontier_entries;
+  return options;
+}
 
 std::string action_label(const pomdp::Problem& problem, int a) {
   const auto& names = problem.model->spec().action_names;
@@ -42,7 +57,7 @@ std::string action_label(const pomdp::Problem& problem, int a) {
 // Q-value of every action at b0 to the same gap.
 void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
                const pomdp::TabularModel& tables) {
-  solvers::IdentificationSolver solver(tables);
+  solvers::IdentificationSolver solver(tables, exact_options(args));
   const auto root = solver.root();
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] {
@@ -65,8 +80,11 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
     const double slice_start = elapsed();
     const bool reached = solver.refine(root, limits);
     const solvers::Bounds v = solver.value(root);
-    spdlog::info("{:7.1f} s  expansions {:8}  V* in [{:.6f}, {:.6f}]  gap {:.3g}  nodes {}",
-                 elapsed(), solver.expansions(), v.lower, v.upper, v.gap(), solver.num_nodes());
+    spdlog::info(
+        "{:7.1f} s  expansions {:8}  V* in [{:.6f}, {:.6f}]  gap {:.3g}  nodes {}  plans {}  "
+        "points {}",
+        elapsed(), solver.expansions(), v.lower, v.upper, v.gap(), solver.num_nodes(),
+        solver.num_plans(), solver.num_upper_points());
     // The relative target shrinks with |V| as the bounds close in: check it again.
     if (reached && v.gap() <= target(v)) break;
     // Otherwise go on only when the slice ran out of time (not stalled, not at the node cap).
@@ -74,11 +92,14 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
   }
   const solvers::Bounds v = solver.value(root);
   const bool converged = v.gap() <= target(v);
+  const double root_seconds = elapsed();
+  const long root_expansions = solver.expansions();
   std::vector<solvers::Bounds> q(solver.num_actions());
   for (int a = 0; a < solver.num_actions(); ++a) {
     solvers::RefineLimits limits;
     limits.target_gap = target(v);
     limits.seconds = std::max(0.1, args.time_limit - elapsed());
+    limits.expansions = args.max_trials;  // per action, so that the figures repeat too
     solver.refine_action(root, a, limits);
     q[a] = solver.action_value(root, a);
   }
@@ -96,7 +117,11 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
     out["target_gap"] = target(v);
     out["converged"] = converged;
     out["expansions"] = solver.expansions();
+    out["root_expansions"] = root_expansions;  // before the per-action refinement
+    out["root_seconds"] = root_seconds;
     out["nodes"] = solver.num_nodes();
+    out["plans"] = solver.num_plans();
+    out["upper_points"] = solver.num_upper_points();
     out["seconds"] = seconds;
     out["best_action"] = action_label(problem, best);
     nlohmann::ordered_json actions = nlohmann::ordered_json::object();
@@ -109,8 +134,9 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
   fmt::print("V*(b0) of {} (exact identification solver)\n", args.problem);
   fmt::print("  lower {:.6f}\n  upper {:.6f}\n  gap   {:.3g} ({} target {:.3g})\n", v.lower,
              v.upper, v.gap(), converged ? "reached" : "NOT reached:", target(v));
-  fmt::print("  {} expansions in {:.2f} s, {} belief nodes\n", solver.expansions(), seconds,
-             solver.num_nodes());
+  fmt::print("  {} expansions in {:.2f} s, {} belief nodes, {} plans, {} upper-bound points\n",
+             solver.expansions(), seconds, solver.num_nodes(), solver.num_plans(),
+             solver.num_upper_points());
   fmt::print("first action: {} (Q* bounds per action at b0:", action_label(problem, best));
   for (int a = 0; a < solver.num_actions(); ++a)
     fmt::print(" {} [{:.4f}, {:.4f}]", action_label(problem, a), q[a].lower, q[a].upper);
@@ -150,8 +176,7 @@ void run_solve(const SolveArgs& args) {
     spdlog::info("not an identification problem ({}): using the point-based solver",
                  *shape_problem);
   }
-  auto dense =
-      std::make_shared<const off::DensePomdp>(off::make_dense_pomdp(*tables, args.problem));
+  auto dense = std::make_shared<const off::FlatPomdp>(off::make_flat_pomdp(*tables, args.problem));
 
   off::SolverOptions options;
   options.epsilon = args.epsilon;
@@ -174,7 +199,7 @@ void run_solve(const SolveArgs& args) {
   auto action_name = [&](int a) {
     return a < static_cast<int>(action_names.size()) ? action_names[a] : std::to_string(a);
   };
-  const off::BeliefVector& b0 = dense->initial_belief;
+  const solvers::BeliefVector& b0 = dense->initial_belief;
   const int best = solver.best_action(b0);
   const std::vector<off::ValueBounds> q = solver.action_bounds(b0);
 
@@ -249,6 +274,25 @@ void add_solve_command(CLI::App& app) {
   cmd->add_option("--max-iterations", args->max_trials,
                   "Stop after this many node expansions (exact) or trials (point-based), 0: no "
                   "limit; unlike --time-limit, the result repeats on any machine")
+      ->capture_default_str();
+  cmd->add_option("--exact-search", args->exact_search,
+                  "Exact solver's exploration: trials (HSVI-style, gap-directed) or passes "
+                  "(every belief whose weighted gap exceeds a shrinking threshold)")
+      ->check(CLI::IsMember({"trials", "passes"}))
+      ->capture_default_str();
+  cmd->add_option("--exact-frontier", args->exact_frontier,
+                  "Exact solver's bounds at new beliefs: full (backed-up plans below, sawtooth "
+                  "above), plans, sawtooth, or simple (commit now / one more sensing)")
+      ->check(CLI::IsMember({"full", "plans", "sawtooth", "simple"}))
+      ->capture_default_str();
+  cmd->add_option("--frontier-margin", args->frontier_margin,
+                  "Exact solver: a backed-up plan or point joins the frontier bounds only when it "
+                  "improves them by more than this (reward units)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--frontier-entries", args->frontier_entries,
+                  "Exact solver: at most this many plans and this many sawtooth points (each "
+                  "costs every later frontier evaluation)")
       ->capture_default_str();
   cmd->add_option(
       "--out", args->out,

@@ -2,7 +2,7 @@
 
 namespace echoplan::solvers::offline {
 
-BeliefVector predict(const DensePomdp& pomdp, const BeliefVector& belief, int action) {
+BeliefVector predict(const FlatPomdp& pomdp, const BeliefVector& belief, int action) {
   BeliefVector predicted(pomdp.num_states, 0.0);
   for (int s = 0; s < pomdp.num_states; ++s) {
     if (belief[s] == 0.0) continue;
@@ -13,7 +13,7 @@ BeliefVector predict(const DensePomdp& pomdp, const BeliefVector& belief, int ac
   return predicted;
 }
 
-BeliefExpansion expand(const DensePomdp& pomdp, const BeliefVector& belief, int action) {
+BeliefExpansion expand(const FlatPomdp& pomdp, const BeliefVector& belief, int action) {
   const int S = pomdp.num_states, O = pomdp.num_observations;
   const BeliefVector predicted = predict(pomdp, belief, action);
   BeliefExpansion out;
@@ -40,7 +40,7 @@ BeliefExpansion expand(const DensePomdp& pomdp, const BeliefVector& belief, int 
   return out;
 }
 
-double expected_reward(const DensePomdp& pomdp, const BeliefVector& belief, int action) {
+double expected_reward(const FlatPomdp& pomdp, const BeliefVector& belief, int action) {
   double r = 0.0;
   for (int s = 0; s < pomdp.num_states; ++s) r += belief[s] * pomdp.reward_at(s, action);
   return r;

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "solvers/offline/dense_pomdp.h"
+#include "solvers/offline/flat_pomdp.h"
 
 namespace echoplan::solvers::offline {
 
@@ -18,11 +18,11 @@ struct BeliefExpansion {
 };
 
 // The predicted belief sum_s P(s' | s, a) b(s), before any observation.
-BeliefVector predict(const DensePomdp& pomdp, const BeliefVector& belief, int action);
+BeliefVector predict(const FlatPomdp& pomdp, const BeliefVector& belief, int action);
 
-BeliefExpansion expand(const DensePomdp& pomdp, const BeliefVector& belief, int action);
+BeliefExpansion expand(const FlatPomdp& pomdp, const BeliefVector& belief, int action);
 
 // Expected immediate reward sum_s b(s) R(s, a) (terminal states contribute 0).
-double expected_reward(const DensePomdp& pomdp, const BeliefVector& belief, int action);
+double expected_reward(const FlatPomdp& pomdp, const BeliefVector& belief, int action);
 
 }  // namespace echoplan::solvers::offline

@@ -9,7 +9,7 @@ namespace echoplan::solvers::offline {
 namespace {
 
 // min and max of the non-terminal rewards, widened to include 0 (terminal states earn 0 forever).
-std::pair<double, double> reward_range(const DensePomdp& pomdp) {
+std::pair<double, double> reward_range(const FlatPomdp& pomdp) {
   double lo = 0.0, hi = 0.0;
   for (double r : pomdp.reward) {
     lo = std::min(lo, r);
@@ -20,12 +20,12 @@ std::pair<double, double> reward_range(const DensePomdp& pomdp) {
 
 }  // namespace
 
-double value_span(const DensePomdp& pomdp) {
+double value_span(const FlatPomdp& pomdp) {
   const auto [lo, hi] = reward_range(pomdp);
   return (hi - lo) / (1.0 - pomdp.discount);
 }
 
-std::vector<AlphaVector> blind_policy_vectors(const DensePomdp& pomdp,
+std::vector<AlphaVector> blind_policy_vectors(const FlatPomdp& pomdp,
                                               const InitialBoundOptions& options) {
   const int S = pomdp.num_states;
   const double g = pomdp.discount;
@@ -56,7 +56,7 @@ std::vector<AlphaVector> blind_policy_vectors(const DensePomdp& pomdp,
   return out;
 }
 
-std::vector<std::vector<double>> fast_informed_bound(const DensePomdp& pomdp,
+std::vector<std::vector<double>> fast_informed_bound(const FlatPomdp& pomdp,
                                                      const InitialBoundOptions& options) {
   const int S = pomdp.num_states, A = pomdp.num_actions, O = pomdp.num_observations;
   const double g = pomdp.discount;

@@ -9,7 +9,7 @@
 namespace echoplan::solvers::offline {
 
 OfflinePolicySolver::OfflinePolicySolver(pomdp::ModelPtr model,
-                                         std::shared_ptr<const DensePomdp> pomdp,
+                                         std::shared_ptr<const FlatPomdp> pomdp,
                                          AlphaVectorSet vectors)
     : model_(std::move(model)), pomdp_(std::move(pomdp)), vectors_(std::move(vectors)) {
   const pomdp::TabularModel* tables = model_ ? model_->tabular() : nullptr;
@@ -69,13 +69,13 @@ std::unique_ptr<Solver> make_offline_solver(const pomdp::ModelPtr& model,
                      "the offline solver needs a problem with tables (discrete states, "
                      "actions and observations)");
   }
-  auto dense = std::make_shared<const DensePomdp>(make_dense_pomdp(*tables, source));
+  auto flat = std::make_shared<const FlatPomdp>(make_flat_pomdp(*tables, source));
   if (!policy_path.empty()) {
-    return std::make_unique<OfflinePolicySolver>(model, dense, load_policy(policy_path, *dense));
+    return std::make_unique<OfflinePolicySolver>(model, flat, load_policy(policy_path, *flat));
   }
-  PointBasedSolver solver(dense, options);
+  PointBasedSolver solver(flat, options);
   solver.solve();
-  return std::make_unique<OfflinePolicySolver>(model, dense, solver.lower_bound());
+  return std::make_unique<OfflinePolicySolver>(model, flat, solver.lower_bound());
 }
 
 }  // namespace echoplan::solvers::offline

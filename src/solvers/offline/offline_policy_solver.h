@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "pomdp/exact_belief.h"
-#include "solvers/offline/alpha_vector_set.h"
-#include "solvers/offline/dense_pomdp.h"
+#include "solvers/alpha_vector_set.h"
+#include "solvers/offline/flat_pomdp.h"
 #include "solvers/offline/point_based_solver.h"
 #include "solvers/solver.h"
 
@@ -24,7 +24,7 @@ class OfflinePolicySolver final : public Solver {
  public:
   // `model` must have tables (tabular()), `pomdp` must be made from them, and `vectors` must be
   // non-empty with one value per tabular state; throws std::invalid_argument otherwise.
-  OfflinePolicySolver(pomdp::ModelPtr model, std::shared_ptr<const DensePomdp> pomdp,
+  OfflinePolicySolver(pomdp::ModelPtr model, std::shared_ptr<const FlatPomdp> pomdp,
                       AlphaVectorSet vectors);
 
   // Starts from `belief` when it is an ExactBelief over the same model, else from the model's b0.
@@ -46,7 +46,7 @@ class OfflinePolicySolver final : public Solver {
 
  private:
   pomdp::ModelPtr model_;
-  std::shared_ptr<const DensePomdp> pomdp_;
+  std::shared_ptr<const FlatPomdp> pomdp_;
   AlphaVectorSet vectors_;
   std::unique_ptr<pomdp::ExactBelief> belief_;
 };

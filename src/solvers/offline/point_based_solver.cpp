@@ -20,7 +20,7 @@ double seconds_since(Clock::time_point start) {
 
 }  // namespace
 
-PointBasedSolver::PointBasedSolver(std::shared_ptr<const DensePomdp> pomdp, SolverOptions options)
+PointBasedSolver::PointBasedSolver(std::shared_ptr<const FlatPomdp> pomdp, SolverOptions options)
     : pomdp_(std::move(pomdp)),
       options_(options),
       upper_(fast_informed_bound(*pomdp_), value_span(*pomdp_)),
@@ -33,7 +33,7 @@ ValueBounds PointBasedSolver::bounds(const BeliefVector& belief) const {
 }
 
 std::vector<ValueBounds> PointBasedSolver::action_bounds(const BeliefVector& belief) const {
-  const DensePomdp& m = *pomdp_;
+  const FlatPomdp& m = *pomdp_;
   std::vector<ValueBounds> out(m.num_actions);
   for (int a = 0; a < m.num_actions; ++a) {
     const BeliefExpansion children = expand(m, belief, a);
@@ -51,7 +51,7 @@ std::vector<ValueBounds> PointBasedSolver::action_bounds(const BeliefVector& bel
 }
 
 bool PointBasedSolver::backup(const BeliefVector& belief) {
-  const DensePomdp& m = *pomdp_;
+  const FlatPomdp& m = *pomdp_;
   const int S = m.num_states, O = m.num_observations;
   double best_upper = -std::numeric_limits<double>::infinity();
   double best_lower = -std::numeric_limits<double>::infinity();
@@ -104,7 +104,7 @@ double PointBasedSolver::target_gap() const {
 }
 
 void PointBasedSolver::trial(double target_gap) {
-  const DensePomdp& m = *pomdp_;
+  const FlatPomdp& m = *pomdp_;
   std::vector<BeliefVector> path{m.initial_belief};
   // HSVI's width test: at depth t the gap needed shrinks with gamma^t, i.e. the allowance grows.
   double allowance = target_gap;

@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "common/rng.h"
-#include "solvers/offline/alpha_vector_set.h"
-#include "solvers/offline/dense_pomdp.h"
-#include "solvers/offline/sawtooth_upper_bound.h"
+#include "solvers/alpha_vector_set.h"
+#include "solvers/offline/flat_pomdp.h"
+#include "solvers/sawtooth_upper_bound.h"
 
 namespace echoplan::solvers::offline {
 
@@ -64,7 +64,7 @@ class PointBasedSolver {
 
   // Initialises the bounds (blind policy, fast informed bound). The tables are shared, never
   // changed.
-  PointBasedSolver(std::shared_ptr<const DensePomdp> pomdp, SolverOptions options = {});
+  PointBasedSolver(std::shared_ptr<const FlatPomdp> pomdp, SolverOptions options = {});
 
   // Runs trials until the target gap or the time limit. May be called again to continue.
   SolverProgress solve(const ProgressCallback& on_progress = {});
@@ -79,7 +79,7 @@ class PointBasedSolver {
 
   const AlphaVectorSet& lower_bound() const { return lower_; }
   const SawtoothUpperBound& upper_bound() const { return upper_; }
-  const DensePomdp& pomdp() const { return *pomdp_; }
+  const FlatPomdp& pomdp() const { return *pomdp_; }
   SolverProgress progress() const;
 
  private:
@@ -89,7 +89,7 @@ class PointBasedSolver {
   bool backup(const BeliefVector& belief);
   double target_gap() const;
 
-  std::shared_ptr<const DensePomdp> pomdp_;
+  std::shared_ptr<const FlatPomdp> pomdp_;
   SolverOptions options_;
   AlphaVectorSet lower_;
   SawtoothUpperBound upper_;

@@ -59,7 +59,7 @@ void save_policy(const PointBasedSolver& solver, const std::string& path) {
   if (!file) throw InputError(path, 0, "cannot write the policy file");
 }
 
-AlphaVectorSet load_policy(const std::string& path, const DensePomdp& pomdp) {
+AlphaVectorSet load_policy(const std::string& path, const FlatPomdp& pomdp) {
   std::ifstream file(path);
   if (!file) throw InputError(path, 0, "cannot open the policy file");
   const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};

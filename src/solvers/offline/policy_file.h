@@ -10,7 +10,7 @@
 
 #include <string>
 
-#include "solvers/offline/alpha_vector_set.h"
+#include "solvers/alpha_vector_set.h"
 #include "solvers/offline/point_based_solver.h"
 
 namespace echoplan::solvers::offline {
@@ -21,6 +21,6 @@ void save_policy(const PointBasedSolver& solver, const std::string& path);
 
 // Reads vectors written by save_policy and checks they fit `pomdp` (state and action counts).
 // Throws InputError naming the file, the line (for JSON syntax errors) and the problem.
-AlphaVectorSet load_policy(const std::string& path, const DensePomdp& pomdp);
+AlphaVectorSet load_policy(const std::string& path, const FlatPomdp& pomdp);
 
 }  // namespace echoplan::solvers::offline

@@ -1,62 +1,16 @@
-// The pieces the solver is built from: alpha-vector pruning, sawtooth interpolation, initial
-// bounds.
+// The pieces the solver is built from: initial bounds and belief
+// expansion.
 #include <gtest/gtest.h>
 
-#include "solvers/offline/alpha_vector_set.h"
 #include "solvers/offline/belief_expansion.h"
 #include "solvers/offline/initial_bounds.h"
-#include "solvers/offline/sawtooth_upper_bound.h"
 #include "test_problems.h"
 
 namespace echoplan::solvers::offline {
 namespace {
 
-TEST(AlphaVectorSet, PrunesPointwiseDominatedVectors) {
-  AlphaVectorSet set;
-  EXPECT_TRUE(set.add({0, {1.0, 1.0}}));
-  EXPECT_FALSE(set.add({1, {0.5, 1.0}}));  // dominated by the first
-  EXPECT_TRUE(set.add({2, {0.0, 3.0}}));   // better at the right corner
-  EXPECT_EQ(set.size(), 2u);
-  EXPECT_TRUE(set.add({3, {2.0, 1.0}}));  // dominates the first, which goes
-  ASSERT_EQ(set.size(), 2u);
-  EXPECT_EQ(set.best_action({1.0, 0.0}), 3);
-  EXPECT_EQ(set.best_action({0.0, 1.0}), 2);
-  EXPECT_DOUBLE_EQ(set.value({0.5, 0.5}), 1.5);
-}
-
-TEST(SawtoothUpperBound, InterpolatesBetweenCornersAndPoints) {
-  // Corners 10 and 20 (from one FIB vector); a point at the middle with value 5.
-  SawtoothUpperBound bound({{10.0, 20.0}}, 100.0);
-  EXPECT_DOUBLE_EQ(bound.value({0.5, 0.5}), 15.0);
-  EXPECT_TRUE(bound.add({0.5, 0.5}, 5.0));
-  EXPECT_DOUBLE_EQ(bound.value({0.5, 0.5}), 5.0);
-  // At (0.75, 0.25): corners give 12.5; ratio min(0.75/0.5, 0.25/0.5) = 0.5; 12.5 + 0.5 * (5 - 15).
-  EXPECT_DOUBLE_EQ(bound.value({0.75, 0.25}), 7.5);
-  EXPECT_DOUBLE_EQ(bound.value({1.0, 0.0}), 10.0);
-  // A point no better than the bound is not kept.
-  EXPECT_FALSE(bound.add({0.75, 0.25}, 8.0));
-  EXPECT_EQ(bound.num_points(), 1u);
-  // A corner update lowers the corner and what is interpolated from it.
-  EXPECT_TRUE(bound.add({1.0, 0.0}, 6.0));
-  EXPECT_DOUBLE_EQ(bound.value({1.0, 0.0}), 6.0);
-  // Corners now 6, 20: at (0.75, 0.25) 9.5 + 0.5 * (5 - 13) = 5.5.
-  EXPECT_DOUBLE_EQ(bound.value({0.75, 0.25}), 5.5);
-}
-
-TEST(SawtoothUpperBound, PruneKeepsTheBoundAndDropsImpliedPoints) {
-  SawtoothUpperBound bound({{10.0, 10.0}}, 100.0);
-  ASSERT_TRUE(bound.add({0.5, 0.5}, 4.0));
-  ASSERT_TRUE(bound.add({0.25, 0.75}, 5.0));  // the first point implies 7 here, so it is kept
-  // Lower the middle so the second point is implied: at (0.25, 0.75) 10 + 0.5 * (0 - 10) = 5.
-  ASSERT_TRUE(bound.add({0.5, 0.5}, 0.0));
-  const double before = bound.value({0.3, 0.7});
-  bound.prune();
-  EXPECT_EQ(bound.num_points(), 1u);
-  EXPECT_DOUBLE_EQ(bound.value({0.3, 0.7}), before);
-}
-
 TEST(InitialBounds, BlindPolicyAndFibOnTiger) {
-  const DensePomdp m = make_dense_pomdp(testing::tiger());
+  const FlatPomdp m = make_flat_pomdp(testing::tiger());
   // Listening forever: -1 / (1 - 0.95) = -20 in both states.
   const std::vector<AlphaVector> blind = blind_policy_vectors(m);
   ASSERT_EQ(blind.size(), 3u);
@@ -76,7 +30,7 @@ TEST(InitialBounds, BlindPolicyAndFibOnTiger) {
 }
 
 TEST(BeliefExpansion, TigerListenPosterior) {
-  const DensePomdp m = make_dense_pomdp(testing::tiger());
+  const FlatPomdp m = make_flat_pomdp(testing::tiger());
   const BeliefExpansion e = expand(m, {0.5, 0.5}, 0);
   EXPECT_DOUBLE_EQ(e.observation_probability[0], 0.5);
   EXPECT_DOUBLE_EQ(e.next_belief[0][0], 0.85);
@@ -88,11 +42,10 @@ TEST(BeliefExpansion, TigerListenPosterior) {
 }
 
 TEST(BeliefExpansion, ImpossibleObservationKeepsThePrediction) {
-  const DensePomdp m = make_dense_pomdp(testing::audio_objects());
-  // After a sorting action everything is in the terminal state, which only ever emits observation
-  // 0.
+  const FlatPomdp m = make_flat_pomdp(testing::audio_objects());
+  // After a sorting action everything is in the terminal state, which only ever emits "none".
   const BeliefExpansion e = expand(m, {0.25, 0.25, 0.25, 0.25, 0.0}, testing::kMoveA);
-  EXPECT_EQ(e.observation_probability[0], 1.0);
+  EXPECT_EQ(e.observation_probability[testing::kNone], 1.0);
   EXPECT_EQ(e.observation_probability[2], 0.0);
   EXPECT_EQ(e.next_belief[2], (BeliefVector{0, 0, 0, 0, 1}));
 }

@@ -14,8 +14,8 @@ namespace {
 using testing::audio_objects;
 using testing::tiger;
 
-std::shared_ptr<const DensePomdp> dense(const pomdp::TabularModel& m) {
-  return std::make_shared<const DensePomdp>(make_dense_pomdp(m));
+std::shared_ptr<const FlatPomdp> dense(const pomdp::TabularModel& m) {
+  return std::make_shared<const FlatPomdp>(make_flat_pomdp(m));
 }
 
 // Published V*(uniform) of Tiger at discount 0.95 (Cassandra's pomdp.org), rounded to 3 decimals,
@@ -125,7 +125,7 @@ Bracket expectimax(const testing::TableModel& m, const std::vector<double>& b, i
   Bracket best{commit, commit};
   for (int a : {testing::kSlide, testing::kStrike}) {
     Bracket q{-1.0, -1.0};
-    for (int o = 0; o < 4; ++o) {
+    for (int o = 0; o < m.num_observations(); ++o) {
       std::vector<double> next(5, 0.0);
       double p = 0.0;
       for (int s = 0; s < 5; ++s) {

@@ -23,7 +23,7 @@ class SolvedSeedProblem : public ::testing::Test {
   void SetUp() override {
     problem =
         pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.pomdp");
-    dense = std::make_shared<const DensePomdp>(make_dense_pomdp(*problem.model->tabular()));
+    dense = std::make_shared<const FlatPomdp>(make_flat_pomdp(*problem.model->tabular()));
     SolverOptions options;
     options.max_trials = 300;  // a fixed amount of work: the same vectors on every machine
     solver = std::make_unique<PointBasedSolver>(dense, options);
@@ -33,7 +33,7 @@ class SolvedSeedProblem : public ::testing::Test {
     return OfflinePolicySolver(problem.model, dense, solver->lower_bound());
   }
   pomdp::Problem problem;
-  std::shared_ptr<const DensePomdp> dense;
+  std::shared_ptr<const FlatPomdp> dense;
   std::unique_ptr<PointBasedSolver> solver;
   SolverProgress result;
 };
@@ -108,7 +108,7 @@ TEST_F(SolvedSeedProblem, PolicyFileRoundTrip) {
 void expect_rejected(const std::string& text, int line, const std::string& fragment) {
   const auto path = std::filesystem::temp_directory_path() / "echoplan_offline_bad_policy.json";
   std::ofstream(path) << text;
-  const DensePomdp m = make_dense_pomdp(testing::tiger());
+  const FlatPomdp m = make_flat_pomdp(testing::tiger());
   try {
     load_policy(path.string(), m);
     ADD_FAILURE() << "accepted: " << text;
@@ -136,7 +136,7 @@ TEST(PolicyFile, RejectsBadFiles) {
 }
 
 TEST(PolicyFile, MissingFileIsAnInputError) {
-  const DensePomdp m = make_dense_pomdp(testing::tiger());
+  const FlatPomdp m = make_flat_pomdp(testing::tiger());
   EXPECT_THROW(load_policy("/nonexistent/policy.json", m), InputError);
 }
 

@@ -7,10 +7,10 @@
 namespace echoplan::solvers::offline {
 namespace {
 
-std::shared_ptr<const DensePomdp> load_tables(const std::string& name) {
+std::shared_ptr<const FlatPomdp> load_tables(const std::string& name) {
   const std::string path = std::string(ECHOPLAN_SOURCE_DIR) + "/problems/" + name;
   const pomdp::Problem problem = pomdp::load_problem(path);
-  return std::make_shared<const DensePomdp>(make_dense_pomdp(*problem.model->tabular(), path));
+  return std::make_shared<const FlatPomdp>(make_flat_pomdp(*problem.model->tabular(), path));
 }
 
 TEST(ShippedProblems, TigerFileReproducesItsKnownValue) {

@@ -1,10 +1,12 @@
-// Small POMDPs written out as tables for the offline solver's tests, independent of any file
-// loader.
+// The shipped problems (problems/*.pomdp) as plain tables for the offline solver's tests: loaded
+// from the files users run, then copied into nested vectors a test can edit.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "pomdp/model.h"
+#include "pomdp/problem.h"
 
 namespace echoplan::solvers::offline::testing {
 
@@ -28,53 +30,38 @@ class TableModel : public pomdp::TabularModel {
   std::vector<double> initial_belief() const override { return b0; }
 };
 
-// Tiger (Kaelbling, Littman & Cassandra 1998): states tiger-left, tiger-right; actions listen,
-// open-left, open-right; listening is right with probability 0.85; opening resets the problem.
-inline TableModel tiger() {
-  TableModel m;
-  m.gamma = 0.95;
-  const std::vector<std::vector<double>> stay{{1, 0}, {0, 1}}, reset{{0.5, 0.5}, {0.5, 0.5}};
-  m.T = {stay, reset, reset};
-  const std::vector<std::vector<double>> hear{{0.85, 0.15}, {0.15, 0.85}};
-  m.Z = {hear, reset, reset};
-  m.R = {{-1, -100, 10}, {-1, 10, -100}};
-  m.is_terminal = {false, false};
-  m.b0 = {0.5, 0.5};
-  return m;
+// A shipped problem file's tables, copied so that a test can change one entry.
+inline TableModel shipped_tables(const std::string& file) {
+  const pomdp::Problem problem =
+      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/" + file);
+  const pomdp::TabularModel& m = *problem.model->tabular();
+  TableModel t;
+  const int S = m.num_states(), A = m.num_actions(), O = m.num_observations();
+  t.T.assign(A, std::vector<std::vector<double>>(S, std::vector<double>(S)));
+  t.Z.assign(A, std::vector<std::vector<double>>(S, std::vector<double>(O)));
+  t.R.assign(S, std::vector<double>(A));
+  for (int a = 0; a < A; ++a) {
+    for (int s = 0; s < S; ++s) {
+      for (int s2 = 0; s2 < S; ++s2) t.T[a][s][s2] = m.transition(s, a, s2);
+      for (int o = 0; o < O; ++o) t.Z[a][s][o] = m.observation(a, s, o);
+      t.R[s][a] = m.reward(s, a);
+    }
+  }
+  for (int s = 0; s < S; ++s) t.is_terminal.push_back(m.terminal(s));
+  t.b0 = m.initial_belief();
+  t.gamma = m.discount();
+  return t;
 }
 
-// The seed report's problem (section 3.3): objects 0..3 and a terminal state 4; actions slide,
-// strike, move_to_A, move_to_B; objects 0 and 2 belong at A, 1 and 3 at B; discount 0.99.
-inline constexpr int kSlide = 0, kStrike = 1, kMoveA = 2, kMoveB = 3, kDone = 4;
-inline TableModel audio_objects() {
-  TableModel m;
-  m.gamma = 0.99;
-  const int S = 5;
-  std::vector<std::vector<double>> identity(S, std::vector<double>(S, 0.0)), to_done = identity;
-  for (int s = 0; s < S; ++s) {
-    identity[s][s] = 1.0;
-    to_done[s][kDone] = 1.0;
-  }
-  m.T = {identity, identity, to_done, to_done};
-  // P(o | object, action) from section 3.3; the terminal state and the sorting actions always give
-  // observation 0 (uninformative).
-  const std::vector<std::vector<double>> slide{{0.5, 0.3, 0.15, 0.05},
-                                               {0.11, 0.67, 0.11, 0.11},
-                                               {0.11, 0.11, 0.67, 0.11},
-                                               {0.01, 0.01, 0.48, 0.5},
-                                               {1, 0, 0, 0}};
-  const std::vector<std::vector<double>> strike{{0.6, 0.05, 0.3, 0.05},
-                                                {0.05, 0.6, 0.3, 0.05},
-                                                {0.11, 0.11, 0.67, 0.11},
-                                                {0.11, 0.11, 0.11, 0.67},
-                                                {1, 0, 0, 0}};
-  const std::vector<std::vector<double>> silent(S, {1, 0, 0, 0});
-  m.Z = {slide, strike, silent, silent};
-  m.R = {
-      {-1, -1, 10, -100}, {-1, -1, -100, 10}, {-1, -1, 10, -100}, {-1, -1, -100, 10}, {0, 0, 0, 0}};
-  m.is_terminal = {false, false, false, false, true};
-  m.b0 = {0.25, 0.25, 0.25, 0.25, 0.0};
-  return m;
-}
+// Tiger (Kaelbling, Littman & Cassandra 1998; problems/tiger.pomdp): states tiger-left,
+// tiger-right; actions listen, open-left, open-right; listening is right with probability 0.85;
+// opening resets the problem; discount 0.95.
+inline TableModel tiger() { return shipped_tables("tiger.pomdp"); }
+
+// The seed report's problem (section 3.3; problems/audio_objects.pomdp): objects 0..3 and a
+// terminal state 4; actions slide, strike, move_to_A, move_to_B; objects 0 and 2 belong at A, 1
+// and 3 at B; observations the four classes and "none" (heard only after sorting); discount 0.99.
+inline constexpr int kSlide = 0, kStrike = 1, kMoveA = 2, kMoveB = 3, kDone = 4, kNone = 4;
+inline TableModel audio_objects() { return shipped_tables("audio_objects.pomdp"); }
 
 }  // namespace echoplan::solvers::offline::testing

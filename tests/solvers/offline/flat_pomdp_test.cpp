@@ -1,6 +1,6 @@
 // Copying a TabularModel: terminal states made exact, and tables that are not distributions
 // rejected.
-#include "solvers/offline/dense_pomdp.h"
+#include "solvers/offline/flat_pomdp.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@ namespace {
 
 void expect_rejected(const testing::TableModel& m, const std::string& fragment) {
   try {
-    make_dense_pomdp(m, "problem.yaml");
+    make_flat_pomdp(m, "problem.yaml");
     ADD_FAILURE() << "accepted a model that should fail with: " << fragment;
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "problem.yaml");
@@ -20,12 +20,12 @@ void expect_rejected(const testing::TableModel& m, const std::string& fragment) 
   }
 }
 
-TEST(DensePomdp, TerminalStatesAreAbsorbingWithZeroReward) {
+TEST(FlatPomdp, TerminalStatesAreAbsorbingWithZeroReward) {
   testing::TableModel m = testing::audio_objects();
   // Even if the tables give the terminal state a reward and a way out, it stays put at 0.
   m.R[testing::kDone] = {5, 5, 5, 5};
   m.T[testing::kSlide][testing::kDone] = {1, 0, 0, 0, 0};
-  const DensePomdp d = make_dense_pomdp(m);
+  const FlatPomdp d = make_flat_pomdp(m);
   for (int a = 0; a < d.num_actions; ++a) {
     EXPECT_EQ(d.reward_at(testing::kDone, a), 0.0);
     ASSERT_EQ(d.successors_of(testing::kDone, a).size(), 1u);
@@ -35,7 +35,7 @@ TEST(DensePomdp, TerminalStatesAreAbsorbingWithZeroReward) {
   EXPECT_EQ(d.successors_of(0, testing::kStrike).size(), 1u);
 }
 
-TEST(DensePomdp, RejectsTablesThatAreNotDistributions) {
+TEST(FlatPomdp, RejectsTablesThatAreNotDistributions) {
   testing::TableModel m = testing::tiger();
   m.T[0][1] = {0.2, 0.7};
   expect_rejected(m, "transition row of state 1 action 0 sums to 0.9");

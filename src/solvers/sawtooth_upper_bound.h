@@ -14,9 +14,9 @@
 
 #include <vector>
 
-#include "solvers/offline/dense_pomdp.h"
+#include "solvers/alpha_vector_set.h"
 
-namespace echoplan::solvers::offline {
+namespace echoplan::solvers {
 
 class SawtoothUpperBound {
  public:
@@ -57,4 +57,4 @@ class SawtoothUpperBound {
   std::size_t points_at_last_prune_ = 0;
 };
 
-}  // namespace echoplan::solvers::offline
+}  // namespace echoplan::solvers

@@ -11,18 +11,16 @@
 #include <vector>
 
 #include "pomdp/model.h"
+#include "solvers/alpha_vector_set.h"  // BeliefVector
 
 namespace echoplan::solvers::offline {
-
-// A belief over the states of a DensePomdp: num_states probabilities summing to 1.
-using BeliefVector = std::vector<double>;
 
 struct Successor {
   int state = 0;
   double probability = 0.0;  // > 0
 };
 
-struct DensePomdp {
+struct FlatPomdp {
   int num_states = 0;
   int num_actions = 0;
   int num_observations = 0;
@@ -49,6 +47,6 @@ struct DensePomdp {
 // Copies and checks `model`. Throws InputError (naming `source`, e.g. the problem file) when a
 // probability row does not sum to 1 within 1e-6, a probability is negative, the discount is not in
 // (0, 1), or the model has no states, actions or observations.
-DensePomdp make_dense_pomdp(const pomdp::TabularModel& model, const std::string& source = "");
+FlatPomdp make_flat_pomdp(const pomdp::TabularModel& model, const std::string& source = "");
 
 }  // namespace echoplan::solvers::offline

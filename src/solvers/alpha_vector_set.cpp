@@ -1,9 +1,9 @@
-#include "solvers/offline/alpha_vector_set.h"
+#include "solvers/alpha_vector_set.h"
 
 #include <algorithm>
 #include <limits>
 
-namespace echoplan::solvers::offline {
+namespace echoplan::solvers {
 
 double dot(const std::vector<double>& a, const std::vector<double>& b) {
   double sum = 0.0;
@@ -51,4 +51,4 @@ double AlphaVectorSet::value(const BeliefVector& belief) const {
   return dot(vectors_[best_index(belief)].values, belief);
 }
 
-}  // namespace echoplan::solvers::offline
+}  // namespace echoplan::solvers

@@ -1,34 +1,38 @@
-#include "solvers/offline/dense_pomdp.h"
+#include "solvers/offline/flat_pomdp.h"
 
 #include <fmt/core.h>
 
 #include <cmath>
 
 #include "common/error.h"
+#include "pomdp/distribution.h"
 
 namespace echoplan::solvers::offline {
 
 namespace {
 
-// Rows written by hand in problem files carry a few decimals; 1e-6 accepts rounding, not mistakes.
-constexpr double kRowSumTolerance = 1e-6;
-
-void check_row(const std::string& source, double sum, const std::string& what) {
-  if (std::abs(sum - 1.0) > kRowSumTolerance) {
-    throw InputError(source, 0, fmt::format("{} sums to {:.9g}, not 1", what, sum));
+// One probability row checked by the project's rule (pomdp/distribution.h), reported with what it
+// is.
+void require_distribution(const std::string& source, const std::vector<double>& row,
+                          const std::string& what, const std::string& entry_name) {
+  const pomdp::RowCheck check = pomdp::check_row(row.data(), row.size());
+  if (check.ok()) return;
+  if (!check.in_range) {
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      if (!(row[i] >= 0.0 && row[i] <= 1.0 + pomdp::kProbabilityTolerance)) {
+        throw InputError(source, 0,
+                         fmt::format("{} of {} is {:.9g}, not a probability",
+                                     fmt::format(fmt::runtime(entry_name), i), what, row[i]));
+      }
+    }
   }
-}
-
-void check_probability(const std::string& source, double p, const std::string& what) {
-  if (!(p >= 0.0 && p <= 1.0 + kRowSumTolerance)) {
-    throw InputError(source, 0, fmt::format("{} is {:.9g}, not a probability", what, p));
-  }
+  throw InputError(source, 0, fmt::format("{} sums to {:.9g}, not 1", what, check.sum));
 }
 
 }  // namespace
 
-DensePomdp make_dense_pomdp(const pomdp::TabularModel& model, const std::string& source) {
-  DensePomdp d;
+FlatPomdp make_flat_pomdp(const pomdp::TabularModel& model, const std::string& source) {
+  FlatPomdp d;
   d.num_states = model.num_states();
   d.num_actions = model.num_actions();
   d.num_observations = model.num_observations();
@@ -65,14 +69,14 @@ DensePomdp make_dense_pomdp(const pomdp::TabularModel& model, const std::string&
         throw InputError(source, 0,
                          fmt::format("reward of state {} action {} is not finite", s, a));
       }
-      double sum = 0.0;
+      std::vector<double> probabilities(S);
       for (int s2 = 0; s2 < S; ++s2) {
-        const double p = model.transition(s, a, s2);
-        check_probability(source, p, fmt::format("P(s'={} | s={}, a={})", s2, s, a));
-        if (p > 0.0) row.push_back({s2, p});
-        sum += p;
+        probabilities[s2] = model.transition(s, a, s2);
+        if (probabilities[s2] > 0.0) row.push_back({s2, probabilities[s2]});
       }
-      check_row(source, sum, fmt::format("the transition row of state {} action {}", s, a));
+      require_distribution(source, probabilities,
+                           fmt::format("the transition row of state {} action {}", s, a),
+                           "P(s'={})");
     }
   }
 
@@ -81,14 +85,14 @@ DensePomdp make_dense_pomdp(const pomdp::TabularModel& model, const std::string&
   d.observation.resize(static_cast<std::size_t>(A) * S * O);
   for (int a = 0; a < A; ++a) {
     for (int s2 = 0; s2 < S; ++s2) {
-      double sum = 0.0;
+      std::vector<double> probabilities(O);
       for (int o = 0; o < O; ++o) {
-        const double p = model.observation(a, s2, o);
-        check_probability(source, p, fmt::format("P(o={} | s'={}, a={})", o, s2, a));
-        d.observation[(static_cast<std::size_t>(a) * S + s2) * O + o] = p;
-        sum += p;
+        probabilities[o] = model.observation(a, s2, o);
+        d.observation[(static_cast<std::size_t>(a) * S + s2) * O + o] = probabilities[o];
       }
-      check_row(source, sum, fmt::format("the observation row of action {} state {}", a, s2));
+      require_distribution(source, probabilities,
+                           fmt::format("the observation row of action {} state {}", a, s2),
+                           "P(o={})");
     }
   }
 
@@ -98,12 +102,7 @@ DensePomdp make_dense_pomdp(const pomdp::TabularModel& model, const std::string&
         source, 0,
         fmt::format("the initial belief has {} entries for {} states", d.initial_belief.size(), S));
   }
-  double sum = 0.0;
-  for (int s = 0; s < S; ++s) {
-    check_probability(source, d.initial_belief[s], fmt::format("initial belief of state {}", s));
-    sum += d.initial_belief[s];
-  }
-  check_row(source, sum, "the initial belief");
+  require_distribution(source, d.initial_belief, "the initial belief", "the entry of state {}");
   return d;
 }
 

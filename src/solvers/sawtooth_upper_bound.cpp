@@ -1,11 +1,11 @@
-#include "solvers/offline/sawtooth_upper_bound.h"
+#include "solvers/sawtooth_upper_bound.h"
 
 #include <algorithm>
 #include <limits>
 
-#include "solvers/offline/alpha_vector_set.h"
+#include "solvers/alpha_vector_set.h"
 
-namespace echoplan::solvers::offline {
+namespace echoplan::solvers {
 
 namespace {
 
@@ -110,4 +110,4 @@ void SawtoothUpperBound::prune() {
   points_at_last_prune_ = points_.size();
 }
 
-}  // namespace echoplan::solvers::offline
+}  // namespace echoplan::solvers

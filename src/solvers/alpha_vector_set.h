@@ -1,13 +1,14 @@
-// The lower bound on V*: a set of alpha vectors, each the value of a conditional plan starting with
+// A lower bound on V*: a set of alpha vectors, each the value of a conditional plan starting with
 // its action. V*(b) >= max_alpha alpha . b, and acting greedily on these vectors earns at least
-// that.
+// that. Used by the offline point-based solver and the exact identification solver.
 #pragma once
 
 #include <vector>
 
-#include "solvers/offline/dense_pomdp.h"
+namespace echoplan::solvers {
 
-namespace echoplan::solvers::offline {
+// A belief as a vector of probabilities, one per state, summing to 1.
+using BeliefVector = std::vector<double>;
 
 struct AlphaVector {
   int action = 0;              // the plan's first action
@@ -35,4 +36,4 @@ class AlphaVectorSet {
 
 double dot(const std::vector<double>& a, const std::vector<double>& b);
 
-}  // namespace echoplan::solvers::offline
+}  // namespace echoplan::solvers
