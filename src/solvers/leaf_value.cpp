@@ -62,10 +62,12 @@ double random_rollout(const pomdp::Model& model, pomdp::State state, int steps_l
 void LeafEstimate::add(const LeafOptions& options, const pomdp::Model& model,
                        const pomdp::State& state, int steps_left, Rng& rng,
                        const std::vector<pomdp::StepResult>* one_step_each) {
+  if (options.mode == LeafMode::policy)
+    throw std::logic_error("LeafEstimate: the policy leaf value is added with add_rollouts()");
   ++count_;
   switch (options.mode) {
     case LeafMode::policy:
-      throw std::logic_error("LeafEstimate: the policy leaf value is added with add_rollouts()");
+      return;  // handled above
     case LeafMode::heuristic:
       sums_.resize(1, 0.0);
       sums_[0] += model.heuristic_value(state);
