@@ -5,12 +5,28 @@
 #include <limits>
 #include <stdexcept>
 
+#include "common/error.h"
+
 namespace echoplan::solvers {
 
-AbtSolver::AbtSolver(pomdp::ModelPtr model, SearchOptions options)
-    : TreeSearchSolver(std::move(model), options) {}
-
 namespace {
+// Rollouts of the default policy each time an episode ends at a leaf: they cost a few belief
+// updates each, far less than the episode that reached the leaf.
+constexpr int kRolloutsPerLeafVisit = 1;
+
+// The belief's marginal over discrete variable 0 as probabilities over the tabular states (for a
+// tabular model, discrete[0] is the state index), absorbing states excluded.
+std::vector<double> tabular_belief(const pomdp::Belief& belief, const pomdp::TabularModel& tables) {
+  const std::vector<double> marginal = belief.discrete_marginal(0);
+  std::vector<double> out(tables.num_states(), 0.0);
+  double total = 0.0;
+  for (int s = 0; s < tables.num_states() && s < static_cast<int>(marginal.size()); ++s)
+    if (!tables.terminal(s)) total += out[s] = marginal[s];
+  if (total > 0.0)
+    for (double& p : out) p /= total;
+  return out;
+}
+
 void add_particle_rewards(BeliefNode& node, const std::vector<double>& rewards, double sign) {
   node.particle_reward_sums.resize(rewards.size(), 0.0);
   for (std::size_t a = 0; a < rewards.size(); ++a)
@@ -18,6 +34,36 @@ void add_particle_rewards(BeliefNode& node, const std::vector<double>& rewards, 
   node.particles_evaluated += sign > 0 ? 1 : -1;
 }
 }  // namespace
+
+AbtSolver::AbtSolver(pomdp::ModelPtr model, SearchOptions options)
+    : TreeSearchSolver(std::move(model), options) {
+  if (this->options().leaf.mode == LeafMode::policy) {
+    const pomdp::TabularModel* tables = this->model().tabular();
+    if (tables == nullptr)
+      throw InputError(
+          "the policy leaf value needs a discrete problem with tables; use --leaf "
+          "lookahead for this one");
+    policy_.emplace(*tables);
+  }
+}
+
+void AbtSolver::reset(const pomdp::Belief& belief, Rng& rng) {
+  TreeSearchSolver::reset(belief, rng);
+  if (policy_) root_belief_ = tabular_belief(belief, *model().tabular());
+}
+
+void AbtSolver::update(int action, const pomdp::Observation& observation,
+                       const pomdp::Belief& belief_after, Rng& rng) {
+  TreeSearchSolver::update(action, observation, belief_after, rng);
+  if (!policy_) return;
+  // The tree's own exact belief follows the real step; the agent's belief (maybe a particle
+  // filter) stands in only when the step is one the tables cannot explain.
+  const bool sensing = !policy_->is_terminal(action) && observation.index >= 0;
+  if (!sensing || policy_->update(root_belief_, action, observation.index, belief_scratch_) <= 0.0)
+    root_belief_ = tabular_belief(belief_after, *model().tabular());
+  else
+    root_belief_.swap(belief_scratch_);
+}
 
 const std::vector<double>& AbtSolver::evaluate_particle(BeliefNode& node, const pomdp::State& state,
                                                         Rng& rng) {
@@ -37,12 +83,42 @@ void AbtSolver::root_particle_added(BeliefNode& root, const pomdp::State& state,
   evaluate_particle(root, state, rng);
 }
 
-double AbtSolver::action_value(const BeliefNode& node, int a) const {
+double AbtSolver::action_value(const BeliefNode& node, int a,
+                               const std::vector<double>* belief) const {
   const ActionNode& action = *node.actions[a];
   // An action whose every episode was revised away counts as untried (NaN, as for a missing node).
   if (action.visits == 0) return std::numeric_limits<double>::quiet_NaN();
-  return node.particle_reward_sums[a] / static_cast<double>(node.particles_evaluated) +
-         model().spec().discount * action.future_sum / static_cast<double>(action.visits);
+  const double gamma = model().spec().discount;
+  if (!belief)
+    return node.particle_reward_sums[a] / static_cast<double>(node.particles_evaluated) +
+           gamma * action.future_sum / static_cast<double>(action.visits);
+  // With the exact belief, the children are weighted by P(o | b, a) instead of by how often the
+  // episodes happened to hear o (observations never heard yet share the weight of those that were,
+  // in proportion); outcomes that end the episode count 0.
+  double future = 0.0;
+  if (!action.children.empty()) {
+    double weighted = 0.0, seen = 0.0;
+    for (const ObservationChild& child : action.children) {
+      if (child.arrivals == 0) continue;  // every episode through it was revised away
+      const double p = policy_->observation_probability(*belief, a, child.observation.index);
+      weighted += p * child.node->value;
+      seen += p;
+    }
+    if (seen > 0.0) future = policy_->live_probability(*belief, a) * weighted / seen;
+  }
+  return policy_->expected_reward(*belief, a) + gamma * future;
+}
+
+void AbtSolver::trace_beliefs(const Episode& episode) {
+  path_beliefs_.assign(1, root_belief_);
+  for (const EpisodeStep& step : episode) {
+    if (step.action < 0 || step.child < 0) break;
+    const ObservationChild& child =
+        step.node->actions[step.action]->children[static_cast<std::size_t>(step.child)];
+    path_beliefs_.emplace_back();
+    policy_->update(path_beliefs_[path_beliefs_.size() - 2], step.action, child.observation.index,
+                    path_beliefs_.back());
+  }
 }
 
 void AbtSolver::refresh_child(ActionNode& action, std::size_t child) {
@@ -75,11 +151,15 @@ void AbtSolver::simulate_from(Episode& episode, BeliefNode* node, pomdp::State s
       const std::vector<double>& rewards = evaluate_particle(*node, state, rng);
       if (keep) step.particle_rewards = rewards;
     }
-    if (visit_as_leaf(*node, depth)) {
+    if (leaf_or_expand(*node, depth)) {
       std::vector<double> before;
       if (keep) before = node->leaf.sums();
-      node->leaf.add(options().leaf, m, state, options().max_depth - depth, rng,
-                     depth > 0 ? &one_step_each_ : nullptr);
+      if (policy_)
+        node->leaf.add_rollouts(*policy_, path_beliefs_[static_cast<std::size_t>(depth)],
+                                options().max_depth - depth, kRolloutsPerLeafVisit, rng);
+      else
+        node->leaf.add(options().leaf, m, state, options().max_depth - depth, rng,
+                       depth > 0 ? &one_step_each_ : nullptr);
       if (keep) {
         step.leaf_contribution = node->leaf.sums();
         before.resize(step.leaf_contribution.size(), 0.0);
@@ -112,6 +192,11 @@ void AbtSolver::simulate_from(Episode& episode, BeliefNode* node, pomdp::State s
     action.future_sum += c.counted_value;
     step.child = static_cast<std::ptrdiff_t>(child);
     episode.push_back(std::move(step));
+    if (policy_) {
+      path_beliefs_.resize(static_cast<std::size_t>(depth) + 2);
+      policy_->update(path_beliefs_[static_cast<std::size_t>(depth)], a, c.observation.index,
+                      path_beliefs_.back());
+    }
     node = c.node.get();
     state = std::move(result.next);
   }
@@ -124,7 +209,7 @@ void AbtSolver::backup(const Episode& episode, std::size_t last) {
     if (step.action >= 0) {
       ActionNode& action = *node.actions[step.action];
       if (step.child >= 0) refresh_child(action, static_cast<std::size_t>(step.child));
-      action.value = action_value(node, step.action);
+      action.value = action_value(node, step.action, step_belief(i));
     }
     recompute_node_value(node);
   }
@@ -135,7 +220,9 @@ void AbtSolver::run_episode(Rng& rng) {
   BeliefNode& top = root();
   for (std::size_t a = 0; a < top.actions.size(); ++a)
     if (top.actions[a] && top.actions[a]->visits > 0)
-      top.actions[a]->value = action_value(top, static_cast<int>(a));
+      top.actions[a]->value =
+          action_value(top, static_cast<int>(a), policy_ ? &root_belief_ : nullptr);
+  if (policy_) path_beliefs_.assign(1, root_belief_);
 
   if (!options().keep_episodes) {
     path_.clear();
@@ -208,6 +295,9 @@ RevisionStats AbtSolver::revise(const ModelChange& change, Rng& rng) {
     throw std::logic_error("revise() needs SearchOptions::keep_episodes: no episodes were kept");
   const pomdp::ModelPtr before = model_ptr();
   replace_model(change.model);
+  // The default policy reads the new tables; the root's exact belief stays what the real steps
+  // made it (the caller's belief switches to the new model from the next update on).
+  if (policy_) policy_.emplace(*model().tabular());
   const bool discrete = model().spec().observation.discrete;
 
   RevisionStats stats;
@@ -240,13 +330,14 @@ RevisionStats AbtSolver::revise(const ModelChange& change, Rng& rng) {
       // The episode leaves through another branch: take its old continuation out of the tree,
       // revalue the nodes it passed (deepest first), then continue it with the search policy.
       ++stats.resimulated_episodes;
+      if (policy_) trace_beliefs(episode);
       for (std::size_t j = episode.size(); j-- > k + 1;) remove_step(episode[j]);
       for (std::size_t j = episode.size(); j-- > k + 1;) {
         const EpisodeStep& gone = episode[j];
         if (gone.action >= 0) {
           ActionNode& a = *gone.node->actions[gone.action];
           if (gone.child >= 0) refresh_child(a, static_cast<std::size_t>(gone.child));
-          a.value = action_value(*gone.node, gone.action);
+          a.value = action_value(*gone.node, gone.action, step_belief(j));
         }
         recompute_node_value(*gone.node);
       }
@@ -261,6 +352,11 @@ RevisionStats AbtSolver::revise(const ModelChange& change, Rng& rng) {
       ++entered.arrivals;
       action.future_sum += entered.counted_value;
       step.child = static_cast<std::ptrdiff_t>(child);
+      if (policy_) {
+        path_beliefs_.resize(k + 2);
+        policy_->update(path_beliefs_[k], step.action, entered.observation.index,
+                        path_beliefs_.back());
+      }
       simulate_from(episode, entered.node.get(), std::move(next), static_cast<int>(k) + 1, rng);
       backup(episode, episode.size() - 1);
       break;  // the new continuation was sampled from the new model

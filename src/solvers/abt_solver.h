@@ -29,10 +29,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "solvers/model_change.h"
 #include "solvers/search_tree.h"
+#include "solvers/sensing_policy.h"
 
 namespace echoplan::solvers {
 
@@ -46,7 +48,13 @@ struct RevisionStats {
 
 class AbtSolver final : public TreeSearchSolver {
  public:
+  // Throws InputError when the leaf mode is `policy` and the model is not a tabular identification
+  // problem.
   AbtSolver(pomdp::ModelPtr model, SearchOptions options);
+
+  void reset(const pomdp::Belief& belief, Rng& rng) override;
+  void update(int action, const pomdp::Observation& observation, const pomdp::Belief& belief_after,
+              Rng& rng) override;
 
   // Plans with change.model from now on and revises the stored episodes that used a changed
   // observation row, so that the tree is what episodes sampled from the new model would have
@@ -83,11 +91,21 @@ class AbtSolver final : public TreeSearchSolver {
   // sums; returns them (rewards_, valid until the next call).
   const std::vector<double>& evaluate_particle(BeliefNode& node, const pomdp::State& state,
                                                Rng& rng);
-  // Q(b, a) from the node's particle rewards and the action's children.
-  double action_value(const BeliefNode& node, int action) const;
+  // Q(b, a) from the action's children and the immediate reward: its expectation under the node's
+  // exact `belief` when there is one (leaf mode `policy`), else the mean over the node's particles.
+  double action_value(const BeliefNode& node, int action, const std::vector<double>* belief) const;
+  // The exact belief at step `i` of the episode being walked or backed up (leaf mode `policy`),
+  // else nullptr.
+  const std::vector<double>* step_belief(std::size_t i) const {
+    return policy_ ? &path_beliefs_[i] : nullptr;
+  }
+  // Leaf mode `policy`: path_beliefs_[i] = the exact belief at step i of `episode`, from the root's
+  // belief by Bayes' rule along the episode's actions and observation branches.
+  void trace_beliefs(const Episode& episode);
   // Walks `episode` on from `node` at `depth` with `state` (filed there unless depth is 0). The
   // steps record the path (node, action, branch); with keep_episodes also everything revise()
-  // needs to take the step back out.
+  // needs to take the step back out. Leaf mode `policy`: path_beliefs_ must hold the beliefs of
+  // steps 0..depth; the walk appends the rest.
   void simulate_from(Episode& episode, BeliefNode* node, pomdp::State state, int depth, Rng& rng);
   // Takes step `i` (depth > 0) of `episode` out of the tree's statistics.
   void remove_step(const EpisodeStep& step);
@@ -100,8 +118,15 @@ class AbtSolver final : public TreeSearchSolver {
   pomdp::Observation couple_observation(const pomdp::Model& before, const EpisodeStep& step,
                                         const pomdp::State& next, Rng& rng) const;
 
-  std::vector<Episode> episodes_;                 // with keep_episodes
-  Episode path_;                                  // the current episode otherwise (reused)
+  std::vector<Episode> episodes_;  // with keep_episodes
+  Episode path_;                   // the current episode otherwise (reused)
+  // Leaf mode `policy` only: the default policy, and the root's exact belief over the model's
+  // tabular states (from the belief at reset, then by Bayes' rule from step to step).
+  std::optional<SensingPolicy> policy_;
+  std::vector<double> root_belief_;
+  // The exact belief at each step of the episode being walked (path_beliefs_[i] at depth i).
+  std::vector<std::vector<double>> path_beliefs_;
+  std::vector<double> belief_scratch_;
   std::vector<pomdp::StepResult> one_step_each_;  // reused between particles
   std::vector<double> rewards_;                   // reused between particles
 };

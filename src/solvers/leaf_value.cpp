@@ -5,18 +5,22 @@
 #include <stdexcept>
 
 #include "common/error.h"
+#include "solvers/identification_solver.h"
 
 namespace echoplan::solvers {
 
 LeafMode parse_leaf_mode(const std::string& text) {
+  if (text == "policy") return LeafMode::policy;
   if (text == "lookahead") return LeafMode::lookahead;
   if (text == "heuristic") return LeafMode::heuristic;
   if (text == "rollout") return LeafMode::rollout;
-  throw InputError("leaf value '" + text + "' is not one of lookahead, heuristic, rollout");
+  throw InputError("leaf value '" + text + "' is not one of policy, lookahead, heuristic, rollout");
 }
 
 const char* leaf_mode_name(LeafMode mode) {
   switch (mode) {
+    case LeafMode::policy:
+      return "policy";
     case LeafMode::lookahead:
       return "lookahead";
     case LeafMode::heuristic:
@@ -25,6 +29,13 @@ const char* leaf_mode_name(LeafMode mode) {
       return "rollout";
   }
   return "?";
+}
+
+LeafMode default_leaf_mode(const std::string& solver, const pomdp::Model& model) {
+  const pomdp::TabularModel* tables = model.tabular();
+  if (solver == "abt" && tables != nullptr && !identification_shape_problem(*tables))
+    return LeafMode::policy;
+  return LeafMode::lookahead;
 }
 
 namespace {
@@ -51,8 +62,12 @@ double random_rollout(const pomdp::Model& model, pomdp::State state, int steps_l
 void LeafEstimate::add(const LeafOptions& options, const pomdp::Model& model,
                        const pomdp::State& state, int steps_left, Rng& rng,
                        const std::vector<pomdp::StepResult>* one_step_each) {
+  if (options.mode == LeafMode::policy)
+    throw std::logic_error("LeafEstimate: the policy leaf value is added with add_rollouts()");
   ++count_;
   switch (options.mode) {
+    case LeafMode::policy:
+      return;  // handled above
     case LeafMode::heuristic:
       sums_.resize(1, 0.0);
       sums_[0] += model.heuristic_value(state);
@@ -75,9 +90,17 @@ void LeafEstimate::add(const LeafOptions& options, const pomdp::Model& model,
   }
 }
 
+void LeafEstimate::add_rollouts(const SensingPolicy& policy, const std::vector<double>& belief,
+                                int steps_left, int rollouts, Rng& rng) {
+  sums_.resize(SensingPolicy::kThresholds, 0.0);
+  for (int i = 0; i < rollouts; ++i) policy.rollout(belief, steps_left, rng, sums_.data());
+  count_ += rollouts;
+}
+
 double LeafEstimate::value() const {
   if (count_ == 0) return 0.0;
-  // One accumulator is a plain mean; several are per-action means, of which the best counts.
+  // One accumulator is a plain mean; several are per-action (or per-threshold) means, of which the
+  // best counts.
   return *std::max_element(sums_.begin(), sums_.end()) / count_;
 }
 

@@ -3,9 +3,14 @@
 // Why this matters: on the seed's problem a uniformly random rollout makes sensing look worthless
 // next to the -100 of a wrong sort (random play sorts wrongly half the time), so a planner valuing
 // leaves by random rollouts commits after about one observation (about -28 against V* = 2.95).
-// Three estimators are offered:
+// Four estimators are offered:
 //
-//   lookahead (default)  the belief-level value of the best single next step: for each action, the
+//   policy               the value of a default policy that senses with the most informative action
+//                        until confident and then commits (sensing_policy.h), rolled out from the
+//                        node's exact belief over the states of a tabular identification problem;
+//                        the best of its stopping thresholds counts. A lower bound in expectation,
+//                        which the search improves on. ABT only; needs model tables.
+//   lookahead  the belief-level value of the best single next step: for each action, the
 //                        mean over the node's particles of r(s, a) + gamma * h(s') (h = the model's
 //                        heuristic_value; 0 after a terminal step), maximised over actions. For an
 //                        object-identification problem that is "commit now to the best sorting
@@ -23,14 +28,20 @@
 
 #include "common/rng.h"
 #include "pomdp/model.h"
+#include "solvers/sensing_policy.h"
 
 namespace echoplan::solvers {
 
-enum class LeafMode { lookahead, heuristic, rollout };
+enum class LeafMode { policy, lookahead, heuristic, rollout };
 
-// Parses "lookahead" | "heuristic" | "rollout"; throws InputError naming the flag otherwise.
+// Parses "policy" | "lookahead" | "heuristic" | "rollout"; throws InputError naming the flag
+// otherwise.
 LeafMode parse_leaf_mode(const std::string& text);
 const char* leaf_mode_name(LeafMode mode);
+
+// The leaf value a solver uses unless told otherwise: `policy` for ABT on a tabular identification
+// problem (it measured best there, docs/BENCHMARKS.md), `lookahead` everywhere else.
+LeafMode default_leaf_mode(const std::string& solver, const pomdp::Model& model);
 
 struct LeafOptions {
   LeafMode mode = LeafMode::lookahead;
@@ -45,6 +56,10 @@ class LeafEstimate {
   // caller already has it; the lookahead estimate then reuses it instead of stepping again.
   void add(const LeafOptions& options, const pomdp::Model& model, const pomdp::State& state,
            int steps_left, Rng& rng, const std::vector<pomdp::StepResult>* one_step_each = nullptr);
+  // Mode `policy`: adds `rollouts` rollouts of `policy` from the node's exact `belief` (over the
+  // tabular states), at most `steps_left` steps each.
+  void add_rollouts(const SensingPolicy& policy, const std::vector<double>& belief, int steps_left,
+                    int rollouts, Rng& rng);
   // The current estimate; 0 before any particle was added.
   double value() const;
   int count() const { return count_; }
@@ -57,7 +72,7 @@ class LeafEstimate {
   void release();
 
  private:
-  std::vector<double> sums_;  // lookahead: one per action; otherwise one
+  std::vector<double> sums_;  // lookahead: one per action; policy: one per threshold; else one
   int count_ = 0;
 };
 

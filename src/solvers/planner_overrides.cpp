@@ -6,7 +6,11 @@ SearchOptions search_options(const PlannerOverrides& f, const pomdp::Problem& pr
   SearchOptions o;
   o.exploration = f.exploration >= 0 ? f.exploration : problem.planner.exploration;
   o.max_depth = f.depth >= 0 ? f.depth : problem.planner.depth;
-  o.leaf.mode = parse_leaf_mode(f.leaf);
+  const std::string& solver = f.solver.empty() ? problem.planner.solver : f.solver;
+  if (!f.leaf.empty())
+    o.leaf.mode = parse_leaf_mode(f.leaf);
+  else if (problem.model)
+    o.leaf.mode = default_leaf_mode(solver, *problem.model);
   o.leaf.expand_after = f.expand_after;
   o.root_particles = f.root_particles >= 0 ? f.root_particles : problem.belief.particles;
   o.branching.continuous_threshold = f.branch_threshold;

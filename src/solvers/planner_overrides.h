@@ -22,7 +22,7 @@ struct PlannerOverrides {
   // Search options; a negative value means "the problem file's (or the built-in) default".
   double exploration = -1;
   int depth = -1;
-  std::string leaf = "lookahead";  // lookahead, heuristic or rollout
+  std::string leaf;  // policy, lookahead, heuristic or rollout; empty: default_leaf_mode()
   int expand_after = LeafOptions{}.expand_after;
   int root_particles = -1;  // negative: the problem's belief size
   double branch_threshold = 0.0;

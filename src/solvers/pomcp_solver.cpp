@@ -1,9 +1,15 @@
 #include "solvers/pomcp_solver.h"
 
+#include "common/error.h"
+
 namespace echoplan::solvers {
 
 PomcpSolver::PomcpSolver(pomdp::ModelPtr model, SearchOptions options)
-    : TreeSearchSolver(std::move(model), options) {}
+    : TreeSearchSolver(std::move(model), options) {
+  // POMCP stays the textbook algorithm: its leaves see states, not beliefs.
+  if (this->options().leaf.mode == LeafMode::policy)
+    throw InputError("the policy leaf value is ABT's; POMCP takes lookahead, heuristic or rollout");
+}
 
 void PomcpSolver::run_episode(Rng& rng) { simulate(root(), sample_root_particle(rng), 0, rng); }
 
@@ -11,7 +17,7 @@ double PomcpSolver::simulate(BeliefNode& node, pomdp::State state, int depth, Rn
   const pomdp::Model& m = model();
   ++node.visits;
   if (depth > 0) node.particles.push_back(state);
-  if (visit_as_leaf(node, depth)) {
+  if (leaf_or_expand(node, depth)) {
     node.leaf.add(options().leaf, m, state, options().max_depth - depth, rng);
     return node.leaf.value();
   }

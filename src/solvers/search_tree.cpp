@@ -191,7 +191,7 @@ const pomdp::State& TreeSearchSolver::sample_root_particle(Rng& rng) const {
   return particles[static_cast<std::size_t>(uniform01(rng) * particles.size())];
 }
 
-bool TreeSearchSolver::visit_as_leaf(BeliefNode& node, int depth) {
+bool TreeSearchSolver::leaf_or_expand(BeliefNode& node, int depth) {
   if (depth >= options_.max_depth) return true;
   if (node.expanded) return false;
   if (node.visits <= options_.leaf.expand_after) return true;

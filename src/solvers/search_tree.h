@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "pomdp/model.h"
+#include "pomdp/problem.h"
 #include "solvers/leaf_value.h"
 #include "solvers/observation_branch.h"
 #include "solvers/solver.h"
@@ -25,10 +26,14 @@
 namespace echoplan::solvers {
 
 // Options shared by the tree-search solvers. Validated by validate().
+// The exploration constant and depth default to pomdp::PlannerDefaults (problem.h), the one place
+// they are defined, so a problem file without a planner section and a SearchOptions{} agree.
 struct SearchOptions {
-  double exploration = 20.0;  // UCB constant c (reward units): Q + c sqrt(ln N / n); >= 0
-  int max_depth = 60;         // belief nodes deeper than this are valued by the leaf estimate; >= 1
-  int root_particles = 1000;  // particles drawn from the belief at reset / replenishment; >= 1
+  // UCB constant c (reward units): Q + c sqrt(ln N / n); >= 0
+  double exploration = pomdp::PlannerDefaults{}.exploration;
+  // Belief nodes deeper than this are valued by the leaf estimate; >= 1
+  int max_depth = pomdp::PlannerDefaults{}.depth;
+  int root_particles = 1000;     // particles drawn from the belief at reset / replenishment; >= 1
   int min_root_particles = 100;  // after update, a root with fewer particles is replenished; >= 0
   LeafOptions leaf;
   ObservationBranching branching;
@@ -130,9 +135,10 @@ class TreeSearchSolver : public Solver {
   bool has_root() const { return root_ != nullptr; }
   BeliefNode& root() { return *root_; }
   const pomdp::State& sample_root_particle(Rng& rng) const;
-  // True when a node at `depth` reached for the visits-th time is valued as a leaf; otherwise the
-  // node is expanded (its leaf accumulators freed) and an action must be chosen.
-  bool visit_as_leaf(BeliefNode& node, int depth);
+  // Decides how the episode treats a node at `depth` reached for the visits-th time: returns true
+  // when the node is valued as a leaf this time; otherwise expands it (once: `expanded` set, its
+  // leaf accumulators freed) and returns false, and the caller must choose an action.
+  bool leaf_or_expand(BeliefNode& node, int depth);
   // UCB1 over the node's actions; untried actions first, in index order.
   int select_action(const BeliefNode& node) const;
   ActionNode& action_node(BeliefNode& node, int action);

@@ -32,8 +32,9 @@ void add_planner_options(CLI::App& cmd, solvers::PlannerOverrides& f) {
   cmd.add_option("--exploration", f.exploration,
                  "UCB exploration constant c, reward units (default: the problem file's)");
   cmd.add_option("--depth", f.depth, "Maximum search depth (default: the problem file's)");
-  cmd.add_option("--leaf", f.leaf, "Leaf value: lookahead, heuristic or rollout")
-      ->capture_default_str();
+  cmd.add_option("--leaf", f.leaf,
+                 "Leaf value: policy (ABT only), lookahead, heuristic or rollout (default: policy "
+                 "for ABT on an identification problem, else lookahead)");
   cmd.add_option("--expand-after", f.expand_after,
                  "Visits a new node is valued as a leaf before it branches")
       ->capture_default_str();

@@ -1,0 +1,82 @@
+// A default policy for identification problems: sense with the most informative action until
+// confident, then commit. ABT rolls it out at new leaves (leaf mode `policy`, leaf_value.h).
+//
+// Why: the `lookahead` leaf value ("commit now, or sense once more and then know for sure") is an
+// upper bound that treats one more observation as a perfect one, so on the seed's noisy sensors it
+// values every uncertain belief at about -1 + γ·10 and keeps the search sensing for the wrong
+// reasons. The value of a policy anyone could follow is a lower bound instead, and the search above
+// the leaves improves on it (ABT's max backup turns the tree into a policy-improvement step on
+// top).
+//
+// The policy works on the exact belief b over a tabular model's states (identification shape: the
+// state stays fixed while sensing, terminal actions end the episode;
+// solvers/identification_solver.h says which models qualify). At b:
+//   loss(b) = Σ_s b(s) best_commit(s) − max_a Σ_s b(s) R(s, a)   (a over terminal actions)
+// is what committing now loses against committing knowing the state. The policy commits when
+// loss(b) ≤ ε and otherwise takes the sensing action with the largest expected drop of the entropy
+// of "which terminal action is right" (information about the decision, not about distinctions that
+// do not change it). One rollout follows a family of thresholds ε at once: the policies differ only
+// in when they stop, so with the same random numbers they share one trajectory, and each
+// threshold's return is read off where it would have committed. Rewards are taken as expectations
+// under the current belief (Σ_s b(s) R(s, a)) rather than sampled, which leaves the mean unchanged
+// and removes most of the variance of a sorting action's +10 / −100.
+#pragma once
+
+#include <vector>
+
+#include "common/rng.h"
+#include "pomdp/model.h"
+
+namespace echoplan::solvers {
+
+// Not thread-safe (scratch space is shared between calls): one per solver.
+class SensingPolicy {
+ public:
+  // The stopping thresholds ε followed by one rollout (reward units), the first +inf (commit now).
+  static constexpr int kThresholds = 12;
+
+  // Reads the tables of `model`. Throws InputError when the model has no tables or is not an
+  // identification problem (the reason in words).
+  explicit SensingPolicy(const pomdp::TabularModel& model);
+
+  int num_states() const { return num_states_; }
+  // Bayes' rule for a sensing action: b'(s) ∝ b(s) stay(s, a) O(a, s, o). Returns P(o | b, a) (live
+  // outcomes only); `out` is left unnormalised (all 0) when that is 0.
+  double update(const std::vector<double>& belief, int action, int observation,
+                std::vector<double>& out) const;
+  // True for an action that ends the episode from every live state.
+  bool is_terminal(int action) const { return terminal_[action]; }
+  // P(o | b, a) for a sensing action, counting only outcomes that keep the episode going.
+  double observation_probability(const std::vector<double>& belief, int action,
+                                 int observation) const;
+  // P(the episode goes on | b, a): Σ_s b(s) stay(s, a).
+  double live_probability(const std::vector<double>& belief, int action) const;
+  // Σ_s b(s) R(s, a).
+  double expected_reward(const std::vector<double>& belief, int action) const;
+  // The best terminal action's expected reward under `belief`.
+  double commit_value(const std::vector<double>& belief) const;
+  // The sensing action the policy takes at `belief`.
+  int choose_sensing(const std::vector<double>& belief) const;
+  // One rollout from `belief` (the true state drawn from it), at most `steps` steps: adds the
+  // discounted return of each threshold's policy to returns[0..kThresholds).
+  void rollout(const std::vector<double>& belief, int steps, Rng& rng, double* returns) const;
+
+ private:
+  double loss(const std::vector<double>& belief) const;
+  double decision_entropy(const std::vector<double>& belief) const;
+
+  int num_states_ = 0, num_actions_ = 0, num_observations_ = 0;
+  double discount_ = 0.0;
+  std::vector<bool> terminal_;       // per action
+  std::vector<int> sensing_;         // the non-terminal actions
+  std::vector<bool> absorbing_;      // per state
+  std::vector<double> reward_;       // [s * A + a]
+  std::vector<double> emission_;     // [(a * O + o) * S + s] = stay(s, a) O(a, s, o)
+  std::vector<double> stay_;         // [a * S + s]
+  std::vector<double> best_commit_;  // [s]: max over terminal a of R(s, a)
+  std::vector<int> best_terminal_;   // [s]: that action
+  std::vector<double> thresholds_;   // kThresholds values, decreasing
+  mutable std::vector<double> scratch_, scratch2_, groups_;
+};
+
+}  // namespace echoplan::solvers
