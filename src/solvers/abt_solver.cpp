@@ -109,18 +109,6 @@ double AbtSolver::action_value(const BeliefNode& node, int a,
   return policy_->expected_reward(*belief, a) + gamma * future;
 }
 
-void AbtSolver::trace_beliefs(const Episode& episode) {
-  path_beliefs_.assign(1, root_belief_);
-  for (const EpisodeStep& step : episode) {
-    if (step.action < 0 || step.child < 0) break;
-    const ObservationChild& child =
-        step.node->actions[step.action]->children[static_cast<std::size_t>(step.child)];
-    path_beliefs_.emplace_back();
-    policy_->update(path_beliefs_[path_beliefs_.size() - 2], step.action, child.observation.index,
-                    path_beliefs_.back());
-  }
-}
-
 void AbtSolver::refresh_child(ActionNode& action, std::size_t child) {
   ObservationChild& c = action.children[child];
   action.future_sum += static_cast<double>(c.arrivals) * (c.node->value - c.counted_value);
@@ -293,11 +281,15 @@ RevisionStats AbtSolver::revise(const ModelChange& change, Rng& rng) {
   if (!has_root()) throw std::logic_error("revise() before reset()");
   if (!options().keep_episodes)
     throw std::logic_error("revise() needs SearchOptions::keep_episodes: no episodes were kept");
+  // The policy leaf's values come from rollouts under the old table from every node's exact
+  // belief, which the table also changed: every node would need revaluing, not only those on the
+  // affected episodes. Rebuilding the tree is the honest cost there.
+  if (policy_)
+    throw std::logic_error(
+        "revise() works with the lookahead, heuristic and rollout leaves; with the policy leaf "
+        "every node's value depends on the observation table: reset() the solver instead");
   const pomdp::ModelPtr before = model_ptr();
   replace_model(change.model);
-  // The default policy reads the new tables; the root's exact belief stays what the real steps
-  // made it (the caller's belief switches to the new model from the next update on).
-  if (policy_) policy_.emplace(*model().tabular());
   const bool discrete = model().spec().observation.discrete;
 
   RevisionStats stats;
@@ -330,14 +322,13 @@ RevisionStats AbtSolver::revise(const ModelChange& change, Rng& rng) {
       // The episode leaves through another branch: take its old continuation out of the tree,
       // revalue the nodes it passed (deepest first), then continue it with the search policy.
       ++stats.resimulated_episodes;
-      if (policy_) trace_beliefs(episode);
       for (std::size_t j = episode.size(); j-- > k + 1;) remove_step(episode[j]);
       for (std::size_t j = episode.size(); j-- > k + 1;) {
         const EpisodeStep& gone = episode[j];
         if (gone.action >= 0) {
           ActionNode& a = *gone.node->actions[gone.action];
           if (gone.child >= 0) refresh_child(a, static_cast<std::size_t>(gone.child));
-          a.value = action_value(*gone.node, gone.action, step_belief(j));
+          a.value = action_value(*gone.node, gone.action, nullptr);  // no policy leaf here
         }
         recompute_node_value(*gone.node);
       }
@@ -352,11 +343,6 @@ RevisionStats AbtSolver::revise(const ModelChange& change, Rng& rng) {
       ++entered.arrivals;
       action.future_sum += entered.counted_value;
       step.child = static_cast<std::ptrdiff_t>(child);
-      if (policy_) {
-        path_beliefs_.resize(k + 2);
-        policy_->update(path_beliefs_[k], step.action, entered.observation.index,
-                        path_beliefs_.back());
-      }
       simulate_from(episode, entered.node.get(), std::move(next), static_cast<int>(k) + 1, rng);
       backup(episode, episode.size() - 1);
       break;  // the new continuation was sampled from the new model

@@ -61,7 +61,8 @@ class AbtSolver final : public TreeSearchSolver {
   // built (up to the search policy's choices, which stay as they were where nothing changed).
   // For a model with continuous observations, the affected step is re-stepped with the new model
   // instead of coupled. Throws InputError when the new model's actions, observations or discount
-  // differ, std::logic_error before reset() or when options().keep_episodes is off.
+  // differ, std::logic_error before reset(), when options().keep_episodes is off or with the policy
+  // leaf (its values depend on the table at every node).
   RevisionStats revise(const ModelChange& change, Rng& rng);
 
   // Episodes stored in the tree (those passing through the current root; 0 unless keep_episodes).
@@ -99,9 +100,6 @@ class AbtSolver final : public TreeSearchSolver {
   const std::vector<double>* step_belief(std::size_t i) const {
     return policy_ ? &path_beliefs_[i] : nullptr;
   }
-  // Leaf mode `policy`: path_beliefs_[i] = the exact belief at step i of `episode`, from the root's
-  // belief by Bayes' rule along the episode's actions and observation branches.
-  void trace_beliefs(const Episode& episode);
   // Walks `episode` on from `node` at `depth` with `state` (filed there unless depth is 0). The
   // steps record the path (node, action, branch); with keep_episodes also everything revise()
   // needs to take the step back out. Leaf mode `policy`: path_beliefs_ must hold the beliefs of

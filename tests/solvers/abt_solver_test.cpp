@@ -75,9 +75,12 @@ class CountingModel final : public pomdp::Model {
   pomdp::ModelPtr inner_;
 };
 
-// The shipped problem's planner section (exploration 110, depth 100), keeping the episodes.
+// The shipped problem's planner section (exploration 110, depth 100) with the lookahead leaf (the
+// policy leaf cannot be revised: revise() refuses it), keeping the episodes.
 SearchOptions seed_options() {
-  SearchOptions options = search_options({}, seed_problem());
+  PlannerOverrides lookahead;
+  lookahead.leaf = "lookahead";
+  SearchOptions options = search_options(lookahead, seed_problem());
   options.keep_episodes = true;
   return options;
 }
@@ -177,7 +180,9 @@ TEST(AbtRevision, RevisedTreeMatchesAFreshTreeAtAFractionOfTheCost) {
         old_model->spec().action_names[a].c_str(), r.mean, r.sd, f.mean, f.sd, s.mean, s.sd,
         (r.mean - f.mean) / se_rf, (s.mean - f.mean) / se_sf);
     EXPECT_LE(std::abs(r.mean - f.mean), 4 * se_rf) << old_model->spec().action_names[a];
-    if (a == kStrike) EXPECT_GT(std::abs(s.mean - f.mean), 4 * se_sf) << "the check has no power";
+    if (a == kStrike) {
+      EXPECT_GT(std::abs(s.mean - f.mean), 4 * se_sf) << "the check has no power";
+    }
   }
   EXPECT_GT(resimulated, 0);
   EXPECT_LT(3 * revise_steps, fresh_steps);
@@ -288,6 +293,19 @@ TEST(AbtPolicyLeaf, SensesFirstAndSortsOnceTheEvidenceIsStrong) {
   }
   solver.improve(Budget::episodes(2000), rng);
   EXPECT_EQ(solver.best_action(), kMoveToA);
+}
+
+TEST(AbtPolicyLeaf, RevisionIsRefusedBecauseEveryNodesValueDependsOnTheTable) {
+  const auto model = seed_model();
+  SearchOptions options = policy_leaf();
+  options.keep_episodes = true;
+  AbtSolver solver(model, options);
+  Rng rng(5);
+  pomdp::ParticleBelief belief(model, 200, rng);
+  solver.reset(belief, rng);
+  solver.improve(Budget::episodes(50), rng);
+  EXPECT_THROW(solver.revise(observation_table_change(*model, recalibrated(*model)), rng),
+               std::logic_error);
 }
 
 TEST(AbtPolicyLeaf, NeedsAnIdentificationProblem) {

@@ -90,8 +90,14 @@ case "$case_name" in
       ended=$(awk -F, 'NR > 1 && $3 ~ /^move_to_/ {n++} END {print n + 0}' "$work/ros_run/loop_steps.csv")
     fi
     [ "$ended" -eq "$trials" ] || { fail "$ended of $trials trials ended in a sorting action (or, mic: a terminal outcome)"; cat "$work/ros_run/loop_steps.csv"; }
-    # The recorded clips are the same audio.
+    # The recorded clips are the same audio. On the live device (mic) the clip of an action the world refused
+    # (failed, collision) is cut when the robot reports, so how much of it was captured depends on timing:
+    # those are compared only in the simulated layouts.
+    aborted=""
+    [ "$case_name" = mic ] && aborted=$(awk -F, 'NR > 1 && ($4 == "failed" || $4 == "collision") {print $NF}' \
+      "$work/in_process/loop_steps.csv")
     for clip in "$work"/in_process/clips/*.wav; do
+      grep -qxF "clips/$(basename "$clip")" <<<"$aborted" && continue
       cmp -s "$clip" "$work/ros_run/clips/$(basename "$clip")" || fail "clip $(basename "$clip") differs"
     done
     ;;

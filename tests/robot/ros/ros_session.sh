@@ -11,7 +11,7 @@ ros_session_end() {
   sleep 0.3
   for g in "${pgids[@]}"; do kill -KILL -- "-$g" 2>/dev/null || true; done
   wait 2>/dev/null || true
-  rm -rf "$work"
+  [ -n "${KEEP_WORK:-}" ] || rm -rf "$work"
 }
 
 # Each process in its own process group (setsid), so stopping it stops its children (roscore's
