@@ -31,7 +31,7 @@ packages=(
   chromium                        # tests/apps/experiment_html_cli_test.sh: the campaign page rendered headless
   clang libclang-rt-14-dev   # scripts/fuzz.sh (libFuzzer)
   clang-format-14            # scripts/check-format.sh
-  python3-numpy python3-scipy python3-soundfile   # bench/sim_realism.py (with /usr/bin/python3)
+  python3-numpy python3-scipy python3-soundfile python3-yaml  # bench/*.py (with /usr/bin/python3)
   portaudio19-dev            # live capture: echoplan devices/record, the ROS listener
   # ROS 1 from Debian (docs/real-robot.md): nodes, their services, a master and roslaunch for the ros_* tests
   libroscpp-dev catkin ros-message-generation libstd-msgs-dev
