@@ -199,23 +199,22 @@ TEST(Trials, BadOptionsAreInputErrors) {
   EXPECT_THROW(TrialLog("/proc/no_such_dir/out", h.model->spec(), 0), InputError);
 }
 
-TEST(Trials, AbtIsCertifiedToKeepAQuarterOfTheOptimalValueOnTheSeedProblem) {
+TEST(Trials, AbtIsCertifiedToKeepFourFifthsOfTheOptimalValueOnTheSeedProblem) {
   // Every decision of every trial is scored by its exact loss V*(b_t) - Q*(b_t, a_t) at the exact
   // belief of its history (regret_certificate.h); the discounted sum per trial has expectation
   // V*(b0) - V^ABT(b0) with a fraction of the returns' variance. The bounds come from the exact
-  // solver within a test's budget (one 300,000-expansion solve from b0, then 3,000 expansions per
-  // visited belief, counts so they repeat), and the regret asserted is the upper end (U_V - L_Q):
-  // the certificate can only err against the planner. ABT with the problem file's planner settings
-  // and 1000 episodes per step must keep a certified quarter of V*(b0) = 2.9534: mean regret plus
-  // its 95% CI half-width <= 0.75 V*. That rejects every planner the old +-4-standard-error band
-  // was meant to catch (sorting blind, -45; sorting after one observation; random rollouts, about
-  // -28: all below 0) with a margin; anything tighter is out of reach of this budget's bounds,
-  // whose upper and lower regret ends lie ~0.7 apart here (measured: upper 0.99 +- 0.55, lower
-  // 0.30; docs/planning.md). Tighten it as the exact solver's bounds tighten.
+  // solver within a test's budget (100,000 expansions at b0, then 2,000 per visited belief: counts,
+  // so they repeat), and the regret asserted is the upper end (U_V - L_Q): the certificate can only
+  // err against the planner. ABT with its defaults on the seed problem (the policy leaf) and 1000
+  // episodes per step must keep a certified 80% of V*(b0) = 2.9534: mean regret plus its 95% CI
+  // half-width <= 0.2 V* (measured: 0.27 +- 0.11 with the certificate ~0.4 loose; lower end 0.02).
+  // That rejects the lookahead leaf ABT had before (true regret ~0.5, 81% of V*: BENCHMARKS.md) and
+  // the fixed rule "strike until 98% sure" (2.452, regret 0.50), as well as every planner that sorts
+  // on thin evidence (value below 0).
   Harness h;
   const auto dir = fresh_dir("certify");
   TrialOptions options;
-  options.trials = 20;
+  options.trials = 12;
   options.budget = solvers::Budget::episodes(1000);
   options.seed = 2026;
   {
@@ -224,13 +223,12 @@ TEST(Trials, AbtIsCertifiedToKeepAQuarterOfTheOptimalValueOnTheSeedProblem) {
   }
   const std::string steps = (dir / "steps.csv").string();
   solvers::IdentificationSolver exact(*h.model->tabular());
-  // One deep solve from b0 first: the beliefs the trials visit lie in its lattice.
-  exact.refine(exact.root(), {1e-3, 0.0, 300000});
   CertifyOptions certify;
-  certify.expansions_per_belief = 3000;
+  certify.root_expansions = 100000;
+  certify.expansions_per_belief = 2000;
   const Certificate c =
       certify_trials(exact, read_steps_csv(steps, h.model->spec()), certify, steps);
-  ASSERT_EQ(c.trials.size(), 20u);
+  ASSERT_EQ(c.trials.size(), 12u);
   // The bounds on V*(b0) contain the value DESIGN.md gives (exact search to 1e-4).
   EXPECT_LE(c.vstar.lower, 2.9534);
   EXPECT_GE(c.vstar.upper, 2.9534);
@@ -240,7 +238,7 @@ TEST(Trials, AbtIsCertifiedToKeepAQuarterOfTheOptimalValueOnTheSeedProblem) {
       "lower end %.4f), certified %.1f%% of V*\n",
       options.trials, c.vstar.lower, c.vstar.upper, c.regret.mean, c.regret.half_width,
       c.regret_lower_mean, 100 * c.share_of_vstar());
-  EXPECT_LE(c.regret.mean + c.regret.half_width, 0.75 * c.vstar.lower);
+  EXPECT_LE(c.regret.mean + c.regret.half_width, 0.2 * c.vstar.lower);
   for (const TrialRegret& t : c.trials) EXPECT_TRUE(t.ended) << "trial " << t.trial;
 }
 
