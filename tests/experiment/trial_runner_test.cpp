@@ -209,8 +209,8 @@ TEST(Trials, AbtIsCertifiedToKeepFourFifthsOfTheOptimalValueOnTheSeedProblem) {
   // episodes per step must keep a certified 80% of V*(b0) = 2.9534: mean regret plus its 95% CI
   // half-width <= 0.2 V* (measured: 0.27 +- 0.11 with the certificate ~0.4 loose; lower end 0.02).
   // That rejects the lookahead leaf ABT had before (true regret ~0.5, 81% of V*: BENCHMARKS.md) and
-  // the fixed rule "strike until 98% sure" (2.452, regret 0.50), as well as every planner that sorts
-  // on thin evidence (value below 0).
+  // the fixed rule "strike until 98% sure" (2.452, regret 0.50), as well as every planner that
+  // sorts on thin evidence (value below 0).
   Harness h;
   const auto dir = fresh_dir("certify");
   TrialOptions options;
