@@ -5,6 +5,8 @@
 #                            $work/NAME.log; sets $started to its pid
 #   file_microphone ECHOPLAN makes the default capture device read a synthesized coffee-mug strike
 #                            (ALSA file plugin, raw float32 stereo: the format the stream opens)
+# KEEP_WORK=1 in the environment keeps $work (its logs, clips and CSVs) after the session, for
+# looking into a failure.
 pgids=()
 ros_session_end() {
   for g in "${pgids[@]}"; do kill -TERM -- "-$g" 2>/dev/null || true; done
