@@ -81,6 +81,11 @@ struct DenseModes {
 // modes and its dense modal field, and the damping of an object held against it.
 struct TableSpec {
   Material material;
+  // The top's surface layer that a contact presses on (a laminate on an MDF core): a Hertz contact
+  // a fraction of a millimetre wide stresses the top millimetre, so its modulus sets the contact's
+  // stiffness and its loss the contact ring's. The same as `material` unless the catalogue names
+  // one.
+  Material surface;
   double friction = 0.45;
   double thickness = 0.025;  // m, of the top: sets its coincidence frequency (how well it radiates)
   std::vector<ListedMode> modes;

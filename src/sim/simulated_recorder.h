@@ -40,14 +40,17 @@ class SimulatedRecorder {
   // Hertz contact time (s) of an impact recorded in a trace, with this object on this table.
   double contact_time(const Impact& impact) const;
 
+  // Decay rate (1/s) of the contact ring an impact starts: the Hertz spring's losses in the table's
+  // surface and in the object (each its share of the strain energy) and the holding finger pads'.
+  double contact_ring_decay(const Impact& impact) const;
+
  private:
   ObjectSpec object_;
   SimConfig config_;
   std::vector<Mode> object_modes_;
   std::vector<Mode> table_modes_;
-  Material table_material_;         // the contact's oscillation loses energy into the table top
-  double contact_loss_factor_ = 0;  // and into the fingers holding the object (TableSpec)
-  double contact_modulus_ = 0;      // Pa, E* of object material on table material
+  Material table_surface_;      // the contact presses on it, its ring loses energy into it
+  double contact_modulus_ = 0;  // Pa, E* of object material on table material
   double table_coincidence_hz_ = 0;
   double object_mode_scale_ =
       1;  // the object's modes' response per unit impulse, relative (1 / mass)

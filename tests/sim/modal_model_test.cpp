@@ -64,6 +64,34 @@ TEST(ModalModel, ObjectModesComeFromShellPlateAndContactLoss) {
       1e-9);
 }
 
+TEST(ModalModel, HoldingPadsDampTheWallModesNotTheBase) {
+  // A damper c on a mode of modal mass m takes sigma = c / (2 m). The test mug's wall weighs
+  // 0.3 * (2 * 0.005 * 0.1) / (2 * 0.005 * 0.1 + 0.04 * 0.006) = 0.241935 kg, a quarter of it
+  // 0.060484 kg: 2.4 N s/m adds 2.4 / (2 * 0.060484) = 19.840 1/s to every wall mode.
+  const auto free = object_modes(mug(), 20000, 0.0);
+  const auto held = object_modes(mug(), 20000, 0.0, 2.4);
+  ASSERT_EQ(free.size(), held.size());
+  int wall = 0, base = 0;
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    EXPECT_DOUBLE_EQ(held[i].frequency_hz, free[i].frequency_hz);
+    const double added = held[i].decay_per_s - free[i].decay_per_s;
+    if (free[i].azimuthal_order >= 2) {
+      EXPECT_NEAR(added, 19.840, 0.01) << free[i].frequency_hz;
+      ++wall;
+    } else {
+      EXPECT_EQ(added, 0.0) << free[i].frequency_hz;
+      ++base;
+    }
+  }
+  EXPECT_EQ(wall, 2);  // n = 2, 3
+  EXPECT_GE(base, 1);
+  // Half the mass, twice the loss: the same pads mute a light cup's wall more than a mug's.
+  ObjectSpec light = mug();
+  light.shell_mass = 0.15;
+  EXPECT_NEAR(object_modes(light, 20000, 0.0, 2.4)[0].decay_per_s - free[0].decay_per_s, 2 * 19.840,
+              0.02);
+}
+
 TEST(ModalModel, ClosedTubeRingsAtHalfWavelengthCavity) {
   ObjectSpec can = mug();
   can.height = 0.23;
