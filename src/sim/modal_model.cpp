@@ -112,6 +112,12 @@ double coincidence_frequency(const Material& m, double thickness) {
   return kSpeedOfSound * kSpeedOfSound / (2.0 * std::numbers::pi * thickness * bending_speed(m));
 }
 
+double plate_point_impedance(const Material& m, double thickness) {
+  const double bending_stiffness = m.youngs_modulus * thickness * thickness * thickness /
+                                   (12.0 * (1.0 - m.poisson_ratio * m.poisson_ratio));
+  return 8.0 * std::sqrt(bending_stiffness * m.density * thickness);
+}
+
 double effective_modulus(const Material& a, const Material& b) {
   return 1.0 / ((1.0 - a.poisson_ratio * a.poisson_ratio) / a.youngs_modulus +
                 (1.0 - b.poisson_ratio * b.poisson_ratio) / b.youngs_modulus);

@@ -67,6 +67,12 @@ std::vector<Mode> table_modes(const TableSpec& table);
 // plate radiates poorly.
 double coincidence_frequency(const Material& material, double thickness_m);
 
+// Driving-point impedance (N s/m) of an infinite plate of `thickness_m`: 8 sqrt(B m''), B = E h^3 /
+// (12 (1 - nu^2)) its bending stiffness and m'' = rho h its mass per area (Cremer, Heckl &
+// Petersson, "Structure-Borne Sound", the plate's point mobility). Real and independent of
+// frequency: a large plate takes a force as a dashpot does.
+double plate_point_impedance(const Material& material, double thickness_m);
+
 // Effective contact modulus E* (Pa): 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2.
 double effective_modulus(const Material& a, const Material& b);
 

@@ -52,6 +52,7 @@ class SimulatedRecorder {
   Material table_surface_;      // the contact presses on it, its ring loses energy into it
   double contact_modulus_ = 0;  // Pa, E* of object material on table material
   double table_coincidence_hz_ = 0;
+  double table_impedance_ = 0;  // N s/m, the top's point impedance (plate_point_impedance)
   double object_mode_scale_ =
       1;  // the object's modes' response per unit impulse, relative (1 / mass)
   // Pressure amplitude factor of the table's radiation at `frequency_hz` (1 above coincidence).

@@ -53,6 +53,15 @@ TEST(ModalModel, ClampedPlateReproducesLeissasFundamental) {
   EXPECT_NEAR(clamped_plate_frequency(ceramic(), 0.1, 0.002, 10.2158), 493.74, 0.02 * 493.74);
 }
 
+TEST(ModalModel, PlatePointImpedanceIsCremerAndHecklsInfinitePlate) {
+  // 8 sqrt(B m''), worked by hand for a 25 mm MDF top (E 3.5 GPa, nu 0.25, 750 kg/m^3):
+  // B = 3.5e9 * 0.025^3 / (12 * 0.9375) = 4861.1 N m, m'' = 18.75 kg/m^2, Z = 8 * 301.90 = 2415.2.
+  const Material mdf{"mdf", 750, 3.5e9, 0.25, 60, 4.5e-6};
+  EXPECT_NEAR(plate_point_impedance(mdf, 0.025), 2415.2, 0.5);
+  // Twice as thick: B x 8, m'' x 2, Z x 4.
+  EXPECT_NEAR(plate_point_impedance(mdf, 0.05), 4 * 2415.2, 2.0);
+}
+
 TEST(ModalModel, ObjectModesComeFromShellPlateAndContactLoss) {
   const auto modes = object_modes(mug(), 20000, 0.03);
   ASSERT_GE(modes.size(), 2u);
