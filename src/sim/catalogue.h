@@ -90,8 +90,8 @@ struct TableSpec {
   double thickness = 0.025;  // m, of the top: sets its coincidence frequency (how well it radiates)
   std::vector<ListedMode> modes;
   DenseModes dense;
-  // Loss factor added to every mode of an object that rings while pressed onto the table and held
-  // by the fingers (energy flows into both): it is what makes a real strike a short thud.
+  // Loss factor added to every mode of an object that rings while pressed onto the table (energy
+  // flows into it). The holding finger pads add their own c / (2 m) (kFingerPadDamping).
   double contact_loss_factor = 0.0;
 };
 

@@ -7,7 +7,9 @@
 //   weights each mode (the rim contact pattern weights the shell ring modes), radiating directly as
 //   the object ringing on its contact spring (the contact ring);
 // - sliding: a fractal (1/f^2) surface profile read at the sliding speed (roughness noise);
-// - both drive the object's modes and the table's modes (damped resonators); the arm's motors add
+// - both drive the object's modes and the table's modes (damped resonators); a slide's roughness
+//   velocity splits between object and table by their impedances (a heavy object resists it at high
+//   frequency and the table takes it); the arm's motors add
 //   band noise following the joints' speed;
 // - a short room response (the direct sound plus a sparse, exponentially decaying noise tail);
 // - two microphone capsules, each with its own delay and 1/r gain from its distance to the object;
