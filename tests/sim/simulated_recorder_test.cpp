@@ -162,7 +162,9 @@ TEST(SimulatedRecorder, StrikeRingsAtTheContactsHalfPeriod) {
     const double heard_hz = dominant_hz_after_impact(clip, out.trace.impacts.front().time_s);
     // Within 5%: the spectrum's bins are 4 Hz apart and the ring is damped (its peak is broad).
     EXPECT_NEAR(heard_hz, expected_hz, 0.05 * expected_hz) << name;
-    if (previous_hz > 0) EXPECT_LT(heard_hz, 0.9 * previous_hz) << name;
+    if (previous_hz > 0) {
+      EXPECT_LT(heard_hz, 0.9 * previous_hz) << name;
+    }
     previous_hz = heard_hz;
   }
 }
