@@ -136,6 +136,12 @@ IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m,
   }
   upper_points_ = SawtoothUpperBound(std::move(one_more_sensing),
                                      (reward_max - reward_min) / (1.0 - discount_));
+  if (options_.pair_upper_bound) {
+    IdentificationTables tables{L,       A,         O,           discount_, std::vector<bool>(A),
+                                reward_, emission_, known_value_};
+    for (int a = 0; a < A; ++a) tables.terminal[a] = kind_[a] == ActionKind::terminal;
+    pair_bound_ = PairRelaxationBound(tables, options_.pair_relaxation);
+  }
 
   std::uint64_t state = 0x6964656e74696679ULL;  // "identify"
   pair_code_.resize(std::size_t(A) * O);
@@ -175,6 +181,7 @@ Bounds IdentificationSolver::simple_bounds(const double* b, double* plan) const 
   }
   if (plan != nullptr)
     std::copy(&reward_[best * num_live_], &reward_[(best + 1) * num_live_], plan);
+  if (pair_bound_.num_pairs() > 0) upper = std::min(upper, pair_bound_.value(b));
   return {lower, std::max(lower, upper)};
 }
 
@@ -183,7 +190,8 @@ Bounds IdentificationSolver::frontier_bounds(const double* b, double* plan) cons
   const AlphaVector& best = plans_.vectors()[plans_.best_index(belief)];
   const double lower = dot(best.values, belief);
   if (plan != nullptr) std::copy(best.values.begin(), best.values.end(), plan);
-  // Without points the sawtooth is max over the one-more-sensing vectors.
+  // Without points the sawtooth is max over the one-more-sensing vectors. (The pair relaxation
+  // is in every node's bounds from the start: simple_bounds.)
   return {lower, std::max(lower, upper_points_.value(belief))};
 }
 

@@ -15,7 +15,10 @@
 //   upper: the sawtooth interpolation (solvers/sawtooth_upper_bound.h) between the known-state
 //          values at the corners and the (belief, upper bound) of every backed-up node, capped by
 //          max(commit now, max over sensing a of R(b, a) + γ Σ_s b(s) stay(s, a) V_known(s)),
-//          where V_known(s) is the value when s is known ("one more sensing reveals the state").
+//          where V_known(s) is the value when s is known ("one more sensing reveals the state"),
+//          and by the partition relaxation: revealing which pair of states holds can only help,
+//          so V*(b) <= Σ_pairs P(pair) V*_pair(b | pair), with each two-state sub-problem solved
+//          once, up front, on a grid (solvers/pair_relaxation_bound.h).
 // Both are valid at any belief because V* over the live states is convex (a POMDP value).
 //
 // Refinement works in passes of shrinking δ (the default): a pass expands, depth first, every
@@ -56,6 +59,7 @@
 
 #include "pomdp/model.h"
 #include "solvers/alpha_vector_set.h"
+#include "solvers/pair_relaxation_bound.h"
 #include "solvers/sawtooth_upper_bound.h"
 
 namespace echoplan::solvers {
@@ -85,6 +89,10 @@ struct IdentificationOptions {
   Search search = Search::passes;
   bool plan_lower_bound = true;      // frontier lower bound from backed-up plans (else commit now)
   bool sawtooth_upper_bound = true;  // frontier upper bound by sawtooth (else one-more-sensing)
+  // Every new belief's upper bound also capped by the partition relaxation over two-state
+  // sub-problems solved up front (solvers/pair_relaxation_bound.h).
+  bool pair_upper_bound = true;
+  PairRelaxationOptions pair_relaxation;
   // A backed-up node's plan (point) joins the frontier's lower (upper) bound only when it beats
   // that bound at its belief by more than this: every stored plan and point costs every later
   // frontier evaluation, and small gains are not worth it (reward units).
@@ -140,6 +148,8 @@ class IdentificationSolver {
   // How many plans bound new beliefs from below, and how many belief points from above.
   std::size_t num_plans() const { return plans_.size(); }
   std::size_t num_upper_points() const { return upper_points_.num_points(); }
+  // How many two-state sub-problems cap new beliefs' upper bounds (0 when the option is off).
+  std::size_t num_relaxation_pairs() const { return pair_bound_.num_pairs(); }
 
  private:
   enum class ActionKind { sensing, terminal };
@@ -207,6 +217,7 @@ class IdentificationSolver {
   IdentificationOptions options_;
   AlphaVectorSet plans_;                           // over live states: the frontier's lower bound
   SawtoothUpperBound upper_points_{{{0.0}}, 0.0};  // over live states: the frontier's upper bound
+  PairRelaxationBound pair_bound_;                 // over live states: every new belief's cap
 
   // Nodes: flat arrays indexed by NodeId.
   std::vector<double> beliefs_;  // [node * L + l], normalised over live states
