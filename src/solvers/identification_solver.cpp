@@ -218,6 +218,34 @@ double IdentificationSolver::child_belief(const double* b, int a, int o, double*
   return weight;
 }
 
+IdentificationSolver::NodeId IdentificationSolver::NodeIndex::find(const Key& key) const {
+  if (slots_.empty()) return kEnded;
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t i = key.a & mask;; i = (i + 1) & mask) {
+    const Slot& slot = slots_[i];
+    if (slot.id == kEnded) return kEnded;
+    if (slot.key == key) return slot.id;
+  }
+}
+
+void IdentificationSolver::NodeIndex::insert(const Key& key, NodeId id) {
+  // At most 5/8 full, so that probes stay short.
+  if (8 * (size_ + 1) > 5 * slots_.size()) grow();
+  const std::size_t mask = slots_.size() - 1;
+  std::size_t i = key.a & mask;
+  while (slots_[i].id != kEnded) i = (i + 1) & mask;
+  slots_[i] = Slot{key, id};
+  ++size_;
+}
+
+void IdentificationSolver::NodeIndex::grow() {
+  std::vector<Slot> old(std::max<std::size_t>(1024, 2 * slots_.size()));
+  old.swap(slots_);
+  size_ = 0;
+  for (const Slot& slot : old)
+    if (slot.id != kEnded) insert(slot.key, slot.id);
+}
+
 IdentificationSolver::Key IdentificationSolver::child_key(NodeId node, int a, int o) const {
   const Key& k = keys_[node];
   const Key& c = pair_code_[std::size_t(a) * num_observations_ + o];
@@ -241,7 +269,7 @@ IdentificationSolver::NodeId IdentificationSolver::insert(const Key& key, const 
   lower_.push_back(f.lower);
   upper_.push_back(f.upper);
   expanded_at_.push_back(std::numeric_limits<double>::infinity());
-  index_.emplace(key, id);
+  index_.insert(key, id);
   return id;
 }
 
@@ -253,7 +281,7 @@ IdentificationSolver::NodeId IdentificationSolver::child(NodeId node, int action
   if (observation < 0 || observation >= num_observations_)
     throw std::invalid_argument(fmt::format("observation {} is out of range", observation));
   const Key key = child_key(node, action, observation);
-  if (auto it = index_.find(key); it != index_.end()) return it->second;
+  if (const NodeId found = index_.find(key); found != kEnded) return found;
   std::vector<double> b(num_live_);
   const double p = child_belief(node_belief(node), action, observation, b.data());
   if (p <= 0.0) return kEnded;
@@ -290,8 +318,8 @@ Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView
     c = ChildView{};
     const double* e = &emission_[(std::size_t(a) * num_observations_ + o) * L];
     const Key key = child_key(node, a, o);
-    if (auto it = index_.find(key); it != index_.end()) {
-      c.id = it->second;
+    if (const NodeId found = index_.find(key); found != kEnded) {
+      c.id = found;
       // The probability still comes from this node's belief (the child's belief is normalised).
       for (int l = 0; l < L; ++l) c.probability += b[l] * e[l];
       c.bounds = value(c.id);
@@ -422,7 +450,7 @@ bool IdentificationSolver::trial(NodeId start, int forced_action, double epsilon
     for (int a = 0; a < num_actions_; ++a) {
       if (kind_[a] != ActionKind::sensing || (forced && a != forced_action)) continue;
       for (int o = 0; o < num_observations_; ++o)
-        if (index_.find(child_key(node, a, o)) == index_.end()) child(node, a, o);
+        if (index_.find(child_key(node, a, o)) == kEnded) child(node, a, o);
     }
     int action = forced_action;
     if (!forced) {

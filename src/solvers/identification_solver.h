@@ -54,7 +54,6 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "pomdp/model.h"
@@ -157,8 +156,23 @@ class IdentificationSolver {
     std::uint64_t a = 0, b = 0;
     friend bool operator==(const Key&, const Key&) = default;
   };
-  struct KeyHash {
-    std::size_t operator()(const Key& k) const { return k.a ^ (k.b * 0x9e3779b97f4a7c15ULL); }
+  // Node ids by key: open addressing with linear probing (the keys are random codes, so their
+  // low bits are a good hash). A node-based hash map cost a cache miss or two per lookup and
+  // was the largest single cost of a search (perf, docs/BENCHMARKS.md).
+  class NodeIndex {
+   public:
+    // The node with `key`, or kEnded when there is none.
+    NodeId find(const Key& key) const;
+    void insert(const Key& key, NodeId id);
+
+   private:
+    struct Slot {
+      Key key;
+      NodeId id = kEnded;
+    };
+    void grow();
+    std::vector<Slot> slots_;
+    std::size_t size_ = 0;
   };
   // What a one-step lookahead at a node says about its children.
   struct ChildView {
@@ -230,7 +244,7 @@ class IdentificationSolver {
   std::vector<std::uint16_t> counts_;  // [node * A * O + a * O + o] = n_ao
   // The smallest δ each node was expanded with; +inf when never.
   std::vector<double> expanded_at_;
-  std::unordered_map<Key, NodeId, KeyHash> index_;
+  NodeIndex index_;
   long expansions_ = 0;
   std::vector<ChildView> children_scratch_;     // backup()'s lookahead
   mutable std::vector<double> belief_scratch_;  // lookahead()'s child belief

@@ -78,6 +78,10 @@ PairRelaxationBound::PairRelaxationBound(const IdentificationTables& t,
 }
 
 void PairRelaxationBound::locate(double s, int& cell, double& weight) const {
+  locate(s, s > 0.0 ? log_odds(s) : 0.0, cell, weight);
+}
+
+void PairRelaxationBound::locate(double s, double x, int& cell, double& weight) const {
   const int half = static_cast<int>(grid_.size()) - 1;
   if (s <= grid_[1]) {
     cell = 0;
@@ -89,7 +93,7 @@ void PairRelaxationBound::locate(double s, int& cell, double& weight) const {
     weight = 1.0;
     return;
   }
-  int k = 1 + static_cast<int>(std::floor((log_odds(s) - log_odds_min_) / log_odds_step_));
+  int k = 1 + static_cast<int>(std::floor((x - log_odds_min_) / log_odds_step_));
   k = std::clamp(k, 1, half - 1);
   // The log-odds arithmetic can be off by one cell at rounding; the grid itself decides.
   while (k > 1 && grid_[k] > s) --k;
@@ -205,18 +209,23 @@ double PairRelaxationBound::value(const double* b) const {
   const int half = static_cast<int>(grid_.size()) - 1;
   saving_scratch_.resize(pairs_.size());
   order_scratch_.clear();
+  // A pair's log-odds is a difference of two of these: one logarithm per state, not per pair.
+  log_scratch_.resize(live_states_);
+  for (int l = 0; l < live_states_; ++l) log_scratch_[l] = b[l] > 0.0 ? std::log(b[l]) : 0.0;
   for (std::size_t x = 0; x < pairs_.size(); ++x) {
     const Pair& pair = pairs_[x];
-    const double m = b[pair.i] + b[pair.j];
     saving_scratch_[x] = 0.0;
-    if (m <= 0.0) continue;
+    // With either mass 0 the pair's value is the corners' (the state known): nothing saved.
+    if (b[pair.i] <= 0.0 || b[pair.j] <= 0.0) continue;
+    const double m = b[pair.i] + b[pair.j];
     const double p = b[pair.i] / m, q = b[pair.j] / m;
+    const double log_odds_p = log_scratch_[pair.i] - log_scratch_[pair.j];
     int cell;
     double w;
     if (p <= q) {
-      locate(p, cell, w);
+      locate(p, log_odds_p, cell, w);
     } else {
-      locate(q, cell, w);
+      locate(q, -log_odds_p, cell, w);
       cell += half + 1;
     }
     const double* v = &pair.values[cell];

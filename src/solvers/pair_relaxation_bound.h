@@ -73,14 +73,19 @@ class PairRelaxationBound {
   // Interpolation cell of p: the index k with grid_[k] <= p <= grid_[k + 1] and the weight of
   // k + 1.
   void locate(double p, int& cell, double& weight) const;
+  // The same with p's log-odds given (p in (0, 1/2]).
+  void locate(double p, double log_odds, int& cell, double& weight) const;
   void solve(Pair& pair, const IdentificationTables& t, const PairRelaxationOptions& o) const;
 
   int live_states_ = 0;
   std::vector<double> known_value_;
-  std::vector<double> grid_;  // p values: 0, interior points increasing, 1
+  // s_0 = 0 < s_1 < ... < s_H = 1/2, s_1..s_H evenly spaced in log-odds; the grid's p values are
+  // the s_k and the 1 - s_k (see the .cpp).
+  std::vector<double> grid_;
   double log_odds_min_ = 0.0, log_odds_step_ = 1.0;
   std::vector<Pair> pairs_;
   mutable std::vector<double> saving_scratch_;
+  mutable std::vector<double> log_scratch_;
   mutable std::vector<int> order_scratch_;
   mutable std::vector<char> used_scratch_;
 };

@@ -41,12 +41,17 @@ double SawtoothUpperBound::sawtooth(const BeliefVector& belief, double cv, int s
   for (std::size_t i = 0; i < points_.size(); ++i) {
     if (static_cast<int>(i) == skip) continue;
     const Point& p = points_[i];
+    // The point lowers the bound only where it lies below the corners, and then only when its
+    // ratio exceeds `needed`: the scan over its support stops as soon as the ratio falls to it.
+    const double gain = p.value - p.corner_value;
+    if (gain >= 0.0) continue;
+    const double needed = (best - cv) / gain;
     double ratio = std::numeric_limits<double>::infinity();
     for (int s : p.support) {
       ratio = std::min(ratio, belief[s] / p.belief[s]);
-      if (ratio == 0.0) break;
+      if (ratio <= needed) break;
     }
-    if (ratio > 0.0) best = std::min(best, cv + ratio * (p.value - p.corner_value));
+    if (ratio > needed) best = cv + ratio * gain;
   }
   return best;
 }
