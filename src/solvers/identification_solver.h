@@ -149,6 +149,8 @@ class IdentificationSolver {
   std::size_t num_upper_points() const { return upper_points_.num_points(); }
   // How many two-state sub-problems cap new beliefs' upper bounds (0 when the option is off).
   std::size_t num_relaxation_pairs() const { return pair_bound_.num_pairs(); }
+  // That bound, over the live states in model order (belief() without the absorbing states).
+  const PairRelaxationBound& pair_relaxation() const { return pair_bound_; }
 
  private:
   enum class ActionKind { sensing, terminal };

@@ -39,7 +39,7 @@ struct IdentificationTables {
 
 struct PairRelaxationOptions {
   // Grid points strictly between 0 and 1, spaced evenly in log-odds over ±max_log_odds.
-  int grid_points = 801;
+  int grid_points = 2001;
   double max_log_odds = 36.0;
   // Value iteration stops when no grid value moved by more than this (reward units), or after
   // max_iterations sweeps; either way the values are upper bounds.
