@@ -132,7 +132,7 @@ IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m,
           kind_[a] == ActionKind::terminal ? r : r + discount_ * stay_[a * L + l] * known_value_[l];
     }
     if (kind_[a] == ActionKind::terminal)
-      plans_.add(AlphaVector{a, std::vector<double>(&reward_[a * L], &reward_[a * L] + L)});
+      add_plan(AlphaVector{a, std::vector<double>(&reward_[a * L], &reward_[a * L] + L)});
   }
   upper_points_ = SawtoothUpperBound(std::move(one_more_sensing),
                                      (reward_max - reward_min) / (1.0 - discount_));
@@ -187,12 +187,34 @@ Bounds IdentificationSolver::simple_bounds(const double* b, double* plan) const 
 
 Bounds IdentificationSolver::frontier_bounds(const double* b, double* plan) const {
   const BeliefVector belief(b, b + num_live_);
-  const AlphaVector& best = plans_.vectors()[plans_.best_index(belief)];
-  const double lower = dot(best.values, belief);
-  if (plan != nullptr) std::copy(best.values.begin(), best.values.end(), plan);
+  double lower = 0.0;
+  const double* best = best_plan(b, lower);
+  if (plan != nullptr) std::copy(best, best + num_live_, plan);
   // Without points the sawtooth is max over the one-more-sensing vectors. (The pair relaxation
   // is in every node's bounds from the start: simple_bounds.)
   return {lower, std::max(lower, upper_points_.value(belief))};
+}
+
+const double* IdentificationSolver::best_plan(const double* b, double& value) const {
+  const int L = num_live_;
+  const std::size_t count = plan_matrix_.size() / L;
+  std::size_t best = 0;
+  value = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < count; ++k) {
+    const double* alpha = &plan_matrix_[k * L];
+    double v = 0.0;
+    for (int l = 0; l < L; ++l) v += alpha[l] * b[l];
+    if (v > value) value = v, best = k;
+  }
+  return &plan_matrix_[best * L];
+}
+
+void IdentificationSolver::add_plan(AlphaVector plan) {
+  if (!plans_.add(std::move(plan))) return;
+  // The set may have dropped plans the new one dominates: copy it afresh (as costly as the add).
+  plan_matrix_.clear();
+  for (const AlphaVector& alpha : plans_.vectors())
+    plan_matrix_.insert(plan_matrix_.end(), alpha.values.begin(), alpha.values.end());
 }
 
 void IdentificationSolver::refresh(NodeId node) {
@@ -362,7 +384,7 @@ std::vector<double> IdentificationSolver::belief(NodeId node) const {
 
 bool IdentificationSolver::backup(NodeId node) {
   const int L = num_live_;
-  std::vector<double> plan(L), best_plan(L);
+  std::vector<double> plan(L), chosen(L);
   double lower = -std::numeric_limits<double>::infinity(), upper = lower;
   int best_action = 0;
   for (int a = 0; a < num_actions_; ++a) {
@@ -370,7 +392,7 @@ bool IdentificationSolver::backup(NodeId node) {
     if (q.lower > lower) {
       lower = q.lower;
       best_action = a;
-      best_plan.swap(plan);
+      chosen.swap(plan);
     }
     upper = std::max(upper, q.upper);
   }
@@ -379,12 +401,16 @@ bool IdentificationSolver::backup(NodeId node) {
   const double* b = node_belief(node);
   if (raised) {
     lower_[node] = lower;
-    std::copy(best_plan.begin(), best_plan.end(), &plan_[std::size_t(node) * L]);
+    std::copy(chosen.begin(), chosen.end(), &plan_[std::size_t(node) * L]);
     // Stored only when it beats the plans at this belief: a plan that does not would never be the
     // maximum where it was found, and every stored plan costs every later frontier evaluation.
-    if (options_.plan_lower_bound && plans_.size() < options_.max_frontier_entries &&
-        lower > plans_.value(BeliefVector(b, b + L)) + options_.frontier_margin)
-      plans_.add(AlphaVector{best_action, best_plan});
+    const std::size_t max_plans = options_.max_frontier_plans > 0 ? options_.max_frontier_plans
+                                                                  : options_.max_frontier_entries;
+    if (options_.plan_lower_bound && plans_.size() < max_plans) {
+      double known = 0.0;
+      best_plan(b, known);
+      if (lower > known + options_.frontier_margin) add_plan(AlphaVector{best_action, chosen});
+    }
   }
   if (lowered) {
     upper_[node] = std::max(lower_[node], upper);

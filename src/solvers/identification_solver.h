@@ -99,6 +99,11 @@ struct IdentificationOptions {
   // At most this many plans and this many points (the first found, which come from the beliefs
   // nearest the root): a frontier evaluation costs (plans + points) · states.
   std::size_t max_frontier_entries = 256;
+  // The plans' own cap when > 0 (else max_frontier_entries): a plan costs a dot product over
+  // the states per evaluation (kept contiguous), a sawtooth point a scan over its support, and
+  // the frontier's lower bound is the side that gains more from more entries (measured: 1024
+  // plans halved the gap in equal time on the seed and 8-object problems; docs/BENCHMARKS.md).
+  std::size_t max_frontier_plans = 1024;
   // Memory cap: refinement stops (bounds stay valid) when this many nodes exist; 0: about 2 GB.
   std::size_t max_nodes = 0;
 };
@@ -191,6 +196,9 @@ class IdentificationSolver {
   // frontier_bounds: the stored plans and the sawtooth (tighter, costs a pass over both).
   Bounds simple_bounds(const double* belief, double* plan = nullptr) const;
   Bounds frontier_bounds(const double* belief, double* plan = nullptr) const;
+  // The stored plan best at `belief` (its values over live states) and its value there.
+  const double* best_plan(const double* belief, double& value) const;
+  void add_plan(AlphaVector plan);
   // Tightens a stored node's bounds with what the plans and points know now.
   void refresh(NodeId node);
   double expected_reward(const double* belief, int action) const;
@@ -231,7 +239,8 @@ class IdentificationSolver {
   std::vector<double> known_value_;  // [l] = V*(state l known)
   std::vector<Key> pair_code_;       // [a * O + o]
   IdentificationOptions options_;
-  AlphaVectorSet plans_;                           // over live states: the frontier's lower bound
+  AlphaVectorSet plans_;             // over live states: the frontier's lower bound
+  std::vector<double> plan_matrix_;  // [k * L + l]: plans_'s vectors, contiguous for the scans
   SawtoothUpperBound upper_points_{{{0.0}}, 0.0};  // over live states: the frontier's upper bound
   PairRelaxationBound pair_bound_;                 // over live states: every new belief's cap
 

@@ -47,8 +47,8 @@ double SawtoothUpperBound::sawtooth(const BeliefVector& belief, double cv, int s
     if (gain >= 0.0) continue;
     const double needed = (best - cv) / gain;
     double ratio = std::numeric_limits<double>::infinity();
-    for (int s : p.support) {
-      ratio = std::min(ratio, belief[s] / p.belief[s]);
+    for (std::size_t k = 0; k < p.support.size(); ++k) {
+      ratio = std::min(ratio, belief[p.support[k]] * p.inverse[k]);
       if (ratio <= needed) break;
     }
     if (ratio > needed) best = cv + ratio * gain;
@@ -80,6 +80,7 @@ bool SawtoothUpperBound::add(const BeliefVector& belief, double v) {
   for (std::size_t i = first_kept; i < order.size(); ++i) {
     p.belief[order[i]] = belief[order[i]] / (1.0 - dropped);
     p.support.push_back(order[i]);
+    p.inverse.push_back(1.0 / p.belief[order[i]]);
   }
   p.value = v + value_span_ * dropped;
 

@@ -41,7 +41,8 @@ class SawtoothUpperBound {
  private:
   struct Point {
     BeliefVector belief;
-    std::vector<int> support;  // states with belief > 0
+    std::vector<int> support;     // states with belief > 0
+    std::vector<double> inverse;  // [k] = 1 / belief[support[k]]: a multiplication per state
     double value = 0.0;
     double corner_value = 0.0;  // corners_ . belief, refreshed when a corner changes
   };

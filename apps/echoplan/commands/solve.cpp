@@ -36,6 +36,7 @@ struct SolveArgs {
   std::string pair_relaxation = "on";
   double frontier_margin = solvers::IdentificationOptions{}.frontier_margin;
   std::size_t frontier_entries = solvers::IdentificationOptions{}.max_frontier_entries;
+  std::size_t frontier_plans = solvers::IdentificationOptions{}.max_frontier_plans;
 };
 
 solvers::IdentificationOptions exact_options(const SolveArgs& args) {
@@ -47,6 +48,7 @@ solvers::IdentificationOptions exact_options(const SolveArgs& args) {
   options.pair_upper_bound = args.pair_relaxation == "on";
   options.frontier_margin = args.frontier_margin;
   options.max_frontier_entries = args.frontier_entries;
+  options.max_frontier_plans = args.frontier_plans;
   return options;
 }
 
@@ -307,6 +309,10 @@ void add_solve_command(CLI::App& app) {
   cmd->add_option("--frontier-entries", args->frontier_entries,
                   "Exact solver: at most this many plans and this many sawtooth points (each "
                   "costs every later frontier evaluation)")
+      ->capture_default_str();
+  cmd->add_option("--frontier-plans", args->frontier_plans,
+                  "Exact solver: at most this many plans (0: --frontier-entries); "
+                  "--frontier-entries then caps the sawtooth points")
       ->capture_default_str();
   cmd->add_option(
       "--out", args->out,
