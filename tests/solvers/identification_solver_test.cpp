@@ -30,6 +30,21 @@ pomdp::ObjectProblemData perfect_sensing(pomdp::ObjectProblemData d) {
   return d;
 }
 
+// V*(b0) at the root after a fixed number of expansions (the same bounds on any machine).
+Bounds root_bounds_after(IdentificationSolver& solver, long expansions) {
+  RefineLimits limits;
+  limits.target_gap = 1e-6;
+  limits.expansions = expansions;
+  solver.refine(solver.root(), limits);
+  return solver.value(solver.root());
+}
+
+// DESIGN.md: V*(b0) of the seed problem is in [2.95334, 2.95348] by an independent exact search.
+void expect_brackets_seed_value(const Bounds& v) {
+  EXPECT_LE(v.lower, 2.95348);
+  EXPECT_GE(v.upper, 2.95334);
+}
+
 TEST(IdentificationSolver, SeedProblemBracketsTheKnownOptimalValue) {
   // DESIGN.md: V*(b0) in [2.95334, 2.95348] by an independent exact search; the strike is optimal
   // and starting with a slide is worth 2.835. A fixed number of expansions (the same bounds on any
@@ -142,17 +157,10 @@ TEST(IdentificationSolver, PlansAndSawtoothTightenTheFrontierForTheSameExpansion
   plain.plan_lower_bound = false;
   plain.sawtooth_upper_bound = false;
   IdentificationSolver full_solver(*model.tabular()), plain_solver(*model.tabular(), plain);
-  RefineLimits limits;
-  limits.target_gap = 1e-6;
-  limits.expansions = 5000;
-  full_solver.refine(full_solver.root(), limits);
-  plain_solver.refine(plain_solver.root(), limits);
-  const Bounds full = full_solver.value(full_solver.root());
-  const Bounds simple = plain_solver.value(plain_solver.root());
-  for (const Bounds& v : {full, simple}) {
-    EXPECT_LE(v.lower, 2.95348);
-    EXPECT_GE(v.upper, 2.95334);
-  }
+  const Bounds full = root_bounds_after(full_solver, 5000);
+  const Bounds simple = root_bounds_after(plain_solver, 5000);
+  expect_brackets_seed_value(full);
+  expect_brackets_seed_value(simple);
   EXPECT_GT(full_solver.num_plans(), 2u);
   EXPECT_GT(full_solver.num_upper_points(), 0u);
   EXPECT_LT(full.gap(), simple.gap());
@@ -160,9 +168,7 @@ TEST(IdentificationSolver, PlansAndSawtoothTightenTheFrontierForTheSameExpansion
   IdentificationOptions trials;
   trials.search = IdentificationOptions::Search::trials;
   IdentificationSolver trial_solver(*model.tabular(), trials);
-  trial_solver.refine(trial_solver.root(), limits);
-  EXPECT_LE(trial_solver.value(trial_solver.root()).lower, 2.95348);
-  EXPECT_GE(trial_solver.value(trial_solver.root()).upper, 2.95334);
+  expect_brackets_seed_value(root_bounds_after(trial_solver, 5000));
 }
 
 TEST(IdentificationSolver, PairRelaxationNarrowsTheGapForTheSameExpansions) {
@@ -173,17 +179,10 @@ TEST(IdentificationSolver, PairRelaxationNarrowsTheGapForTheSameExpansions) {
   IdentificationOptions off;
   off.pair_upper_bound = false;
   IdentificationSolver with_pairs(*model.tabular()), without(*model.tabular(), off);
-  RefineLimits limits;
-  limits.target_gap = 1e-6;
-  limits.expansions = 20000;
-  with_pairs.refine(with_pairs.root(), limits);
-  without.refine(without.root(), limits);
-  const Bounds tight = with_pairs.value(with_pairs.root());
-  const Bounds loose = without.value(without.root());
-  for (const Bounds& v : {tight, loose}) {
-    EXPECT_LE(v.lower, 2.95348);
-    EXPECT_GE(v.upper, 2.95334);
-  }
+  const Bounds tight = root_bounds_after(with_pairs, 20000);
+  const Bounds loose = root_bounds_after(without, 20000);
+  expect_brackets_seed_value(tight);
+  expect_brackets_seed_value(loose);
   EXPECT_LT(tight.gap(), loose.gap());
 }
 
