@@ -96,8 +96,9 @@ struct IdentificationOptions {
   // that bound at its belief by more than this: every stored plan and point costs every later
   // frontier evaluation, and small gains are not worth it (reward units).
   double frontier_margin = 1e-3;
-  // At most this many plans and this many points (the first found, which come from the beliefs
-  // nearest the root): a frontier evaluation costs (plans + points) · states.
+  // At most this many points, and this many plans unless max_frontier_plans says otherwise (the
+  // first found, which come from the beliefs nearest the root): a frontier evaluation costs
+  // (plans + points) · states.
   std::size_t max_frontier_entries = 256;
   // The plans' own cap when > 0 (else max_frontier_entries): a plan costs a dot product over
   // the states per evaluation (kept contiguous), a sawtooth point a scan over its support, and
