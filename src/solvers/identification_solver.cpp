@@ -185,14 +185,15 @@ Bounds IdentificationSolver::simple_bounds(const double* b, double* plan) const 
   return {lower, std::max(lower, upper)};
 }
 
-Bounds IdentificationSolver::frontier_bounds(const double* b, double* plan) const {
+Bounds IdentificationSolver::frontier_bounds(const double* b, double* plan,
+                                             double upper_cap) const {
   const BeliefVector belief(b, b + num_live_);
   double lower = 0.0;
   const double* best = best_plan(b, lower);
   if (plan != nullptr) std::copy(best, best + num_live_, plan);
   // Without points the sawtooth is max over the one-more-sensing vectors. (The pair relaxation
   // is in every node's bounds from the start: simple_bounds.)
-  return {lower, std::max(lower, upper_points_.value(belief))};
+  return {lower, std::max(lower, upper_points_.value_below(belief, upper_cap))};
 }
 
 const double* IdentificationSolver::best_plan(const double* b, double& value) const {
@@ -220,7 +221,8 @@ void IdentificationSolver::add_plan(AlphaVector plan) {
 void IdentificationSolver::refresh(NodeId node) {
   const double* b = node_belief(node);
   double* plan = &plan_[std::size_t(node) * num_live_];
-  const Bounds f = frontier_bounds(b, plan_scratch_.data());
+  // The node's own upper bound caps the sawtooth: points that cannot beat it are cut short.
+  const Bounds f = frontier_bounds(b, plan_scratch_.data(), upper_[node]);
   if (f.lower > lower_[node]) {
     lower_[node] = f.lower;
     std::copy(plan_scratch_.begin(), plan_scratch_.end(), plan);

@@ -196,7 +196,8 @@ class IdentificationSolver {
   // simple_bounds: commit now / one more sensing (cheap, what new nodes start with);
   // frontier_bounds: the stored plans and the sawtooth (tighter, costs a pass over both).
   Bounds simple_bounds(const double* belief, double* plan = nullptr) const;
-  Bounds frontier_bounds(const double* belief, double* plan = nullptr) const;
+  // The upper bound is never above upper_cap (a bound already known there).
+  Bounds frontier_bounds(const double* belief, double* plan, double upper_cap) const;
   // The stored plan best at `belief` (its values over live states) and its value there.
   const double* best_plan(const double* belief, double& value) const;
   void add_plan(AlphaVector plan);

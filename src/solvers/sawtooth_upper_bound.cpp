@@ -36,8 +36,9 @@ double SawtoothUpperBound::fib(const BeliefVector& belief) const {
   return best;
 }
 
-double SawtoothUpperBound::sawtooth(const BeliefVector& belief, double cv, int skip) const {
-  double best = cv;
+double SawtoothUpperBound::sawtooth(const BeliefVector& belief, double cv, int skip,
+                                    double cap) const {
+  double best = std::min(cv, cap);
   for (std::size_t i = 0; i < points_.size(); ++i) {
     if (static_cast<int>(i) == skip) continue;
     const Point& p = points_[i];
@@ -57,7 +58,12 @@ double SawtoothUpperBound::sawtooth(const BeliefVector& belief, double cv, int s
 }
 
 double SawtoothUpperBound::value(const BeliefVector& belief) const {
-  return std::min(fib(belief), sawtooth(belief, corner_value(belief), -1));
+  return std::min(fib(belief), sawtooth(belief, corner_value(belief), -1,
+                                        std::numeric_limits<double>::infinity()));
+}
+
+double SawtoothUpperBound::value_below(const BeliefVector& belief, double cap) const {
+  return std::min(fib(belief), sawtooth(belief, corner_value(belief), -1, cap));
 }
 
 bool SawtoothUpperBound::add(const BeliefVector& belief, double v) {
@@ -106,7 +112,8 @@ void SawtoothUpperBound::prune() {
   for (std::size_t i = 0; i < points_.size();) {
     const Point& p = points_[i];
     const double without =
-        std::min(fib(p.belief), sawtooth(p.belief, p.corner_value, static_cast<int>(i)));
+        std::min(fib(p.belief), sawtooth(p.belief, p.corner_value, static_cast<int>(i),
+                                         std::numeric_limits<double>::infinity()));
     if (without <= p.value + kImprovement) {
       points_.erase(points_.begin() + static_cast<std::ptrdiff_t>(i));
     } else {
