@@ -57,8 +57,8 @@ class AbtSolver final : public TreeSearchSolver {
   // With the exact leaves: refines the exact solver at the root for the budget's exact_share
   // first, then runs episodes for the rest (at least one).
   void improve(const Budget& budget, Rng& rng) override;
-  // With the exact leaves: the action the exact bounds prove optimal when they separate one, else
-  // the best of the episodes' Q estimates moved into the exact bounds on Q*.
+  // With the exact leaves: the action with the highest lower bound on Q* from the exact solver (the
+  // one its bounds prove optimal when they separate one).
   int best_action() const override;
   void update(int action, const pomdp::Observation& observation, const pomdp::Belief& belief_after,
               Rng& rng) override;
