@@ -84,18 +84,4 @@ Bounds ExactBoundsGuide::action_bounds(int action) const {
   return solver_->action_value(root_, action);
 }
 
-std::optional<int> ExactBoundsGuide::separated_action() const {
-  if (!active()) return std::nullopt;
-  const int actions = solver_->num_actions();
-  std::vector<Bounds> q(actions);
-  int best = 0;
-  for (int a = 0; a < actions; ++a) {
-    q[a] = action_bounds(a);
-    if (q[a].lower > q[best].lower) best = a;
-  }
-  for (int a = 0; a < actions; ++a)
-    if (a != best && q[a].upper > q[best].lower) return std::nullopt;
-  return best;
-}
-
 }  // namespace echoplan::solvers

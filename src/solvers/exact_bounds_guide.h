@@ -13,8 +13,7 @@
 //   - clamp(): a node's estimate moved into the solver's [lower, upper] bounds on V*, which hold
 //     whatever the episodes sampled (the true value lies inside, so the clamped estimate is never
 //     further from it);
-//   - action_bounds() and separated_action(): the bounds on Q* at the root, and the action they
-//     prove optimal when its lower bound is at least every other action's upper bound.
+//   - action_bounds(): the bounds on Q* at the root, on which the decision is made.
 // With `offline_expansions` > 0 (leaf `exact-offline`), the solver is refined at the start belief
 // with that many expansions once, when the guide is built, and every trial starts from a copy of
 // that solve; without, every trial starts from the problem file alone.
@@ -60,8 +59,6 @@ class ExactBoundsGuide {
   double clamp(NodeId node, double estimate) const;
   // Bounds on Q*(root, action).
   Bounds action_bounds(int action) const;
-  // The action the root's bounds prove optimal, if any.
-  std::optional<int> separated_action() const;
 
   const IdentificationSolver& solver() const { return *solver_; }
 

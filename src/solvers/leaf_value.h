@@ -60,7 +60,7 @@ struct LeafOptions {
   // Modes exact and exact-offline: the share of each step's budget spent refining the exact
   // solver at the root before the episodes, in [0, 1] (of the milliseconds; with an episode budget
   // of N, N * share solver expansions and N * (1 - share) episodes, at least one).
-  double exact_share = 0.5;
+  double exact_share = 1.0;
   // Mode exact-offline: expansions of the solve made before the first step; >= 1.
   long offline_expansions = 200000;
 };
