@@ -341,11 +341,14 @@ RevisionStats AbtSolver::revise(const ModelChange& change, Rng& rng) {
     throw std::logic_error("revise() needs SearchOptions::keep_episodes: no episodes were kept");
   // The policy leaf's values come from rollouts under the old table from every node's exact
   // belief, which the table also changed: every node would need revaluing, not only those on the
-  // affected episodes. Rebuilding the tree is the honest cost there.
+  // affected episodes; the exact leaves' solver was built from the old table. Rebuilding the tree
+  // is the honest cost there.
   if (policy_)
-    throw std::logic_error(
-        "revise() works with the lookahead, heuristic and rollout leaves; with the policy leaf "
-        "every node's value depends on the observation table: reset() the solver instead");
+    throw std::logic_error(std::string("revise() works with the lookahead, heuristic and rollout "
+                                       "leaves; with the ") +
+                           leaf_mode_name(options().leaf.mode) +
+                           " leaf every node's value depends on the observation table: reset() "
+                           "the solver instead");
   const pomdp::ModelPtr before = model_ptr();
   replace_model(change.model);
   const bool discrete = model().spec().observation.discrete;
