@@ -80,8 +80,10 @@ void AbtSolver::improve(const Budget& budget, Rng& rng) {
   if (seconds > 0.0) guide_->refine_root(RefineLimits{RefineLimits{}.target_gap, seconds, 0});
   const double spent_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  // Whole milliseconds left for the episodes; none (the default share 1): one episode, which
+  // keeps the tree's statistics alive without running over the step's time.
   const auto left = static_cast<std::int64_t>(double(budget.amount) - spent_ms);
-  TreeSearchSolver::improve(Budget::milliseconds(std::max<std::int64_t>(1, left)), rng);
+  TreeSearchSolver::improve(left >= 1 ? Budget::milliseconds(left) : Budget::episodes(1), rng);
 }
 
 int AbtSolver::best_action() const {
