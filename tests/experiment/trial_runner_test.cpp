@@ -141,7 +141,9 @@ TEST(Trials, FilesHoldOneRowPerTrialAndPerStep) {
     total += std::stoi(fields[k]);
   }
   EXPECT_EQ(total, 1000);
-  EXPECT_EQ(fields[9], "200");
+  // The default exact leaf spends the 200-episode budget as 200 exact-solver expansions and one
+  // episode (exact_share 1); the column counts episodes.
+  EXPECT_EQ(fields[9], "1");
 }
 
 TEST(Trials, PerObjectRunsKTrialsForEachObject) {
