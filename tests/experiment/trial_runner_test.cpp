@@ -212,6 +212,35 @@ TEST(Trials, BadOptionsAreInputErrors) {
   EXPECT_THROW(TrialLog("/proc/no_such_dir/out", h.model->spec(), 0), InputError);
 }
 
+// 12 trials of ABT with `leaf` at 1000 episodes per step on the seed problem (seed 2026), logged
+// and certified within a test's budget: 100,000 exact-solver expansions at b0, then 2,000 per
+// visited belief (counts, so they repeat). Prints the figures under `label`.
+Certificate certified_abt_trials(const std::string& leaf, const std::string& label) {
+  Harness h(leaf);
+  const auto dir = fresh_dir("certify_" + leaf);
+  TrialOptions options;
+  options.trials = 12;
+  options.budget = solvers::Budget::episodes(1000);
+  options.seed = 2026;
+  {
+    TrialLog log(dir, h.model->spec(), 1000);
+    run_trials(h.setup(), options, log);
+  }
+  const std::string steps = (dir / "steps.csv").string();
+  solvers::IdentificationSolver exact(*h.model->tabular());
+  CertifyOptions certify;
+  certify.root_expansions = 100000;
+  certify.expansions_per_belief = 2000;
+  const Certificate c =
+      certify_trials(exact, read_steps_csv(steps, h.model->spec()), certify, steps);
+  std::printf(
+      "%s, %d trials of 1000 episodes/step: V* in [%.4f, %.4f], regret %.4f +- %.4f (95%% CI; "
+      "lower end %.4f), certified %.1f%% of V*\n",
+      label.c_str(), options.trials, c.vstar.lower, c.vstar.upper, c.regret.mean,
+      c.regret.half_width, c.regret_lower_mean, 100 * c.share_of_vstar());
+  return c;
+}
+
 TEST(Trials, AbtIsCertifiedToKeepFourFifthsOfTheOptimalValueOnTheSeedProblem) {
   // Every decision of every trial is scored by its exact loss V*(b_t) - Q*(b_t, a_t) at the exact
   // belief of its history (regret_certificate.h); the discounted sum per trial has expectation
@@ -225,33 +254,12 @@ TEST(Trials, AbtIsCertifiedToKeepFourFifthsOfTheOptimalValueOnTheSeedProblem) {
   // That rejects the lookahead leaf ABT had before (true regret ~0.5, 81% of V*: BENCHMARKS.md) and
   // the fixed rule "strike until 98% sure" (2.452, regret 0.50), as well as every planner that
   // sorts on thin evidence (value below 0).
-  Harness h("policy");
-  const auto dir = fresh_dir("certify");
-  TrialOptions options;
-  options.trials = 12;
-  options.budget = solvers::Budget::episodes(1000);
-  options.seed = 2026;
-  {
-    TrialLog log(dir, h.model->spec(), 1000);
-    run_trials(h.setup(), options, log);
-  }
-  const std::string steps = (dir / "steps.csv").string();
-  solvers::IdentificationSolver exact(*h.model->tabular());
-  CertifyOptions certify;
-  certify.root_expansions = 100000;
-  certify.expansions_per_belief = 2000;
-  const Certificate c =
-      certify_trials(exact, read_steps_csv(steps, h.model->spec()), certify, steps);
+  const Certificate c = certified_abt_trials("policy", "ABT, policy leaf");
   ASSERT_EQ(c.trials.size(), 12u);
   // The bounds on V*(b0) contain the value DESIGN.md gives (exact search to 1e-4).
   EXPECT_LE(c.vstar.lower, 2.9534);
   EXPECT_GE(c.vstar.upper, 2.9534);
   EXPECT_LT(c.vstar.upper - c.vstar.lower, 0.2);
-  std::printf(
-      "ABT, %d trials of 1000 episodes/step: V* in [%.4f, %.4f], regret %.4f +- %.4f (95%% CI; "
-      "lower end %.4f), certified %.1f%% of V*\n",
-      options.trials, c.vstar.lower, c.vstar.upper, c.regret.mean, c.regret.half_width,
-      c.regret_lower_mean, 100 * c.share_of_vstar());
   EXPECT_LE(c.regret.mean + c.regret.half_width, 0.2 * c.vstar.lower);
   for (const TrialRegret& t : c.trials) EXPECT_TRUE(t.ended) << "trial " << t.trial;
 }
@@ -263,29 +271,8 @@ TEST(Trials, AbtWithTheExactLeafIsCertifiedWithinFourPercentOfTheOptimalValue) {
   // lower end 0.000, so nearly all of it is the certificate's looseness at a test's budget; the
   // policy leaf on these trials: 0.106 +- 0.084 (6.4%), which this bound rejects. With 100 trials
   // and certify's full budget: BENCHMARKS.md, "Certified share of V*".
-  Harness h("exact");
-  const auto dir = fresh_dir("certify_exact");
-  TrialOptions options;
-  options.trials = 12;
-  options.budget = solvers::Budget::episodes(1000);
-  options.seed = 2026;
-  {
-    TrialLog log(dir, h.model->spec(), 1000);
-    run_trials(h.setup(), options, log);
-  }
-  const std::string steps = (dir / "steps.csv").string();
-  solvers::IdentificationSolver exact(*h.model->tabular());
-  CertifyOptions certify;
-  certify.root_expansions = 100000;
-  certify.expansions_per_belief = 2000;
-  const Certificate c =
-      certify_trials(exact, read_steps_csv(steps, h.model->spec()), certify, steps);
+  const Certificate c = certified_abt_trials("exact", "ABT, exact leaf");
   ASSERT_EQ(c.trials.size(), 12u);
-  std::printf(
-      "ABT exact leaf, %d trials of 1000 episodes/step: regret %.4f +- %.4f (95%% CI; lower end "
-      "%.4f), certified %.1f%% of V*\n",
-      options.trials, c.regret.mean, c.regret.half_width, c.regret_lower_mean,
-      100 * c.share_of_vstar());
   EXPECT_LE(c.regret.mean + c.regret.half_width, 0.04 * c.vstar.lower);
   for (const TrialRegret& t : c.trials) EXPECT_TRUE(t.ended) << "trial " << t.trial;
 }
