@@ -14,6 +14,17 @@ namespace {
 constexpr double kStartBeliefTolerance = 0.1;
 // A leaf's lookahead: one expansion, to no particular gap.
 constexpr RefineLimits kLeafLookahead{1e-12, 0.0, 1};
+// A trial's solver stops refining (its bounds stay valid) at this many nodes, about 600 MB on the
+// seed problem: a trial that never becomes sure (100 steps of 20,000 expansions) would otherwise
+// grow towards the solver's own 2 GB cap in every worker. The measured trials stay far below it
+// (7 steps of 20 ms: about 100,000 nodes; the offline solve's 200,000 expansions: about 800,000).
+constexpr std::size_t kMaxNodesPerTrial = 3000000;
+
+IdentificationOptions planner_solver_options() {
+  IdentificationOptions options;
+  options.max_nodes = kMaxNodesPerTrial;
+  return options;
+}
 }  // namespace
 
 ExactBoundsGuide::ExactBoundsGuide(const pomdp::TabularModel& model, long offline_expansions)
@@ -24,7 +35,7 @@ ExactBoundsGuide::ExactBoundsGuide(const pomdp::TabularModel& model, long offlin
         "ends the episode), but " +
         *why + "; use --leaf policy or lookahead for this one");
   if (offline_expansions > 0) {
-    offline_.emplace(model);
+    offline_.emplace(model, planner_solver_options());
     offline_->refine(offline_->root(), RefineLimits{0.0, 0.0, offline_expansions});
   }
 }
@@ -33,7 +44,7 @@ void ExactBoundsGuide::reset(const std::vector<double>& belief) {
   if (offline_)
     solver_.emplace(*offline_);
   else
-    solver_.emplace(*tables_);
+    solver_.emplace(*tables_, planner_solver_options());
   evaluated_.clear();
   const std::vector<double> start = solver_->belief(solver_->root());
   double distance = 0.0;
