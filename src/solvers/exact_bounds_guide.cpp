@@ -33,7 +33,7 @@ ExactBoundsGuide::ExactBoundsGuide(const pomdp::TabularModel& model, long offlin
     throw InputError(
         "the exact leaf values need an identification problem (the state fixed until an action "
         "ends the episode), but " +
-        *why + "; use --leaf policy or lookahead for this one");
+        *why + "; use --leaf lookahead for this one");
   if (offline_expansions > 0) {
     offline_.emplace(model, planner_solver_options());
     offline_->refine(offline_->root(), RefineLimits{0.0, 0.0, offline_expansions});
