@@ -4,8 +4,10 @@
 # the point-based one, so the bounds repeat on any machine; wall time is as measured), for the seed
 # problem at discount 0.99 and 0.95 and generated problems of 4, 8, 16 and 64 objects (3 sensing
 # actions, 3 bins, seed 1). Each exact row is run with the frontier bounds of the default (plans +
-# sawtooth), with the plain bounds (commit now / one more sensing: the solver before them), and
-# with HSVI-style trials; then the point-based solver. Prints one table row per run.
+# sawtooth + the two-state partition relaxation), without the relaxation (the solver before it),
+# with the plain bounds (commit now / one more sensing), and with HSVI-style trials; then the
+# point-based solver. Prints one table row per run. PROBLEMS (environment) picks a subset, e.g.
+# PROBLEMS="seed099 objects8".
 # Usage: bench/exact_bounds.sh BUILD_DIR [EXPANSIONS] [POINT_BASED_TRIALS]
 set -eu
 build=$1
@@ -34,13 +36,17 @@ fields() {
 
 echo "| problem | method | lower | upper | gap | seconds | work |"
 echo "|---|---|---|---|---|---|---|"
-for p in seed099 seed095 objects4 objects8 objects16 objects64; do
-  for m in "exact full passes" "exact simple passes" "exact full trials"; do
+for p in ${PROBLEMS:-seed099 seed095 objects4 objects8 objects16 objects64}; do
+  # frontier search pair-relaxation label
+  for m in "full passes on full_passes" "full passes off full_passes,_no_pairs" \
+    "simple passes off simple_passes" "full trials on full_trials"; do
     set -- $m
-    "$bin" solve --problem "$dir/$p.yaml" --method exact --exact-frontier "$2" --exact-search "$3" \
-      --max-iterations "$expansions" --time-limit 600 --epsilon 1e-6 --json 2>/dev/null >"$dir/out.json"
+    label=$(echo "$4" | tr _ ' ')
+    "$bin" solve --problem "$dir/$p.yaml" --method exact --exact-frontier "$1" --exact-search "$2" \
+      --pair-relaxation "$3" --max-iterations "$expansions" --time-limit 600 --epsilon 1e-6 --json \
+      2>/dev/null >"$dir/out.json"
     set -- $(fields "$dir/out.json")
-    printf '| %s | exact, %s | %.5f | %.5f | %.4g | %.1f | %s %s |\n' "$p" "$m" "$1" "$2" "$3" "$4" "$5" "$6" | sed 's/exact, exact /exact, /'
+    printf '| %s | exact, %s | %.5f | %.5f | %.4g | %.1f | %s %s |\n' "$p" "$label" "$1" "$2" "$3" "$4" "$5" "$6"
   done
   "$bin" solve --problem "$dir/$p.yaml" --method point-based --max-iterations "$trials" \
     --time-limit 600 --epsilon 1e-6 --json 2>/dev/null >"$dir/out.json"

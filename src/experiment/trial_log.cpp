@@ -65,9 +65,13 @@ int index_of(const std::vector<std::string>& names, const std::string& name) {
 
 std::vector<LoggedTrial> read_steps_csv(const std::filesystem::path& path,
                                         const pomdp::ModelSpec& spec) {
-  const std::string file = path.string();
   std::ifstream in(path);
-  if (!in) throw InputError(file, 0, "cannot open the steps file");
+  if (!in) throw InputError(path.string(), 0, "cannot open the steps file");
+  return read_steps_csv(in, path.string(), spec);
+}
+
+std::vector<LoggedTrial> read_steps_csv(std::istream& in, const std::string& file,
+                                        const pomdp::ModelSpec& spec) {
   if (!spec.observation.discrete)
     throw InputError(file, 0, "the problem's observations are continuous; steps need symbols");
   std::string line;

@@ -21,6 +21,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <istream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -77,6 +78,9 @@ struct LoggedTrial {
 // Throws InputError naming the file and line of a missing column, an unknown action or
 // observation, a bad number, or a step out of order.
 std::vector<LoggedTrial> read_steps_csv(const std::filesystem::path& path,
+                                        const pomdp::ModelSpec& spec);
+// The same from a stream; `file` names it in messages.
+std::vector<LoggedTrial> read_steps_csv(std::istream& in, const std::string& file,
                                         const pomdp::ModelSpec& spec);
 
 // The summary as JSON (the content of summary.json without the run description).

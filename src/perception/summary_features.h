@@ -14,7 +14,9 @@
 //   [116, 119)  ln(1 + frames) until the level falls 10, 20 and 30 dB below its peak (decay)
 //   [119, 121)  mean ln flatness of the floored mel spectrum over frames 0-15 and 15-150
 //               (tonal ring vs noise)
-//   [121, 123)  ln of the mean spectral centroid (Hz) over frames 0-15 and 15-150
+//   [121, 123)  ln(1 + mean spectral centroid in Hz) over frames 0-15 and 15-150 (a brightness
+//               cue: psf's unwindowed 512-sample frames leak a tone into every bin, so a 500 Hz
+//               tone reads about 3 kHz)
 #pragma once
 
 #include <array>

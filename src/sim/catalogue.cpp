@@ -193,9 +193,17 @@ Catalogue read_catalogue(const YamlReader& f, const YAML::Node& root) {
   }
 
   const YamlMapping table(f, "table", top.required("table"));
-  table.only_keys(
-      {"material", "friction", "modes", "dense_modes", "thickness", "contact_loss_factor"});
+  table.only_keys({"material", "surface", "friction", "modes", "dense_modes", "thickness",
+                   "contact_loss_factor"});
   c.table.material = find_material(c, table);
+  c.table.surface = c.table.material;
+  if (table.has("surface")) {
+    const std::string name = table.name("surface");
+    auto it = c.materials.find(name);
+    if (it == c.materials.end())
+      table.fail(table.node()["surface"], "unknown material '" + name + "'");
+    c.table.surface = it->second;
+  }
   c.table.friction = table.number_or("friction", 0.45, NumberRange::above(0));
   if (table.has("modes")) c.table.modes = read_modes(f, "table", table.node()["modes"]);
   if (table.has("dense_modes")) {

@@ -81,12 +81,17 @@ struct DenseModes {
 // modes and its dense modal field, and the damping of an object held against it.
 struct TableSpec {
   Material material;
+  // The top's surface layer that a contact presses on (a laminate on an MDF core): a Hertz contact
+  // a fraction of a millimetre wide stresses the top millimetre, so its modulus sets the contact's
+  // stiffness and its loss the contact ring's. The same as `material` unless the catalogue names
+  // one.
+  Material surface;
   double friction = 0.45;
   double thickness = 0.025;  // m, of the top: sets its coincidence frequency (how well it radiates)
   std::vector<ListedMode> modes;
   DenseModes dense;
-  // Loss factor added to every mode of an object that rings while pressed onto the table and held
-  // by the fingers (energy flows into both): it is what makes a real strike a short thud.
+  // Loss factor added to every mode of an object that rings while pressed onto the table (energy
+  // flows into it). The holding finger pads add their own c / (2 m) (kFingerPadDamping).
   double contact_loss_factor = 0.0;
 };
 

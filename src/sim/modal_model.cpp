@@ -40,7 +40,7 @@ double clamped_plate_frequency(const Material& m, double radius, double thicknes
 }
 
 std::vector<Mode> object_modes(const ObjectSpec& o, double max_frequency_hz,
-                               double contact_loss_factor) {
+                               double contact_loss_factor, double pad_damping) {
   std::vector<Mode> modes;
   double loss = contact_loss_factor;
   for (const auto& a : o.added_masses) loss += a.loss_factor;
@@ -66,10 +66,11 @@ std::vector<Mode> object_modes(const ObjectSpec& o, double max_frequency_hz,
   constexpr double kClampedFreeBeta = 1.8751;
   constexpr double kWallCoupling = 0.6;
   const double r_mid = o.radius - o.wall_thickness / 2.0;
+  const double held = pad_damping / (2.0 * (wall_mass + on_wall) / 4.0);
   for (int n = 2; n <= o.ring_modes; ++n) {
     const double f = wall_factor * shell_mode_frequency(o.material, r_mid, o.wall_thickness, n,
                                                         kClampedFreeBeta / o.height);
-    keep(f, o.material.decay_rate(f), kWallCoupling / (n - 1), n);
+    keep(f, o.material.decay_rate(f) + held, kWallCoupling / (n - 1), n);
   }
   // The base: a clamped disc's first three modes, struck near its edge.
   constexpr std::array<std::pair<double, double>, 3> kBaseModes{
@@ -109,6 +110,12 @@ std::vector<Mode> table_modes(const TableSpec& table) {
 
 double coincidence_frequency(const Material& m, double thickness) {
   return kSpeedOfSound * kSpeedOfSound / (2.0 * std::numbers::pi * thickness * bending_speed(m));
+}
+
+double plate_point_impedance(const Material& m, double thickness) {
+  const double bending_stiffness = m.youngs_modulus * thickness * thickness * thickness /
+                                   (12.0 * (1.0 - m.poisson_ratio * m.poisson_ratio));
+  return 8.0 * std::sqrt(bending_stiffness * m.density * thickness);
 }
 
 double effective_modulus(const Material& a, const Material& b) {

@@ -72,7 +72,7 @@ struct RecordingConfig {
   double output_gain = 1400;  // full scale per unit of synthesized pressure before the limiter
                               // (every strike reaches it)
   double friction_gain =
-      6.4e-7;  // scale of sliding excitation relative to impacts (slides 17 dB below strikes)
+      7.2e-7;  // scale of sliding excitation relative to impacts (slides 17 dB below strikes)
   double motor_noise_gain =
       1.8e-5;  // motor noise per rad/s of summed joint speed (about 20 dB below a slide)
   double limiter_ceiling_dbfs = -3;  // the recorder's limiter: no sample above this

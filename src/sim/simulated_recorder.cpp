@@ -29,7 +29,7 @@ constexpr double kMotorRelease = 0.4;  // s for it to die away after the arm slo
 constexpr double kLimiterLookahead = 0.001;  // s
 constexpr double kRingGainFloor =
     0.15;  // real objects are not perfectly round: every ring mode hears a hit
-constexpr double kTableCoupling = 0.25;  // share of the contact force's effect that rings the table
+constexpr double kTableCoupling = 0.25;  // share of an impact's effect that rings the table
 constexpr double kProfileSpacing =
     2.0e-6;  // m between surface-profile samples (12.5 kHz at 5 cm/s)
 constexpr double kReferenceSlideSpeed = 0.05;  // m/s at which friction_gain is calibrated
@@ -284,12 +284,11 @@ std::vector<float> add_room(const std::vector<float>& dry,
 // whole: dipole radiation, proportional to dF/dt). The impact is the first half-cycle of the object
 // bouncing on the contact's Hertzian spring (its period 2 tau, tau the Hertz contact time); the
 // hand holds the object pressed onto the table after the strike, so the object does not fly off
-// and the oscillation rings on, losing energy into the table top (the table material's own decay
-// rate at that frequency) and into the fingers that hold it (the table's contact_loss_factor, the
-// same loss every object mode has while held on the table): `decay_per_s`. Its dF/dt is a cosine at
-// 1 / (2 tau) under that decay: why a strike is a short tonal thud near 500 Hz for a heavy mug and
-// near 800 Hz for a light cup (the lab's 560 and 904 Hz), and why the added mass of a weighted
-// object lowers it (tau ~ m^0.4).
+// and the oscillation rings on, losing energy in the strained surface and object and into the
+// finger pads that hold it (SimulatedRecorder::contact_ring_decay): `decay_per_s`. Its dF/dt is a
+// cosine at 1 / (2 tau) under that decay: why a strike is a short tonal thud near 500 Hz for a
+// heavy mug and near 800 Hz for a light cup (the lab's 560 and 904 Hz), and why the added mass of a
+// weighted object lowers it (tau ~ m^0.4).
 void add_contact_ring(double momentum, double tau, double decay_per_s, std::size_t at, int rate,
                       std::vector<float>& out) {
   const double scale = kPulseGain * momentum * std::numbers::pi / (tau * kTwoPi * kReferenceHz);
@@ -404,12 +403,12 @@ SimulatedRecorder::SimulatedRecorder(const ObjectSpec& object, const TableSpec& 
     : object_(object),
       config_(config),
       object_modes_(sim::object_modes(object, 0.45 * config.recording.sample_rate,
-                                      table.contact_loss_factor)),
+                                      table.contact_loss_factor, kFingerPadDamping)),
       table_modes_(sim::table_modes(table)),
-      table_material_(table.material),
-      contact_loss_factor_(table.contact_loss_factor),
-      contact_modulus_(effective_modulus(object.material, table.material)),
+      table_surface_(table.surface),
+      contact_modulus_(effective_modulus(object.material, table.surface)),
       table_coincidence_hz_(coincidence_frequency(table.material, table.thickness)),
+      table_impedance_(plate_point_impedance(table.material, table.thickness)),
       object_mode_scale_(kReferenceModalMass / object.total_mass()) {
   std::erase_if(table_modes_, [&](const Mode& m) {
     return m.frequency_hz >= 0.45 * config.recording.sample_rate;
@@ -420,6 +419,20 @@ double SimulatedRecorder::table_radiation(double frequency_hz) const {
   // Below its coincidence frequency a finite plate radiates through its edges and corners only,
   // with an efficiency rising about as f / f_c (Maidanik 1962): pressure as its square root.
   return std::sqrt(std::min(1.0, frequency_hz / table_coincidence_hz_));
+}
+
+double SimulatedRecorder::contact_ring_decay(const Impact& impact) const {
+  const double ring_hz = 0.5 / contact_time(impact);
+  // The Hertzian spring's strain energy sits in both bodies in proportion to their compliances
+  // (1 - nu^2) / E, so each loses its share at its own material's rate.
+  auto compliance = [](const Material& m) {
+    return (1.0 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;
+  };
+  const double surface_share =
+      compliance(table_surface_) / (compliance(table_surface_) + compliance(object_.material));
+  return surface_share * table_surface_.decay_rate(ring_hz) +
+         (1.0 - surface_share) * object_.material.decay_rate(ring_hz) +
+         kFingerPadDamping / (2.0 * impact.effective_mass);
 }
 
 double SimulatedRecorder::contact_time(const Impact& impact) const {
@@ -464,27 +477,38 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
                                                     radiated(m.frequency_hz) *
                                                     table_radiation(m.frequency_hz));
     }
-    const double ring_hz = 0.5 / tau;
-    add_contact_ring(
-        momentum, tau,
-        table_material_.decay_rate(ring_hz) + std::numbers::pi * ring_hz * contact_loss_factor_, at,
-        rate, dry);
+    add_contact_ring(momentum, tau, contact_ring_decay(impact), at, rate, dry);
   }
   NoiseSource noise(rng);
   const std::vector<float> friction =
       friction_excitation(trace, rate, frames, rec.friction_gain, noise);
-  // Friction drives every mode continuously, radiated like the impacts (dipole: rising with
-  // frequency). Roughness noise is a velocity source (the surfaces are made to follow each other's
-  // asperities, see friction_excitation), so unlike an impact's impulse it sets the modes' velocity
-  // whatever their modal mass: no 1 / mass scale here (a light cup does not sing louder when pushed
-  // than a heavy mug; the lab's cup slides were broadband, not tonal).
-  for (std::size_t k = 0; k < object_modes_.size(); ++k)
+  // Friction drives every mode continuously. Roughness noise is a velocity source (the surfaces are
+  // made to follow each other's asperities, see friction_excitation) between two bodies, so the
+  // imposed velocity splits between them like a source across two impedances in series (Cremer &
+  // Heckl): the object, a mass on the contact (impedance j omega m), takes Z_t / (Z_t + j omega m)
+  // of it and the table top (its point impedance Z_t) the rest, j omega m / (Z_t + j omega m). A
+  // light cup follows the asperities alone and leaves the table still; a 0.34 kg mug resists above
+  // Z_t / (2 pi m) ~ 1.1 kHz, so its 3.7 kHz shell modes are barely driven and the table moves
+  // instead. A velocity source sets the modes' velocity whatever their modal mass: no 1 / mass
+  // scale here (unlike an impact's impulse). The object radiates as a compact body (dipole: rising
+  // with frequency, like the impacts); the table top as a plate, its pressure following its
+  // velocity times the square root of its radiation efficiency (table_radiation), with no dipole
+  // factor.
+  auto object_share = [&](double f) {
+    const double x = kTwoPi * f * object_.total_mass() / table_impedance_;
+    return 1.0 / std::sqrt(1.0 + x * x);
+  };
+  for (std::size_t k = 0; k < object_modes_.size(); ++k) {
+    const Mode& m = object_modes_[k];
     object_drives[k].continuous_gain =
-        object_modes_[k].gain * object_modes_[k].frequency_hz / kReferenceHz;
-  for (std::size_t k = 0; k < table_modes_.size(); ++k)
-    table_drives[k].continuous_gain = kTableCoupling * table_modes_[k].gain *
-                                      table_modes_[k].frequency_hz / kReferenceHz *
-                                      table_radiation(table_modes_[k].frequency_hz);
+        object_share(m.frequency_hz) * m.gain * m.frequency_hz / kReferenceHz;
+  }
+  for (std::size_t k = 0; k < table_modes_.size(); ++k) {
+    const Mode& m = table_modes_[k];
+    const double object = object_share(m.frequency_hz);
+    table_drives[k].continuous_gain =
+        std::sqrt(1.0 - object * object) * m.gain * table_radiation(m.frequency_hz);
+  }
 
   std::pair<std::size_t, std::size_t> friction_span{frames, 0};
   for (std::size_t n = 0; n < friction.size(); ++n)

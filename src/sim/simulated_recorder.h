@@ -7,7 +7,9 @@
 //   weights each mode (the rim contact pattern weights the shell ring modes), radiating directly as
 //   the object ringing on its contact spring (the contact ring);
 // - sliding: a fractal (1/f^2) surface profile read at the sliding speed (roughness noise);
-// - both drive the object's modes and the table's modes (damped resonators); the arm's motors add
+// - both drive the object's modes and the table's modes (damped resonators); a slide's roughness
+//   velocity splits between object and table by their impedances (a heavy object resists it at high
+//   frequency and the table takes it); the arm's motors add
 //   band noise following the joints' speed;
 // - a short room response (the direct sound plus a sparse, exponentially decaying noise tail);
 // - two microphone capsules, each with its own delay and 1/r gain from its distance to the object;
@@ -40,15 +42,19 @@ class SimulatedRecorder {
   // Hertz contact time (s) of an impact recorded in a trace, with this object on this table.
   double contact_time(const Impact& impact) const;
 
+  // Decay rate (1/s) of the contact ring an impact starts: the Hertz spring's losses in the table's
+  // surface and in the object (each its share of the strain energy) and the holding finger pads'.
+  double contact_ring_decay(const Impact& impact) const;
+
  private:
   ObjectSpec object_;
   SimConfig config_;
   std::vector<Mode> object_modes_;
   std::vector<Mode> table_modes_;
-  Material table_material_;         // the contact's oscillation loses energy into the table top
-  double contact_loss_factor_ = 0;  // and into the fingers holding the object (TableSpec)
-  double contact_modulus_ = 0;      // Pa, E* of object material on table material
+  Material table_surface_;      // the contact presses on it, its ring loses energy into it
+  double contact_modulus_ = 0;  // Pa, E* of object material on table material
   double table_coincidence_hz_ = 0;
+  double table_impedance_ = 0;  // N s/m, the top's point impedance (plate_point_impedance)
   double object_mode_scale_ =
       1;  // the object's modes' response per unit impulse, relative (1 / mass)
   // Pressure amplitude factor of the table's radiation at `frequency_hz` (1 above coincidence).

@@ -132,10 +132,16 @@ IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m,
           kind_[a] == ActionKind::terminal ? r : r + discount_ * stay_[a * L + l] * known_value_[l];
     }
     if (kind_[a] == ActionKind::terminal)
-      plans_.add(AlphaVector{a, std::vector<double>(&reward_[a * L], &reward_[a * L] + L)});
+      add_plan(AlphaVector{a, std::vector<double>(&reward_[a * L], &reward_[a * L] + L)});
   }
   upper_points_ = SawtoothUpperBound(std::move(one_more_sensing),
                                      (reward_max - reward_min) / (1.0 - discount_));
+  if (options_.pair_upper_bound) {
+    IdentificationTables tables{L,       A,         O,           discount_, std::vector<bool>(A),
+                                reward_, emission_, known_value_};
+    for (int a = 0; a < A; ++a) tables.terminal[a] = kind_[a] == ActionKind::terminal;
+    pair_bound_ = PairRelaxationBound(tables, options_.pair_relaxation);
+  }
 
   std::uint64_t state = 0x6964656e74696679ULL;  // "identify"
   pair_code_.resize(std::size_t(A) * O);
@@ -175,22 +181,48 @@ Bounds IdentificationSolver::simple_bounds(const double* b, double* plan) const 
   }
   if (plan != nullptr)
     std::copy(&reward_[best * num_live_], &reward_[(best + 1) * num_live_], plan);
+  if (pair_bound_.num_pairs() > 0) upper = std::min(upper, pair_bound_.value(b));
   return {lower, std::max(lower, upper)};
 }
 
-Bounds IdentificationSolver::frontier_bounds(const double* b, double* plan) const {
+Bounds IdentificationSolver::frontier_bounds(const double* b, double* plan,
+                                             double upper_cap) const {
   const BeliefVector belief(b, b + num_live_);
-  const AlphaVector& best = plans_.vectors()[plans_.best_index(belief)];
-  const double lower = dot(best.values, belief);
-  if (plan != nullptr) std::copy(best.values.begin(), best.values.end(), plan);
-  // Without points the sawtooth is max over the one-more-sensing vectors.
-  return {lower, std::max(lower, upper_points_.value(belief))};
+  double lower = 0.0;
+  const double* best = best_plan(b, lower);
+  if (plan != nullptr) std::copy(best, best + num_live_, plan);
+  // Without points the sawtooth is max over the one-more-sensing vectors. (The pair relaxation
+  // is in every node's bounds from the start: simple_bounds.)
+  return {lower, std::max(lower, upper_points_.value_below(belief, upper_cap))};
+}
+
+const double* IdentificationSolver::best_plan(const double* b, double& value) const {
+  const int L = num_live_;
+  const std::size_t count = plan_matrix_.size() / L;
+  std::size_t best = 0;
+  value = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < count; ++k) {
+    const double* alpha = &plan_matrix_[k * L];
+    double v = 0.0;
+    for (int l = 0; l < L; ++l) v += alpha[l] * b[l];
+    if (v > value) value = v, best = k;
+  }
+  return &plan_matrix_[best * L];
+}
+
+void IdentificationSolver::add_plan(AlphaVector plan) {
+  if (!plans_.add(std::move(plan))) return;
+  // The set may have dropped plans the new one dominates: copy it afresh (as costly as the add).
+  plan_matrix_.clear();
+  for (const AlphaVector& alpha : plans_.vectors())
+    plan_matrix_.insert(plan_matrix_.end(), alpha.values.begin(), alpha.values.end());
 }
 
 void IdentificationSolver::refresh(NodeId node) {
   const double* b = node_belief(node);
   double* plan = &plan_[std::size_t(node) * num_live_];
-  const Bounds f = frontier_bounds(b, plan_scratch_.data());
+  // The node's own upper bound caps the sawtooth: points that cannot beat it are cut short.
+  const Bounds f = frontier_bounds(b, plan_scratch_.data(), upper_[node]);
   if (f.lower > lower_[node]) {
     lower_[node] = f.lower;
     std::copy(plan_scratch_.begin(), plan_scratch_.end(), plan);
@@ -208,6 +240,34 @@ double IdentificationSolver::child_belief(const double* b, int a, int o, double*
   if (weight > 0.0)
     for (int l = 0; l < num_live_; ++l) out[l] /= weight;
   return weight;
+}
+
+IdentificationSolver::NodeId IdentificationSolver::NodeIndex::find(const Key& key) const {
+  if (slots_.empty()) return kEnded;
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t i = key.a & mask;; i = (i + 1) & mask) {
+    const Slot& slot = slots_[i];
+    if (slot.id == kEnded) return kEnded;
+    if (slot.key == key) return slot.id;
+  }
+}
+
+void IdentificationSolver::NodeIndex::insert(const Key& key, NodeId id) {
+  // At most 5/8 full, so that probes stay short.
+  if (8 * (size_ + 1) > 5 * slots_.size()) grow();
+  const std::size_t mask = slots_.size() - 1;
+  std::size_t i = key.a & mask;
+  while (slots_[i].id != kEnded) i = (i + 1) & mask;
+  slots_[i] = Slot{key, id};
+  ++size_;
+}
+
+void IdentificationSolver::NodeIndex::grow() {
+  std::vector<Slot> old(std::max<std::size_t>(1024, 2 * slots_.size()));
+  old.swap(slots_);
+  size_ = 0;
+  for (const Slot& slot : old)
+    if (slot.id != kEnded) insert(slot.key, slot.id);
 }
 
 IdentificationSolver::Key IdentificationSolver::child_key(NodeId node, int a, int o) const {
@@ -233,7 +293,7 @@ IdentificationSolver::NodeId IdentificationSolver::insert(const Key& key, const 
   lower_.push_back(f.lower);
   upper_.push_back(f.upper);
   expanded_at_.push_back(std::numeric_limits<double>::infinity());
-  index_.emplace(key, id);
+  index_.insert(key, id);
   return id;
 }
 
@@ -245,7 +305,7 @@ IdentificationSolver::NodeId IdentificationSolver::child(NodeId node, int action
   if (observation < 0 || observation >= num_observations_)
     throw std::invalid_argument(fmt::format("observation {} is out of range", observation));
   const Key key = child_key(node, action, observation);
-  if (auto it = index_.find(key); it != index_.end()) return it->second;
+  if (const NodeId found = index_.find(key); found != kEnded) return found;
   std::vector<double> b(num_live_);
   const double p = child_belief(node_belief(node), action, observation, b.data());
   if (p <= 0.0) return kEnded;
@@ -282,8 +342,8 @@ Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView
     c = ChildView{};
     const double* e = &emission_[(std::size_t(a) * num_observations_ + o) * L];
     const Key key = child_key(node, a, o);
-    if (auto it = index_.find(key); it != index_.end()) {
-      c.id = it->second;
+    if (const NodeId found = index_.find(key); found != kEnded) {
+      c.id = found;
       // The probability still comes from this node's belief (the child's belief is normalised).
       for (int l = 0; l < L; ++l) c.probability += b[l] * e[l];
       c.bounds = value(c.id);
@@ -326,7 +386,7 @@ std::vector<double> IdentificationSolver::belief(NodeId node) const {
 
 bool IdentificationSolver::backup(NodeId node) {
   const int L = num_live_;
-  std::vector<double> plan(L), best_plan(L);
+  std::vector<double> plan(L), chosen(L);
   double lower = -std::numeric_limits<double>::infinity(), upper = lower;
   int best_action = 0;
   for (int a = 0; a < num_actions_; ++a) {
@@ -334,7 +394,7 @@ bool IdentificationSolver::backup(NodeId node) {
     if (q.lower > lower) {
       lower = q.lower;
       best_action = a;
-      best_plan.swap(plan);
+      chosen.swap(plan);
     }
     upper = std::max(upper, q.upper);
   }
@@ -343,12 +403,16 @@ bool IdentificationSolver::backup(NodeId node) {
   const double* b = node_belief(node);
   if (raised) {
     lower_[node] = lower;
-    std::copy(best_plan.begin(), best_plan.end(), &plan_[std::size_t(node) * L]);
+    std::copy(chosen.begin(), chosen.end(), &plan_[std::size_t(node) * L]);
     // Stored only when it beats the plans at this belief: a plan that does not would never be the
     // maximum where it was found, and every stored plan costs every later frontier evaluation.
-    if (options_.plan_lower_bound && plans_.size() < options_.max_frontier_entries &&
-        lower > plans_.value(BeliefVector(b, b + L)) + options_.frontier_margin)
-      plans_.add(AlphaVector{best_action, best_plan});
+    const std::size_t max_plans = options_.max_frontier_plans > 0 ? options_.max_frontier_plans
+                                                                  : options_.max_frontier_entries;
+    if (options_.plan_lower_bound && plans_.size() < max_plans) {
+      double known = 0.0;
+      best_plan(b, known);
+      if (lower > known + options_.frontier_margin) add_plan(AlphaVector{best_action, chosen});
+    }
   }
   if (lowered) {
     upper_[node] = std::max(lower_[node], upper);
@@ -414,7 +478,7 @@ bool IdentificationSolver::trial(NodeId start, int forced_action, double epsilon
     for (int a = 0; a < num_actions_; ++a) {
       if (kind_[a] != ActionKind::sensing || (forced && a != forced_action)) continue;
       for (int o = 0; o < num_observations_; ++o)
-        if (index_.find(child_key(node, a, o)) == index_.end()) child(node, a, o);
+        if (index_.find(child_key(node, a, o)) == kEnded) child(node, a, o);
     }
     int action = forced_action;
     if (!forced) {

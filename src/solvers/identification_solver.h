@@ -15,7 +15,10 @@
 //   upper: the sawtooth interpolation (solvers/sawtooth_upper_bound.h) between the known-state
 //          values at the corners and the (belief, upper bound) of every backed-up node, capped by
 //          max(commit now, max over sensing a of R(b, a) + γ Σ_s b(s) stay(s, a) V_known(s)),
-//          where V_known(s) is the value when s is known ("one more sensing reveals the state").
+//          where V_known(s) is the value when s is known ("one more sensing reveals the state"),
+//          and by the partition relaxation: revealing which pair of states holds can only help,
+//          so V*(b) <= Σ_pairs P(pair) V*_pair(b | pair), with each two-state sub-problem solved
+//          once, up front, on a grid (solvers/pair_relaxation_bound.h).
 // Both are valid at any belief because V* over the live states is convex (a POMDP value).
 //
 // Refinement works in passes of shrinking δ (the default): a pass expands, depth first, every
@@ -51,11 +54,11 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "pomdp/model.h"
 #include "solvers/alpha_vector_set.h"
+#include "solvers/pair_relaxation_bound.h"
 #include "solvers/sawtooth_upper_bound.h"
 
 namespace echoplan::solvers {
@@ -85,13 +88,23 @@ struct IdentificationOptions {
   Search search = Search::passes;
   bool plan_lower_bound = true;      // frontier lower bound from backed-up plans (else commit now)
   bool sawtooth_upper_bound = true;  // frontier upper bound by sawtooth (else one-more-sensing)
+  // Every new belief's upper bound also capped by the partition relaxation over two-state
+  // sub-problems solved up front (solvers/pair_relaxation_bound.h).
+  bool pair_upper_bound = true;
+  PairRelaxationOptions pair_relaxation;
   // A backed-up node's plan (point) joins the frontier's lower (upper) bound only when it beats
   // that bound at its belief by more than this: every stored plan and point costs every later
   // frontier evaluation, and small gains are not worth it (reward units).
   double frontier_margin = 1e-3;
-  // At most this many plans and this many points (the first found, which come from the beliefs
-  // nearest the root): a frontier evaluation costs (plans + points) · states.
+  // At most this many points, and this many plans unless max_frontier_plans says otherwise (the
+  // first found, which come from the beliefs nearest the root): a frontier evaluation costs
+  // (plans + points) · states.
   std::size_t max_frontier_entries = 256;
+  // The plans' own cap when > 0 (else max_frontier_entries): a plan costs a dot product over
+  // the states per evaluation (kept contiguous), a sawtooth point a scan over its support, and
+  // the frontier's lower bound is the side that gains more from more entries (measured: 1024
+  // plans halved the gap in equal time on the seed and 8-object problems; docs/BENCHMARKS.md).
+  std::size_t max_frontier_plans = 1024;
   // Memory cap: refinement stops (bounds stay valid) when this many nodes exist; 0: about 2 GB.
   std::size_t max_nodes = 0;
 };
@@ -140,6 +153,10 @@ class IdentificationSolver {
   // How many plans bound new beliefs from below, and how many belief points from above.
   std::size_t num_plans() const { return plans_.size(); }
   std::size_t num_upper_points() const { return upper_points_.num_points(); }
+  // How many two-state sub-problems cap new beliefs' upper bounds (0 when the option is off).
+  std::size_t num_relaxation_pairs() const { return pair_bound_.num_pairs(); }
+  // That bound, over the live states in model order (belief() without the absorbing states).
+  const PairRelaxationBound& pair_relaxation() const { return pair_bound_; }
 
  private:
   enum class ActionKind { sensing, terminal };
@@ -147,8 +164,23 @@ class IdentificationSolver {
     std::uint64_t a = 0, b = 0;
     friend bool operator==(const Key&, const Key&) = default;
   };
-  struct KeyHash {
-    std::size_t operator()(const Key& k) const { return k.a ^ (k.b * 0x9e3779b97f4a7c15ULL); }
+  // Node ids by key: open addressing with linear probing (the keys are random codes, so their
+  // low bits are a good hash). A node-based hash map cost a cache miss or two per lookup and
+  // was the largest single cost of a search (perf, docs/BENCHMARKS.md).
+  class NodeIndex {
+   public:
+    // The node with `key`, or kEnded when there is none.
+    NodeId find(const Key& key) const;
+    void insert(const Key& key, NodeId id);
+
+   private:
+    struct Slot {
+      Key key;
+      NodeId id = kEnded;
+    };
+    void grow();
+    std::vector<Slot> slots_;
+    std::size_t size_ = 0;
   };
   // What a one-step lookahead at a node says about its children.
   struct ChildView {
@@ -164,7 +196,11 @@ class IdentificationSolver {
   // simple_bounds: commit now / one more sensing (cheap, what new nodes start with);
   // frontier_bounds: the stored plans and the sawtooth (tighter, costs a pass over both).
   Bounds simple_bounds(const double* belief, double* plan = nullptr) const;
-  Bounds frontier_bounds(const double* belief, double* plan = nullptr) const;
+  // The upper bound is never above upper_cap (a bound already known there).
+  Bounds frontier_bounds(const double* belief, double* plan, double upper_cap) const;
+  // The stored plan best at `belief` (its values over live states) and its value there.
+  const double* best_plan(const double* belief, double& value) const;
+  void add_plan(AlphaVector plan);
   // Tightens a stored node's bounds with what the plans and points know now.
   void refresh(NodeId node);
   double expected_reward(const double* belief, int action) const;
@@ -205,8 +241,10 @@ class IdentificationSolver {
   std::vector<double> known_value_;  // [l] = V*(state l known)
   std::vector<Key> pair_code_;       // [a * O + o]
   IdentificationOptions options_;
-  AlphaVectorSet plans_;                           // over live states: the frontier's lower bound
+  AlphaVectorSet plans_;             // over live states: the frontier's lower bound
+  std::vector<double> plan_matrix_;  // [k * L + l]: plans_'s vectors, contiguous for the scans
   SawtoothUpperBound upper_points_{{{0.0}}, 0.0};  // over live states: the frontier's upper bound
+  PairRelaxationBound pair_bound_;                 // over live states: every new belief's cap
 
   // Nodes: flat arrays indexed by NodeId.
   std::vector<double> beliefs_;  // [node * L + l], normalised over live states
@@ -219,7 +257,7 @@ class IdentificationSolver {
   std::vector<std::uint16_t> counts_;  // [node * A * O + a * O + o] = n_ao
   // The smallest δ each node was expanded with; +inf when never.
   std::vector<double> expanded_at_;
-  std::unordered_map<Key, NodeId, KeyHash> index_;
+  NodeIndex index_;
   long expansions_ = 0;
   std::vector<ChildView> children_scratch_;     // backup()'s lookahead
   mutable std::vector<double> belief_scratch_;  // lookahead()'s child belief

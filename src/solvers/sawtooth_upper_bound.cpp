@@ -36,23 +36,34 @@ double SawtoothUpperBound::fib(const BeliefVector& belief) const {
   return best;
 }
 
-double SawtoothUpperBound::sawtooth(const BeliefVector& belief, double cv, int skip) const {
-  double best = cv;
+double SawtoothUpperBound::sawtooth(const BeliefVector& belief, double cv, int skip,
+                                    double cap) const {
+  double best = std::min(cv, cap);
   for (std::size_t i = 0; i < points_.size(); ++i) {
     if (static_cast<int>(i) == skip) continue;
     const Point& p = points_[i];
+    // The point lowers the bound only where it lies below the corners, and then only when its
+    // ratio exceeds `needed`: the scan over its support stops as soon as the ratio falls to it.
+    const double gain = p.value - p.corner_value;
+    if (gain >= 0.0) continue;
+    const double needed = (best - cv) / gain;
     double ratio = std::numeric_limits<double>::infinity();
-    for (int s : p.support) {
-      ratio = std::min(ratio, belief[s] / p.belief[s]);
-      if (ratio == 0.0) break;
+    for (std::size_t k = 0; k < p.support.size(); ++k) {
+      ratio = std::min(ratio, belief[p.support[k]] * p.inverse[k]);
+      if (ratio <= needed) break;
     }
-    if (ratio > 0.0) best = std::min(best, cv + ratio * (p.value - p.corner_value));
+    if (ratio > needed) best = cv + ratio * gain;
   }
   return best;
 }
 
 double SawtoothUpperBound::value(const BeliefVector& belief) const {
-  return std::min(fib(belief), sawtooth(belief, corner_value(belief), -1));
+  return std::min(fib(belief), sawtooth(belief, corner_value(belief), -1,
+                                        std::numeric_limits<double>::infinity()));
+}
+
+double SawtoothUpperBound::value_below(const BeliefVector& belief, double cap) const {
+  return std::min(fib(belief), sawtooth(belief, corner_value(belief), -1, cap));
 }
 
 bool SawtoothUpperBound::add(const BeliefVector& belief, double v) {
@@ -75,6 +86,7 @@ bool SawtoothUpperBound::add(const BeliefVector& belief, double v) {
   for (std::size_t i = first_kept; i < order.size(); ++i) {
     p.belief[order[i]] = belief[order[i]] / (1.0 - dropped);
     p.support.push_back(order[i]);
+    p.inverse.push_back(1.0 / p.belief[order[i]]);
   }
   p.value = v + value_span_ * dropped;
 
@@ -100,7 +112,8 @@ void SawtoothUpperBound::prune() {
   for (std::size_t i = 0; i < points_.size();) {
     const Point& p = points_[i];
     const double without =
-        std::min(fib(p.belief), sawtooth(p.belief, p.corner_value, static_cast<int>(i)));
+        std::min(fib(p.belief), sawtooth(p.belief, p.corner_value, static_cast<int>(i),
+                                         std::numeric_limits<double>::infinity()));
     if (without <= p.value + kImprovement) {
       points_.erase(points_.begin() + static_cast<std::ptrdiff_t>(i));
     } else {

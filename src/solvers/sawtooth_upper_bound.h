@@ -27,6 +27,9 @@ class SawtoothUpperBound {
   SawtoothUpperBound(std::vector<std::vector<double>> state_action_bounds, double value_span);
 
   double value(const BeliefVector& belief) const;
+  // min(value(belief), cap), faster when the cap is low: points that cannot go below it are
+  // skipped after a partial scan.
+  double value_below(const BeliefVector& belief, double cap) const;
 
   // Records that V*(belief) <= value. Corners (one state with probability 1) lower that corner's
   // value; other beliefs become points when they improve the bound. Returns true when the bound
@@ -41,13 +44,16 @@ class SawtoothUpperBound {
  private:
   struct Point {
     BeliefVector belief;
-    std::vector<int> support;  // states with belief > 0
+    std::vector<int> support;     // states with belief > 0
+    std::vector<double> inverse;  // [k] = 1 / belief[support[k]]: a multiplication per state
     double value = 0.0;
     double corner_value = 0.0;  // corners_ . belief, refreshed when a corner changes
   };
   double corner_value(const BeliefVector& belief) const;
   // The sawtooth bound from the corners and every point except `skip` (-1 for none).
-  double sawtooth(const BeliefVector& belief, double corner_value_at_belief, int skip) const;
+  // Never above `cap` (+inf for the plain bound).
+  double sawtooth(const BeliefVector& belief, double corner_value_at_belief, int skip,
+                  double cap) const;
   double fib(const BeliefVector& belief) const;
 
   std::vector<std::vector<double>> fib_vectors_;  // [a][s]

@@ -108,6 +108,20 @@ TEST(Catalogue, UnknownMaterialNamesTheEntry) {
   EXPECT_NE(e.problem().find("unknown material 'unobtainium'"), std::string::npos) << e.what();
 }
 
+TEST(Catalogue, TableSurfaceIsTheTopMaterialUnlessNamed) {
+  const Catalogue plain = parse_catalogue(kValid, "test.yaml");
+  EXPECT_EQ(plain.table.surface.name, "wood");
+  const Catalogue laminated = parse_catalogue(
+      replace(kValid, "  material: wood\n", "  material: wood\n  surface: ceramic\n"), "test.yaml");
+  EXPECT_EQ(laminated.table.material.name, "wood");
+  EXPECT_EQ(laminated.table.surface.name, "ceramic");
+  EXPECT_DOUBLE_EQ(laminated.table.surface.youngs_modulus, 7.2e10);
+  const InputError e =
+      parse_error(replace(kValid, "  material: wood\n", "  material: wood\n  surface: formica\n"));
+  EXPECT_EQ(e.line(), 6);
+  EXPECT_NE(e.problem().find("unknown material 'formica'"), std::string::npos) << e.what();
+}
+
 TEST(Catalogue, MissingFieldNamesTheEntryAndField) {
   const InputError e = parse_error(replace(kValid, "    contact_radius: 0.004\n", ""));
   EXPECT_EQ(e.line(), 10);  // the entry's mapping starts on the line after "mug:"

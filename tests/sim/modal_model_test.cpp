@@ -53,6 +53,15 @@ TEST(ModalModel, ClampedPlateReproducesLeissasFundamental) {
   EXPECT_NEAR(clamped_plate_frequency(ceramic(), 0.1, 0.002, 10.2158), 493.74, 0.02 * 493.74);
 }
 
+TEST(ModalModel, PlatePointImpedanceIsCremerAndHecklsInfinitePlate) {
+  // 8 sqrt(B m''), worked by hand for a 25 mm MDF top (E 3.5 GPa, nu 0.25, 750 kg/m^3):
+  // B = 3.5e9 * 0.025^3 / (12 * 0.9375) = 4861.1 N m, m'' = 18.75 kg/m^2, Z = 8 * 301.90 = 2415.2.
+  const Material mdf{"mdf", 750, 3.5e9, 0.25, 60, 4.5e-6};
+  EXPECT_NEAR(plate_point_impedance(mdf, 0.025), 2415.2, 0.5);
+  // Twice as thick: B x 8, m'' x 2, Z x 4.
+  EXPECT_NEAR(plate_point_impedance(mdf, 0.05), 4 * 2415.2, 2.0);
+}
+
 TEST(ModalModel, ObjectModesComeFromShellPlateAndContactLoss) {
   const auto modes = object_modes(mug(), 20000, 0.03);
   ASSERT_GE(modes.size(), 2u);
@@ -62,6 +71,34 @@ TEST(ModalModel, ObjectModesComeFromShellPlateAndContactLoss) {
       modes[0].decay_per_s,
       ceramic().decay_rate(modes[0].frequency_hz) + std::numbers::pi * modes[0].frequency_hz * 0.03,
       1e-9);
+}
+
+TEST(ModalModel, HoldingPadsDampTheWallModesNotTheBase) {
+  // A damper c on a mode of modal mass m takes sigma = c / (2 m). The test mug's wall weighs
+  // 0.3 * (2 * 0.005 * 0.1) / (2 * 0.005 * 0.1 + 0.04 * 0.006) = 0.241935 kg, a quarter of it
+  // 0.060484 kg: 2.4 N s/m adds 2.4 / (2 * 0.060484) = 19.840 1/s to every wall mode.
+  const auto free = object_modes(mug(), 20000, 0.0);
+  const auto held = object_modes(mug(), 20000, 0.0, 2.4);
+  ASSERT_EQ(free.size(), held.size());
+  int wall = 0, base = 0;
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    EXPECT_DOUBLE_EQ(held[i].frequency_hz, free[i].frequency_hz);
+    const double added = held[i].decay_per_s - free[i].decay_per_s;
+    if (free[i].azimuthal_order >= 2) {
+      EXPECT_NEAR(added, 19.840, 0.01) << free[i].frequency_hz;
+      ++wall;
+    } else {
+      EXPECT_EQ(added, 0.0) << free[i].frequency_hz;
+      ++base;
+    }
+  }
+  EXPECT_EQ(wall, 2);  // n = 2, 3
+  EXPECT_GE(base, 1);
+  // Half the mass, twice the loss: the same pads mute a light cup's wall more than a mug's.
+  ObjectSpec light = mug();
+  light.shell_mass = 0.15;
+  EXPECT_NEAR(object_modes(light, 20000, 0.0, 2.4)[0].decay_per_s - free[0].decay_per_s, 2 * 19.840,
+              0.02);
 }
 
 TEST(ModalModel, ClosedTubeRingsAtHalfWavelengthCavity) {

@@ -162,9 +162,29 @@ TEST(SimulatedRecorder, StrikeRingsAtTheContactsHalfPeriod) {
     const double heard_hz = dominant_hz_after_impact(clip, out.trace.impacts.front().time_s);
     // Within 5%: the spectrum's bins are 4 Hz apart and the ring is damped (its peak is broad).
     EXPECT_NEAR(heard_hz, expected_hz, 0.05 * expected_hz) << name;
-    if (previous_hz > 0) EXPECT_LT(heard_hz, 0.9 * previous_hz) << name;
+    if (previous_hz > 0) {
+      EXPECT_LT(heard_hz, 0.9 * previous_hz) << name;
+    }
     previous_hz = heard_hz;
   }
+}
+
+TEST(SimulatedRecorder, StrikeRingDiesLikeTheLabsThuds) {
+  // The lab's strikes fell 20 dB (ln 10 in amplitude) in 15-30 ms for the plastic cup and 45 ms for
+  // the coffee mug. The ring's losses (surface, object, finger pads on its effective mass) must put
+  // the cup's within 30 ms and leave the 19x heavier mug's ringing at least 1.5x as long.
+  const SimConfig config = quiet();
+  std::map<std::string, double> seconds_to_20db;
+  for (const char* name : {"plastic_cup", "coffee_mug"}) {
+    SimulatedRobot robot(shipped_catalogue(), name, config);
+    SimulatedRecorder recorder(robot.object(), robot.table(), config);
+    const ActionOutcome out = robot.execute("strike", nominal());
+    ASSERT_EQ(out.trace.impacts.size(), 1u) << name;
+    seconds_to_20db[name] = std::log(10.0) / recorder.contact_ring_decay(out.trace.impacts.front());
+  }
+  EXPECT_LE(seconds_to_20db["plastic_cup"], 0.030);
+  EXPECT_GE(seconds_to_20db["coffee_mug"], 1.5 * seconds_to_20db["plastic_cup"]);
+  EXPECT_LE(seconds_to_20db["coffee_mug"], 0.060);
 }
 
 double high_frequency_share(const audio::AudioClip& clip, double impact_s, double cut_hz) {
@@ -199,6 +219,32 @@ TEST(SimulatedRecorder, HeavierObjectSoundsDuller) {
   }
   // Longer contact: measurably less of the energy above the cut (at least 10% less).
   EXPECT_LT(share[1], share[0] * 0.9) << share[0] << " " << share[1];
+}
+
+TEST(SimulatedRecorder, HeavierObjectResistsTheRoughnessAndSlidesDarker) {
+  // Roughness noise splits between the object (j omega m) and the table top (its point impedance):
+  // the weighted mug's 0.25 kg more halves the frequency above which it resists the asperities
+  // (1.1 kHz to 0.65 kHz), so less of its slide's energy is in its shell modes above 2 kHz.
+  const SimConfig config = quiet();
+  double share[2];
+  const char* names[2] = {"coffee_mug", "coffee_mug_weighted"};
+  for (int i = 0; i < 2; ++i) {
+    SimulatedRobot robot(shipped_catalogue(), names[i], config);
+    SimulatedRecorder recorder(robot.object(), robot.table(), config);
+    const ActionOutcome out = robot.execute("slide", nominal());
+    ASSERT_EQ(out.status, ActionStatus::done) << names[i];
+    Rng rng(13);
+    const audio::AudioClip clip = recorder.record(out, rng);
+    double bin = 0;
+    const auto mag = spectrum(clip, 0, 0, clip.frames(), &bin);
+    double high = 0, total = 0;
+    for (std::size_t k = 0; k < mag.size(); ++k) {
+      total += mag[k] * mag[k];
+      if (k * bin > 2000) high += mag[k] * mag[k];
+    }
+    share[i] = high / total;
+  }
+  EXPECT_LT(share[1], 0.8 * share[0]) << share[0] << " " << share[1];
 }
 
 TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {

@@ -33,8 +33,10 @@ struct SolveArgs {
   std::string out;
   std::string exact_search = "passes";
   std::string exact_frontier = "full";
+  std::string pair_relaxation = "on";
   double frontier_margin = solvers::IdentificationOptions{}.frontier_margin;
   std::size_t frontier_entries = solvers::IdentificationOptions{}.max_frontier_entries;
+  std::size_t frontier_plans = solvers::IdentificationOptions{}.max_frontier_plans;
 };
 
 solvers::IdentificationOptions exact_options(const SolveArgs& args) {
@@ -43,8 +45,10 @@ solvers::IdentificationOptions exact_options(const SolveArgs& args) {
                                                  : solvers::IdentificationOptions::Search::trials;
   options.plan_lower_bound = args.exact_frontier == "full" || args.exact_frontier == "plans";
   options.sawtooth_upper_bound = args.exact_frontier == "full" || args.exact_frontier == "sawtooth";
+  options.pair_upper_bound = args.pair_relaxation == "on";
   options.frontier_margin = args.frontier_margin;
   options.max_frontier_entries = args.frontier_entries;
+  options.max_frontier_plans = args.frontier_plans;
   return options;
 }
 
@@ -57,18 +61,23 @@ std::string action_label(const pomdp::Problem& problem, int a) {
 // Q-value of every action at b0 to the same gap.
 void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
                const pomdp::TabularModel& tables) {
-  solvers::IdentificationSolver solver(tables, exact_options(args));
-  const auto root = solver.root();
+  // The clock starts before the solver is made: its setup (the two-state sub-problems) counts.
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
+  solvers::IdentificationSolver solver(tables, exact_options(args));
+  const double setup_seconds = elapsed();
+  const auto root = solver.root();
   auto target = [&](solvers::Bounds b) {
     return args.epsilon * std::max({1.0, std::abs(b.lower), std::abs(b.upper)});
   };
-  spdlog::info("solving {} exactly over count vectors (epsilon {}, time limit {} s{})",
-               args.problem, args.epsilon, args.time_limit,
-               args.max_trials > 0 ? fmt::format(", at most {} expansions", args.max_trials) : "");
+  spdlog::info(
+      "solving {} exactly over count vectors (epsilon {}, time limit {} s{}); setup {:.2f} s, "
+      "{} two-state sub-problems",
+      args.problem, args.epsilon, args.time_limit,
+      args.max_trials > 0 ? fmt::format(", at most {} expansions", args.max_trials) : "",
+      setup_seconds, solver.num_relaxation_pairs());
   for (;;) {
     const double remaining = args.time_limit - elapsed();
     const long trials_left = args.max_trials > 0 ? args.max_trials - solver.expansions() : 0;
@@ -122,6 +131,8 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
     out["nodes"] = solver.num_nodes();
     out["plans"] = solver.num_plans();
     out["upper_points"] = solver.num_upper_points();
+    out["relaxation_pairs"] = solver.num_relaxation_pairs();
+    out["setup_seconds"] = setup_seconds;
     out["seconds"] = seconds;
     out["best_action"] = action_label(problem, best);
     nlohmann::ordered_json actions = nlohmann::ordered_json::object();
@@ -285,6 +296,11 @@ void add_solve_command(CLI::App& app) {
                   "above), plans, sawtooth, or simple (commit now / one more sensing)")
       ->check(CLI::IsMember({"full", "plans", "sawtooth", "simple"}))
       ->capture_default_str();
+  cmd->add_option("--pair-relaxation", args->pair_relaxation,
+                  "Exact solver: cap every new belief's upper bound by the two-state sub-problems "
+                  "solved up front (docs/planning.md, exact solver)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   cmd->add_option("--frontier-margin", args->frontier_margin,
                   "Exact solver: a backed-up plan or point joins the frontier bounds only when it "
                   "improves them by more than this (reward units)")
@@ -293,6 +309,10 @@ void add_solve_command(CLI::App& app) {
   cmd->add_option("--frontier-entries", args->frontier_entries,
                   "Exact solver: at most this many plans and this many sawtooth points (each "
                   "costs every later frontier evaluation)")
+      ->capture_default_str();
+  cmd->add_option("--frontier-plans", args->frontier_plans,
+                  "Exact solver: at most this many plans (0: --frontier-entries); "
+                  "--frontier-entries then caps the sawtooth points")
       ->capture_default_str();
   cmd->add_option(
       "--out", args->out,

@@ -3,8 +3,10 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
@@ -32,8 +34,11 @@ const nlohmann::json& require(const std::string& path, const nlohmann::json& obj
 
 int require_int(const std::string& path, const nlohmann::json& object, const std::string& key) {
   const nlohmann::json& v = require(path, object, key);
-  if (!v.is_number_integer())
+  // Also rejects integers beyond int, which get<int>() would wrap into a plausible count.
+  if (!v.is_number_integer() || v.get<long long>() < std::numeric_limits<int>::min() ||
+      v.get<long long>() > std::numeric_limits<int>::max()) {
     throw InputError(path, 0, fmt::format("\"{}\" must be an integer", key));
+  }
   return v.get<int>();
 }
 
@@ -63,11 +68,19 @@ AlphaVectorSet load_policy(const std::string& path, const FlatPomdp& pomdp) {
   std::ifstream file(path);
   if (!file) throw InputError(path, 0, "cannot open the policy file");
   const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+  return parse_policy(text, path, pomdp);
+}
+
+AlphaVectorSet parse_policy(const std::string& text, const std::string& path,
+                            const FlatPomdp& pomdp) {
   nlohmann::json root;
   try {
     root = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(path, line_of(text, e.byte), "not valid JSON");
+  } catch (const nlohmann::json::exception&) {
+    // out_of_range: a number beyond a double's range.
+    throw InputError(path, 0, "a number is out of range");
   }
   const nlohmann::json& format = require(path, root, "format");
   if (!format.is_string() || format.get<std::string>() != kFormat) {
@@ -85,6 +98,16 @@ AlphaVectorSet load_policy(const std::string& path, const FlatPomdp& pomdp) {
         fmt::format("the policy is for {} states and {} actions, the problem has {} and "
                     "{}: solve this problem again",
                     states, actions, pomdp.num_states, pomdp.num_actions));
+  }
+  // Alpha vectors are values under one discount: acting on them under another would rank the
+  // actions by the wrong horizon without any sign of it.
+  const nlohmann::json& discount = require(path, root, "discount");
+  if (!discount.is_number()) throw InputError(path, 0, "\"discount\" must be a number");
+  if (std::abs(discount.get<double>() - pomdp.discount) > 1e-12) {
+    throw InputError(path, 0,
+                     fmt::format("the policy was solved at discount {}, the problem has {}: "
+                                 "solve this problem again",
+                                 discount.get<double>(), pomdp.discount));
   }
   const nlohmann::json& vectors = require(path, root, "vectors");
   if (!vectors.is_array() || vectors.empty()) {

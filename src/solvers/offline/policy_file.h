@@ -19,8 +19,12 @@ namespace echoplan::solvers::offline {
 // file cannot be written.
 void save_policy(const PointBasedSolver& solver, const std::string& path);
 
-// Reads vectors written by save_policy and checks they fit `pomdp` (state and action counts).
+// Reads vectors written by save_policy and checks they fit `pomdp` (state and action counts, and
+// the discount they were solved at).
 // Throws InputError naming the file, the line (for JSON syntax errors) and the problem.
 AlphaVectorSet load_policy(const std::string& path, const FlatPomdp& pomdp);
+// The same for the text of such a file; `path` names it in errors.
+AlphaVectorSet parse_policy(const std::string& text, const std::string& path,
+                            const FlatPomdp& pomdp);
 
 }  // namespace echoplan::solvers::offline

@@ -96,7 +96,8 @@ void expect_rejected(const std::string& text, int line, const std::string& fragm
 }
 
 const std::string kTigerHead =
-    R"({"format": "echoplan-alpha-vectors", "version": 1, "num_states": 2, "num_actions": 3, )";
+    R"({"format": "echoplan-alpha-vectors", "version": 1, "num_states": 2, "num_actions": 3,
+          "discount": 0.95, )";
 
 TEST(PolicyFile, RejectsAnotherFormatOrVersion) {
   expect_rejected(R"({"format": "pomdpx-policy", "version": 1})", 0,
@@ -125,8 +126,28 @@ TEST(PolicyFile, RejectsWrongShapes) {
                   0, "the policy is for 2 states and 4 actions, the problem has 2 and 3");
 }
 
+TEST(PolicyFile, RejectsAPolicySolvedAtAnotherDiscount) {
+  // tiger.pomdp has discount 0.95; the same vectors at 0.99 value another horizon.
+  const std::string sizes =
+      R"({"format": "echoplan-alpha-vectors", "version": 1, "num_states": 2, "num_actions": 3, )";
+  const std::string vectors = R"("vectors": [{"action": 0, "values": [1, 2]}]})";
+  expect_rejected(sizes + R"("discount": 0.99, )" + vectors, 0,
+                  "the policy was solved at discount 0.99, the problem has 0.95");
+  expect_rejected(sizes + R"("discount": "0.95", )" + vectors, 0, "\"discount\" must be a number");
+  expect_rejected(sizes + vectors, 0, "missing key \"discount\"");
+}
+
+TEST(PolicyFile, RejectsNumbersOutOfRange) {
+  // 2^32 + 2 would wrap to 2 states in an int.
+  expect_rejected(R"({"format": "echoplan-alpha-vectors", "version": 4294967297})", 0,
+                  "\"version\" must be an integer");
+  expect_rejected(kTigerHead + R"("vectors": [{"action": 0, "values": [1e400, 2]}]})", 0,
+                  "a number is out of range");
+}
+
 TEST(PolicyFile, TruncatedFileNamesTheLineWhereItEnds) {
-  expect_rejected(kTigerHead + "\n\"vectors\": [\n{\"action\": 0,\n", 4, "not valid JSON");
+  // kTigerHead spans two lines; the file ends on line 5.
+  expect_rejected(kTigerHead + "\n\"vectors\": [\n{\"action\": 0,\n", 5, "not valid JSON");
   expect_rejected("", 1, "not valid JSON");
 }
 

@@ -122,7 +122,8 @@ void expect_rejected(const std::string& text, int line, const std::string& fragm
 
 TEST(PolicyFile, RejectsBadFiles) {
   const std::string head =
-      R"({"format": "echoplan-alpha-vectors", "version": 1, "num_states": 2, "num_actions": 3, )";
+      R"({"format": "echoplan-alpha-vectors", "version": 1, "num_states": 2, "num_actions": 3,
+          "discount": 0.95, )";
   expect_rejected("{\n\"format\": \n  oops\n}", 3, "not valid JSON");
   expect_rejected(R"({"version": 1})", 0, "missing key \"format\"");
   expect_rejected(R"({"format": "echoplan-alpha-vectors", "version": 1, "num_states": 5,
