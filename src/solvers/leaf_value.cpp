@@ -41,7 +41,7 @@ const char* leaf_mode_name(LeafMode mode) {
 LeafMode default_leaf_mode(const std::string& solver, const pomdp::Model& model) {
   const pomdp::TabularModel* tables = model.tabular();
   if (solver == "abt" && tables != nullptr && !identification_shape_problem(*tables))
-    return LeafMode::exact;
+    return LeafMode::policy;
   return LeafMode::lookahead;
 }
 

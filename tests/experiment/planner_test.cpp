@@ -31,8 +31,8 @@ TEST(Planner, TheProblemFilesPlannerByDefault) {
                                    {"search",
                                     {{"exploration", 110.0},
                                      {"max_depth", 100},
-                                     // ABT on an identification problem: the default exact leaf
-                                     {"leaf", "exact"},
+                                     // ABT on an identification problem: the default policy leaf
+                                     {"leaf", "policy"},
                                      {"expand_after", solvers::LeafOptions{}.expand_after},
                                      {"root_particles", 1000},
                                      {"branch_threshold", 0.0}}}};

@@ -141,9 +141,7 @@ TEST(Trials, FilesHoldOneRowPerTrialAndPerStep) {
     total += std::stoi(fields[k]);
   }
   EXPECT_EQ(total, 1000);
-  // The default exact leaf spends the 200-episode budget as 200 exact-solver expansions and one
-  // episode (exact_share 1); the column counts episodes.
-  EXPECT_EQ(fields[9], "1");
+  EXPECT_EQ(fields[9], "200");
 }
 
 TEST(Trials, PerObjectRunsKTrialsForEachObject) {

@@ -317,7 +317,7 @@ TEST(AbtPolicyLeaf, NeedsAnIdentificationProblem) {
   EXPECT_THROW(AbtSolver(tiger.model, policy_leaf()), InputError);
   EXPECT_EQ(default_leaf_mode("abt", *tiger.model), LeafMode::lookahead);
   const pomdp::Problem seed = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
-  EXPECT_EQ(default_leaf_mode("abt", *seed.model), LeafMode::exact);
+  EXPECT_EQ(default_leaf_mode("abt", *seed.model), LeafMode::policy);
   EXPECT_EQ(default_leaf_mode("pomcp", *seed.model), LeafMode::lookahead);
   EXPECT_THROW(PomcpSolver(seed.model, policy_leaf()), InputError);
 }

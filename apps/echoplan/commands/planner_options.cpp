@@ -34,7 +34,7 @@ void add_planner_options(CLI::App& cmd, solvers::PlannerOverrides& f) {
   cmd.add_option("--depth", f.depth, "Maximum search depth (default: the problem file's)");
   cmd.add_option("--leaf", f.leaf,
                  "Leaf value: policy, exact or exact-offline (ABT only, identification problems), "
-                 "lookahead, heuristic or rollout (default: exact for ABT on an identification "
+                 "lookahead, heuristic or rollout (default: policy for ABT on an identification "
                  "problem, else lookahead; docs/planning.md)");
   cmd.add_option("--exact-share", f.exact_share,
                  "--leaf exact/exact-offline: share of each step's budget spent refining the exact "
