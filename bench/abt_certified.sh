@@ -11,6 +11,8 @@
 #                          [BUDGETS="--step-ms=5 --step-ms=20 --step-ms=100 --episodes=1000 --episodes=10000"]
 # EXPANSIONS is certify's per-belief refinement (--expansions): more tightens the certificate's
 # bounds (its looseness is the last column) at the cost of time.
+# A PLANNERS entry is a solver name, optionally followed by :LEAF and :EXTRA (one more flag), e.g.
+# "abt abt:exact abt:exact:--exact-share=0.5 abt:exact-offline pomcp".
 set -eu
 build=${1:-build}
 out=${2:-results/abt_certified}
@@ -28,18 +30,23 @@ for gamma in $discounts; do
   # The seed problem at this discount (the file's own is 0.99).
   problem=$out/audio_objects_$gamma.yaml
   sed "s/^discount: .*/discount: $gamma/" problems/audio_objects.yaml >"$problem"
-  for planner in $planners; do
+  for entry in $planners; do
+    planner=$(echo "$entry" | cut -d: -f1)
+    leaf=$(echo "$entry:" | cut -d: -f2)
+    extra=$(echo "$entry::" | cut -d: -f3)
     for budget in $budgets; do
-      name=${planner}_${gamma}_$(echo "$budget" | tr -d '-' | tr '=' '_')
+      name=$(echo "${entry}_${gamma}_$budget" | tr -d '-' | tr '=:' '__')
       echo "[$(date +%H:%M:%S)] $name: trials" >&2
-      "$bin" trials --problem "$problem" --solver "$planner" --trials "$trials" --seed 1 \
-        "$budget" --out "$out/$name" >"$out/$name.txt" 2>"$out/$name.log"
+      # shellcheck disable=SC2086 # the leaf and extra flags are empty or one word each
+      "$bin" trials --problem "$problem" --solver "$planner" ${leaf:+--leaf "$leaf"} $extra \
+        --trials "$trials" --seed 1 "$budget" --out "$out/$name" >"$out/$name.txt" 2>"$out/$name.log"
       echo "[$(date +%H:%M:%S)] $name: certify" >&2
       "$bin" certify --problem "$problem" --steps "$out/$name/steps.csv" --json \
         --expansions "$expansions" >"$out/$name.certify.json" 2>>"$out/$name.log"
-      python3 - "$out/$name" "$planner" "$gamma" "$budget" >>"$table" <<'PY'
+      python3 - "$out/$name" "$entry" "$gamma" "$budget" >>"$table" <<'PY'
 import csv, json, sys
 folder, planner, gamma, budget = sys.argv[1:5]
+planner = planner.replace(":", " ")
 c = json.load(open(folder + ".certify.json"))
 episodes = [int(r["episodes"]) for r in csv.DictReader(open(folder + "/steps.csv"))]
 vstar = 0.5 * (c["vstar_lower"] + c["vstar_upper"])

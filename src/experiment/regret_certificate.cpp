@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "common/error.h"
 
@@ -13,6 +14,32 @@ double Certificate::share_of_vstar() const {
   const double v = 0.5 * (vstar.lower + vstar.upper);
   return v != 0.0 ? 1.0 - regret.mean / v : 0.0;
 }
+
+namespace {
+
+// An upper bound on max over a' != action of Q*(b, a') at `node`: V*(b) - Q*(b, action) =
+// max(0, that - Q*(b, action)), so when the action taken is the best one this bound, not V*'s
+// upper end, is what its loss is measured against (a decision proven optimal loses 0, however
+// loose V*'s own bounds are). The rival with the highest upper bound is refined while it still
+// overlaps `taken_lower`.
+double best_rival_upper(solvers::IdentificationSolver& solver,
+                        solvers::IdentificationSolver::NodeId node, int action, double taken_lower,
+                        const solvers::RefineLimits& limits) {
+  auto rival = [&](int* which) {
+    double best = -std::numeric_limits<double>::infinity();
+    for (int a = 0; a < solver.num_actions(); ++a)
+      if (a != action && solver.action_value(node, a).upper > best)
+        best = solver.action_value(node, a).upper, *which = a;
+    return best;
+  };
+  int which = -1;
+  const double before = rival(&which);
+  if (which < 0 || before <= taken_lower) return before;
+  solver.refine_action(node, which, limits);
+  return rival(&which);
+}
+
+}  // namespace
 
 Certificate certify_trials(solvers::IdentificationSolver& solver,
                            const std::vector<LoggedTrial>& trials, const CertifyOptions& options,
@@ -53,11 +80,13 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
       d.step = step.step;
       d.line = step.line;
       d.action = step.action;
-      d.loss = std::max(0.0, v.upper - q.lower);
+      d.loss = std::max(
+          0.0, std::min(v.upper, best_rival_upper(solver, node, step.action, q.lower, limits)) -
+                   q.lower);
       d.loss_lower = std::max(0.0, v.lower - q.upper);
       r.regret += weight * d.loss;
       r.regret_lower += weight * d.loss_lower;
-      r.bound_gap += weight * (v.gap() + q.gap());
+      r.bound_gap += weight * (d.loss - d.loss_lower);
       visited.push_back({d, node});
       ++c.decisions;
       weight *= gamma;
@@ -83,7 +112,7 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
       if (!solver.refine(node, limits)) ++c.unconverged_beliefs;
       r.regret += weight * solver.value(node).upper;
       r.regret_lower += weight * solver.value(node).lower;
-      r.bound_gap += weight * solver.value(node).gap();
+      r.bound_gap += weight * solver.value(node).gap();  // the cut-short term's looseness
     }
     regrets.push_back(r.regret);
     c.regret_lower_mean += r.regret_lower / static_cast<double>(trials.size());

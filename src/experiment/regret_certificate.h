@@ -8,8 +8,12 @@
 // identity, the discounted sum of losses along a trial, plus γ^T V*(b_T) when the trial was cut
 // short before ending, has expectation V*(b0) − V^planner(b0), with far less variance than the
 // returns themselves. V* and Q* come as bounds from the exact solver, refined at every visited
-// belief to `decision_gap`; the per-trial regret reported is the upper end (U_V − L_Q clipped at
-// 0), so the certified share of V* errs on the planner's side only by sampling, never by bounds.
+// belief to `decision_gap`; the per-trial regret reported is the upper end, so the certified share
+// of V* errs on the planner's side only by sampling, never by bounds. The upper end of a loss is
+//   max(0, min(U_V, max over a' != a_t of U_Q(a')) − L_Q(a_t)),
+// since V* − Q*(a_t) = max(0, max_{a' != a_t} Q*(a') − Q*(a_t)): a decision the bounds prove
+// optimal loses 0 however loose V*'s bounds are (with U_V alone every decision would be charged
+// its bounds' gap).
 #pragma once
 
 #include <vector>
@@ -38,7 +42,7 @@ struct DecisionLoss {
   int line = 0;  // in steps.csv
   int action = 0;
   int best_action = 0;         // the action with the highest lower bound on Q* there
-  double loss = 0.0;           // upper end: V*_upper − Q*_lower, at least 0
+  double loss = 0.0;           // upper end: min(V*_upper, best rival's Q*_upper) − Q*_lower, >= 0
   double loss_lower = 0.0;     // lower end: V*_lower − Q*_upper, at least 0
   std::vector<double> belief;  // exact belief over the model's states
 };
@@ -47,8 +51,8 @@ struct TrialRegret {
   int trial = 0;
   double regret = 0.0;        // Σ γ^t loss_t (+ γ^T V*_upper(b_T) when cut short)
   double regret_lower = 0.0;  // the same from the lower ends
-  // The certificate's own looseness on this trial: Σ γ^t (gap of V*(b_t) + gap of Q*(b_t, a_t))
-  // (+ γ^T gap of V*(b_T) when cut short); regret − regret_lower is at most this.
+  // The certificate's own looseness on this trial: Σ γ^t (loss − loss_lower) (+ γ^T gap of
+  // V*(b_T) when cut short) = regret − regret_lower.
   double bound_gap = 0.0;
   bool ended = false;  // a terminal action (or a collision) ended the trial
 };

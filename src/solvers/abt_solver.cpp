@@ -1,9 +1,11 @@
 #include "solvers/abt_solver.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "common/error.h"
 
@@ -37,12 +39,17 @@ void add_particle_rewards(BeliefNode& node, const std::vector<double>& rewards, 
 
 AbtSolver::AbtSolver(pomdp::ModelPtr model, SearchOptions options)
     : TreeSearchSolver(std::move(model), options) {
-  if (this->options().leaf.mode == LeafMode::policy) {
+  const LeafMode mode = this->options().leaf.mode;
+  const bool exact = mode == LeafMode::exact || mode == LeafMode::exact_offline;
+  if (mode == LeafMode::policy || exact) {
     const pomdp::TabularModel* tables = this->model().tabular();
     if (tables == nullptr)
-      throw InputError(
-          "the policy leaf value needs a discrete problem with tables; use --leaf "
-          "lookahead for this one");
+      throw InputError(std::string("the ") + leaf_mode_name(mode) +
+                       " leaf value needs a discrete problem with tables; use --leaf "
+                       "lookahead for this one");
+    if (exact)
+      guide_.emplace(*tables,
+                     mode == LeafMode::exact_offline ? this->options().leaf.offline_expansions : 0);
     policy_.emplace(*tables);
   }
 }
@@ -50,6 +57,49 @@ AbtSolver::AbtSolver(pomdp::ModelPtr model, SearchOptions options)
 void AbtSolver::reset(const pomdp::Belief& belief, Rng& rng) {
   TreeSearchSolver::reset(belief, rng);
   if (policy_) root_belief_ = tabular_belief(belief, *model().tabular());
+  if (guide_) {
+    guide_->reset(root_belief_);
+    // The exact start belief rather than its particle sample's marginal.
+    if (guide_->active()) root_belief_ = guide_->root_belief();
+  }
+}
+
+void AbtSolver::improve(const Budget& budget, Rng& rng) {
+  if (!guided() || budget.amount <= 0) return TreeSearchSolver::improve(budget, rng);
+  const double share = options().leaf.exact_share;
+  if (budget.kind == Budget::Kind::episodes) {
+    const auto expansions = static_cast<long>(std::llround(share * double(budget.amount)));
+    if (expansions > 0)
+      guide_->refine_root(RefineLimits{RefineLimits{}.target_gap, 0.0, expansions});
+    TreeSearchSolver::improve(
+        Budget::episodes(std::max<std::int64_t>(1, budget.amount - expansions)), rng);
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const double seconds = share * double(budget.amount) / 1000.0;
+  if (seconds > 0.0) guide_->refine_root(RefineLimits{RefineLimits{}.target_gap, seconds, 0});
+  const double spent_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  // Whole milliseconds left for the episodes; none (the default share 1): one episode, which
+  // keeps the tree's statistics alive without running over the step's time.
+  const auto left = static_cast<std::int64_t>(double(budget.amount) - spent_ms);
+  TreeSearchSolver::improve(left >= 1 ? Budget::milliseconds(left) : Budget::episodes(1), rng);
+}
+
+int AbtSolver::best_action() const {
+  if (!guided()) return TreeSearchSolver::best_action();
+  // The action whose lower bound on Q* is highest: the first step of the best plan the exact solver
+  // has found here, whose value it guarantees. The episodes' own Q estimates are not consulted:
+  // moved into the exact bounds they still decided between sensing actions by sampling noise and
+  // lost 15 times as much (docs/BENCHMARKS.md, "Certified share of V*"). When the bounds separate,
+  // this is the action they prove optimal.
+  int best = 0;
+  double best_lower = -std::numeric_limits<double>::infinity();
+  for (int a = 0; a < model().num_actions(); ++a) {
+    const double lower = guide_->action_bounds(a).lower;
+    if (lower > best_lower) best = a, best_lower = lower;
+  }
+  return best;
 }
 
 void AbtSolver::update(int action, const pomdp::Observation& observation,
@@ -58,6 +108,7 @@ void AbtSolver::update(int action, const pomdp::Observation& observation,
   if (!policy_) return;
   // The tree's own exact belief follows the real step; the agent's belief (maybe a particle
   // filter) stands in only when the step is one the tables cannot explain.
+  if (guide_) guide_->follow(action, observation.index);
   const bool sensing = !policy_->is_terminal(action) && observation.index >= 0;
   if (!sensing || policy_->update(root_belief_, action, observation.index, belief_scratch_) <= 0.0)
     root_belief_ = tabular_belief(belief_after, *model().tabular());
@@ -142,7 +193,9 @@ void AbtSolver::simulate_from(Episode& episode, BeliefNode* node, pomdp::State s
     if (leaf_or_expand(*node, depth)) {
       std::vector<double> before;
       if (keep) before = node->leaf.sums();
-      if (policy_)
+      if (guided())
+        node->leaf.set(guide_->leaf_value(path_nodes_[static_cast<std::size_t>(depth)]));
+      else if (policy_)
         node->leaf.add_rollouts(*policy_, path_beliefs_[static_cast<std::size_t>(depth)],
                                 options().max_depth - depth, kRolloutsPerLeafVisit, rng);
       else
@@ -185,6 +238,11 @@ void AbtSolver::simulate_from(Episode& episode, BeliefNode* node, pomdp::State s
       policy_->update(path_beliefs_[static_cast<std::size_t>(depth)], a, c.observation.index,
                       path_beliefs_.back());
     }
+    if (guided()) {
+      path_nodes_.resize(static_cast<std::size_t>(depth) + 2);
+      path_nodes_.back() =
+          guide_->child(path_nodes_[static_cast<std::size_t>(depth)], a, c.observation.index);
+    }
     node = c.node.get();
     state = std::move(result.next);
   }
@@ -200,6 +258,7 @@ void AbtSolver::backup(const Episode& episode, std::size_t last) {
       action.value = action_value(node, step.action, step_belief(i));
     }
     recompute_node_value(node);
+    if (guided()) node.value = guide_->clamp(path_nodes_[i], node.value);
   }
 }
 
@@ -211,6 +270,7 @@ void AbtSolver::run_episode(Rng& rng) {
       top.actions[a]->value =
           action_value(top, static_cast<int>(a), policy_ ? &root_belief_ : nullptr);
   if (policy_) path_beliefs_.assign(1, root_belief_);
+  if (guided()) path_nodes_.assign(1, guide_->root());
 
   if (!options().keep_episodes) {
     path_.clear();
@@ -283,11 +343,14 @@ RevisionStats AbtSolver::revise(const ModelChange& change, Rng& rng) {
     throw std::logic_error("revise() needs SearchOptions::keep_episodes: no episodes were kept");
   // The policy leaf's values come from rollouts under the old table from every node's exact
   // belief, which the table also changed: every node would need revaluing, not only those on the
-  // affected episodes. Rebuilding the tree is the honest cost there.
+  // affected episodes; the exact leaves' solver was built from the old table. Rebuilding the tree
+  // is the honest cost there.
   if (policy_)
-    throw std::logic_error(
-        "revise() works with the lookahead, heuristic and rollout leaves; with the policy leaf "
-        "every node's value depends on the observation table: reset() the solver instead");
+    throw std::logic_error(std::string("revise() works with the lookahead, heuristic and rollout "
+                                       "leaves; with the ") +
+                           leaf_mode_name(options().leaf.mode) +
+                           " leaf every node's value depends on the observation table: reset() "
+                           "the solver instead");
   const pomdp::ModelPtr before = model_ptr();
   replace_model(change.model);
   const bool discrete = model().spec().observation.discrete;

@@ -32,6 +32,7 @@
 #include <optional>
 #include <vector>
 
+#include "solvers/exact_bounds_guide.h"
 #include "solvers/model_change.h"
 #include "solvers/search_tree.h"
 #include "solvers/sensing_policy.h"
@@ -48,11 +49,17 @@ struct RevisionStats {
 
 class AbtSolver final : public TreeSearchSolver {
  public:
-  // Throws InputError when the leaf mode is `policy` and the model is not a tabular identification
-  // problem.
+  // Throws InputError when the leaf mode is `policy`, `exact` or `exact-offline` and the model is
+  // not a tabular identification problem. With `exact-offline` the offline solve runs here.
   AbtSolver(pomdp::ModelPtr model, SearchOptions options);
 
   void reset(const pomdp::Belief& belief, Rng& rng) override;
+  // With the exact leaves: refines the exact solver at the root for the budget's exact_share
+  // first, then runs episodes for the rest (at least one).
+  void improve(const Budget& budget, Rng& rng) override;
+  // With the exact leaves: the action with the highest lower bound on Q* from the exact solver (the
+  // one its bounds prove optimal when they separate one).
+  int best_action() const override;
   void update(int action, const pomdp::Observation& observation, const pomdp::Belief& belief_after,
               Rng& rng) override;
 
@@ -122,6 +129,11 @@ class AbtSolver final : public TreeSearchSolver {
   // tabular states (from the belief at reset, then by Bayes' rule from step to step).
   std::optional<SensingPolicy> policy_;
   std::vector<double> root_belief_;
+  // Leaf modes `exact` and `exact-offline` only: the exact solver's bounds, and the solver node of
+  // each step of the episode being walked (path_nodes_[i] at depth i).
+  std::optional<ExactBoundsGuide> guide_;
+  std::vector<ExactBoundsGuide::NodeId> path_nodes_;
+  bool guided() const { return guide_ && guide_->active(); }
   // The exact belief at each step of the episode being walked (path_beliefs_[i] at depth i).
   std::vector<std::vector<double>> path_beliefs_;
   std::vector<double> belief_scratch_;

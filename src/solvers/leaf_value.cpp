@@ -11,16 +11,23 @@ namespace echoplan::solvers {
 
 LeafMode parse_leaf_mode(const std::string& text) {
   if (text == "policy") return LeafMode::policy;
+  if (text == "exact") return LeafMode::exact;
+  if (text == "exact-offline") return LeafMode::exact_offline;
   if (text == "lookahead") return LeafMode::lookahead;
   if (text == "heuristic") return LeafMode::heuristic;
   if (text == "rollout") return LeafMode::rollout;
-  throw InputError("leaf value '" + text + "' is not one of policy, lookahead, heuristic, rollout");
+  throw InputError("leaf value '" + text +
+                   "' is not one of policy, exact, exact-offline, lookahead, heuristic, rollout");
 }
 
 const char* leaf_mode_name(LeafMode mode) {
   switch (mode) {
     case LeafMode::policy:
       return "policy";
+    case LeafMode::exact:
+      return "exact";
+    case LeafMode::exact_offline:
+      return "exact-offline";
     case LeafMode::lookahead:
       return "lookahead";
     case LeafMode::heuristic:
@@ -62,12 +69,16 @@ double random_rollout(const pomdp::Model& model, pomdp::State state, int steps_l
 void LeafEstimate::add(const LeafOptions& options, const pomdp::Model& model,
                        const pomdp::State& state, int steps_left, Rng& rng,
                        const std::vector<pomdp::StepResult>* one_step_each) {
-  if (options.mode == LeafMode::policy)
-    throw std::logic_error("LeafEstimate: the policy leaf value is added with add_rollouts()");
+  if (options.mode == LeafMode::policy || options.mode == LeafMode::exact ||
+      options.mode == LeafMode::exact_offline)
+    throw std::logic_error(std::string("LeafEstimate: the ") + leaf_mode_name(options.mode) +
+                           " leaf value is not added particle by particle");
   ++count_;
   switch (options.mode) {
     case LeafMode::policy:
-      return;  // handled above
+    case LeafMode::exact:
+    case LeafMode::exact_offline:
+      return;  // refused above
     case LeafMode::heuristic:
       sums_.resize(1, 0.0);
       sums_[0] += model.heuristic_value(state);
@@ -109,6 +120,11 @@ void LeafEstimate::remove(const std::vector<double>& contribution) {
     throw std::logic_error("LeafEstimate::remove(): not a contribution of this estimate");
   for (std::size_t i = 0; i < sums_.size(); ++i) sums_[i] -= contribution[i];
   --count_;
+}
+
+void LeafEstimate::set(double value) {
+  sums_.assign(1, value);
+  count_ = 1;
 }
 
 void LeafEstimate::release() {

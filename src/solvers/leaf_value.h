@@ -10,6 +10,17 @@
 //                        node's exact belief over the states of a tabular identification problem;
 //                        the best of its stopping thresholds counts. A lower bound in expectation,
 //                        which the search improves on. ABT only; needs model tables.
+//   exact                the exact solver's lower bound at the node's belief
+//   (exact_bounds_guide.h):
+//                        the value of a plan the IdentificationSolver knows there, after one
+//                        lookahead over its children's bounds. The same solver is refined at the
+//                        root for `exact_share` of every step's budget, and its [lower, upper]
+//                        bounds on V* clamp every node's value; at the root, an action its bounds
+//                        prove optimal is taken outright. Everything comes from the problem file
+//                        within the step's budget. ABT only; identification problems only.
+//   exact-offline        `exact`, but every trial starts from a solve of `offline_expansions`
+//                        expansions made once, before the first step (reported apart: it is not
+//                        computed within the per-step budget).
 //   lookahead  the belief-level value of the best single next step: for each action, the
 //                        mean over the node's particles of r(s, a) + gamma * h(s') (h = the model's
 //                        heuristic_value; 0 after a terminal step), maximised over actions. For an
@@ -32,20 +43,28 @@
 
 namespace echoplan::solvers {
 
-enum class LeafMode { policy, lookahead, heuristic, rollout };
+enum class LeafMode { policy, exact, exact_offline, lookahead, heuristic, rollout };
 
-// Parses "policy" | "lookahead" | "heuristic" | "rollout"; throws InputError naming the flag
-// otherwise.
+// Parses "policy" | "exact" | "exact-offline" | "lookahead" | "heuristic" | "rollout"; throws
+// InputError naming the flag otherwise.
 LeafMode parse_leaf_mode(const std::string& text);
 const char* leaf_mode_name(LeafMode mode);
 
 // The leaf value a solver uses unless told otherwise: `policy` for ABT on a tabular identification
-// problem (it measured best there, docs/BENCHMARKS.md), `lookahead` everywhere else.
+// problem, `lookahead` everywhere else. (`exact` measured better there, docs/BENCHMARKS.md
+// "Certified share of V*", but as the default it fails the ROS loop test whose microphone carries
+// no evidence: docs/planning.md.)
 LeafMode default_leaf_mode(const std::string& solver, const pomdp::Model& model);
 
 struct LeafOptions {
   LeafMode mode = LeafMode::lookahead;
   int expand_after = 4;  // >= 1: visits a node spends as a leaf before it is expanded
+  // Modes exact and exact-offline: the share of each step's budget spent refining the exact
+  // solver at the root before the episodes, in [0, 1] (of the milliseconds; with an episode budget
+  // of N, N * share solver expansions and N * (1 - share) episodes, at least one).
+  double exact_share = 1.0;
+  // Mode exact-offline: expansions of the solve made before the first step; >= 1.
+  long offline_expansions = 200000;
 };
 
 // Running estimate of an unexpanded node's value, updated as particles arrive.
@@ -68,6 +87,9 @@ class LeafEstimate {
   // Takes back one particle's `contribution` (as measured across its add()), for a solver that
   // revises its episodes (AbtSolver::revise).
   void remove(const std::vector<double>& contribution);
+  // Sets the estimate to `value` (a leaf valued as a whole rather than particle by particle: the
+  // exact modes).
+  void set(double value);
   // Frees the accumulators (the node was expanded and no longer needs them).
   void release();
 

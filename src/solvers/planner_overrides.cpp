@@ -12,6 +12,8 @@ SearchOptions search_options(const PlannerOverrides& f, const pomdp::Problem& pr
   else if (problem.model)
     o.leaf.mode = default_leaf_mode(solver, *problem.model);
   o.leaf.expand_after = f.expand_after;
+  o.leaf.exact_share = f.exact_share;
+  o.leaf.offline_expansions = f.offline_expansions;
   o.root_particles = f.root_particles >= 0 ? f.root_particles : problem.belief.particles;
   o.branching.continuous_threshold = f.branch_threshold;
   o.validate();

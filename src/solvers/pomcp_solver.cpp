@@ -1,5 +1,7 @@
 #include "solvers/pomcp_solver.h"
 
+#include <string>
+
 #include "common/error.h"
 
 namespace echoplan::solvers {
@@ -7,8 +9,10 @@ namespace echoplan::solvers {
 PomcpSolver::PomcpSolver(pomdp::ModelPtr model, SearchOptions options)
     : TreeSearchSolver(std::move(model), options) {
   // POMCP stays the textbook algorithm: its leaves see states, not beliefs.
-  if (this->options().leaf.mode == LeafMode::policy)
-    throw InputError("the policy leaf value is ABT's; POMCP takes lookahead, heuristic or rollout");
+  const LeafMode mode = this->options().leaf.mode;
+  if (mode == LeafMode::policy || mode == LeafMode::exact || mode == LeafMode::exact_offline)
+    throw InputError(std::string("the ") + leaf_mode_name(mode) +
+                     " leaf value is ABT's; POMCP takes lookahead, heuristic or rollout");
 }
 
 void PomcpSolver::run_episode(Rng& rng) { simulate(root(), sample_root_particle(rng), 0, rng); }

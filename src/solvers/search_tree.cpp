@@ -16,6 +16,9 @@ void SearchOptions::validate() const {
   if (root_particles < 1) throw InputError("root particles must be >= 1");
   if (min_root_particles < 0) throw InputError("min root particles must be >= 0");
   if (leaf.expand_after < 1) throw InputError("expand-after must be >= 1");
+  if (!(leaf.exact_share >= 0.0 && leaf.exact_share <= 1.0))
+    throw InputError("exact share must be in [0, 1]");
+  if (leaf.offline_expansions < 1) throw InputError("offline expansions must be >= 1");
   if (!(branching.continuous_threshold >= 0.0))
     throw InputError("observation branching threshold must be >= 0");
 }

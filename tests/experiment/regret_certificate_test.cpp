@@ -104,6 +104,44 @@ TEST(RegretCertificate, LoosenessBoundsTheDistanceBetweenTheTwoRegrets) {
   fs::remove(steps);
 }
 
+TEST(RegretCertificate, LooseBoundsNeverCertifyLessRegretThanTightOnes) {
+  // The upper end of a loss is measured against the best rival action's upper bound on Q* (not
+  // V*'s): it must stay sound. The same log on the noisy seed problem, certified with bounds far
+  // from converged and with bounds near convergence: the loose certificate's regret is never below
+  // the tight one's lower end, and the tight one's two ends nearly meet.
+  const pomdp::Problem problem =
+      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+  const auto& model = dynamic_cast<const pomdp::ObjectIdentificationModel&>(*problem.model);
+  const fs::path steps = write_steps("rival",
+                                     "0,0,strike,coffee_mug,0,0,0,0,-1,10\n"
+                                     "0,1,strike,coffee_mug,0,0,0,0,-1,10\n"
+                                     "0,2,strike,plastic_cup,0,0,0,0,-1,10\n"
+                                     "0,3,move_to_B,none,0,0,0,0,10,10\n"
+                                     "1,0,slide,paper_base,0,0,0,0,-1,10\n"
+                                     "1,1,slide,paper_base,0,0,0,0,-1,10\n"
+                                     "1,2,strike,paper_base,0,0,0,0,-1,10\n"
+                                     "1,3,move_to_B,none,0,0,0,0,10,10\n");
+  auto certify = [&](long expansions) {
+    solvers::IdentificationSolver solver(*model.tabular());
+    CertifyOptions options;
+    options.decision_gap = 1e-6;
+    options.expansions_per_belief = expansions;
+    options.root_expansions = expansions;
+    return certify_trials(solver, read_steps_csv(steps, model.spec()), options, steps.string());
+  };
+  const Certificate loose = certify(30), tight = certify(1500);
+  ASSERT_EQ(loose.trials.size(), 2u);
+  ASSERT_EQ(tight.trials.size(), 2u);
+  for (std::size_t t = 0; t < 2; ++t) {
+    EXPECT_GE(loose.trials[t].regret, tight.trials[t].regret_lower - 1e-9) << "trial " << t;
+    EXPECT_LE(loose.trials[t].regret_lower, tight.trials[t].regret + 1e-9) << "trial " << t;
+    EXPECT_LT(tight.trials[t].regret - tight.trials[t].regret_lower,
+              0.25 * (loose.trials[t].regret - loose.trials[t].regret_lower) + 1e-9)
+        << "trial " << t;
+  }
+  fs::remove(steps);
+}
+
 TEST(RegretCertificate, CutShortTrialsCountTheValueLeftBehind) {
   // One sense then the step cap: regret 0 for the sense, plus 0.99 * V*(known mug) = 0.99 * 10.
   const pomdp::ObjectIdentificationModel model(perfect_sensing_seed());

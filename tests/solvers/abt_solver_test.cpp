@@ -5,16 +5,20 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "common/error.h"
 #include "pomdp/exact_belief.h"
 #include "pomdp/particle_belief.h"
 #include "pomdp/problem.h"
+#include "solvers/identification_solver.h"
 #include "solvers/model_change.h"
 #include "solvers/planner_overrides.h"
 #include "solvers/pomcp_solver.h"
@@ -316,6 +320,93 @@ TEST(AbtPolicyLeaf, NeedsAnIdentificationProblem) {
   EXPECT_EQ(default_leaf_mode("abt", *seed.model), LeafMode::policy);
   EXPECT_EQ(default_leaf_mode("pomcp", *seed.model), LeafMode::lookahead);
   EXPECT_THROW(PomcpSolver(seed.model, policy_leaf()), InputError);
+}
+
+SearchOptions exact_leaf() {
+  SearchOptions options;
+  options.leaf.mode = LeafMode::exact;
+  options.root_particles = 200;
+  return options;
+}
+
+TEST(AbtExactLeaf, TakesTheActionTheExactBoundsProveOptimal) {
+  // At beliefs from one observation to nearly certain, a separate exact solver refined there
+  // (10,000 expansions) proves one action optimal (its lower bound on Q* at least every other
+  // action's upper bound); ABT with the exact leaf and 2,000 episodes' worth of budget per step
+  // must take it.
+  const pomdp::Problem p = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
+  const pomdp::TabularModel& m = *p.model->tabular();
+  // Heard: slide "pringles_can"; strike "pringles_can" twice; three times; strike "coffee_mug"
+  // three times.
+  const std::vector<std::vector<std::pair<int, int>>> histories = {
+      {{kSlide, 0}},
+      {{kStrike, 0}, {kStrike, 0}},
+      {{kStrike, 0}, {kStrike, 0}, {kStrike, 0}},
+      {{kStrike, 1}, {kStrike, 1}, {kStrike, 1}},
+  };
+  std::vector<int> optimal;
+  for (const auto& history : histories) {
+    IdentificationSolver reference(m);
+    IdentificationSolver::NodeId node = reference.root();
+    for (const auto& [a, o] : history) node = reference.child(node, a, o);
+    reference.refine(node, RefineLimits{1e-4, 0.0, 10000});
+
+    int best = 0;
+    for (int a = 1; a < m.num_actions(); ++a)
+      if (reference.action_value(node, a).lower > reference.action_value(node, best).lower)
+        best = a;
+    for (int a = 0; a < m.num_actions(); ++a)
+      if (a != best)
+        ASSERT_LE(reference.action_value(node, a).upper, reference.action_value(node, best).lower)
+            << "the reference bounds do not separate action " << a << " after " << history.size()
+            << " observations";
+    optimal.push_back(best);
+
+    AbtSolver solver(p.model, exact_leaf());
+    pomdp::ExactBelief belief(p.model);
+    Rng rng(7);
+    solver.reset(belief, rng);
+    for (const auto& [a, o] : history) {
+      pomdp::Observation heard;
+      heard.index = o;
+      belief.update(a, heard, rng);
+      solver.update(a, heard, belief, rng);
+    }
+    solver.improve(Budget::episodes(2000), rng);
+    EXPECT_EQ(solver.best_action(), best) << "after " << history.size() << " observations";
+  }
+  // The beliefs cover both sensing actions and both sorting actions.
+  EXPECT_EQ(optimal, (std::vector<int>{kStrike, kSlide, kMoveToA, kMoveToA + 1}));
+}
+
+TEST(AbtExactLeaf, FallsBackToThePolicyLeafAtABeliefTheExactSolverDoesNotHold) {
+  // Reset at "surely the mug" (not the problem's start belief): no count vector holds it, so the
+  // guide is off and ABT plans with the policy leaf from the tree's own exact beliefs.
+  const auto model = seed_model();
+  AbtSolver solver(model, exact_leaf());
+  Rng rng(3);
+  pomdp::ParticleBelief belief(model, 200, rng);
+  for (int i = 0; i < 8; ++i) {
+    pomdp::Observation mug;
+    mug.index = 1;
+    belief.update(kStrike, mug, rng);
+  }
+  solver.reset(belief, rng);
+  solver.improve(Budget::episodes(500), rng);
+  EXPECT_EQ(solver.best_action(), kMoveToA + 1);  // the mug goes to B
+  EXPECT_EQ(solver.stats().episodes_last, 500);
+}
+
+TEST(AbtExactLeaf, NeedsAnIdentificationProblemAndIsAbtsOnly) {
+  const pomdp::Problem tiger = pomdp::load_problem(repo_file("problems/tiger.pomdp"));
+  EXPECT_THROW(AbtSolver(tiger.model, exact_leaf()), InputError);
+  const pomdp::Problem seed = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
+  EXPECT_THROW(PomcpSolver(seed.model, exact_leaf()), InputError);
+  SearchOptions offline = exact_leaf();
+  offline.leaf.mode = LeafMode::exact_offline;
+  EXPECT_THROW(PomcpSolver(seed.model, offline), InputError);
+  offline.leaf.exact_share = 1.5;
+  EXPECT_THROW(AbtSolver(seed.model, offline), InputError);
 }
 
 }  // namespace

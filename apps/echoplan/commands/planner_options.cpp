@@ -33,8 +33,17 @@ void add_planner_options(CLI::App& cmd, solvers::PlannerOverrides& f) {
                  "UCB exploration constant c, reward units (default: the problem file's)");
   cmd.add_option("--depth", f.depth, "Maximum search depth (default: the problem file's)");
   cmd.add_option("--leaf", f.leaf,
-                 "Leaf value: policy (ABT only), lookahead, heuristic or rollout (default: policy "
-                 "for ABT on an identification problem, else lookahead)");
+                 "Leaf value: policy, exact or exact-offline (ABT only, identification problems), "
+                 "lookahead, heuristic or rollout (default: policy for ABT on an identification "
+                 "problem, else lookahead; docs/planning.md)");
+  cmd.add_option("--exact-share", f.exact_share,
+                 "--leaf exact/exact-offline: share of each step's budget spent refining the exact "
+                 "solver at the current belief before the episodes, in [0, 1]")
+      ->capture_default_str();
+  cmd.add_option("--offline-expansions", f.offline_expansions,
+                 "--leaf exact-offline: node expansions of the exact solve made once before the "
+                 "first step")
+      ->capture_default_str();
   cmd.add_option("--expand-after", f.expand_after,
                  "Visits a new node is valued as a leaf before it branches")
       ->capture_default_str();
