@@ -355,11 +355,12 @@ TEST(AbtExactLeaf, TakesTheActionTheExactBoundsProveOptimal) {
     for (int a = 1; a < m.num_actions(); ++a)
       if (reference.action_value(node, a).lower > reference.action_value(node, best).lower)
         best = a;
-    for (int a = 0; a < m.num_actions(); ++a)
-      if (a != best)
-        ASSERT_LE(reference.action_value(node, a).upper, reference.action_value(node, best).lower)
-            << "the reference bounds do not separate action " << a << " after " << history.size()
-            << " observations";
+    for (int a = 0; a < m.num_actions(); ++a) {
+      if (a == best) continue;
+      ASSERT_LE(reference.action_value(node, a).upper, reference.action_value(node, best).lower)
+          << "the reference bounds do not separate action " << a << " after " << history.size()
+          << " observations";
+    }
     optimal.push_back(best);
 
     AbtSolver solver(p.model, exact_leaf());
