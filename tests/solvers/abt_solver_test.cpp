@@ -271,12 +271,15 @@ std::string repo_file(const std::string& relative) {
 
 constexpr int kMoveToA = 2;
 
-SearchOptions policy_leaf() {
+// ABT's options with one of the leaves that need a tabular identification problem.
+SearchOptions tabular_leaf(LeafMode mode) {
   SearchOptions options;
-  options.leaf.mode = LeafMode::policy;
+  options.leaf.mode = mode;
   options.root_particles = 200;
   return options;
 }
+
+SearchOptions policy_leaf() { return tabular_leaf(LeafMode::policy); }
 
 TEST(AbtPolicyLeaf, SensesFirstAndSortsOnceTheEvidenceIsStrong) {
   const pomdp::Problem p = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
@@ -322,12 +325,7 @@ TEST(AbtPolicyLeaf, NeedsAnIdentificationProblem) {
   EXPECT_THROW(PomcpSolver(seed.model, policy_leaf()), InputError);
 }
 
-SearchOptions exact_leaf() {
-  SearchOptions options;
-  options.leaf.mode = LeafMode::exact;
-  options.root_particles = 200;
-  return options;
-}
+SearchOptions exact_leaf() { return tabular_leaf(LeafMode::exact); }
 
 TEST(AbtExactLeaf, TakesTheActionTheExactBoundsProveOptimal) {
   // At beliefs from one observation to nearly certain, a separate exact solver refined there
