@@ -38,6 +38,9 @@ class SimulatedRecorder {
   // The modes rendered (after the recording's Nyquist limit).
   const std::vector<Mode>& object_modes() const { return object_modes_; }
   const std::vector<Mode>& table_modes() const { return table_modes_; }
+  // The object's wall where its modes overlap, pooled into bands (dense_wall_band): rubbed, it
+  // hisses.
+  const std::vector<Mode>& dense_modes() const { return dense_modes_; }
 
   // Hertz contact time (s) of an impact recorded in a trace, with this object on this table.
   double contact_time(const Impact& impact) const;
@@ -51,9 +54,12 @@ class SimulatedRecorder {
   SimConfig config_;
   std::vector<Mode> object_modes_;
   std::vector<Mode> table_modes_;
+  std::vector<Mode> dense_modes_;
   Material table_surface_;      // the contact presses on it, its ring loses energy into it
   double contact_modulus_ = 0;  // Pa, E* of object material on table material
   double table_coincidence_hz_ = 0;
+  double wall_coincidence_hz_ =
+      0;                        // of the object's wall, which radiates its dense band as a plate
   double table_impedance_ = 0;  // N s/m, the top's point impedance (plate_point_impedance)
   double object_mode_scale_ =
       1;  // the object's modes' response per unit impulse, relative (1 / mass)
