@@ -34,11 +34,10 @@ struct VariabilityConfig {
       0.085, 0.003};  // m, end-effector height above the table when at the object
   TruncatedGaussian grasp_offset{
       0.0, 0.003};  // m, hand off the object's axis when it closes (each horizontal axis)
-  // m/s, the slide's speed. The report gives only the distance (5 cm); fitted to the lab's four
-  // slide durations (dur20 1.64, 2.0, 0.95, 1.40 s, each about 5 cm / v + 0.15 s of ramps: 3.7 cm/s
-  // on average, their spread about 30%), the spread narrowed to 0.008 so that the cut at -3 stddev
-  // keeps every push under 4 s (docs/simulator.md, "Realism, measured").
-  TruncatedGaussian push_speed{0.037, 0.008};
+  // m/s, the slide's speed. The report gives only the distance (5 cm); the spread is the lab's: its
+  // four slides lasted 0.95-2.0 s above -20 dB (about 30% around their mean), cut to 20% so that
+  // -3 stddev keeps every push above 2 cm/s (docs/simulator.md, "Realism, measured").
+  TruncatedGaussian push_speed{0.05, 0.01};
   TruncatedGaussian push_offset{0.0,
                                 0.005};  // m, the pad off the object's centre line across the push
   // Per trial (ObjectPlacement): where the operator put the object.
@@ -76,7 +75,7 @@ struct RecordingConfig {
   double output_gain = 1400;  // full scale per unit of synthesized pressure before the limiter
                               // (every strike reaches it)
   double friction_gain =
-      8.3e-7;  // scale of sliding excitation relative to impacts (slides 17 dB below strikes)
+      7.2e-7;  // scale of sliding excitation relative to impacts (slides 17 dB below strikes)
   double motor_noise_gain =
       1.8e-5;  // motor noise per rad/s of summed joint speed (about 20 dB below a slide)
   double limiter_ceiling_dbfs = -3;  // the recorder's limiter: no sample above this

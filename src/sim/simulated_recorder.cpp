@@ -30,11 +30,8 @@ constexpr double kLimiterLookahead = 0.001;  // s
 constexpr double kRingGainFloor =
     0.15;  // real objects are not perfectly round: every ring mode hears a hit
 constexpr double kTableCoupling = 0.25;  // share of an impact's effect that rings the table
-// m between surface-profile samples: the profile read at the push speed carries the roughness up to
-// speed / (2 spacing), 12.3 kHz at the default 3.7 cm/s (12.5 kHz at 5 cm/s with the 2 um it had
-// when the push was 5 cm/s). Its slope has unit RMS per sample, so a finer spacing spreads the same
-// slope energy over a wider band: friction_gain was recalibrated with it (7.2e-7 to 8.3e-7).
-constexpr double kProfileSpacing = 1.5e-6;
+constexpr double kProfileSpacing =
+    2.0e-6;  // m between surface-profile samples (12.5 kHz at 5 cm/s)
 constexpr double kReferenceSlideSpeed = 0.05;  // m/s at which friction_gain is calibrated
 constexpr double kStaticSpeed =
     2e-3;  // m/s: slower creep of a pressed contact is the solver's compliance, silent
