@@ -121,7 +121,7 @@ std::vector<Mode> dense_wall_band(const ObjectSpec& o, double max_frequency_hz,
   // gain^2 / decay that pooling must keep.
   constexpr int kBandsPerOctave = 3;
   constexpr int kLowestBand = -15;  // 31 Hz: below every wall mode
-  constexpr int kBandCount = 40;    // up to 16 kHz * 2^(1/3) ... beyond any recording's Nyquist
+  constexpr int kBandCount = 40;    // up to 256 kHz: beyond any recording's Nyquist
   std::array<int, kBandCount> count{};
   std::array<double, kBandCount> energy{}, decay_sum{};
   auto band_of = [&](double f) {

@@ -68,8 +68,9 @@ std::vector<Mode> object_modes(const ObjectSpec& object, double max_frequency_hz
 // plate's mean point conductance 1/(8 sqrt(B m'')) = n(f) / (4 M)). The modes are pooled into
 // bands of a third of an octave where they overlap; a band is one resonator as wide as the band
 // (decay pi * bandwidth) whose power under white drive is its modes' sum: gain^2 / decay = sum
-// over its modes of (kWallCoupling)^2 / sigma_i. Decay as object_modes()' wall modes. Empty for an
-// object with listed modes or whose wall's modes stay apart (a thick ceramic mug).
+// over its modes of 0.6^2 / sigma_i (every mode at the wall's coupling through the base, the listed
+// wall modes' 0.6: equipartition). Decay as object_modes()' wall modes. Empty for an object with
+// listed modes or whose wall's modes stay apart (a thick ceramic mug).
 std::vector<Mode> dense_wall_band(const ObjectSpec& object, double max_frequency_hz,
                                   double contact_loss_factor = 0, double pad_damping = 0);
 

@@ -7,7 +7,8 @@
 //   weights each mode (the rim contact pattern weights the shell ring modes), radiating directly as
 //   the object ringing on its contact spring (the contact ring);
 // - sliding: a fractal (1/f^2) surface profile read at the sliding speed (roughness noise);
-// - both drive the object's modes and the table's modes (damped resonators); a slide's roughness
+// - both drive the object's modes and the table's modes (damped resonators), and friction the
+//   object's wall where its modes overlap (dense_wall_band: a thin cup hisses); a slide's roughness
 //   velocity splits between object and table by their impedances (a heavy object resists it at high
 //   frequency and the table takes it); the arm's motors add
 //   band noise following the joints' speed;
