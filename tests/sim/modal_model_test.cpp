@@ -13,19 +13,26 @@ namespace {
 
 Material ceramic() { return {"ceramic", 2700, 7.2e10, 0.19, 6, 1e-7}; }
 
-ObjectSpec mug() {
+// A cylinder_shell object: sizes in metres, mass in kilograms.
+struct ShellSizes {
+  double radius, height, wall, base, mass, contact_radius;
+  int ring_modes;
+};
+ObjectSpec shell(const char* name, const ShellSizes& s, const Material& material) {
   ObjectSpec o;
-  o.name = "mug";
-  o.radius = 0.04;
-  o.height = 0.1;
-  o.wall_thickness = 0.005;
-  o.base_thickness = 0.006;
-  o.shell_mass = 0.3;
-  o.material = ceramic();
-  o.contact_radius = 0.004;
-  o.ring_modes = 3;
+  o.name = name;
+  o.radius = s.radius;
+  o.height = s.height;
+  o.wall_thickness = s.wall;
+  o.base_thickness = s.base;
+  o.shell_mass = s.mass;
+  o.material = material;
+  o.contact_radius = s.contact_radius;
+  o.ring_modes = s.ring_modes;
   return o;
 }
+
+ObjectSpec mug() { return shell("mug", {0.04, 0.1, 0.005, 0.006, 0.3, 0.004, 3}, ceramic()); }
 
 TEST(ModalModel, RayleighDecay) {
   // alpha/2 + beta w^2/2 at 1 kHz: 3 + 1e-7 * (2 pi 1000)^2 / 2 = 3 + 1.9739...
@@ -179,17 +186,7 @@ TEST(ModalModel, SynthesisEnvelopeFollowsTheHalfSineSpectrumsLobes) {
 Material flat_damped_polycarbonate() { return {"pc", 1190, 2.4e9, 0.37, 200, 0}; }  // sigma 100/s
 
 ObjectSpec thin_cup() {
-  ObjectSpec o;
-  o.name = "cup";
-  o.radius = 0.042;
-  o.height = 0.11;
-  o.wall_thickness = 0.0008;
-  o.base_thickness = 0.0012;
-  o.shell_mass = 0.018;
-  o.material = flat_damped_polycarbonate();
-  o.contact_radius = 0.0005;
-  o.ring_modes = 5;
-  return o;
+  return shell("cup", {0.042, 0.11, 0.0008, 0.0012, 0.018, 0.0005, 5}, flat_damped_polycarbonate());
 }
 
 TEST(ModalModel, PlateModalDensityIsFourMassesTimesItsMeanMobility) {
