@@ -265,8 +265,9 @@ double flatness_db(const std::vector<double>& mag, double bin_hz, double from_hz
 TEST(SimulatedRecorder, ThinCupHissesWhereItsWallsModesOverlap) {
   // The cup's 0.8 mm wall has dozens of modes per kilohertz, overlapping from 1 kHz: rubbed, it
   // answers as a smooth band (dense_wall_band), as the lab's cup slides did (flatness -4.6 to -7.4
-  // dB). The same cup with only its one-by-one modes (listed in the catalogue: no band) rings as
-  // those few tones. Same slide, same random numbers.
+  // dB over 100 Hz-10 kHz). The same cup with only its one-by-one modes (listed in the catalogue:
+  // no band) rings as those few tones: 3 dB less flat at least, and less of its power above 2 kHz.
+  // Same slide, same random numbers.
   const SimConfig config = quiet();
   SimulatedRobot robot(shipped_catalogue(), "plastic_cup", config);
   const ActionOutcome out = robot.execute("slide", nominal());
@@ -294,7 +295,10 @@ TEST(SimulatedRecorder, ThinCupHissesWhereItsWallsModesOverlap) {
     high_share[i] = high / total;
   }
   EXPECT_GT(flatness[0], flatness[1] + 3) << flatness[0] << " dB against " << flatness[1];
-  EXPECT_GT(high_share[0], 2 * high_share[1]) << high_share[0] << " against " << high_share[1];
+  EXPECT_GT(high_share[0], high_share[1]) << high_share[0] << " against " << high_share[1];
+  // The realism target: within 3 dB of the lab's cup slides' range.
+  EXPECT_GT(flatness[0], -7.4 - 3);
+  EXPECT_LT(flatness[0], -4.6 + 3);
 }
 
 TEST(SimulatedRecorder, ThickMugsWallStaysTonal) {
