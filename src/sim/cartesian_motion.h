@@ -24,14 +24,18 @@ struct Segment {
   // to rest at the end (the arm's controller never jumps in speed); 0: constant speed throughout.
   double ease_in_s = 0, ease_out_s = 0;
 
-  // The share of the path covered at time t in [0, duration_s].
+  // The share of the path covered at time t, clamped to [0, duration_s]: callers compute t as
+  // duration * k / steps, which rounding can put an ulp past the end (with no ease-out that once
+  // divided by zero and sent the arm's joint targets to NaN).
   double progress(double t) const {
+    t = std::clamp(t, 0.0, duration_s);
     const double ta = std::min(ease_in_s, duration_s / 2),
                  td = std::min(ease_out_s, duration_s / 2);
     const double cruise =
         1.0 / (duration_s - ta / 2 - td / 2);  // path shares per second at full speed
     if (t < ta) return 0.5 * cruise * t * t / ta;
-    if (t > duration_s - td) return 1.0 - 0.5 * cruise * (duration_s - t) * (duration_s - t) / td;
+    if (td > 0 && t > duration_s - td)
+      return 1.0 - 0.5 * cruise * (duration_s - t) * (duration_s - t) / td;
     return cruise * (t - ta / 2);
   }
 };

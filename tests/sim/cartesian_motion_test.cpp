@@ -42,6 +42,25 @@ TEST(Segment, WithoutEasingTheSpeedIsConstant) {
   EXPECT_DOUBLE_EQ(s.progress(1.5), 0.75);
 }
 
+// The strike's descent eases in but not out (it stops on contact). The robot asks for the progress
+// at duration * k / steps, which rounding can put past the end: 0.738954 * 369 / 369 is one ulp
+// above 0.738954. That once divided by the zero ease-out and sent the joint targets to NaN; MuJoCo
+// zeroed the servos and the arm fell onto the table, logged as a collision. It takes a descent that
+// reaches its end without meeting the table (seen in a mug strike made after a slide).
+TEST(Segment, TimesAtOrJustPastTheEndGiveTheWholePathWithoutEaseOut) {
+  Segment s{};
+  s.duration_s = 0.738954;
+  s.ease_in_s = 0.1;
+  const double past = s.duration_s * 369 / 369;
+  ASSERT_GT(past, s.duration_s);  // the rounding the robot meets
+  EXPECT_DOUBLE_EQ(s.progress(past), 1.0);
+  EXPECT_DOUBLE_EQ(s.progress(s.duration_s), 1.0);
+  EXPECT_DOUBLE_EQ(s.progress(s.duration_s + 1.0), 1.0);
+  EXPECT_DOUBLE_EQ(s.progress(-1.0), 0.0);
+  s.ease_in_s = 0;  // and without easing at either end
+  EXPECT_DOUBLE_EQ(s.progress(past), 1.0);
+}
+
 TEST(DampedLeastSquares, ReachesANearbyPoseOfTheRealArm) {
   const Scene scene(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
                     PhysicsConfig{});
