@@ -285,6 +285,8 @@ bool prepare_training(Campaign& campaign, const perception::ProgressFn& progress
     } else {
       perception::TrainOptions options;
       if (!config.training.classifier.empty()) options.classifier = config.training.classifier;
+      if (!config.training.table.empty())
+        options.table = perception::parse_table_estimate(config.training.table);
       // Both arms must hear the same symbols to be compared trial by trial: no reject option.
       options.reject = false;
       options.seed = derive_seed(config.seed, {0x63616c6962ull});  // "calib": fold assignment

@@ -13,6 +13,7 @@
 #include "common/error.h"
 #include "common/stable_hash.h"
 #include "common/yaml_reader.h"
+#include "perception/observation_model.h"
 #include "solvers/make_solver.h"
 
 namespace echoplan::experiment {
@@ -68,6 +69,7 @@ nlohmann::json CampaignConfig::identity() const {
                        {"recordings", training.recordings},
                        {"model_sha", content_hash(training.model)},
                        {"classifier", training.classifier},
+                       {"table", training.table},
                        {"catalogue_sha", content_hash(training.catalogue)},
                        {"sim_config_sha", content_hash(training.sim_config)}};
   for (const ObjectGroup& g : groups)
@@ -130,12 +132,19 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
     f.expect_map(t, "training_set");
     f.only_keys(t,
                 {"recordings_per_pair", "objects", "actions", "recordings", "model", "classifier",
-                 "catalogue", "sim_config"},
+                 "table", "catalogue", "sim_config"},
                 "training_set");
     if (auto n = f.optional(t, "model", "training_set"))
       c.training.model = resolve(source, f.name(n, "model"));
     if (auto n = f.optional(t, "classifier", "training_set"))
       c.training.classifier = f.name(n, "classifier");
+    if (auto n = f.optional(t, "table", "training_set")) {
+      c.training.table = f.name(n, "table");
+      const auto& names = perception::table_estimate_names();
+      if (std::find(names.begin(), names.end(), c.training.table) == names.end())
+        f.fail(n, fmt::format("table '{}' is not one of: {}", c.training.table,
+                              fmt::join(names, ", ")));
+    }
     if (auto n = f.optional(t, "recordings", "training_set"))
       c.training.recordings = resolve(source, f.name(n, "recordings"));
     if (auto n = f.optional(t, "recordings_per_pair", "training_set"))
@@ -214,6 +223,7 @@ nlohmann::json to_json(const CampaignConfig& c) {
                        {"recordings", c.training.recordings},
                        {"model", c.training.model},
                        {"classifier", c.training.classifier},
+                       {"table", c.training.table},
                        {"catalogue", c.training.catalogue},
                        {"sim_config", c.training.sim_config}};
   for (const ObjectGroup& g : c.groups)
@@ -242,6 +252,8 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
     c.training.recordings = t.at("recordings").get<std::string>();
     c.training.model = t.at("model").get<std::string>();
     c.training.classifier = t.at("classifier").get<std::string>();
+    // Absent in campaign folders written before the option existed (they trained on counts).
+    c.training.table = t.value("table", std::string());
     c.training.catalogue = t.at("catalogue").get<std::string>();
     c.training.sim_config = t.at("sim_config").get<std::string>();
     for (const auto& g : j.at("trials"))

@@ -52,6 +52,7 @@ struct TrainingSetConfig {
   std::string model;       // an existing trained model file to use instead of training on the
                            // training set; empty: train
   std::string classifier;  // perception's classifier name; empty: its default
+  std::string table;       // perception's table estimate ("counts" or "soft"); empty: its default
   std::string catalogue;   // empty: the shipped catalogue
   std::string sim_config;  // empty: built-in defaults
 };

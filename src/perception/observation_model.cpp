@@ -40,6 +40,7 @@ struct ObservationModel::Impl {
   std::vector<std::string> actions;
   bool reject = true;
   double dirichlet_alpha = 1.0;
+  TableEstimate table_estimate = TableEstimate::counts;
   std::vector<PerAction> per_action;  // actions order
 
   // classify(clip) analyses into one reused buffer; the mutex makes classify() safe to call from
@@ -67,6 +68,23 @@ const std::string& ObservationModel::classifier_name() const { return impl_->cla
 const std::vector<std::string>& ObservationModel::classes() const { return impl_->classes; }
 const std::vector<std::string>& ObservationModel::actions() const { return impl_->actions; }
 bool ObservationModel::reject() const { return impl_->reject; }
+TableEstimate ObservationModel::table_estimate() const { return impl_->table_estimate; }
+
+const char* table_estimate_name(TableEstimate estimate) {
+  return estimate == TableEstimate::soft ? "soft" : "counts";
+}
+
+const std::vector<std::string>& table_estimate_names() {
+  static const std::vector<std::string> names{"counts", "soft"};
+  return names;
+}
+
+TableEstimate parse_table_estimate(const std::string& name) {
+  if (name == "counts") return TableEstimate::counts;
+  if (name == "soft") return TableEstimate::soft;
+  throw InputError(fmt::format("table estimate '{}' is not one of: {}", name,
+                               fmt::join(table_estimate_names(), ", ")));
+}
 
 std::vector<std::string> ObservationModel::observation_symbols() const {
   std::vector<std::string> symbols = impl_->classes;
@@ -160,6 +178,7 @@ ObservationModel train_observation_model(const RecordingSet& set, const TrainOpt
   m.actions = set.actions;
   m.reject = options.reject;
   m.dirichlet_alpha = options.dirichlet_alpha;
+  m.table_estimate = options.table;
   if (m.classes.size() < 2)
     throw InputError(set.root, 0,
                      fmt::format("need recordings of at least two objects to train, found {}",
@@ -246,12 +265,19 @@ ObservationModel train_observation_model(const RecordingSet& set, const TrainOpt
           options.reject_margin * (largest_correct > 0.0 ? largest_correct : largest);
     }
     a.calibration.confusion = ConfusionMatrix::zeros(m.classes, symbols);
+    std::vector<bool> rejected(examples.size());
     for (std::size_t i = 0; i < examples.size(); ++i) {
-      const bool unknown = options.reject && held_distance[i] > a.calibration.reject_threshold;
+      rejected[i] = options.reject && held_distance[i] > a.calibration.reject_threshold;
       ++a.calibration.confusion.counts[static_cast<std::size_t>(
-          labels[i])][unknown ? m.classes.size() : static_cast<std::size_t>(held_best[i])];
+          labels[i])][rejected[i] ? m.classes.size() : static_cast<std::size_t>(held_best[i])];
     }
-    a.calibration.table = dirichlet_smoothed(a.calibration.confusion, options.dirichlet_alpha);
+    a.calibration.table =
+        options.table == TableEstimate::soft
+            ? dirichlet_smoothed(
+                  soft_confusion(held_log_scores, labels, rejected, num_classes,
+                                 static_cast<int>(symbols.size()), a.calibration.temperature),
+                  m.classes, options.dirichlet_alpha)
+            : dirichlet_smoothed(a.calibration.confusion, options.dirichlet_alpha);
     a.classifier = prototype->clone_unfitted();
     a.classifier->fit(examples, labels, num_classes);
     m.per_action.push_back(std::move(a));
@@ -296,6 +322,7 @@ nlohmann::json ObservationModel::to_json() const {
           {"actions", m.actions},
           {"reject", m.reject},
           {"dirichlet_alpha", m.dirichlet_alpha},
+          {"table_estimate", table_estimate_name(m.table_estimate)},
           {"per_action", per_action}};
 }
 
@@ -372,6 +399,14 @@ ObservationModel ObservationModel::from_json(const nlohmann::json& doc, const st
   m.dirichlet_alpha =
       jf::number(jf::member(doc, "dirichlet_alpha", "", source), "dirichlet_alpha", source);
   if (m.dirichlet_alpha < 0.0) throw InputError(source, 0, "dirichlet_alpha: must be >= 0");
+  if (doc.contains("table_estimate")) {
+    const std::string name = jf::string(doc["table_estimate"], "table_estimate", source);
+    try {
+      m.table_estimate = parse_table_estimate(name);
+    } catch (const InputError& e) {
+      throw InputError(source, 0, "table_estimate: " + e.problem());
+    }
+  }
   const std::vector<std::string> symbols = model.observation_symbols();
   const auto& per_action = jf::member(doc, "per_action", "", source);
   if (!per_action.is_object() || per_action.size() != m.actions.size())

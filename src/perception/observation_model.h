@@ -10,6 +10,7 @@
 // Model file (JSON, format "echoplan-observation-model", version 1):
 //   { "format", "version", "analysis": {sample_rate, preset, onset {...}, silence_rms},
 //     "classifier": name, "classes": [...], "actions": [...], "reject": bool, "dirichlet_alpha",
+//     "table_estimate": "counts" | "soft" (absent in files written before it existed: "counts"),
 //     "per_action": { action: { "classifier": {fit}, "temperature", "reject_threshold",
 //                               "confusion": [[counts]], "symbols": [...], "table": [[P(o|k)]] } }
 //                               }
@@ -35,6 +36,18 @@ namespace echoplan::perception {
 inline constexpr int kModelFormatVersion = 1;
 inline constexpr const char* kUnknownSymbol = "unknown";
 
+// How the cross-validated decisions become the observation table (before Dirichlet smoothing).
+//   counts: each held-out clip adds one to (its object, the symbol it was reported as).
+//   soft:   each held-out clip adds its calibrated probabilities softmax(log_scores / T) to its
+//           object's row (a rejected clip still adds its whole unit to `unknown`): the expected
+//           confusion under the calibrated classifier, so an action that wins by narrow margins
+//           gets a softer row than one that wins by wide margins.
+enum class TableEstimate { counts, soft };
+const char* table_estimate_name(TableEstimate estimate);
+const std::vector<std::string>& table_estimate_names();
+// Throws InputError("table estimate '<name>' is not one of: counts, soft").
+TableEstimate parse_table_estimate(const std::string& name);
+
 struct TrainOptions {
   std::string classifier{kDefaultClassifier};  // make_classifier name
   AnalysisSettings analysis;
@@ -44,8 +57,9 @@ struct TrainOptions {
   // unknown.
   double reject_margin = 1.5;
   double dirichlet_alpha = 1.0;  // pseudo-count added to every cell of each confusion row
-  int folds = 0;                 // cross-validation folds; 0 = leave-one-out
-  std::uint64_t seed = 0;        // fold assignment when folds > 0
+  TableEstimate table = TableEstimate::counts;
+  int folds = 0;           // cross-validation folds; 0 = leave-one-out
+  std::uint64_t seed = 0;  // fold assignment when folds > 0
 };
 
 // Per action: what cross-validation measured and what the planner gets.
@@ -55,6 +69,7 @@ struct ActionCalibration {
   double reject_threshold = 0.0;           // infinity when reject is off
   ConfusionMatrix confusion;               // cross-validated counts, objects x symbols
   std::vector<std::vector<double>> table;  // P(symbol | object), Dirichlet-smoothed confusion
+                                           // (hard or soft, the model's table_estimate())
 };
 
 // Progress of long work: (what, done, total), e.g. ("analyse", 12, 80).
@@ -79,6 +94,7 @@ class ObservationModel {
   const std::vector<std::string>& classes() const;  // the objects, in training-set order
   const std::vector<std::string>& actions() const;
   bool reject() const;
+  TableEstimate table_estimate() const;
   // classes() followed by "unknown" when reject() is on.
   std::vector<std::string> observation_symbols() const;
   // Calibration of `action`; throws InputError listing the actions for an unknown one.

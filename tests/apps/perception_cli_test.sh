@@ -18,6 +18,13 @@ grep -q "slide (cross-validated, leave-one-out): accuracy" "$work/train.out" || 
 grep -q "symbols: \[pringles_can, coffee_mug, plastic_cup, paper_base, unknown\]" "$work/problem.yaml" \
   || fail "problem symbols: $(grep symbols "$work/problem.yaml")"
 
+# --table soft: the model file records it, and the problem file's header says which table it holds.
+"$bin" train --data "$work/data" --out "$work/soft.json" --table soft --problem-out "$work/soft.yaml" \
+  --problem-base "$src/problems/audio_objects.yaml" >/dev/null 2>"$work/soft.err" || { fail "train --table soft exited $?"; cat "$work/soft.err"; }
+grep -q '"table_estimate":"soft"' "$work/soft.json" || fail "the model file records table_estimate soft"
+grep -q '"table_estimate":"counts"' "$work/model.json" || fail "the default model file records its table estimate"
+grep -q "soft table" "$work/soft.yaml" || fail "the problem header names the soft table"
+
 # classify --json: one object per file with the documented fields; probabilities sum to 1.
 "$bin" classify --model "$work/model.json" --action strike --json "$work/held/coffee_mug/strike/000.wav" \
   "$work/held/paper_base/strike/001.wav" >"$work/classify.out" 2>"$work/classify.err" || fail "classify exited $?"
@@ -49,6 +56,7 @@ PY
 # Bad input: exit 2 with a message naming the problem.
 expect_input_error "missing data" "does not exist" train --data "$work/nope" --out "$work/m.json"
 expect_input_error "unknown classifier" "classifier" train --data "$work/data" --out "$work/m.json" --classifier magic
+expect_input_error "unknown table estimate" "--table: hard not in {counts,soft}" train --data "$work/data" --out "$work/m.json" --table hard
 expect_input_error "problem base of another kind" "not an object-identification problem" train --data "$work/held" \
   --out "$work/m.json" --problem-out "$work/p.yaml" --problem-base "$src/problems/tiger.pomdp"
 mkdir -p "$work/two" && cp -r "$work/held/coffee_mug" "$work/held/plastic_cup" "$work/two/"

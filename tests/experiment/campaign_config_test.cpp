@@ -90,5 +90,15 @@ TEST(CampaignConfig, RejectsBadValues) {
   EXPECT_EQ(line.substr(0, 2), "6:") << line;
 }
 
+TEST(CampaignConfig, TrainingTableEstimate) {
+  EXPECT_EQ(parse_campaign_config(kMinimal, "/dir/c.yaml").training.table, "");  // the default
+  const CampaignConfig soft =
+      parse_campaign_config(kMinimal + "training_set: {table: soft}\n", "/dir/c.yaml");
+  EXPECT_EQ(soft.training.table, "soft");
+  EXPECT_EQ(campaign_config_from_json(to_json(soft), "campaign.json").training.table, "soft");
+  const std::string bad = error_of(kMinimal + "training_set:\n  table: hard\n");
+  EXPECT_EQ(bad, "9: table 'hard' is not one of: counts, soft");
+}
+
 }  // namespace
 }  // namespace echoplan::experiment

@@ -143,6 +143,39 @@ TEST_F(ObservationModelTest, RoundTripsThroughJson) {
   EXPECT_EQ(a.distance, b.distance);
 }
 
+TEST_F(ObservationModelTest, SoftTableIsRecordedAndRoundTrips) {
+  EXPECT_EQ(model_->table_estimate(), TableEstimate::counts);
+  EXPECT_EQ(model_->to_json()["table_estimate"], "counts");
+  TrainOptions options;
+  options.table = TableEstimate::soft;
+  const ObservationModel soft = train_observation_model(load_recording_set(dir_->string()), options);
+  EXPECT_EQ(soft.table_estimate(), TableEstimate::soft);
+  for (const auto& action : soft.actions()) {
+    const ActionCalibration& s = soft.calibration(action);
+    const ActionCalibration& h = model_->calibration(action);
+    // Same classifier, same held-out decisions: only the table differs.
+    EXPECT_EQ(s.confusion.counts, h.confusion.counts);
+    EXPECT_DOUBLE_EQ(s.temperature, h.temperature);
+    for (std::size_t k = 0; k < s.table.size(); ++k) {
+      EXPECT_NEAR(std::accumulate(s.table[k].begin(), s.table[k].end(), 0.0), 1.0, 1e-12);
+      // Every held-out clip was right (accuracy 1) and no probability is exactly 1, so the
+      // expected diagonal is below the hard one; no clip was rejected, so `unknown` keeps the
+      // prior's share alone (1 / (4 + 4)).
+      EXPECT_LT(s.table[k][k], h.table[k][k]) << action << " row " << k;
+      EXPECT_DOUBLE_EQ(s.table[k][3], 1.0 / 8.0);
+    }
+  }
+  const fs::path file = *dir_ / "soft.json";
+  save_observation_model(soft, file.string());
+  const ObservationModel back = load_observation_model(file.string());
+  EXPECT_EQ(back.table_estimate(), TableEstimate::soft);
+  EXPECT_EQ(back.to_json(), soft.to_json());
+  // A file written before the option existed had a counts table.
+  nlohmann::json old = model_->to_json();
+  old.erase("table_estimate");
+  EXPECT_EQ(ObservationModel::from_json(old, "old.json").table_estimate(), TableEstimate::counts);
+}
+
 TEST_F(ObservationModelTest, EvaluatesHeldOutRecordingsIncludingUnknownObjects) {
   const fs::path held = *dir_ / "held_out";
   for (std::size_t k = 0; k < 3; ++k)
@@ -213,6 +246,9 @@ TEST_F(ObservationModelTest, EveryBrokenModelFileIsAClearError) {
       "fitted for 2 classes");
   expect_error(with([](auto& d) { d["per_action"]["strike"]["symbols"][3] = "nothing"; }),
                "per_action.strike.symbols");
+  expect_error(with([](auto& d) { d["table_estimate"] = "hard"; }),
+               "table_estimate: table estimate 'hard' is not one of: counts, soft");
+  expect_error(with([](auto& d) { d["table_estimate"] = 3; }), "table_estimate");
   try {
     load_observation_model((*dir_ / "missing.json").string());
     ADD_FAILURE();

@@ -39,6 +39,7 @@ void add_train_command(CLI::App& app) {
     std::string problem_out;
     std::string problem_base = "problems/audio_objects.yaml";
     bool no_reject = false;
+    std::string table;
     perception::TrainOptions train;
   };
   auto opt = std::make_shared<Options>();
@@ -69,6 +70,13 @@ void add_train_command(CLI::App& app) {
   cmd->add_option("--alpha", opt->train.dirichlet_alpha,
                   "Dirichlet pseudo-count added to each confusion cell")
       ->capture_default_str();
+  opt->table = perception::table_estimate_name(opt->train.table);
+  cmd->add_option("--table", opt->table,
+                  "Observation table from the held-out decisions: 'counts' (one count per clip "
+                  "for the class it was given) or 'soft' (each clip adds its calibrated class "
+                  "probabilities: narrow wins give softer rows)")
+      ->check(CLI::IsMember(perception::table_estimate_names()))
+      ->capture_default_str();
   cmd->add_option("--folds", opt->train.folds, "Cross-validation folds (0 = leave-one-out)")
       ->capture_default_str();
   cmd->add_option("--seed", opt->train.seed, "Seed of the fold assignment (with --folds)")
@@ -82,6 +90,7 @@ void add_train_command(CLI::App& app) {
       ->capture_default_str();
   cmd->callback([opt] {
     opt->train.reject = !opt->no_reject;
+    opt->train.table = perception::parse_table_estimate(opt->table);
     // Read the base problem first: a wrong path should fail before minutes of training.
     std::optional<pomdp::Problem> base;
     if (!opt->problem_out.empty()) base = pomdp::load_problem(opt->problem_base);
@@ -130,8 +139,9 @@ void add_train_command(CLI::App& app) {
       if (!out) throw InputError(opt->problem_out, 0, "cannot write the problem file");
       out << "# Written by: echoplan train --data " << opt->data << " --classifier "
           << opt->train.classifier << "\n# Base problem: " << opt->problem_base
-          << "; observation table calibrated from " << opt->out
-          << " (cross-validated, Dirichlet alpha " << opt->train.dirichlet_alpha << ").\n";
+          << "; observation table calibrated from " << opt->out << " (cross-validated, "
+          << perception::table_estimate_name(opt->train.table) << " table, Dirichlet alpha "
+          << opt->train.dirichlet_alpha << ").\n";
       pomdp::write_problem_yaml(out, data, base->belief, base->planner);
       out.close();
       if (!out) throw InputError(opt->problem_out, 0, "could not finish writing the problem file");
