@@ -40,8 +40,8 @@ TEST(Calibration, SoftConfusionOfASureClassifierIsTheHardCounts) {
   // Winning log-scores 200 above the rest at T = 1: probabilities 1 and e^-200 (~1e-87), so each
   // clip adds (numerically) one to the symbol it would be reported as. Clip 3 of object 1 is
   // rejected: its whole unit goes to `unknown` (symbol 2), as a hard count would put it.
-  const std::vector<std::vector<double>> scores{
-      {0.0, -200.0}, {0.0, -200.0}, {-200.0, 0.0}, {-200.0, 0.0}, {0.0, -200.0}, {-200.0, 0.0}};
+  const std::vector<std::vector<double>> scores{{0.0, -200.0}, {0.0, -200.0}, {-200.0, 0.0},
+                                                {-200.0, 0.0}, {0.0, -200.0}, {-200.0, 0.0}};
   const std::vector<int> labels{0, 0, 0, 1, 1, 1};
   const std::vector<bool> rejected{false, false, false, false, false, true};
   const auto soft = soft_confusion(scores, labels, rejected, 2, 3, 1.0);

@@ -55,18 +55,22 @@ class ObservationModelTest : public ::testing::Test {
           fs::create_directories(path.parent_path());
           audio::write_audio(path.string(), clip);
         }
-    model_ = new ObservationModel(
-        train_observation_model(load_recording_set(dir_->string()), TrainOptions{}));
+    // Kept: other tests write model files into the folder, which is then no recording set.
+    set_ = new RecordingSet(load_recording_set(dir_->string()));
+    model_ = new ObservationModel(train_observation_model(*set_, TrainOptions{}));
   }
   static void TearDownTestSuite() {
     fs::remove_all(*dir_);
     delete model_;
+    delete set_;
     delete dir_;
   }
   static fs::path* dir_;
+  static RecordingSet* set_;
   static ObservationModel* model_;
 };
 fs::path* ObservationModelTest::dir_ = nullptr;
+RecordingSet* ObservationModelTest::set_ = nullptr;
 ObservationModel* ObservationModelTest::model_ = nullptr;
 
 TEST_F(ObservationModelTest, CalibratedTableFollowsTheCrossValidatedConfusion) {
@@ -148,7 +152,7 @@ TEST_F(ObservationModelTest, SoftTableIsRecordedAndRoundTrips) {
   EXPECT_EQ(model_->to_json()["table_estimate"], "counts");
   TrainOptions options;
   options.table = TableEstimate::soft;
-  const ObservationModel soft = train_observation_model(load_recording_set(dir_->string()), options);
+  const ObservationModel soft = train_observation_model(*set_, options);
   EXPECT_EQ(soft.table_estimate(), TableEstimate::soft);
   for (const auto& action : soft.actions()) {
     const ActionCalibration& s = soft.calibration(action);
