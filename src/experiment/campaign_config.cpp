@@ -144,6 +144,8 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
       if (std::find(names.begin(), names.end(), c.training.table) == names.end())
         f.fail(n, fmt::format("table '{}' is not one of: {}", c.training.table,
                               fmt::join(names, ", ")));
+      if (f.optional(t, "model", "training_set"))
+        f.fail(n, "table chooses how this campaign trains; with model: the model file has its own");
     }
     if (auto n = f.optional(t, "recordings", "training_set"))
       c.training.recordings = resolve(source, f.name(n, "recordings"));

@@ -98,6 +98,8 @@ TEST(CampaignConfig, TrainingTableEstimate) {
   EXPECT_EQ(campaign_config_from_json(to_json(soft), "campaign.json").training.table, "soft");
   const std::string bad = error_of(kMinimal + "training_set:\n  table: hard\n");
   EXPECT_EQ(bad, "9: table 'hard' is not one of: counts, soft");
+  EXPECT_EQ(error_of(kMinimal + "training_set:\n  model: m.json\n  table: soft\n"),
+            "10: table chooses how this campaign trains; with model: the model file has its own");
 }
 
 }  // namespace
