@@ -19,6 +19,32 @@ double decay_of(const ListedMode& listed, const Material& material) {
   return listed.decay > 0 ? listed.decay : material.decay_rate(listed.frequency);
 }
 
+// The wall's shell modes are clamped by the base at the bottom and free at the rim: the
+// clamped-free beam function's first axial wavenumber is 1.8751 / height.
+constexpr double kClampedFreeBeta = 1.8751;
+// Struck or rubbed through its base, the wall rings less than the base.
+constexpr double kWallCoupling = 0.6;
+
+// How added masses load the wall and the base: mass on the base (within a quarter of the height)
+// loads the base's modes, mass higher up the wall's.
+struct WallLoading {
+  double wall_mass = 0, base_mass = 0, on_wall = 0, on_base = 0;
+  double frequency_factor = 1;  // sqrt(m / (m + added)): the wall's modes fall so
+  double modal_mass = 0;  // a quarter of the loaded wall (cos n theta around, clamped-free along)
+};
+
+WallLoading wall_loading(const ObjectSpec& o) {
+  WallLoading w;
+  w.wall_mass = o.shell_mass * o.wall_thickness * 2.0 * o.height /
+                (o.wall_thickness * 2.0 * o.height + o.radius * o.base_thickness);
+  w.base_mass = o.shell_mass - w.wall_mass;
+  for (const auto& a : o.added_masses)
+    (a.position[2] <= 0.25 * o.height ? w.on_base : w.on_wall) += a.mass;
+  w.frequency_factor = std::sqrt(w.wall_mass / (w.wall_mass + w.on_wall));
+  w.modal_mass = (w.wall_mass + w.on_wall) / 4.0;
+  return w;
+}
+
 }  // namespace
 
 double shell_mode_frequency(const Material& m, double radius, double thickness, int n,
@@ -52,21 +78,13 @@ std::vector<Mode> object_modes(const ObjectSpec& o, double max_frequency_hz,
     for (const auto& l : o.listed_modes) keep(l.frequency, decay_of(l, o.material), l.gain, 0);
     return modes;
   }
-  // Mass loading: a mode's frequency falls as sqrt(m / (m + added)) for mass added where it moves.
-  const double wall_mass = o.shell_mass * o.wall_thickness * 2.0 * o.height /
-                           (o.wall_thickness * 2.0 * o.height + o.radius * o.base_thickness);
-  const double base_mass = o.shell_mass - wall_mass;
-  double on_base = 0, on_wall = 0;
-  for (const auto& a : o.added_masses)
-    (a.position[2] <= 0.25 * o.height ? on_base : on_wall) += a.mass;
-  const double wall_factor = std::sqrt(wall_mass / (wall_mass + on_wall));
-  const double base_factor = std::sqrt(base_mass / (base_mass + on_base));
+  const WallLoading wall = wall_loading(o);
+  const double wall_factor = wall.frequency_factor;
+  const double base_factor = std::sqrt(wall.base_mass / (wall.base_mass + wall.on_base));
   // The wall's shell modes, clamped by the base at the bottom and free at the rim. Struck through
   // its base, the wall rings less than the base; higher orders carry less of the energy.
-  constexpr double kClampedFreeBeta = 1.8751;
-  constexpr double kWallCoupling = 0.6;
   const double r_mid = o.radius - o.wall_thickness / 2.0;
-  const double held = pad_damping / (2.0 * (wall_mass + on_wall) / 4.0);
+  const double held = pad_damping / (2.0 * wall.modal_mass);
   for (int n = 2; n <= o.ring_modes; ++n) {
     const double f = wall_factor * shell_mode_frequency(o.material, r_mid, o.wall_thickness, n,
                                                         kClampedFreeBeta / o.height);
@@ -88,6 +106,78 @@ std::vector<Mode> object_modes(const ObjectSpec& o, double max_frequency_hz,
     keep(f_cavity, o.material.decay_rate(f_cavity), 1.0, 0);
   }
   return modes;
+}
+
+std::vector<Mode> dense_wall_band(const ObjectSpec& o, double max_frequency_hz,
+                                  double contact_loss_factor, double pad_damping) {
+  std::vector<Mode> bands;
+  if (!o.listed_modes.empty()) return bands;
+  double loss = contact_loss_factor;
+  for (const auto& a : o.added_masses) loss += a.loss_factor;
+  const WallLoading wall = wall_loading(o);
+  const double r_mid = o.radius - o.wall_thickness / 2.0;
+  const double held = pad_damping / (2.0 * wall.modal_mass);
+  // Third-octave bands centred on 1000 * 2^(k/3) Hz: per band, how many modes and the sum of
+  // gain^2 / decay that pooling must keep.
+  constexpr int kBandsPerOctave = 3;
+  constexpr int kLowestBand = -15;  // 31 Hz: below every wall mode
+  constexpr int kBandCount = 40;    // up to 256 kHz: beyond any recording's Nyquist
+  std::array<int, kBandCount> count{};
+  std::array<double, kBandCount> energy{}, decay_sum{};
+  auto band_of = [&](double f) {
+    return static_cast<int>(std::lround(kBandsPerOctave * std::log2(f / 1000.0))) - kLowestBand;
+  };
+  // Axial orders m: the clamped-free beam's wavenumbers, 1.8751 then (2m - 1) pi / 2 (4.694,
+  // 7.855, ...) over the height. Orders n around; each n >= 1 is a pair (cos and sin n theta).
+  for (int m = 1;; ++m) {
+    const double beta = m == 1 ? kClampedFreeBeta : (2.0 * m - 1.0) * std::numbers::pi / 2.0;
+    bool any_below = false;
+    double previous = 0;
+    for (int n = 0;; ++n) {
+      const double f =
+          wall.frequency_factor *
+          shell_mode_frequency(o.material, r_mid, o.wall_thickness, n, beta / o.height);
+      // Over n the frequency falls (the membrane term) then rises (bending, as n^4): once rising
+      // and above the limit, every higher n is too.
+      const bool rising = n > 0 && f > previous;
+      previous = f;
+      if (f >= max_frequency_hz) {
+        if (rising) break;
+        continue;
+      }
+      any_below = true;
+      if (m == 1 && n >= 2 && n <= o.ring_modes) continue;  // listed one by one (object_modes)
+      const int b = band_of(f);
+      if (b < 0 || b >= kBandCount) continue;
+      const double sigma = o.material.decay_rate(f) + std::numbers::pi * f * loss + held;
+      const int multiplicity = n == 0 ? 1 : 2;
+      count[b] += multiplicity;
+      // Equipartition: a point drive puts on average the same energy into every mode of a band (the
+      // mean mobility is the modes' sum), each with the wall's coupling through the base.
+      energy[b] += multiplicity * kWallCoupling * kWallCoupling / sigma;
+      decay_sum[b] += multiplicity * sigma;
+    }
+    if (!any_below || m > 1000) break;
+  }
+  for (int b = 0; b < kBandCount; ++b) {
+    if (count[b] == 0) continue;
+    const double centre =
+        1000.0 * std::exp2(static_cast<double>(b + kLowestBand) / kBandsPerOctave);
+    const double half = std::exp2(0.5 / kBandsPerOctave);
+    const double width = centre * (half - 1.0 / half);
+    const double density = count[b] / width;  // modes per hertz
+    const double overlap = decay_sum[b] / count[b] * density / std::numbers::pi;
+    if (overlap < 1.0 || centre >= max_frequency_hz) continue;  // apart: tones, not a band
+    const double band_decay = std::numbers::pi * width;
+    bands.push_back({centre, band_decay, std::sqrt(band_decay * energy[b]), 0});
+  }
+  return bands;
+}
+
+double plate_modal_density(const Material& m, double area_m2, double thickness_m) {
+  const double longitudinal_speed =
+      std::sqrt(m.youngs_modulus / (m.density * (1.0 - m.poisson_ratio * m.poisson_ratio)));
+  return area_m2 * std::sqrt(3.0) / (thickness_m * longitudinal_speed);
 }
 
 std::vector<Mode> table_modes(const TableSpec& table) {

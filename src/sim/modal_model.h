@@ -58,6 +58,27 @@ double clamped_plate_frequency(const Material& material, double radius_m, double
 std::vector<Mode> object_modes(const ObjectSpec& object, double max_frequency_hz,
                                double contact_loss_factor = 0, double pad_damping = 0);
 
+// The object's wall where its modes overlap: the statistical (SEA) rendering of the shell modes
+// that object_modes() does not list one by one (every circumferential order n >= 1, axial orders m
+// >= 1 with the clamped-free wavenumbers (2m - 1) pi / 2 / height, less n = 2..ring_modes of m = 1;
+// n >= 1 counts twice, cos and sin). Above the frequency where neighbouring modes overlap (modal
+// overlap factor f eta n(f) = sigma n(f) / pi >= 1, n(f) the modes per hertz, sigma their decay) a
+// point-driven structure answers as a smooth band whose level is its mean mobility, not as tones
+// (Lyon & DeJong, "Theory and Application of Statistical Energy Analysis"; Cremer & Heckl: a
+// plate's mean point conductance 1/(8 sqrt(B m'')) = n(f) / (4 M)). The modes are pooled into
+// bands of a third of an octave where they overlap; a band is one resonator as wide as the band
+// (decay pi * bandwidth) whose power under white drive is its modes' sum: gain^2 / decay = sum
+// over its modes of 0.6^2 / sigma_i (every mode at the wall's coupling through the base, the listed
+// wall modes' 0.6: equipartition). Decay as object_modes()' wall modes. Empty for an object with
+// listed modes or whose wall's modes stay apart (a thick ceramic mug).
+std::vector<Mode> dense_wall_band(const ObjectSpec& object, double max_frequency_hz,
+                                  double contact_loss_factor = 0, double pad_damping = 0);
+
+// Shell modes per hertz of a flat plate of area `area_m2` and `thickness_m`
+// (frequency-independent): n = area sqrt(3) / (thickness c_L), c_L = sqrt(E / (rho (1 - nu^2)))
+// (Cremer & Heckl). A cylindrical shell's density approaches it above its ring frequency.
+double plate_modal_density(const Material& material, double area_m2, double thickness_m);
+
 // The table's listed modes and its dense modal field, decaying with its material's damping unless
 // listed otherwise.
 std::vector<Mode> table_modes(const TableSpec& table);

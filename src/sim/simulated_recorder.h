@@ -7,7 +7,8 @@
 //   weights each mode (the rim contact pattern weights the shell ring modes), radiating directly as
 //   the object ringing on its contact spring (the contact ring);
 // - sliding: a fractal (1/f^2) surface profile read at the sliding speed (roughness noise);
-// - both drive the object's modes and the table's modes (damped resonators); a slide's roughness
+// - both drive the object's modes and the table's modes (damped resonators), and friction the
+//   object's wall where its modes overlap (dense_wall_band: a thin cup hisses); a slide's roughness
 //   velocity splits between object and table by their impedances (a heavy object resists it at high
 //   frequency and the table takes it); the arm's motors add
 //   band noise following the joints' speed;
@@ -38,6 +39,9 @@ class SimulatedRecorder {
   // The modes rendered (after the recording's Nyquist limit).
   const std::vector<Mode>& object_modes() const { return object_modes_; }
   const std::vector<Mode>& table_modes() const { return table_modes_; }
+  // The object's wall where its modes overlap, pooled into bands (dense_wall_band): rubbed, it
+  // hisses.
+  const std::vector<Mode>& dense_modes() const { return dense_modes_; }
 
   // Hertz contact time (s) of an impact recorded in a trace, with this object on this table.
   double contact_time(const Impact& impact) const;
@@ -51,9 +55,12 @@ class SimulatedRecorder {
   SimConfig config_;
   std::vector<Mode> object_modes_;
   std::vector<Mode> table_modes_;
+  std::vector<Mode> dense_modes_;
   Material table_surface_;      // the contact presses on it, its ring loses energy into it
   double contact_modulus_ = 0;  // Pa, E* of object material on table material
   double table_coincidence_hz_ = 0;
+  double wall_coincidence_hz_ =
+      0;                        // of the object's wall, which radiates its dense band as a plate
   double table_impedance_ = 0;  // N s/m, the top's point impedance (plate_point_impedance)
   double object_mode_scale_ =
       1;  // the object's modes' response per unit impulse, relative (1 / mass)

@@ -13,19 +13,26 @@ namespace {
 
 Material ceramic() { return {"ceramic", 2700, 7.2e10, 0.19, 6, 1e-7}; }
 
-ObjectSpec mug() {
+// A cylinder_shell object: sizes in metres, mass in kilograms.
+struct ShellSizes {
+  double radius, height, wall, base, mass, contact_radius;
+  int ring_modes;
+};
+ObjectSpec shell(const char* name, const ShellSizes& s, const Material& material) {
   ObjectSpec o;
-  o.name = "mug";
-  o.radius = 0.04;
-  o.height = 0.1;
-  o.wall_thickness = 0.005;
-  o.base_thickness = 0.006;
-  o.shell_mass = 0.3;
-  o.material = ceramic();
-  o.contact_radius = 0.004;
-  o.ring_modes = 3;
+  o.name = name;
+  o.radius = s.radius;
+  o.height = s.height;
+  o.wall_thickness = s.wall;
+  o.base_thickness = s.base;
+  o.shell_mass = s.mass;
+  o.material = material;
+  o.contact_radius = s.contact_radius;
+  o.ring_modes = s.ring_modes;
   return o;
 }
+
+ObjectSpec mug() { return shell("mug", {0.04, 0.1, 0.005, 0.006, 0.3, 0.004, 3}, ceramic()); }
 
 TEST(ModalModel, RayleighDecay) {
   // alpha/2 + beta w^2/2 at 1 kHz: 3 + 1e-7 * (2 pi 1000)^2 / 2 = 3 + 1.9739...
@@ -171,6 +178,82 @@ TEST(ModalModel, SynthesisEnvelopeFollowsTheHalfSineSpectrumsLobes) {
   // A longer contact is duller: less at 3 kHz.
   EXPECT_LT(hertz_pulse_envelope(2 * std::numbers::pi * 3000, 1.2e-3),
             hertz_pulse_envelope(2 * std::numbers::pi * 3000, 1e-3));
+}
+
+// A thin polycarbonate cup (the shipped plastic_cup's wall) whose decay is the same at every
+// frequency (Rayleigh alpha only, no contact loss, no pads), so a band's pooled gain tells how many
+// modes it holds: gain^2 / band decay = count * 0.6^2 / sigma.
+Material flat_damped_polycarbonate() { return {"pc", 1190, 2.4e9, 0.37, 200, 0}; }  // sigma 100/s
+
+ObjectSpec thin_cup() {
+  return shell("cup", {0.042, 0.11, 0.0008, 0.0012, 0.018, 0.0005, 5}, flat_damped_polycarbonate());
+}
+
+TEST(ModalModel, PlateModalDensityIsFourMassesTimesItsMeanMobility) {
+  // Cremer & Heckl: a plate's mean point conductance is n(f) / (4 M) and equals the infinite
+  // plate's 1 / (8 sqrt(B m'')); two textbook formulas, one identity. For 1 m^2 of 1 mm steel.
+  const Material steel{"steel", 7850, 2.0e11, 0.29, 5, 8e-8};
+  const double area = 1.0, h = 0.001, mass = 7850 * h * area;
+  EXPECT_NEAR(plate_modal_density(steel, area, h), 4 * mass / plate_point_impedance(steel, h),
+              1e-9 * plate_modal_density(steel, area, h));
+  // By hand: c_L = sqrt(2e11 / (7850 (1 - 0.29^2))) = 5274.5 m/s; n = sqrt(3) / (0.001 c_L).
+  EXPECT_NEAR(plate_modal_density(steel, area, h), 0.32838, 0.0005);
+}
+
+TEST(ModalModel, DenseBandHoldsAsManyModesAsTheWallsPlateAboveItsRingFrequency) {
+  // Above its ring frequency c_L / (2 pi R) (5.8 kHz for the cup) a cylindrical shell's modal
+  // density approaches a flat plate's of the same area and thickness (Szechenyi 1971). The bands'
+  // pooled gains give the modes counted from the shell's own frequencies (sigma = 100/s at every
+  // frequency): over the bands from 8 to 16 kHz they must hold the plate's count within 20%.
+  const ObjectSpec cup = thin_cup();
+  const double sigma = 100.0;
+  const auto bands = dense_wall_band(cup, 19845);
+  const double area = 2 * std::numbers::pi * (cup.radius - cup.wall_thickness / 2) * cup.height;
+  const double density = plate_modal_density(cup.material, area, cup.wall_thickness);
+  double counted = 0, expected = 0;
+  for (const Mode& b : bands) {
+    if (b.frequency_hz < 7000 || b.frequency_hz > 17000) continue;
+    const double width = b.decay_per_s / std::numbers::pi;  // the band's width in hertz
+    counted += b.gain * b.gain / b.decay_per_s * sigma / (0.6 * 0.6);
+    expected += density * width;
+  }
+  ASSERT_GT(expected, 0);
+  EXPECT_NEAR(counted / expected, 1.0, 0.2) << counted << " modes, plate " << expected;
+}
+
+TEST(ModalModel, ThinWallsModesOverlapIntoABandAThickMugsStayApart) {
+  // Modal overlap f eta n(f) = sigma n / pi: the cup's 0.8 mm wall held by the pads (a few hundred
+  // per second on 18 g) has dozens of modes per kilohertz, so they overlap from about 1 kHz; the
+  // 5 mm ceramic mug's have ~1-2 per kilohertz and its modes stay apart far above 10 kHz.
+  ObjectSpec cup = thin_cup();
+  cup.material = {"polycarbonate", 1190, 2.4e9, 0.37, 1, 1.6e-6};
+  const auto cup_bands = dense_wall_band(cup, 19845, 0.03, kFingerPadDamping);
+  ASSERT_FALSE(cup_bands.empty());
+  EXPECT_LT(cup_bands.front().frequency_hz, 1300);
+  for (const Mode& b : dense_wall_band(mug(), 19845, 0.03, kFingerPadDamping))
+    EXPECT_GT(b.frequency_hz, 12000);
+  // Listed modes are what the catalogue says there is: nothing added.
+  ObjectSpec listed = cup;
+  listed.listed_modes = {{1000, 10, 1}};
+  EXPECT_TRUE(dense_wall_band(listed, 19845, 0.03, kFingerPadDamping).empty());
+}
+
+TEST(ModalModel, DenseBandLeavesOutTheWallModesListedOneByOne) {
+  // n = 2..ring_modes of the first axial order are rendered as modes by object_modes(); the band
+  // must not count them again. Their 0.6 * 0.6 / sigma each is what more ring modes take away.
+  ObjectSpec fewer = thin_cup(), more = thin_cup();
+  fewer.material.alpha = more.material.alpha = 2000;  // sigma 1000/s: every band overlaps
+  fewer.ring_modes = 2;
+  more.ring_modes = 5;
+  auto pooled = [](const std::vector<Mode>& bands) {
+    double e = 0;
+    for (const Mode& b : bands) e += b.gain * b.gain / b.decay_per_s;
+    return e;
+  };
+  // n = 3, 4, 5 of the first axial order, each a cos and sin pair, at sigma = 1000/s.
+  const double removed =
+      pooled(dense_wall_band(fewer, 19845)) - pooled(dense_wall_band(more, 19845));
+  EXPECT_NEAR(removed, 6 * 0.6 * 0.6 / 1000.0, 1e-9);
 }
 
 }  // namespace

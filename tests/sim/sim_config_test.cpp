@@ -57,7 +57,8 @@ physics:
   EXPECT_DOUBLE_EQ(c.microphone.position[2], 3);
   EXPECT_DOUBLE_EQ(c.recording.noise_dbfs, -80);
   EXPECT_DOUBLE_EQ(c.physics.timestep_s, 0.001);
-  EXPECT_DOUBLE_EQ(c.variability.push_speed.mean, 0.05);  // untouched
+  EXPECT_DOUBLE_EQ(c.variability.push_speed.mean,
+                   SimConfig{}.variability.push_speed.mean);  // untouched
 }
 
 TEST(SimConfig, ErrorsNameFileLineAndField) {
