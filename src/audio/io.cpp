@@ -250,17 +250,29 @@ void write_audio(const std::string& path, const AudioClip& clip, const WriteOpti
   } else {
     // Quantise here rather than in libsndfile so that writing is the exact inverse of reading
     // (integer / 2^(bits-1)): round to nearest, clip to the integer range. libsndfile 1.2's own
-    // float->int path truncates, which would bias every sample by up to one step. 24-bit goes
-    // through libsndfile's int interface, whose top 24 bits are the sample.
-    const double scale = options.encoding == SampleEncoding::pcm16 ? 32768.0 : 8388608.0;
-    const int shift = options.encoding == SampleEncoding::pcm16 ? 16 : 8;
-    std::vector<int> quantised(clip.samples.size());
-    for (std::size_t i = 0; i < clip.samples.size(); ++i) {
-      const double q = std::clamp(std::nearbyint(static_cast<double>(clip.samples[i]) * scale),
-                                  -scale, scale - 1.0);
-      quantised[i] = static_cast<int>(q) * (1 << shift);
+    // float->int path truncates, which would bias every sample by up to one step. 16-bit goes
+    // through libsndfile's short interface (stored as is), 24-bit through its int interface, whose
+    // top 24 bits are the sample.
+    const bool pcm16 = options.encoding == SampleEncoding::pcm16;
+    const double scale = pcm16 ? 32768.0 : 8388608.0;
+    // Round half to even, as std::nearbyint in the default rounding mode, without its library
+    // call per sample: std::lrint becomes one instruction (cvtsd2si) under -fno-math-errno.
+    // Clipping before rounding gives the same integers as after (the bounds are integers).
+    auto quantise = [&](float sample) {
+      return static_cast<int>(
+          std::lrint(std::clamp(static_cast<double>(sample) * scale, -scale, scale - 1.0)));
+    };
+    if (pcm16) {
+      std::vector<short> quantised(clip.samples.size());
+      for (std::size_t i = 0; i < clip.samples.size(); ++i)
+        quantised[i] = static_cast<short>(quantise(clip.samples[i]));
+      written = sf_writef_short(file.get(), quantised.data(), frames);
+    } else {
+      std::vector<int> quantised(clip.samples.size());
+      for (std::size_t i = 0; i < clip.samples.size(); ++i)
+        quantised[i] = quantise(clip.samples[i]) * (1 << 8);
+      written = sf_writef_int(file.get(), quantised.data(), frames);
     }
-    written = sf_writef_int(file.get(), quantised.data(), frames);
   }
   if (written != frames)
     throw InputError(path, 0, fmt::format("write failed ({})", sf_strerror(file.get())));

@@ -20,6 +20,10 @@ constexpr double kServoStiffness = 1000;    // N m / rad, joint position servos
 constexpr double kJointDamping = 20;        // N m s / rad, about critical with the armature below
 constexpr double kArmature = 0.1;           // kg m^2, reflected rotor inertia of the geared joints
 constexpr int kSolverIterations = 20;
+constexpr double kArmFriction = 1.0;  // MuJoCo's default sliding friction: the arm's capsules
+constexpr double kPadFriction = 0.2;  // the finger pads' and the object's own sliding friction
+constexpr double kTorsionalFriction = 0.005;  // every geom's
+constexpr double kRollingFriction = 0.0001;   // every geom's
 constexpr double kObjectContactTime =
     0.01;  // s, MuJoCo solref time constant of the object-table contact      // constraint solver;
            // converges in a few for this small scene
@@ -43,8 +47,8 @@ std::string arm_mjcf(PadContact pad) {
       // Link 1 is the column the arm is mounted on beside the table: it never collides.
       const int contype = i == 0 ? 0 : kContactArm, conaffinity = i == 0 ? 0 : kContactTable;
       xml += fmt::format(
-          R"(<geom type="capsule" fromto="0 0 0 {} {} {}" size="{}" mass="{}" contype="{}" conaffinity="{}"/>)",
-          next.xyz[0], next.xyz[1], next.xyz[2], i < 3 ? kUpperLinkRadius : kLowerLinkRadius,
+          R"(<geom name="link{}" type="capsule" fromto="0 0 0 {} {} {}" size="{}" mass="{}" contype="{}" conaffinity="{}"/>)",
+          i + 1, next.xyz[0], next.xyz[1], next.xyz[2], i < 3 ? kUpperLinkRadius : kLowerLinkRadius,
           j.link_mass, contype, conaffinity);
     } else {
       // The hand: a capsule down to just above the fingertips, the pad at the end effector.
@@ -61,10 +65,11 @@ std::string arm_mjcf(PadContact pad) {
       const Eigen::Vector3d across =
           kPadHalfWidth * (site_in_link * site_rotation.transpose() * Eigen::Vector3d::UnitY());
       xml += fmt::format(
-          R"(<geom name="pad" type="capsule" fromto="{} {} {} {} {} {}" size="{}" mass="0.01" contype="{}" conaffinity="{}" friction="0.2 0.005 0.0001"/>)",
+          R"(<geom name="pad" type="capsule" fromto="{} {} {} {} {} {}" size="{}" mass="0.01" contype="{}" conaffinity="{}" friction="{} {} {}"/>)",
           -across.x(), -across.y(), tip - across.z(), across.x(), across.y(), tip + across.z(),
           kPadRadius, kContactArm,
-          pad == PadContact::pushes_object ? (kContactTable | kContactObject) : kContactTable);
+          pad == PadContact::pushes_object ? (kContactTable | kContactObject) : kContactTable,
+          kPadFriction, kTorsionalFriction, kRollingFriction);
       xml +=
           fmt::format(R"(<site name="end_effector" pos="0 0 {}" euler="{} {} {}"/>)", tip,
                       kJaco2EndEffector.rpy[0], kJaco2EndEffector.rpy[1], kJaco2EndEffector.rpy[2]);
@@ -72,6 +77,29 @@ std::string arm_mjcf(PadContact pad) {
     closing += "</body>";
   }
   return xml + closing;
+}
+
+// The geom pairs that can touch, as MJCF <pair>s: the scene is simulated with collision=
+// "predefined", so MuJoCo tests these and nothing else. They are the pairs the contype/conaffinity
+// bits allow (the object-table pair, with its own friction and contact time, comes first in the
+// scene), listed so that MuJoCo skips its broad phase (a bounding-box sweep with an eigen-
+// decomposition and a sort at every step, ~8% of a recording's cost): every arm geom but the
+// column with the table, and the pad with the object when it pushes. Each pair's contact
+// parameters are those MuJoCo would mix from the two geoms for a dynamic contact (the larger
+// friction coefficients, condim 3, default solref and solimp), so the contacts are the same.
+std::string arm_contact_pairs(PadContact pad, double table_friction) {
+  auto pair = [](const std::string& a, const std::string& b, double friction) {
+    return fmt::format(R"(<pair geom1="{}" geom2="{}" condim="3" friction="{} {} {} {} {}"/>)", a,
+                       b, friction, friction, kTorsionalFriction, kRollingFriction,
+                       kRollingFriction);
+  };
+  std::string xml;
+  for (std::size_t i = 1; i + 1 < kJaco2Joints.size(); ++i)
+    xml += pair("table", fmt::format("link{}", i + 1), std::max(table_friction, kArmFriction));
+  xml += pair("table", "hand", std::max(table_friction, kArmFriction));
+  xml += pair("table", "pad", std::max(table_friction, kPadFriction));
+  if (pad == PadContact::pushes_object) xml += pair("pad", "object", kPadFriction);
+  return xml + "\n";
 }
 
 }  // namespace
@@ -92,7 +120,7 @@ std::string scene_mjcf(const ObjectSpec& object, const TableSpec& table,
   std::string xml = fmt::format(
       R"(<mujoco model="echoplan_scene">
 <compiler angle="radian" eulerseq="XYZ"/>
-<option timestep="{timestep}" integrator="Euler" cone="pyramidal" iterations="{iterations}" tolerance="1e-6"/>
+<option timestep="{timestep}" integrator="Euler" cone="pyramidal" iterations="{iterations}" tolerance="1e-6" collision="predefined"/>
 <size nconmax="100" njmax="400"/>
 <default><joint damping="{damping}" armature="{armature}"/></default>
 <worldbody>
@@ -107,18 +135,18 @@ std::string scene_mjcf(const ObjectSpec& object, const TableSpec& table,
 <contact>
 <exclude body1="world" body2="object"/>
 <pair geom1="table" geom2="object" condim="3" friction="{mu} {mu} 0.005 0.0001 0.0001" solref="{contact_time} 1"/>
-</contact>
+{arm_pairs}</contact>
 <actuator>)",
       fmt::arg("timestep", physics.timestep_s), fmt::arg("iterations", kSolverIterations),
       fmt::arg("contact_time", kObjectContactTime), fmt::arg("damping", kJointDamping),
       fmt::arg("armature", kArmature), fmt::arg("ox", object_x), fmt::arg("oy", object_y),
       fmt::arg("half", kTableHalfSize), fmt::arg("ctable", kContactTable),
       fmt::arg("cany", kContactTable | kContactArm), fmt::arg("tmu", table.friction),
-      fmt::arg("arm", arm_mjcf(pad)), fmt::arg("top", table_top), fmt::arg("cx", com[0]),
-      fmt::arg("cy", com[1]), fmt::arg("cz", com[2]), fmt::arg("mass", object.total_mass()),
-      fmt::arg("ix", inertia[0]), fmt::arg("iy", inertia[1]), fmt::arg("iz", inertia[2]),
-      fmt::arg("hh", object.height / 2), fmt::arg("radius", object.radius),
-      fmt::arg("cobject", kContactObject), fmt::arg("mu", mu));
+      fmt::arg("arm", arm_mjcf(pad)), fmt::arg("arm_pairs", arm_contact_pairs(pad, table.friction)),
+      fmt::arg("top", table_top), fmt::arg("cx", com[0]), fmt::arg("cy", com[1]),
+      fmt::arg("cz", com[2]), fmt::arg("mass", object.total_mass()), fmt::arg("ix", inertia[0]),
+      fmt::arg("iy", inertia[1]), fmt::arg("iz", inertia[2]), fmt::arg("hh", object.height / 2),
+      fmt::arg("radius", object.radius), fmt::arg("cobject", kContactObject), fmt::arg("mu", mu));
   for (int i = 1; i <= kArmJoints; ++i)
     xml +=
         fmt::format(R"(<position name="servo{0}" joint="joint{0}" kp="{1}"/>)", i, kServoStiffness);
@@ -143,7 +171,8 @@ mjModel* compile(const std::string& xml) {
   return m;
 }
 
-// Do two models allocate mjData alike (so one mjData can be stepped with either)?
+// Do two models allocate mjData alike (so one mjData can be stepped with either)? Their own
+// buffers differ: the pushing variant has one more contact pair.
 bool same_data_layout(const mjModel* a, const mjModel* b) {
   return a->nq == b->nq && a->nv == b->nv && a->nu == b->nu && a->na == b->na &&
          a->nbody == b->nbody && a->njnt == b->njnt && a->ngeom == b->ngeom &&
@@ -151,8 +180,7 @@ bool same_data_layout(const mjModel* a, const mjModel* b) {
          a->nsensordata == b->nsensordata && a->nuserdata == b->nuserdata &&
          a->nconmax == b->nconmax && a->njmax == b->njmax && a->nstack == b->nstack &&
          a->nD == b->nD && a->nM == b->nM && a->nemax == b->nemax && a->ntendon == b->ntendon &&
-         a->nwrap == b->nwrap && a->ncam == b->ncam && a->nlight == b->nlight &&
-         a->nbuffer == b->nbuffer;
+         a->nwrap == b->nwrap && a->ncam == b->ncam && a->nlight == b->nlight;
 }
 
 }  // namespace

@@ -130,6 +130,25 @@ TEST(AudioIo, WriteClipsOutOfRangeSamplesToFullScale) {
   EXPECT_FLOAT_EQ(back[2], 0.25f);
 }
 
+TEST(AudioIo, HalfStepsRoundToEvenInEveryIntegerEncoding) {
+  // Writing rounds half a step to the even neighbour (as std::nearbyint does): 0.5 -> 0,
+  // 1.5 -> 2, 2.5 -> 2, -0.5 -> 0, -1.5 -> -2; 32767.6 steps round up to 32768, which 16 bits
+  // clip to their top code 32767 and 24 bits store as is.
+  const auto steps = [](float step) {
+    std::vector<float> v;
+    for (double k : {0.5, 1.5, 2.5, -0.5, -1.5, 32767.6}) v.push_back(static_cast<float>(k * step));
+    return v;
+  };
+  const float step16 = std::ldexp(1.0f, -15), step24 = std::ldexp(1.0f, -23);
+  const std::vector<float> even16{0, 2 * step16, 2 * step16, 0, -2 * step16, 32767 * step16};
+  EXPECT_EQ(round_trip(steps(step16), "even16.wav"), even16);
+  EXPECT_EQ(round_trip(steps(step16), "even16.flac", {FileFormat::flac, SampleEncoding::pcm16}),
+            even16);
+  const std::vector<float> even24{0, 2 * step24, 2 * step24, 0, -2 * step24, 32768 * step24};
+  EXPECT_EQ(round_trip(steps(step24), "even24.wav", {FileFormat::wav, SampleEncoding::pcm24}),
+            even24);
+}
+
 TEST(AudioIo, IntegerPcmIsDividedByTwoToTheBitsMinusOne) {
   // 16384 must read as exactly 0.5 and -32768 as -1; in 24 bits, one step is 2^-23.
   const std::vector<float> exact{0.5f, -1.0f, 0.0f};

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "shipped_catalogue.h"
@@ -85,6 +86,59 @@ TEST(Scene, ArmGeomsAreTheLinksHandAndPadNotTableOrObject) {
   EXPECT_TRUE(scene.is_arm_geom(mj_name2id(m, mjOBJ_GEOM, "hand")));
   EXPECT_FALSE(scene.is_arm_geom(scene.table_geom));
   EXPECT_FALSE(scene.is_arm_geom(scene.object_geom));
+}
+
+TEST(Scene, EveryPairTheFilterAllowsIsPredefinedWithTheGeomsMixedContactParameters) {
+  // The scene skips MuJoCo's broad phase (collision="predefined"): every geom pair the contype/
+  // conaffinity filter lets touch must then be a <pair>, or that contact would silently vanish,
+  // and each pair must carry what MuJoCo would mix from the two geoms for a dynamic contact
+  // (larger friction and condim, mean solref and solimp, larger margin and gap), or the physics
+  // would change. The object-table pair is the exception: its friction and stiffness are set.
+  const Scene scene(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
+                    PhysicsConfig{});
+  for (const PadContact variant : {PadContact::pushes_object, PadContact::clear_of_object}) {
+    const mjModel* m = scene.model(variant);
+    EXPECT_EQ(m->opt.collision, mjCOL_PAIR);
+    auto find_pair = [&](int a, int b) {
+      for (int p = 0; p < m->npair; ++p)
+        if ((m->pair_geom1[p] == a && m->pair_geom2[p] == b) ||
+            (m->pair_geom1[p] == b && m->pair_geom2[p] == a))
+          return p;
+      return -1;
+    };
+    int expected_pairs = 1;  // the object-table pair
+    EXPECT_GE(find_pair(scene.table_geom, scene.object_geom), 0);
+    for (int a = 0; a < m->ngeom; ++a)
+      for (int b = a + 1; b < m->ngeom; ++b) {
+        if (m->geom_bodyid[a] == m->geom_bodyid[b]) continue;
+        const bool filter = (m->geom_contype[a] & m->geom_conaffinity[b]) ||
+                            (m->geom_contype[b] & m->geom_conaffinity[a]);
+        const bool object_table = (a == scene.table_geom && b == scene.object_geom) ||
+                                  (b == scene.table_geom && a == scene.object_geom);
+        if (!filter || object_table) continue;
+        ++expected_pairs;
+        const int p = find_pair(a, b);
+        ASSERT_GE(p, 0) << "geoms " << a << " and " << b << " may touch but are not a pair";
+        EXPECT_EQ(m->pair_dim[p], std::max(m->geom_condim[a], m->geom_condim[b]));
+        const double* fa = m->geom_friction + 3 * a;
+        const double* fb = m->geom_friction + 3 * b;
+        const double* f = m->pair_friction + 5 * p;
+        EXPECT_EQ(f[0], std::max(fa[0], fb[0]));
+        EXPECT_EQ(f[1], std::max(fa[0], fb[0]));
+        EXPECT_EQ(f[2], std::max(fa[1], fb[1]));
+        EXPECT_EQ(f[3], std::max(fa[2], fb[2]));
+        EXPECT_EQ(f[4], std::max(fa[2], fb[2]));
+        for (int k = 0; k < mjNREF; ++k)
+          EXPECT_DOUBLE_EQ(m->pair_solref[mjNREF * p + k],
+                           0.5 * (m->geom_solref[mjNREF * a + k] + m->geom_solref[mjNREF * b + k]));
+        for (int k = 0; k < mjNIMP; ++k)
+          EXPECT_DOUBLE_EQ(m->pair_solimp[mjNIMP * p + k],
+                           0.5 * (m->geom_solimp[mjNIMP * a + k] + m->geom_solimp[mjNIMP * b + k]));
+        EXPECT_EQ(m->pair_margin[p], std::max(m->geom_margin[a], m->geom_margin[b]));
+        EXPECT_EQ(m->pair_gap[p], std::max(m->geom_gap[a], m->geom_gap[b]));
+      }
+    EXPECT_EQ(m->npair, expected_pairs);  // and no pair the filter would not allow
+  }
 }
 
 TEST(Scene, PhysicsTimestepComesFromTheConfig) {
