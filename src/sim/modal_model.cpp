@@ -26,14 +26,17 @@ constexpr double kClampedFreeBeta = 1.8751;
 constexpr double kWallCoupling = 0.6;
 
 // How added masses load the wall and the base: mass on the base (within a quarter of the height)
-// loads the base's modes, mass higher up the wall's.
+// loads the base's modes, mass higher up the wall's. What every wall mode shares, listed one by one
+// (object_modes) or pooled (dense_wall_band).
 struct WallLoading {
   double wall_mass = 0, base_mass = 0, on_wall = 0, on_base = 0;
   double frequency_factor = 1;  // sqrt(m / (m + added)): the wall's modes fall so
   double modal_mass = 0;  // a quarter of the loaded wall (cos n theta around, clamped-free along)
+  double mid_radius = 0;  // m, the wall's mid-surface, where the shell formula takes its radius
+  double held_decay = 0;  // 1/s: the finger pads' damping on the wall's modal mass, c / (2 m)
 };
 
-WallLoading wall_loading(const ObjectSpec& o) {
+WallLoading wall_loading(const ObjectSpec& o, double pad_damping) {
   WallLoading w;
   w.wall_mass = o.shell_mass * o.wall_thickness * 2.0 * o.height /
                 (o.wall_thickness * 2.0 * o.height + o.radius * o.base_thickness);
@@ -42,7 +45,17 @@ WallLoading wall_loading(const ObjectSpec& o) {
     (a.position[2] <= 0.25 * o.height ? w.on_base : w.on_wall) += a.mass;
   w.frequency_factor = std::sqrt(w.wall_mass / (w.wall_mass + w.on_wall));
   w.modal_mass = (w.wall_mass + w.on_wall) / 4.0;
+  w.mid_radius = o.radius - o.wall_thickness / 2.0;
+  w.held_decay = pad_damping / (2.0 * w.modal_mass);
   return w;
+}
+
+// The loss factor every mode gets besides its material's: pressed on the table, and from each
+// added mass's fixing.
+double added_loss_factor(const ObjectSpec& o, double contact_loss_factor) {
+  double loss = contact_loss_factor;
+  for (const auto& a : o.added_masses) loss += a.loss_factor;
+  return loss;
 }
 
 }  // namespace
@@ -68,8 +81,7 @@ double clamped_plate_frequency(const Material& m, double radius, double thicknes
 std::vector<Mode> object_modes(const ObjectSpec& o, double max_frequency_hz,
                                double contact_loss_factor, double pad_damping) {
   std::vector<Mode> modes;
-  double loss = contact_loss_factor;
-  for (const auto& a : o.added_masses) loss += a.loss_factor;
+  const double loss = added_loss_factor(o, contact_loss_factor);
   auto keep = [&](double f, double decay, double gain, int order) {
     if (f < max_frequency_hz)
       modes.push_back({f, decay + std::numbers::pi * f * loss, gain, order});
@@ -78,17 +90,16 @@ std::vector<Mode> object_modes(const ObjectSpec& o, double max_frequency_hz,
     for (const auto& l : o.listed_modes) keep(l.frequency, decay_of(l, o.material), l.gain, 0);
     return modes;
   }
-  const WallLoading wall = wall_loading(o);
+  const WallLoading wall = wall_loading(o, pad_damping);
   const double wall_factor = wall.frequency_factor;
   const double base_factor = std::sqrt(wall.base_mass / (wall.base_mass + wall.on_base));
   // The wall's shell modes, clamped by the base at the bottom and free at the rim. Struck through
   // its base, the wall rings less than the base; higher orders carry less of the energy.
-  const double r_mid = o.radius - o.wall_thickness / 2.0;
-  const double held = pad_damping / (2.0 * wall.modal_mass);
   for (int n = 2; n <= o.ring_modes; ++n) {
-    const double f = wall_factor * shell_mode_frequency(o.material, r_mid, o.wall_thickness, n,
-                                                        kClampedFreeBeta / o.height);
-    keep(f, o.material.decay_rate(f) + held, kWallCoupling / (n - 1), n);
+    const double f =
+        wall_factor * shell_mode_frequency(o.material, wall.mid_radius, o.wall_thickness, n,
+                                           kClampedFreeBeta / o.height);
+    keep(f, o.material.decay_rate(f) + wall.held_decay, kWallCoupling / (n - 1), n);
   }
   // The base: a clamped disc's first three modes, struck near its edge.
   constexpr std::array<std::pair<double, double>, 3> kBaseModes{
@@ -112,11 +123,8 @@ std::vector<Mode> dense_wall_band(const ObjectSpec& o, double max_frequency_hz,
                                   double contact_loss_factor, double pad_damping) {
   std::vector<Mode> bands;
   if (!o.listed_modes.empty()) return bands;
-  double loss = contact_loss_factor;
-  for (const auto& a : o.added_masses) loss += a.loss_factor;
-  const WallLoading wall = wall_loading(o);
-  const double r_mid = o.radius - o.wall_thickness / 2.0;
-  const double held = pad_damping / (2.0 * wall.modal_mass);
+  const double loss = added_loss_factor(o, contact_loss_factor);
+  const WallLoading wall = wall_loading(o, pad_damping);
   // Third-octave bands centred on 1000 * 2^(k/3) Hz: per band, how many modes and the sum of
   // gain^2 / decay that pooling must keep.
   constexpr int kBandsPerOctave = 3;
@@ -136,7 +144,7 @@ std::vector<Mode> dense_wall_band(const ObjectSpec& o, double max_frequency_hz,
     for (int n = 0;; ++n) {
       const double f =
           wall.frequency_factor *
-          shell_mode_frequency(o.material, r_mid, o.wall_thickness, n, beta / o.height);
+          shell_mode_frequency(o.material, wall.mid_radius, o.wall_thickness, n, beta / o.height);
       // Over n the frequency falls (the membrane term) then rises (bending, as n^4): once rising
       // and above the limit, every higher n is too.
       const bool rising = n > 0 && f > previous;
@@ -149,7 +157,7 @@ std::vector<Mode> dense_wall_band(const ObjectSpec& o, double max_frequency_hz,
       if (m == 1 && n >= 2 && n <= o.ring_modes) continue;  // listed one by one (object_modes)
       const int b = band_of(f);
       if (b < 0 || b >= kBandCount) continue;
-      const double sigma = o.material.decay_rate(f) + std::numbers::pi * f * loss + held;
+      const double sigma = o.material.decay_rate(f) + std::numbers::pi * f * loss + wall.held_decay;
       const int multiplicity = n == 0 ? 1 : 2;
       count[b] += multiplicity;
       // Equipartition: a point drive puts on average the same energy into every mode of a band (the

@@ -132,6 +132,13 @@ void render_modes(const std::vector<Mode>& modes, const std::vector<ModeDrive>& 
   }
 }
 
+// Pressure amplitude factor of a plate's radiation at `frequency_hz` (1 above `coincidence_hz`):
+// below its coincidence frequency a finite plate radiates through its edges and corners only, with
+// an efficiency rising about as f / f_c (Maidanik 1962): pressure as its square root.
+double plate_radiation(double frequency_hz, double coincidence_hz) {
+  return std::sqrt(std::min(1.0, frequency_hz / coincidence_hz));
+}
+
 // |sum_i f_i e^{i n theta_i}| / sum_i f_i: how strongly a contact pattern drives ring mode n. A
 // single point drives it fully; contacts spread evenly round the rim (a flat landing) cancel.
 double ring_excitation(const std::vector<RimContact>& contacts, int order) {
@@ -420,12 +427,6 @@ SimulatedRecorder::SimulatedRecorder(const ObjectSpec& object, const TableSpec& 
   });
 }
 
-double SimulatedRecorder::table_radiation(double frequency_hz) const {
-  // Below its coincidence frequency a finite plate radiates through its edges and corners only,
-  // with an efficiency rising about as f / f_c (Maidanik 1962): pressure as its square root.
-  return std::sqrt(std::min(1.0, frequency_hz / table_coincidence_hz_));
-}
-
 double SimulatedRecorder::contact_ring_decay(const Impact& impact) const {
   const double ring_hz = 0.5 / contact_time(impact);
   // The Hertzian spring's strain energy sits in both bodies in proportion to their compliances
@@ -478,9 +479,9 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
     }
     for (std::size_t k = 0; k < table_modes_.size(); ++k) {
       const Mode& m = table_modes_[k];
-      table_drives[k].impulses.emplace_back(at, kTableCoupling * momentum * m.gain *
-                                                    radiated(m.frequency_hz) *
-                                                    table_radiation(m.frequency_hz));
+      table_drives[k].impulses.emplace_back(
+          at, kTableCoupling * momentum * m.gain * radiated(m.frequency_hz) *
+                  plate_radiation(m.frequency_hz, table_coincidence_hz_));
     }
     add_contact_ring(momentum, tau, contact_ring_decay(impact), at, rate, dry);
   }
@@ -497,7 +498,7 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
   // instead. A velocity source sets the modes' velocity whatever their modal mass: no 1 / mass
   // scale here (unlike an impact's impulse). The object radiates as a compact body (dipole: rising
   // with frequency, like the impacts); the table top as a plate, its pressure following its
-  // velocity times the square root of its radiation efficiency (table_radiation), with no dipole
+  // velocity times the square root of its radiation efficiency (plate_radiation), with no dipole
   // factor.
   auto object_share = [&](double f) {
     const double x = kTwoPi * f * object_.total_mass() / table_impedance_;
@@ -509,23 +510,19 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
         object_share(m.frequency_hz) * m.gain * m.frequency_hz / kReferenceHz;
   }
   // The wall's dense band: bending waves on a thin wall far below its coincidence frequency (53 kHz
-  // for the cup's 0.8 mm polycarbonate) radiate as a plate's do, through its edges, with an
-  // efficiency ~f / f_c (Maidanik 1962): pressure as its square root, not the compact body's
-  // dipole.
-  auto wall_radiation = [&](double f) {
-    return std::sqrt(std::min(1.0, f / wall_coincidence_hz_));
-  };
+  // for the cup's 0.8 mm polycarbonate) radiate as a plate's do (plate_radiation), not as the
+  // compact body's dipole.
   std::vector<ModeDrive> dense_drives(dense_modes_.size());
   for (std::size_t k = 0; k < dense_modes_.size(); ++k) {
     const Mode& m = dense_modes_[k];
-    dense_drives[k].continuous_gain =
-        object_share(m.frequency_hz) * m.gain * wall_radiation(m.frequency_hz);
+    dense_drives[k].continuous_gain = object_share(m.frequency_hz) * m.gain *
+                                      plate_radiation(m.frequency_hz, wall_coincidence_hz_);
   }
   for (std::size_t k = 0; k < table_modes_.size(); ++k) {
     const Mode& m = table_modes_[k];
     const double object = object_share(m.frequency_hz);
-    table_drives[k].continuous_gain =
-        std::sqrt(1.0 - object * object) * m.gain * table_radiation(m.frequency_hz);
+    table_drives[k].continuous_gain = std::sqrt(1.0 - object * object) * m.gain *
+                                      plate_radiation(m.frequency_hz, table_coincidence_hz_);
   }
 
   std::pair<std::size_t, std::size_t> friction_span{frames, 0};

@@ -64,8 +64,6 @@ class SimulatedRecorder {
   double table_impedance_ = 0;  // N s/m, the top's point impedance (plate_point_impedance)
   double object_mode_scale_ =
       1;  // the object's modes' response per unit impulse, relative (1 / mass)
-  // Pressure amplitude factor of the table's radiation at `frequency_hz` (1 above coincidence).
-  double table_radiation(double frequency_hz) const;
 };
 
 // Begins a trial on `robot`, runs `action` as its first action and records it: the placement, the
