@@ -136,6 +136,13 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
                 "training_set");
     if (auto n = f.optional(t, "model", "training_set"))
       c.training.model = resolve(source, f.name(n, "model"));
+    // Keys that say how this campaign trains mean nothing next to a trained model: an error, not
+    // a silently ignored setting.
+    for (const char* key : {"classifier", "table"})
+      if (auto n = f.optional(t, key, "training_set"); n && c.training.model.size())
+        f.fail(n, fmt::format("{} chooses how this campaign trains; with model: the model file "
+                              "has its own",
+                              key));
     if (auto n = f.optional(t, "classifier", "training_set"))
       c.training.classifier = f.name(n, "classifier");
     if (auto n = f.optional(t, "table", "training_set")) {
@@ -144,8 +151,6 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
       if (std::find(names.begin(), names.end(), c.training.table) == names.end())
         f.fail(n, fmt::format("table '{}' is not one of: {}", c.training.table,
                               fmt::join(names, ", ")));
-      if (f.optional(t, "model", "training_set"))
-        f.fail(n, "table chooses how this campaign trains; with model: the model file has its own");
     }
     if (auto n = f.optional(t, "recordings", "training_set"))
       c.training.recordings = resolve(source, f.name(n, "recordings"));

@@ -102,5 +102,15 @@ TEST(CampaignConfig, TrainingTableEstimate) {
             "10: table chooses how this campaign trains; with model: the model file has its own");
 }
 
+TEST(CampaignConfig, ClassifierWithModelIsAnError) {
+  EXPECT_EQ(
+      parse_campaign_config(kMinimal + "training_set: {classifier: seed-template}\n", "/dir/c.yaml")
+          .training.classifier,
+      "seed-template");
+  EXPECT_EQ(error_of(kMinimal + "training_set:\n  model: m.json\n  classifier: seed-template\n"),
+            "10: classifier chooses how this campaign trains; with model: the model file has its "
+            "own");
+}
+
 }  // namespace
 }  // namespace echoplan::experiment
