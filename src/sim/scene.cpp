@@ -1,8 +1,10 @@
 #include "sim/scene.h"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <cstring>
+#include <mutex>
 #include <stdexcept>
 
 #include "sim/arm_kinematics.h"
@@ -156,8 +158,19 @@ std::string scene_mjcf(const ObjectSpec& object, const TableSpec& table,
 
 namespace {
 
+// MuJoCo's warnings (a NaN in the controls, a full contact buffer) otherwise go to stdout and to
+// MUJOCO_LOG.TXT in the working directory, where nobody looks and a run's output folder does not
+// hold them: send them to the program's log (stderr) like every other warning.
+void route_mujoco_warnings_to_the_log() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    mju_user_warning = [](const char* message) { spdlog::warn("MuJoCo: {}", message); };
+  });
+}
+
 // MuJoCo 2.2 compiles MJCF from files only: hand it the text through a virtual file system.
 mjModel* compile(const std::string& xml) {
+  route_mujoco_warnings_to_the_log();
   auto vfs = std::make_unique<mjVFS>();
   mj_defaultVFS(vfs.get());
   const char* name = "echoplan_scene.xml";

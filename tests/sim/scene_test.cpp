@@ -3,10 +3,16 @@
 // where the original system's initial configuration puts them.
 #include "sim/scene.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <spdlog/sinks/ringbuffer_sink.h>
+#include <spdlog/spdlog.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <limits>
 
 #include "shipped_catalogue.h"
 #include "sim/arm_kinematics.h"
@@ -147,6 +153,36 @@ TEST(Scene, PhysicsTimestepComesFromTheConfig) {
   const Scene scene(shipped_catalogue().object("paper_base"), shipped_catalogue().table, physics);
   EXPECT_DOUBLE_EQ(scene.model(PadContact::pushes_object)->opt.timestep, 0.001);
   EXPECT_DOUBLE_EQ(scene.model(PadContact::clear_of_object)->opt.timestep, 0.001);
+}
+
+TEST(Scene, MujocoWarningsGoToTheLogNotToAFileInTheWorkingDirectory) {
+  // MuJoCo's default handler appends to MUJOCO_LOG.TXT in the working directory.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / fmt::format("echoplan_scene_log_{}", getpid());
+  fs::create_directories(dir);
+  const fs::path before = fs::current_path();
+  fs::current_path(dir);
+  const auto sink = std::make_shared<spdlog::sinks::ringbuffer_sink_mt>(16);
+  const auto previous = spdlog::default_logger();
+  spdlog::set_default_logger(std::make_shared<spdlog::logger>("scene_test", sink));
+  {
+    const Scene scene(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
+                      PhysicsConfig{});
+    const mjModel* m = scene.model();
+    scene.data()->ctrl[0] = std::numeric_limits<double>::quiet_NaN();
+    mj_step(m, scene.data());
+  }
+  spdlog::set_default_logger(previous);
+  fs::current_path(before);
+  const auto lines = sink->last_formatted();
+  EXPECT_TRUE(std::any_of(lines.begin(), lines.end(),
+                          [](const std::string& line) {
+                            return line.find("MuJoCo: Nan, Inf or huge value in CTRL") !=
+                                   std::string::npos;
+                          }))
+      << lines.size() << " lines logged";
+  EXPECT_FALSE(fs::exists(dir / "MUJOCO_LOG.TXT"));
+  fs::remove_all(dir);
 }
 
 }  // namespace
