@@ -13,7 +13,8 @@ sound_measures.py (the tool that measured the real recordings), and prints next 
     1.0-2.0): mean absolute difference of level-removed mean 64-band log-mel spectra;
   - leave-one-out accuracy of the perception module's `seed-template` classifier (the seed's rule: mean
     logfbank template per object, nearest by mean absolute difference; docs/perception.md) on the four
-    objects, as `echoplan train --classifier seed-template --folds 0 --no-reject` reports it.
+    objects, as `echoplan train --classifier seed-template --folds 0 --no-reject` reports it, and the
+    distances between that classifier's templates beside the seed's own (how alike the objects sound).
 
 Usage: bench/sim_realism.py [--per-pair 10] [--seed 1] [--echoplan build/echoplan]
                             [--measures ../shared/tools/sound_measures.py] [--keep DIR]
@@ -22,6 +23,7 @@ Needs Debian's python3-numpy, python3-scipy, python3-soundfile (run with /usr/bi
 import argparse
 import importlib.util
 import itertools
+import json
 import os
 import re
 import statistics
@@ -53,6 +55,16 @@ REAL = {
 }
 DB_MEASURES = {"flatness_db"}
 LAB_RATIO = {"strike": 1.5, "slide": 1.2}
+# The seed's own templates, mean absolute difference between two objects' (natural-log units), in
+# OBJECTS order (real-robot-recordings.md, "How alike the objects sounded"): the upper triangle.
+LAB_TEMPLATE_DISTANCE = {
+    "slide": {("pringles_can", "coffee_mug"): 1.10, ("pringles_can", "plastic_cup"): 0.95,
+              ("pringles_can", "paper_base"): 2.11, ("coffee_mug", "plastic_cup"): 1.85,
+              ("coffee_mug", "paper_base"): 3.03, ("plastic_cup", "paper_base"): 1.46},
+    "strike": {("pringles_can", "coffee_mug"): 0.62, ("pringles_can", "plastic_cup"): 0.40,
+               ("pringles_can", "paper_base"): 0.67, ("coffee_mug", "plastic_cup"): 0.49,
+               ("coffee_mug", "paper_base"): 0.72, ("plastic_cup", "paper_base"): 0.69},
+}
 
 
 def load_measures(path):
@@ -72,10 +84,11 @@ def met(median, real, measure):
     return abs(median - mean) <= 0.25 * abs(mean)
 
 
-def seed_template_accuracy(echoplan, data, workdir):
+def seed_template_model(echoplan, data, workdir):
     """Leave-one-out accuracy per action of the perception module's `seed-template` classifier (the
-    seed's decision rule; docs/perception.md), as `echoplan train --folds 0` reports it. One
-    implementation: the same code the planner's observation model is trained with."""
+    seed's decision rule; docs/perception.md), as `echoplan train --folds 0` reports it, and the
+    templates it keeps (trained on every clip) per action and object. One implementation: the same
+    code the planner's observation model is trained with."""
     model = os.path.join(workdir, "seed_template_model.json")
     out = subprocess.run([echoplan, "train", "--data", data, "--classifier", "seed-template", "--folds", "0",
                           "--no-reject", "-o", model], check=True, capture_output=True, text=True).stdout
@@ -84,7 +97,11 @@ def seed_template_accuracy(echoplan, data, workdir):
         m = re.match(r"(\w+) \(cross-validated, leave-one-out\): accuracy ([0-9.]+) \((\d+) of (\d+)\)", line)
         if m:
             accuracy[m.group(1)] = (float(m.group(2)), int(m.group(3)), int(m.group(4)))
-    return accuracy
+    with open(model) as f:
+        saved = json.load(f)
+    templates = {action: dict(zip(saved["classes"], (np.array(t) for t in per["classifier"]["templates"])))
+                 for action, per in saved["per_action"].items()}
+    return accuracy, templates
 
 
 def level_removed_logmel(sm, path):
@@ -159,11 +176,23 @@ def main():
     print("\nseed-template classifier (echoplan train --classifier seed-template --folds 0 --no-reject), "
           "leave-one-out over the four objects:")
     model_dir = tempfile.mkdtemp(prefix="echoplan_realism_model_")
-    accuracy = seed_template_accuracy(args.echoplan, out, model_dir)
+    accuracy, templates = seed_template_model(args.echoplan, out, model_dir)
     subprocess.run(["rm", "-rf", model_dir], check=False)
     for action in ("strike", "slide"):
         acc, right, total = accuracy[action]
         print(f"  {action:<7} {acc:.2f} ({right} of {total}; chance 0.25)")
+
+    # The seed's templates were means over a few recordings each (how many is not recorded) and its
+    # slide window was noise-reduced, so a template distance here (means over --per-pair clips)
+    # carries less recording noise than the lab's: read the two as a comparison of shape, not a target.
+    print("\nseed-template distances, mean |template a - template b| (natural log), sim (lab):")
+    for action in ("strike", "slide"):
+        pairs = LAB_TEMPLATE_DISTANCE[action]
+        sim = {p: float(np.mean(np.abs(templates[action][p[0]] - templates[action][p[1]]))) for p in pairs}
+        cells = ", ".join(f"{a.split('_')[-1]}-{b.split('_')[-1]} {sim[(a, b)]:.2f} ({pairs[(a, b)]:.2f})"
+                          for a, b in pairs)
+        ratio = statistics.mean(sim.values()) / statistics.mean(pairs.values())
+        print(f"  {action:<7} {cells}; mean sim/lab {ratio:.2f}")
     if not args.keep:
         subprocess.run(["rm", "-rf", out], check=False)
 
