@@ -14,7 +14,9 @@ sound_measures.py (the tool that measured the real recordings), and prints next 
   - leave-one-out accuracy of the perception module's `seed-template` classifier (the seed's rule: mean
     logfbank template per object, nearest by mean absolute difference; docs/perception.md) on the four
     objects, as `echoplan train --classifier seed-template --folds 0 --no-reject` reports it, and the
-    distances between that classifier's templates beside the seed's own (how alike the objects sound).
+    distances between that classifier's templates beside the seed's own (how alike the objects sound)
+    and how their spectrum shapes differ from the seed's (the part all objects share, the recording
+    chain's, and each object's own).
 
 Usage: bench/sim_realism.py [--per-pair 10] [--seed 1] [--echoplan build/echoplan]
                             [--measures ../shared/tools/sound_measures.py] [--keep DIR]
@@ -102,6 +104,46 @@ def seed_template_model(echoplan, data, workdir):
     templates = {action: dict(zip(saved["classes"], (np.array(t) for t in per["classifier"]["templates"])))
                  for action, per in saved["per_action"].items()}
     return accuracy, templates
+
+
+def lab_template_shapes(reference):
+    """The seed's template spectrum shapes, {(object, action): 26 values}, from the reference file's
+    table "Template spectrum shape" (natural-log units relative to each template's maximum)."""
+    names = {"can": "pringles_can", "mug": "coffee_mug", "cup": "plastic_cup", "paper base": "paper_base"}
+    shapes = {}
+    with open(reference) as f:
+        for line in f:
+            cells = [c.strip() for c in line.split("|")]
+            if len(cells) < 4 or " " not in cells[1]:
+                continue
+            label, action = cells[1].rsplit(" ", 1)
+            values = cells[2].split()
+            if label in names and action in ("slide", "strike") and len(values) == 26:
+                shapes[(names[label], action)] = np.array([float(v) for v in values])
+    return shapes
+
+
+def print_template_shapes(templates, reference):
+    """How the simulated templates' spectrum shapes (mean over frames, relative to the maximum)
+    differ from the seed's, split into what all four objects share (the recording chain: room,
+    arm, microphone) and what is each object's own."""
+    if not os.path.exists(reference):
+        print(f"\n(no {reference}: template shapes not compared)")
+        return
+    lab = lab_template_shapes(reference)
+    print("\ntemplate spectrum shape against the seed's (26 filters, natural log, each difference's mean "
+          "removed):")
+    for action in ("strike", "slide"):
+        diffs = {}
+        for obj in OBJECTS:
+            shape = templates[action][obj].mean(axis=0)
+            d = (shape - shape.max()) - lab[(obj, action)]
+            diffs[obj] = d - d.mean()
+        common = np.mean(list(diffs.values()), axis=0)
+        own = ", ".join(f"{o.split('_')[-1]} {np.sqrt(np.mean((d - common) ** 2)):.2f}" for o, d in diffs.items())
+        print(f"  {action:<7} shared by all objects, rms {np.sqrt(np.mean(common ** 2)):.2f}: "
+              + " ".join(f"{v:.1f}" for v in common))
+        print(f"  {'':<7} each object's own, rms: {own}")
 
 
 def level_removed_logmel(sm, path):
@@ -193,6 +235,8 @@ def main():
                           for a, b in pairs)
         ratio = statistics.mean(sim.values()) / statistics.mean(pairs.values())
         print(f"  {action:<7} {cells}; mean sim/lab {ratio:.2f}")
+    print_template_shapes(templates, os.path.join(os.path.dirname(args.measures), "..", "reference",
+                                                  "real-robot-recordings.md"))
     if not args.keep:
         subprocess.run(["rm", "-rf", out], check=False)
 
