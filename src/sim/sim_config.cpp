@@ -94,6 +94,7 @@ SimConfig read_sim_config(const YamlReader& f, const YAML::Node& root) {
                {{"sample_rate", number_into(f, sample_rate, 8000.0, 192000.0)},
                 {"duration_s", number_into(f, rec.duration_s, 0.1, 60.0)},
                 {"noise_dbfs", number_into(f, rec.noise_dbfs, -200.0, 0.0)},
+                {"noise_corner_hz", number_into(f, rec.noise_corner_hz, 0.0, 20000.0)},
                 {"output_gain", number_into(f, rec.output_gain, 0.0, 1.0e6)},
                 {"friction_gain", number_into(f, rec.friction_gain, 0.0, 1000.0)},
                 {"lead_in_s", number_into(f, rec.lead_in_s, 0.0, 10.0)},

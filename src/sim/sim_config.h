@@ -72,8 +72,10 @@ struct RecordingConfig {
   double lead_in_s = 0.355;  // s of exact digital zeros at the start (the lab's recorder opening)
   double noise_dbfs =
       -69;  // background noise, dB re full scale (RMS): the lab's strikes sit 51-58 dB above it
-  double output_gain = 1400;  // full scale per unit of synthesized pressure before the limiter
-                              // (every strike reaches it)
+  double noise_corner_hz = 0;  // > 0: the room's noise is flat below this and falls 6 dB per
+                               // octave above; 0: white (docs/simulator.md); its RMS is noise_dbfs
+  double output_gain = 1400;   // full scale per unit of synthesized pressure before the limiter
+                               // (every strike reaches it)
   double friction_gain =
       7.2e-7;  // scale of sliding excitation relative to impacts (slides 17 dB below strikes)
   double motor_noise_gain =

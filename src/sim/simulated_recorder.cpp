@@ -346,6 +346,28 @@ void add_motor_noise(const ContactTrace& trace, int rate, double gain, NoiseSour
   }
 }
 
+// The room's noise at `rms`, flat below `corner_hz` and falling 6 dB per octave above it (white
+// through a one-pole low-pass). A real room's noise is dominated by low frequencies (ventilation,
+// traffic, the building: ANSI/ASA S12.2's room-criterion curves fall 5 dB per octave band from
+// 16 Hz), and the lab's templates carried far more 100-500 Hz than white noise does; what it does
+// to the realism targets is in docs/simulator.md (session 6). Both capsules hear it alike: it is
+// the room's, and they are 10 cm apart in it.
+std::vector<float> room_noise(std::size_t frames, int rate, double corner_hz, double rms,
+                              NoiseSource& noise) {
+  std::vector<float> out(frames);
+  const double a = 1.0 - std::exp(-kTwoPi * corner_hz / rate);
+  // A one-pole low-pass y += a (x - y) passes a / (2 - a) of unit white noise's power.
+  const double gain = rms * std::sqrt((2.0 - a) / a);
+  // Started in its steady state (a draw of the filtered process) rather than at zero, so the first
+  // samples are as loud as the rest.
+  double y = std::sqrt(a / (2.0 - a)) * noise.next();
+  for (float& x : out) {
+    y += a * (noise.next() - y);
+    x = static_cast<float>(gain * y);
+  }
+  return out;
+}
+
 // The recorder's peak limiter (stereo-linked): looks kLimiterLookahead ahead, lowers the gain at
 // once so no sample exceeds the ceiling, holds it, then lets it recover. It is why the lab's four
 // strikes peak within 0.3 dB of each other at -3 dBFS whatever the object.
@@ -569,12 +591,21 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
   clip.sample_rate = rate;
   clip.channels = 2;
   clip.samples.assign((lead + frames) * 2, 0.0f);  // the recorder's opening: exact digital zeros
-  const float noise_rms = static_cast<float>(std::pow(10.0, noise_db / 20.0));
+  // The background: by default white noise of its own in each capsule (the recorder's noise, and
+  // the lab's level); with recording.noise_corner_hz > 0 the room's low-frequency noise instead.
+  const double noise_rms = std::pow(10.0, noise_db / 20.0);
+  const std::vector<float> room_background =
+      rec.noise_corner_hz > 0 ? room_noise(frames, rate, rec.noise_corner_hz, noise_rms, noise)
+                              : std::vector<float>{};
   const float full_scale_max = 32767.0f / 32768.0f;
   for (int channel = 0; channel < 2; ++channel)
-    for (std::size_t i = 0; i < frames; ++i)
+    for (std::size_t i = 0; i < frames; ++i) {
+      const float background = room_background.empty()
+                                   ? static_cast<float>(noise_rms) * noise.next()
+                                   : room_background[i];
       clip.samples[2 * (lead + i) + channel] =
-          std::clamp(heard[channel][i] + noise_rms * noise.next(), -1.0f, full_scale_max);
+          std::clamp(heard[channel][i] + background, -1.0f, full_scale_max);
+    }
   return clip;
 }
 

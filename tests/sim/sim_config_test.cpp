@@ -35,6 +35,7 @@ TEST(SimConfig, ShippedExampleStatesTheDefaults) {
       {"reverb_level", c.room.reverb_level, d.room.reverb_level},
       {"duration_s", c.recording.duration_s, d.recording.duration_s},
       {"noise_dbfs", c.recording.noise_dbfs, d.recording.noise_dbfs},
+      {"noise_corner_hz", c.recording.noise_corner_hz, d.recording.noise_corner_hz},
       {"output_gain", c.recording.output_gain, d.recording.output_gain},
       {"friction_gain", c.recording.friction_gain, d.recording.friction_gain},
       {"timestep_s", c.physics.timestep_s, d.physics.timestep_s}};

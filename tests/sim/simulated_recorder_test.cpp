@@ -358,6 +358,7 @@ TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
 TEST(SimulatedRecorder, BackgroundNoiseHasTheConfiguredLevel) {
   SimConfig config;
   config.recording.noise_dbfs = -40;
+  config.recording.noise_corner_hz = 0;  // white: the level shaped noise has is tested below
   config.variability.background_db.stddev = 0;
   SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
                              config);
@@ -374,6 +375,77 @@ TEST(SimulatedRecorder, BackgroundNoiseHasTheConfiguredLevel) {
     energy += clip.samples[i] * clip.samples[i];
   // 264600 samples: the RMS estimate's relative standard error is ~0.2%; 2% bound.
   EXPECT_NEAR(std::sqrt(energy / (clip.samples.size() - 2 * lead)), 0.01, 0.0002);
+}
+
+// Mean power of `x` in [lo, hi) Hz: Welch's average of 4096-point Hann periodograms.
+double band_power(const std::vector<float>& x, int rate, double lo, double hi) {
+  constexpr std::size_t n = 4096;
+  kiss_fftr_cfg cfg = kiss_fftr_alloc(n, 0, nullptr, nullptr);
+  std::vector<float> frame(n);
+  std::vector<kiss_fft_cpx> spectrum(n / 2 + 1);
+  std::vector<double> power(n / 2 + 1, 0.0);
+  for (std::size_t start = 0; start + n <= x.size(); start += n / 2) {
+    for (std::size_t i = 0; i < n; ++i)
+      frame[i] =
+          x[start + i] * static_cast<float>(0.5 - 0.5 * std::cos(2 * std::numbers::pi * i / n));
+    kiss_fftr(cfg, frame.data(), spectrum.data());
+    for (std::size_t k = 0; k < spectrum.size(); ++k)
+      power[k] += spectrum[k].r * spectrum[k].r + spectrum[k].i * spectrum[k].i;
+  }
+  kiss_fftr_free(cfg);
+  double sum = 0;
+  for (std::size_t k = 0; k < power.size(); ++k) {
+    const double f = static_cast<double>(k) * rate / n;
+    if (f >= lo && f < hi) sum += power[k];
+  }
+  return sum;
+}
+
+TEST(SimulatedRecorder, RoomNoiseFallsSixDecibelsPerOctaveAboveItsCorner) {
+  // A room's noise is mostly low frequencies. Above the corner each octave carries half the power
+  // of the one below (a power spectrum ~ 1 / (1 + (f / fc)^2) integrates to fc atan(f / fc)), and
+  // it is the room's: both capsules hear the same.
+  SimConfig config;
+  config.recording.noise_dbfs = -40;
+  config.recording.noise_corner_hz = 50;
+  config.recording.lead_in_s = 0;
+  // 30 s: the noise's power lies below ~80 Hz, so 3 s would hold only ~500 independent samples.
+  config.recording.duration_s = 30;
+  config.variability.background_db.stddev = 0;
+  SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
+                             config);
+  Rng rng(11);
+  const audio::AudioClip clip = recorder.record(ActionOutcome{}, rng);
+  std::vector<float> left(clip.frames()), right(clip.frames());
+  double energy = 0;
+  for (std::size_t i = 0; i < clip.frames(); ++i) {
+    left[i] = clip.samples[2 * i];
+    right[i] = clip.samples[2 * i + 1];
+    energy += static_cast<double>(left[i]) * left[i];
+  }
+  EXPECT_EQ(left, right);
+  // Its RMS is the configured level: ~5000 independent samples in 30 s (bandwidth pi/2 fc), so
+  // the power estimate's relative standard error is ~2% and the RMS's ~1%; 4% bound.
+  EXPECT_NEAR(std::sqrt(energy / static_cast<double>(left.size())), 0.01, 0.0004);
+  const auto analytic = [](double lo, double hi) {
+    return std::atan(hi / 50.0) - std::atan(lo / 50.0);
+  };
+  const double octave_ratio =
+      band_power(left, clip.sample_rate, 400, 800) / band_power(left, clip.sample_rate, 800, 1600);
+  EXPECT_NEAR(octave_ratio, analytic(400, 800) / analytic(800, 1600), 0.1);
+  const double corner_ratio =
+      band_power(left, clip.sample_rate, 20, 50) / band_power(left, clip.sample_rate, 200, 800);
+  EXPECT_NEAR(corner_ratio / (analytic(20, 50) / analytic(200, 800)), 1.0, 0.15);
+  // White when the corner is 0: an octave carries twice the power of the one below.
+  config.recording.noise_corner_hz = 0;
+  SimulatedRecorder white(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
+                          config);
+  const audio::AudioClip flat = white.record(ActionOutcome{}, rng);
+  std::vector<float> flat_left(flat.frames());
+  for (std::size_t i = 0; i < flat.frames(); ++i) flat_left[i] = flat.samples[2 * i];
+  EXPECT_NEAR(band_power(flat_left, flat.sample_rate, 400, 800) /
+                  band_power(flat_left, flat.sample_rate, 800, 1600),
+              0.5, 0.05);
 }
 
 std::string file_bytes(const std::string& path) {
