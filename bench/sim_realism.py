@@ -57,16 +57,6 @@ REAL = {
 }
 DB_MEASURES = {"flatness_db"}
 LAB_RATIO = {"strike": 1.5, "slide": 1.2}
-# The seed's own templates, mean absolute difference between two objects' (natural-log units), in
-# OBJECTS order (real-robot-recordings.md, "How alike the objects sounded"): the upper triangle.
-LAB_TEMPLATE_DISTANCE = {
-    "slide": {("pringles_can", "coffee_mug"): 1.10, ("pringles_can", "plastic_cup"): 0.95,
-              ("pringles_can", "paper_base"): 2.11, ("coffee_mug", "plastic_cup"): 1.85,
-              ("coffee_mug", "paper_base"): 3.03, ("plastic_cup", "paper_base"): 1.46},
-    "strike": {("pringles_can", "coffee_mug"): 0.62, ("pringles_can", "plastic_cup"): 0.40,
-               ("pringles_can", "paper_base"): 0.67, ("coffee_mug", "plastic_cup"): 0.49,
-               ("coffee_mug", "paper_base"): 0.72, ("plastic_cup", "paper_base"): 0.69},
-}
 
 
 def load_measures(path):
@@ -106,38 +96,63 @@ def seed_template_model(echoplan, data, workdir):
     return accuracy, templates
 
 
-def lab_template_shapes(reference):
-    """The seed's template spectrum shapes, {(object, action): 26 values}, from the reference file's
-    table "Template spectrum shape" (natural-log units relative to each template's maximum)."""
-    names = {"can": "pringles_can", "mug": "coffee_mug", "cup": "plastic_cup", "paper base": "paper_base"}
-    shapes = {}
+TEMPLATE_NAMES = {"can": "pringles_can", "mug": "coffee_mug", "cup": "plastic_cup", "paper base": "paper_base"}
+
+
+def lab_templates(reference):
+    """The seed's own templates as the reference file describes them: the distance between two
+    objects' templates, {action: {(a, b): mean absolute difference}} ("How alike the objects
+    sounded", natural-log units), and each template's spectrum shape, {(object, action): 26 values}
+    relative to its maximum ("Template spectrum shape")."""
+    distances, shapes = {}, {}
+    action = None
     with open(reference) as f:
         for line in f:
-            cells = [c.strip() for c in line.split("|")]
-            if len(cells) < 4 or " " not in cells[1]:
+            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            if len(cells) == 5 and cells[0] in ("slide", "strike"):  # a distance table's header
+                action = cells[0]
+                columns = [TEMPLATE_NAMES[c] for c in cells[1:]]
                 continue
-            label, action = cells[1].rsplit(" ", 1)
-            values = cells[2].split()
-            if label in names and action in ("slide", "strike") and len(values) == 26:
-                shapes[(names[label], action)] = np.array([float(v) for v in values])
-    return shapes
+            if action and len(cells) == 5 and cells[0] in TEMPLATE_NAMES.values():
+                for other, value in zip(columns, cells[1:]):
+                    if cells[0] != other:
+                        distances.setdefault(action, {})[(cells[0], other)] = float(value)
+                continue
+            if len(cells) == 2 and " " in cells[0]:
+                label, act = cells[0].rsplit(" ", 1)
+                values = cells[1].split()
+                if label in TEMPLATE_NAMES and act in ("slide", "strike") and len(values) == 26:
+                    shapes[(TEMPLATE_NAMES[label], act)] = np.array([float(v) for v in values])
+    return distances, shapes
 
 
-def print_template_shapes(templates, reference):
-    """How the simulated templates' spectrum shapes (mean over frames, relative to the maximum)
-    differ from the seed's, split into what all four objects share (the recording chain: room,
-    arm, microphone) and what is each object's own."""
+def print_template_comparison(templates, reference):
+    """The simulated templates against the seed's: how far apart the objects' templates are, and how
+    their spectrum shapes (mean over frames, relative to the maximum) differ, split into what all
+    four objects share (the recording chain: room, arm, microphone) and what is each object's own."""
     if not os.path.exists(reference):
-        print(f"\n(no {reference}: template shapes not compared)")
+        print(f"\n(no {reference}: templates not compared with the seed's)")
         return
-    lab = lab_template_shapes(reference)
+    lab_distance, lab_shape = lab_templates(reference)
+    # The seed's templates were means over a few recordings each (how many is not recorded) and its
+    # slide window was noise-reduced, so a template distance here (means over --per-pair clips)
+    # carries less recording noise than the lab's: read the two as a comparison, not a target.
+    print("\nseed-template distances, mean |template a - template b| (natural log), sim (lab):")
+    for action in ("strike", "slide"):
+        pairs = list(itertools.combinations(OBJECTS, 2))
+        sim = {(a, b): float(np.mean(np.abs(templates[action][a] - templates[action][b]))) for a, b in pairs}
+        lab = {(a, b): lab_distance[action][(a, b)] for a, b in pairs}
+        cells = ", ".join(f"{a.split('_')[-1]}-{b.split('_')[-1]} {sim[(a, b)]:.2f} ({lab[(a, b)]:.2f})"
+                          for a, b in pairs)
+        ratio = statistics.mean(sim.values()) / statistics.mean(lab.values())
+        print(f"  {action:<7} {cells}; mean sim/lab {ratio:.2f}")
     print("\ntemplate spectrum shape against the seed's (26 filters, natural log, each difference's mean "
           "removed):")
     for action in ("strike", "slide"):
         diffs = {}
         for obj in OBJECTS:
             shape = templates[action][obj].mean(axis=0)
-            d = (shape - shape.max()) - lab[(obj, action)]
+            d = (shape - shape.max()) - lab_shape[(obj, action)]
             diffs[obj] = d - d.mean()
         common = np.mean(list(diffs.values()), axis=0)
         own = ", ".join(f"{o.split('_')[-1]} {np.sqrt(np.mean((d - common) ** 2)):.2f}" for o, d in diffs.items())
@@ -224,19 +239,8 @@ def main():
         acc, right, total = accuracy[action]
         print(f"  {action:<7} {acc:.2f} ({right} of {total}; chance 0.25)")
 
-    # The seed's templates were means over a few recordings each (how many is not recorded) and its
-    # slide window was noise-reduced, so a template distance here (means over --per-pair clips)
-    # carries less recording noise than the lab's: read the two as a comparison of shape, not a target.
-    print("\nseed-template distances, mean |template a - template b| (natural log), sim (lab):")
-    for action in ("strike", "slide"):
-        pairs = LAB_TEMPLATE_DISTANCE[action]
-        sim = {p: float(np.mean(np.abs(templates[action][p[0]] - templates[action][p[1]]))) for p in pairs}
-        cells = ", ".join(f"{a.split('_')[-1]}-{b.split('_')[-1]} {sim[(a, b)]:.2f} ({pairs[(a, b)]:.2f})"
-                          for a, b in pairs)
-        ratio = statistics.mean(sim.values()) / statistics.mean(pairs.values())
-        print(f"  {action:<7} {cells}; mean sim/lab {ratio:.2f}")
-    print_template_shapes(templates, os.path.join(os.path.dirname(args.measures), "..", "reference",
-                                                  "real-robot-recordings.md"))
+    print_template_comparison(templates, os.path.join(os.path.dirname(args.measures), "..", "reference",
+                                                      "real-robot-recordings.md"))
     if not args.keep:
         subprocess.run(["rm", "-rf", out], check=False)
 

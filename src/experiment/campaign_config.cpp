@@ -139,7 +139,7 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
     // Keys that say how this campaign trains mean nothing next to a trained model: an error, not
     // a silently ignored setting.
     for (const char* key : {"classifier", "table"})
-      if (auto n = f.optional(t, key, "training_set"); n && c.training.model.size())
+      if (auto n = f.optional(t, key, "training_set"); n && !c.training.model.empty())
         f.fail(n, fmt::format("{} chooses how this campaign trains; with model: the model file "
                               "has its own",
                               key));
