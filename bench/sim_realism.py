@@ -18,8 +18,9 @@ sound_measures.py (the tool that measured the real recordings), and prints next 
     and how their spectrum shapes differ from the seed's (the part all objects share, the recording
     chain's, and each object's own).
 
-Usage: bench/sim_realism.py [--per-pair 10] [--seed 1] [--echoplan build/echoplan]
-                            [--measures ../shared/tools/sound_measures.py] [--keep DIR]
+Usage: bench/sim_realism.py [--per-pair 10] [--seed 1 | --seed 1,2,3] [--sim-config FILE]
+                            [--echoplan build/echoplan] [--measures ../shared/tools/sound_measures.py]
+                            [--keep DIR]
 Needs Debian's python3-numpy, python3-scipy, python3-soundfile (run with /usr/bin/python3).
 """
 import argparse
@@ -166,29 +167,23 @@ def level_removed_logmel(sm, path):
     return v - v.mean()
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--per-pair", type=int, default=10)
-    ap.add_argument("--seed", type=int, default=1)
-    ap.add_argument("--echoplan", default=os.path.join(REPO, "build", "echoplan"))
-    ap.add_argument("--measures", default=os.path.join(REPO, "..", "..", "shared", "tools", "sound_measures.py"))
-    ap.add_argument("--keep", help="write the clips here and keep them (default: a temporary folder)")
-    args = ap.parse_args()
-    if not os.path.exists(args.measures):
-        args.measures = "/work/shared/tools/sound_measures.py"
-    sm = load_measures(args.measures)
-
-    out = args.keep or tempfile.mkdtemp(prefix="echoplan_realism_")
+def report(args, sm, seed):
+    """Synthesises and measures one seed's clips and prints its report; returns its score:
+    {"measures": (met, of), "strike"/"slide": mug-vs-cup ratio, "levels": (met, of)}."""
+    out = os.path.join(args.keep, f"seed{seed}") if args.keep else tempfile.mkdtemp(prefix="echoplan_realism_")
     start = time.time()
-    subprocess.run([args.echoplan, "dataset", "--per-pair", str(args.per_pair), "--seed", str(args.seed), "-o", out,
-                    "--objects", ",".join(OBJECTS), "--threads", "2"], check=True, stdout=subprocess.DEVNULL,
-                   stderr=subprocess.DEVNULL)
+    command = [args.echoplan, "dataset", "--per-pair", str(args.per_pair), "--seed", str(seed), "-o", out,
+               "--objects", ",".join(OBJECTS), "--threads", "2"]
+    if args.sim_config:
+        command += ["--sim-config", args.sim_config]
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     print(f"synthesised {len(OBJECTS) * 2 * args.per_pair} clips in {time.time() - start:.1f} s "
-          f"(echoplan dataset --per-pair {args.per_pair} --seed {args.seed} --threads 2)\n")
+          f"({' '.join(os.path.basename(c) if k == 0 else c for k, c in enumerate(command))})\n")
 
     files = {(o, a): sorted(os.path.join(out, o, a, f) for f in os.listdir(os.path.join(out, o, a)) if f.endswith(".wav"))
              for o in OBJECTS for a in ("strike", "slide")}
     measures = {k: [sm.measure(f) for f in v] for k, v in files.items()}
+    score = {}
 
     print("measure            sim median [min .. max]          real             met")
     total = passed = 0
@@ -203,12 +198,16 @@ def main():
             real_text = " / ".join(f"{v:g}" for v in values)
             print(f"{m:<18} {med:>9.4g} [{min(sim):.4g} .. {max(sim):.4g}]".ljust(52) + f"{real_text:<16} {'yes' if ok else 'NO'}")
     print(f"\n{passed} of {total} measure targets met (n_hits: median single hit)\n")
+    score["measures"] = (passed, total)
 
     print("strike minus slide (median peak 5 ms frame, dB; lab 16.9 mug, 17.7 cup; target 17 +- 3):")
+    levels = 0
     for obj in OBJECTS:
         d = statistics.median(r["peak_dbfs"] for r in measures[(obj, "strike")]) - \
             statistics.median(r["peak_dbfs"] for r in measures[(obj, "slide")])
+        levels += abs(d - 17) <= 3
         print(f"  {obj:<14} {d:5.1f} dB  {'yes' if abs(d - 17) <= 3 else 'NO'}")
+    score["levels"] = (levels, len(OBJECTS))
     peaks = {}
     for obj in OBJECTS:
         s = []
@@ -227,6 +226,7 @@ def main():
         within = np.mean([np.mean(np.abs(a - b)) for a, b in itertools.combinations(cup, 2)])
         between = np.mean([np.mean(np.abs(a - b)) for a in mug for b in cup])
         ratio = between / within
+        score[action] = ratio
         print(f"  {action:<7} between {between:.2f}, within cup {within:.2f}: ratio {ratio:.2f} "
               f"(lab {LAB_RATIO[action]}; target 1.0-2.0: {'yes' if 1.0 <= ratio <= 2.0 else 'NO'})")
 
@@ -243,6 +243,43 @@ def main():
                                                       "real-robot-recordings.md"))
     if not args.keep:
         subprocess.run(["rm", "-rf", out], check=False)
+    return score
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--per-pair", type=int, default=10, help="clips per object and action (default 10)")
+    ap.add_argument("--seed", default="1",
+                    help="seed, or seeds separated by commas (1,2,3): a report for each, then a summary")
+    ap.add_argument("--sim-config", help="a sim config YAML for `echoplan dataset` (default: built-in)")
+    ap.add_argument("--echoplan", default=os.path.join(REPO, "build", "echoplan"))
+    ap.add_argument("--measures", default=os.path.join(REPO, "..", "..", "shared", "tools", "sound_measures.py"))
+    ap.add_argument("--keep", help="write the clips to DIR/seedS and keep them (default: a temporary folder)")
+    args = ap.parse_args()
+    try:
+        seeds = [int(s) for s in args.seed.split(",")]
+    except ValueError:
+        ap.error(f"--seed: '{args.seed}' is not a seed or a comma-separated list of seeds")
+    if not os.path.exists(args.measures):
+        args.measures = "/work/shared/tools/sound_measures.py"
+    sm = load_measures(args.measures)
+
+    scores = {}
+    for seed in seeds:
+        if len(seeds) > 1:
+            print(f"==================== seed {seed}")
+        scores[seed] = report(args, sm, seed)
+    if len(seeds) > 1:
+        # Every target of the issue counted alike: the 26 measures, the two mug-vs-cup ratios and the
+        # four strike-minus-slide levels.
+        print("\n==================== summary")
+        print("seed  measures  strike ratio  slide ratio  levels  all targets")
+        for seed, sc in scores.items():
+            ratios = sum(1.0 <= sc[a] <= 2.0 for a in ("strike", "slide"))
+            met_all = sc["measures"][0] + ratios + sc["levels"][0]
+            of_all = sc["measures"][1] + 2 + sc["levels"][1]
+            print(f"{seed:>4}  {sc['measures'][0]:>4} / {sc['measures'][1]}  {sc['strike']:>12.2f}  "
+                  f"{sc['slide']:>11.2f}  {sc['levels'][0]} / {sc['levels'][1]}   {met_all} / {of_all}")
 
 
 if __name__ == "__main__":
