@@ -81,6 +81,9 @@ TEST(SimConfig, ErrorsNameFileLineAndField) {
   const InputError range = error_of("physics:\n  timestep_s: 0.1\n");
   EXPECT_EQ(range.line(), 2);
   EXPECT_NE(range.problem().find("physics.timestep_s"), std::string::npos);
+  const InputError corner = error_of("recording:\n  sample_rate: 44100\n  noise_corner_hz: -50\n");
+  EXPECT_EQ(corner.line(), 3);
+  EXPECT_NE(corner.problem().find("recording.noise_corner_hz"), std::string::npos) << corner.what();
   EXPECT_NE(
       error_of("variability:\n  push_speed: 0.1\n").problem().find("{mean: ..., stddev: ...}"),
       std::string::npos);
