@@ -21,14 +21,13 @@ constexpr double kHandRadius = 0.03;        // m, the hand and closed fingers
 constexpr double kServoStiffness = 1000;    // N m / rad, joint position servos
 constexpr double kJointDamping = 20;        // N m s / rad, about critical with the armature below
 constexpr double kArmature = 0.1;           // kg m^2, reflected rotor inertia of the geared joints
-constexpr int kSolverIterations = 20;
-constexpr double kArmFriction = 1.0;  // MuJoCo's default sliding friction: the arm's capsules
-constexpr double kPadFriction = 0.2;  // the finger pads' and the object's own sliding friction
+constexpr int kSolverIterations = 20;  // constraint solver; converges in a few for this small scene
+constexpr double kArmFriction = 1.0;   // MuJoCo's default sliding friction: the arm's capsules
+constexpr double kPadFriction = 0.2;   // the finger pads' and the object's own sliding friction
 constexpr double kTorsionalFriction = 0.005;  // every geom's
 constexpr double kRollingFriction = 0.0001;   // every geom's
 constexpr double kObjectContactTime =
-    0.01;  // s, MuJoCo solref time constant of the object-table contact      // constraint solver;
-           // converges in a few for this small scene
+    0.01;  // s, MuJoCo solref time constant of the object-table contact
 
 // The arm as nested bodies, one per joint, each with a capsule from its origin to the next joint.
 std::string arm_mjcf(PadContact pad) {
@@ -139,10 +138,11 @@ std::string scene_mjcf(const ObjectSpec& object, const TableSpec& table,
 <pair geom1="table" geom2="object" condim="3" friction="{mu} {mu} 0.005 0.0001 0.0001" solref="{contact_time} 1"/>
 {arm_pairs}</contact>
 <actuator>)",
-      fmt::arg("timestep", physics.timestep_s), fmt::arg("iterations", kSolverIterations),
-      fmt::arg("contact_time", kObjectContactTime), fmt::arg("damping", kJointDamping),
-      fmt::arg("armature", kArmature), fmt::arg("ox", object_x), fmt::arg("oy", object_y),
-      fmt::arg("half", kTableHalfSize), fmt::arg("ctable", kContactTable),
+      fmt::arg("timestep",
+               pad == PadContact::pushes_object ? physics.slide_timestep_s : physics.timestep_s),
+      fmt::arg("iterations", kSolverIterations), fmt::arg("contact_time", kObjectContactTime),
+      fmt::arg("damping", kJointDamping), fmt::arg("armature", kArmature), fmt::arg("ox", object_x),
+      fmt::arg("oy", object_y), fmt::arg("half", kTableHalfSize), fmt::arg("ctable", kContactTable),
       fmt::arg("cany", kContactTable | kContactArm), fmt::arg("tmu", table.friction),
       fmt::arg("arm", arm_mjcf(pad)), fmt::arg("arm_pairs", arm_contact_pairs(pad, table.friction)),
       fmt::arg("top", table_top), fmt::arg("cx", com[0]), fmt::arg("cy", com[1]),

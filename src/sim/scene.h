@@ -45,7 +45,8 @@ inline constexpr int kContactArm = 4;
 // Which compiled variant of the scene: does the fingertip pad collide with the object?
 enum class PadContact { pushes_object, clear_of_object };
 
-// The MJCF text of the scene for `object` on `table` (for inspection and tests).
+// The MJCF text of the scene for `object` on `table` (for inspection and tests). The variant whose
+// pad pushes is the slide's and steps at `physics.slide_timestep_s`; the other at `timestep_s`.
 std::string scene_mjcf(const ObjectSpec& object, const TableSpec& table,
                        const PhysicsConfig& physics, PadContact pad = PadContact::pushes_object);
 

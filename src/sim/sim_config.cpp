@@ -104,7 +104,8 @@ SimConfig read_sim_config(const YamlReader& f, const YAML::Node& root) {
                 {"limiter_release_s", number_into(f, rec.limiter_release_s, 0.001, 10.0)}});
   rec.sample_rate = static_cast<int>(std::lround(sample_rate));
   read_section(f, root, "physics",
-               {{"timestep_s", number_into(f, c.physics.timestep_s, 0.0005, 0.005)}});
+               {{"timestep_s", number_into(f, c.physics.timestep_s, 0.0005, 0.005)},
+                {"slide_timestep_s", number_into(f, c.physics.slide_timestep_s, 0.0005, 0.005)}});
   return c;
 }
 

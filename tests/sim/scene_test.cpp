@@ -147,11 +147,12 @@ TEST(Scene, EveryPairTheFilterAllowsIsPredefinedWithTheGeomsMixedContactParamete
   }
 }
 
-TEST(Scene, PhysicsTimestepComesFromTheConfig) {
+TEST(Scene, PhysicsTimestepsComeFromTheConfig) {
   PhysicsConfig physics;
   physics.timestep_s = 0.001;
+  physics.slide_timestep_s = 0.004;
   const Scene scene(shipped_catalogue().object("paper_base"), shipped_catalogue().table, physics);
-  EXPECT_DOUBLE_EQ(scene.model(PadContact::pushes_object)->opt.timestep, 0.001);
+  EXPECT_DOUBLE_EQ(scene.model(PadContact::pushes_object)->opt.timestep, 0.004);  // the slide's
   EXPECT_DOUBLE_EQ(scene.model(PadContact::clear_of_object)->opt.timestep, 0.001);
 }
 

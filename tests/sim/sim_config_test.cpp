@@ -38,7 +38,8 @@ TEST(SimConfig, ShippedExampleStatesTheDefaults) {
       {"noise_corner_hz", c.recording.noise_corner_hz, d.recording.noise_corner_hz},
       {"output_gain", c.recording.output_gain, d.recording.output_gain},
       {"friction_gain", c.recording.friction_gain, d.recording.friction_gain},
-      {"timestep_s", c.physics.timestep_s, d.physics.timestep_s}};
+      {"timestep_s", c.physics.timestep_s, d.physics.timestep_s},
+      {"slide_timestep_s", c.physics.slide_timestep_s, d.physics.slide_timestep_s}};
   for (const auto& [name, shipped, built_in] : fields) EXPECT_DOUBLE_EQ(shipped, built_in) << name;
 }
 
@@ -51,6 +52,7 @@ recording:
   noise_dbfs: -80
 physics:
   timestep_s: 0.001
+  slide_timestep_s: 0.0025
 )",
                                        "c.yaml");
   EXPECT_DOUBLE_EQ(c.variability.impact_speed.mean, 0.2);
@@ -58,6 +60,7 @@ physics:
   EXPECT_DOUBLE_EQ(c.microphone.position[2], 3);
   EXPECT_DOUBLE_EQ(c.recording.noise_dbfs, -80);
   EXPECT_DOUBLE_EQ(c.physics.timestep_s, 0.001);
+  EXPECT_DOUBLE_EQ(c.physics.slide_timestep_s, 0.0025);
   EXPECT_DOUBLE_EQ(c.variability.push_speed.mean,
                    SimConfig{}.variability.push_speed.mean);  // untouched
 }
@@ -81,6 +84,10 @@ TEST(SimConfig, ErrorsNameFileLineAndField) {
   const InputError range = error_of("physics:\n  timestep_s: 0.1\n");
   EXPECT_EQ(range.line(), 2);
   EXPECT_NE(range.problem().find("physics.timestep_s"), std::string::npos);
+  const InputError slide_step = error_of("physics:\n  timestep_s: 0.002\n  slide_timestep_s: 0\n");
+  EXPECT_EQ(slide_step.line(), 3);
+  EXPECT_NE(slide_step.problem().find("physics.slide_timestep_s"), std::string::npos)
+      << slide_step.what();
   const InputError corner = error_of("recording:\n  sample_rate: 44100\n  noise_corner_hz: -50\n");
   EXPECT_EQ(corner.line(), 3);
   EXPECT_NE(corner.problem().find("recording.noise_corner_hz"), std::string::npos) << corner.what();
