@@ -61,6 +61,22 @@ TEST(SimulatedRobot, SlidePushesTheObjectAboutFiveCentimetres) {
   }
 }
 
+TEST(SimulatedRobot, SlideStepsAtTheSlideTimestepAndStrikeAtTheOther) {
+  // The synthesis reads each trace at the step it was simulated at: the slide's own and the
+  // strike's, both from the config.
+  SimConfig config;
+  config.physics.timestep_s = 0.002;
+  config.physics.slide_timestep_s = 0.0025;
+  SimulatedRobot robot(shipped_catalogue(), "coffee_mug", config);
+  const ActionOutcome slide = robot.execute("slide", nominal_trial());
+  EXPECT_DOUBLE_EQ(slide.trace.timestep_s, 0.0025);
+  EXPECT_NEAR(slide.trace.duration_s(), slide.duration_s, 1e-9);
+  EXPECT_NEAR(slide.object_displacement[0], 0.05, 0.01);
+  const ActionOutcome strike = robot.execute("strike", nominal_trial());
+  EXPECT_DOUBLE_EQ(strike.trace.timestep_s, 0.002);
+  EXPECT_NEAR(strike.trace.duration_s(), strike.duration_s, 1e-9);
+}
+
 TEST(SimulatedRobot, HeavierObjectHasLongerContactTime) {
   SimConfig config;
   SimulatedRobot mug(shipped_catalogue(), "coffee_mug", config),
