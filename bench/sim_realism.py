@@ -110,14 +110,14 @@ def distance_ratio(mug, cup, rng, resamples):
     between = np.mean(np.abs(mug[:, None, :] - cup[None, :, :]), axis=2)  # [mug, cup]
     within = np.mean(np.abs(cup[:, None, :] - cup[None, :, :]), axis=2)  # [cup, cup]
     n = len(cup)
+    first, second = np.triu_indices(n, 1)  # each pair of two cup clips once
     ratios = []
     for _ in range(resamples):
         m = rng.integers(0, len(mug), len(mug))
         c = rng.integers(0, n, n)
-        w = within[np.ix_(c, c)][np.triu_indices(n, 1)]
-        distinct = w[c[np.triu_indices(n, 1)[0]] != c[np.triu_indices(n, 1)[1]]]
-        ratios.append(between[np.ix_(m, c)].mean() / distinct.mean())
-    return between.mean(), within[np.triu_indices(n, 1)].mean(), (np.percentile(ratios, 5), np.percentile(ratios, 95))
+        distinct = c[first] != c[second]
+        ratios.append(between[np.ix_(m, c)].mean() / within[c[first], c[second]][distinct].mean())
+    return between.mean(), within[first, second].mean(), (np.percentile(ratios, 5), np.percentile(ratios, 95))
 
 
 def seed_template_model(echoplan, data, workdir):
@@ -212,7 +212,8 @@ def level_removed_logmel(sm, path):
 
 def report(args, sm, seed):
     """Synthesises and measures one seed's clips and prints its report; returns its score:
-    {"measures": (met, of), "strike"/"slide": mug-vs-cup ratio, "levels": (met, of)}."""
+    {"measures": (met, of), "strike"/"slide": mug-vs-cup ratio, "strike_logmels"/"slide_logmels":
+    (mug clips', cup clips' level-removed log-mel spectra), "levels": (met, of), "clear_misses": n}."""
     out = os.path.join(args.keep, f"seed{seed}") if args.keep else tempfile.mkdtemp(prefix="echoplan_realism_")
     start = time.time()
     command = [args.echoplan, "dataset", "--per-pair", str(args.per_pair), "--seed", str(seed), "-o", out,
