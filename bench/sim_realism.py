@@ -11,6 +11,9 @@ sound_measures.py (the tool that measured the real recordings), and prints next 
     target's boundary, i.e. where another N clips could as well have decided the other way;
   - strike-minus-slide level per object (lab: 16.9 dB mug, 17.7 dB cup) and the spread of the strikes'
     sample peaks across objects (lab: within 0.3 dB);
+  - how far into a slide its loudest moment comes: (dur20 - t_minus20) / dur20, the share of the time
+    above -20 dB before the peak (not a target; the reference says the lab's slides build up over about
+    a second, and its four peak 53-69% of the way through);
   - the mug-vs-cup between/within log-mel distance ratio per action (lab: 1.5 strike, 1.2 slide; target
     1.0-2.0): mean absolute difference of level-removed mean 64-band log-mel spectra, with its bootstrap
     interval (mug and cup clips resampled);
@@ -269,6 +272,19 @@ def report(args, sm, seed):
     spread = max(peaks.values()) - min(peaks.values())
     print("strike sample peak, median per object (dBFS): " + ", ".join(f"{o} {p:.2f}" for o, p in peaks.items()) +
           f"; spread {spread:.2f} dB (lab 0.3)\n")
+
+    print("slide build-up: onset to peak as a share of dur20, (dur20 - t_minus20) / dur20 (not a target; the "
+          "lab's slides build up over about a second):")
+    build_up_rng = np.random.default_rng([seed, 1])  # its own numbers: the intervals above and below stay
+    for obj in ("coffee_mug", "plastic_cup"):
+        real = REAL[(obj, "slide")]
+        lab = [(d - t) / d for d, t in zip(real["dur20_s"], real["t_minus20_s"])]
+        shares = [(r["dur20_s"] - r["t_minus20_s"]) / r["dur20_s"] for r in measures[(obj, "slide")]
+                  if np.isfinite(r["t_minus20_s"]) and r["dur20_s"] > 0]
+        low, high = median_interval(shares, build_up_rng, args.resamples)
+        print(f"  {obj:<14} {statistics.median(shares):.2f} ({low:.2f} .. {high:.2f}); lab "
+              + " / ".join(f"{v:.2f}" for v in lab))
+    print()
 
     print("mug vs cup, level-removed mean log-mel (64 bands), mean |difference| in dB:")
     for action in ("strike", "slide"):

@@ -29,8 +29,10 @@ struct Segment {
   // divided by zero and sent the arm's joint targets to NaN).
   double progress(double t) const {
     t = std::clamp(t, 0.0, duration_s);
-    const double ta = std::min(ease_in_s, duration_s / 2),
-                 td = std::min(ease_out_s, duration_s / 2);
+    // Ramps longer together than the segment shrink in proportion (a triangle of speed).
+    const double ramps = ease_in_s + ease_out_s;
+    const double squeeze = ramps > duration_s ? duration_s / ramps : 1.0;
+    const double ta = ease_in_s * squeeze, td = ease_out_s * squeeze;
     const double cruise =
         1.0 / (duration_s - ta / 2 - td / 2);  // path shares per second at full speed
     if (t < ta) return 0.5 * cruise * t * t / ta;

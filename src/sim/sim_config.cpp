@@ -56,8 +56,8 @@ SimConfig read_sim_config(const YamlReader& f, const YAML::Node& root) {
   SimConfig c;
   if (root.IsNull()) return c;
   f.expect_map(root, "the sim config");
-  const std::vector<std::string> sections{"variability", "microphone", "room", "recording",
-                                          "physics"};
+  const std::vector<std::string> sections{"variability", "microphone", "room",
+                                          "recording",   "arm",        "physics"};
   f.only_keys(root, sections, "the sim config");
   auto& v = c.variability;
   read_section(
@@ -103,6 +103,14 @@ SimConfig read_sim_config(const YamlReader& f, const YAML::Node& root) {
                 {"limiter_hold_s", number_into(f, rec.limiter_hold_s, 0.0, 10.0)},
                 {"limiter_release_s", number_into(f, rec.limiter_release_s, 0.001, 10.0)}});
   rec.sample_rate = static_cast<int>(std::lround(sample_rate));
+  auto& arm = c.arm;
+  read_section(f, root, "arm",
+               {{"push_accelerate_share", number_into(f, arm.push_accelerate_share, 0.0, 1.0)},
+                {"push_decelerate_share", number_into(f, arm.push_decelerate_share, 0.0, 1.0)}});
+  if (arm.push_accelerate_share + arm.push_decelerate_share > 1.0)
+    f.fail(root["arm"],
+           "push_accelerate_share and push_decelerate_share add up to more than 1: they are shares "
+           "of one push");
   read_section(f, root, "physics",
                {{"timestep_s", number_into(f, c.physics.timestep_s, 0.0005, 0.005)},
                 {"slide_timestep_s", number_into(f, c.physics.slide_timestep_s, 0.0005, 0.005)}});

@@ -1,6 +1,6 @@
 // How the simulated lab varies from trial to trial, where the microphone is, the room, and the
-// recording format: everything about a simulation run that is not the object. Read from an optional
-// YAML file (format in docs/simulator.md); every field has a default.
+// recording format, how the arm moves: everything about a simulation run that is not the object.
+// Read from an optional YAML file (format in docs/simulator.md); every field has a default.
 #pragma once
 
 #include <array>
@@ -34,12 +34,11 @@ struct VariabilityConfig {
       0.085, 0.003};  // m, end-effector height above the table when at the object
   TruncatedGaussian grasp_offset{
       0.0, 0.003};  // m, hand off the object's axis when it closes (each horizontal axis)
-  // m/s, the slide's speed. The report gives only the distance (5 cm). The lab's four slides lasted
-  // 0.95-2.0 s above -20 dB (mean 1.5 s, about 30% around it): slower than 5 cm/s, whose mug slides
-  // fell clearly short of the lab's 1.64 s. 4.2 cm/s lengthens them while the cup's slides stay
-  // within the lab's (docs/simulator.md, "Realism, measured", session 7); the spread, 24%, spans
-  // the lab's durations within two stddev.
-  TruncatedGaussian push_speed{0.042, 0.01};
+  // m/s, the slide's mean speed: 5 cm over the push's duration (its profile is ArmConfig's). The
+  // report gives only the distance. The lab's four slides lasted 0.95-2.0 s above -20 dB (mean 1.5
+  // s, about 30% around it); 3.4 cm/s pushes for 1.5 s, and the spread, 24%, spans the lab's
+  // durations within two stddev (docs/simulator.md, "Realism, measured", sessions 7 and 8).
+  TruncatedGaussian push_speed{0.034, 0.008};
   TruncatedGaussian push_offset{0.0,
                                 0.005};  // m, the pad off the object's centre line across the push
   // Per trial (ObjectPlacement): where the operator put the object.
@@ -87,6 +86,17 @@ struct RecordingConfig {
   double limiter_release_s = 0.5;    // s time constant of its recovery
 };
 
+// How the simulated arm moves: its controller's profiles, the same in every action.
+struct ArmConfig {
+  // The slide's push is one trapezoidal speed profile scaled to the push's duration: it accelerates
+  // from rest over this share of the duration and decelerates to rest over the second share (each
+  // in [0, 1], together at most 1). The lab's slides build up over about a second and peak in their
+  // second half; a push that reaches its speed at once is as loud from its first tenth of a second
+  // (docs/simulator.md, "Realism, measured", session 8).
+  double push_accelerate_share = 0.4;
+  double push_decelerate_share = 0.2;
+};
+
 struct PhysicsConfig {
   double timestep_s = 0.002;  // s, in [0.0005, 0.005]: every action but the slide
   // s, in [0.0005, 0.005]: the slide, a steady push whose contacts change slowly; its sound is
@@ -100,6 +110,7 @@ struct SimConfig {
   MicrophoneConfig microphone;
   RoomConfig room;
   RecordingConfig recording;
+  ArmConfig arm;
   PhysicsConfig physics;
 };
 

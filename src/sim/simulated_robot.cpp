@@ -22,7 +22,12 @@ constexpr double kLiftSpeed = 0.10;      // m/s
 constexpr double kPressDepth = 0.001;    // m the strike's target lies below the resting height
 constexpr double kPadGap = 0.001;        // m between pad and object before the push
 constexpr double kPreSettleTime = 0.04;  // s simulated before the action so the object rests
-constexpr double kSettleTime = 0.2;      // s simulated after the motion so the object comes to rest
+constexpr double kSettleTime = 0.2;      // s simulated after the strike so the object comes to rest
+// s simulated after the push. The pad slows to rest gently (ArmConfig: over the push's last fifth,
+// a few tenths of a m/s^2), and friction (mu g: metres per s^2) would stop an object sliding at a
+// few cm/s within 20 ms anyway, so only the contacts settle. (Less physics than the strike's 0.2 s
+// pays for the lab's longer push: docs/BENCHMARKS.md, "Simulator", session 8.)
+constexpr double kSlideSettleTime = 0.05;
 constexpr double kControlPeriod =
     0.01;                           // s between IK solutions (100 Hz, as the arm's own controller)
 constexpr double kGraspTime = 0.1;  // s for the fingers to close
@@ -31,7 +36,7 @@ constexpr double kLevelTime =
 constexpr double kHoldTime = 0.1;      // s the object is held on the table before the hand opens
 constexpr double kReleaseTime = 0.05;  // s for the fingers to open
 constexpr double kPauseTime = 0.1;     // s at the top of the lift
-constexpr double kEaseTime = 0.15;     // s the arm takes to reach its speed from rest and back
+constexpr double kEaseTime = 0.15;     // s the strike's lift and descent take to reach speed
 constexpr double kReachTolerance =
     0.005;  // m: an IK solution further than this from its target is out of reach
 constexpr double kTrackTolerance =
@@ -232,11 +237,14 @@ ActionOutcome SimulatedRobot::execute(const std::string& action, const ActionVar
     plan.push_back({kSettleTime, bottom, bottom, upright, upright, 0, 0});
   } else {
     const Eigen::Vector3d end = at_object + Eigen::Vector3d(kActionDistance + kPadGap, 0, 0);
-    Segment push{(kActionDistance + kPadGap) / p.push_speed + kEaseTime, at_object, end, upright,
-                 upright};
-    push.ease_in_s = push.ease_out_s = kEaseTime;
+    // The push's duration is its distance at the drawn mean speed; the arm's profile is scaled to
+    // it, so a slower push also builds up more slowly (ArmConfig).
+    const double push_time = (kActionDistance + kPadGap) / p.push_speed;
+    Segment push{push_time, at_object, end, upright, upright};
+    push.ease_in_s = config_.arm.push_accelerate_share * push_time;
+    push.ease_out_s = config_.arm.push_decelerate_share * push_time;
     plan.push_back(push);
-    plan.push_back({kSettleTime, end, end, upright, upright});
+    plan.push_back({kSlideSettleTime, end, end, upright, upright});
   }
 
   // Dynamics: joint servos track targets from DLS on the kinematic copy (100 Hz, ramped in

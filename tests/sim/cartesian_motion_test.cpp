@@ -35,6 +35,34 @@ TEST(Segment, TrapezoidalProgressStartsAndEndsAtRestAndCruisesAtConstantSpeed) {
   }
 }
 
+// The slide's push accelerates for longer than it decelerates (ArmConfig's shares).
+TEST(Segment, AsymmetricRampsReachCruiseWhereTheEaseInEnds) {
+  Segment s{};
+  s.duration_s = 2.0;
+  s.ease_in_s = 0.8;
+  s.ease_out_s = 0.4;
+  const double cruise = 1.0 / (2.0 - 0.4 - 0.2);  // path shares per second at full speed
+  EXPECT_NEAR(s.progress(0.8), 0.5 * cruise * 0.8, 1e-12);
+  EXPECT_NEAR(s.progress(1.6), 0.5 * cruise * 0.8 + 0.8 * cruise, 1e-12);
+  EXPECT_NEAR(s.progress(2.0), 1.0, 1e-12);
+  // Speed (numerical) halfway up the ramp is half the cruise; the top is reached only at 0.8 s.
+  EXPECT_NEAR((s.progress(0.401) - s.progress(0.399)) / 0.002, 0.5 * cruise, 1e-6);
+  EXPECT_NEAR((s.progress(1.201) - s.progress(1.199)) / 0.002, cruise, 1e-9);
+}
+
+// Ramps that together outlast the segment shrink in proportion: the speed rises and falls as a
+// triangle peaking where the ramps meet, and the whole path is still covered.
+TEST(Segment, RampsLongerThanTheSegmentShrinkInProportion) {
+  Segment s{};
+  s.duration_s = 1.0;
+  s.ease_in_s = 0.9;
+  s.ease_out_s = 0.3;  // squeezed to 0.75 and 0.25
+  const double top = 1.0 / (1.0 - 0.375 - 0.125);
+  EXPECT_NEAR(s.progress(0.75), 0.5 * top * 0.75, 1e-12);
+  EXPECT_NEAR(s.progress(1.0), 1.0, 1e-12);
+  EXPECT_NEAR((s.progress(0.7501) - s.progress(0.7499)) / 0.0002, top, 1e-3);
+}
+
 TEST(Segment, WithoutEasingTheSpeedIsConstant) {
   Segment s{};
   s.duration_s = 2.0;

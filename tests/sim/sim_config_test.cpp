@@ -38,6 +38,8 @@ TEST(SimConfig, ShippedExampleStatesTheDefaults) {
       {"noise_corner_hz", c.recording.noise_corner_hz, d.recording.noise_corner_hz},
       {"output_gain", c.recording.output_gain, d.recording.output_gain},
       {"friction_gain", c.recording.friction_gain, d.recording.friction_gain},
+      {"push_accelerate_share", c.arm.push_accelerate_share, d.arm.push_accelerate_share},
+      {"push_decelerate_share", c.arm.push_decelerate_share, d.arm.push_decelerate_share},
       {"timestep_s", c.physics.timestep_s, d.physics.timestep_s},
       {"slide_timestep_s", c.physics.slide_timestep_s, d.physics.slide_timestep_s}};
   for (const auto& [name, shipped, built_in] : fields) EXPECT_DOUBLE_EQ(shipped, built_in) << name;
@@ -50,6 +52,9 @@ microphone:
   position: [1, 2, 3]
 recording:
   noise_dbfs: -80
+arm:
+  push_accelerate_share: 0.6
+  push_decelerate_share: 0.4
 physics:
   timestep_s: 0.001
   slide_timestep_s: 0.0025
@@ -61,6 +66,8 @@ physics:
   EXPECT_DOUBLE_EQ(c.recording.noise_dbfs, -80);
   EXPECT_DOUBLE_EQ(c.physics.timestep_s, 0.001);
   EXPECT_DOUBLE_EQ(c.physics.slide_timestep_s, 0.0025);
+  EXPECT_DOUBLE_EQ(c.arm.push_accelerate_share, 0.6);
+  EXPECT_DOUBLE_EQ(c.arm.push_decelerate_share, 0.4);
   EXPECT_DOUBLE_EQ(c.variability.push_speed.mean,
                    SimConfig{}.variability.push_speed.mean);  // untouched
 }
@@ -88,6 +95,14 @@ TEST(SimConfig, ErrorsNameFileLineAndField) {
   EXPECT_EQ(slide_step.line(), 3);
   EXPECT_NE(slide_step.problem().find("physics.slide_timestep_s"), std::string::npos)
       << slide_step.what();
+  const InputError share = error_of("arm:\n  push_accelerate_share: 1.5\n");
+  EXPECT_EQ(share.line(), 2);
+  EXPECT_NE(share.problem().find("arm.push_accelerate_share"), std::string::npos) << share.what();
+  // Each share in range, but together more than the push.
+  const InputError shares =
+      error_of("arm:\n  push_accelerate_share: 0.7\n  push_decelerate_share: 0.4\n");
+  EXPECT_EQ(shares.line(), 2);
+  EXPECT_NE(shares.problem().find("add up to more than 1"), std::string::npos) << shares.what();
   const InputError corner = error_of("recording:\n  sample_rate: 44100\n  noise_corner_hz: -50\n");
   EXPECT_EQ(corner.line(), 3);
   EXPECT_NE(corner.problem().find("recording.noise_corner_hz"), std::string::npos) << corner.what();

@@ -77,6 +77,35 @@ TEST(SimulatedRobot, SlideStepsAtTheSlideTimestepAndStrikeAtTheOther) {
   EXPECT_NEAR(strike.trace.duration_s(), strike.duration_s, 1e-9);
 }
 
+// The share of an object's slide covered in the first 30% of the push.
+double share_slid_early(const ActionOutcome& out, double push_s) {
+  double early = 0, total = 0;
+  for (int k = 0; k < out.trace.steps; ++k) {
+    const double d = out.trace.sliding_speed[k] * out.trace.timestep_s;
+    total += d;
+    if ((k + 1) * out.trace.timestep_s <= 0.3 * push_s) early += d;
+  }
+  return early / total;
+}
+
+TEST(SimulatedRobot, SlidePushLastsItsDistanceAtTheMeanSpeedAndBuildsUpOverItsShare) {
+  const double push_s = 0.051 / nominal_trial().push_speed;  // 5 cm and the 1 mm pad gap
+  SimConfig config;  // accelerates over 40% of the push, decelerates over 20%
+  SimulatedRobot robot(shipped_catalogue(), "plastic_cup", config);
+  const ActionOutcome slow_start = robot.execute("slide", nominal_trial());
+  EXPECT_NEAR(slow_start.duration_s, push_s + 0.05, 0.01);  // and 0.05 s to settle
+  EXPECT_NEAR(slow_start.object_displacement[0], 0.05, 0.01);
+  // The pad covers 16% of its path in the first 30% of the push (1 mm of it to reach the object).
+  EXPECT_LT(share_slid_early(slow_start, push_s), 0.2);
+
+  config.arm.push_accelerate_share = config.arm.push_decelerate_share = 0.1;
+  SimulatedRobot quick(shipped_catalogue(), "plastic_cup", config);
+  const ActionOutcome quick_start = quick.execute("slide", nominal_trial());
+  EXPECT_NEAR(quick_start.duration_s, push_s + 0.05, 0.01);
+  EXPECT_NEAR(quick_start.object_displacement[0], 0.05, 0.01);
+  EXPECT_GT(share_slid_early(quick_start, push_s), 0.22);  // 28% of the pad's path
+}
+
 TEST(SimulatedRobot, HeavierObjectHasLongerContactTime) {
   SimConfig config;
   SimulatedRobot mug(shipped_catalogue(), "coffee_mug", config),
