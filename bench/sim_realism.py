@@ -8,7 +8,9 @@ sound_measures.py (the tool that measured the real recordings), and prints next 
   - each measure's median and range for the mug and cup strikes and slides, and whether the median is
     within the real range or within 25% (3 dB for dB measures) of the real mean; with a 90% bootstrap
     interval of the median (the clips resampled), and "edge" where that interval reaches across the
-    target's boundary, i.e. where another N clips could as well have decided the other way;
+    target's boundary, i.e. where another N clips could as well have decided the other way; and where
+    each real recording falls among the simulated clips (the share of clips at or below it: near 0 or
+    100, the simulator seldom gives that recording's value);
   - strike-minus-slide level per object (lab: 16.9 dB mug, 17.7 dB cup) and the spread of the strikes'
     sample peaks across objects (lab: within 0.3 dB);
   - how far into a slide its loudest moment comes: (dur20 - t_minus20) / dur20, the share of the time
@@ -17,6 +19,9 @@ sound_measures.py (the tool that measured the real recordings), and prints next 
   - the mug-vs-cup between/within log-mel distance ratio per action (lab: 1.5 strike, 1.2 slide; target
     1.0-2.0): mean absolute difference of level-removed mean 64-band log-mel spectra, with its bootstrap
     interval (mug and cup clips resampled);
+  - the same ratio as the lab could measure it, from one mug clip and three cup clips (its recordings):
+    the spread of that over random draws, and how often it reaches the lab's value (is the lab's one
+    measurement surprising under the simulator?);
   - leave-one-out accuracy of the perception module's `seed-template` classifier (the seed's rule: mean
     logfbank template per object, nearest by mean absolute difference; docs/perception.md) on the four
     objects, as `echoplan train --classifier seed-template --folds 0 --no-reject` reports it, and the
@@ -121,6 +126,30 @@ def distance_ratio(mug, cup, rng, resamples):
         distinct = c[first] != c[second]
         ratios.append(between[np.ix_(m, c)].mean() / within[c[first], c[second]][distinct].mean())
     return between.mean(), within[first, second].mean(), (np.percentile(ratios, 5), np.percentile(ratios, 95))
+
+
+def lab_sized_ratios(mug, cup, rng, draws):
+    """The ratio as the lab could measure it, from one mug clip and three cup clips (its recordings): per
+    draw one mug clip and three distinct cup clips at random, the mean of the three mug-cup distances
+    over the mean of the three cup-cup ones. Their spread says how far one such measurement falls from
+    the simulator's ratio by chance alone."""
+    mug, cup = np.asarray(mug), np.asarray(cup)
+    between = np.mean(np.abs(mug[:, None, :] - cup[None, :, :]), axis=2)
+    within = np.mean(np.abs(cup[:, None, :] - cup[None, :, :]), axis=2)
+    ratios = np.empty(draws)
+    for k in range(draws):
+        m = rng.integers(0, len(mug))
+        a, b, c = rng.choice(len(cup), size=3, replace=False)
+        ratios[k] = between[m, [a, b, c]].mean() / np.mean([within[a, b], within[a, c], within[b, c]])
+    return ratios
+
+
+def print_lab_sized(action, mug, cup, rng, draws):
+    ratios = lab_sized_ratios(mug, cup, rng, draws)
+    lab = LAB_RATIO[action]
+    print(f"  {action:<7} as the lab measured it (1 mug clip, 3 cup clips; {draws} draws): median "
+          f"{np.median(ratios):.2f}, 90% of draws {np.percentile(ratios, 5):.2f} .. {np.percentile(ratios, 95):.2f}; "
+          f"the lab's {lab} or more in {100 * np.mean(ratios >= lab):.0f}% of draws")
 
 
 def seed_template_model(echoplan, data, workdir):
@@ -233,7 +262,8 @@ def report(args, sm, seed):
     score = {}
 
     rng = np.random.default_rng(seed)
-    print("measure            sim median (90% interval) [min .. max]              real                 met")
+    print("measure            sim median (90% interval) [min .. max]              real                 met"
+          "          real's percentile among the sim clips")
     total = passed = clear_misses = 0
     for (obj, action), real in REAL.items():
         print(f"-- {obj} {action}")
@@ -247,8 +277,11 @@ def report(args, sm, seed):
             passed += ok
             clear_misses += clear_miss
             real_text = " / ".join(f"{v:g}" for v in values)
+            # Where each real recording falls among the simulated clips: a value the simulator gives in
+            # a fair share of its clips is not surprising as one recording, whatever the median does.
+            percentiles = " / ".join(f"{100 * np.mean(np.asarray(sim) <= v):.0f}" for v in values)
             print(f"{m:<18} {med:>9.4g} ({interval[0]:.4g} .. {interval[1]:.4g}) [{min(sim):.4g} .. {max(sim):.4g}]"
-                  .ljust(70) + f"{real_text:<20} {verdict}")
+                  .ljust(70) + f"{real_text:<20} {verdict:<12} {percentiles}")
     print(f"\n{passed} of {total} measure targets met, {clear_misses} clearly missed (n_hits: median single hit; "
           "edge: the median's 90% bootstrap interval reaches across the target)\n")
     score["measures"] = (passed, total)
@@ -299,6 +332,9 @@ def report(args, sm, seed):
         print(f"  {action:<7} between {between:.2f}, within cup {within:.2f}: ratio {ratio:.2f} "
               f"({interval[0]:.2f} .. {interval[1]:.2f}) (lab {LAB_RATIO[action]}; target 1.0-2.0: "
               f"{verdict})")
+    lab_sized_rng = np.random.default_rng([seed, 2])  # its own numbers, as the build-up's
+    for action in ("strike", "slide"):
+        print_lab_sized(action, *score[action + "_logmels"], lab_sized_rng, args.resamples)
 
     print("\nseed-template classifier (echoplan train --classifier seed-template --folds 0 --no-reject), "
           "leave-one-out over the four objects:")
@@ -368,6 +404,7 @@ def main():
             print(f"pooled over the seeds ({len(mug)} mug and {len(cup)} cup clips): {action} ratio "
                   f"{between / within:.2f} ({interval[0]:.2f} .. {interval[1]:.2f}) (lab {LAB_RATIO[action]}; "
                   f"target 1.0-2.0: {verdict})")
+            print_lab_sized(action, mug, cup, np.random.default_rng([len(seeds), 2]), args.resamples)
 
 
 if __name__ == "__main__":
