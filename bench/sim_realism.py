@@ -110,13 +110,19 @@ def median_interval(values, rng, resamples):
     return np.percentile(medians, 5), np.percentile(medians, 95)
 
 
+def distances(mug, cup):
+    """Mean absolute log-mel differences of every mug clip to every cup clip ([mug, cup]) and of every cup
+    clip to every other ([cup, cup])."""
+    mug, cup = np.asarray(mug), np.asarray(cup)
+    return (np.mean(np.abs(mug[:, None, :] - cup[None, :, :]), axis=2),
+            np.mean(np.abs(cup[:, None, :] - cup[None, :, :]), axis=2))
+
+
 def distance_ratio(mug, cup, rng, resamples):
     """Mean absolute log-mel difference between mug and cup clips and between two cup clips, and the 90%
     bootstrap interval of their ratio: mug and cup clips resampled with replacement, a resampled clip
     never paired with a copy of itself."""
-    mug, cup = np.asarray(mug), np.asarray(cup)
-    between = np.mean(np.abs(mug[:, None, :] - cup[None, :, :]), axis=2)  # [mug, cup]
-    within = np.mean(np.abs(cup[:, None, :] - cup[None, :, :]), axis=2)  # [cup, cup]
+    between, within = distances(mug, cup)
     n = len(cup)
     first, second = np.triu_indices(n, 1)  # each pair of two cup clips once
     ratios = []
@@ -133,9 +139,7 @@ def lab_sized_ratios(mug, cup, rng, draws):
     draw one mug clip and three distinct cup clips at random, the mean of the three mug-cup distances
     over the mean of the three cup-cup ones. Their spread says how far one such measurement falls from
     the simulator's ratio by chance alone."""
-    mug, cup = np.asarray(mug), np.asarray(cup)
-    between = np.mean(np.abs(mug[:, None, :] - cup[None, :, :]), axis=2)
-    within = np.mean(np.abs(cup[:, None, :] - cup[None, :, :]), axis=2)
+    between, within = distances(mug, cup)
     ratios = np.empty(draws)
     for k in range(draws):
         m = rng.integers(0, len(mug))
@@ -145,6 +149,9 @@ def lab_sized_ratios(mug, cup, rng, draws):
 
 
 def print_lab_sized(action, mug, cup, rng, draws):
+    if len(cup) < 3:
+        print(f"  {action:<7} as the lab measured it: needs at least 3 cup clips (--per-pair 3)")
+        return
     ratios = lab_sized_ratios(mug, cup, rng, draws)
     lab = LAB_RATIO[action]
     print(f"  {action:<7} as the lab measured it (1 mug clip, 3 cup clips; {draws} draws): median "
@@ -314,9 +321,12 @@ def report(args, sm, seed):
         lab = [(d - t) / d for d, t in zip(real["dur20_s"], real["t_minus20_s"])]
         shares = [(r["dur20_s"] - r["t_minus20_s"]) / r["dur20_s"] for r in measures[(obj, "slide")]
                   if np.isfinite(r["t_minus20_s"]) and r["dur20_s"] > 0]
+        lab_text = " / ".join(f"{v:.2f}" for v in lab)
+        if not shares:
+            print(f"  {obj:<14} no slide fell 20 dB below its peak; lab {lab_text}")
+            continue
         low, high = median_interval(shares, build_up_rng, args.resamples)
-        print(f"  {obj:<14} {statistics.median(shares):.2f} ({low:.2f} .. {high:.2f}); lab "
-              + " / ".join(f"{v:.2f}" for v in lab))
+        print(f"  {obj:<14} {statistics.median(shares):.2f} ({low:.2f} .. {high:.2f}); lab {lab_text}")
     print()
 
     print("mug vs cup, level-removed mean log-mel (64 bands), mean |difference| in dB:")
