@@ -118,41 +118,40 @@ def distances(mug, cup):
             np.mean(np.abs(cup[:, None, :] - cup[None, :, :]), axis=2))
 
 
-def distance_ratio(mug, cup, rng, resamples):
-    """Mean absolute log-mel difference between mug and cup clips and between two cup clips, and the 90%
-    bootstrap interval of their ratio: mug and cup clips resampled with replacement, a resampled clip
-    never paired with a copy of itself."""
-    between, within = distances(mug, cup)
-    n = len(cup)
+def distance_ratio(between, within, rng, resamples):
+    """From the distances() matrices: mean absolute log-mel difference between mug and cup clips and
+    between two cup clips, and the 90% bootstrap interval of their ratio: mug and cup clips resampled
+    with replacement, a resampled clip never paired with a copy of itself."""
+    n_mug, n = between.shape
     first, second = np.triu_indices(n, 1)  # each pair of two cup clips once
     ratios = []
     for _ in range(resamples):
-        m = rng.integers(0, len(mug), len(mug))
+        m = rng.integers(0, n_mug, n_mug)
         c = rng.integers(0, n, n)
         distinct = c[first] != c[second]
         ratios.append(between[np.ix_(m, c)].mean() / within[c[first], c[second]][distinct].mean())
     return between.mean(), within[first, second].mean(), (np.percentile(ratios, 5), np.percentile(ratios, 95))
 
 
-def lab_sized_ratios(mug, cup, rng, draws):
+def lab_sized_ratios(between, within, rng, draws):
     """The ratio as the lab could measure it, from one mug clip and three cup clips (its recordings): per
     draw one mug clip and three distinct cup clips at random, the mean of the three mug-cup distances
     over the mean of the three cup-cup ones. Their spread says how far one such measurement falls from
-    the simulator's ratio by chance alone."""
-    between, within = distances(mug, cup)
+    the simulator's ratio by chance alone. `between`, `within`: the distances() matrices."""
+    n_mug, n_cup = between.shape
     ratios = np.empty(draws)
     for k in range(draws):
-        m = rng.integers(0, len(mug))
-        a, b, c = rng.choice(len(cup), size=3, replace=False)
+        m = rng.integers(0, n_mug)
+        a, b, c = rng.choice(n_cup, size=3, replace=False)
         ratios[k] = between[m, [a, b, c]].mean() / np.mean([within[a, b], within[a, c], within[b, c]])
     return ratios
 
 
-def print_lab_sized(action, mug, cup, rng, draws):
-    if len(cup) < 3:
+def print_lab_sized(action, between, within, rng, draws):
+    if between.shape[1] < 3:
         print(f"  {action:<7} as the lab measured it: needs at least 3 cup clips (--per-pair 3)")
         return
-    ratios = lab_sized_ratios(mug, cup, rng, draws)
+    ratios = lab_sized_ratios(between, within, rng, draws)
     lab = LAB_RATIO[action]
     print(f"  {action:<7} as the lab measured it (1 mug clip, 3 cup clips; {draws} draws): median "
           f"{np.median(ratios):.2f}, 90% of draws {np.percentile(ratios, 5):.2f} .. {np.percentile(ratios, 95):.2f}; "
@@ -330,10 +329,12 @@ def report(args, sm, seed):
     print()
 
     print("mug vs cup, level-removed mean log-mel (64 bands), mean |difference| in dB:")
+    matrices = {}
     for action in ("strike", "slide"):
         mug = [level_removed_logmel(sm, f) for f in files[("coffee_mug", action)]]
         cup = [level_removed_logmel(sm, f) for f in files[("plastic_cup", action)]]
-        between, within, interval = distance_ratio(mug, cup, rng, args.resamples)
+        matrices[action] = distances(mug, cup)
+        between, within, interval = distance_ratio(*matrices[action], rng, args.resamples)
         ratio = between / within
         _, verdict, clear_miss = judge(ratio, interval, (1.0, 2.0))
         score[action] = ratio
@@ -344,7 +345,7 @@ def report(args, sm, seed):
               f"{verdict})")
     lab_sized_rng = np.random.default_rng([seed, 2])  # its own numbers, as the build-up's
     for action in ("strike", "slide"):
-        print_lab_sized(action, *score[action + "_logmels"], lab_sized_rng, args.resamples)
+        print_lab_sized(action, *matrices[action], lab_sized_rng, args.resamples)
 
     print("\nseed-template classifier (echoplan train --classifier seed-template --folds 0 --no-reject), "
           "leave-one-out over the four objects:")
@@ -409,12 +410,13 @@ def main():
         for action in ("strike", "slide"):
             mug = [v for sc in scores.values() for v in sc[action + "_logmels"][0]]
             cup = [v for sc in scores.values() for v in sc[action + "_logmels"][1]]
-            between, within, interval = distance_ratio(mug, cup, rng, args.resamples)
+            matrices = distances(mug, cup)
+            between, within, interval = distance_ratio(*matrices, rng, args.resamples)
             _, verdict, _ = judge(between / within, interval, (1.0, 2.0))
             print(f"pooled over the seeds ({len(mug)} mug and {len(cup)} cup clips): {action} ratio "
                   f"{between / within:.2f} ({interval[0]:.2f} .. {interval[1]:.2f}) (lab {LAB_RATIO[action]}; "
                   f"target 1.0-2.0: {verdict})")
-            print_lab_sized(action, mug, cup, np.random.default_rng([len(seeds), 2]), args.resamples)
+            print_lab_sized(action, *matrices, np.random.default_rng([len(seeds), 2]), args.resamples)
 
 
 if __name__ == "__main__":

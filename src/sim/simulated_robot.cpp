@@ -236,10 +236,11 @@ ActionOutcome SimulatedRobot::execute(const std::string& action, const ActionVar
     plan.push_back({kReleaseTime, bottom, bottom, upright, upright, 1, 0});
     plan.push_back({kSettleTime, bottom, bottom, upright, upright, 0, 0});
   } else {
-    const Eigen::Vector3d end = at_object + Eigen::Vector3d(kActionDistance + kPadGap, 0, 0);
+    const double push_distance = kActionDistance + kPadGap;  // the pad first closes its gap
+    const Eigen::Vector3d end = at_object + Eigen::Vector3d(push_distance, 0, 0);
     // The push's duration is its distance at the drawn mean speed; the arm's profile is scaled to
     // it, so a slower push also builds up more slowly (ArmConfig).
-    const double push_time = (kActionDistance + kPadGap) / p.push_speed;
+    const double push_time = push_distance / p.push_speed;
     Segment push{push_time, at_object, end, upright, upright};
     push.ease_in_s = config_.arm.push_accelerate_share * push_time;
     push.ease_out_s = config_.arm.push_decelerate_share * push_time;
