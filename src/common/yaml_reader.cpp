@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "common/file_io.h"
 
 namespace echoplan {
 
@@ -21,19 +22,6 @@ std::string bound_text(double x) {
 }
 
 }  // namespace
-
-std::string read_text_file(const std::string& path, const std::string& what) {
-  // A directory opens as a stream on Linux and reads as empty; say what is really wrong.
-  std::error_code ec;
-  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
-    throw InputError(path, 0, "not a regular file; expected the " + what);
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open the " + what);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 YAML::Node parse_yaml(const std::string& text, const std::string& source) {
   try {

@@ -28,10 +28,6 @@
 
 namespace echoplan {
 
-// The whole text of the file at `path`; InputError(path, 0, "cannot open the <what>") if it cannot
-// be read (also for a directory).
-std::string read_text_file(const std::string& path, const std::string& what);
-
 // Parses YAML `text` read from `source`; a syntax error throws InputError(source, line, "not valid
 // YAML: ..."). An empty text gives a null node.
 YAML::Node parse_yaml(const std::string& text, const std::string& source);

@@ -12,6 +12,7 @@
 #include "common/data_dir.h"
 #include "common/error.h"
 #include "common/stable_hash.h"
+#include "common/file_io.h"
 #include "common/yaml_reader.h"
 #include "perception/observation_model.h"
 #include "solvers/make_solver.h"
@@ -38,11 +39,7 @@ bool is_label(const std::string& name) {
 // A fingerprint of a file's bytes, as 16 hex digits; "" when the path is empty.
 std::string content_hash(const std::string& path) {
   if (path.empty()) return "";
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open");
-  std::stringstream bytes;
-  bytes << in.rdbuf();
-  return fmt::format("{:016x}", stable_hash(bytes.str()));
+  return fmt::format("{:016x}", stable_hash(read_text_file(path, "file")));
 }
 
 CampaignConfig read_campaign(const std::string& yaml_text, const std::string& source);

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "common/file_io.h"
 
 namespace echoplan::experiment {
 
@@ -18,19 +19,6 @@ namespace fs = std::filesystem;
 
 nlohmann::json observation_json(const pomdp::Observation& o) {
   return {{"index", o.index}, {"values", o.values}};
-}
-
-// Writes all of `text` to `fd`, retrying short writes.
-void write_all(int fd, const std::string& text, const fs::path& path) {
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      throw InputError(path.string(), 0, std::string("writing failed: ") + std::strerror(errno));
-    }
-    done += static_cast<std::size_t>(n);
-  }
 }
 
 }  // namespace
@@ -103,11 +91,9 @@ JournalEntry journal_entry_from_json(const nlohmann::json& j, const std::string&
 
 std::vector<JournalEntry> read_journal(const fs::path& path) {
   std::vector<JournalEntry> entries;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return entries;
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  std::error_code error;
+  if (!fs::exists(path, error)) return entries;
+  const std::string text = read_text_file(path.string(), "trial journal");
   std::size_t start = 0;
   int line = 0;
   while (true) {
@@ -126,33 +112,16 @@ std::vector<JournalEntry> read_journal(const fs::path& path) {
 }
 
 void write_journal(const fs::path& path, const std::vector<JournalEntry>& entries) {
-  const fs::path temporary = path.string() + ".tmp";
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0)
-    throw InputError(temporary.string(), 0, std::string("cannot write: ") + std::strerror(errno));
   std::string text;
   for (const JournalEntry& e : entries) text += to_json(e).dump() + '\n';
-  try {
-    write_all(fd, text, temporary);
-  } catch (...) {
-    ::close(fd);
-    throw;
-  }
-  ::fsync(fd);
-  ::close(fd);
-  std::error_code error;
-  fs::rename(temporary, path, error);
-  if (error) throw InputError(path.string(), 0, "cannot replace: " + error.message());
+  write_file_atomically(path, text);
 }
 
 TrialJournal::TrialJournal(fs::path path) : path_(std::move(path)) {
   // Cut a torn last line off, so appended lines start on a line of their own.
   std::error_code error;
   if (fs::exists(path_, error)) {
-    std::ifstream in(path_, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    const std::string text = buffer.str();
+    const std::string text = read_text_file(path_.string(), "trial journal");
     const std::size_t keep = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
     if (keep != text.size()) fs::resize_file(path_, keep, error);
     if (error) throw InputError(path_.string(), 0, "cannot repair the journal: " + error.message());

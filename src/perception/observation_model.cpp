@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "common/file_io.h"
 #include "common/rng.h"
 #include "perception/json_fields.h"
 
@@ -486,11 +487,7 @@ ObservationModel load_observation_model(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InputError(path, 0, "is a folder; expected a model file (JSON)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open the model file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_observation_model(text.str(), path);
+  return parse_observation_model(read_text_file(path, "model file"), path);
 }
 
 ObservationModel parse_observation_model(const std::string& text, const std::string& source) {
@@ -512,18 +509,8 @@ ObservationModel parse_observation_model(const std::string& text, const std::str
 }
 
 void save_observation_model(const ObservationModel& model, const std::string& path) {
-  // Written under a temporary name and renamed, so an interrupted save never leaves half a model.
-  const std::string partial = path + ".part";
-  {
-    std::ofstream out(partial, std::ios::trunc);
-    if (!out) throw InputError(path, 0, "cannot write the model file");
-    out << model.to_json().dump() << '\n';
-    if (!out) throw InputError(path, 0, "could not finish writing the model file");
-  }
-  std::error_code ec;
-  std::filesystem::rename(partial, path, ec);
-  if (ec)
-    throw InputError(path, 0, "cannot move the finished model file into place: " + ec.message());
+  // An interrupted save never leaves half a model.
+  write_file_atomically(path, model.to_json().dump() + '\n');
 }
 
 // ---------------------------------------------------------------------------------------------------------

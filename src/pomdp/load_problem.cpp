@@ -1,6 +1,7 @@
 // load_problem(): the reader for a problem file, chosen by its extension.
 #include <string>
 
+#include "common/file_io.h"
 #include "common/yaml_reader.h"
 #include "pomdp/cassandra_reader.h"
 #include "pomdp/problem.h"

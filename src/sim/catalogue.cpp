@@ -11,6 +11,7 @@
 
 #include "common/data_dir.h"
 #include "common/error.h"
+#include "common/file_io.h"
 #include "common/yaml_reader.h"
 
 namespace echoplan::sim {

@@ -11,6 +11,7 @@
 
 #include "audio/io.h"
 #include "common/error.h"
+#include "common/file_io.h"
 #include "common/rng.h"
 #include "common/stable_hash.h"
 #include "sim/simulated_recorder.h"
@@ -107,11 +108,7 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
         const fs::path final_path = root / relative;
         const fs::path partial = final_path.string() + ".part";
         audio::write_audio(partial.string(), r.clip, audio::WriteOptions{});
-        std::error_code rename_error;
-        fs::rename(partial, final_path, rename_error);
-        if (rename_error)
-          throw InputError(final_path.string(), 0,
-                           "cannot move the finished file into place: " + rename_error.message());
+        move_into_place(partial, final_path);
         std::string row = fmt::format("{},{},{},{},{},{:.4f},{}", relative, job.object, job.action,
                                       seed, r.outcome.collision() ? 1 : 0, r.outcome.duration_s,
                                       r.outcome.trace.impacts.size());

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "common/file_io.h"
 #include "common/yaml_reader.h"
 
 namespace echoplan::sim {

@@ -8,6 +8,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "common/rng.h"
+
 namespace echoplan::solvers {
 
 namespace {
@@ -18,15 +20,6 @@ constexpr double kZero = 0.0;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// splitmix64: the codes only need to be fixed and well mixed, not drawn from the user's seed (they
-// do not change any result, only how nodes are found).
-std::uint64_t splitmix64(std::uint64_t& x) {
-  std::uint64_t z = (x += 0x9e3779b97f4a7c15ULL);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
 }
 
 // The default node cap: about 2 GB of beliefs and bounds.
@@ -143,9 +136,11 @@ IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m,
     pair_bound_ = PairRelaxationBound(tables, options_.pair_relaxation);
   }
 
+  // The codes only need to be fixed and well mixed, not drawn from the user's seed (they do not
+  // change any result, only how nodes are found).
   std::uint64_t state = 0x6964656e74696679ULL;  // "identify"
   pair_code_.resize(std::size_t(A) * O);
-  for (Key& k : pair_code_) k = Key{splitmix64(state), splitmix64(state)};
+  for (Key& k : pair_code_) k = Key{splitmix64_next(state), splitmix64_next(state)};
 
   std::vector<double> b0_all = m.initial_belief();
   std::vector<double> b0(L);

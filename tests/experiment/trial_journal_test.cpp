@@ -119,7 +119,7 @@ TEST(TrialJournal, WriteJournalReplacesTheFile) {
   ASSERT_EQ(back.size(), 2u);
   EXPECT_EQ(back[0].id, 1);
   EXPECT_EQ(back[1].id, 2);
-  EXPECT_FALSE(fs::exists(path.string() + ".tmp"));
+  EXPECT_FALSE(fs::exists(path.string() + ".part"));
 }
 
 }  // namespace

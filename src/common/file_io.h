@@ -1,0 +1,28 @@
+// Whole files in and out, the one way the project does it: read a text file whole, and put a
+// finished file in place so that a reader (or a run interrupted half-way) never sees half of it.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace echoplan {
+
+// The whole text of the file at `path`; InputError(path, 0, "cannot open the <what>") if it cannot
+// be read (also for a directory).
+std::string read_text_file(const std::string& path, const std::string& what);
+
+// Moves the finished file `partial` onto `path` in one rename (atomic on one file system), so
+// `path` is always either the old file or the whole new one. InputError naming `path` when it
+// cannot.
+void move_into_place(const std::filesystem::path& partial, const std::filesystem::path& path);
+
+// Writes all of `text` to the open file descriptor `fd` (retrying short writes); InputError naming
+// `path` when it fails.
+void write_all(int fd, std::string_view text, const std::filesystem::path& path);
+
+// Writes `text` to `path` through a temporary file beside it (`path`.part, flushed to disk, then
+// move_into_place). InputError naming `path` when it cannot be written.
+void write_file_atomically(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace echoplan
