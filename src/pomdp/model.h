@@ -6,7 +6,7 @@
 // choice comes from the `Rng&` passed in, so a rollout can be replayed from its seed.
 //
 // Essential (every model):   spec(), sample_initial_state(), step(), observation_likelihood().
-// Optional (sensible default): heuristic_value(), tabular().
+// Optional (sensible default): heuristic_value(), tabular(), object_identification().
 #pragma once
 
 #include <memory>
@@ -16,6 +16,8 @@
 #include "common/rng.h"
 
 namespace echoplan::pomdp {
+
+class ObjectIdentificationModel;
 
 // A state: a vector of continuous variables (joint angles, object offset, ...) and one of discrete
 // ones (object identity, ...). `StateSpec` names them. For a tabular problem, discrete[0] is the
@@ -106,6 +108,11 @@ class Model {
   // deterministic continuous part (arm joints, object offset) fill it in from their initial
   // configuration. Used by ExactBelief to hand solvers states they can step.
   virtual State tabular_state(int s) const { return State{{}, {s}}; }
+
+  // The model as an object-identification problem (named objects, sensing and sorting actions),
+  // when it is one; nullptr otherwise. What the closed loop, calibration and checks ask instead of
+  // casting.
+  virtual const ObjectIdentificationModel* object_identification() const { return nullptr; }
 
   int num_actions() const { return static_cast<int>(spec().action_names.size()); }
 };

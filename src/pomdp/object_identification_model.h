@@ -98,6 +98,7 @@ class ObjectIdentificationModel final : public Model {
   // underestimates the optimal value of a belief concentrated on this state (it is the MDP value),
   // so search trees that use it are optimistic at new leaves.
   double heuristic_value(const State& state) const override;
+  const ObjectIdentificationModel* object_identification() const override { return this; }
   const TabularModel* tabular() const override { return &tabular_; }
   State tabular_state(int s) const override;
 
