@@ -1,8 +1,7 @@
 // The closed loop's trials over any Robot, Recorder and ObservationService: the part of
 // `echoplan_planner` that does not know about ROS. The planner node calls it with the ROS clients
 // (robot/ros/); the ros_* tests call it with the in-process parts to get the log the in-process
-// loop writes. Both go through the same RobotEnvironment, trial runner and LoopLog as `echoplan
-// run`.
+// loop writes. Both go through the same loop::Loop and LoopLog as `echoplan run`.
 #pragma once
 
 #include <atomic>
@@ -11,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "experiment/robot_environment.h"
-#include "experiment/trial_runner.h"
+#include "loop/robot_world.h"
+#include "loop/trial_record.h"
 
 namespace echoplan::ros_app {
 
@@ -47,8 +46,8 @@ struct LoopTimings {
 // Runs the trials, writing the LoopLog and telling `say` one line per step and per trial (as
 // `echoplan run` prints them). Throws InputError for bad settings and whatever a part throws (a
 // node that died: std::runtime_error naming it), after logging the steps finished so far.
-std::vector<experiment::TrialRecord> run_loop_trials(
-    const LoopTrialSettings& settings, experiment::RobotParts parts,
+std::vector<loop::TrialRecord> run_loop_trials(
+    const LoopTrialSettings& settings, loop::RobotParts parts,
     const std::function<void(const std::string&)>& say,
     const std::atomic<bool>* stop_requested = nullptr, LoopTimings* timings = nullptr);
 

@@ -4,7 +4,7 @@
 //   robot     -> /echoplan/begin_trial and /echoplan/execute_action (a real arm's driver or
 //   echoplan_sim_robot) recorder  -> the parameter /echoplan/record around each sensing action
 //   (echoplan_listener) service   -> /echoplan/observe (echoplan_observation)
-// The loop itself is the in-process one (experiment::RobotEnvironment and the trial runner, see
+// The loop itself is the in-process one (loop::Loop, see
 // loop_trials.h), so a ROS run and `echoplan run` plan, log and score the same way.
 //
 // Private parameters:
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
         settings.episodes = episodes;
         settings.step_ms = step_ms;
 
-        echoplan::experiment::RobotParts parts;
+        echoplan::loop::RobotParts parts;
         parts.robot = std::make_unique<echoplan::robot::RosRobot>(node, wait_timeout_s,
                                                                   /*begin_trial_required=*/false);
         parts.recorder = std::make_unique<echoplan::robot::RosRecorder>(node, wait_timeout_s);

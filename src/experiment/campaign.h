@@ -22,20 +22,30 @@
 #include "experiment/campaign_report.h"
 #include "experiment/campaign_runner.h"
 #include "perception/observation_model.h"
+#include "pomdp/problem.h"
+#include "sim/catalogue.h"
+#include "sim/sim_config.h"
 
 namespace echoplan::experiment {
 
-// A checked campaign bound to its output folder.
+// A checked campaign bound to its output folder, with every input loaded once and shared
+// read-only by the workers.
 struct Campaign {
   CampaignConfig config;
   std::filesystem::path directory;
   CampaignResults results;                    // spec, particles, planned trials (entries: none yet)
   std::vector<std::string> training_objects;  // the training set's objects and actions
   std::vector<std::string> training_actions;
-  // Filled by prepare_training(): the trained classifier (when needed), and the configuration the
-  // workers run, in which each calibrating arm plans with its calibrated problem file.
+  std::shared_ptr<const pomdp::Problem> world_problem;
+  // Each arm's problem as its file says; prepare_training() puts a calibrating arm's calibrated
+  // problem in its place.
+  std::vector<std::shared_ptr<const pomdp::Problem>> arm_problems;
+  std::shared_ptr<const sim::Catalogue> catalogue;
+  std::shared_ptr<const sim::SimConfig> sim_config;
+  // Filled by open_campaign() (training_set.model) or prepare_training() (trained, when needed).
   std::shared_ptr<const perception::ObservationModel> observation_model;
-  CampaignConfig planning;
+  // Filled by prepare_training(): the checked loop of each arm and group, what the workers run.
+  ArmLoops loops;
 };
 
 // True when the campaign needs a trained classifier: an arm calibrates or the world is simulated.
@@ -55,14 +65,12 @@ std::filesystem::path training_recordings(const Campaign& campaign);
 // Prepares what the trials need: synthesises the training set into DIR/training/recordings (unless
 // it is complete already or the campaign uses existing recordings), then, when needs_classifier(),
 // trains and calibrates the classifier on it (or loads training_set.model, or
-// DIR/training/model.json of an earlier run) and writes each calibrating arm's problem.
+// DIR/training/model.json of an earlier run), calibrates each calibrating arm's problem in memory
+// (writing it to DIR/training/<arm>.problem.yaml for the user) and checks every arm's loop.
 // `progress(stage, done, total)` reports "synthesise" clips and the trainer's stages. Returns false
 // when stopped.
 bool prepare_training(Campaign& campaign, const perception::ProgressFn& progress,
                       const std::atomic<bool>& stop);
-
-// The world of the campaign's trials, for run_campaign_trials.
-WorldFactory make_world(const Campaign& campaign);
 
 // The trials of `shard` that DIR's journal does not hold yet, in id order.
 std::vector<TrialJob> remaining_jobs(const Campaign& campaign, const Shard& shard);

@@ -37,9 +37,9 @@ bool is_label(const std::string& name) {
 }
 
 // A fingerprint of a file's bytes, as 16 hex digits; "" when the path is empty.
-std::string content_hash(const std::string& path) {
+std::string content_hash(const std::string& path, const CampaignConfig::FileText& file_text) {
   if (path.empty()) return "";
-  return fmt::format("{:016x}", stable_hash(read_text_file(path, "file")));
+  return fmt::format("{:016x}", stable_hash(file_text(path)));
 }
 
 CampaignConfig read_campaign(const std::string& yaml_text, const std::string& source);
@@ -53,6 +53,13 @@ int CampaignConfig::total_trials() const {
 }
 
 nlohmann::json CampaignConfig::identity() const {
+  return identity([](const std::string& path) { return read_text_file(path, "file"); });
+}
+
+nlohmann::json CampaignConfig::identity(const FileText& file_text) const {
+  const auto content_hash = [&](const std::string& path) {
+    return experiment::content_hash(path, file_text);
+  };
   nlohmann::json j;
   j["seed"] = seed;
   for (const ArmConfig& arm : arms)

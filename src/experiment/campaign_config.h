@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -78,6 +79,9 @@ struct CampaignConfig {
   // Everything that decides the results, as JSON with paths replaced by the files' contents'
   // hashes, so a resumed or merged run can check it continues the same campaign.
   nlohmann::json identity() const;
+  // The same with the files' texts from `file_text(path)` (a caller that has read them already).
+  using FileText = std::function<std::string(const std::string& path)>;
+  nlohmann::json identity(const FileText& file_text) const;
 };
 
 // Reads a campaign file; throws InputError naming the file, the line and the problem.

@@ -9,82 +9,41 @@
 #include "common/error.h"
 #include "common/rng.h"
 #include "common/stable_hash.h"
-#include "pomdp/make_belief.h"
 #include "pomdp/problem.h"
 
 namespace echoplan::experiment {
 
 namespace {
 
-int object_index(const pomdp::Problem& problem, const std::string& object) {
-  const auto& names = problem.model->spec().state.discrete_value_names;
-  if (!names.empty())
-    for (std::size_t v = 0; v < names[0].size(); ++v)
-      if (names[0][v] == object) return static_cast<int>(v);
-  throw InputError(problem.source_path, 0, "has no object '" + object + "'");
-}
-
-// What one worker owns: per arm a problem and a solver, per group a world.
+// What one worker owns: a loop per arm and group it has met.
 class Worker {
  public:
-  Worker(const CampaignConfig& config, const WorldFactory& world)
-      : config_(config), world_(world) {}
+  Worker(const CampaignConfig& config, const ArmLoops& loops) : config_(config), loops_(loops) {}
 
-  std::optional<TrialResult> run(const TrialJob& job, const std::atomic<bool>* stop) {
-    Arm& arm = arm_for(job.arm);
-    pomdp::Environment& environment = world_for(job.group);
-    const ObjectGroup& group = config_.groups[job.group];
-
-    TrialSetup setup;
-    setup.model = arm.problem.model.get();
-    setup.environment = &environment;
-    setup.solver = arm.planner.solver.get();
-    const pomdp::Problem& problem = arm.problem;
-    setup.make_belief = [&problem](Rng& rng) { return pomdp::make_belief(problem, rng); };
-    setup.stop_requested = stop;
-
-    TrialOptions options;
-    options.seed = group_seed(config_, job.group);
-    options.max_steps = config_.planner.max_steps;
-    options.budget = arm.planner.budget;
-    return run_trial(setup, options, job.index, object_index(problem, group.plays));
+  std::optional<loop::Trial> run(const TrialJob& job, const std::atomic<bool>* stop) {
+    auto it = mine_.find({job.arm, job.group});
+    if (it == mine_.end())
+      it = mine_.emplace(std::pair{job.arm, job.group}, loop::Loop(loops_[job.arm][job.group]))
+               .first;
+    loop::Loop& loop = it->second;
+    const int object = loop::object_index(loop.spec().problem(), config_.groups[job.group].plays);
+    return loop.run({job.index, object, group_seed(config_, job.group)}, {}, stop);
   }
 
  private:
-  struct Arm {
-    pomdp::Problem problem;
-    Planner planner;
-  };
-
-  Arm& arm_for(int index) {
-    auto it = arms_.find(index);
-    if (it != arms_.end()) return it->second;
-    Arm arm;
-    arm.problem = pomdp::load_problem(config_.arms[index].problem);
-    arm.planner = make_arm_planner(config_, arm.problem);
-    return arms_.emplace(index, std::move(arm)).first->second;
-  }
-
-  pomdp::Environment& world_for(int group) {
-    auto it = worlds_.find(group);
-    if (it == worlds_.end()) it = worlds_.emplace(group, world_(config_.groups[group])).first;
-    return *it->second;
-  }
-
   const CampaignConfig& config_;
-  const WorldFactory& world_;
-  std::map<int, Arm> arms_;
-  std::map<int, std::unique_ptr<pomdp::Environment>> worlds_;
+  const ArmLoops& loops_;
+  std::map<std::pair<int, int>, loop::Loop> mine_;
 };
 
 }  // namespace
 
-Planner make_arm_planner(const CampaignConfig& config, const pomdp::Problem& problem) {
+solvers::PlannerOverrides arm_planner(const CampaignConfig& config) {
   solvers::PlannerOverrides overrides;
   overrides.solver = config.planner.solver;
   overrides.episodes = config.planner.episodes;
   overrides.step_ms = config.planner.step_ms;
-  return make_planner(overrides, problem, problem.source_path);
+  return overrides;
 }
 
 std::vector<TrialJob> campaign_jobs(const CampaignConfig& config) {
@@ -115,8 +74,8 @@ Shard parse_shard(const std::string& text) {
   return shard;
 }
 
-int run_campaign_trials(const CampaignConfig& config, const std::vector<TrialJob>& jobs,
-                        const WorldFactory& world, TrialJournal& journal,
+int run_campaign_trials(const CampaignConfig& config, const ArmLoops& loops,
+                        const std::vector<TrialJob>& jobs, TrialJournal& journal,
                         const CampaignRunOptions& options) {
   std::atomic<std::size_t> next{0};
   std::atomic<int> finished{0};
@@ -127,19 +86,20 @@ int run_campaign_trials(const CampaignConfig& config, const std::vector<TrialJob
 
   auto work = [&] {
     try {
-      Worker worker(config, world);
+      Worker worker(config, loops);
       while (!stopped()) {
         const std::size_t k = next.fetch_add(1);
         if (k >= jobs.size()) break;
         const TrialJob& job = jobs[k];
-        std::optional<TrialResult> result = worker.run(job, options.stop);
-        if (!result) break;
+        const std::optional<loop::Trial> trial = worker.run(job, options.stop);
+        if (!trial) break;
         // Trials are numbered by campaign id in every file (the runner numbers them within the
         // group).
-        result->record.trial = job.id;
-        for (StepRecord& s : result->steps) s.trial = job.id;
+        TrialResult result = records_of(*trial);
+        result.record.trial = job.id;
+        for (StepRecord& s : result.steps) s.trial = job.id;
         JournalEntry entry{job.id, config.arms[job.arm].name, config.groups[job.group].object,
-                           std::move(*result)};
+                           std::move(result)};
         journal.append(entry);
         std::lock_guard<std::mutex> lock(report_mutex);
         ++finished;

@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "experiment/campaign_config.h"
-#include "experiment/planner.h"
 #include "experiment/trial_journal.h"
-#include "pomdp/environment.h"
+#include "loop/loop.h"
 #include "pomdp/problem.h"
+#include "solvers/planner_overrides.h"
 
 namespace echoplan::experiment {
 
@@ -47,12 +47,12 @@ struct Shard {
 // Parses "I/N"; throws InputError for anything else or I outside 1..N.
 Shard parse_shard(const std::string& text);
 
-// The planner of an arm on `problem`: the campaign's solver and budget, the problem file's search
-// settings. Throws InputError for settings the solver rejects.
-Planner make_arm_planner(const CampaignConfig& config, const pomdp::Problem& problem);
+// What an arm's planner takes from the campaign: its solver and budget (the arm problem's file gives
+// the search settings).
+solvers::PlannerOverrides arm_planner(const CampaignConfig& config);
 
-// Builds a worker's own world for trials of `group`; called once per worker and group.
-using WorldFactory = std::function<std::unique_ptr<pomdp::Environment>(const ObjectGroup& group)>;
+// The checked loop of each arm and group: loops[arm][group] (campaign.h builds them).
+using ArmLoops = std::vector<std::vector<std::shared_ptr<const loop::LoopSpec>>>;
 
 struct CampaignRunOptions {
   int workers = 1;                          // threads, >= 1; results do not depend on it
@@ -62,11 +62,12 @@ struct CampaignRunOptions {
 };
 
 // Runs `jobs` (normally those of this shard the journal does not hold yet), appending each finished
-// trial to `journal`. Each worker loads its own problems, solver and world. Returns the number of
-// trials finished; fewer than asked when stopped. Rethrows the first error of any worker after the
-// others have finished their trial in progress.
-int run_campaign_trials(const CampaignConfig& config, const std::vector<TrialJob>& jobs,
-                        const WorldFactory& world, TrialJournal& journal,
+// trial to `journal`. Each worker builds a loop (a world and a planner) of its own per arm and
+// group it meets; the specs and what they hold are shared read-only. Returns the number of trials
+// finished; fewer than asked when stopped. Rethrows the first error of any worker after the others
+// have finished their trial in progress.
+int run_campaign_trials(const CampaignConfig& config, const ArmLoops& loops,
+                        const std::vector<TrialJob>& jobs, TrialJournal& journal,
                         const CampaignRunOptions& options);
 
 }  // namespace echoplan::experiment

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "experiment/trial_runner.h"
+#include "experiment/trial_records.h"
 
 namespace echoplan::experiment {
 

@@ -26,18 +26,19 @@
 #include <string>
 #include <vector>
 
-#include "experiment/trial_runner.h"
+#include "experiment/trial_records.h"
 #include "experiment/trial_summary.h"
 
 namespace echoplan::experiment {
 
-class TrialLog final : public TrialObserver {
+class TrialLog final {
  public:
   // Creates `directory` if needed; throws InputError when it cannot be written.
   TrialLog(const std::filesystem::path& directory, const pomdp::ModelSpec& spec,
            int belief_particles, std::vector<std::string> extra_columns = {});
 
-  void trial_finished(const TrialRecord& trial, const std::vector<StepRecord>& steps) override;
+  // Writes one finished trial: its row in trials.csv and its steps' rows in steps.csv.
+  void trial_finished(const TrialRecord& trial, const std::vector<StepRecord>& steps);
   // As trial_finished, with one value per extra column, repeated on the trial's row and each
   // step's.
   void write_trial(const TrialRecord& trial, const std::vector<StepRecord>& steps,

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "experiment/trial_runner.h"
+#include "experiment/trial_records.h"
 
 namespace echoplan::experiment {
 

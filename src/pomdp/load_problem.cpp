@@ -1,4 +1,4 @@
-// load_problem(): the reader for a problem file, chosen by its extension.
+// load_problem(), parse_problem(): the reader for a problem file, chosen by its extension.
 #include <string>
 
 #include "common/file_io.h"
@@ -9,7 +9,10 @@
 namespace echoplan::pomdp {
 
 Problem load_problem(const std::string& path) {
-  const std::string text = read_text_file(path, "problem file (.yaml or .pomdp)");
+  return parse_problem(read_text_file(path, "problem file (.yaml or .pomdp)"), path);
+}
+
+Problem parse_problem(const std::string& text, const std::string& path) {
   if (path.size() >= 6 && path.compare(path.size() - 6, 6, ".pomdp") == 0) {
     Problem p;
     p.model = parse_cassandra_pomdp(text, path);

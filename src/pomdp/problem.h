@@ -46,6 +46,8 @@ struct Problem {
 
 // Reads `path`: `*.pomdp` as Cassandra format, anything else as YAML.
 Problem load_problem(const std::string& path);
+// The same for a file's text already read (`path` chooses the format and names it in errors).
+Problem parse_problem(const std::string& text, const std::string& path);
 
 // Parses YAML text; `source_name` is used in error messages.
 Problem parse_problem_yaml(const std::string& text, const std::string& source_name);

@@ -89,8 +89,7 @@ void run_experiment(const ExperimentFlags& f) {
   const auto trials_start = std::chrono::steady_clock::now();
   if (!jobs.empty()) {
     bar.update(done);
-    experiment::run_campaign_trials(campaign.planning, jobs, experiment::make_world(campaign),
-                                    journal, options);
+    experiment::run_campaign_trials(campaign.config, campaign.loops, jobs, journal, options);
     bar.finish();
   }
   const double trial_seconds =

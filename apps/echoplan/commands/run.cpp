@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "commands/commands.h"
@@ -15,13 +14,14 @@
 #include "common/data_dir.h"
 #include "common/error.h"
 #include "common/stop_signal.h"
-#include "experiment/calibrated_problem.h"
-#include "experiment/environment_factory.h"
-#include "experiment/loop_log.h"
-#include "experiment/planner.h"
-#include "experiment/simulated_training.h"
-#include "experiment/trial_runner.h"
-#include "pomdp/make_belief.h"
+#include "common/file_io.h"
+#include "loop/calibrated_problem.h"
+#include "loop/loop.h"
+#include "loop/loop_log.h"
+#include "loop/object_problem.h"
+#include "loop/prepare_observation.h"
+#include "loop/step_text.h"
+#include "loop/streams.h"
 #include "pomdp/problem.h"
 
 namespace echoplan::cli {
@@ -42,9 +42,6 @@ struct RunFlags {
   SimFiles sim;
   solvers::PlannerOverrides planner;
 };
-
-// Independent streams drawn from --seed.
-enum RunStream : std::uint64_t { training_stream = 1, trial_stream = 2 };
 
 // Which object the world holds, and which problem object that is the truth for.
 struct TrueObject {
@@ -69,99 +66,8 @@ TrueObject resolve_object(const std::string& name, const pomdp::ObjectProblemDat
                   name, problem.name, fmt::join(objects, ", ")));
 }
 
-std::string bar(double p, int width = 24) {
-  const int filled = std::clamp(static_cast<int>(std::lround(p * width)), 0, width);
-  std::string s;
-  for (int i = 0; i < width; ++i) s += i < filled ? "█" : "░";
-  return s;
-}
-
-void print_belief(const std::vector<std::string>& objects, const std::vector<double>& belief) {
-  std::size_t width = 0;
-  for (const auto& o : objects) width = std::max(width, o.size());
-  for (std::size_t k = 0; k < objects.size(); ++k)
-    fmt::print("    {:<{}}  {}  {:.3f}\n", objects[k], width, bar(belief[k]), belief[k]);
-}
-
-// One line per action: what the robot did and what was heard.
-void print_step(const experiment::LoopStep& s) {
-  fmt::print("step {}: {}", s.step + 1, s.action_name);
-  if (s.report.status != robot::ActionStatus::done) {
-    fmt::print(" -> {}: {}", robot::to_string(s.report.status), s.report.reason);
-  } else if (s.classified && s.heard.unknown) {
-    // Unlike every class: say which one it was nearest to, and how likely that one was.
-    const auto nearest =
-        std::max_element(s.heard.probabilities.begin(), s.heard.probabilities.end(),
-                         [](const auto& a, const auto& b) { return a.second < b.second; });
-    fmt::print(" -> heard unknown (nearest {}, p {:.2f}), {:.1f} ms to classify",
-               nearest == s.heard.probabilities.end() ? "?" : nearest->first, s.heard.probability,
-               s.observe_ms);
-  } else if (s.classified) {
-    fmt::print(" -> heard {} (p {:.2f}), {:.1f} ms to classify", s.heard.label, s.heard.probability,
-               s.observe_ms);
-  }
-  fmt::print(", reward {:g}\n", s.reward);
-}
-
-// The model the loop classifies with: --model, or one trained now on simulated recordings of the
-// problem's objects (saved as DIR/model.json).
-std::shared_ptr<const perception::ObservationModel> observation_model(
-    const RunFlags& f, const pomdp::ObjectProblemData& problem, const SimSetup& sim,
-    const std::atomic<bool>& stop) {
-  if (!f.model.empty())
-    return std::make_shared<const perception::ObservationModel>(
-        perception::load_observation_model(f.model));
-  experiment::SimulatedTraining training;
-  training.objects = problem.objects;
-  for (const auto& a : problem.sensing) training.actions.push_back(a.name);
-  training.per_pair = f.train_per_pair;
-  training.seed = derive_seed(f.seed, {training_stream});
-  training.directory = fs::path(f.out) / "training";
-  spdlog::info("no --model: training {} on {} simulated recordings per object and action in {}",
-               training.train.classifier, training.per_pair, training.directory.string());
-  auto model = std::make_shared<const perception::ObservationModel>(
-      experiment::train_on_simulated_recordings(
-          sim.catalogue, sim.config, training,
-          [](const std::string& stage, int done, int total) {
-            if (done == total || done % 20 == 0) spdlog::info("  {} {}/{}", stage, done, total);
-          },
-          stop));
-  if (stop.load()) throw Interrupted{};
-  const std::string path = (fs::path(f.out) / "model.json").string();
-  perception::save_observation_model(*model, path);
-  for (const auto& action : model->actions())
-    spdlog::info("  {}: cross-validated accuracy {:.0f}%", action,
-                 100.0 * model->calibration(action).confusion.accuracy());
-  spdlog::info("saved {} (reuse it with --model)", path);
-  return model;
-}
-
-// The problem the planner plans on: --problem as written, or the shipped problem with the model's
-// calibrated observation table (to be saved as DIR/problem.yaml, see save_problem).
-pomdp::Problem planning_problem(const RunFlags& f, const pomdp::Problem& base,
-                                const perception::ObservationModel& model, std::string& path) {
-  if (!f.problem.empty()) {
-    path = f.problem;
-    return base;
-  }
-  const auto& data = experiment::object_problem(*base.model).data();
-  pomdp::Problem calibrated = base;
-  calibrated.model = std::make_shared<pomdp::ObjectIdentificationModel>(
-      experiment::calibrated_problem(data, model));
-  path = (fs::path(f.out) / "problem.yaml").string();
-  calibrated.source_path = path;
-  return calibrated;
-}
-
-void save_problem(const pomdp::Problem& problem, const std::string& path) {
-  std::ofstream out(path);
-  pomdp::write_problem_yaml(out, experiment::object_problem(*problem.model).data(), problem.belief,
-                            problem.planner);
-  if (!out) throw InputError(path, 0, "cannot write the calibrated problem");
-}
-
-void run_command(const RunFlags& f) {
-  // Everything that can be wrong with the input is checked before any work.
+// Everything that can be wrong with the flags alone, checked before any work.
+void check_flags(const RunFlags& f) {
   if (!f.recordings.empty() && f.model.empty())
     throw InputError(
         "--recordings needs --model: train one on recordings that are not replayed "
@@ -172,107 +78,149 @@ void run_command(const RunFlags& f) {
   std::error_code ec;
   fs::create_directories(f.out, ec);
   if (ec) throw InputError(f.out, 0, "cannot create the output folder: " + ec.message());
-  const SimSetup sim = load_sim_setup(f.sim);
-  const std::string base_path =
-      f.problem.empty() ? shipped_file("problems/audio_objects.yaml") : f.problem;
-  const pomdp::Problem base = pomdp::load_problem(base_path);
-  const pomdp::ObjectProblemData& base_data = experiment::object_problem(*base.model).data();
-  const TrueObject truth = resolve_object(f.object, base_data, sim.catalogue);
   if (!f.recordings.empty() && !fs::is_directory(f.recordings))
     throw InputError(f.recordings, 0, "the recordings folder does not exist");
+}
 
-  const StopSignal stop;
-  const auto model = observation_model(f, base_data, sim, stop.flag());
-  std::string problem_path;
-  const pomdp::Problem problem = planning_problem(f, base, *model, problem_path);
-  const auto& data = experiment::object_problem(*problem.model).data();
+// The model the loop classifies with: --model, or one trained now on simulated recordings of the
+// problem's objects (DIR/training); with the shipped problem calibrated to it unless --problem.
+loop::PreparedObservation prepare(const RunFlags& f, const pomdp::Problem& base,
+                                  const loop::SimulatedWorldSpec& sim, const StopSignal& stop) {
+  const std::string problem_path = (fs::path(f.out) / "problem.yaml").string();
+  const pomdp::Problem* calibrate = f.problem.empty() ? &base : nullptr;
+  if (!f.model.empty())
+    return loop::prepare_observation(loop::ModelFile{f.model}, calibrate, problem_path, {},
+                                     stop.flag());
+  const auto& data = loop::object_problem(*base.model).data();
+  loop::SimulatedTraining training;
+  training.catalogue = sim.catalogue;
+  training.config = sim.config;
+  training.objects = data.objects;
+  for (const auto& a : data.sensing) training.actions.push_back(a.name);
+  training.per_pair = f.train_per_pair;
+  training.seed = loop::stream_seed(f.seed, loop::Stream::run_training);
+  training.directory = fs::path(f.out) / "training";
+  spdlog::info("no --model: training {} on {} simulated recordings per object and action in {}",
+               training.train.classifier, training.per_pair, training.directory.string());
+  auto prepared = loop::prepare_observation(
+      training, calibrate, problem_path,
+      [](const std::string& stage, int done, int total) {
+        if (done == total || done % 20 == 0) spdlog::info("  {} {}/{}", stage, done, total);
+      },
+      stop.flag());
+  if (!prepared.model) throw Interrupted{};
+  const std::string path = (fs::path(f.out) / "model.json").string();
+  perception::save_observation_model(*prepared.model, path);
+  for (const auto& action : prepared.model->actions())
+    spdlog::info("  {}: cross-validated accuracy {:.0f}%", action,
+                 100.0 * prepared.model->calibration(action).confusion.accuracy());
+  spdlog::info("saved {} (reuse it with --model)", path);
+  return prepared;
+}
 
-  experiment::LoopSettings settings;
-  settings.model = problem.model;
-  settings.world.kind = f.recordings.empty() ? experiment::WorldSettings::Kind::simulator
-                                             : experiment::WorldSettings::Kind::replay;
-  settings.world.catalogue = sim.catalogue;
-  settings.world.config = sim.config;
-  settings.world.recordings = f.recordings;
-  settings.classifier = model;
-  if (truth.world != data.objects[truth.index])
-    settings.world_objects[data.objects[truth.index]] = truth.world;
-  auto environment = experiment::make_environment_factory(settings)();
-  const experiment::Planner planner = experiment::make_planner(f.planner, problem, problem_path);
-  // Only now that everything fits are files written.
-  if (f.problem.empty()) save_problem(problem, problem_path);
-  experiment::LoopLog log(f.out, experiment::object_problem(*problem.model));
+// The loop: the planning problem in the simulator or replaying --recordings.
+loop::LoopSettings loop_settings(const RunFlags& f, const loop::PreparedObservation& prepared,
+                                 std::shared_ptr<const pomdp::Problem> base,
+                                 const loop::SimulatedWorldSpec& sim, const TrueObject& truth) {
+  loop::LoopSettings settings;
+  settings.problem = prepared.problem ? prepared.problem : std::move(base);
+  if (f.recordings.empty())
+    settings.world = sim;
+  else
+    settings.world = loop::ReplayWorldSpec{f.recordings};
+  settings.classifier = prepared.model;
+  const auto& objects = loop::object_problem(*settings.problem->model).data().objects;
+  if (truth.world != objects[truth.index]) settings.world_objects[objects[truth.index]] = truth.world;
+  settings.planner = f.planner;
+  settings.max_steps = f.max_steps;
+  return settings;
+}
 
-  fmt::print("{} {}, planning on {} ({}), seed {}\n", truth.world,
-             f.recordings.empty() ? "in the simulator" : "replayed from " + f.recordings,
-             problem_path, planner.describe(), f.seed);
-
-  // The environment reports each action as it happens; the runner then gives the belief after it.
-  experiment::LoopStep last;
-  environment->set_step_listener([&](const experiment::LoopStep& s) { last = s; });
-  nlohmann::json steps = nlohmann::json::array();
-  experiment::TrialSetup setup;
-  setup.model = problem.model.get();
-  setup.environment = environment.get();
-  setup.solver = planner.solver.get();
-  setup.make_belief = [&problem](Rng& rng) { return pomdp::make_belief(problem, rng); };
-  setup.stop_requested = &stop.flag();
-  setup.step_finished = [&](const experiment::StepRecord& s, const pomdp::Belief* after) {
-    if (s.step == 0) {
-      fmt::print("belief before the first action:\n");
-      print_belief(data.objects, s.belief);
-    }
-    print_step(last);
-    std::vector<double> marginal;
-    if (after) {
-      marginal = after->discrete_marginal(0);
-      print_belief(data.objects, marginal);
-    }
-    steps.push_back(log.write_step(last, s.belief, after ? &marginal : nullptr));
-  };
-  experiment::TrialOptions options;
-  options.budget = planner.budget;
-  options.max_steps = f.max_steps;
-  options.seed = derive_seed(f.seed, {trial_stream});
-  options.validate();
-  const auto result = experiment::run_trial(setup, options, 0, truth.index);
-
-  nlohmann::json trial = planner.to_json();
-  trial.update({{"object", truth.world},
-                {"true_state", data.objects[truth.index]},
-                {"world", f.recordings.empty() ? "simulator" : "replay"},
-                {"recordings", f.recordings},
-                {"problem", problem_path},
-                {"model", f.model.empty() ? (fs::path(f.out) / "model.json").string() : f.model},
-                {"seed", f.seed},
-                {"max_steps", f.max_steps},
-                {"interrupted", !result.has_value()}});
-  if (result) {
-    const experiment::TrialRecord& r = result->record;
-    trial.update(
-        {{"believed_state", data.objects[r.believed_state]},
-         {"steps", r.steps},
-         {"discounted_reward", r.discounted_reward},
-         {"collision", r.collision},
-         {"capped", r.capped},
-         {"final_action", problem.model->spec().action_names[result->steps.back().action]}});
+// DIR/trial.json: the settings and, unless interrupted, the result.
+void write_trial_json(const RunFlags& f, const loop::Loop& run, const TrueObject& truth,
+                      const std::optional<loop::Trial>& trial) {
+  const pomdp::Problem& problem = run.spec().problem();
+  const auto& objects = loop::object_problem(*problem.model).data().objects;
+  nlohmann::json j = run.planner().to_json();
+  j.update({{"object", truth.world},
+            {"true_state", objects[truth.index]},
+            {"world", loop::world_name(run.spec().settings().world)},
+            {"recordings", f.recordings},
+            {"problem", problem.source_path},
+            {"model", f.model.empty() ? (fs::path(f.out) / "model.json").string() : f.model},
+            {"seed", f.seed},
+            {"max_steps", f.max_steps},
+            {"interrupted", !trial.has_value()}});
+  if (trial) {
+    const loop::TrialRecord& r = trial->record;
+    j.update({{"believed_state", objects[r.believed_state]},
+              {"steps", r.steps},
+              {"discounted_reward", r.discounted_reward},
+              {"collision", r.collision},
+              {"capped", r.capped},
+              {"final_action",
+               problem.model->spec().action_names[trial->steps.back().record.action]}});
   }
-  std::ofstream(fs::path(f.out) / "trial.json") << trial.dump(2) << '\n';
-  if (!result) {
-    spdlog::warn("interrupted: {} finished steps are in {}", steps.size(), f.out);
-    throw Interrupted{};
-  }
-  const experiment::TrialRecord& r = result->record;
-  const std::string& final_action = problem.model->spec().action_names[result->steps.back().action];
+  write_file_atomically(fs::path(f.out) / "trial.json", j.dump(2) + "\n");
+}
+
+void print_result(const RunFlags& f, const loop::Loop& run, const TrueObject& truth,
+                  const loop::Trial& trial) {
+  const pomdp::Problem& problem = run.spec().problem();
+  const loop::TrialRecord& r = trial.record;
   if (r.collision)
     fmt::print("result: the trial ended in a collision after {} steps", r.steps);
   else if (r.capped)
     fmt::print("result: no sorting action within --max-steps {}", f.max_steps);
   else
-    fmt::print("result: {} sorted by {} (believed {})", truth.world, final_action,
-               data.objects[r.believed_state]);
+    fmt::print("result: {} sorted by {} (believed {})", truth.world,
+               problem.model->spec().action_names[trial.steps.back().record.action],
+               loop::object_problem(*problem.model).data().objects[r.believed_state]);
   fmt::print("; {} steps, discounted reward {:.3f}\nfiles: {}\n", r.steps, r.discounted_reward,
              f.out);
+}
+
+void run_command(const RunFlags& f) {
+  check_flags(f);
+  const SimSetup setup = load_sim_setup(f.sim);
+  const loop::SimulatedWorldSpec sim{std::make_shared<const sim::Catalogue>(setup.catalogue),
+                                     std::make_shared<const sim::SimConfig>(setup.config)};
+  const auto base = std::make_shared<const pomdp::Problem>(pomdp::load_problem(
+      f.problem.empty() ? shipped_file("problems/audio_objects.yaml") : f.problem));
+  const TrueObject truth =
+      resolve_object(f.object, loop::object_problem(*base->model).data(), *sim.catalogue);
+
+  const StopSignal stop;
+  const loop::PreparedObservation prepared = prepare(f, *base, sim, stop);
+  loop::Loop run(std::make_shared<const loop::LoopSpec>(
+      loop_settings(f, prepared, base, sim, truth)));
+  const pomdp::Problem& problem = run.spec().problem();
+  // Only now that everything fits are files written.
+  if (prepared.problem) loop::save_problem(problem, problem.source_path);
+  const auto& objects = loop::object_problem(*problem.model).data().objects;
+  loop::LoopLog log(f.out, loop::object_problem(*problem.model));
+
+  fmt::print("{} {}, planning on {} ({}), seed {}\n", truth.world,
+             f.recordings.empty() ? "in the simulator" : "replayed from " + f.recordings,
+             problem.source_path, run.planner().describe(), f.seed);
+  int logged = 0;
+  const auto trial = run.run(
+      {0, truth.index, loop::stream_seed(f.seed, loop::Stream::run_trial)},
+      [&](const loop::Step& s) {
+        if (s.record.step == 0)
+          fmt::print("belief before the first action:\n{}", loop::belief_text(objects, s.record.belief));
+        fmt::print("{}\n", loop::step_text(s, problem.model->spec()));
+        if (s.belief_after) fmt::print("{}", loop::belief_text(objects, *s.belief_after));
+        log.write_step(s);
+        ++logged;
+      },
+      &stop.flag());
+  write_trial_json(f, run, truth, trial);
+  if (!trial) {
+    spdlog::warn("interrupted: {} finished steps are in {}", logged, f.out);
+    throw Interrupted{};
+  }
+  print_result(f, run, truth, *trial);
 }
 
 }  // namespace

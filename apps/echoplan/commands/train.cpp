@@ -5,44 +5,93 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <fstream>
+#include <optional>
 #include <stdexcept>
 
 #include "commands/commands.h"
 #include "commands/perception_report.h"
 #include "common/error.h"
-#include "experiment/calibrated_problem.h"
-#include "experiment/robot_environment.h"
+#include "loop/calibrated_problem.h"
 #include "perception/observation_model.h"
+#include "perception/recording_set.h"
 #include "pomdp/problem.h"
 
 namespace echoplan::cli {
 namespace {
 
-// The base problem with its observation model replaced by the trained one
-// (experiment::calibrated_problem), errors naming the base problem's file.
-pomdp::ObjectProblemData calibrated_problem(const pomdp::Problem& base,
-                                            const perception::ObservationModel& model) {
-  try {
-    return experiment::calibrated_problem(experiment::object_problem(*base.model).data(), model);
-  } catch (const InputError& e) {
-    throw InputError(base.source_path, 0, e.problem());
+struct TrainFlags {
+  std::string data;
+  std::string out;
+  std::string problem_out;
+  std::string problem_base = "problems/audio_objects.yaml";
+  bool no_reject = false;
+  std::string table;
+  perception::TrainOptions train;
+};
+
+// The problem's objects and sensing actions must all have recordings: said before training.
+void check_coverage(const TrainFlags& f, const pomdp::Problem& base,
+                    const perception::RecordingSet& set) {
+  const auto* object_model = base.model->object_identification();
+  if (object_model == nullptr) return;  // calibrate_problem says what is wrong with it
+  for (const auto& object : object_model->data().objects)
+    if (set.object_index(object) < 0)
+      throw InputError(f.problem_base, 0,
+                       fmt::format("object '{}' of the problem has no recordings in {} (objects: {})",
+                                   object, f.data, fmt::join(set.objects, ", ")));
+  for (const auto& action : object_model->data().sensing)
+    if (std::find(set.actions.begin(), set.actions.end(), action.name) == set.actions.end())
+      throw InputError(
+          f.problem_base, 0,
+          fmt::format("sensing action '{}' of the problem has no recordings in {} (actions: {})",
+                      action.name, f.data, fmt::join(set.actions, ", ")));
+}
+
+void print_calibration(const TrainFlags& f, const perception::ObservationModel& model) {
+  for (const auto& action : model.actions()) {
+    const auto& c = model.calibration(action);
+    print_confusion(
+        fmt::format("{} (cross-validated, {})", action,
+                    f.train.folds == 0 ? "leave-one-out" : fmt::format("{} folds", f.train.folds)),
+        c.confusion);
+    fmt::print("  temperature {:.4g}, reject threshold {:.4g}\n", c.temperature,
+               c.reject_threshold);
   }
+}
+
+void train(TrainFlags f) {
+  f.train.reject = !f.no_reject;
+  f.train.table = perception::parse_table_estimate(f.table);
+  // Read the base problem first: a wrong path should fail before minutes of training.
+  std::optional<pomdp::Problem> base;
+  if (!f.problem_out.empty()) base = pomdp::load_problem(f.problem_base);
+  const perception::RecordingSet set = perception::load_recording_set(f.data);
+  if (base) check_coverage(f, *base, set);
+  spdlog::info("{} recordings: {} objects x {} actions; classifier {}", set.recordings.size(),
+               set.objects.size(), set.actions.size(), f.train.classifier);
+  const perception::ObservationModel model = perception::train_observation_model(
+      set, f.train, [](const std::string& stage, int done, int total) {
+        if (done == total || done % 20 == 0) spdlog::info("{} {}/{}", stage, done, total);
+      });
+  print_calibration(f, model);
+  perception::save_observation_model(model, f.out);
+  fmt::print("model: {}\n", f.out);
+  if (!base) return;
+  const auto calibrated = loop::calibrate_problem(*base, model, f.problem_out);
+  loop::save_problem(
+      *calibrated, f.problem_out,
+      fmt::format("# Written by: echoplan train --data {} --classifier {}\n# Base problem: {}; "
+                  "observation table calibrated from {} (cross-validated, {} table, Dirichlet "
+                  "alpha {}).\n",
+                  f.data, f.train.classifier, f.problem_base, f.out,
+                  perception::table_estimate_name(f.train.table), f.train.dirichlet_alpha));
+  fmt::print("problem: {}\n", f.problem_out);
 }
 
 }  // namespace
 
 void add_train_command(CLI::App& app) {
-  struct Options {
-    std::string data;
-    std::string out;
-    std::string problem_out;
-    std::string problem_base = "problems/audio_objects.yaml";
-    bool no_reject = false;
-    std::string table;
-    perception::TrainOptions train;
-  };
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<TrainFlags>();
   auto* cmd = app.add_subcommand("train",
                                  "Fit the observation model on recordings "
                                  "DIR/<object>/<action>/*.wav (and DIR/manifest.csv if present):\n"
@@ -88,66 +137,7 @@ void add_train_command(CLI::App& app) {
          "--problem-base", opt->problem_base,
          "Problem whose objects, actions, rewards and planner settings --problem-out keeps")
       ->capture_default_str();
-  cmd->callback([opt] {
-    opt->train.reject = !opt->no_reject;
-    opt->train.table = perception::parse_table_estimate(opt->table);
-    // Read the base problem first: a wrong path should fail before minutes of training.
-    std::optional<pomdp::Problem> base;
-    if (!opt->problem_out.empty()) base = pomdp::load_problem(opt->problem_base);
-    const perception::RecordingSet set = perception::load_recording_set(opt->data);
-    if (base) {
-      // The problem's objects and sensing actions must all have recordings: say so before training.
-      const auto* object_model =
-          dynamic_cast<const pomdp::ObjectIdentificationModel*>(base->model.get());
-      if (object_model != nullptr) {
-        for (const auto& object : object_model->data().objects)
-          if (set.object_index(object) < 0)
-            throw InputError(
-                opt->problem_base, 0,
-                fmt::format("object '{}' of the problem has no recordings in {} (objects: {})",
-                            object, opt->data, fmt::join(set.objects, ", ")));
-        for (const auto& action : object_model->data().sensing)
-          if (std::find(set.actions.begin(), set.actions.end(), action.name) == set.actions.end())
-            throw InputError(
-                opt->problem_base, 0,
-                fmt::format(
-                    "sensing action '{}' of the problem has no recordings in {} (actions: {})",
-                    action.name, opt->data, fmt::join(set.actions, ", ")));
-      }
-    }
-    spdlog::info("{} recordings: {} objects x {} actions; classifier {}", set.recordings.size(),
-                 set.objects.size(), set.actions.size(), opt->train.classifier);
-    const perception::ObservationModel model = perception::train_observation_model(
-        set, opt->train, [](const std::string& stage, int done, int total) {
-          if (done == total || done % 20 == 0) spdlog::info("{} {}/{}", stage, done, total);
-        });
-    for (const auto& action : model.actions()) {
-      const auto& c = model.calibration(action);
-      print_confusion(
-          fmt::format(
-              "{} (cross-validated, {})", action,
-              opt->train.folds == 0 ? "leave-one-out" : fmt::format("{} folds", opt->train.folds)),
-          c.confusion);
-      fmt::print("  temperature {:.4g}, reject threshold {:.4g}\n", c.temperature,
-                 c.reject_threshold);
-    }
-    perception::save_observation_model(model, opt->out);
-    fmt::print("model: {}\n", opt->out);
-    if (base) {
-      const pomdp::ObjectProblemData data = calibrated_problem(*base, model);
-      std::ofstream out(opt->problem_out);
-      if (!out) throw InputError(opt->problem_out, 0, "cannot write the problem file");
-      out << "# Written by: echoplan train --data " << opt->data << " --classifier "
-          << opt->train.classifier << "\n# Base problem: " << opt->problem_base
-          << "; observation table calibrated from " << opt->out << " (cross-validated, "
-          << perception::table_estimate_name(opt->train.table) << " table, Dirichlet alpha "
-          << opt->train.dirichlet_alpha << ").\n";
-      pomdp::write_problem_yaml(out, data, base->belief, base->planner);
-      out.close();
-      if (!out) throw InputError(opt->problem_out, 0, "could not finish writing the problem file");
-      fmt::print("problem: {}\n", opt->problem_out);
-    }
-  });
+  cmd->callback([opt] { train(*opt); });
 }
 
 }  // namespace echoplan::cli

@@ -9,12 +9,10 @@
 #include "commands/planner_options.h"
 #include "common/error.h"
 #include "common/stop_signal.h"
-#include "experiment/planner.h"
 #include "experiment/trial_log.h"
-#include "experiment/trial_runner.h"
+#include "experiment/trial_records.h"
 #include "experiment/trial_summary.h"
-#include "pomdp/make_belief.h"
-#include "pomdp/model_environment.h"
+#include "loop/loop.h"
 #include "pomdp/problem.h"
 
 namespace echoplan::cli {
@@ -32,7 +30,7 @@ struct TrialsFlags {
 };
 
 void print_summary(const experiment::TrialSummary& s, const pomdp::ModelSpec& spec,
-                   const experiment::Planner& planner, double seconds) {
+                   const loop::Planner& planner, double seconds) {
   fmt::print("{:<24}{}\n", "problem", spec.name);
   fmt::print("{:<24}{}\n", "solver", planner.describe());
   fmt::print("{:<24}{}\n", "trials", s.trials);
@@ -47,59 +45,50 @@ void print_summary(const experiment::TrialSummary& s, const pomdp::ModelSpec& sp
   fmt::print("{:<24}{:.1f} s\n", "wall time", seconds);
 }
 
-// Reports each finished trial on stderr and forwards it to the log.
-class ProgressLog final : public experiment::TrialObserver {
- public:
-  ProgressLog(experiment::TrialLog& log, const pomdp::ModelSpec& spec, int total)
-      : log_(log), spec_(spec), total_(total) {}
-  void trial_finished(const experiment::TrialRecord& t,
-                      const std::vector<experiment::StepRecord>& steps) override {
-    log_.trial_finished(t, steps);
-    const auto& names = spec_.state.discrete_value_names;
-    auto name = [&](int v) { return names.empty() ? std::to_string(v) : names[0][v]; };
-    spdlog::info("trial {}/{}: true {}, believed {}, {} steps, discounted reward {:.3f}",
-                 t.trial + 1, total_, name(t.true_state), name(t.believed_state), t.steps,
-                 t.discounted_reward);
-  }
-
- private:
-  experiment::TrialLog& log_;
-  const pomdp::ModelSpec& spec_;
-  int total_;
-};
+// Reports a finished trial on stderr.
+void say_trial(const experiment::TrialRecord& t, const pomdp::ModelSpec& spec, int total) {
+  const auto& names = spec.state.discrete_value_names;
+  auto name = [&](int v) { return names.empty() ? std::to_string(v) : names[0][v]; };
+  spdlog::info("trial {}/{}: true {}, believed {}, {} steps, discounted reward {:.3f}",
+               t.trial + 1, total, name(t.true_state), name(t.believed_state), t.steps,
+               t.discounted_reward);
+}
 
 void run_trials_command(const TrialsFlags& f) {
-  const pomdp::Problem problem = pomdp::load_problem(f.problem);
-  const experiment::Planner planner = experiment::make_planner(f.planner, problem, f.problem);
-  pomdp::ModelEnvironment environment(problem.model);
+  loop::LoopSettings settings;
+  settings.problem = std::make_shared<const pomdp::Problem>(pomdp::load_problem(f.problem));
+  settings.planner = f.planner;
+  settings.max_steps = f.max_steps;
+  loop::Loop trials(std::make_shared<const loop::LoopSpec>(std::move(settings)));
+  const pomdp::Problem& problem = trials.spec().problem();
+  const loop::Planner& planner = trials.planner();
 
-  experiment::TrialOptions trial_options;
-  trial_options.trials = f.trials;
-  trial_options.per_object = f.per_object;
-  trial_options.budget = planner.budget;
-  trial_options.max_steps = f.max_steps;
-  trial_options.seed = f.seed;
-  trial_options.validate();
+  loop::TrialOptions options;
+  options.trials = f.trials;
+  options.per_object = f.per_object;
+  options.budget = planner.budget;
+  options.max_steps = f.max_steps;
+  options.validate();
   const pomdp::ModelSpec& spec = problem.model->spec();
-  const int total = trial_options.total_trials(spec);
+  const int total = options.total_trials(spec);
 
   const int logged_particles =
       problem.belief.type == pomdp::BeliefSettings::Type::particle ? problem.belief.particles : 0;
   experiment::TrialLog log(f.out, spec, logged_particles);
-  ProgressLog progress(log, spec, total);
-
-  experiment::TrialSetup setup;
-  setup.model = problem.model.get();
-  setup.environment = &environment;
-  setup.solver = planner.solver.get();
-  setup.make_belief = [&problem](Rng& rng) { return pomdp::make_belief(problem, rng); };
   // Ctrl-C stops the runner between steps; finished trials and the summary are still written.
   const StopSignal stop;
-  setup.stop_requested = &stop.flag();
 
   spdlog::info("{} trials of {} on {}, results in {}", total, planner.describe(), spec.name, f.out);
   const auto start = std::chrono::steady_clock::now();
-  const auto records = experiment::run_trials(setup, trial_options, progress);
+  std::vector<experiment::TrialRecord> records;
+  for (int t = 0; t < total; ++t) {
+    const auto trial = trials.run({t, options.object_of_trial(t), f.seed}, {}, &stop.flag());
+    if (!trial) break;
+    const experiment::TrialResult result = experiment::records_of(*trial);
+    log.trial_finished(result.record, result.steps);
+    say_trial(result.record, spec, total);
+    records.push_back(result.record);
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

@@ -12,8 +12,9 @@
 #include <memory>
 #include <string>
 
-#include "experiment/calibrated_problem.h"
-#include "experiment/robot_environment.h"
+#include "loop/calibrated_problem.h"
+#include "loop/object_problem.h"
+#include "loop/robot_world.h"
 #include "loop_trials.h"
 #include "perception/observation_model.h"
 #include "pomdp/problem.h"
@@ -29,13 +30,11 @@ using namespace echoplan;
 int prepare(const std::string& dir) {
   const pomdp::Problem base =
       pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
-  const auto& data = experiment::object_problem(*base.model).data();
+  const auto& data = loop::object_problem(*base.model).data();
   const auto model = testing::train_small_model(data.objects, {"slide", "strike"}, 3);
   perception::save_observation_model(*model, dir + "/model.json");
-  std::ofstream out(dir + "/problem.yaml");
-  pomdp::write_problem_yaml(out, experiment::calibrated_problem(data, *model), base.belief,
-                            base.planner);
-  return out ? 0 : 1;
+  loop::save_problem(*loop::calibrate_problem(base, *model), dir + "/problem.yaml");
+  return 0;
 }
 
 int run(int argc, char** argv) {
@@ -48,12 +47,12 @@ int run(int argc, char** argv) {
   settings.episodes = std::stoll(argv[6]);
   settings.trials = std::stoi(argv[7]);
   const pomdp::Problem problem = pomdp::load_problem(settings.problem);
-  const auto& data = experiment::object_problem(*problem.model).data();
+  const auto& data = loop::object_problem(*problem.model).data();
   std::vector<std::string> sorting;
   sorting = data.sorting;
   auto world = std::make_shared<robot::SimulatedWorld>(testing::shipped_catalogue(),
                                                        sim::SimConfig{}, sorting);
-  experiment::RobotParts parts;
+  loop::RobotParts parts;
   parts.robot = std::make_unique<robot::SimulatedArm>(world);
   if (source == "mic") {
     robot::CaptureConfig capture;

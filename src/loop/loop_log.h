@@ -17,29 +17,28 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "experiment/robot_environment.h"
+#include "loop/trial_runner.h"
 #include "pomdp/object_identification_model.h"
 
-namespace echoplan::experiment {
+namespace echoplan::loop {
 
 class LoopLog {
  public:
   // Creates DIR and DIR/clips; throws InputError naming the file when either cannot be written.
   LoopLog(const std::filesystem::path& directory, const pomdp::ObjectIdentificationModel& model);
 
-  // Writes one step. `belief_before` is the object marginal the action was chosen from;
-  // `belief_after` the marginal after the update, or nullptr when the step ended the trial.
+  // Writes one step of a world with a robot (std::invalid_argument for a step without one).
   // Returns the step's JSON object (what loop_steps.jsonl got).
-  nlohmann::json write_step(const LoopStep& step, const std::vector<double>& belief_before,
-                            const std::vector<double>* belief_after);
+  nlohmann::json write_step(const Step& step);
 
   const std::filesystem::path& directory() const { return directory_; }
 
  private:
   std::filesystem::path directory_;
+  const pomdp::ObjectIdentificationModel& model_;
   std::vector<std::string> objects_;
   std::ofstream csv_;
   std::ofstream jsonl_;
 };
 
-}  // namespace echoplan::experiment
+}  // namespace echoplan::loop

@@ -1,5 +1,5 @@
 // The solver a problem file and a user's overrides ask for, with its search options and budget:
-// what `echoplan trials`, `echoplan run` and the ROS planner node plan with.
+// what every loop (`echoplan trials`, `run`, the ROS planner node, a campaign's arms) plans with.
 #pragma once
 
 #include <memory>
@@ -11,7 +11,7 @@
 #include "solvers/search_tree.h"
 #include "solvers/solver.h"
 
-namespace echoplan::experiment {
+namespace echoplan::loop {
 
 // The solver, ready to reset().
 struct Planner {
@@ -28,7 +28,11 @@ struct Planner {
 
 // Throws InputError for an unknown solver or options out of range. `problem_path` names the problem
 // in messages (and the offline solver's progress).
+// The checks make_planner() makes, without building the solver (the offline one solves when built):
+// a known solver name, --policy only with it, search options and budget in range.
+void check_planner(const solvers::PlannerOverrides& overrides, const pomdp::Problem& problem);
+
 Planner make_planner(const solvers::PlannerOverrides& overrides, const pomdp::Problem& problem,
                      const std::string& problem_path);
 
-}  // namespace echoplan::experiment
+}  // namespace echoplan::loop

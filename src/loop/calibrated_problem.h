@@ -5,8 +5,12 @@
 
 #include "perception/observation_model.h"
 #include "pomdp/object_identification_model.h"
+#include "pomdp/problem.h"
 
-namespace echoplan::experiment {
+#include <memory>
+#include <string>
+
+namespace echoplan::loop {
 
 // `base` with observation_symbols = model.observation_symbols() (the classes, then `unknown` when
 // the model's reject option is on) and observation_table[a][k] = the model's P(symbol | object k,
@@ -16,4 +20,16 @@ namespace echoplan::experiment {
 pomdp::ObjectProblemData calibrated_problem(const pomdp::ObjectProblemData& base,
                                             const perception::ObservationModel& model);
 
-}  // namespace echoplan::experiment
+// The loaded problem `base` planning with `model`'s calibrated table (calibrated_problem() on its
+// data; belief and planner settings kept). `source_path` names where it will be saved for the user
+// (or is empty). InputError naming `base`'s file when the model does not fit it.
+std::shared_ptr<const pomdp::Problem> calibrate_problem(const pomdp::Problem& base,
+                                                        const perception::ObservationModel& model,
+                                                        const std::string& source_path = "");
+
+// Writes an object-identification problem as YAML for the user (never read back by the loop),
+// after `header` (comment lines, each starting with "# "), in one atomic step.
+void save_problem(const pomdp::Problem& problem, const std::string& path,
+                  const std::string& header = "");
+
+}  // namespace echoplan::loop

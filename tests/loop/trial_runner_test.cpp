@@ -1,7 +1,7 @@
 // Trials end to end on the shipped seed problem (problems/audio_objects.yaml, its
 // ObjectIdentificationModel as the world, ParticleBelief as the belief): files, determinism,
 // stopping, and ABT's decisions certified against the exact V* (regret_certificate.h).
-#include "experiment/trial_runner.h"
+#include "experiment/trial_records.h"
 
 #include <gtest/gtest.h>
 

@@ -1,14 +1,16 @@
-#include "experiment/robot_environment.h"
+#include "loop/robot_world.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
 #include "common/error.h"
+#include "loop/object_problem.h"
 
-namespace echoplan::experiment {
+namespace echoplan::loop {
 
 namespace {
 
@@ -20,23 +22,12 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
 
 }  // namespace
 
-const pomdp::ObjectIdentificationModel& object_problem(const pomdp::Model& model) {
-  const auto* problem = dynamic_cast<const pomdp::ObjectIdentificationModel*>(&model);
-  if (!problem)
-    throw InputError(fmt::format(
-        "problem '{}' is not an object-identification problem (a YAML file with objects, "
-        "sensing and sorting actions, as in problems/audio_objects.yaml); a tabular .pomdp "
-        "problem has no objects to hear",
-        model.spec().name));
-  return *problem;
-}
-
-RobotEnvironment::RobotEnvironment(pomdp::ModelPtr model, RobotParts parts,
+RobotWorld::RobotWorld(pomdp::ModelPtr model, RobotParts parts,
                                    std::map<std::string, std::string> world_objects)
     : model_(std::move(model)), parts_(std::move(parts)), world_objects_(std::move(world_objects)) {
   if (!model_ || !parts_.robot || !parts_.recorder || !parts_.service)
     throw std::invalid_argument(
-        "RobotEnvironment: a model, a robot, a recorder and a service are all needed");
+        "RobotWorld: a model, a robot, a recorder and a service are all needed");
   problem_ = &object_problem(*model_);
   const pomdp::ObjectProblemData& data = problem_->data();
   for (std::size_t i = 0; i < data.observation_symbols.size(); ++i)
@@ -83,18 +74,17 @@ RobotEnvironment::RobotEnvironment(pomdp::ModelPtr model, RobotParts parts,
         data.name));
 }
 
-void RobotEnvironment::reset(const pomdp::State& true_state, Rng& rng) {
+void RobotWorld::reset(const pomdp::State& true_state, Rng& rng) {
   const pomdp::ObjectProblemData& data = problem_->data();
   if (true_state.discrete.empty() || true_state.discrete[0] < 0 ||
       true_state.discrete[0] >= static_cast<int>(data.objects.size()))
     throw std::invalid_argument(
-        "RobotEnvironment::reset: the state names no object of the problem");
+        "RobotWorld::reset: the state names no object of the problem");
   state_ = true_state;
   const std::string& object = data.objects[state_.discrete[0]];
   const auto variant = world_objects_.find(object);
   world_object_ = variant == world_objects_.end() ? object : variant->second;
   ++trial_;
-  step_ = 0;
   robot::TrialContext context;
   context.trial = trial_;
   context.object = world_object_;
@@ -104,7 +94,7 @@ void RobotEnvironment::reset(const pomdp::State& true_state, Rng& rng) {
   ended_ = false;
 }
 
-pomdp::Observation RobotEnvironment::symbol_for(const robot::HeardObservation& heard,
+pomdp::Observation RobotWorld::symbol_for(const robot::HeardObservation& heard,
                                                 const std::string& action) const {
   const std::string& label = heard.unknown ? std::string(kUnknownSymbol) : heard.label;
   const auto it = symbol_index_.find(label);
@@ -119,41 +109,31 @@ pomdp::Observation RobotEnvironment::symbol_for(const robot::HeardObservation& h
   return o;
 }
 
-pomdp::Outcome RobotEnvironment::execute(int action, Rng& /*rng*/) {
-  if (ended_)
-    throw std::logic_error("RobotEnvironment::execute after the trial ended; call reset()");
+WorldStep RobotWorld::execute(int action, Rng& /*rng*/) {
+  if (ended_) throw std::logic_error("RobotWorld::execute after the trial ended; call reset()");
   if (action < 0 || action >= problem_->num_actions())
-    throw std::out_of_range("RobotEnvironment: no such action");
+    throw std::out_of_range("RobotWorld: no such action");
   const pomdp::ObjectProblemData& data = problem_->data();
   const int object = state_.discrete[0];
+  const std::string& name = model_->spec().action_names[action];
 
-  LoopStep step;
-  step.trial = trial_;
-  step.step = step_++;
-  step.action = action;
-  step.action_name = model_->spec().action_names[action];
-  step.observation.index = problem_->none_symbol();
-
+  WorldStep step;
+  pomdp::Outcome& outcome = step.outcome;
+  RobotStep& acted = step.robot.emplace();
+  outcome.observation.index = problem_->none_symbol();
   if (!problem_->is_sensing(action)) {
-    step.report = parts_.robot->execute(step.action_name);
-    step.reward = data.sorting_reward[action - problem_->num_sensing()][object];
-    step.terminal = true;
+    acted.report = parts_.robot->execute(name);
+    outcome.reward = data.sorting_reward[action - problem_->num_sensing()][object];
+    outcome.terminal = true;
   } else {
-    parts_.recorder->start(step.action_name);
-    step.report = parts_.robot->execute(step.action_name);
-    step.clip = parts_.recorder->stop();
-    step.recorded = true;
-    if (step.report.status == robot::ActionStatus::done) {
-      // What the latency target measures: from the clip in hand to the planner's observation.
-      const auto heard_from = std::chrono::steady_clock::now();
-      step.heard = parts_.service->observe(step.clip, step.action_name);
-      step.observation = symbol_for(step.heard, step.action_name);
-      step.observe_ms =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - heard_from)
-              .count();
-      step.classified = true;
-      step.reward = data.sensing[action].reward;
-      // The model's kinematic transition, so true_state() follows the world (a slide moves the
+    parts_.recorder->start(name);
+    acted.report = parts_.robot->execute(name);
+    acted.clip = parts_.recorder->stop();
+    acted.recorded = true;
+    if (acted.report.status == robot::ActionStatus::done) {
+      hear(acted, name, outcome);
+      outcome.reward = data.sensing[action].reward;
+      // The model's kinematic transition, so the true state follows the world (a slide moves the
       // object).
       const auto& change = data.sensing[action].offset_change;
       if (state_.continuous.size() == pomdp::ObjectIdentificationModel::kNumContinuous)
@@ -161,21 +141,25 @@ pomdp::Outcome RobotEnvironment::execute(int action, Rng& /*rng*/) {
           state_.continuous[pomdp::ObjectIdentificationModel::kOffsetX + i] += change[i];
     } else {
       // A collision or a failed action ends the trial as the model's collision does.
-      step.reward = data.collision_reward;
-      step.terminal = true;
+      outcome.reward = data.collision_reward;
+      outcome.terminal = true;
     }
   }
-  step.observation_name = model_->spec().observation.names[step.observation.index];
-  ended_ = step.terminal;
-
-  pomdp::Outcome outcome;
-  outcome.observation = step.observation;
-  outcome.reward = step.reward;
-  outcome.terminal = step.terminal;
-  outcome.collision = step.report.status != robot::ActionStatus::done;
-  if (step.classified) outcome.heard_probability = step.heard.probability;
-  if (listener_) listener_(step);
-  return outcome;
+  outcome.collision = acted.report.status != robot::ActionStatus::done;
+  ended_ = outcome.terminal;
+  return step;
 }
 
-}  // namespace echoplan::experiment
+void RobotWorld::hear(RobotStep& acted, const std::string& action, pomdp::Outcome& outcome) {
+  // What the latency target measures: from the clip in hand to the planner's observation.
+  const auto heard_from = std::chrono::steady_clock::now();
+  acted.heard = parts_.service->observe(acted.clip, action);
+  outcome.observation = symbol_for(acted.heard, action);
+  acted.observe_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - heard_from)
+          .count();
+  acted.classified = true;
+  outcome.heard_probability = acted.heard.probability;
+}
+
+}  // namespace echoplan::loop

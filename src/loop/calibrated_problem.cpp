@@ -1,12 +1,15 @@
-#include "experiment/calibrated_problem.h"
+#include "loop/calibrated_problem.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <sstream>
 
 #include "common/error.h"
+#include "common/file_io.h"
+#include "loop/object_problem.h"
 
-namespace echoplan::experiment {
+namespace echoplan::loop {
 
 pomdp::ObjectProblemData calibrated_problem(const pomdp::ObjectProblemData& base,
                                             const perception::ObservationModel& model) {
@@ -37,4 +40,27 @@ pomdp::ObjectProblemData calibrated_problem(const pomdp::ObjectProblemData& base
   return out;
 }
 
-}  // namespace echoplan::experiment
+std::shared_ptr<const pomdp::Problem> calibrate_problem(const pomdp::Problem& base,
+                                                        const perception::ObservationModel& model,
+                                                        const std::string& source_path) {
+  auto calibrated = std::make_shared<pomdp::Problem>(base);
+  try {
+    calibrated->model = std::make_shared<pomdp::ObjectIdentificationModel>(
+        calibrated_problem(object_problem(*base.model).data(), model));
+  } catch (const InputError& e) {
+    throw InputError(base.source_path, 0, e.problem());
+  }
+  calibrated->source_path = source_path;
+  return calibrated;
+}
+
+void save_problem(const pomdp::Problem& problem, const std::string& path,
+                  const std::string& header) {
+  std::ostringstream text;
+  text << header;
+  pomdp::write_problem_yaml(text, object_problem(*problem.model).data(), problem.belief,
+                            problem.planner);
+  write_file_atomically(path, text.str());
+}
+
+}  // namespace echoplan::loop

@@ -1,21 +1,35 @@
-#include "experiment/planner.h"
+#include "loop/planner.h"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 #include <spdlog/spdlog.h>
 
 #include "common/error.h"
 #include "solvers/make_solver.h"
 #include "solvers/offline/offline_policy_solver.h"
 
-namespace echoplan::experiment {
+namespace echoplan::loop {
+
+void check_planner(const solvers::PlannerOverrides& f, const pomdp::Problem& problem) {
+  const std::string name = f.solver.empty() ? problem.planner.solver : f.solver;
+  const auto online = solvers::solver_names();
+  if (name != "offline" && std::find(online.begin(), online.end(), name) == online.end())
+    throw InputError(fmt::format("solver '{}' is not one of {}", name, fmt::join(online, ", ")));
+  if (!f.policy.empty() && name != "offline")
+    throw InputError("--policy is for --solver offline; the " + name +
+                     " solver plans online and would ignore it");
+  solvers::search_options(f, problem);
+  if (solvers::budget(f, problem).amount < 1)
+    throw InputError("the search budget (--episodes / --step-ms) must be >= 1");
+}
 
 Planner make_planner(const solvers::PlannerOverrides& f, const pomdp::Problem& problem,
                      const std::string& problem_path) {
+  check_planner(f, problem);
   Planner p;
   p.name = f.solver.empty() ? problem.planner.solver : f.solver;
-  if (!f.policy.empty() && p.name != "offline")
-    throw InputError("--policy is for --solver offline; the " + p.name +
-                     " solver plans online and would ignore it");
   p.options = solvers::search_options(f, problem);
   p.budget = solvers::budget(f, problem);
   if (p.name == "offline") {
@@ -53,4 +67,4 @@ nlohmann::json Planner::to_json() const {
         {"branch_threshold", options.branching.continuous_threshold}}}};
 }
 
-}  // namespace echoplan::experiment
+}  // namespace echoplan::loop

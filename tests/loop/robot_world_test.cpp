@@ -13,7 +13,7 @@
 #include "common/error.h"
 #include "experiment/calibrated_problem.h"
 #include "experiment/environment_factory.h"
-#include "experiment/trial_runner.h"
+#include "experiment/trial_records.h"
 #include "pomdp/make_belief.h"
 #include "pomdp/problem.h"
 #include "robot/classifier_service.h"

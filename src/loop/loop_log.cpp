@@ -1,11 +1,13 @@
-#include "experiment/loop_log.h"
+#include "loop/loop_log.h"
 
 #include <fmt/format.h>
+
+#include <stdexcept>
 
 #include "audio/io.h"
 #include "common/error.h"
 
-namespace echoplan::experiment {
+namespace echoplan::loop {
 
 namespace fs = std::filesystem;
 
@@ -27,7 +29,7 @@ nlohmann::json named_values(const std::vector<std::string>& names,
 }  // namespace
 
 LoopLog::LoopLog(const fs::path& directory, const pomdp::ObjectIdentificationModel& model)
-    : directory_(directory), objects_(model.data().objects) {
+    : directory_(directory), model_(model), objects_(model.data().objects) {
   std::error_code ec;
   fs::create_directories(directory_ / "clips", ec);
   if (ec)
@@ -39,35 +41,40 @@ LoopLog::LoopLog(const fs::path& directory, const pomdp::ObjectIdentificationMod
   csv_ << ",reward,clip\n" << std::flush;
 }
 
-nlohmann::json LoopLog::write_step(const LoopStep& step, const std::vector<double>& belief_before,
-                                   const std::vector<double>* belief_after) {
+nlohmann::json LoopLog::write_step(const Step& s) {
+  if (!s.robot) throw std::invalid_argument("LoopLog: a step without a robot");
+  const RobotStep& step = *s.robot;
+  const StepRecord& r = s.record;
+  const std::string& action = model_.spec().action_names[r.action];
+  const std::string& observation = model_.spec().observation.names[r.observation.index];
+  const std::vector<double>* belief_after = s.belief_after ? &*s.belief_after : nullptr;
   std::string clip;
   if (step.recorded) {
-    clip = fmt::format("clips/{:03d}_{:02d}_{}.wav", step.trial, step.step, step.action_name);
+    clip = fmt::format("clips/{:03d}_{:02d}_{}.wav", r.trial, r.step, action);
     audio::write_audio((directory_ / clip).string(), step.clip);
   }
   const std::string heard =
       step.classified ? (step.heard.unknown ? "unknown" : step.heard.label) : "";
-  csv_ << step.trial << ',' << step.step << ',' << step.action_name << ','
-       << robot::to_string(step.report.status) << ',' << heard << ','
+  csv_ << r.trial << ',' << r.step << ',' << action << ',' << robot::to_string(step.report.status)
+       << ',' << heard << ','
        << (step.classified ? fmt::format("{:.4f}", step.heard.probability) : "") << ','
-       << step.observation_name;
+       << observation;
   for (std::size_t k = 0; k < objects_.size(); ++k)
     csv_ << ',' << (belief_after ? fmt::format("{:.4f}", (*belief_after)[k]) : "");
-  csv_ << ',' << fmt::format("{:g}", step.reward) << ',' << clip << '\n' << std::flush;
+  csv_ << ',' << fmt::format("{:g}", r.reward) << ',' << clip << '\n' << std::flush;
 
   nlohmann::json j = {
-      {"trial", step.trial},
-      {"step", step.step},
-      {"action", step.action_name},
+      {"trial", r.trial},
+      {"step", r.step},
+      {"action", action},
       {"report",
        {{"status", robot::to_string(step.report.status)},
         {"reason", step.report.reason},
         {"duration_s", step.report.duration_s}}},
-      {"observation", step.observation_name},
-      {"reward", step.reward},
-      {"terminal", step.terminal},
-      {"belief_before", named_values(objects_, belief_before)},
+      {"observation", observation},
+      {"reward", r.reward},
+      {"terminal", s.terminal},
+      {"belief_before", named_values(objects_, r.belief)},
       {"belief_after",
        belief_after ? named_values(objects_, *belief_after) : nlohmann::json(nullptr)},
       {"clip", clip.empty() ? nlohmann::json(nullptr) : nlohmann::json(clip)},
@@ -88,4 +95,4 @@ nlohmann::json LoopLog::write_step(const LoopStep& step, const std::vector<doubl
   return j;
 }
 
-}  // namespace echoplan::experiment
+}  // namespace echoplan::loop

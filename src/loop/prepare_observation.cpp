@@ -1,0 +1,76 @@
+#include "loop/prepare_observation.h"
+
+#include <fstream>
+
+#include "loop/calibrated_problem.h"
+#include "perception/recording_set.h"
+#include "sim/dataset.h"
+
+namespace echoplan::loop {
+
+namespace {
+
+// The clips a complete training set's manifest lists.
+bool complete(const SimulatedTraining& training) {
+  std::ifstream manifest(training.directory / "manifest.csv");
+  if (!manifest) return false;
+  int rows = -1;  // the header
+  std::string line;
+  while (std::getline(manifest, line)) ++rows;
+  return rows == training.per_pair * static_cast<int>(training.objects.size() *
+                                                      training.actions.size());
+}
+
+std::shared_ptr<const perception::ObservationModel> train(const std::string& recordings,
+                                                         const perception::TrainOptions& options,
+                                                         const perception::ProgressFn& progress,
+                                                         const std::atomic<bool>& stop) {
+  auto model = std::make_shared<const perception::ObservationModel>(
+      perception::train_observation_model(perception::load_recording_set(recordings), options,
+                                          progress));
+  return stop.load() ? nullptr : model;
+}
+
+}  // namespace
+
+bool synthesise_training_set(const SimulatedTraining& training,
+                             const perception::ProgressFn& progress,
+                             const std::atomic<bool>& stop) {
+  if (training.reuse_complete && complete(training)) return true;
+  sim::DatasetOptions options;
+  options.objects = training.objects;
+  options.actions = training.actions;
+  options.per_pair = training.per_pair;
+  options.seed = training.seed;
+  options.output_dir = training.directory.string();
+  const sim::DatasetSummary written = sim::write_dataset(
+      *training.catalogue, *training.config, options,
+      [&](int done, int total, const std::string&) {
+        if (progress) progress("synthesise", done, total);
+      },
+      stop);
+  return !written.interrupted;
+}
+
+PreparedObservation prepare_observation(const ObservationSource& source,
+                                        const pomdp::Problem* calibrate,
+                                        const std::string& problem_path,
+                                        const perception::ProgressFn& progress,
+                                        const std::atomic<bool>& stop) {
+  PreparedObservation prepared;
+  if (const auto* file = std::get_if<ModelFile>(&source)) {
+    prepared.model = std::make_shared<const perception::ObservationModel>(
+        perception::load_observation_model(file->path));
+  } else if (const auto* folder = std::get_if<RecordingsTraining>(&source)) {
+    prepared.model = train(folder->recordings, folder->train, progress, stop);
+  } else {
+    const auto& simulated = std::get<SimulatedTraining>(source);
+    if (!synthesise_training_set(simulated, progress, stop)) return prepared;
+    prepared.model = train(simulated.directory.string(), simulated.train, progress, stop);
+  }
+  if (prepared.model && calibrate)
+    prepared.problem = calibrate_problem(*calibrate, *prepared.model, problem_path);
+  return prepared;
+}
+
+}  // namespace echoplan::loop

@@ -1,0 +1,22 @@
+// The random streams drawn from a user's seed, named once. `echoplan run` and the ROS planner node
+// draw the same streams, so the same seed gives them the same log.
+#pragma once
+
+#include <cstdint>
+
+#include "common/rng.h"
+
+namespace echoplan::loop {
+
+enum class Stream : std::uint64_t {
+  run_training = 1,                 // `echoplan run`: the simulated training set
+  run_trial = 2,                    // `echoplan run`, the ROS loop: the trials' streams
+  campaign_training = 0x747261696e,  // "train": a campaign's synthesised training set
+  campaign_folds = 0x63616c6962,     // "calib": a campaign's cross-validation folds
+};
+
+inline std::uint64_t stream_seed(std::uint64_t seed, Stream stream) {
+  return derive_seed(seed, {static_cast<std::uint64_t>(stream)});
+}
+
+}  // namespace echoplan::loop

@@ -1,0 +1,114 @@
+#include "loop/world_spec.h"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "common/error.h"
+#include "loop/object_problem.h"
+#include "loop/table_world.h"
+#include "robot/classifier_service.h"
+#include "robot/replay_recorder.h"
+#include "robot/simulated_world.h"
+
+namespace echoplan::loop {
+
+namespace {
+
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
+
+std::string world_object(const WorldInputs& in, const std::string& object) {
+  const auto it = in.world_objects.find(object);
+  return it == in.world_objects.end() ? object : it->second;
+}
+
+void check_simulator(const WorldInputs& in, const SimulatedWorldSpec& spec,
+                     const pomdp::ObjectProblemData& data) {
+  if (!spec.catalogue || !spec.config)
+    throw std::invalid_argument("SimulatedWorldSpec: a catalogue and a config are needed");
+  const robot::SimulatedWorld world(*spec.catalogue, *spec.config, data.sorting);
+  for (const auto& act : data.sensing) {
+    try {
+      world.check_action(act.name);
+    } catch (const InputError& e) {
+      throw InputError(
+          fmt::format("problem '{}': sensing action '{}': {}", data.name, act.name, e.what()));
+    }
+  }
+  for (const std::string& object : data.objects) {
+    try {
+      world.check_object(world_object(in, object));
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("problem '{}' has object '{}', which the simulator cannot hold: {}",
+                                   data.name, world_object(in, object), e.what()));
+    }
+  }
+}
+
+// A robot world's factory: the parts come from `make_parts` (each call a new set), the problem
+// and the classifier checks from RobotWorld's constructor, made once now.
+WorldFactory robot_world_factory(const WorldInputs& in, std::function<RobotParts()> make_parts) {
+  auto problem = in.problem;
+  auto objects = in.world_objects;
+  auto make = [problem, objects, make_parts]() -> std::unique_ptr<World> {
+    return std::make_unique<RobotWorld>(problem, make_parts(), objects);
+  };
+  return make;
+}
+
+}  // namespace
+
+std::string world_name(const WorldSpec& world) {
+  return std::visit(Overloaded{[](const TableWorldSpec&) { return std::string("model"); },
+                               [](const SimulatedWorldSpec&) { return std::string("simulator"); },
+                               [](const ReplayWorldSpec&) { return std::string("replay"); },
+                               [](const PartsWorldSpec& p) { return p.description; }},
+                    world);
+}
+
+WorldFactory make_world_factory(WorldInputs in) {
+  if (!in.problem) throw std::invalid_argument("make_world_factory: no problem model");
+  if (const auto* parts = std::get_if<PartsWorldSpec>(&in.spec))
+    return robot_world_factory(in, parts->make);
+  if (std::holds_alternative<TableWorldSpec>(in.spec)) {
+    auto problem = in.problem;
+    return [problem]() -> std::unique_ptr<World> { return std::make_unique<TableWorld>(problem); };
+  }
+  if (!in.classifier) throw std::invalid_argument("make_world_factory: no observation model");
+  const pomdp::ObjectProblemData& data = object_problem(*in.problem).data();
+  auto classifier = in.classifier;
+  std::function<RobotParts()> make_parts;
+  if (const auto* simulated = std::get_if<SimulatedWorldSpec>(&in.spec)) {
+    check_simulator(in, *simulated, data);
+    const SimulatedWorldSpec spec = *simulated;
+    const std::vector<std::string> sorting = data.sorting;
+    make_parts = [spec, sorting, classifier] {
+      auto world = std::make_shared<robot::SimulatedWorld>(*spec.catalogue, *spec.config, sorting);
+      return RobotParts{std::make_unique<robot::SimulatedArm>(world),
+                        std::make_unique<robot::SimulatedMicrophone>(world),
+                        std::make_unique<robot::ClassifierService>(classifier)};
+    };
+  } else {
+    // The folder is indexed once; every world deals its own files from a copy of the index.
+    auto replay = std::make_shared<const robot::ReplayRecorder>(
+        std::get<ReplayWorldSpec>(in.spec).recordings);
+    for (const std::string& object : data.objects)
+      for (const auto& act : data.sensing) replay->check(world_object(in, object), act.name);
+    const std::vector<std::string> actions = in.problem->spec().action_names;
+    make_parts = [replay, actions, classifier] {
+      return RobotParts{std::make_unique<robot::ReplayRobot>(actions),
+                        std::make_unique<robot::ReplayRecorder>(*replay),
+                        std::make_unique<robot::ClassifierService>(classifier)};
+    };
+  }
+  WorldFactory factory = robot_world_factory(in, std::move(make_parts));
+  factory();  // RobotWorld checks the classifier against the problem: an InputError stops all work
+  return factory;
+}
+
+}  // namespace echoplan::loop
