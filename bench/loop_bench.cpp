@@ -12,8 +12,9 @@
 #include <memory>
 
 #include "common/rng.h"
-#include "experiment/calibrated_problem.h"
-#include "experiment/simulated_training.h"
+#include "loop/calibrated_problem.h"
+#include "loop/object_problem.h"
+#include "loop/prepare_observation.h"
 #include "perception/clip_analysis.h"
 #include "pomdp/particle_belief.h"
 #include "pomdp/problem.h"
@@ -35,20 +36,20 @@ struct Fixture {
   audio::AudioClip clip;
 
   Fixture() {
-    const auto& data = dynamic_cast<const pomdp::ObjectIdentificationModel&>(*base.model).data();
-    experiment::SimulatedTraining training;
-    training.objects = data.objects;
+    loop::SimulatedTraining training;
+    training.catalogue = std::make_shared<const sim::Catalogue>(catalogue);
+    training.config = std::make_shared<const sim::SimConfig>();
+    training.objects = loop::object_problem(*base.model).data().objects;
     training.actions = {"slide", "strike"};
     training.per_pair = 5;
     training.seed = 1;
     training.directory = std::filesystem::temp_directory_path() / "echoplan_loop_bench";
     const std::atomic<bool> never{false};
-    model = std::make_shared<const perception::ObservationModel>(
-        experiment::train_on_simulated_recordings(catalogue, sim::SimConfig{}, training, {},
-                                                  never));
+    const loop::PreparedObservation prepared =
+        loop::prepare_observation(training, &base, "", {}, never);
     std::filesystem::remove_all(training.directory);
-    problem = std::make_shared<pomdp::ObjectIdentificationModel>(
-        experiment::calibrated_problem(data, *model));
+    model = prepared.model;
+    problem = prepared.problem->model;
     sim::SimulatedRobot robot(catalogue, "coffee_mug", sim::SimConfig{});
     sim::SimulatedRecorder recorder(robot.object(), robot.table(), sim::SimConfig{});
     Rng rng(12345);

@@ -141,7 +141,8 @@ std::vector<loop::TrialRecord> run_loop_trials(const LoopTrialSettings& settings
   }
   timings.capture_start_ms = recorder_clock->start_ms;
   if (!timings.observe_ms.empty())
-    say(fmt::format("latency, median of {} sensing steps: end of action -> belief updated {:.2f} "
+    say(
+        fmt::format("latency, median of {} sensing steps: end of action -> belief updated {:.2f} "
                     "ms, of which the observation service call {:.2f} ms; recorder start {:.2f} ms",
                     timings.observe_ms.size(), median(timings.action_end_to_belief_ms),
                     median(timings.observe_ms), median(timings.capture_start_ms)));

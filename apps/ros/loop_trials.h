@@ -46,9 +46,10 @@ struct LoopTimings {
 // Runs the trials, writing the LoopLog and telling `say` one line per step and per trial (as
 // `echoplan run` prints them). Throws InputError for bad settings and whatever a part throws (a
 // node that died: std::runtime_error naming it), after logging the steps finished so far.
-std::vector<loop::TrialRecord> run_loop_trials(
-    const LoopTrialSettings& settings, loop::RobotParts parts,
-    const std::function<void(const std::string&)>& say,
-    const std::atomic<bool>* stop_requested = nullptr, LoopTimings* timings = nullptr);
+std::vector<loop::TrialRecord> run_loop_trials(const LoopTrialSettings& settings,
+                                               loop::RobotParts parts,
+                                               const std::function<void(const std::string&)>& say,
+                                               const std::atomic<bool>* stop_requested = nullptr,
+                                               LoopTimings* timings = nullptr);
 
 }  // namespace echoplan::ros_app

@@ -141,9 +141,8 @@ void claim_folder(const Campaign& c, InputFiles& files) {
       {"config", to_json(c.config)},
       {"identity", c.config.identity([&](const std::string& path) { return files.text(path); })}};
   if (fs::exists(described)) {
-    const nlohmann::json theirs =
-        nlohmann::json::parse(read_text_file(described.string(), "campaign description"),
-                              nullptr, false);
+    const nlohmann::json theirs = nlohmann::json::parse(
+        read_text_file(described.string(), "campaign description"), nullptr, false);
     if (theirs.is_discarded() || !theirs.contains("identity") ||
         theirs["identity"] != mine["identity"])
       throw InputError(
@@ -196,11 +195,12 @@ Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) 
     throw InputError(config.training.recordings, 0, "the recordings folder does not exist");
   if (!config.training.model.empty() && needs_classifier(config)) {
     // A given model must be one for these objects and actions.
-    c.observation_model = std::make_shared<const perception::ObservationModel>(
-        perception::parse_observation_model(files.text(config.training.model),
-                                            config.training.model));
+    c.observation_model =
+        std::make_shared<const perception::ObservationModel>(perception::parse_observation_model(
+            files.text(config.training.model), config.training.model));
     for (std::size_t a = 0; a < config.arms.size(); ++a)
-      if (config.arms[a].calibrate) loop::calibrate_problem(*c.arm_problems[a], *c.observation_model);
+      if (config.arms[a].calibrate)
+        loop::calibrate_problem(*c.arm_problems[a], *c.observation_model);
     make_loops(c);
   } else if (needs_classifier(config) && config.training.recordings_per_pair == 0 &&
              config.training.recordings.empty()) {

@@ -11,8 +11,8 @@
 
 #include "common/data_dir.h"
 #include "common/error.h"
-#include "common/stable_hash.h"
 #include "common/file_io.h"
+#include "common/stable_hash.h"
 #include "common/yaml_reader.h"
 #include "perception/observation_model.h"
 #include "solvers/make_solver.h"

@@ -47,8 +47,8 @@ struct Shard {
 // Parses "I/N"; throws InputError for anything else or I outside 1..N.
 Shard parse_shard(const std::string& text);
 
-// What an arm's planner takes from the campaign: its solver and budget (the arm problem's file gives
-// the search settings).
+// What an arm's planner takes from the campaign: its solver and budget (the arm problem's file
+// gives the search settings).
 solvers::PlannerOverrides arm_planner(const CampaignConfig& config);
 
 // The checked loop of each arm and group: loops[arm][group] (campaign.h builds them).

@@ -3,12 +3,12 @@
 // calibration, seed report section 3.3 for the table it replaces).
 #pragma once
 
+#include <memory>
+#include <string>
+
 #include "perception/observation_model.h"
 #include "pomdp/object_identification_model.h"
 #include "pomdp/problem.h"
-
-#include <memory>
-#include <string>
 
 namespace echoplan::loop {
 

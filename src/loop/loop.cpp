@@ -55,8 +55,8 @@ LoopSpec::LoopSpec(LoopSettings settings) : settings_(std::move(settings)) {
 
 Loop::Loop(std::shared_ptr<const LoopSpec> spec)
     : spec_(std::move(spec)),
-      planner_(make_planner(spec_->settings().planner, spec_->problem(),
-                            spec_->problem().source_path)),
+      planner_(
+          make_planner(spec_->settings().planner, spec_->problem(), spec_->problem().source_path)),
       world_(spec_->world_factory()()) {}
 
 std::optional<Trial> Loop::run(const TrialRequest& request, const StepFn& on_step,
@@ -80,9 +80,10 @@ int object_index(const pomdp::Problem& problem, const std::string& object) {
     const auto it = std::find(names[0].begin(), names[0].end(), object);
     if (it != names[0].end()) return static_cast<int>(it - names[0].begin());
   }
-  throw InputError(problem.source_path, 0,
-                   fmt::format("has no object '{}' (objects: {})", object,
-                               names.empty() ? "none" : fmt::format("{}", fmt::join(names[0], ", "))));
+  throw InputError(
+      problem.source_path, 0,
+      fmt::format("has no object '{}' (objects: {})", object,
+                  names.empty() ? "none" : fmt::format("{}", fmt::join(names[0], ", "))));
 }
 
 }  // namespace echoplan::loop

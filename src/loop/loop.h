@@ -1,10 +1,11 @@
 // The closed loop, assembled once: what `echoplan run`, `echoplan trials`, the ROS planner node and
 // a campaign's workers all call.
 //
-//   LoopSettings settings;                    // the problem, the world, the classifier, the planner
-//   auto spec = std::make_shared<const LoopSpec>(std::move(settings));  // checked: InputError now
-//   Loop loop(spec);                          // a world and a planner of its own (one per thread)
-//   std::optional<Trial> trial = loop.run({.index = 0, .object = 2, .seed = 7}, print_step);
+//   LoopSettings settings;                    // the problem, the world, the classifier, the
+//   planner auto spec = std::make_shared<const LoopSpec>(std::move(settings));  // checked:
+//   InputError now Loop loop(spec);                          // a world and a planner of its own
+//   (one per thread) std::optional<Trial> trial = loop.run({.index = 0, .object = 2, .seed = 7},
+//   print_step);
 //
 // Each returned step carries everything it produced: the decision, the belief before and after,
 // what the planner was told and, in a world with a robot, the robot's report, the clip and what
@@ -60,8 +61,8 @@ class LoopSpec {
 
 // Which trial to run.
 struct TrialRequest {
-  int index = 0;         // the trial's number: its random streams come from (seed, index)
-  int object = -1;       // the true object (index into the problem's objects); -1: drawn
+  int index = 0;    // the trial's number: its random streams come from (seed, index)
+  int object = -1;  // the true object (index into the problem's objects); -1: drawn
   std::uint64_t seed = 1;
 };
 

@@ -17,17 +17,17 @@ bool complete(const SimulatedTraining& training) {
   int rows = -1;  // the header
   std::string line;
   while (std::getline(manifest, line)) ++rows;
-  return rows == training.per_pair * static_cast<int>(training.objects.size() *
-                                                      training.actions.size());
+  return rows ==
+         training.per_pair * static_cast<int>(training.objects.size() * training.actions.size());
 }
 
 std::shared_ptr<const perception::ObservationModel> train(const std::string& recordings,
-                                                         const perception::TrainOptions& options,
-                                                         const perception::ProgressFn& progress,
-                                                         const std::atomic<bool>& stop) {
-  auto model = std::make_shared<const perception::ObservationModel>(
-      perception::train_observation_model(perception::load_recording_set(recordings), options,
-                                          progress));
+                                                          const perception::TrainOptions& options,
+                                                          const perception::ProgressFn& progress,
+                                                          const std::atomic<bool>& stop) {
+  auto model =
+      std::make_shared<const perception::ObservationModel>(perception::train_observation_model(
+          perception::load_recording_set(recordings), options, progress));
   return stop.load() ? nullptr : model;
 }
 

@@ -65,7 +65,6 @@ PreparedObservation prepare_observation(const ObservationSource& source,
 
 // Synthesises `training`'s recordings unless complete already; false when stopped.
 bool synthesise_training_set(const SimulatedTraining& training,
-                             const perception::ProgressFn& progress,
-                             const std::atomic<bool>& stop);
+                             const perception::ProgressFn& progress, const std::atomic<bool>& stop);
 
 }  // namespace echoplan::loop

@@ -23,7 +23,7 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
 }  // namespace
 
 RobotWorld::RobotWorld(pomdp::ModelPtr model, RobotParts parts,
-                                   std::map<std::string, std::string> world_objects)
+                       std::map<std::string, std::string> world_objects)
     : model_(std::move(model)), parts_(std::move(parts)), world_objects_(std::move(world_objects)) {
   if (!model_ || !parts_.robot || !parts_.recorder || !parts_.service)
     throw std::invalid_argument(
@@ -78,8 +78,7 @@ void RobotWorld::reset(const pomdp::State& true_state, Rng& rng) {
   const pomdp::ObjectProblemData& data = problem_->data();
   if (true_state.discrete.empty() || true_state.discrete[0] < 0 ||
       true_state.discrete[0] >= static_cast<int>(data.objects.size()))
-    throw std::invalid_argument(
-        "RobotWorld::reset: the state names no object of the problem");
+    throw std::invalid_argument("RobotWorld::reset: the state names no object of the problem");
   state_ = true_state;
   const std::string& object = data.objects[state_.discrete[0]];
   const auto variant = world_objects_.find(object);
@@ -95,7 +94,7 @@ void RobotWorld::reset(const pomdp::State& true_state, Rng& rng) {
 }
 
 pomdp::Observation RobotWorld::symbol_for(const robot::HeardObservation& heard,
-                                                const std::string& action) const {
+                                          const std::string& action) const {
   const std::string& label = heard.unknown ? std::string(kUnknownSymbol) : heard.label;
   const auto it = symbol_index_.find(label);
   if (it == symbol_index_.end())

@@ -46,7 +46,7 @@ class RobotWorld final : public World {
   // coffee_mug_weighted); objects not in the map are themselves. Throws InputError as described
   // above.
   RobotWorld(pomdp::ModelPtr model, RobotParts parts,
-                   std::map<std::string, std::string> world_objects = {});
+             std::map<std::string, std::string> world_objects = {});
 
   // Begins a trial with the object of `true_state`; the world's own random stream is seeded by one
   // draw from `rng`.
@@ -55,6 +55,9 @@ class RobotWorld final : public World {
   // in reset(). Throws std::logic_error after the trial ended and for an action index out of range.
   WorldStep execute(int action, Rng& rng) override;
 
+  // The hidden state as far as the world knows it: the trial's truth, with the model's kinematic
+  // transition applied after each sensing action (a slide moves the object).
+  const pomdp::State& true_state() const { return state_; }
   // The object the world holds in this trial (after world_objects).
   const std::string& world_object() const { return world_object_; }
   const pomdp::ObjectIdentificationModel& model() const { return *problem_; }
@@ -73,7 +76,7 @@ class RobotWorld final : public World {
   pomdp::State state_;
   std::string world_object_;
   bool ended_ = true;  // until the first reset()
-  int trial_ = -1;  // trials begun on this world (the robot's TrialContext::trial)
+  int trial_ = -1;     // trials begun on this world (the robot's TrialContext::trial)
 };
 
 }  // namespace echoplan::loop

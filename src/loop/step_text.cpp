@@ -46,7 +46,8 @@ std::string step_text(const Step& step, const pomdp::ModelSpec& spec) {
   return text + fmt::format(", reward {:g}", r.reward);
 }
 
-std::string belief_text(const std::vector<std::string>& objects, const std::vector<double>& belief) {
+std::string belief_text(const std::vector<std::string>& objects,
+                        const std::vector<double>& belief) {
   std::size_t width = 0;
   for (const auto& o : objects) width = std::max(width, o.size());
   std::string text;

@@ -9,8 +9,8 @@
 namespace echoplan::loop {
 
 enum class Stream : std::uint64_t {
-  run_training = 1,                 // `echoplan run`: the simulated training set
-  run_trial = 2,                    // `echoplan run`, the ROS loop: the trials' streams
+  run_training = 1,                  // `echoplan run`: the simulated training set
+  run_trial = 2,                     // `echoplan run`, the ROS loop: the trials' streams
   campaign_training = 0x747261696e,  // "train": a campaign's synthesised training set
   campaign_folds = 0x63616c6962,     // "calib": a campaign's cross-validation folds
 };

@@ -13,7 +13,9 @@ class TableWorld final : public World {
   void reset(const pomdp::State& true_state, Rng& rng) override {
     environment_.reset(true_state, rng);
   }
-  WorldStep execute(int action, Rng& rng) override { return {environment_.execute(action, rng), {}}; }
+  WorldStep execute(int action, Rng& rng) override {
+    return {environment_.execute(action, rng), {}};
+  }
 
  private:
   pomdp::ModelEnvironment environment_;

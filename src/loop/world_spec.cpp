@@ -44,8 +44,9 @@ void check_simulator(const WorldInputs& in, const SimulatedWorldSpec& spec,
     try {
       world.check_object(world_object(in, object));
     } catch (const InputError& e) {
-      throw InputError(fmt::format("problem '{}' has object '{}', which the simulator cannot hold: {}",
-                                   data.name, world_object(in, object), e.what()));
+      throw InputError(
+          fmt::format("problem '{}' has object '{}', which the simulator cannot hold: {}",
+                      data.name, world_object(in, object), e.what()));
     }
   }
 }

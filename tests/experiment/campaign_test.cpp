@@ -56,7 +56,7 @@ int run(const CampaignConfig& config, const fs::path& dir, int workers, Shard sh
   options.on_trial = [&](const JournalEntry&) {
     if (++finished == stop_after) stop = true;
   };
-  const int n = run_campaign_trials(config, remaining_jobs(campaign, shard), make_world(campaign),
+  const int n = run_campaign_trials(config, campaign.loops, remaining_jobs(campaign, shard),
                                     journal, options);
   rebuild_report(campaign, false);
   return n;

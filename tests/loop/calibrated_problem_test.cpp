@@ -3,7 +3,7 @@
 // plastic_cup, actions slide and strike, reject on): the model's table replaces the hand-tuned
 // one, rows matched to the problem's objects and actions by name, everything else kept; problems
 // the model was not trained for are refused naming what is missing.
-#include "experiment/calibrated_problem.h"
+#include "loop/calibrated_problem.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include "perception/observation_model.h"
 #include "pomdp/problem.h"
 
-namespace echoplan::experiment {
+namespace echoplan::loop {
 namespace {
 
 using pomdp::ObjectProblemData;
@@ -140,4 +140,4 @@ TEST(CalibratedProblem, RefusesASensingActionWithoutAClassifier) {
 }
 
 }  // namespace
-}  // namespace echoplan::experiment
+}  // namespace echoplan::loop

@@ -1,10 +1,11 @@
 // LoopLog: the closed loop's per-step files, against rows written out by hand from the format in
 // loop_log.h, on the shipped seed problem (objects pringles_can, coffee_mug, plastic_cup,
 // paper_base).
-#include "experiment/loop_log.h"
+#include "loop/loop_log.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -13,7 +14,7 @@
 #include "common/error.h"
 #include "pomdp/problem.h"
 
-namespace echoplan::experiment {
+namespace echoplan::loop {
 namespace {
 
 namespace fs = std::filesystem;
@@ -21,7 +22,12 @@ namespace fs = std::filesystem;
 const pomdp::ObjectIdentificationModel& seed_model() {
   static const pomdp::Problem problem =
       pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
-  return dynamic_cast<const pomdp::ObjectIdentificationModel&>(*problem.model);
+  return *problem.model->object_identification();
+}
+
+int symbol(const std::string& name) {
+  const auto& names = seed_model().spec().observation.names;
+  return static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
 }
 
 std::string slurp(const fs::path& path) {
@@ -31,53 +37,54 @@ std::string slurp(const fs::path& path) {
   return s.str();
 }
 
-// A strike heard as the mug (p 0.8125), then move_to_B ending the trial.
-LoopStep strike_step() {
-  LoopStep s;
-  s.trial = 2;
-  s.step = 0;
-  s.action = 1;
-  s.action_name = "strike";
-  s.report = {"strike", robot::ActionStatus::done, "", 0.5};
-  s.recorded = true;
-  s.clip.sample_rate = 8000;
-  s.clip.channels = 2;
-  s.clip.samples = {0.0f, 0.25f, -0.5f, 0.5f, 0.125f, -0.25f};  // 3 frames
-  s.classified = true;
-  s.heard.label = "coffee_mug";
-  s.heard.probability = 0.8125;
-  s.heard.probabilities = {{"coffee_mug", 0.8125}, {"plastic_cup", 0.1875}};
-  s.heard.distance = 1.5;
-  s.heard.features = {{"onset_s", 0.25}};
-  s.observation_name = "coffee_mug";
-  s.reward = -1;
-  s.observe_ms = 3.5;
+// A strike heard as the mug (p 0.8125), from a uniform belief to `after`.
+Step strike_step() {
+  Step s;
+  s.record.trial = 2;
+  s.record.step = 0;
+  s.record.action = 1;  // strike
+  s.record.belief = {0.25, 0.25, 0.25, 0.25};
+  s.record.observation.index = symbol("coffee_mug");
+  s.record.reward = -1;
+  s.belief_after = {0.125, 0.5, 0.3125, 0.0625};
+  RobotStep& r = s.robot.emplace();
+  r.report = {"strike", robot::ActionStatus::done, "", 0.5};
+  r.recorded = true;
+  r.clip.sample_rate = 8000;
+  r.clip.channels = 2;
+  r.clip.samples = {0.0f, 0.25f, -0.5f, 0.5f, 0.125f, -0.25f};  // 3 frames
+  r.classified = true;
+  r.heard.label = "coffee_mug";
+  r.heard.probability = 0.8125;
+  r.heard.probabilities = {{"coffee_mug", 0.8125}, {"plastic_cup", 0.1875}};
+  r.heard.distance = 1.5;
+  r.heard.features = {{"onset_s", 0.25}};
+  r.observe_ms = 3.5;
   return s;
 }
 
-LoopStep sort_step() {
-  LoopStep s;
-  s.trial = 2;
-  s.step = 1;
-  s.action = 3;
-  s.action_name = "move_to_B";
-  s.report = {"move_to_B", robot::ActionStatus::done, "", 0.0};
-  s.observation_name = "none";
-  s.reward = 100;
+// move_to_B ending the trial.
+Step sort_step() {
+  Step s;
+  s.record.trial = 2;
+  s.record.step = 1;
+  s.record.action = 3;  // move_to_B
+  s.record.belief = {0.125, 0.5, 0.3125, 0.0625};
+  s.record.observation.index = seed_model().none_symbol();
+  s.record.reward = 100;
   s.terminal = true;
+  s.robot.emplace().report = {"move_to_B", robot::ActionStatus::done, "", 0.0};
   return s;
 }
 
 using LoopLogTest = TestFolder;
 
 TEST_F(LoopLogTest, CsvRowsClipsAndJsonOfATrial) {
-  const std::vector<double> before = {0.25, 0.25, 0.25, 0.25};
-  const std::vector<double> after = {0.125, 0.5, 0.3125, 0.0625};
   nlohmann::json strike, sort;
   {
     LoopLog log(dir_, seed_model());
-    strike = log.write_step(strike_step(), before, &after);
-    sort = log.write_step(sort_step(), after, nullptr);
+    strike = log.write_step(strike_step());
+    sort = log.write_step(sort_step());
   }
   EXPECT_EQ(slurp(dir_ / "loop_steps.csv"),
             "trial,step,action,status,heard,probability,observation,p_pringles_can,p_coffee_mug,"
@@ -90,7 +97,7 @@ TEST_F(LoopLogTest, CsvRowsClipsAndJsonOfATrial) {
   const audio::AudioClip clip = audio::read_audio((dir_ / "clips/002_00_strike.wav").string());
   EXPECT_EQ(clip.sample_rate, 8000);
   EXPECT_EQ(clip.channels, 2);
-  EXPECT_EQ(clip.samples, strike_step().clip.samples);
+  EXPECT_EQ(clip.samples, strike_step().robot->clip.samples);
   EXPECT_FALSE(fs::exists(dir_ / "clips/002_01_move_to_B.wav"));
 
   // loop_steps.jsonl holds the objects write_step() returned, one a line.
@@ -118,13 +125,14 @@ TEST_F(LoopLogTest, CsvRowsClipsAndJsonOfATrial) {
 }
 
 TEST_F(LoopLogTest, ACollisionIsLoggedWithItsReason) {
-  LoopStep s = sort_step();
-  s.action_name = "slide";
-  s.report = {"slide", robot::ActionStatus::collision, "the arm touched the table", 0.25};
-  s.reward = -200;
+  Step s = sort_step();
+  s.record.action = 0;  // slide
+  s.robot->report = {"slide", robot::ActionStatus::collision, "the arm touched the table", 0.25};
+  s.robot->recorded = false;
+  s.record.reward = -200;
   {
     LoopLog log(dir_, seed_model());
-    const nlohmann::json j = log.write_step(s, {0.25, 0.25, 0.25, 0.25}, nullptr);
+    const nlohmann::json j = log.write_step(s);
     EXPECT_EQ(j["report"]["status"], "collision");
     EXPECT_EQ(j["report"]["reason"], "the arm touched the table");
   }
@@ -138,4 +146,4 @@ TEST_F(LoopLogTest, AFolderThatCannotBeCreatedIsAnInputError) {
 }
 
 }  // namespace
-}  // namespace echoplan::experiment
+}  // namespace echoplan::loop

@@ -2,7 +2,7 @@
 // for, and how they are described in logs. The shipped problems are the fixtures:
 // audio_objects.yaml asks for abt, 2000 ms per step, depth 100, exploration 110 and 1000 particles;
 // tiger.pomdp has no planner section (abt, 1000 episodes per step).
-#include "experiment/planner.h"
+#include "loop/planner.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include "solvers/abt_solver.h"
 #include "solvers/pomcp_solver.h"
 
-namespace echoplan::experiment {
+namespace echoplan::loop {
 namespace {
 
 std::string shipped(const std::string& name) {
@@ -71,4 +71,4 @@ TEST(Planner, BadChoicesAreInputErrors) {
 }
 
 }  // namespace
-}  // namespace echoplan::experiment
+}  // namespace echoplan::loop

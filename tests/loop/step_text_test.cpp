@@ -1,0 +1,60 @@
+// What `echoplan run` and the ROS planner node print for a step and a belief.
+#include "loop/step_text.h"
+
+#include <gtest/gtest.h>
+
+namespace echoplan::loop {
+namespace {
+
+pomdp::ModelSpec spec() {
+  pomdp::ModelSpec s;
+  s.action_names = {"slide", "strike", "move_to_A"};
+  s.observation.names = {"coffee_mug", "plastic_cup", "unknown", "none"};
+  return s;
+}
+
+Step heard(const std::string& label, bool unknown) {
+  Step s;
+  s.record.step = 1;
+  s.record.action = 1;
+  s.record.reward = -1;
+  RobotStep& r = s.robot.emplace();
+  r.report = {"strike", robot::ActionStatus::done, "", 0.5};
+  r.classified = true;
+  r.heard.label = label;
+  r.heard.unknown = unknown;
+  r.heard.probability = 0.875;
+  r.heard.probabilities = {{"coffee_mug", 0.875}, {"plastic_cup", 0.125}};
+  r.observe_ms = 1.25;
+  return s;
+}
+
+TEST(StepText, SaysWhatWasHeardWithItsProbabilityAndTime) {
+  EXPECT_EQ(step_text(heard("coffee_mug", false), spec()),
+            "step 2: strike -> heard coffee_mug (p 0.88), 1.2 ms to classify, reward -1");
+  EXPECT_EQ(step_text(heard("unknown", true), spec()),
+            "step 2: strike -> heard unknown (nearest coffee_mug, p 0.88), 1.2 ms to classify, "
+            "reward -1");
+}
+
+TEST(StepText, SaysHowAFailedActionWentAndWhatATableWorldObserved) {
+  Step s = heard("coffee_mug", false);
+  s.robot->report = {"strike", robot::ActionStatus::collision, "the arm touched the table", 0.2};
+  s.record.reward = -100;
+  EXPECT_EQ(step_text(s, spec()),
+            "step 2: strike -> collision: the arm touched the table, reward -100");
+  Step table;
+  table.record.action = 0;
+  table.record.observation.index = 1;
+  table.record.reward = -1;
+  EXPECT_EQ(step_text(table, spec()), "step 1: slide -> observed plastic_cup, reward -1");
+}
+
+TEST(StepText, ABeliefIsOneAlignedLinePerObject) {
+  EXPECT_EQ(belief_text({"mug", "cup"}, {0.25, 0.75}),
+            "    mug  ██████░░░░░░░░░░░░░░░░░░  0.250\n"
+            "    cup  ██████████████████░░░░░░  0.750\n");
+}
+
+}  // namespace
+}  // namespace echoplan::loop

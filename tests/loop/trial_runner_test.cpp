@@ -1,7 +1,7 @@
 // Trials end to end on the shipped seed problem (problems/audio_objects.yaml, its
 // ObjectIdentificationModel as the world, ParticleBelief as the belief): files, determinism,
 // stopping, and ABT's decisions certified against the exact V* (regret_certificate.h).
-#include "experiment/trial_records.h"
+#include "loop/trial_runner.h"
 
 #include <gtest/gtest.h>
 
@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -16,8 +17,9 @@
 #include "common/error.h"
 #include "experiment/regret_certificate.h"
 #include "experiment/trial_log.h"
+#include "experiment/trial_records.h"
 #include "experiment/trial_summary.h"
-#include "pomdp/model_environment.h"
+#include "loop/table_world.h"
 #include "pomdp/particle_belief.h"
 #include "pomdp/problem.h"
 #include "solvers/abt_solver.h"
@@ -52,13 +54,13 @@ struct Harness {
   }
   pomdp::Problem problem = seed_problem();
   pomdp::ModelPtr model = problem.model;
-  pomdp::ModelEnvironment environment{model};
+  loop::TableWorld world{model};
   std::unique_ptr<solvers::AbtSolver> solver =
       std::make_unique<solvers::AbtSolver>(model, solvers::search_options({}, problem));
-  TrialSetup setup() {
-    TrialSetup s;
+  loop::TrialParts setup() {
+    loop::TrialParts s;
     s.model = model.get();
-    s.environment = &environment;
+    s.world = &world;
     s.solver = solver.get();
     s.make_belief = [m = model, n = problem.belief.particles](Rng& rng) {
       return std::make_unique<pomdp::ParticleBelief>(m, n, rng);
@@ -67,10 +69,28 @@ struct Harness {
   }
 };
 
-// An observer for tests that only look at run_trials()'s return value.
-struct Ignore : TrialObserver {
-  void trial_finished(const TrialRecord&, const std::vector<StepRecord>&) override {}
-};
+using loop::TrialOptions;
+using TrialObserver = std::function<void(const TrialRecord&, const std::vector<StepRecord>&)>;
+
+// For tests that only look at run_trials()'s return value.
+const TrialObserver Ignore = [](const TrialRecord&, const std::vector<StepRecord>&) {};
+
+// The trials `echoplan trials` runs: options.total_trials() of them, per object or drawn, each
+// reported to `observer`, until `stop`.
+std::vector<TrialRecord> run_trials(const loop::TrialParts& parts, const TrialOptions& options,
+                                    const TrialObserver& observer,
+                                    const std::atomic<bool>* stop = nullptr) {
+  options.validate();
+  std::vector<TrialRecord> finished;
+  for (int t = 0; t < options.total_trials(parts.model->spec()); ++t) {
+    const auto trial = loop::run_trial(parts, options, t, options.object_of_trial(t), {}, stop);
+    if (!trial) break;
+    const TrialResult result = records_of(*trial);
+    observer(result.record, result.steps);
+    finished.push_back(result.record);
+  }
+  return finished;
+}
 
 std::filesystem::path fresh_dir(const std::string& name) {
   auto dir = std::filesystem::temp_directory_path() / ("echoplan_trials_" + name);
@@ -83,9 +103,10 @@ std::vector<TrialRecord> run_into(const std::filesystem::path& dir, const TrialO
                                   const std::atomic<bool>* stop = nullptr) {
   Harness h;
   TrialLog log(dir, h.model->spec(), 1000);
-  TrialSetup setup = h.setup();
-  setup.stop_requested = stop;
-  auto trials = run_trials(setup, options, log);
+  auto trials = run_trials(
+      h.setup(), options,
+      [&](const TrialRecord& t, const std::vector<StepRecord>& s) { log.trial_finished(t, s); },
+      stop);
   log.write_summary(summarize(trials, h.model->num_actions()), {{"seed", options.seed}});
   return trials;
 }
@@ -150,8 +171,7 @@ TEST(Trials, PerObjectRunsKTrialsForEachObject) {
   options.trials = 0;
   options.per_object = 3;
   options.budget = solvers::Budget::episodes(100);
-  Ignore keep;
-  const auto trials = run_trials(h.setup(), options, keep);
+  const auto trials = run_trials(h.setup(), options, Ignore);
   ASSERT_EQ(trials.size(), 12u);
   for (int t = 0; t < 12; ++t) EXPECT_EQ(trials[t].true_state, t / 3);
 }
@@ -162,8 +182,7 @@ TEST(Trials, MaxStepsCapsATrial) {
   options.trials = 3;
   options.max_steps = 1;
   options.budget = solvers::Budget::episodes(500);
-  Ignore keep;
-  for (const auto& t : run_trials(h.setup(), options, keep)) {
+  for (const auto& t : run_trials(h.setup(), options, Ignore)) {
     EXPECT_EQ(t.steps, 1);
     EXPECT_TRUE(t.capped);  // from the uniform belief no planner sorts at once
   }
@@ -175,38 +194,29 @@ TEST(Trials, StopRequestKeepsFinishedTrialsAndValidFiles) {
   std::atomic<bool> stop{false};
   const auto dir = fresh_dir("stop");
   TrialLog log(dir, h.model->spec(), 1000);
-  struct StopAfterTwo : TrialObserver {
-    TrialLog* log;
-    std::atomic<bool>* stop;
-    int seen = 0;
-    void trial_finished(const TrialRecord& t, const std::vector<StepRecord>& s) override {
-      log->trial_finished(t, s);
-      if (++seen == 2) *stop = true;
-    }
-  } observer;
-  observer.log = &log;
-  observer.stop = &stop;
-  TrialSetup setup = h.setup();
-  setup.stop_requested = &stop;
+  int seen = 0;
+  const TrialObserver stop_after_two = [&](const TrialRecord& t, const std::vector<StepRecord>& s) {
+    log.trial_finished(t, s);
+    if (++seen == 2) stop = true;
+  };
   TrialOptions options;
   options.trials = 10;
   options.budget = solvers::Budget::episodes(100);
-  EXPECT_EQ(run_trials(setup, options, observer).size(), 2u);
+  EXPECT_EQ(run_trials(h.setup(), options, stop_after_two, &stop).size(), 2u);
   EXPECT_EQ(count_lines(slurp(dir / "trials.csv")), 1 + 2);
 }
 
 TEST(Trials, BadOptionsAreInputErrors) {
   Harness h;
-  Ignore keep;
   TrialOptions options;
   options.max_steps = 0;
-  EXPECT_THROW(run_trials(h.setup(), options, keep), InputError);
+  EXPECT_THROW(run_trials(h.setup(), options, Ignore), InputError);
   options = {};
   options.per_object = -1;
-  EXPECT_THROW(run_trials(h.setup(), options, keep), InputError);
+  EXPECT_THROW(run_trials(h.setup(), options, Ignore), InputError);
   options = {};
   options.budget = solvers::Budget::milliseconds(0);
-  EXPECT_THROW(run_trials(h.setup(), options, keep), InputError);
+  EXPECT_THROW(run_trials(h.setup(), options, Ignore), InputError);
   EXPECT_THROW(TrialLog("/proc/no_such_dir/out", h.model->spec(), 0), InputError);
 }
 
@@ -222,7 +232,9 @@ Certificate certified_abt_trials(const std::string& leaf, const std::string& lab
   options.seed = 2026;
   {
     TrialLog log(dir, h.model->spec(), 1000);
-    run_trials(h.setup(), options, log);
+    run_trials(h.setup(), options, [&](const TrialRecord& t, const std::vector<StepRecord>& s) {
+      log.trial_finished(t, s);
+    });
   }
   const std::string steps = (dir / "steps.csv").string();
   solvers::IdentificationSolver exact(*h.model->tabular());

@@ -13,8 +13,8 @@
 #include "commands/sim_options.h"
 #include "common/data_dir.h"
 #include "common/error.h"
-#include "common/stop_signal.h"
 #include "common/file_io.h"
+#include "common/stop_signal.h"
 #include "loop/calibrated_problem.h"
 #include "loop/loop.h"
 #include "loop/loop_log.h"
@@ -130,7 +130,8 @@ loop::LoopSettings loop_settings(const RunFlags& f, const loop::PreparedObservat
     settings.world = loop::ReplayWorldSpec{f.recordings};
   settings.classifier = prepared.model;
   const auto& objects = loop::object_problem(*settings.problem->model).data().objects;
-  if (truth.world != objects[truth.index]) settings.world_objects[objects[truth.index]] = truth.world;
+  if (truth.world != objects[truth.index])
+    settings.world_objects[objects[truth.index]] = truth.world;
   settings.planner = f.planner;
   settings.max_steps = f.max_steps;
   return settings;
@@ -153,13 +154,13 @@ void write_trial_json(const RunFlags& f, const loop::Loop& run, const TrueObject
             {"interrupted", !trial.has_value()}});
   if (trial) {
     const loop::TrialRecord& r = trial->record;
-    j.update({{"believed_state", objects[r.believed_state]},
-              {"steps", r.steps},
-              {"discounted_reward", r.discounted_reward},
-              {"collision", r.collision},
-              {"capped", r.capped},
-              {"final_action",
-               problem.model->spec().action_names[trial->steps.back().record.action]}});
+    j.update(
+        {{"believed_state", objects[r.believed_state]},
+         {"steps", r.steps},
+         {"discounted_reward", r.discounted_reward},
+         {"collision", r.collision},
+         {"capped", r.capped},
+         {"final_action", problem.model->spec().action_names[trial->steps.back().record.action]}});
   }
   write_file_atomically(fs::path(f.out) / "trial.json", j.dump(2) + "\n");
 }
@@ -192,8 +193,8 @@ void run_command(const RunFlags& f) {
 
   const StopSignal stop;
   const loop::PreparedObservation prepared = prepare(f, *base, sim, stop);
-  loop::Loop run(std::make_shared<const loop::LoopSpec>(
-      loop_settings(f, prepared, base, sim, truth)));
+  loop::Loop run(
+      std::make_shared<const loop::LoopSpec>(loop_settings(f, prepared, base, sim, truth)));
   const pomdp::Problem& problem = run.spec().problem();
   // Only now that everything fits are files written.
   if (prepared.problem) loop::save_problem(problem, problem.source_path);
@@ -208,7 +209,8 @@ void run_command(const RunFlags& f) {
       {0, truth.index, loop::stream_seed(f.seed, loop::Stream::run_trial)},
       [&](const loop::Step& s) {
         if (s.record.step == 0)
-          fmt::print("belief before the first action:\n{}", loop::belief_text(objects, s.record.belief));
+          fmt::print("belief before the first action:\n{}",
+                     loop::belief_text(objects, s.record.belief));
         fmt::print("{}\n", loop::step_text(s, problem.model->spec()));
         if (s.belief_after) fmt::print("{}", loop::belief_text(objects, *s.belief_after));
         log.write_step(s);

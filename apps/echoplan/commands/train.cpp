@@ -36,9 +36,10 @@ void check_coverage(const TrainFlags& f, const pomdp::Problem& base,
   if (object_model == nullptr) return;  // calibrate_problem says what is wrong with it
   for (const auto& object : object_model->data().objects)
     if (set.object_index(object) < 0)
-      throw InputError(f.problem_base, 0,
-                       fmt::format("object '{}' of the problem has no recordings in {} (objects: {})",
-                                   object, f.data, fmt::join(set.objects, ", ")));
+      throw InputError(
+          f.problem_base, 0,
+          fmt::format("object '{}' of the problem has no recordings in {} (objects: {})", object,
+                      f.data, fmt::join(set.objects, ", ")));
   for (const auto& action : object_model->data().sensing)
     if (std::find(set.actions.begin(), set.actions.end(), action.name) == set.actions.end())
       throw InputError(

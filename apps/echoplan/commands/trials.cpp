@@ -49,9 +49,8 @@ void print_summary(const experiment::TrialSummary& s, const pomdp::ModelSpec& sp
 void say_trial(const experiment::TrialRecord& t, const pomdp::ModelSpec& spec, int total) {
   const auto& names = spec.state.discrete_value_names;
   auto name = [&](int v) { return names.empty() ? std::to_string(v) : names[0][v]; };
-  spdlog::info("trial {}/{}: true {}, believed {}, {} steps, discounted reward {:.3f}",
-               t.trial + 1, total, name(t.true_state), name(t.believed_state), t.steps,
-               t.discounted_reward);
+  spdlog::info("trial {}/{}: true {}, believed {}, {} steps, discounted reward {:.3f}", t.trial + 1,
+               total, name(t.true_state), name(t.believed_state), t.steps, t.discounted_reward);
 }
 
 void run_trials_command(const TrialsFlags& f) {
