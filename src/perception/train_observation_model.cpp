@@ -4,13 +4,13 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <functional>
 #include <limits>
 #include <numeric>
 #include <span>
 
 #include "common/error.h"
 #include "common/rng.h"
+#include "common/stable_hash.h"
 
 namespace echoplan::perception {
 
@@ -179,8 +179,9 @@ std::vector<int> cross_validation_folds(std::span<const int> labels, int num_cla
     std::iota(fold.begin(), fold.end(), 0);
     return fold;
   }
-  Rng rng(
-      derive_seed(seed, {0x666f6c64, std::hash<std::string>{}(action)}));  // stream "fold", action
+  // Stream "fold" (its ASCII bytes) and the action's name. stable_hash, not std::hash: the folds,
+  // hence the calibration, must be the same on every platform and standard library.
+  Rng rng(derive_seed(seed, {0x666f6c64, stable_hash(action)}));
   for (int k = 0; k < num_classes; ++k) {
     std::vector<std::size_t> members;
     for (std::size_t i = 0; i < labels.size(); ++i)

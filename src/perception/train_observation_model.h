@@ -37,7 +37,8 @@ struct TrainOptions {
 
 // The cross-validation fold of each example of one action (labels[i] in [0, num_classes)):
 // folds == 0 is leave-one-out (example i is fold i); otherwise stratified k folds, each class's
-// examples shuffled and dealt round-robin. The shuffle draws from `seed` and the action's name.
+// examples shuffled and dealt round-robin. The shuffle draws from derive_seed(seed, {"fold",
+// stable_hash(action)}): the same folds on every platform.
 std::vector<int> cross_validation_folds(std::span<const int> labels, int num_classes, int folds,
                                         std::uint64_t seed, const std::string& action);
 
