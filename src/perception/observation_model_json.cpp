@@ -10,7 +10,7 @@
 
 #include "common/error.h"
 #include "common/file_io.h"
-#include "perception/json_fields.h"
+#include "common/json_fields.h"
 
 namespace echoplan::perception {
 
