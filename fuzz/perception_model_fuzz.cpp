@@ -6,7 +6,8 @@
 #include <string>
 
 #include "common/error.h"
-#include "perception/observation_model.h"
+#include "perception/clip_analysis.h"
+#include "perception/observation_model_json.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace echoplan::perception;
@@ -17,7 +18,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     clip.sample_rate = 8000;
     for (int i = 0; i < 1600; ++i)
       clip.samples.push_back(static_cast<float>(0.3 * std::sin(0.37 * i) * std::exp(-i / 400.0)));
-    for (const auto& action : model.actions()) (void)model.classify(clip, action);
+    ClipAnalyzer analyzer(model.analysis());
+    ClipAnalysis analysis;
+    analyzer.analyse(clip, "clip", analysis);
+    for (const auto& action : model.actions()) (void)model.classify(analysis, action);
   } catch (const echoplan::InputError&) {
     // A malformed model: the documented outcome.
   }

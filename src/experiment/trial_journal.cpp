@@ -6,10 +6,12 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "common/error.h"
 #include "common/file_io.h"
+#include "common/json_fields.h"
 
 namespace echoplan::experiment {
 
@@ -51,42 +53,68 @@ nlohmann::json to_json(const JournalEntry& entry) {
           {"step_log", std::move(steps)}};
 }
 
-JournalEntry journal_entry_from_json(const nlohmann::json& j, const std::string& source, int line) {
-  try {
-    JournalEntry e;
-    e.id = j.at("id").get<int>();
-    e.arm = j.at("arm").get<std::string>();
-    e.object = j.at("object").get<std::string>();
-    TrialRecord& r = e.result.record;
-    r.trial = j.at("trial").get<int>();
-    r.true_state = j.at("true_state").get<int>();
-    r.believed_state = j.at("believed_state").get<int>();
-    r.steps = j.at("steps").get<int>();
-    r.action_counts = j.at("action_counts").get<std::vector<int>>();
-    r.discounted_reward = j.at("discounted_reward").get<double>();
-    r.collision = j.at("collision").get<bool>();
-    r.capped = j.at("capped").get<bool>();
-    int step_index = 0;
-    for (const nlohmann::json& js : j.at("step_log")) {
-      StepRecord s;
-      s.trial = r.trial;
-      s.step = step_index++;
-      s.action = js.at("action").get<int>();
-      s.observation.index = js.at("observation").at("index").get<int>();
-      s.observation.values = js.at("observation").at("values").get<std::vector<double>>();
-      s.belief = js.at("belief").get<std::vector<double>>();
-      s.reward = js.at("reward").get<double>();
-      s.episodes = js.at("episodes").get<std::int64_t>();
-      if (js.contains("heard_probability"))
-        s.heard_probability = js.at("heard_probability").get<double>();
-      e.result.steps.push_back(std::move(s));
-    }
-    if (static_cast<int>(e.result.steps.size()) != r.steps)
-      throw InputError(source, line, "a journal entry's step count does not match its step log");
-    return e;
-  } catch (const nlohmann::json::exception& error) {
-    throw InputError(source, line, std::string("malformed journal entry: ") + error.what());
+namespace {
+
+namespace jf = json_fields;
+
+constexpr long long kIntMin = std::numeric_limits<int>::min();
+constexpr long long kIntMax = std::numeric_limits<int>::max();
+
+int int_member(const nlohmann::json& j, const std::string& key, const std::string& path,
+               const jf::JsonSource& source) {
+  return jf::integer(jf::member(j, key, path, source), kIntMin, kIntMax, jf::child(path, key),
+                     source);
+}
+
+// One step of an entry's step_log, at `path` ("step_log[2]").
+StepRecord step_from_json(const nlohmann::json& js, const std::string& path,
+                          const jf::JsonSource& source) {
+  StepRecord s;
+  s.action = int_member(js, "action", path, source);
+  const std::string observation = jf::child(path, "observation");
+  const nlohmann::json& o = jf::member(js, "observation", path, source);
+  s.observation.index = int_member(o, "index", observation, source);
+  s.observation.values = jf::numbers(jf::member(o, "values", observation, source), -1,
+                                     jf::child(observation, "values"), source);
+  s.belief =
+      jf::numbers(jf::member(js, "belief", path, source), -1, jf::child(path, "belief"), source);
+  s.reward = jf::number(jf::member(js, "reward", path, source), jf::child(path, "reward"), source);
+  s.episodes =
+      jf::integer64(jf::member(js, "episodes", path, source), jf::child(path, "episodes"), source);
+  if (const nlohmann::json* p = jf::optional_member(js, "heard_probability", path, source))
+    s.heard_probability = jf::number(*p, jf::child(path, "heard_probability"), source);
+  return s;
+}
+
+}  // namespace
+
+JournalEntry journal_entry_from_json(const nlohmann::json& j, const std::string& file, int line) {
+  const jf::JsonSource source{file, line};
+  JournalEntry e;
+  e.id = int_member(j, "id", "", source);
+  e.arm = jf::string(jf::member(j, "arm", "", source), "arm", source);
+  e.object = jf::string(jf::member(j, "object", "", source), "object", source);
+  TrialRecord& r = e.result.record;
+  r.trial = int_member(j, "trial", "", source);
+  r.true_state = int_member(j, "true_state", "", source);
+  r.believed_state = int_member(j, "believed_state", "", source);
+  r.steps = int_member(j, "steps", "", source);
+  r.action_counts =
+      jf::integers(jf::member(j, "action_counts", "", source), -1, "action_counts", source);
+  r.discounted_reward =
+      jf::number(jf::member(j, "discounted_reward", "", source), "discounted_reward", source);
+  r.collision = jf::boolean(jf::member(j, "collision", "", source), "collision", source);
+  r.capped = jf::boolean(jf::member(j, "capped", "", source), "capped", source);
+  const nlohmann::json& log = jf::array(jf::member(j, "step_log", "", source), "step_log", source);
+  for (std::size_t i = 0; i < log.size(); ++i) {
+    StepRecord s = step_from_json(log[i], jf::element("step_log", i), source);
+    s.trial = r.trial;
+    s.step = static_cast<int>(i);
+    e.result.steps.push_back(std::move(s));
   }
+  if (static_cast<int>(e.result.steps.size()) != r.steps)
+    throw InputError(file, line, "a journal entry's step count does not match its step log");
+  return e;
 }
 
 std::vector<JournalEntry> read_journal(const fs::path& path) {

@@ -2,12 +2,23 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "common/error.h"
 #include "perception/seed_gaussian_classifier.h"
 #include "perception/seed_template_classifier.h"
 #include "perception/summary_lda_classifier.h"
 
 namespace echoplan::perception {
+
+int ClassScores::best_class() const {
+  return static_cast<int>(std::max_element(log_scores.begin(), log_scores.end()) -
+                          log_scores.begin());
+}
+
+double ClassScores::nearest_distance() const {
+  return *std::min_element(distances.begin(), distances.end());
+}
 
 std::vector<std::string> classifier_names() {
   return {"summary-lda", "summary-nearest-mean", "seed-template", "seed-gaussian"};

@@ -24,6 +24,11 @@ namespace echoplan::perception {
 struct ClassScores {
   std::vector<double> log_scores;  // higher = more alike; differences are log-likelihood-like
   std::vector<double> distances;   // >= 0, in the classifier's own units; smaller = more alike
+
+  // The class with the highest log-score (the first of equals).
+  int best_class() const;
+  // The distance to the nearest class.
+  double nearest_distance() const;
 };
 
 class Classifier {

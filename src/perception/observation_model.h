@@ -1,39 +1,23 @@
-// The trained observation model: one classifier per sensing action, its calibration, and the table
-// P(o | object, action) the planner plans with; saved as one JSON file.
+// The trained observation model: one fitted classifier per sensing action, its calibration, and the
+// table P(o | object, action) the planner plans with.
 //
-// Training (train_observation_model) analyses every recording once, fits one classifier per action,
-// and cross-validates it (leave-one-out, or k folds) to get the confusion the classifier really
-// makes. That confusion, Dirichlet-smoothed, is the planner's observation table; the same held-out
-// scores calibrate the classifier's probabilities (temperature scaling) and set the reject
-// threshold, beyond which a clip is reported as `unknown` instead of being forced into a class.
-//
-// Model file (JSON, format "echoplan-observation-model", version 1):
-//   { "format", "version", "analysis": {sample_rate, preset, onset {...}, silence_rms},
-//     "classifier": name, "classes": [...], "actions": [...], "reject": bool, "dirichlet_alpha",
-//     "table_estimate": "counts" | "soft" (absent in files written before it existed: "counts"),
-//     "per_action": { action: { "classifier": {fit}, "temperature", "reject_threshold",
-//                               "confusion": [[counts]], "symbols": [...], "table": [[P(o|k)]] } }
-//                               }
-// load_observation_model() checks every field and throws InputError naming the file and the field.
+// This header holds the model and its classification. Training it (cross-validation and
+// calibration) is train_observation_model.h, its JSON file observation_model_json.h, and held-out
+// evaluation evaluate_observation_model.h; they are included at the end of this header so code that
+// includes only this one keeps compiling.
 #pragma once
 
-#include <cstdint>
-#include <functional>
 #include <memory>
-#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
-#include "audio/clip.h"
 #include "perception/calibration.h"
 #include "perception/classifier.h"
 #include "perception/clip_analysis.h"
 #include "perception/prediction.h"
-#include "perception/recording_set.h"
 
 namespace echoplan::perception {
 
-inline constexpr int kModelFormatVersion = 1;
 inline constexpr const char* kUnknownSymbol = "unknown";
 
 // How the cross-validated decisions become the observation table (before Dirichlet smoothing).
@@ -48,18 +32,15 @@ const std::vector<std::string>& table_estimate_names();
 // Throws InputError("table estimate '<name>' is not one of: counts, soft").
 TableEstimate parse_table_estimate(const std::string& name);
 
-struct TrainOptions {
-  std::string classifier{kDefaultClassifier};  // make_classifier name
+// What every action of a model shares: how clips are analysed, which classifier, what it reports.
+struct ModelDescription {
   AnalysisSettings analysis;
-  bool reject = true;  // add the `unknown` symbol and its threshold
-  // The reject threshold is this many times the largest held-out distance of a correctly classified
-  // training clip to its own class: clips as far from every class as no training clip was are
-  // unknown.
-  double reject_margin = 1.5;
-  double dirichlet_alpha = 1.0;  // pseudo-count added to every cell of each confusion row
-  TableEstimate table = TableEstimate::counts;
-  int folds = 0;           // cross-validation folds; 0 = leave-one-out
-  std::uint64_t seed = 0;  // fold assignment when folds > 0
+  std::string classifier_name;       // make_classifier name
+  std::vector<std::string> classes;  // the objects, in training-set order
+  std::vector<std::string> actions;
+  bool reject = true;  // the `unknown` symbol and a reject threshold per action
+  double dirichlet_alpha = 1.0;
+  TableEstimate table_estimate = TableEstimate::counts;
 };
 
 // Per action: what cross-validation measured and what the planner gets.
@@ -72,68 +53,57 @@ struct ActionCalibration {
                                            // (hard or soft, the model's table_estimate())
 };
 
-// Progress of long work: (what, done, total), e.g. ("analyse", 12, 80).
-using ProgressFn = std::function<void(const std::string& stage, int done, int total)>;
-
-class ObservationModel;
-
-// Trains on every action of `set`. Throws InputError for unreadable recordings (naming the file),
-// an unknown classifier, or options out of range.
-ObservationModel train_observation_model(const RecordingSet& set, const TrainOptions& options,
-                                         const ProgressFn& progress = {});
+// One action's part of a model: its classifier, fitted on every recording of the action, and its
+// calibration.
+struct ActionModel {
+  std::unique_ptr<Classifier> classifier;
+  ActionCalibration calibration;
+};
 
 class ObservationModel {
  public:
-  ObservationModel();
-  ~ObservationModel();
-  ObservationModel(ObservationModel&&) noexcept;
-  ObservationModel& operator=(ObservationModel&&) noexcept;
+  // An empty model (no classes, no actions), e.g. what an interrupted training returns.
+  ObservationModel() = default;
+  // `per_action` follows description.actions, each classifier fitted for description.classes.
+  // Throws std::invalid_argument when they do not match (a programming error: training and the
+  // model file check their input first).
+  ObservationModel(ModelDescription description, std::vector<ActionModel> per_action);
 
-  const AnalysisSettings& analysis() const;
-  const std::string& classifier_name() const;
-  const std::vector<std::string>& classes() const;  // the objects, in training-set order
-  const std::vector<std::string>& actions() const;
-  bool reject() const;
-  TableEstimate table_estimate() const;
+  const ModelDescription& description() const { return description_; }
+  const AnalysisSettings& analysis() const { return description_.analysis; }
+  const std::string& classifier_name() const { return description_.classifier_name; }
+  const std::vector<std::string>& classes() const { return description_.classes; }
+  const std::vector<std::string>& actions() const { return description_.actions; }
+  bool reject() const { return description_.reject; }
+  double dirichlet_alpha() const { return description_.dirichlet_alpha; }
+  TableEstimate table_estimate() const { return description_.table_estimate; }
   // classes() followed by "unknown" when reject() is on.
   std::vector<std::string> observation_symbols() const;
   // Calibration of `action`; throws InputError listing the actions for an unknown one.
   const ActionCalibration& calibration(const std::string& action) const;
+  // The fitted classifier of `action` (InputError for an unknown one, as calibration()).
+  const Classifier& classifier(const std::string& action) const;
   // P(symbol | object, action): classes().size() x observation_symbols().size().
   const std::vector<std::vector<double>>& observation_table(const std::string& action) const;
 
-  // Classifies a clip recorded with `action` (any rate and channel count). Thread-safe.
-  Prediction classify(const audio::AudioClip& clip, const std::string& action) const;
-  // Same, for a clip already analysed with analysis().
+  // Classifies a clip recorded with `action`, already analysed with analysis() (a ClipAnalyzer
+  // per thread; the model itself is read-only, so threads may share it).
   Prediction classify(const ClipAnalysis& analysed, const std::string& action) const;
 
-  nlohmann::json to_json() const;
-  // Throws InputError(source, 0, "<field>: <problem>") for a malformed document or a wrong version.
-  static ObservationModel from_json(const nlohmann::json& doc, const std::string& source);
-
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
-  friend ObservationModel train_observation_model(const RecordingSet&, const TrainOptions&,
-                                                  const ProgressFn&);
+  const ActionModel& of(const std::string& action) const;
+
+  ModelDescription description_;
+  std::vector<ActionModel> per_action_;  // description_.actions order
 };
 
-// Reads and writes the model file. Errors name the file: missing, not JSON (with the byte offset),
-// truncated, wrong format or version, or a field out of shape.
-ObservationModel load_observation_model(const std::string& path);
-// Parses a model file's text; `source` names it in errors. What load_observation_model does after
-// reading.
-ObservationModel parse_observation_model(const std::string& text, const std::string& source);
-void save_observation_model(const ObservationModel& model, const std::string& path);
-
-// Held-out evaluation of a model on a recording set: per action, the confusion of the set's objects
-// against the model's observation symbols. Objects the model does not know are rows too (their
-// correct report is `unknown`); accuracy() counts only the model's classes.
-struct Evaluation {
-  std::vector<ConfusionMatrix> per_action;  // model action order, actions present in the set
-};
-// Throws InputError if the set has an action the model was not trained for.
-Evaluation evaluate_observation_model(const ObservationModel& model, const RecordingSet& set,
-                                      const ProgressFn& progress = {});
+// Observation symbols of a description: its classes, then "unknown" when reject is on.
+std::vector<std::string> observation_symbols(const ModelDescription& description);
 
 }  // namespace echoplan::perception
+
+// Forwarding includes: training, the model file and evaluation, for code that includes only this
+// header (after the class, since each of them includes this header).
+#include "perception/evaluate_observation_model.h"
+#include "perception/observation_model_json.h"
+#include "perception/train_observation_model.h"

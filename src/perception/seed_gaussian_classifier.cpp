@@ -8,7 +8,7 @@
 
 #include "audio/features.h"
 #include "common/error.h"
-#include "perception/json_fields.h"
+#include "common/json_fields.h"
 
 namespace echoplan::perception {
 

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "perception/json_fields.h"
+#include "common/json_fields.h"
 
 namespace echoplan::perception {
 

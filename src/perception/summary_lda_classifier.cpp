@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "perception/json_fields.h"
+#include "common/json_fields.h"
 #include "perception/summary_features.h"
 
 namespace echoplan::perception {

@@ -110,6 +110,13 @@ class Parser {
     return out;
   }
 
+  // One statement, from its keyword to the next keyword.
+  void read_statement(const Token& keyword);
+  void read_discount(const Token& keyword);
+  void read_values(const Token& keyword);
+  // A states:, actions: or observations: statement; once all three are known, sizes the tables.
+  void read_name_list(const Token& keyword);
+  void allocate_tables(const Token& keyword);
   void read_names(const std::string& what, std::vector<std::string>& names, int prefix);
   void read_start(const Token& keyword);
   // A T: or O: statement: fills `table` [(a * S + row) * columns + column] (columns: states for T,
@@ -124,6 +131,12 @@ class Parser {
   std::vector<double> numbers(const std::vector<Token>& values, std::size_t count,
                               const Token& keyword);
   void require_sizes(const Token& keyword) const;
+  // After the last statement: every header line given, every row of T and O a distribution.
+  void check_complete() const;
+  void check_rows(const std::vector<double>& table, int width, const std::vector<int>& row_line,
+                  const char* kind) const;
+  // R(s, a) (states x actions), the expectation of the R: entries over s' and o.
+  std::vector<double> expected_rewards() const;
 
   std::vector<Token> tokens_;
   std::string file_;
@@ -319,96 +332,108 @@ void Parser::read_reward(const Token& keyword) {
   }
 }
 
-std::shared_ptr<const TabularPomdp> Parser::parse() {
-  if (tokens_.empty())
-    fail(1, "the file is empty; expected a .pomdp problem (discount:, states:, ...)");
-  while (!at_end()) {
-    const Token keyword = next();
-    if (!is_keyword(keyword.text)) {
-      fail(keyword.line, "unexpected '" + keyword.text +
-                             "' (expected discount:, values:, states:, actions:, "
-                             "observations:, start:, T:, O: or R:)");
-    }
-    if (keyword.text == "discount") {
-      expect_colon("discount");
-      const std::vector<Token> v = rest_of_statement();
-      discount_ = numbers(v, 1, keyword)[0];
-      if (!(discount_ > 0.0 && discount_ < 1.0)) fail(keyword.line, "discount must be in (0, 1)");
-    } else if (keyword.text == "values") {
-      expect_colon("values");
-      const std::vector<Token> v = rest_of_statement();
-      if (v.size() != 1 || (v[0].text != "reward" && v[0].text != "cost")) {
-        fail(keyword.line, "'values:' must be 'reward' or 'cost'");
+void Parser::read_discount(const Token& keyword) {
+  expect_colon("discount");
+  const std::vector<Token> v = rest_of_statement();
+  discount_ = numbers(v, 1, keyword)[0];
+  if (!(discount_ > 0.0 && discount_ < 1.0)) fail(keyword.line, "discount must be in (0, 1)");
+}
+
+void Parser::read_values(const Token& keyword) {
+  expect_colon("values");
+  const std::vector<Token> v = rest_of_statement();
+  if (v.size() != 1 || (v[0].text != "reward" && v[0].text != "cost")) {
+    fail(keyword.line, "'values:' must be 'reward' or 'cost'");
+  }
+  if (!rewards_.empty()) fail(keyword.line, "'values:' must come before any 'R:' line");
+  cost_ = v[0].text == "cost";
+}
+
+void Parser::read_name_list(const Token& keyword) {
+  expect_colon(keyword.text);
+  auto& names = keyword.text == "states"    ? states_
+                : keyword.text == "actions" ? actions_
+                                            : observations_;
+  read_names(keyword.text, names,
+             keyword.text[0] == 'o'   ? 'o'
+             : keyword.text[0] == 'a' ? 'a'
+                                      : 's');
+  if (!states_.empty() && !actions_.empty() && !observations_.empty() && t_.empty())
+    allocate_tables(keyword);
+}
+
+void Parser::allocate_tables(const Token& keyword) {
+  const std::size_t ns = states_.size(), na = actions_.size();
+  // Dense tables: refuse sizes that would exhaust memory rather than crash.
+  if (static_cast<double>(na) * ns * std::max(ns, observations_.size()) > 5e7) {
+    fail(keyword.line, "problem too large for dense tables (actions x states x states > 5e7)");
+  }
+  t_.assign(na * ns * ns, 0.0);
+  o_.assign(na * ns * observations_.size(), 0.0);
+  t_row_line_.assign(na * ns, 0);
+  o_row_line_.assign(na * ns, 0);
+}
+
+void Parser::read_statement(const Token& keyword) {
+  if (!is_keyword(keyword.text)) {
+    fail(keyword.line, "unexpected '" + keyword.text +
+                           "' (expected discount:, values:, states:, actions:, "
+                           "observations:, start:, T:, O: or R:)");
+  }
+  if (keyword.text == "discount") {
+    read_discount(keyword);
+  } else if (keyword.text == "values") {
+    read_values(keyword);
+  } else if (keyword.text == "states" || keyword.text == "actions" ||
+             keyword.text == "observations") {
+    read_name_list(keyword);
+  } else if (keyword.text == "start") {
+    read_start(keyword);
+  } else if (keyword.text == "T") {  // T, O and R are followed directly by their fields
+    read_probabilities(keyword, states_, "state", true, t_, t_row_line_);
+  } else if (keyword.text == "O") {
+    read_probabilities(keyword, observations_, "observation", false, o_, o_row_line_);
+  } else {
+    read_reward(keyword);
+  }
+}
+
+// Every row must be a distribution; point at the line that last wrote it.
+void Parser::check_rows(const std::vector<double>& table, int width,
+                        const std::vector<int>& row_line, const char* kind) const {
+  const int ns = static_cast<int>(states_.size()), na = static_cast<int>(actions_.size());
+  for (int ai = 0; ai < na; ++ai) {
+    for (int si = 0; si < ns; ++si) {
+      const int row = ai * ns + si;
+      const RowCheck check = check_row(&table[static_cast<std::size_t>(row) * width], width);
+      if (!check.in_range) {
+        fail(row_line[row], std::string(kind) + " has a probability outside [0, 1]");
       }
-      if (!rewards_.empty()) fail(keyword.line, "'values:' must come before any 'R:' line");
-      cost_ = v[0].text == "cost";
-    } else if (keyword.text == "states" || keyword.text == "actions" ||
-               keyword.text == "observations") {
-      expect_colon(keyword.text);
-      auto& names = keyword.text == "states"    ? states_
-                    : keyword.text == "actions" ? actions_
-                                                : observations_;
-      read_names(keyword.text, names,
-                 keyword.text[0] == 'o'   ? 'o'
-                 : keyword.text[0] == 'a' ? 'a'
-                                          : 's');
-      if (!states_.empty() && !actions_.empty() && !observations_.empty() && t_.empty()) {
-        const std::size_t ns = states_.size(), na = actions_.size();
-        // Dense tables: refuse sizes that would exhaust memory rather than crash.
-        if (static_cast<double>(na) * ns * std::max(ns, observations_.size()) > 5e7) {
-          fail(keyword.line,
-               "problem too large for dense tables (actions x states x states > 5e7)");
-        }
-        t_.assign(na * ns * ns, 0.0);
-        o_.assign(na * ns * observations_.size(), 0.0);
-        t_row_line_.assign(na * ns, 0);
-        o_row_line_.assign(na * ns, 0);
+      if (!check.ok()) {
+        std::ostringstream msg;
+        msg << kind << " row for action '" << actions_[ai] << "' and state '" << states_[si]
+            << "' sums to " << check.sum << ", not 1 (tolerance 1e-6)"
+            << (row_line[row] == 0 ? "; it was never given" : "");
+        fail(row_line[row] == 0 ? last_line() : row_line[row], msg.str());
       }
-    } else if (keyword.text == "start") {
-      read_start(keyword);
-    } else {
-      // T, O and R are followed directly by their fields.
-      if (keyword.text == "T")
-        read_probabilities(keyword, states_, "state", true, t_, t_row_line_);
-      else if (keyword.text == "O")
-        read_probabilities(keyword, observations_, "observation", false, o_, o_row_line_);
-      else
-        read_reward(keyword);
     }
   }
+}
+
+void Parser::check_complete() const {
   if (discount_ < 0.0) fail(1, "missing 'discount:' line");
   if (states_.empty() || actions_.empty() || observations_.empty()) {
     fail(last_line(), "missing 'states:', 'actions:' or 'observations:' line");
   }
+  check_rows(t_, static_cast<int>(states_.size()), t_row_line_, "T");
+  check_rows(o_, static_cast<int>(observations_.size()), o_row_line_, "O");
+}
 
+// Entries that give no s' or o apply to every outcome, so when only such entries touch (a, s) the
+// last one is the expected reward itself.
+std::vector<double> Parser::expected_rewards() const {
   const int ns = static_cast<int>(states_.size()), na = static_cast<int>(actions_.size()),
             no = static_cast<int>(observations_.size());
-  // Every row must now be a distribution; point at the line that last wrote it.
-  auto check_rows = [&](const std::vector<double>& table, int width,
-                        const std::vector<int>& row_line, const char* kind,
-                        const std::vector<std::string>& row_names) {
-    for (int ai = 0; ai < na; ++ai) {
-      for (int si = 0; si < ns; ++si) {
-        const int row = ai * ns + si;
-        const RowCheck check = check_row(&table[static_cast<std::size_t>(row) * width], width);
-        if (!check.in_range) {
-          fail(row_line[row], std::string(kind) + " has a probability outside [0, 1]");
-        }
-        if (!check.ok()) {
-          std::ostringstream msg;
-          msg << kind << " row for action '" << actions_[ai] << "' and state '" << row_names[si]
-              << "' sums to " << check.sum << ", not 1 (tolerance 1e-6)"
-              << (row_line[row] == 0 ? "; it was never given" : "");
-          fail(row_line[row] == 0 ? last_line() : row_line[row], msg.str());
-        }
-      }
-    }
-  };
-  check_rows(t_, ns, t_row_line_, "T", states_);
-  check_rows(o_, no, o_row_line_, "O", states_);
-
-  // Fold R(a, s, s', o) into R(s, a). Entries that give no s' or o apply to every outcome, so
-  // when only such entries touch (a, s) the last one is the expected reward itself.
   std::vector<double> reward(static_cast<std::size_t>(ns) * na, 0.0);
   std::vector<double> outcome(static_cast<std::size_t>(ns) * no);
   for (int ai = 0; ai < na; ++ai) {
@@ -435,6 +460,14 @@ std::shared_ptr<const TabularPomdp> Parser::parse() {
       reward[static_cast<std::size_t>(si) * na + ai] = r;
     }
   }
+  return reward;
+}
+
+std::shared_ptr<const TabularPomdp> Parser::parse() {
+  if (tokens_.empty())
+    fail(1, "the file is empty; expected a .pomdp problem (discount:, states:, ...)");
+  while (!at_end()) read_statement(next());
+  check_complete();
 
   TabularPomdpData d;
   const std::size_t slash = file_.find_last_of('/');
@@ -443,10 +476,11 @@ std::shared_ptr<const TabularPomdp> Parser::parse() {
   d.action_names = actions_;
   d.observation_names = observations_;
   d.discount = discount_;
+  d.reward = expected_rewards();
   d.transition = std::move(t_);
   d.observation = std::move(o_);
-  d.reward = std::move(reward);
-  d.start = start_.empty() ? std::vector<double>(ns, 1.0 / ns) : start_;
+  const std::size_t ns = states_.size();
+  d.start = start_.empty() ? std::vector<double>(ns, 1.0 / static_cast<double>(ns)) : start_;
   return std::make_shared<const TabularPomdp>(std::move(d));
 }
 

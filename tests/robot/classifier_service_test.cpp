@@ -43,7 +43,11 @@ TEST(ClassifierService, ReportsTheModelsDecisionWithCalibratedProbabilities) {
   ClassifierService service(model());
   const audio::AudioClip clip = recording("coffee_mug", "strike", 987654);
   const HeardObservation heard = service.observe(clip, "strike");
-  const perception::Prediction p = model()->classify(clip, "strike");
+  // What the service must agree with: the model's decision on the clip analysed its way.
+  perception::ClipAnalyzer analyzer(model()->analysis());
+  perception::ClipAnalysis analysis;
+  analyzer.analyse(clip, "clip", analysis);
+  const perception::Prediction p = model()->classify(analysis, "strike");
   EXPECT_EQ(heard.label, p.label);
   EXPECT_EQ(heard.unknown, p.unknown);
   EXPECT_DOUBLE_EQ(heard.distance, p.distance);

@@ -1,14 +1,14 @@
-// json_fields: the model file's values read with errors naming the file and the dotted path.
-#include "perception/json_fields.h"
+// json_fields: JSON values read with errors naming the source (file, line) and the dotted path.
+#include "common/json_fields.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "../common/input_error_message.h"
+#include "input_error_message.h"
 
-namespace echoplan::perception::json_fields {
+namespace echoplan::json_fields {
 namespace {
 
 using nlohmann::json;
@@ -73,5 +73,44 @@ TEST(JsonFields, EachMistakeNamesTheFileAndThePath) {
             "m: c: expected 2 names, found 1");
 }
 
+TEST(JsonFields, ReadsWideIntegersListsAndOptionalMembers) {
+  const json doc = json::parse(R"({"seed": 18446744073709551615, "episodes": -9000000000,
+      "counts": [3, -1], "names": ["mug", "mug"], "steps": [{}, {}]})");
+  EXPECT_EQ(unsigned64(doc["seed"], "seed", "f"), 18446744073709551615ULL);
+  EXPECT_EQ(integer64(doc["episodes"], "episodes", "f"), -9000000000LL);
+  EXPECT_EQ(integers(doc["counts"], 2, "counts", "f"), (std::vector<int>{3, -1}));
+  EXPECT_EQ(strings(doc["names"], "names", "f"), (std::vector<std::string>{"mug", "mug"}));
+  EXPECT_EQ(array(doc["steps"], "steps", "f").size(), 2u);
+  EXPECT_EQ(optional_member(doc, "absent", "", "f"), nullptr);
+  EXPECT_EQ(optional_member(doc, "seed", "", "f"), &doc["seed"]);
+  EXPECT_EQ(child("", "a"), "a");
+  EXPECT_EQ(child("a", "b"), "a.b");
+  EXPECT_EQ(element("a.b", 3), "a.b[3]");
+}
+
+TEST(JsonFields, ALineOfAFileIsNamedWithTheFile) {
+  const JsonSource line{"journal.jsonl", 7};
+  const json entry = json::parse(R"({"step_log": [{"reward": "high"}], "seed": -1, "big": 1e3})");
+  EXPECT_EQ(input_error_message(
+                [&] { number(entry["step_log"][0]["reward"], "step_log[0].reward", line); }),
+            "journal.jsonl:7: step_log[0].reward: expected a number");
+  EXPECT_EQ(input_error_message([&] { member(entry, "id", "", line); }),
+            "journal.jsonl:7: id: missing");
+  EXPECT_EQ(input_error_message([&] { member(json(3), "id", "", line); }),
+            "journal.jsonl:7: expected an object");
+  EXPECT_EQ(input_error_message([&] { unsigned64(entry["seed"], "seed", line); }),
+            "journal.jsonl:7: seed: -1 is negative");
+  EXPECT_EQ(input_error_message([&] { integer64(entry["big"], "big", line); }),
+            "journal.jsonl:7: big: expected an integer");
+  EXPECT_EQ(input_error_message([&] { integer64(json(18446744073709551615ULL), "n", line); }),
+            "journal.jsonl:7: n: 18446744073709551615 is too large");
+  EXPECT_EQ(input_error_message([&] { integers(json::parse("[1, 2.5]"), -1, "c", line); }),
+            "journal.jsonl:7: c[1]: expected an integer");
+  EXPECT_EQ(input_error_message([&] { strings(json::parse(R"(["a", 1])"), "s", line); }),
+            "journal.jsonl:7: s[1]: expected a string");
+  EXPECT_EQ(input_error_message([&] { array(json(1), "steps", line); }),
+            "journal.jsonl:7: steps: expected an array");
+}
+
 }  // namespace
-}  // namespace echoplan::perception::json_fields
+}  // namespace echoplan::json_fields

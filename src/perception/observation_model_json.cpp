@@ -1,0 +1,294 @@
+#include "perception/observation_model_json.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "common/error.h"
+#include "common/file_io.h"
+#include "common/json_fields.h"
+
+namespace echoplan::perception {
+
+namespace {
+
+namespace jf = json_fields;
+
+constexpr const char* kFormatName = "echoplan-observation-model";
+
+nlohmann::json analysis_json(const AnalysisSettings& analysis) {
+  const auto& o = analysis.onset;
+  return {{"sample_rate", analysis.sample_rate},
+          {"preset", analysis.preset},
+          {"silence_rms", analysis.silence_rms},
+          {"onset",
+           {{"pre_max", o.pre_max},
+            {"post_max", o.post_max},
+            {"pre_avg", o.pre_avg},
+            {"post_avg", o.post_avg},
+            {"delta", o.delta},
+            {"wait", o.wait}}}};
+}
+
+}  // namespace
+
+nlohmann::json observation_model_to_json(const ObservationModel& model) {
+  nlohmann::json per_action = nlohmann::json::object();
+  for (const auto& action : model.actions()) {
+    const ActionCalibration& c = model.calibration(action);
+    per_action[action] = {
+        {"classifier", model.classifier(action).save()},
+        {"temperature", c.temperature},
+        {"reject_threshold",
+         model.reject() ? nlohmann::json(c.reject_threshold) : nlohmann::json(nullptr)},
+        {"symbols", c.confusion.symbols},
+        {"confusion", c.confusion.counts},
+        {"table", c.table},
+    };
+  }
+  return {{"format", kFormatName},
+          {"version", kModelFormatVersion},
+          {"analysis", analysis_json(model.analysis())},
+          {"classifier", model.classifier_name()},
+          {"classes", model.classes()},
+          {"actions", model.actions()},
+          {"reject", model.reject()},
+          {"dirichlet_alpha", model.dirichlet_alpha()},
+          {"table_estimate", table_estimate_name(model.table_estimate())},
+          {"per_action", per_action}};
+}
+
+namespace {
+
+void check_format_and_version(const nlohmann::json& doc, const std::string& source) {
+  if (!doc.is_object())
+    throw InputError(source, 0, "not an observation model: expected a JSON object");
+  if (!doc.contains("format") || !doc["format"].is_string() || doc["format"] != kFormatName)
+    throw InputError(
+        source, 0,
+        fmt::format("format: not an observation model (expected \"format\": \"{}\")", kFormatName));
+  const int version = jf::integer(jf::member(doc, "version", "", source), 0,
+                                  std::numeric_limits<int>::max(), "version", source);
+  if (version != kModelFormatVersion)
+    throw InputError(
+        source, 0,
+        fmt::format(
+            "version: model format version {} is not supported (this build reads version {}); "
+            "retrain with `echoplan train`",
+            version, kModelFormatVersion));
+}
+
+// The analysis settings, checked by building an analyser with them.
+AnalysisSettings read_analysis(const nlohmann::json& doc, const std::string& source) {
+  const auto& a = jf::member(doc, "analysis", "", source);
+  AnalysisSettings s;
+  s.sample_rate = jf::integer(jf::member(a, "sample_rate", "analysis", source), 1000, 384000,
+                              "analysis.sample_rate", source);
+  s.preset = jf::string(jf::member(a, "preset", "analysis", source), "analysis.preset", source);
+  s.silence_rms =
+      jf::number(jf::member(a, "silence_rms", "analysis", source), "analysis.silence_rms", source);
+  const auto& o = jf::member(a, "onset", "analysis", source);
+  auto frames = [&](const char* key) {
+    return jf::integer(jf::member(o, key, "analysis.onset", source), 0, 10000,
+                       std::string("analysis.onset.") + key, source);
+  };
+  s.onset.pre_max = frames("pre_max");
+  s.onset.post_max = frames("post_max");
+  s.onset.pre_avg = frames("pre_avg");
+  s.onset.post_avg = frames("post_avg");
+  s.onset.wait = frames("wait");
+  s.onset.delta =
+      jf::number(jf::member(o, "delta", "analysis.onset", source), "analysis.onset.delta", source);
+  if (s.onset.delta < 0.0) throw InputError(source, 0, "analysis.onset.delta: must be >= 0");
+  try {
+    const ClipAnalyzer check(s);
+  } catch (const InputError& e) {
+    throw InputError(source, 0, "analysis: " + e.problem());
+  }
+  return s;
+}
+
+// Everything but the per-action entries; the classifier name is checked against the registry.
+ModelDescription read_description(const nlohmann::json& doc, const std::string& source) {
+  ModelDescription d;
+  d.analysis = read_analysis(doc, source);
+  d.classifier_name = jf::string(jf::member(doc, "classifier", "", source), "classifier", source);
+  try {
+    make_classifier(d.classifier_name);
+  } catch (const InputError& e) {
+    throw InputError(source, 0, "classifier: " + e.problem());
+  }
+  d.classes = jf::names(jf::member(doc, "classes", "", source), -1, "classes", source);
+  if (d.classes.size() < 2)
+    throw InputError(source, 0, "classes: a model needs at least two classes");
+  for (const auto& c : d.classes)
+    if (c == kUnknownSymbol)
+      throw InputError(source, 0, "classes: 'unknown' is reserved for rejected clips");
+  d.actions = jf::names(jf::member(doc, "actions", "", source), -1, "actions", source);
+  if (d.actions.empty()) throw InputError(source, 0, "actions: a model needs at least one action");
+  d.reject = jf::boolean(jf::member(doc, "reject", "", source), "reject", source);
+  d.dirichlet_alpha =
+      jf::number(jf::member(doc, "dirichlet_alpha", "", source), "dirichlet_alpha", source);
+  if (d.dirichlet_alpha < 0.0) throw InputError(source, 0, "dirichlet_alpha: must be >= 0");
+  // Absent in files written before the option existed: those tables were counts.
+  if (doc.contains("table_estimate")) {
+    const std::string name = jf::string(doc["table_estimate"], "table_estimate", source);
+    try {
+      d.table_estimate = parse_table_estimate(name);
+    } catch (const InputError& e) {
+      throw InputError(source, 0, "table_estimate: " + e.problem());
+    }
+  }
+  return d;
+}
+
+// One action's entry is read at the dotted path `where` ("per_action.strike") of `source`.
+struct ActionEntry {
+  const nlohmann::json& json;
+  const std::string& where;
+  const std::string& source;
+};
+
+std::unique_ptr<Classifier> read_classifier(const ActionEntry& e, const ModelDescription& d) {
+  auto classifier = make_classifier(d.classifier_name);
+  try {
+    classifier->load(jf::member(e.json, "classifier", e.where, e.source), e.source);
+  } catch (const InputError& error) {
+    throw InputError(e.source, 0, e.where + "." + error.problem());
+  }
+  if (classifier->num_classes() != static_cast<int>(d.classes.size()))
+    throw InputError(e.source, 0,
+                     fmt::format("{}.classifier: fitted for {} classes, the model has {}", e.where,
+                                 classifier->num_classes(), d.classes.size()));
+  return classifier;
+}
+
+double read_reject_threshold(const ActionEntry& e, bool reject) {
+  const auto& threshold = jf::member(e.json, "reject_threshold", e.where, e.source);
+  if (!reject) {
+    if (!threshold.is_null())
+      throw InputError(e.source, 0,
+                       e.where + ".reject_threshold: must be null when reject is false");
+    return std::numeric_limits<double>::infinity();
+  }
+  const double value = jf::number(threshold, e.where + ".reject_threshold", e.source);
+  if (value < 0.0) throw InputError(e.source, 0, e.where + ".reject_threshold: must be >= 0");
+  return value;
+}
+
+ConfusionMatrix read_confusion(const ActionEntry& e, const ModelDescription& d,
+                               const std::vector<std::string>& symbols) {
+  const auto counts = jf::matrix(
+      jf::member(e.json, "confusion", e.where, e.source), static_cast<long long>(d.classes.size()),
+      static_cast<long long>(symbols.size()), e.where + ".confusion", e.source);
+  ConfusionMatrix confusion = ConfusionMatrix::zeros(d.classes, symbols);
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    if (counts[i] < 0 || counts[i] > 1e9 || counts[i] != std::floor(counts[i]))
+      throw InputError(e.source, 0, e.where + ".confusion: counts must be whole numbers >= 0");
+    confusion.counts[i / symbols.size()][i % symbols.size()] = static_cast<int>(counts[i]);
+  }
+  return confusion;
+}
+
+// The observation table: one probability row per class, each summing to 1.
+std::vector<std::vector<double>> read_table(const ActionEntry& e, std::size_t rows,
+                                            std::size_t cols) {
+  const auto table =
+      jf::matrix(jf::member(e.json, "table", e.where, e.source), static_cast<long long>(rows),
+                 static_cast<long long>(cols), e.where + ".table", e.source);
+  std::vector<std::vector<double>> out;
+  for (std::size_t k = 0; k < rows; ++k) {
+    std::vector<double> row(table.begin() + static_cast<std::ptrdiff_t>(k * cols),
+                            table.begin() + static_cast<std::ptrdiff_t>((k + 1) * cols));
+    double sum = 0.0;
+    for (double p : row) {
+      if (p < 0.0 || p > 1.0)
+        throw InputError(e.source, 0,
+                         fmt::format("{}.table[{}]: probabilities must be in [0, 1]", e.where, k));
+      sum += p;
+    }
+    if (std::abs(sum - 1.0) > 1e-6)
+      throw InputError(
+          e.source, 0,
+          fmt::format("{}.table[{}]: probabilities sum to {}, not 1", e.where, k, sum));
+    out.push_back(std::move(row));
+  }
+  return out;
+}
+
+ActionModel read_action(const ActionEntry& e, const std::string& action,
+                        const ModelDescription& d) {
+  const std::vector<std::string> symbols = observation_symbols(d);
+  ActionModel a;
+  a.calibration.action = action;
+  a.classifier = read_classifier(e, d);
+  a.calibration.temperature = jf::number(jf::member(e.json, "temperature", e.where, e.source),
+                                         e.where + ".temperature", e.source);
+  if (!(a.calibration.temperature > 0.0))
+    throw InputError(e.source, 0, e.where + ".temperature: must be positive");
+  a.calibration.reject_threshold = read_reject_threshold(e, d.reject);
+  const auto listed =
+      jf::names(jf::member(e.json, "symbols", e.where, e.source),
+                static_cast<long long>(symbols.size()), e.where + ".symbols", e.source);
+  if (listed != symbols)
+    throw InputError(e.source, 0,
+                     fmt::format("{}.symbols: expected [{}] (the classes{})", e.where,
+                                 fmt::join(symbols, ", "), d.reject ? " and unknown" : ""));
+  a.calibration.confusion = read_confusion(e, d, symbols);
+  a.calibration.table = read_table(e, d.classes.size(), symbols.size());
+  return a;
+}
+
+}  // namespace
+
+ObservationModel observation_model_from_json(const nlohmann::json& doc, const std::string& source) {
+  check_format_and_version(doc, source);
+  ModelDescription description = read_description(doc, source);
+  const auto& per_action = jf::member(doc, "per_action", "", source);
+  if (!per_action.is_object() || per_action.size() != description.actions.size())
+    throw InputError(source, 0,
+                     fmt::format("per_action: expected an object with one entry per action ({})",
+                                 description.actions.size()));
+  std::vector<ActionModel> actions;
+  for (const auto& action : description.actions) {
+    const std::string where = "per_action." + action;
+    const auto& entry = jf::member(per_action, action, "per_action", source);
+    actions.push_back(read_action({entry, where, source}, action, description));
+  }
+  return ObservationModel(std::move(description), std::move(actions));
+}
+
+ObservationModel load_observation_model(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, 0, "is a folder; expected a model file (JSON)");
+  return parse_observation_model(read_text_file(path, "model file"), path);
+}
+
+ObservationModel parse_observation_model(const std::string& text, const std::string& source) {
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    // parse_error for broken syntax, out_of_range for a number beyond double: both a corrupt file.
+    throw InputError(
+        source, 0,
+        fmt::format("not a valid JSON model file (truncated or corrupt?): {}", e.what()));
+  }
+  try {
+    return observation_model_from_json(doc, source);
+  } catch (const nlohmann::json::exception& e) {
+    // A shape the checks above did not anticipate: still an input error, never a crash.
+    throw InputError(source, 0, fmt::format("malformed model: {}", e.what()));
+  }
+}
+
+void save_observation_model(const ObservationModel& model, const std::string& path) {
+  write_file_atomically(path, observation_model_to_json(model).dump() + '\n');
+}
+
+}  // namespace echoplan::perception

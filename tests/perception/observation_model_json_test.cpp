@@ -1,0 +1,131 @@
+// The model file: a round trip keeps every decision, and every broken file is an error naming the
+// file and the field.
+#include "perception/observation_model_json.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+
+#include "common/error.h"
+#include "trained_model.h"
+
+namespace echoplan::perception {
+namespace {
+
+namespace fs = std::filesystem;
+using test_model::analysed;
+using test_model::recording;
+using test_model::trained;
+using ::testing::HasSubstr;
+
+TEST(ObservationModelJson, RoundTripsThroughTheFile) {
+  const ObservationModel& model = trained().model;
+  const fs::path file = trained().dir / "model.json";
+  save_observation_model(model, file.string());
+  const ObservationModel back = load_observation_model(file.string());
+  EXPECT_EQ(observation_model_to_json(back), observation_model_to_json(model));
+  const ClipAnalysis clip = analysed(model, recording(1, 777));
+  const Prediction a = model.classify(clip, "tap"), b = back.classify(clip, "tap");
+  EXPECT_EQ(a.label, b.label);
+  EXPECT_EQ(a.probabilities, b.probabilities);
+  EXPECT_EQ(a.distance, b.distance);
+}
+
+TEST(ObservationModelJson, RecordsTheTableEstimateAndReadsOldFilesAsCounts) {
+  EXPECT_EQ(observation_model_to_json(trained().model)["table_estimate"], "counts");
+  TrainOptions options;
+  options.table = TableEstimate::soft;
+  const ObservationModel soft = train_observation_model(trained().set, options);
+  const fs::path file = trained().dir / "soft.json";
+  save_observation_model(soft, file.string());
+  const ObservationModel back = load_observation_model(file.string());
+  EXPECT_EQ(back.table_estimate(), TableEstimate::soft);
+  EXPECT_EQ(observation_model_to_json(back), observation_model_to_json(soft));
+  // A file written before the option existed had a counts table.
+  nlohmann::json old = observation_model_to_json(trained().model);
+  old.erase("table_estimate");
+  EXPECT_EQ(observation_model_from_json(old, "old.json").table_estimate(), TableEstimate::counts);
+}
+
+TEST(ObservationModelJson, WithoutRejectTheThresholdIsNull) {
+  TrainOptions options;
+  options.reject = false;
+  const ObservationModel model = train_observation_model(trained().set, options);
+  nlohmann::json doc = observation_model_to_json(model);
+  EXPECT_TRUE(doc["per_action"]["strike"]["reject_threshold"].is_null());
+  EXPECT_EQ(doc["per_action"]["strike"]["symbols"].size(), 3u);
+  const ObservationModel back = observation_model_from_json(doc, "m.json");
+  EXPECT_FALSE(back.reject());
+  EXPECT_TRUE(std::isinf(back.calibration("strike").reject_threshold));
+  doc["per_action"]["strike"]["reject_threshold"] = 2.0;
+  try {
+    observation_model_from_json(doc, "m.json");
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "m.json: per_action.strike.reject_threshold: must be null when reject is false");
+  }
+}
+
+TEST(ObservationModelJson, EveryBrokenModelFileIsAClearError) {
+  const nlohmann::json good = observation_model_to_json(trained().model);
+  const fs::path file = trained().dir / "broken.json";
+  auto expect_error = [&](const std::string& text, const std::string& fragment) {
+    std::ofstream(file, std::ios::trunc) << text;
+    try {
+      load_observation_model(file.string());
+      ADD_FAILURE() << "no error; expected " << fragment;
+    } catch (const InputError& e) {
+      EXPECT_THAT(std::string(e.what()), HasSubstr(file.string()));
+      EXPECT_THAT(std::string(e.what()), HasSubstr(fragment));
+    }
+  };
+  const std::string text = good.dump();
+  expect_error(text.substr(0, text.size() / 2), "not a valid JSON model file");
+  expect_error("", "not a valid JSON model file");
+  expect_error("[1, 2]", "expected a JSON object");
+  expect_error("{\"version\": 8.5e6666666}", "not a valid JSON model file");  // found by the fuzzer
+  auto with = [&](const std::function<void(nlohmann::json&)>& change) {
+    nlohmann::json doc = good;
+    change(doc);
+    return doc.dump();
+  };
+  expect_error(with([](auto& d) { d["version"] = 2; }), "version 2 is not supported");
+  expect_error(with([](auto& d) { d["format"] = "other"; }), "not an observation model");
+  expect_error(with([](auto& d) { d.erase("classes"); }), "classes: missing");
+  expect_error(with([](auto& d) { d["classifier"] = "magic"; }), "unknown classifier 'magic'");
+  expect_error(with([](auto& d) { d["analysis"]["sample_rate"] = 5; }), "analysis.sample_rate");
+  expect_error(with([](auto& d) { d["analysis"]["preset"] = "nope"; }), "unknown feature preset");
+  expect_error(with([](auto& d) { d["classes"][1] = d["classes"][0]; }), "appears twice");
+  expect_error(with([](auto& d) { d["per_action"].erase("tap"); }), "per_action");
+  expect_error(with([](auto& d) { d["per_action"]["tap"]["table"][0][0] = 0.9; }),
+               "per_action.tap.table[0]: probabilities sum to");
+  expect_error(with([](auto& d) { d["per_action"]["tap"]["confusion"][1][1] = -2; }),
+               "per_action.tap.confusion");
+  expect_error(with([](auto& d) { d["per_action"]["strike"]["temperature"] = 0; }),
+               "per_action.strike.temperature");
+  expect_error(with([](auto& d) { d["per_action"]["strike"]["reject_threshold"] = nullptr; }),
+               "reject_threshold");
+  expect_error(with([](auto& d) { d["per_action"]["strike"]["classifier"]["scale"].erase(0); }),
+               "per_action.strike.classifier.scale: expected 123 numbers");
+  expect_error(
+      with([](auto& d) { d["per_action"]["strike"]["classifier"]["class_means"].erase(0); }),
+      "fitted for 2 classes");
+  expect_error(with([](auto& d) { d["per_action"]["strike"]["symbols"][3] = "nothing"; }),
+               "per_action.strike.symbols");
+  expect_error(with([](auto& d) { d["table_estimate"] = "hard"; }),
+               "table_estimate: table estimate 'hard' is not one of: counts, soft");
+  expect_error(with([](auto& d) { d["table_estimate"] = 3; }), "table_estimate");
+  try {
+    load_observation_model((trained().dir / "missing.json").string());
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr("cannot open"));
+  }
+}
+
+}  // namespace
+}  // namespace echoplan::perception
