@@ -11,8 +11,8 @@
 
 #include "common/data_dir.h"
 #include "common/error.h"
-#include "common/stable_hash.h"
 #include "common/file_io.h"
+#include "common/stable_hash.h"
 #include "common/yaml_reader.h"
 #include "perception/observation_model.h"
 #include "solvers/make_solver.h"
@@ -89,7 +89,8 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
   const YAML::Node root = parse_yaml(yaml_text, source);
   f.expect_map(root, "the campaign");
   f.reject_duplicate_keys(root);
-  f.only_keys(root, {"seed", "arms", "world", "training_set", "trials", "planner"}, "the campaign");
+  f.only_keys(root, {"seed", "arms", "world", "training_set", "trials", "planner", "reference"},
+              "the campaign");
 
   CampaignConfig c;
   c.source = source;
@@ -204,6 +205,14 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
   } else {
     f.fail(root, "missing key 'planner' (its budget: episodes or step_ms)");
   }
+
+  if (auto n = f.optional(root, "reference", "campaign")) {
+    const std::string path = resolve(source, f.name(n, "reference"));
+    std::error_code error;
+    if (!fs::is_regular_file(path, error))
+      f.fail(n, "reference file '" + path + "' does not exist");
+    c.reference = load_reference_results(path);
+  }
   return c;
 }
 
@@ -236,6 +245,7 @@ nlohmann::json to_json(const CampaignConfig& c) {
                   {"episodes", c.planner.episodes},
                   {"step_ms", c.planner.step_ms},
                   {"max_steps", c.planner.max_steps}};
+  if (c.reference) j["reference"] = to_json(*c.reference);
   return j;
 }
 
@@ -268,6 +278,8 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
     c.planner.episodes = p.at("episodes").get<std::int64_t>();
     c.planner.step_ms = p.at("step_ms").get<std::int64_t>();
     c.planner.max_steps = p.at("max_steps").get<int>();
+    // Absent when the campaign names no reference, and in folders written before the key existed.
+    if (j.contains("reference")) c.reference = reference_results_from_json(j["reference"], source);
     return c;
   } catch (const nlohmann::json::exception& e) {
     throw InputError(source, 0, std::string("not a campaign description: ") + e.what());

@@ -8,8 +8,11 @@
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "experiment/reference_results.h"
 
 namespace echoplan::experiment {
 
@@ -72,6 +75,9 @@ struct CampaignConfig {
   TrainingSetConfig training;
   std::vector<ObjectGroup> groups;  // trials per object, in report order
   PlannerConfig planner;
+  // What the results are shown beside (the file named by `reference:`); none: no reference
+  // columns. Not part of the identity: it changes the report's comparison, not the trials.
+  std::optional<ReferenceResults> reference;
 
   int total_trials() const;  // arms x sum of the groups' trials
 

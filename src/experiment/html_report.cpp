@@ -125,17 +125,20 @@ std::string html_report(const fs::path& directory, const CampaignResults& result
         "the planner; they say nothing about how well sound tells the objects apart.</p>\n",
         escape(results.config.world.problem));
 
-  // Results next to the report's.
-  h +=
-      "<h2>Results and the report's</h2>\n<table>\n<tr><th class=\"l\">arm</th><th "
-      "class=\"l\">objects</th>"
-      "<th>trials</th><th>accuracy</th><th>mean discounted reward (95% CI)</th><th>mean steps</th>";
+  // Results next to the reference's, when the campaign names one.
+  const std::optional<ReferenceResults>& reference = results.config.reference;
+  h += reference ? "<h2>Results and the " + escape(reference->label) + "'s</h2>\n"
+                 : std::string("<h2>Results</h2>\n");
+  h += "<table>\n<tr><th class=\"l\">arm</th><th class=\"l\">objects</th>"
+       "<th>trials</th><th>accuracy</th><th>mean discounted reward (95% CI)</th><th>mean "
+       "steps</th>";
   for (const auto& a : spec.action_names) h += "<th>mean " + escape(a) + "</th>";
-  h += "<th>report: correct</th><th>report: reward</th></tr>\n";
+  if (reference)
+    h += fmt::format("<th>{0}: correct</th><th>{0}: reward</th>", escape(reference->label));
+  h += "</tr>\n";
   for (const SummaryRow& row : summary_rows(results)) {
     const TrialSummary& s = row.summary;
-    const bool total =
-        row.label == "all" || row.label == "original objects" || row.label == "variants";
+    const bool total = row.scope != RowScope::object;
     h += fmt::format(
         "<tr{}><td class=\"l\">{}</td><td class=\"l\">{}</td><td>{}</td><td "
         "class=\"{}\">{:.0f}%</td>"
@@ -144,11 +147,12 @@ std::string html_report(const fs::path& directory, const CampaignResults& result
         s.accuracy >= 0.999 ? "good" : (s.accuracy < 0.8 ? "bad" : ""), 100.0 * s.accuracy,
         s.mean_discounted_reward, s.ci95, s.mean_steps);
     for (double c : s.mean_action_counts) h += fmt::format("<td>{:.2f}</td>", c);
-    if (row.reported)
-      h += fmt::format("<td>{}/{}</td><td>{:.2f}</td></tr>\n", row.reported->correct,
-                       row.reported->trials, row.reported->mean_discounted_reward);
-    else
-      h += "<td></td><td></td></tr>\n";
+    if (row.reference)
+      h += fmt::format("<td>{}/{}</td><td>{:.2f}</td>", row.reference->correct,
+                       row.reference->trials, row.reference->mean_discounted_reward);
+    else if (reference)
+      h += "<td></td><td></td>";
+    h += "</tr>\n";
   }
   h += "</table>\n";
   const nlohmann::json summary = summary_json(results);
@@ -164,11 +168,7 @@ std::string html_report(const fs::path& directory, const CampaignResults& result
           d["pairs"].get<int>());
     h += "</ul>\n";
   }
-  h += "<p>The report's numbers come from its Tables 5.1 (four objects, 40/40 correct, mean "
-       "discounted reward "
-       "7.77) and 5.3 (weighted can 7/10, weighted mug 9/10). If simulated objects are easier to "
-       "tell apart than "
-       "the lab's, results here are better for that reason, not because of the planner.</p>\n";
+  if (reference && !reference->note.empty()) h += "<p>" + escape(reference->note) + "</p>\n";
 
   for (const Figure& f : figures) {
     h += fmt::format(
