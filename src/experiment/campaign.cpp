@@ -111,7 +111,7 @@ LoopSettings loop_settings(const CampaignConfig& config,
 // not.
 void check_classifier(const CampaignConfig& config,
                       const std::shared_ptr<const perception::ObservationModel>& model) {
-  for (const ArmConfig& arm : config.arms)
+  for (const CampaignArm& arm : config.arms)
     if (arm.calibrate) calibrated_problem(object_data(pomdp::load_problem(arm.problem)), *model);
   if (config.world.type == "simulated")
     for (const ObjectGroup& group : config.groups)
@@ -123,7 +123,7 @@ void check_classifier(const CampaignConfig& config,
 bool needs_classifier(const CampaignConfig& config) {
   if (config.world.type == "simulated") return true;
   return std::any_of(config.arms.begin(), config.arms.end(),
-                     [](const ArmConfig& a) { return a.calibrate; });
+                     [](const CampaignArm& a) { return a.calibrate; });
 }
 
 Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) {
@@ -133,7 +133,7 @@ Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) 
 
   // The problems: each loads, and all share objects, actions and observations with the world.
   std::vector<pomdp::Problem> problems;
-  for (const ArmConfig& arm : config.arms) problems.push_back(pomdp::load_problem(arm.problem));
+  for (const CampaignArm& arm : config.arms) problems.push_back(pomdp::load_problem(arm.problem));
   const pomdp::Problem world = pomdp::load_problem(config.world.problem);
   const pomdp::ModelSpec& spec = world.model->spec();
   if (spec.state.discrete_value_names.empty())
@@ -194,7 +194,7 @@ Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) 
     throw InputError(config.training.recordings, 0, "the recordings folder does not exist");
   if (!config.training.sim_config.empty()) sim::load_sim_config(config.training.sim_config);
   for (const pomdp::Problem& p : problems)
-    for (const ArmConfig& arm : config.arms)
+    for (const CampaignArm& arm : config.arms)
       if (arm.calibrate && arm.problem == p.source_path) object_data(p);
   // A given model must be one for these objects and actions.
   if (!config.training.model.empty() && needs_classifier(config)) {
@@ -303,7 +303,7 @@ bool prepare_training(Campaign& campaign, const perception::ProgressFn& progress
     }
     check_classifier(config, campaign.observation_model);
   }
-  for (ArmConfig& arm : campaign.planning.arms) {
+  for (CampaignArm& arm : campaign.planning.arms) {
     if (!arm.calibrate) continue;
     const pomdp::Problem base = pomdp::load_problem(arm.problem);
     const pomdp::ObjectProblemData data =

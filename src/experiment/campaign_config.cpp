@@ -55,7 +55,7 @@ int CampaignConfig::total_trials() const {
 nlohmann::json CampaignConfig::identity() const {
   nlohmann::json j;
   j["seed"] = seed;
-  for (const ArmConfig& arm : arms)
+  for (const CampaignArm& arm : arms)
     j["arms"].push_back({{"name", arm.name},
                          {"problem_sha", content_hash(arm.problem)},
                          {"calibrate", arm.calibrate}});
@@ -84,19 +84,19 @@ CampaignConfig parse_campaign_config(const std::string& yaml_text, const std::st
 
 namespace {
 
-std::vector<ArmConfig> read_arms(const YamlReader& f, const YAML::Node& root,
-                                 const std::string& source) {
+std::vector<CampaignArm> read_arms(const YamlReader& f, const YAML::Node& root,
+                                   const std::string& source) {
   const YAML::Node arms = f.require(root, "arms", "the campaign");
   if (!arms.IsSequence() || arms.size() == 0) f.fail(arms, "arms must be a non-empty list");
-  std::vector<ArmConfig> read;
+  std::vector<CampaignArm> read;
   for (const YAML::Node& a : arms) {
     f.expect_map(a, "an arm");
     f.only_keys(a, {"name", "problem", "calibrate"}, "an arm");
-    ArmConfig arm;
+    CampaignArm arm;
     arm.name = f.name(f.require(a, "name", "an arm"), "arm name");
     if (!is_label(arm.name))
       f.fail(a, "arm name '" + arm.name + "' may hold only letters, digits, '_' and '-'");
-    for (const ArmConfig& other : read)
+    for (const CampaignArm& other : read)
       if (other.name == arm.name) f.fail(a, "two arms are named '" + arm.name + "'");
     arm.problem = resolve(source, f.name(f.require(a, "problem", "an arm"), "arm problem"));
     if (auto n = f.optional(a, "calibrate", "an arm")) arm.calibrate = f.boolean(n, "calibrate");
@@ -253,7 +253,7 @@ nlohmann::json to_json(const CampaignConfig& c) {
   nlohmann::json j;
   j["source"] = c.source;
   j["seed"] = c.seed;
-  for (const ArmConfig& arm : c.arms)
+  for (const CampaignArm& arm : c.arms)
     j["arms"].push_back(
         {{"name", arm.name}, {"problem", arm.problem}, {"calibrate", arm.calibrate}});
   j["world"] = {{"type", c.world.type}, {"problem", c.world.problem}};

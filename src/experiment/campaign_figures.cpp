@@ -260,7 +260,7 @@ std::vector<Figure> draw_figures(const fs::path& directory, const CampaignResult
   const TemporaryFolder work("echoplan-figures");
   std::vector<Drawing> drawings;
   if (!templates.empty()) drawings.push_back(templates_drawing(templates, work.path()));
-  for (const ArmConfig& arm : results.config.arms) {
+  for (const CampaignArm& arm : results.config.arms) {
     for (const ObjectGroup& group : results.config.groups) {
       const bool any = std::any_of(
           results.entries.begin(), results.entries.end(),

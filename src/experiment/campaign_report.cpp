@@ -88,7 +88,7 @@ std::vector<SummaryRow> summary_rows(const CampaignResults& results) {
   const bool originals = std::any_of(groups.begin(), groups.end(), plays_itself);
   const bool variants = !std::all_of(groups.begin(), groups.end(), plays_itself);
   std::vector<SummaryRow> rows;
-  for (const ArmConfig& arm : results.config.arms) {
+  for (const CampaignArm& arm : results.config.arms) {
     auto add = [&](RowScope scope, const std::string& label, const GroupFilter& keep) {
       const std::vector<TrialRecord> records = records_where(results, arm.name, keep);
       if (records.empty()) return;
@@ -116,7 +116,7 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
   for (const std::string& s : symbols)
     if (s != "none") classes.push_back(s);
   std::vector<ConfusionCounts> all;
-  for (const ArmConfig& arm : results.config.arms) {
+  for (const CampaignArm& arm : results.config.arms) {
     // Sensing actions: those that were ever followed by a heard class in this campaign, in action
     // order.
     for (std::size_t a = 0; a < results.spec.action_names.size(); ++a) {
@@ -149,7 +149,7 @@ void write_tables(const fs::path& directory, const CampaignResults& results) {
   TrialLog all(directory, results.spec, results.belief_particles, {"arm", "object"});
   for (const JournalEntry& e : results.entries)
     all.write_trial(e.result.record, e.result.steps, {e.arm, e.object});
-  for (const ArmConfig& arm : results.config.arms) {
+  for (const CampaignArm& arm : results.config.arms) {
     TrialLog per_arm(directory / "arms" / arm.name, results.spec, results.belief_particles,
                      {"object"});
     for (const JournalEntry& e : results.entries)
@@ -214,7 +214,7 @@ std::string summary_text(const CampaignResults& results) {
     if (row.arm != current_arm) {
       current_arm = row.arm;
       std::string problem;
-      for (const ArmConfig& a : results.config.arms)
+      for (const CampaignArm& a : results.config.arms)
         if (a.name == row.arm)
           problem = a.calibrate
                         ? a.problem + ", its observation table calibrated on the training set"
