@@ -76,7 +76,7 @@ void load_problems(Campaign& c, InputFiles& files) {
   if (spec.state.discrete_value_names.empty())
     throw InputError(config.world.problem, 0,
                      "a campaign needs an object-identification problem (objects as its state)");
-  for (const ArmConfig& arm : config.arms) {
+  for (const CampaignArm& arm : config.arms) {
     c.arm_problems.push_back(files.problem(arm.problem));
     loop::check_same_names(*c.arm_problems.back(), *c.world_problem);
     // Every solver can be built (unknown names and bad settings fail now, not in a worker).
@@ -180,7 +180,7 @@ ArmLoops make_loops(const Campaign& c) {
 bool needs_classifier(const CampaignConfig& config) {
   if (simulated(config)) return true;
   return std::any_of(config.arms.begin(), config.arms.end(),
-                     [](const ArmConfig& a) { return a.calibrate; });
+                     [](const CampaignArm& a) { return a.calibrate; });
 }
 
 Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) {

@@ -62,7 +62,7 @@ nlohmann::json CampaignConfig::identity(const FileText& file_text) const {
   };
   nlohmann::json j;
   j["seed"] = seed;
-  for (const ArmConfig& arm : arms)
+  for (const CampaignArm& arm : arms)
     j["arms"].push_back({{"name", arm.name},
                          {"problem_sha", content_hash(arm.problem)},
                          {"calibrate", arm.calibrate}});
@@ -91,88 +91,84 @@ CampaignConfig parse_campaign_config(const std::string& yaml_text, const std::st
 
 namespace {
 
-CampaignConfig read_campaign(const std::string& yaml_text, const std::string& source) {
-  const YamlReader f(source);
-  const YAML::Node root = parse_yaml(yaml_text, source);
-  f.expect_map(root, "the campaign");
-  f.reject_duplicate_keys(root);
-  f.only_keys(root, {"seed", "arms", "world", "training_set", "trials", "planner"}, "the campaign");
-
-  CampaignConfig c;
-  c.source = source;
-  if (auto n = f.optional(root, "seed", "campaign")) {
-    try {
-      c.seed = n.as<std::uint64_t>();
-    } catch (const YAML::Exception&) {
-      f.fail(n, "seed must be a non-negative integer");
-    }
-  }
-
+std::vector<CampaignArm> read_arms(const YamlReader& f, const YAML::Node& root,
+                                   const std::string& source) {
   const YAML::Node arms = f.require(root, "arms", "the campaign");
   if (!arms.IsSequence() || arms.size() == 0) f.fail(arms, "arms must be a non-empty list");
+  std::vector<CampaignArm> read;
   for (const YAML::Node& a : arms) {
     f.expect_map(a, "an arm");
     f.only_keys(a, {"name", "problem", "calibrate"}, "an arm");
-    ArmConfig arm;
+    CampaignArm arm;
     arm.name = f.name(f.require(a, "name", "an arm"), "arm name");
     if (!is_label(arm.name))
       f.fail(a, "arm name '" + arm.name + "' may hold only letters, digits, '_' and '-'");
-    for (const ArmConfig& other : c.arms)
+    for (const CampaignArm& other : read)
       if (other.name == arm.name) f.fail(a, "two arms are named '" + arm.name + "'");
     arm.problem = resolve(source, f.name(f.require(a, "problem", "an arm"), "arm problem"));
     if (auto n = f.optional(a, "calibrate", "an arm")) arm.calibrate = f.boolean(n, "calibrate");
-    c.arms.push_back(arm);
+    read.push_back(arm);
   }
+  return read;
+}
 
+WorldConfig read_world(const YamlReader& f, const YAML::Node& root, const std::string& source) {
   const YAML::Node world = f.require(root, "world", "the campaign");
   f.expect_map(world, "world");
   f.only_keys(world, {"type", "problem"}, "world");
-  c.world.type = f.name(f.require(world, "type", "world"), "world type");
-  if (c.world.type != "model" && c.world.type != "simulated")
-    f.fail(world, "world type '" + c.world.type + "' is not one of: model, simulated");
-  c.world.problem = resolve(source, f.name(f.require(world, "problem", "world"), "world problem"));
+  WorldConfig w;
+  w.type = f.name(f.require(world, "type", "world"), "world type");
+  if (w.type != "model" && w.type != "simulated")
+    f.fail(world, "world type '" + w.type + "' is not one of: model, simulated");
+  w.problem = resolve(source, f.name(f.require(world, "problem", "world"), "world problem"));
+  return w;
+}
 
-  if (auto t = f.optional(root, "training_set", "campaign")) {
-    f.expect_map(t, "training_set");
-    f.only_keys(t,
-                {"recordings_per_pair", "objects", "actions", "recordings", "model", "classifier",
-                 "table", "catalogue", "sim_config"},
-                "training_set");
-    if (auto n = f.optional(t, "model", "training_set"))
-      c.training.model = resolve(source, f.name(n, "model"));
-    // Keys that say how this campaign trains mean nothing next to a trained model: an error, not
-    // a silently ignored setting.
-    for (const char* key : {"classifier", "table"})
-      if (auto n = f.optional(t, key, "training_set"); n && !c.training.model.empty())
-        f.fail(n, fmt::format("{} chooses how this campaign trains; with model: the model file "
-                              "has its own",
-                              key));
-    if (auto n = f.optional(t, "classifier", "training_set"))
-      c.training.classifier = f.name(n, "classifier");
-    if (auto n = f.optional(t, "table", "training_set")) {
-      c.training.table = f.name(n, "table");
-      const auto& names = perception::table_estimate_names();
-      if (std::find(names.begin(), names.end(), c.training.table) == names.end())
-        f.fail(n, fmt::format("table '{}' is not one of: {}", c.training.table,
-                              fmt::join(names, ", ")));
-    }
-    if (auto n = f.optional(t, "recordings", "training_set"))
-      c.training.recordings = resolve(source, f.name(n, "recordings"));
-    if (auto n = f.optional(t, "recordings_per_pair", "training_set"))
-      c.training.recordings_per_pair = f.non_negative_int(n, "recordings_per_pair");
-    if (auto n = f.optional(t, "objects", "training_set"))
-      c.training.objects = f.names(n, "objects");
-    if (auto n = f.optional(t, "actions", "training_set"))
-      c.training.actions = f.names(n, "actions");
-    if (auto n = f.optional(t, "catalogue", "training_set"))
-      c.training.catalogue = resolve(source, f.name(n, "catalogue"));
-    if (auto n = f.optional(t, "sim_config", "training_set"))
-      c.training.sim_config = resolve(source, f.name(n, "sim_config"));
+// How the classifier is trained (or the trained model used instead): the `training_set` mapping.
+TrainingSetConfig read_training_set(const YamlReader& f, const YAML::Node& t,
+                                    const std::string& source) {
+  f.expect_map(t, "training_set");
+  f.only_keys(t,
+              {"recordings_per_pair", "objects", "actions", "recordings", "model", "classifier",
+               "table", "catalogue", "sim_config"},
+              "training_set");
+  TrainingSetConfig training;
+  if (auto n = f.optional(t, "model", "training_set"))
+    training.model = resolve(source, f.name(n, "model"));
+  // Keys that say how this campaign trains mean nothing next to a trained model: an error, not
+  // a silently ignored setting.
+  for (const char* key : {"classifier", "table"})
+    if (auto n = f.optional(t, key, "training_set"); n && !training.model.empty())
+      f.fail(n, fmt::format("{} chooses how this campaign trains; with model: the model file "
+                            "has its own",
+                            key));
+  if (auto n = f.optional(t, "classifier", "training_set"))
+    training.classifier = f.name(n, "classifier");
+  if (auto n = f.optional(t, "table", "training_set")) {
+    training.table = f.name(n, "table");
+    const auto& names = perception::table_estimate_names();
+    if (std::find(names.begin(), names.end(), training.table) == names.end())
+      f.fail(n,
+             fmt::format("table '{}' is not one of: {}", training.table, fmt::join(names, ", ")));
   }
+  if (auto n = f.optional(t, "recordings", "training_set"))
+    training.recordings = resolve(source, f.name(n, "recordings"));
+  if (auto n = f.optional(t, "recordings_per_pair", "training_set"))
+    training.recordings_per_pair = f.non_negative_int(n, "recordings_per_pair");
+  if (auto n = f.optional(t, "objects", "training_set")) training.objects = f.names(n, "objects");
+  if (auto n = f.optional(t, "actions", "training_set")) training.actions = f.names(n, "actions");
+  if (auto n = f.optional(t, "catalogue", "training_set"))
+    training.catalogue = resolve(source, f.name(n, "catalogue"));
+  if (auto n = f.optional(t, "sim_config", "training_set"))
+    training.sim_config = resolve(source, f.name(n, "sim_config"));
+  return training;
+}
 
+std::vector<ObjectGroup> read_trial_groups(const YamlReader& f, const YAML::Node& root) {
   const YAML::Node trials = f.require(root, "trials", "the campaign");
   if (!trials.IsSequence() || trials.size() == 0)
     f.fail(trials, "trials must be a non-empty list of object groups");
+  std::vector<ObjectGroup> groups;
   for (const YAML::Node& g : trials) {
     f.expect_map(g, "a trial group");
     f.only_keys(g, {"object", "plays", "trials"}, "a trial group");
@@ -184,33 +180,73 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
       group.trials = f.non_negative_int(n, "trials");
       if (group.trials < 1) f.fail(n, "trials must be >= 1");
     }
-    for (const ObjectGroup& other : c.groups)
+    for (const ObjectGroup& other : groups)
       if (other.object == group.object)
         f.fail(g, "object '" + group.object + "' has two trial groups");
-    c.groups.push_back(group);
+    groups.push_back(group);
   }
+  return groups;
+}
 
-  if (auto p = f.optional(root, "planner", "campaign")) {
-    f.expect_map(p, "planner");
-    f.only_keys(p, {"solver", "episodes", "step_ms", "max_steps"}, "planner");
-    if (auto n = f.optional(p, "solver", "planner")) c.planner.solver = f.name(n, "solver");
-    // The online solvers: a campaign plans within each trial's time, not from a stored policy.
-    const std::vector<std::string> online = solvers::solver_names();
-    if (std::find(online.begin(), online.end(), c.planner.solver) == online.end())
-      f.fail(p, fmt::format("planner solver '{}' is not one of: {}", c.planner.solver,
-                            fmt::join(online, ", ")));
-    if (auto n = f.optional(p, "episodes", "planner"))
-      c.planner.episodes = f.non_negative_int(n, "episodes");
-    if (auto n = f.optional(p, "step_ms", "planner"))
-      c.planner.step_ms = f.non_negative_int(n, "step_ms");
-    if (auto n = f.optional(p, "max_steps", "planner"))
-      c.planner.max_steps = f.non_negative_int(n, "max_steps");
-    if ((c.planner.episodes > 0) == (c.planner.step_ms > 0))
-      f.fail(p, "give exactly one planning budget: episodes (reproducible) or step_ms");
-    if (c.planner.max_steps < 1) f.fail(p, "max_steps must be >= 1");
-  } else {
-    f.fail(root, "missing key 'planner' (its budget: episodes or step_ms)");
+PlannerConfig read_planner(const YamlReader& f, const YAML::Node& root) {
+  const YAML::Node p = f.optional(root, "planner", "campaign");
+  if (!p) f.fail(root, "missing key 'planner' (its budget: episodes or step_ms)");
+  f.expect_map(p, "planner");
+  f.only_keys(p, {"solver", "episodes", "step_ms", "max_steps"}, "planner");
+  PlannerConfig planner;
+  if (auto n = f.optional(p, "solver", "planner")) planner.solver = f.name(n, "solver");
+  // The online solvers: a campaign plans within each trial's time, not from a stored policy.
+  const std::vector<std::string> online = solvers::solver_names();
+  if (std::find(online.begin(), online.end(), planner.solver) == online.end())
+    f.fail(p, fmt::format("planner solver '{}' is not one of: {}", planner.solver,
+                          fmt::join(online, ", ")));
+  if (auto n = f.optional(p, "episodes", "planner"))
+    planner.episodes = f.non_negative_int(n, "episodes");
+  if (auto n = f.optional(p, "step_ms", "planner"))
+    planner.step_ms = f.non_negative_int(n, "step_ms");
+  if (auto n = f.optional(p, "max_steps", "planner"))
+    planner.max_steps = f.non_negative_int(n, "max_steps");
+  if ((planner.episodes > 0) == (planner.step_ms > 0))
+    f.fail(p, "give exactly one planning budget: episodes (reproducible) or step_ms");
+  if (planner.max_steps < 1) f.fail(p, "max_steps must be >= 1");
+  return planner;
+}
+
+// The reference file named by `reference:`, read whole (its mistakes name its own lines).
+std::optional<ReferenceResults> read_reference(const YamlReader& f, const YAML::Node& root,
+                                               const std::string& source) {
+  const YAML::Node n = f.optional(root, "reference", "campaign");
+  if (!n) return std::nullopt;
+  const std::string path = resolve(source, f.name(n, "reference"));
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) f.fail(n, "reference file '" + path + "' does not exist");
+  return load_reference_results(path);
+}
+
+CampaignConfig read_campaign(const std::string& yaml_text, const std::string& source) {
+  const YamlReader f(source);
+  const YAML::Node root = parse_yaml(yaml_text, source);
+  f.expect_map(root, "the campaign");
+  f.reject_duplicate_keys(root);
+  f.only_keys(root, {"seed", "arms", "world", "training_set", "trials", "planner", "reference"},
+              "the campaign");
+
+  CampaignConfig c;
+  c.source = source;
+  if (auto n = f.optional(root, "seed", "campaign")) {
+    try {
+      c.seed = n.as<std::uint64_t>();
+    } catch (const YAML::Exception&) {
+      f.fail(n, "seed must be a non-negative integer");
+    }
   }
+  c.arms = read_arms(f, root, source);
+  c.world = read_world(f, root, source);
+  if (auto t = f.optional(root, "training_set", "campaign"))
+    c.training = read_training_set(f, t, source);
+  c.groups = read_trial_groups(f, root);
+  c.planner = read_planner(f, root);
+  c.reference = read_reference(f, root, source);
   return c;
 }
 
@@ -224,7 +260,7 @@ nlohmann::json to_json(const CampaignConfig& c) {
   nlohmann::json j;
   j["source"] = c.source;
   j["seed"] = c.seed;
-  for (const ArmConfig& arm : c.arms)
+  for (const CampaignArm& arm : c.arms)
     j["arms"].push_back(
         {{"name", arm.name}, {"problem", arm.problem}, {"calibrate", arm.calibrate}});
   j["world"] = {{"type", c.world.type}, {"problem", c.world.problem}};
@@ -243,6 +279,7 @@ nlohmann::json to_json(const CampaignConfig& c) {
                   {"episodes", c.planner.episodes},
                   {"step_ms", c.planner.step_ms},
                   {"max_steps", c.planner.max_steps}};
+  if (c.reference) j["reference"] = to_json(*c.reference);
   return j;
 }
 
@@ -275,6 +312,8 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
     c.planner.episodes = p.at("episodes").get<std::int64_t>();
     c.planner.step_ms = p.at("step_ms").get<std::int64_t>();
     c.planner.max_steps = p.at("max_steps").get<int>();
+    // Absent when the campaign names no reference, and in folders written before the key existed.
+    if (j.contains("reference")) c.reference = reference_results_from_json(j["reference"], source);
     return c;
   } catch (const nlohmann::json::exception& e) {
     throw InputError(source, 0, std::string("not a campaign description: ") + e.what());

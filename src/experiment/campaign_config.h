@@ -9,13 +9,17 @@
 #include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "experiment/reference_results.h"
+
 namespace echoplan::experiment {
 
-// One arm: the same trials planned with one problem file.
-struct ArmConfig {
+// One arm of the campaign (a study arm, not the robot's: that is sim::ArmConfig): the same trials
+// planned with one problem file.
+struct CampaignArm {
   std::string name;     // a label: letters, digits, '_' and '-'
   std::string problem;  // path of the problem file the planner uses
   // Plan with `problem`'s observation table replaced by the trained classifier's calibrated one
@@ -68,11 +72,14 @@ struct PlannerConfig {
 struct CampaignConfig {
   std::string source;  // the file it was read from
   std::uint64_t seed = 1;
-  std::vector<ArmConfig> arms;
+  std::vector<CampaignArm> arms;
   WorldConfig world;
   TrainingSetConfig training;
   std::vector<ObjectGroup> groups;  // trials per object, in report order
   PlannerConfig planner;
+  // What the results are shown beside (the file named by `reference:`); none: no reference
+  // columns. Not part of the identity: it changes the report's comparison, not the trials.
+  std::optional<ReferenceResults> reference;
 
   int total_trials() const;  // arms x sum of the groups' trials
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <sstream>
 
 #include "audio/features.h"
 #include "audio/io.h"
@@ -83,12 +84,7 @@ Drawing belief_drawing(const CampaignResults& results, const std::string& arm,
   for (std::size_t t = 0; t < trials.size(); ++t) {
     const JournalEntry& e = *trials[t];
     const std::string file = fmt::format("belief_{}.dat", e.id);
-    std::ofstream data(data_dir / file);
-    for (const StepRecord& s : e.result.steps) {
-      data << s.step;
-      for (double p : s.belief) data << ' ' << (particles ? p * results.belief_particles : p);
-      data << '\n';
-    }
+    std::ofstream(data_dir / file) << belief_data(e.result.steps, results.belief_particles);
     std::string sequence;
     for (const StepRecord& s : e.result.steps) sequence += fmt::format(" {}", s.action + 1);
     const bool right = e.result.record.believed_state == e.result.record.true_state;
@@ -136,13 +132,10 @@ Drawing confusion_drawing(const CampaignResults& results, const std::string& arm
        "set xtics rotate by 30 right\nset size ratio -1\n";
   for (const ConfusionCounts& m : matrices) {
     const std::string file = fmt::format("confusion_{}_{}.dat", arm, m.action);
-    std::ofstream data(data_dir / file);
+    std::ofstream(data_dir / file) << confusion_data(m);
     int largest = 1;
-    for (std::size_t r = 0; r < m.rows.size(); ++r)
-      for (std::size_t k = 0; k < m.columns.size(); ++k) {
-        data << k << ' ' << r << ' ' << m.counts[r][k] << '\n';
-        largest = std::max(largest, m.counts[r][k]);
-      }
+    for (const std::vector<int>& row : m.counts)
+      for (int count : row) largest = std::max(largest, count);
     c += fmt::format("set title {} noenhanced\n", gnuplot_text(m.action));
     c += fmt::format("set xtics {} noenhanced\nset ytics {} noenhanced\n", tic_labels(m.columns),
                      tic_labels(m.rows));
@@ -207,6 +200,24 @@ Drawing templates_drawing(const std::vector<TemplateMatrix>& templates, const fs
 
 }  // namespace
 
+std::string belief_data(const std::vector<StepRecord>& steps, int belief_particles) {
+  std::ostringstream data;
+  for (const StepRecord& s : steps) {
+    data << s.step;
+    for (double p : s.belief) data << ' ' << (belief_particles > 0 ? p * belief_particles : p);
+    data << '\n';
+  }
+  return data.str();
+}
+
+std::string confusion_data(const ConfusionCounts& counts) {
+  std::ostringstream data;
+  for (std::size_t r = 0; r < counts.rows.size(); ++r)
+    for (std::size_t k = 0; k < counts.columns.size(); ++k)
+      data << k << ' ' << r << ' ' << counts.counts[r][k] << '\n';
+  return data.str();
+}
+
 std::vector<TemplateMatrix> template_matrices(const fs::path& recordings,
                                               const std::vector<std::string>& objects,
                                               const std::vector<std::string>& actions) {
@@ -260,7 +271,7 @@ std::vector<Figure> draw_figures(const fs::path& directory, const CampaignResult
   const TemporaryFolder work("echoplan-figures");
   std::vector<Drawing> drawings;
   if (!templates.empty()) drawings.push_back(templates_drawing(templates, work.path()));
-  for (const ArmConfig& arm : results.config.arms) {
+  for (const CampaignArm& arm : results.config.arms) {
     for (const ObjectGroup& group : results.config.groups) {
       const bool any = std::any_of(
           results.entries.begin(), results.entries.end(),

@@ -37,6 +37,13 @@ struct Figure {
   std::string caption;
 };
 
+// The data file gnuplot plots for one trial's belief panel: per step, "step p_0 p_1 ..." (the
+// belief before the decision; particle counts when `belief_particles` > 0).
+std::string belief_data(const std::vector<StepRecord>& steps, int belief_particles);
+
+// The data file of one confusion panel: "column row count" per cell, rows outer.
+std::string confusion_data(const ConfusionCounts& counts);
+
 // Draws every figure with one gnuplot run per format; returns them in page order. Throws InputError
 // when gnuplot is missing or fails.
 std::vector<Figure> draw_figures(const std::filesystem::path& directory,

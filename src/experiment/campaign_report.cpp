@@ -15,24 +15,36 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The seed report's trials, per object: Table 5.1 (the four objects, the tuned table) and Table 5.3
-// (the weighted can and mug, no retraining). Means computed from the tables' rows.
-const std::map<std::string, ReportedResult>& reported_results() {
-  static const std::map<std::string, ReportedResult> table = {
-      {"pringles_can", {10, 10, 8.24879, 2.6}},
-      {"coffee_mug", {10, 10, 8.24658, 2.5}},
-      {"plastic_cup", {10, 10, 7.59650, 3.2}},
-      {"paper_base", {10, 10, 6.97004, 3.8}},
-      {"original objects", {40, 40, 7.76548, 3.025}},
-      {"pringles_can_weighted", {10, 7, -13.52690, 2.7}},
-      {"coffee_mug_weighted", {10, 9, -2.64229, 2.9}},
-      {"variants", {20, 16, -8.08459, 2.8}},
-  };
-  return table;
+using GroupFilter = std::function<bool(const ObjectGroup&)>;
+
+// An original object (it plays itself), not a variant of one.
+bool plays_itself(const ObjectGroup& g) { return g.object == g.plays; }
+
+// The reference's result for a row of `scope` over the groups of `objects`: the object's own, or a
+// total that covers exactly these objects (in any order); none when the reference has no such one.
+std::optional<ReferenceResult> reference_for(const std::optional<ReferenceResults>& reference,
+                                             RowScope scope, std::vector<std::string> objects) {
+  if (!reference) return std::nullopt;
+  if (scope == RowScope::object) {
+    auto it = reference->objects.find(objects.at(0));
+    if (it == reference->objects.end()) return std::nullopt;
+    return it->second;
+  }
+  const std::optional<ReferenceTotal>& total =
+      scope == RowScope::original_objects
+          ? reference->original_objects
+          : (scope == RowScope::variants ? reference->variants : reference->all);
+  if (!total) return std::nullopt;
+  std::vector<std::string> covered = total->objects;
+  std::sort(covered.begin(), covered.end());
+  std::sort(objects.begin(), objects.end());
+  if (covered != objects) return std::nullopt;
+  return total->result;
 }
 
+// The records of `arm`'s trials whose group `keep` accepts.
 std::vector<TrialRecord> records_where(const CampaignResults& results, const std::string& arm,
-                                       const std::function<bool(const ObjectGroup&)>& keep) {
+                                       const GroupFilter& keep) {
   std::map<std::string, const ObjectGroup*> groups;
   for (const ObjectGroup& g : results.config.groups) groups[g.object] = &g;
   std::vector<TrialRecord> records;
@@ -70,48 +82,30 @@ TrialSummary paired_difference(const CampaignResults& results, const std::string
 
 }  // namespace
 
-std::optional<ReportedResult> reported_result(const std::string& object) {
-  auto it = reported_results().find(object);
-  if (it == reported_results().end()) return std::nullopt;
-  return it->second;
-}
-
 std::vector<SummaryRow> summary_rows(const CampaignResults& results) {
   const int num_actions = static_cast<int>(results.spec.action_names.size());
+  const std::vector<ObjectGroup>& groups = results.config.groups;
+  const bool originals = std::any_of(groups.begin(), groups.end(), plays_itself);
+  const bool variants = !std::all_of(groups.begin(), groups.end(), plays_itself);
   std::vector<SummaryRow> rows;
-  for (const ArmConfig& arm : results.config.arms) {
-    auto add = [&](const std::string& label, const std::function<bool(const ObjectGroup&)>& keep,
-                   bool compare) {
+  for (const CampaignArm& arm : results.config.arms) {
+    auto add = [&](RowScope scope, const std::string& label, const GroupFilter& keep) {
       const std::vector<TrialRecord> records = records_where(results, arm.name, keep);
       if (records.empty()) return;
-      rows.push_back({arm.name, label, summarize(records, num_actions),
-                      compare ? reported_result(label) : std::nullopt});
+      std::vector<std::string> covered;
+      for (const ObjectGroup& g : groups)
+        if (keep(g)) covered.push_back(g.object);
+      rows.push_back({arm.name, scope, label, summarize(records, num_actions),
+                      reference_for(results.config.reference, scope, covered)});
     };
-    bool originals = false;
-    bool variants = false;
-    for (const ObjectGroup& g : results.config.groups) {
-      add(
-          g.object, [&](const ObjectGroup& other) { return other.object == g.object; }, true);
-      (g.object == g.plays ? originals : variants) = true;
-    }
-    // The report's aggregates hold exactly its four objects and two variants; compare only then.
-    std::vector<std::string> original_names, variant_names;
-    for (const ObjectGroup& g : results.config.groups)
-      (g.object == g.plays ? original_names : variant_names).push_back(g.object);
-    const bool report_originals =
-        original_names ==
-        std::vector<std::string>{"pringles_can", "coffee_mug", "plastic_cup", "paper_base"};
-    const bool report_variants =
-        variant_names == std::vector<std::string>{"pringles_can_weighted", "coffee_mug_weighted"};
+    for (const ObjectGroup& g : groups)
+      add(RowScope::object, g.object,
+          [&](const ObjectGroup& other) { return other.object == g.object; });
     if (originals && variants) {
-      add(
-          "original objects", [](const ObjectGroup& g) { return g.object == g.plays; },
-          report_originals);
-      add(
-          "variants", [](const ObjectGroup& g) { return g.object != g.plays; }, report_variants);
+      add(RowScope::original_objects, "original objects", plays_itself);
+      add(RowScope::variants, "variants", [](const ObjectGroup& g) { return !plays_itself(g); });
     }
-    add(
-        "all", [](const ObjectGroup&) { return true; }, false);
+    add(RowScope::all, "all", [](const ObjectGroup&) { return true; });
   }
   return rows;
 }
@@ -122,7 +116,7 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
   for (const std::string& s : symbols)
     if (s != "none") classes.push_back(s);
   std::vector<ConfusionCounts> all;
-  for (const ArmConfig& arm : results.config.arms) {
+  for (const CampaignArm& arm : results.config.arms) {
     // Sensing actions: those that were ever followed by a heard class in this campaign, in action
     // order.
     for (std::size_t a = 0; a < results.spec.action_names.size(); ++a) {
@@ -155,7 +149,7 @@ void write_tables(const fs::path& directory, const CampaignResults& results) {
   TrialLog all(directory, results.spec, results.belief_particles, {"arm", "object"});
   for (const JournalEntry& e : results.entries)
     all.write_trial(e.result.record, e.result.steps, {e.arm, e.object});
-  for (const ArmConfig& arm : results.config.arms) {
+  for (const CampaignArm& arm : results.config.arms) {
     TrialLog per_arm(directory / "arms" / arm.name, results.spec, results.belief_particles,
                      {"object"});
     for (const JournalEntry& e : results.entries)
@@ -174,13 +168,14 @@ nlohmann::json summary_json(const CampaignResults& results) {
     nlohmann::json r = summary_json(row.summary, results.spec);
     r["arm"] = row.arm;
     r["objects"] = row.label;
-    if (row.reported)
+    // Under "report" whatever the reference's label: the key readers of summary.json know.
+    if (row.reference)
       r["report"] = {
-          {"trials", row.reported->trials},
-          {"correct", row.reported->correct},
-          {"accuracy", static_cast<double>(row.reported->correct) / row.reported->trials},
-          {"mean_discounted_reward", row.reported->mean_discounted_reward},
-          {"mean_steps", row.reported->mean_steps}};
+          {"trials", row.reference->trials},
+          {"correct", row.reference->correct},
+          {"accuracy", static_cast<double>(row.reference->correct) / row.reference->trials},
+          {"mean_discounted_reward", row.reference->mean_discounted_reward},
+          {"mean_steps", row.reference->mean_steps}};
     rows.push_back(std::move(r));
   }
   j["results"] = std::move(rows);
@@ -208,6 +203,7 @@ nlohmann::json summary_json(const CampaignResults& results) {
 std::string summary_text(const CampaignResults& results) {
   std::string out;
   const auto& actions = results.spec.action_names;
+  const std::optional<ReferenceResults>& reference = results.config.reference;
   out += fmt::format("{} of {} trials; planner {} with {}\n", results.entries.size(),
                      results.planned_trials, results.config.planner.solver,
                      results.config.planner.episodes > 0
@@ -218,7 +214,7 @@ std::string summary_text(const CampaignResults& results) {
     if (row.arm != current_arm) {
       current_arm = row.arm;
       std::string problem;
-      for (const ArmConfig& a : results.config.arms)
+      for (const CampaignArm& a : results.config.arms)
         if (a.name == row.arm)
           problem = a.calibrate
                         ? a.problem + ", its observation table calibrated on the training set"
@@ -227,17 +223,19 @@ std::string summary_text(const CampaignResults& results) {
       out += fmt::format("  {:<24}{:>7}{:>10}{:>22}{:>7}", "objects", "trials", "accuracy",
                          "reward (95% CI)", "steps");
       for (const auto& a : actions) out += fmt::format("{:>10}", a.substr(0, 9));
-      out += fmt::format("   | report: {:>7}{:>8}\n", "correct", "reward");
+      if (reference)
+        out += fmt::format("   | {}: {:>7}{:>8}", reference->label, "correct", "reward");
+      out += '\n';
     }
     const TrialSummary& s = row.summary;
     out +=
         fmt::format("  {:<24}{:>7}{:>10}{:>22}{:>7.2f}", row.label, s.trials, percent(s.accuracy),
                     fmt::format("{:.2f} ± {:.2f}", s.mean_discounted_reward, s.ci95), s.mean_steps);
     for (double c : s.mean_action_counts) out += fmt::format("{:>10.2f}", c);
-    if (row.reported)
-      out += fmt::format("   |         {:>7}{:>8.2f}",
-                         fmt::format("{}/{}", row.reported->correct, row.reported->trials),
-                         row.reported->mean_discounted_reward);
+    if (row.reference)
+      out += fmt::format("   | {:{}}{:>7}{:>8.2f}", "", reference->label.size() + 2,
+                         fmt::format("{}/{}", row.reference->correct, row.reference->trials),
+                         row.reference->mean_discounted_reward);
     out += '\n';
   }
   const auto& arms = results.config.arms;

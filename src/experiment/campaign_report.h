@@ -1,6 +1,7 @@
 // A campaign's results as tables and numbers: trials.csv and steps.csv (Tables 5.1 and 5.2 of the
 // report, plus arm and object), per-arm copies that `echoplan certify` reads with the arm's
-// problem, summary.json and the terminal summary, each next to the report's own numbers.
+// problem, summary.json and the terminal summary, each next to the campaign's reference results
+// when it names some.
 //
 // Everything here is a pure function of the campaign's configuration and its journal entries sorted
 // by id, so a resumed, parallel, sharded-and-merged or one-core run writes the same bytes.
@@ -28,28 +29,26 @@ struct CampaignResults {
   int planned_trials = 0;             // what the campaign (all shards) asks for
 };
 
-// The seed report's result for one object (Tables 5.1 and 5.3): trials, correct ones, mean
-// discounted reward and mean steps.
-struct ReportedResult {
-  int trials = 0;
-  int correct = 0;
-  double mean_discounted_reward = 0.0;
-  double mean_steps = 0.0;
+// Which trials a summary row covers.
+enum class RowScope {
+  object,            // one trial group (the object in the world)
+  original_objects,  // the groups whose object plays itself
+  variants,          // the groups whose object plays another
+  all,
 };
-
-// The report's numbers for a catalogue object ("pringles_can", ..., "coffee_mug_weighted"), or for
-// "original objects" (Table 5.1 as a whole); nothing for objects the report did not try.
-std::optional<ReportedResult> reported_result(const std::string& object);
 
 // One line of the summary: an arm's trials of one group, or of several.
 struct SummaryRow {
   std::string arm;
+  RowScope scope = RowScope::object;
   std::string label;  // the object, "original objects", "variants" or "all"
   TrialSummary summary;
-  std::optional<ReportedResult> reported;
+  // The campaign reference's result for the same trials, when it has one (reference_results.h).
+  std::optional<ReferenceResult> reference;
 };
 
-// The rows: per arm, each group, then the original objects together, the variants together and all.
+// The rows: per arm, each group, then the original objects together and the variants together
+// (when the campaign has both), and all.
 std::vector<SummaryRow> summary_rows(const CampaignResults& results);
 
 // Confusion counts of one arm and sensing action: counts[group][symbol], symbol over the

@@ -88,10 +88,11 @@ std::string base64(const std::string& bytes) {
   return out;
 }
 
-std::string html_report(const fs::path& directory, const CampaignResults& results,
-                        const std::vector<Figure>& figures) {
-  const auto& spec = results.spec;
-  const auto& objects = spec.state.discrete_value_names.at(0);
+namespace {
+
+// The page's head, title, the campaign's settings and what its world is.
+std::string page_opening(const CampaignResults& results) {
+  const CampaignConfig& config = results.config;
   std::string h;
   h += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   h += "<title>echoplan campaign: the report's chapter 5</title>\n<style>" + std::string(kStyle) +
@@ -99,93 +100,96 @@ std::string html_report(const fs::path& directory, const CampaignResults& result
   h += "</head>\n<body>\n<h1>echoplan campaign: the report's chapter 5</h1>\n";
   h += fmt::format(
       "<p>{} of {} trials finished; campaign <code>{}</code>, seed {}, planner {} with {}.</p>\n",
-      results.entries.size(), results.planned_trials, escape(results.config.source),
-      results.config.seed, escape(results.config.planner.solver),
-      results.config.planner.episodes > 0
-          ? fmt::format("{} episodes per step", results.config.planner.episodes)
-          : fmt::format("{} ms per step", results.config.planner.step_ms));
-  if (results.config.world.type == "simulated")
+      results.entries.size(), results.planned_trials, escape(config.source), config.seed,
+      escape(config.planner.solver),
+      config.planner.episodes > 0 ? fmt::format("{} episodes per step", config.planner.episodes)
+                                  : fmt::format("{} ms per step", config.planner.step_ms));
+  if (config.world.type == "simulated")
     h += "<p class=\"note\">The world here is the simulator: the simulated robot slides or strikes "
-         "the object "
-         "(a weighted variant with its added mass), the simulated recorder records, and the "
-         "classifier trained on "
-         "the synthesised training set reports what it heard. If simulated objects are easier to "
-         "tell apart than "
-         "the lab's real ones, the numbers here are better than the report's for that reason, not "
-         "because of the "
-         "planner.</p>\n";
-  if (results.config.world.type == "model")
+         "the object (a weighted variant with its added mass), the simulated recorder records, and "
+         "the classifier trained on the synthesised training set reports what it heard. If "
+         "simulated objects are easier to tell apart than the lab's real ones, the numbers here "
+         "are better than the report's for that reason, not because of the planner.</p>\n";
+  if (config.world.type == "model")
     h += fmt::format(
         "<p class=\"note\">The world here is a problem file's own observation table "
-        "(<code>{}</code>): "
-        "observations are drawn from it, no sound is synthesised or classified during the trials, "
-        "and a "
-        "variant object (e.g. a weighted can) behaves exactly as the object it plays. These trials "
-        "measure "
-        "the planner; they say nothing about how well sound tells the objects apart.</p>\n",
-        escape(results.config.world.problem));
+        "(<code>{}</code>): observations are drawn from it, no sound is synthesised or classified "
+        "during the trials, and a variant object (e.g. a weighted can) behaves exactly as the "
+        "object it plays. These trials measure the planner; they say nothing about how well sound "
+        "tells the objects apart.</p>\n",
+        escape(config.world.problem));
+  return h;
+}
 
-  // Results next to the report's.
-  h +=
-      "<h2>Results and the report's</h2>\n<table>\n<tr><th class=\"l\">arm</th><th "
-      "class=\"l\">objects</th>"
-      "<th>trials</th><th>accuracy</th><th>mean discounted reward (95% CI)</th><th>mean steps</th>";
-  for (const auto& a : spec.action_names) h += "<th>mean " + escape(a) + "</th>";
-  h += "<th>report: correct</th><th>report: reward</th></tr>\n";
+// The summary rows, with the reference's columns when the campaign names a reference.
+std::string results_table(const CampaignResults& results) {
+  const std::optional<ReferenceResults>& reference = results.config.reference;
+  std::string h = reference ? "<h2>Results and the " + escape(reference->label) + "'s</h2>\n"
+                            : std::string("<h2>Results</h2>\n");
+  h += "<table>\n<tr><th class=\"l\">arm</th><th class=\"l\">objects</th>"
+       "<th>trials</th><th>accuracy</th><th>mean discounted reward (95% CI)</th><th>mean "
+       "steps</th>";
+  for (const auto& a : results.spec.action_names) h += "<th>mean " + escape(a) + "</th>";
+  if (reference)
+    h += fmt::format("<th>{0}: correct</th><th>{0}: reward</th>", escape(reference->label));
+  h += "</tr>\n";
   for (const SummaryRow& row : summary_rows(results)) {
     const TrialSummary& s = row.summary;
-    const bool total =
-        row.label == "all" || row.label == "original objects" || row.label == "variants";
     h += fmt::format(
         "<tr{}><td class=\"l\">{}</td><td class=\"l\">{}</td><td>{}</td><td "
-        "class=\"{}\">{:.0f}%</td>"
-        "<td>{:.2f} ± {:.2f}</td><td>{:.2f}</td>",
-        total ? " class=\"total\"" : "", escape(row.arm), escape(row.label), s.trials,
-        s.accuracy >= 0.999 ? "good" : (s.accuracy < 0.8 ? "bad" : ""), 100.0 * s.accuracy,
-        s.mean_discounted_reward, s.ci95, s.mean_steps);
+        "class=\"{}\">{:.0f}%</td><td>{:.2f} ± {:.2f}</td><td>{:.2f}</td>",
+        row.scope != RowScope::object ? " class=\"total\"" : "", escape(row.arm), escape(row.label),
+        s.trials, s.accuracy >= 0.999 ? "good" : (s.accuracy < 0.8 ? "bad" : ""),
+        100.0 * s.accuracy, s.mean_discounted_reward, s.ci95, s.mean_steps);
     for (double c : s.mean_action_counts) h += fmt::format("<td>{:.2f}</td>", c);
-    if (row.reported)
-      h += fmt::format("<td>{}/{}</td><td>{:.2f}</td></tr>\n", row.reported->correct,
-                       row.reported->trials, row.reported->mean_discounted_reward);
-    else
-      h += "<td></td><td></td></tr>\n";
+    if (row.reference)
+      h += fmt::format("<td>{}/{}</td><td>{:.2f}</td>", row.reference->correct,
+                       row.reference->trials, row.reference->mean_discounted_reward);
+    else if (reference)
+      h += "<td></td><td></td>";
+    h += "</tr>\n";
   }
-  h += "</table>\n";
-  const nlohmann::json summary = summary_json(results);
-  if (summary.contains("paired_differences")) {
-    h += "<p>Paired comparison of the arms (each trial of one arm against the trial of the other "
-         "with the same "
-         "object and the same world noise):</p>\n<ul>\n";
-    for (const auto& d : summary["paired_differences"])
-      h += fmt::format(
-          "<li>{} minus {}: {:+.2f} ± {:.2f} discounted reward (95% CI, {} pairs)</li>\n",
-          escape(d["arm"].get<std::string>()), escape(d["minus"].get<std::string>()),
-          d["mean_discounted_reward_difference"].get<double>(), d["ci95"].get<double>(),
-          d["pairs"].get<int>());
-    h += "</ul>\n";
-  }
-  h += "<p>The report's numbers come from its Tables 5.1 (four objects, 40/40 correct, mean "
-       "discounted reward "
-       "7.77) and 5.3 (weighted can 7/10, weighted mug 9/10). If simulated objects are easier to "
-       "tell apart than "
-       "the lab's, results here are better for that reason, not because of the planner.</p>\n";
+  return h + "</table>\n";
+}
 
-  for (const Figure& f : figures) {
+// Each later arm against the first, trial by trial.
+std::string paired_comparison(const CampaignResults& results) {
+  const nlohmann::json summary = summary_json(results);
+  if (!summary.contains("paired_differences")) return "";
+  std::string h =
+      "<p>Paired comparison of the arms (each trial of one arm against the trial of the other "
+      "with the same object and the same world noise):</p>\n<ul>\n";
+  for (const auto& d : summary["paired_differences"])
+    h +=
+        fmt::format("<li>{} minus {}: {:+.2f} ± {:.2f} discounted reward (95% CI, {} pairs)</li>\n",
+                    escape(d["arm"].get<std::string>()), escape(d["minus"].get<std::string>()),
+                    d["mean_discounted_reward_difference"].get<double>(), d["ci95"].get<double>(),
+                    d["pairs"].get<int>());
+  return h + "</ul>\n";
+}
+
+// Every figure, its PNG inlined.
+std::string figure_sections(const fs::path& directory, const std::vector<Figure>& figures) {
+  std::string h;
+  for (const Figure& f : figures)
     h += fmt::format(
         "<h2>{}</h2>\n<figure><img alt=\"{}\" src=\"data:image/png;base64,{}\">"
         "<figcaption>{} (also <code>figures/{}.svg</code>)</figcaption></figure>\n",
         escape(f.title), escape(f.title),
         base64(read_bytes(directory / "figures" / (f.stem + ".png"))), escape(f.caption),
         escape(f.stem));
-  }
+  return h;
+}
 
-  // Table 5.1: every trial.
-  h += "<h2>Every trial (the report's Table 5.1)</h2>\n<details "
-       "open><summary>trials.csv</summary>\n<table>\n"
-       "<tr><th>trial</th><th class=\"l\">arm</th><th class=\"l\">object</th><th class=\"l\">true "
-       "state</th>"
-       "<th class=\"l\">final belief</th><th>steps</th>";
-  for (const auto& a : spec.action_names) h += "<th>" + escape(a) + "</th>";
+// Table 5.1: every trial.
+std::string trials_table(const CampaignResults& results) {
+  const auto& objects = results.spec.state.discrete_value_names.at(0);
+  std::string h =
+      "<h2>Every trial (the report's Table 5.1)</h2>\n<details "
+      "open><summary>trials.csv</summary>\n<table>\n"
+      "<tr><th>trial</th><th class=\"l\">arm</th><th class=\"l\">object</th><th class=\"l\">true "
+      "state</th><th class=\"l\">final belief</th><th>steps</th>";
+  for (const auto& a : results.spec.action_names) h += "<th>" + escape(a) + "</th>";
   h += "<th>discounted reward</th></tr>\n";
   for (const JournalEntry& e : results.entries) {
     const TrialRecord& r = e.result.record;
@@ -198,37 +202,55 @@ std::string html_report(const fs::path& directory, const CampaignResults& result
     for (int c : r.action_counts) h += fmt::format("<td>{}</td>", c);
     h += fmt::format("<td>{:.4f}</td></tr>\n", r.discounted_reward);
   }
-  h += "</table>\n</details>\n";
+  return h + "</table>\n</details>\n";
+}
 
-  // Table 5.2: every decision.
+// One decision's row: the belief before it (particles or probabilities), the action, what was
+// heard and its probability.
+std::string step_row(const CampaignResults& results, int trial, const StepRecord& s) {
+  const auto& spec = results.spec;
+  std::string h = fmt::format("<tr><td>{}</td><td>{}</td>", trial, s.step);
+  for (double p : s.belief)
+    h += results.belief_particles > 0
+             ? fmt::format("<td>{}</td>", std::llround(p * results.belief_particles))
+             : fmt::format("<td>{:.3f}</td>", p);
+  const std::string heard =
+      s.observation.index >= 0 &&
+              s.observation.index < static_cast<int>(spec.observation.names.size())
+          ? spec.observation.names[s.observation.index]
+          : std::string();
+  return h + fmt::format(
+                 "<td class=\"l\">{}</td><td class=\"l\">{}</td><td>{}</td></tr>\n",
+                 escape(spec.action_names.at(s.action)), escape(heard),
+                 s.heard_probability ? fmt::format("{:.3f}", *s.heard_probability) : std::string());
+}
+
+// Table 5.2: every decision.
+std::string steps_table(const CampaignResults& results) {
   const bool particles = results.belief_particles > 0;
-  h += "<h2>Every decision (the report's Table "
-       "5.2)</h2>\n<details><summary>steps.csv</summary>\n<table>\n"
-       "<tr><th>trial</th><th>step</th>";
-  for (const auto& o : objects)
+  std::string h =
+      "<h2>Every decision (the report's Table "
+      "5.2)</h2>\n<details><summary>steps.csv</summary>\n<table>\n"
+      "<tr><th>trial</th><th>step</th>";
+  for (const auto& o : results.spec.state.discrete_value_names.at(0))
     h += "<th>" + escape(o) + (particles ? " particles" : " p") + "</th>";
   h += "<th class=\"l\">action</th><th class=\"l\">heard</th><th>heard p</th></tr>\n";
   for (const JournalEntry& e : results.entries)
-    for (const StepRecord& s : e.result.steps) {
-      h += fmt::format("<tr><td>{}</td><td>{}</td>", e.id, s.step);
-      for (double p : s.belief)
-        h += particles ? fmt::format("<td>{}</td>", std::llround(p * results.belief_particles))
-                       : fmt::format("<td>{:.3f}</td>", p);
-      const std::string heard =
-          s.observation.index >= 0 &&
-                  s.observation.index < static_cast<int>(spec.observation.names.size())
-              ? spec.observation.names[s.observation.index]
-              : std::string();
-      h += fmt::format(
-          "<td class=\"l\">{}</td><td class=\"l\">{}</td><td>{}</td></tr>\n",
-          escape(spec.action_names.at(s.action)), escape(heard),
-          s.heard_probability ? fmt::format("{:.3f}", *s.heard_probability) : std::string());
-    }
-  h += "</table>\n</details>\n";
+    for (const StepRecord& s : e.result.steps) h += step_row(results, e.id, s);
+  return h + "</table>\n</details>\n";
+}
+
+}  // namespace
+
+std::string html_report(const fs::path& directory, const CampaignResults& results,
+                        const std::vector<Figure>& figures) {
+  std::string h = page_opening(results) + results_table(results) + paired_comparison(results);
+  const std::optional<ReferenceResults>& reference = results.config.reference;
+  if (reference && !reference->note.empty()) h += "<p>" + escape(reference->note) + "</p>\n";
+  h += figure_sections(directory, figures) + trials_table(results) + steps_table(results);
   h += "<p>Files in this folder: trials.csv, steps.csv, arms/&lt;arm&gt;/ (the same per arm, for "
        "<code>echoplan certify</code>), summary.json, summary.txt, figures/ (PNG and SVG), "
-       "journal.jsonl "
-       "(one line per finished trial; everything else is rebuilt from it).</p>\n";
+       "journal.jsonl (one line per finished trial; everything else is rebuilt from it).</p>\n";
   h += "</body>\n</html>\n";
   return h;
 }

@@ -16,6 +16,7 @@ trials:
   - {object: pringles_can, trials: 3}
   - {object: paper_base, trials: 3}
 planner: {solver: abt, episodes: 500, max_steps: 30}
+reference: $src/experiments/chapter5_reference.yaml
 YAML
 "$bin" experiment --config "$work/campaign.yaml" --out "$work/run" >/dev/null 2>&1 || fail "experiment exited $?"
 

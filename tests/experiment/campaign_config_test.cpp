@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "common/error.h"
 
 namespace echoplan::experiment {
@@ -110,6 +113,60 @@ TEST(CampaignConfig, ClassifierWithModelIsAnError) {
   EXPECT_EQ(error_of(kMinimal + "training_set:\n  model: m.json\n  classifier: seed-template\n"),
             "10: classifier chooses how this campaign trains; with model: the model file has its "
             "own");
+}
+
+TEST(CampaignConfig, ShippedDefaultNamesTheReportsNumbers) {
+  const CampaignConfig c =
+      load_campaign_config(std::string(ECHOPLAN_SOURCE_DIR) + "/experiments/chapter5.yaml");
+  ASSERT_TRUE(c.reference);
+  EXPECT_EQ(c.reference->source,
+            std::string(ECHOPLAN_SOURCE_DIR) + "/experiments/chapter5_reference.yaml");
+  EXPECT_EQ(c.reference->label, "report");
+  // A reference changes the report's comparison, not the trials: not part of the identity.
+  CampaignConfig without = c;
+  without.reference.reset();
+  EXPECT_EQ(without.identity(), c.identity());
+  const CampaignConfig back = campaign_config_from_json(to_json(c), "campaign.json");
+  ASSERT_TRUE(back.reference);
+  EXPECT_EQ(to_json(*back.reference), to_json(*c.reference));
+}
+
+TEST(CampaignConfig, WithoutReferenceHasNone) {
+  const CampaignConfig c = parse_campaign_config(kMinimal, "/dir/c.yaml");
+  EXPECT_FALSE(c.reference);
+  EXPECT_FALSE(to_json(c).contains("reference"));
+  EXPECT_FALSE(campaign_config_from_json(to_json(c), "campaign.json").reference);
+}
+
+TEST(CampaignConfig, ReferenceIsRelativeToTheFileAndChecked) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "echoplan_campaign_config_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string campaign = (dir / "c.yaml").string();
+  auto write = [&](const std::string& text) { std::ofstream(dir / "ref.yaml") << text; };
+
+  write(
+      "label: lab\nobjects:\n  mug: {trials: 3, correct: 2, mean_discounted_reward: 1, "
+      "mean_steps: 2}\n");
+  const CampaignConfig c = parse_campaign_config(kMinimal + "reference: ref.yaml\n", campaign);
+  ASSERT_TRUE(c.reference);
+  EXPECT_EQ(c.reference->objects.at("mug").correct, 2);
+
+  // A malformed reference file: the error names that file and its line.
+  write("label: lab\nobjects:\n  mug: {trials: 3, correct: 2, mean_steps: 2, misc: 1}\n");
+  try {
+    parse_campaign_config(kMinimal + "reference: ref.yaml\n", campaign);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), (dir / "ref.yaml").string());
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_NE(e.problem().find("unknown key 'misc'"), std::string::npos) << e.problem();
+  }
+  // A missing one: the campaign file's line.
+  EXPECT_EQ(error_of(kMinimal + "reference: nowhere.yaml\n"),
+            "8: reference file '/dir/nowhere.yaml' does not exist");
+  fs::remove_all(dir);
 }
 
 }  // namespace

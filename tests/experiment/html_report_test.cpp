@@ -1,0 +1,126 @@
+// index.html from a small hand-written campaign (campaign_results_fixture.h): names are escaped,
+// every figure is inlined and named, the reference's columns appear only when the campaign has a
+// reference, and the trial and step tables hold the fixture's values.
+#include "experiment/html_report.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "campaign_results_fixture.h"
+#include "common/error.h"
+
+namespace echoplan::experiment {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::small_campaign;
+using testing::small_reference;
+
+bool has(const std::string& page, const std::string& text) {
+  return page.find(text) != std::string::npos;
+}
+
+int count(const std::string& page, const std::string& text) {
+  int n = 0;
+  for (std::size_t at = page.find(text); at != std::string::npos; at = page.find(text, at + 1)) ++n;
+  return n;
+}
+
+class HtmlReport : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / "echoplan_html_report_test";
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "figures");
+    std::ofstream(dir_ / "figures" / "belief_one_a.png", std::ios::binary) << "foo";
+    std::ofstream(dir_ / "figures" / "confusion_one.png", std::ios::binary) << "fo";
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path dir_;
+  const std::vector<Figure> figures_ = {{"belief_one_a", "Belief <one>", "c & d"},
+                                        {"confusion_one", "Heard", "counts"}};
+};
+
+TEST(Base64, Rfc4648Vectors) {
+  EXPECT_EQ(base64(""), "");
+  EXPECT_EQ(base64("f"), "Zg==");
+  EXPECT_EQ(base64("fo"), "Zm8=");
+  EXPECT_EQ(base64("foo"), "Zm9v");
+  EXPECT_EQ(base64("foob"), "Zm9vYg==");
+  EXPECT_EQ(base64("fooba"), "Zm9vYmE=");
+  EXPECT_EQ(base64("foobar"), "Zm9vYmFy");
+  EXPECT_EQ(base64(std::string("\xff\xfe", 2)), "//4=");
+}
+
+TEST_F(HtmlReport, InlinesAndNamesEveryFigure) {
+  const std::string page = html_report(dir_, small_campaign(), figures_);
+  EXPECT_TRUE(has(page, "<h2>Belief &lt;one&gt;</h2>")) << page;
+  EXPECT_TRUE(has(page, "src=\"data:image/png;base64,Zm9v\""));
+  EXPECT_TRUE(has(page, "<figcaption>c &amp; d (also <code>figures/belief_one_a.svg</code>)"));
+  EXPECT_TRUE(has(page, "src=\"data:image/png;base64,Zm8=\""));
+  EXPECT_TRUE(has(page, "<code>figures/confusion_one.svg</code>"));
+  EXPECT_EQ(count(page, "<figure>"), 2);
+  fs::remove(dir_ / "figures" / "confusion_one.png");
+  EXPECT_THROW(html_report(dir_, small_campaign(), figures_), InputError);
+}
+
+TEST_F(HtmlReport, EscapesNames) {
+  CampaignResults results = small_campaign();
+  results.config.source = "small&<x>.yaml";
+  results.spec.observation.names[0] = "\"heard\" a";
+  results.spec.action_names[0] = "listen<1>";
+  const std::string page = html_report(dir_, results, {});
+  EXPECT_TRUE(has(page, "<code>small&amp;&lt;x&gt;.yaml</code>"));
+  EXPECT_TRUE(has(page, "<td class=\"l\">&quot;heard&quot; a</td>"));
+  EXPECT_TRUE(has(page, "<th>mean listen&lt;1&gt;</th>"));
+  EXPECT_FALSE(has(page, "<x>"));
+  EXPECT_FALSE(has(page, "listen<1>"));
+}
+
+TEST_F(HtmlReport, ReferenceColumnsOnlyWithAReference) {
+  CampaignResults results = small_campaign();
+  std::string page = html_report(dir_, results, {});
+  EXPECT_TRUE(has(page, "<h2>Results</h2>"));
+  EXPECT_FALSE(has(page, "correct</th>"));
+  EXPECT_FALSE(has(page, "notebook"));
+  // Totals: original objects, variants and all, per arm.
+  EXPECT_EQ(count(page, "<tr class=\"total\">"), 6);
+
+  results.config.reference = small_reference("R&D");
+  page = html_report(dir_, results, {});
+  EXPECT_TRUE(has(page, "<h2>Results and the R&amp;D's</h2>"));
+  EXPECT_TRUE(has(page, "<th>R&amp;D: correct</th><th>R&amp;D: reward</th></tr>"));
+  EXPECT_TRUE(has(page, "<td>9/10</td><td>7.50</td></tr>"));   // a, and the original objects
+  EXPECT_TRUE(has(page, "<td>25/30</td><td>4.25</td></tr>"));  // all
+  EXPECT_EQ(count(page, "<td>9/10</td>"), 4);                  // 2 rows x 2 arms
+  EXPECT_EQ(count(page, "<td></td><td></td></tr>"), 4);        // b_heavy and variants, per arm
+  EXPECT_TRUE(has(page, "<p>Numbers from the lab's notebook &lt;p. 3&gt; &amp; friends.</p>"));
+}
+
+TEST_F(HtmlReport, TrialAndStepTables) {
+  CampaignResults results = small_campaign();
+  std::string page = html_report(dir_, results, {});
+  EXPECT_TRUE(has(page, "6 of 6 trials finished"));
+  // Trial 1 ended believing b while a was in the world: marked bad.
+  EXPECT_TRUE(has(page,
+                  "<tr><td>1</td><td class=\"l\">one</td><td class=\"l\">a</td><td "
+                  "class=\"l\">a</td><td class=\"l bad\">b</td><td>2</td><td>1</td><td>0</td>"
+                  "<td>1</td><td>-2.0000</td></tr>"));
+  // Trial 3's second listen: belief 0.75 / 0.25 before it, heard_a with probability 0.75.
+  EXPECT_TRUE(has(page,
+                  "<tr><td>3</td><td>1</td><td>0.750</td><td>0.250</td><td class=\"l\">listen</td>"
+                  "<td class=\"l\">heard_a</td><td>0.750</td></tr>"));
+  // Its pick: no probability for "none".
+  EXPECT_TRUE(has(page,
+                  "<tr><td>3</td><td>2</td><td>1.000</td><td>0.000</td><td class=\"l\">pick_a</td>"
+                  "<td class=\"l\">none</td><td></td></tr>"));
+  results.belief_particles = 100;
+  page = html_report(dir_, results, {});
+  EXPECT_TRUE(has(page, "<th>a particles</th>"));
+  EXPECT_TRUE(has(page, "<tr><td>3</td><td>1</td><td>75</td><td>25</td>"));
+}
+
+}  // namespace
+}  // namespace echoplan::experiment
