@@ -134,12 +134,12 @@ void load_simulator(Campaign& c, InputFiles& files) {
 }
 
 // The folder holds this campaign or none: claims it by writing campaign.json.
-void claim_folder(const Campaign& c, InputFiles& files) {
+void claim_folder(Campaign& c, InputFiles& files) {
   check_writable(c.directory);
   const fs::path described = c.directory / kDescription;
-  const nlohmann::json mine = {
-      {"config", to_json(c.config)},
-      {"identity", c.config.identity([&](const std::string& path) { return files.text(path); })}};
+  c.results.identity =
+      c.config.identity([&](const std::string& path) { return files.text(path); });
+  const nlohmann::json mine = {{"config", to_json(c.config)}, {"identity", c.results.identity}};
   if (fs::exists(described)) {
     const nlohmann::json theirs = nlohmann::json::parse(
         read_text_file(described.string(), "campaign description"), nullptr, false);

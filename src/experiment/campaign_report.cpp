@@ -159,7 +159,7 @@ void write_tables(const fs::path& directory, const CampaignResults& results) {
 
 nlohmann::json summary_json(const CampaignResults& results) {
   nlohmann::json j;
-  j["campaign"] = results.config.identity();
+  j["campaign"] = results.identity;
   j["trials_planned"] = results.planned_trials;
   j["trials_finished"] = results.entries.size();
   j["complete"] = static_cast<int>(results.entries.size()) == results.planned_trials;

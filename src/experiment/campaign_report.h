@@ -27,6 +27,7 @@ struct CampaignResults {
   int belief_particles = 0;  // > 0: steps.csv shows particle counts (Table 5.2); 0: probabilities
   std::vector<JournalEntry> entries;  // sorted by id, at most one per id
   int planned_trials = 0;             // what the campaign (all shards) asks for
+  nlohmann::json identity;            // config.identity(), taken once from the files read
 };
 
 // Which trials a summary row covers.
