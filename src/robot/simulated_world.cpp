@@ -82,17 +82,7 @@ ActionReport SimulatedWorld::execute(const std::string& action) {
 ActionReport SimulatedWorld::execute_sensing(const std::string& action) {
   sim::ActionOutcome outcome = rig_->robot->execute(action, physics_rng_);
   if (listening_) hear(rig_->recorder->record(outcome, sound_rng_));
-  ActionReport report{action, ActionStatus::done, outcome.reason, outcome.duration_s};
-  switch (outcome.status) {
-    case sim::ActionStatus::done:
-      break;
-    case sim::ActionStatus::collision:
-      report.status = ActionStatus::collision;
-      break;
-    case sim::ActionStatus::failed:  // pushed out of reach, fallen over
-      report.status = ActionStatus::failed;
-      break;
-  }
+  ActionReport report{action, outcome.status, outcome.reason, outcome.duration_s};
   last_outcome_ = std::move(outcome);
   return report;
 }

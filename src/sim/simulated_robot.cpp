@@ -62,18 +62,6 @@ void physics_step(const mjModel* m, mjData* d, const double* targets, Between&& 
 
 }  // namespace
 
-const char* to_string(ActionStatus status) {
-  switch (status) {
-    case ActionStatus::done:
-      return "done";
-    case ActionStatus::collision:
-      return "collision";
-    case ActionStatus::failed:
-      return "failed";
-  }
-  return "?";
-}
-
 SimulatedRobot::SimulatedRobot(const Catalogue& catalogue, const std::string& object,
                                const SimConfig& config)
     : object_(catalogue.object(object)),

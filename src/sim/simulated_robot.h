@@ -26,6 +26,7 @@
 #include <string>
 
 #include "common/rng.h"
+#include "sim/action_status.h"
 #include "sim/catalogue.h"
 #include "sim/contact_trace.h"
 #include "sim/sim_config.h"
@@ -37,15 +38,6 @@ class Scene;
 // The action names the simulator knows.
 inline constexpr const char* kSlide = "slide";
 inline constexpr const char* kStrike = "strike";
-
-// How an action ended (the robot module's ActionStatus mirrors these).
-enum class ActionStatus {
-  done,       // ran to its end
-  collision,  // the arm touched the table; the action stopped there
-  failed,     // not carried out: the object is out of reach or has fallen over (see `reason`)
-};
-
-const char* to_string(ActionStatus status);
 
 struct ActionOutcome {
   std::string action;
