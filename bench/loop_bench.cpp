@@ -52,7 +52,7 @@ struct Fixture {
     sim::SimulatedRobot robot(catalogue, "coffee_mug", sim::SimConfig{});
     sim::SimulatedRecorder recorder(robot.object(), robot.table(), sim::SimConfig{});
     Rng rng(12345);
-    clip = sim::simulate_recording(robot, recorder, "strike", rng).clip;
+    clip = sim::simulate_recording(robot, recorder, sim::SoundAction::strike, rng).clip;
   }
   int strike() const { return 1; }
   pomdp::Observation symbol(const robot::HeardObservation& heard) const {

@@ -16,6 +16,7 @@
 #include "common/stable_hash.h"
 #include "sim/simulated_recorder.h"
 #include "sim/simulated_robot.h"
+#include "sim/sound_action.h"
 
 namespace echoplan::sim {
 
@@ -33,9 +34,8 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
   const std::vector<std::string> objects =
       options.objects.empty() ? catalogue.object_names() : options.objects;
   for (const auto& o : objects) catalogue.object(o);  // throws for an unknown name, before any file
-  for (const auto& a : options.actions)
-    if (a != kSlide && a != kStrike)
-      throw InputError("", 0, "unknown action '" + a + "' (known: slide, strike)");
+  std::vector<SoundAction> actions;                   // throws for an unknown name, before any file
+  for (const auto& a : options.actions) actions.push_back(parse_sound_action(a));
   if (options.per_pair < 1) throw InputError("", 0, "--per-pair must be at least 1");
 
   const fs::path root(options.output_dir);
@@ -56,13 +56,14 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
   // has its own seed, so which worker renders it does not change its bytes; rows are written in
   // manifest order as soon as all earlier clips are done.
   struct Job {
-    std::string object, action;
+    std::string object;
+    SoundAction action;
     int index;
   };
   std::vector<Job> jobs;
   for (const auto& object : objects)
-    for (const auto& action : options.actions) {
-      const fs::path folder = root / object / action;
+    for (const SoundAction action : actions) {
+      const fs::path folder = root / object / to_string(action);
       fs::create_directories(folder, ec);
       if (ec) throw InputError(folder.string(), 0, "cannot create the folder: " + ec.message());
       for (int i = 0; i < options.per_pair; ++i) jobs.push_back({object, action, i});
@@ -100,16 +101,16 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
           recorder = std::make_unique<SimulatedRecorder>(robot->object(), robot->table(), config);
           current = job.object;
         }
-        const std::uint64_t seed = clip_seed(options.seed, job.object, job.action, job.index);
+        const std::string action = to_string(job.action);
+        const std::uint64_t seed = clip_seed(options.seed, job.object, action, job.index);
         Rng rng(seed);
         const Recording r = simulate_recording(*robot, *recorder, job.action, rng);
-        const std::string relative =
-            fmt::format("{}/{}/{:03d}.wav", job.object, job.action, job.index);
+        const std::string relative = fmt::format("{}/{}/{:03d}.wav", job.object, action, job.index);
         const fs::path final_path = root / relative;
         const fs::path partial = final_path.string() + ".part";
         audio::write_audio(partial.string(), r.clip, audio::WriteOptions{});
         move_into_place(partial, final_path);
-        std::string row = fmt::format("{},{},{},{},{},{:.4f},{}", relative, job.object, job.action,
+        std::string row = fmt::format("{},{},{},{},{},{:.4f},{}", relative, job.object, action,
                                       seed, r.outcome.collision() ? 1 : 0, r.outcome.duration_s,
                                       r.outcome.trace.impacts.size());
         for (const auto& [name, value] : r.outcome.variation.named())

@@ -610,7 +610,7 @@ audio::AudioClip SimulatedRecorder::record(const ActionOutcome& outcome, Rng& rn
 }
 
 Recording simulate_recording(SimulatedRobot& robot, const SimulatedRecorder& recorder,
-                             const std::string& action, Rng& rng) {
+                             SoundAction action, Rng& rng) {
   Recording r;
   robot.reset_trial(rng);
   r.outcome = robot.execute(action, rng);

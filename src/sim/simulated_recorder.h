@@ -73,7 +73,7 @@ struct Recording {
   audio::AudioClip clip;
 };
 Recording simulate_recording(SimulatedRobot& robot, const SimulatedRecorder& recorder,
-                             const std::string& action, Rng& rng);
+                             SoundAction action, Rng& rng);
 
 // The envelope of a Hertz pulse's spectrum used for synthesis: 1 / sqrt(1 + (omega tau / pi)^4).
 // It follows the half-sine spectrum's fall-off (1 at low frequency, (pi / omega tau)^2 above)

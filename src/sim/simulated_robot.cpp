@@ -102,17 +102,13 @@ std::array<double, 3> SimulatedRobot::object_position() const {
   return {d->qpos[a], d->qpos[a + 1], d->qpos[a + 2]};
 }
 
-ActionOutcome SimulatedRobot::execute(const std::string& action, Rng& rng) {
-  if (action != kSlide && action != kStrike)
-    throw InputError("", 0, "unknown action '" + action + "' (known: slide, strike)");
+ActionOutcome SimulatedRobot::execute(SoundAction action, Rng& rng) {
   if (!trial_begun_) reset_trial(rng);
   return execute(action, sample_action(config_.variability, rng));
 }
 
-ActionOutcome SimulatedRobot::execute(const std::string& action, const ActionVariation& p) {
-  const bool strike = action == kStrike;
-  if (!strike && action != kSlide)
-    throw InputError("", 0, "unknown action '" + action + "' (known: slide, strike)");
+ActionOutcome SimulatedRobot::execute(SoundAction action, const ActionVariation& p) {
+  const bool strike = action == SoundAction::strike;
   if (!trial_begun_) reset_trial(ObjectPlacement{});
   Scene& s = *scene_;
   const mjModel* m = s.model(strike ? PadContact::clear_of_object : PadContact::pushes_object);

@@ -26,7 +26,7 @@ audio::AudioClip recording(const std::string& object, const std::string& action,
   sim::SimulatedRobot robot(testing::shipped_catalogue(), object, sim::SimConfig{});
   sim::SimulatedRecorder recorder(robot.object(), robot.table(), sim::SimConfig{});
   Rng rng(seed);
-  return sim::simulate_recording(robot, recorder, action, rng).clip;
+  return sim::simulate_recording(robot, recorder, sim::parse_sound_action(action), rng).clip;
 }
 
 TEST(ClassifierService, SaysWhatTheModelCanReport) {

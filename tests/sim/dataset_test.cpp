@@ -69,7 +69,7 @@ TEST(Dataset, WritesEveryPairAndAManifestThatReproducesEachFile) {
   SimulatedRobot robot(shipped_catalogue(), object, SimConfig{});
   SimulatedRecorder recorder(robot.object(), robot.table(), SimConfig{});
   Rng rng(std::stoull(seed));
-  const auto again = simulate_recording(robot, recorder, action, rng).clip;
+  const auto again = simulate_recording(robot, recorder, parse_sound_action(action), rng).clip;
   // Written the same way, the re-synthesized clip is the same file byte for byte.
   const fs::path again_path = dir / "again.wav";
   audio::write_audio(again_path.string(), again);

@@ -81,7 +81,7 @@ TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
   const SimConfig config = quiet();
   SimulatedRobot robot(c, "bell", config);
   SimulatedRecorder recorder(robot.object(), robot.table(), config);
-  const ActionOutcome out = robot.execute("strike", nominal());
+  const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
   ASSERT_FALSE(out.trace.impacts.empty());
   Rng rng(3);
   const audio::AudioClip clip = recorder.record(out, rng);
@@ -108,7 +108,7 @@ TEST(SimulatedRecorder, DerivedModesOfTheMugAppearInItsStrike) {
   const Catalogue catalogue = bare_table_catalogue();
   SimulatedRobot robot(catalogue, "coffee_mug", config);
   SimulatedRecorder recorder(robot.object(), robot.table(), config);
-  const ActionOutcome out = robot.execute("strike", nominal());
+  const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
   Rng rng(3);
   const audio::AudioClip clip = recorder.record(out, rng);
   const auto start = static_cast<std::size_t>(out.trace.impacts.front().time_s * clip.sample_rate);
@@ -154,7 +154,7 @@ TEST(SimulatedRecorder, StrikeRingsAtTheContactsHalfPeriod) {
   for (const char* name : {"coffee_mug", "coffee_mug_weighted"}) {
     SimulatedRobot robot(shipped_catalogue(), name, config);
     SimulatedRecorder recorder(robot.object(), robot.table(), config);
-    const ActionOutcome out = robot.execute("strike", nominal());
+    const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
     ASSERT_EQ(out.trace.impacts.size(), 1u) << name;
     Rng rng(5);
     const audio::AudioClip clip = recorder.record(out, rng);
@@ -178,7 +178,7 @@ TEST(SimulatedRecorder, StrikeRingDiesLikeTheLabsThuds) {
   for (const char* name : {"plastic_cup", "coffee_mug"}) {
     SimulatedRobot robot(shipped_catalogue(), name, config);
     SimulatedRecorder recorder(robot.object(), robot.table(), config);
-    const ActionOutcome out = robot.execute("strike", nominal());
+    const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
     ASSERT_EQ(out.trace.impacts.size(), 1u) << name;
     seconds_to_20db[name] = std::log(10.0) / recorder.contact_ring_decay(out.trace.impacts.front());
   }
@@ -212,7 +212,7 @@ TEST(SimulatedRecorder, HeavierObjectSoundsDuller) {
   for (int i = 0; i < 2; ++i) {
     SimulatedRobot robot(shipped_catalogue(), names[i], config);
     SimulatedRecorder recorder(robot.object(), robot.table(), config);
-    const ActionOutcome out = robot.execute("strike", nominal());
+    const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
     Rng rng(11);
     share[i] =
         high_frequency_share(recorder.record(out, rng), out.trace.impacts.front().time_s, kCut);
@@ -231,7 +231,7 @@ TEST(SimulatedRecorder, HeavierObjectResistsTheRoughnessAndSlidesDarker) {
   for (int i = 0; i < 2; ++i) {
     SimulatedRobot robot(shipped_catalogue(), names[i], config);
     SimulatedRecorder recorder(robot.object(), robot.table(), config);
-    const ActionOutcome out = robot.execute("slide", nominal());
+    const ActionOutcome out = robot.execute(SoundAction::slide, nominal());
     ASSERT_EQ(out.status, ActionStatus::done) << names[i];
     Rng rng(13);
     const audio::AudioClip clip = recorder.record(out, rng);
@@ -270,7 +270,7 @@ TEST(SimulatedRecorder, ThinCupHissesWhereItsWallsModesOverlap) {
   // Same slide, same random numbers.
   const SimConfig config = quiet();
   SimulatedRobot robot(shipped_catalogue(), "plastic_cup", config);
-  const ActionOutcome out = robot.execute("slide", nominal());
+  const ActionOutcome out = robot.execute(SoundAction::slide, nominal());
   ASSERT_EQ(out.status, ActionStatus::done);
   SimulatedRecorder dense(robot.object(), robot.table(), config);
   ASSERT_FALSE(dense.dense_modes().empty());
@@ -316,7 +316,7 @@ TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
   config.microphone.capsule_spacing = 0.2;
   SimulatedRobot robot(shipped_catalogue(), "coffee_mug", config);
   SimulatedRecorder recorder(robot.object(), robot.table(), config);
-  const ActionOutcome out = robot.execute("strike", nominal());
+  const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
   Rng rng(1);
   const audio::AudioClip clip = recorder.record(out, rng);
   ASSERT_EQ(clip.channels, 2);
@@ -444,7 +444,7 @@ TEST(SimulatedRecorder, SameSeedGivesIdenticalFiles) {
   std::vector<std::string> paths;
   for (std::uint64_t seed : {7, 7, 8}) {
     Rng rng(seed);
-    const Recording r = simulate_recording(robot, recorder, "slide", rng);
+    const Recording r = simulate_recording(robot, recorder, SoundAction::slide, rng);
     paths.push_back((dir / ("clip" + std::to_string(paths.size()) + ".wav")).string());
     audio::write_audio(paths.back(), r.clip);
   }
@@ -463,7 +463,8 @@ TEST(SimulatedRecorder, LoudnessIsNotAnObjectCue) {
     SimulatedRobot robot(shipped_catalogue(), name, config);
     SimulatedRecorder recorder(robot.object(), robot.table(), config);
     Rng rng(5);
-    const audio::AudioClip clip = simulate_recording(robot, recorder, "strike", rng).clip;
+    const audio::AudioClip clip =
+        simulate_recording(robot, recorder, SoundAction::strike, rng).clip;
     float peak = 0;
     for (float x : clip.samples) peak = std::max(peak, std::abs(x));
     EXPECT_NEAR(20 * std::log10(peak), config.recording.limiter_ceiling_dbfs, 0.3) << name;
