@@ -18,7 +18,7 @@
 #include "pomdp/particle_belief.h"
 #include "pomdp/problem.h"
 #include "robot/classifier_service.h"
-#include "sim/simulated_recorder.h"
+#include "sim/recording.h"
 #include "sim/simulated_robot.h"
 
 namespace {
@@ -50,7 +50,7 @@ struct Fixture {
     problem = std::make_shared<pomdp::ObjectIdentificationModel>(
         experiment::calibrated_problem(data, *model));
     sim::SimulatedRobot robot(catalogue, "coffee_mug", sim::SimConfig{});
-    sim::SimulatedRecorder recorder(robot.object(), robot.table(), sim::SimConfig{});
+    sim::SoundRenderer recorder(robot.object(), robot.table(), sim::SimConfig{});
     Rng rng(12345);
     clip = sim::simulate_recording(robot, recorder, sim::SoundAction::strike, rng).clip;
   }

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "sim/simulated_recorder.h"
+#include "sim/recording.h"
 
 namespace {
 
@@ -27,7 +27,7 @@ void BM_Recording(benchmark::State& state) {
   const echoplan::sim::SoundAction action = kActions[state.range(1)];
   const SimConfig config;
   echoplan::sim::SimulatedRobot robot(catalogue(), object, config);
-  echoplan::sim::SimulatedRecorder recorder(robot.object(), robot.table(), config);
+  echoplan::sim::SoundRenderer recorder(robot.object(), robot.table(), config);
   std::uint64_t seed = 0;
   double audio_seconds = 0;
   for (auto _ : state) {
@@ -60,10 +60,12 @@ BENCHMARK(BM_PhysicsOnly)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 void BM_SynthesisOnly(benchmark::State& state) {
   const SimConfig config;
   echoplan::sim::SimulatedRobot robot(catalogue(), kObjects[0], config);
-  echoplan::sim::SimulatedRecorder recorder(robot.object(), robot.table(), config);
+  echoplan::sim::SoundRenderer recorder(robot.object(), robot.table(), config);
   echoplan::Rng rng(1);
   const auto outcome = robot.execute(kActions[state.range(0)], rng);
-  for (auto _ : state) benchmark::DoNotOptimize(recorder.record(outcome, rng).samples.data());
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        recorder.render(outcome.trace, outcome.duration_s, rng).samples.data());
   state.SetLabel(std::string("coffee_mug/") + to_string(kActions[state.range(0)]));
 }
 BENCHMARK(BM_SynthesisOnly)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);

@@ -56,8 +56,8 @@ void SimulatedWorld::begin_trial(const TrialContext& context) {
     // Compiling a MuJoCo scene takes milliseconds; trials of the same object reuse it.
     ObjectRig rig;
     rig.robot = std::make_unique<sim::SimulatedRobot>(catalogue_, context.object, config_);
-    rig.recorder =
-        std::make_unique<sim::SimulatedRecorder>(rig.robot->object(), rig.robot->table(), config_);
+    rig.renderer =
+        std::make_unique<sim::SoundRenderer>(rig.robot->object(), rig.robot->table(), config_);
     it = rigs_.emplace(context.object, std::move(rig)).first;
   }
   rig_ = &it->second;
@@ -82,7 +82,7 @@ ActionReport SimulatedWorld::execute(const std::string& action) {
 
 ActionReport SimulatedWorld::execute_sensing(const std::string& name, sim::SoundAction action) {
   sim::ActionOutcome outcome = rig_->robot->execute(action, physics_rng_);
-  if (listening_) hear(rig_->recorder->record(outcome, sound_rng_));
+  if (listening_) hear(rig_->renderer->render(outcome.trace, outcome.duration_s, sound_rng_));
   ActionReport report{name, outcome.status, outcome.reason, outcome.duration_s};
   last_outcome_ = std::move(outcome);
   return report;
@@ -109,9 +109,9 @@ audio::AudioClip SimulatedWorld::stop_listening() {
   listening_ = false;
   // Nothing happened while listening: the microphone hears the room alone, for the usual length.
   if (heard_.samples.empty()) {
-    sim::ActionOutcome quiet;
-    quiet.trace.object_position = rig_->robot->object_position();
-    return rig_->recorder->record(quiet, sound_rng_);
+    sim::ContactTrace quiet;
+    quiet.object_position = rig_->robot->object_position();
+    return rig_->renderer->render(quiet, 0.0, sound_rng_);
   }
   return std::move(heard_);
 }

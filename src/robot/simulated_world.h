@@ -32,9 +32,9 @@
 #include "robot/robot.h"
 #include "sim/catalogue.h"
 #include "sim/sim_config.h"
-#include "sim/simulated_recorder.h"
 #include "sim/simulated_robot.h"
 #include "sim/sound_action.h"
+#include "sim/sound_renderer.h"
 
 namespace echoplan::robot {
 
@@ -78,10 +78,10 @@ class SimulatedWorld {
   const sim::SimConfig& config() const { return config_; }
 
  private:
-  // The simulator's robot and microphone for one object.
+  // The simulator's robot and its sound for one object.
   struct ObjectRig {
     std::unique_ptr<sim::SimulatedRobot> robot;
-    std::unique_ptr<sim::SimulatedRecorder> recorder;
+    std::unique_ptr<sim::SoundRenderer> renderer;
   };
   bool is_sorting(const std::string& action) const;
   ActionReport execute_sensing(const std::string& name, sim::SoundAction action);

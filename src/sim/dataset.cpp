@@ -14,7 +14,7 @@
 #include "common/file_io.h"
 #include "common/rng.h"
 #include "common/stable_hash.h"
-#include "sim/simulated_recorder.h"
+#include "sim/recording.h"
 #include "sim/simulated_robot.h"
 #include "sim/sound_action.h"
 
@@ -52,7 +52,7 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
   manifest << '\n' << std::flush;
 
   // The clips in manifest order. Workers take the next clip in turn; each keeps one robot and
-  // recorder for the object it is on (compiling the MuJoCo scene is the expensive part). Every clip
+  // renderer for the object it is on (compiling the MuJoCo scene is the expensive part). Every clip
   // has its own seed, so which worker renders it does not change its bytes; rows are written in
   // manifest order as soon as all earlier clips are done.
   struct Job {
@@ -88,7 +88,7 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
   auto worker = [&] {
     std::string current;
     std::unique_ptr<SimulatedRobot> robot;
-    std::unique_ptr<SimulatedRecorder> recorder;
+    std::unique_ptr<SoundRenderer> renderer;
     try {
       for (std::size_t k; !stop.load() && (k = next_job++) < jobs.size();) {
         {
@@ -98,13 +98,13 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
         const Job& job = jobs[k];
         if (job.object != current) {
           robot = std::make_unique<SimulatedRobot>(catalogue, job.object, config);
-          recorder = std::make_unique<SimulatedRecorder>(robot->object(), robot->table(), config);
+          renderer = std::make_unique<SoundRenderer>(robot->object(), robot->table(), config);
           current = job.object;
         }
         const std::string action = to_string(job.action);
         const std::uint64_t seed = clip_seed(options.seed, job.object, action, job.index);
         Rng rng(seed);
-        const Recording r = simulate_recording(*robot, *recorder, job.action, rng);
+        const Recording r = simulate_recording(*robot, *renderer, job.action, rng);
         const std::string relative = fmt::format("{}/{}/{:03d}.wav", job.object, action, job.index);
         const fs::path final_path = root / relative;
         const fs::path partial = final_path.string() + ".part";

@@ -8,8 +8,8 @@
 
 #include "common/error.h"
 #include "shipped_catalogue.h"
+#include "sim/recording.h"
 #include "sim/scene.h"
-#include "sim/simulated_recorder.h"
 
 namespace echoplan::sim {
 namespace {
@@ -110,7 +110,7 @@ TEST(SimulatedRobot, HeavierObjectHasLongerContactTime) {
   SimConfig config;
   SimulatedRobot mug(shipped_catalogue(), "coffee_mug", config),
       heavy(shipped_catalogue(), "coffee_mug_weighted", config);
-  SimulatedRecorder mug_recorder(mug.object(), mug.table(), config),
+  SoundRenderer mug_recorder(mug.object(), mug.table(), config),
       heavy_recorder(heavy.object(), heavy.table(), config);
   const ActionOutcome a = mug.execute(SoundAction::strike, nominal_trial());
   const ActionOutcome b = heavy.execute(SoundAction::strike, nominal_trial());

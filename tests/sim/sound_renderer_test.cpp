@@ -1,5 +1,3 @@
-#include "sim/simulated_recorder.h"
-
 #include <gtest/gtest.h>
 #include <kiss_fftr.h>
 
@@ -14,6 +12,7 @@
 #include "audio/features.h"
 #include "audio/io.h"
 #include "shipped_catalogue.h"
+#include "sim/recording.h"
 
 namespace echoplan::sim {
 namespace {
@@ -71,7 +70,7 @@ ActionVariation nominal() {
   return p;
 }
 
-TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
+TEST(SoundRenderer, StrikeSpectrumPeaksAtTheConfiguredModes) {
   // An object with listed modes; the peak nearest each must sit on it, far above the spectrum
   // floor.
   Catalogue c = bare_table_catalogue();
@@ -80,11 +79,11 @@ TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
   c.objects["bell"] = bell;
   const SimConfig config = quiet();
   SimulatedRobot robot(c, "bell", config);
-  SimulatedRecorder recorder(robot.object(), robot.table(), config);
+  SoundRenderer recorder(robot.object(), robot.table(), config);
   const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
   ASSERT_FALSE(out.trace.impacts.empty());
   Rng rng(3);
-  const audio::AudioClip clip = recorder.record(out, rng);
+  const audio::AudioClip clip = recorder.render(out.trace, out.duration_s, rng);
   const auto start = static_cast<std::size_t>(out.trace.impacts.front().time_s * clip.sample_rate);
   double bin = 0;
   const auto mag = spectrum(clip, 0, start, clip.frames() - start, &bin);
@@ -103,14 +102,14 @@ TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
   }
 }
 
-TEST(SimulatedRecorder, DerivedModesOfTheMugAppearInItsStrike) {
+TEST(SoundRenderer, DerivedModesOfTheMugAppearInItsStrike) {
   const SimConfig config = quiet();
   const Catalogue catalogue = bare_table_catalogue();
   SimulatedRobot robot(catalogue, "coffee_mug", config);
-  SimulatedRecorder recorder(robot.object(), robot.table(), config);
+  SoundRenderer recorder(robot.object(), robot.table(), config);
   const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
   Rng rng(3);
-  const audio::AudioClip clip = recorder.record(out, rng);
+  const audio::AudioClip clip = recorder.render(out.trace, out.duration_s, rng);
   const auto start = static_cast<std::size_t>(out.trace.impacts.front().time_s * clip.sample_rate);
   double bin = 0;
   const auto mag = spectrum(clip, 0, start, clip.frames() - start, &bin);
@@ -147,17 +146,17 @@ double dominant_hz_after_impact(const audio::AudioClip& clip, double impact_s) {
 // contact spring rings on: a tone at 1 / (2 tau), tau the contact time of that impact, dominating
 // the thud (the lab's mug at 560 Hz, cup at 904 Hz). Added mass lengthens the contact
 // (tau ~ m^0.4) and lowers the tone.
-TEST(SimulatedRecorder, StrikeRingsAtTheContactsHalfPeriod) {
+TEST(SoundRenderer, StrikeRingsAtTheContactsHalfPeriod) {
   SimConfig config = quiet();
   config.recording.friction_gain = 0;
   double previous_hz = 0;
   for (const char* name : {"coffee_mug", "coffee_mug_weighted"}) {
     SimulatedRobot robot(shipped_catalogue(), name, config);
-    SimulatedRecorder recorder(robot.object(), robot.table(), config);
+    SoundRenderer recorder(robot.object(), robot.table(), config);
     const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
     ASSERT_EQ(out.trace.impacts.size(), 1u) << name;
     Rng rng(5);
-    const audio::AudioClip clip = recorder.record(out, rng);
+    const audio::AudioClip clip = recorder.render(out.trace, out.duration_s, rng);
     const double expected_hz = 0.5 / recorder.contact_time(out.trace.impacts.front());
     const double heard_hz = dominant_hz_after_impact(clip, out.trace.impacts.front().time_s);
     // Within 5%: the spectrum's bins are 4 Hz apart and the ring is damped (its peak is broad).
@@ -169,7 +168,7 @@ TEST(SimulatedRecorder, StrikeRingsAtTheContactsHalfPeriod) {
   }
 }
 
-TEST(SimulatedRecorder, StrikeRingDiesLikeTheLabsThuds) {
+TEST(SoundRenderer, StrikeRingDiesLikeTheLabsThuds) {
   // The lab's strikes fell 20 dB (ln 10 in amplitude) in 15-30 ms for the plastic cup and 45 ms for
   // the coffee mug. The ring's losses (surface, object, finger pads on its effective mass) must put
   // the cup's within 30 ms and leave the 19x heavier mug's ringing at least 1.5x as long.
@@ -177,7 +176,7 @@ TEST(SimulatedRecorder, StrikeRingDiesLikeTheLabsThuds) {
   std::map<std::string, double> seconds_to_20db;
   for (const char* name : {"plastic_cup", "coffee_mug"}) {
     SimulatedRobot robot(shipped_catalogue(), name, config);
-    SimulatedRecorder recorder(robot.object(), robot.table(), config);
+    SoundRenderer recorder(robot.object(), robot.table(), config);
     const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
     ASSERT_EQ(out.trace.impacts.size(), 1u) << name;
     seconds_to_20db[name] = std::log(10.0) / recorder.contact_ring_decay(out.trace.impacts.front());
@@ -199,7 +198,7 @@ double high_frequency_share(const audio::AudioClip& clip, double impact_s, doubl
   return high / total;
 }
 
-TEST(SimulatedRecorder, HeavierObjectSoundsDuller) {
+TEST(SoundRenderer, HeavierObjectSoundsDuller) {
   // Impacts only: the arm presses the landed object and it scrapes a little, which is broadband and
   // would mask the comparison of the two impact pulses.
   SimConfig config = quiet();
@@ -211,17 +210,17 @@ TEST(SimulatedRecorder, HeavierObjectSoundsDuller) {
   const char* names[2] = {"coffee_mug", "coffee_mug_weighted"};
   for (int i = 0; i < 2; ++i) {
     SimulatedRobot robot(shipped_catalogue(), names[i], config);
-    SimulatedRecorder recorder(robot.object(), robot.table(), config);
+    SoundRenderer recorder(robot.object(), robot.table(), config);
     const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
     Rng rng(11);
-    share[i] =
-        high_frequency_share(recorder.record(out, rng), out.trace.impacts.front().time_s, kCut);
+    share[i] = high_frequency_share(recorder.render(out.trace, out.duration_s, rng),
+                                    out.trace.impacts.front().time_s, kCut);
   }
   // Longer contact: measurably less of the energy above the cut (at least 10% less).
   EXPECT_LT(share[1], share[0] * 0.9) << share[0] << " " << share[1];
 }
 
-TEST(SimulatedRecorder, HeavierObjectResistsTheRoughnessAndSlidesDarker) {
+TEST(SoundRenderer, HeavierObjectResistsTheRoughnessAndSlidesDarker) {
   // Roughness noise splits between the object (j omega m) and the table top (its point impedance):
   // the weighted mug's 0.25 kg more halves the frequency above which it resists the asperities
   // (1.1 kHz to 0.65 kHz), so less of its slide's energy is in its shell modes above 2 kHz.
@@ -230,11 +229,11 @@ TEST(SimulatedRecorder, HeavierObjectResistsTheRoughnessAndSlidesDarker) {
   const char* names[2] = {"coffee_mug", "coffee_mug_weighted"};
   for (int i = 0; i < 2; ++i) {
     SimulatedRobot robot(shipped_catalogue(), names[i], config);
-    SimulatedRecorder recorder(robot.object(), robot.table(), config);
+    SoundRenderer recorder(robot.object(), robot.table(), config);
     const ActionOutcome out = robot.execute(SoundAction::slide, nominal());
     ASSERT_EQ(out.status, ActionStatus::done) << names[i];
     Rng rng(13);
-    const audio::AudioClip clip = recorder.record(out, rng);
+    const audio::AudioClip clip = recorder.render(out.trace, out.duration_s, rng);
     double bin = 0;
     const auto mag = spectrum(clip, 0, 0, clip.frames(), &bin);
     double high = 0, total = 0;
@@ -262,7 +261,7 @@ double flatness_db(const std::vector<double>& mag, double bin_hz, double from_hz
   return 10 * std::log10(std::exp(log_sum / count) / (sum / count));
 }
 
-TEST(SimulatedRecorder, ThinCupHissesWhereItsWallsModesOverlap) {
+TEST(SoundRenderer, ThinCupHissesWhereItsWallsModesOverlap) {
   // The cup's 0.8 mm wall has dozens of modes per kilohertz, overlapping from 1 kHz: rubbed, it
   // answers as a smooth band (dense_wall_band), as the lab's cup slides did (flatness -4.6 to -7.4
   // dB over 100 Hz-10 kHz). The same cup with only its one-by-one modes (listed in the catalogue:
@@ -272,18 +271,18 @@ TEST(SimulatedRecorder, ThinCupHissesWhereItsWallsModesOverlap) {
   SimulatedRobot robot(shipped_catalogue(), "plastic_cup", config);
   const ActionOutcome out = robot.execute(SoundAction::slide, nominal());
   ASSERT_EQ(out.status, ActionStatus::done);
-  SimulatedRecorder dense(robot.object(), robot.table(), config);
+  SoundRenderer dense(robot.object(), robot.table(), config);
   ASSERT_FALSE(dense.dense_modes().empty());
   ObjectSpec tonal = robot.object();
   for (const Mode& m : dense.object_modes())
     tonal.listed_modes.push_back({m.frequency_hz, m.gain, m.decay_per_s});
-  SimulatedRecorder listed(tonal, robot.table(), config);
+  SoundRenderer listed(tonal, robot.table(), config);
   ASSERT_TRUE(listed.dense_modes().empty());
   double flatness[2], high_share[2];
-  const SimulatedRecorder* recorders[2] = {&dense, &listed};
+  const SoundRenderer* recorders[2] = {&dense, &listed};
   for (int i = 0; i < 2; ++i) {
     Rng rng(21);
-    const audio::AudioClip clip = recorders[i]->record(out, rng);
+    const audio::AudioClip clip = recorders[i]->render(out.trace, out.duration_s, rng);
     double bin = 0;
     const auto mag = spectrum(clip, 0, 0, clip.frames(), &bin);
     flatness[i] = flatness_db(mag, bin, 100, 10000);
@@ -301,24 +300,24 @@ TEST(SimulatedRecorder, ThinCupHissesWhereItsWallsModesOverlap) {
   EXPECT_LT(flatness[0], -4.6 + 3);
 }
 
-TEST(SimulatedRecorder, ThickMugsWallStaysTonal) {
+TEST(SoundRenderer, ThickMugsWallStaysTonal) {
   // The 5 mm ceramic mug's wall modes stay apart (one or two per kilohertz) below 16 kHz: no band
   // there, its slide is the table's field and its own few modes.
   const SimConfig config = quiet();
-  SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
-                             config);
+  SoundRenderer recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
+                         config);
   for (const Mode& m : recorder.dense_modes()) EXPECT_GE(m.frequency_hz, 12000);
 }
 
-TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
+TEST(SoundRenderer, ChannelsDifferByTheCapsulesDistances) {
   SimConfig config = quiet();
   config.microphone.position = {-0.4, 0.6, 0.4};
   config.microphone.capsule_spacing = 0.2;
   SimulatedRobot robot(shipped_catalogue(), "coffee_mug", config);
-  SimulatedRecorder recorder(robot.object(), robot.table(), config);
+  SoundRenderer recorder(robot.object(), robot.table(), config);
   const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
   Rng rng(1);
-  const audio::AudioClip clip = recorder.record(out, rng);
+  const audio::AudioClip clip = recorder.render(out.trace, out.duration_s, rng);
   ASSERT_EQ(clip.channels, 2);
   // Expected: each capsule hears the source (0.02 m above the object's base) at its own distance.
   double distance[2];
@@ -355,16 +354,16 @@ TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
   EXPECT_NEAR(std::sqrt(energy[0] / energy[1]), distance[1] / distance[0], 1e-4);
 }
 
-TEST(SimulatedRecorder, BackgroundNoiseHasTheConfiguredLevel) {
+TEST(SoundRenderer, BackgroundNoiseHasTheConfiguredLevel) {
   SimConfig config;
   config.recording.noise_dbfs = -40;
   config.recording.noise_corner_hz = 0;  // white: the level shaped noise has is tested below
   config.variability.background_db.stddev = 0;
-  SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
-                             config);
+  SoundRenderer recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
+                         config);
   ActionOutcome silent;  // no contacts at all
   Rng rng(9);
-  const audio::AudioClip clip = recorder.record(silent, rng);
+  const audio::AudioClip clip = recorder.render(silent.trace, silent.duration_s, rng);
   // The recorder's opening (exact zeros), then the 3 s recording.
   EXPECT_NEAR(clip.duration_seconds(), config.recording.lead_in_s + 3.0, 1e-4);
   const std::size_t lead =
@@ -389,7 +388,7 @@ double band_power(const audio::AudioClip& clip, int channel, double lo, double h
   return sum;
 }
 
-TEST(SimulatedRecorder, RoomNoiseFallsSixDecibelsPerOctaveAboveItsCorner) {
+TEST(SoundRenderer, RoomNoiseFallsSixDecibelsPerOctaveAboveItsCorner) {
   // A room's noise is mostly low frequencies. Above the corner each octave carries half the power
   // of the one below (a power spectrum ~ 1 / (1 + (f / fc)^2) integrates to fc atan(f / fc)), and
   // it is the room's: both capsules hear the same.
@@ -400,10 +399,10 @@ TEST(SimulatedRecorder, RoomNoiseFallsSixDecibelsPerOctaveAboveItsCorner) {
   // 30 s: the noise's power lies below ~80 Hz, so 3 s would hold only ~500 independent samples.
   config.recording.duration_s = 30;
   config.variability.background_db.stddev = 0;
-  SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
-                             config);
+  SoundRenderer recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
+                         config);
   Rng rng(11);
-  const audio::AudioClip clip = recorder.record(ActionOutcome{}, rng);
+  const audio::AudioClip clip = recorder.render(ContactTrace{}, 0.0, rng);
   std::vector<float> left(clip.frames()), right(clip.frames());
   double energy = 0;
   for (std::size_t i = 0; i < clip.frames(); ++i) {
@@ -424,9 +423,8 @@ TEST(SimulatedRecorder, RoomNoiseFallsSixDecibelsPerOctaveAboveItsCorner) {
   EXPECT_NEAR(corner_ratio / (analytic(20, 50) / analytic(200, 800)), 1.0, 0.15);
   // White when the corner is 0: an octave carries twice the power of the one below.
   config.recording.noise_corner_hz = 0;
-  SimulatedRecorder white(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
-                          config);
-  const audio::AudioClip flat = white.record(ActionOutcome{}, rng);
+  SoundRenderer white(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table, config);
+  const audio::AudioClip flat = white.render(ContactTrace{}, 0.0, rng);
   EXPECT_NEAR(band_power(flat, 0, 400, 800) / band_power(flat, 0, 800, 1600), 0.5, 0.05);
 }
 
@@ -435,12 +433,12 @@ std::string file_bytes(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-TEST(SimulatedRecorder, SameSeedGivesIdenticalFiles) {
+TEST(SoundRenderer, SameSeedGivesIdenticalFiles) {
   const auto dir = std::filesystem::temp_directory_path() / "echoplan_sim_seed_test";
   std::filesystem::create_directories(dir);
   SimConfig config;
   SimulatedRobot robot(shipped_catalogue(), "plastic_cup", config);
-  SimulatedRecorder recorder(robot.object(), robot.table(), config);
+  SoundRenderer recorder(robot.object(), robot.table(), config);
   std::vector<std::string> paths;
   for (std::uint64_t seed : {7, 7, 8}) {
     Rng rng(seed);
@@ -453,7 +451,7 @@ TEST(SimulatedRecorder, SameSeedGivesIdenticalFiles) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(SimulatedRecorder, LoudnessIsNotAnObjectCue) {
+TEST(SoundRenderer, LoudnessIsNotAnObjectCue) {
   // The lab's four strikes peak within 0.3 dB of each other at -3 dBFS: the recorder's limiter, not
   // the object, sets a strike's peak. (This replaces a test that nearest-centroid on MFCC tells the
   // four simulated objects apart: the lab's objects were not that easy to tell apart, and the
@@ -461,7 +459,7 @@ TEST(SimulatedRecorder, LoudnessIsNotAnObjectCue) {
   const SimConfig config;
   for (const char* name : {"pringles_can", "coffee_mug", "plastic_cup", "paper_base"}) {
     SimulatedRobot robot(shipped_catalogue(), name, config);
-    SimulatedRecorder recorder(robot.object(), robot.table(), config);
+    SoundRenderer recorder(robot.object(), robot.table(), config);
     Rng rng(5);
     const audio::AudioClip clip =
         simulate_recording(robot, recorder, SoundAction::strike, rng).clip;
