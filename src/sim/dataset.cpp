@@ -26,6 +26,56 @@ std::uint64_t clip_seed(std::uint64_t seed, const std::string& object, const std
                      {stable_hash(object), stable_hash(action), static_cast<std::uint64_t>(index)});
 }
 
+namespace {
+
+// One clip to record.
+struct Job {
+  std::string object;
+  SoundAction action;
+  int index;
+};
+
+// The clips in manifest order, each (object, action) folder created.
+std::vector<Job> list_jobs(const std::filesystem::path& root,
+                           const std::vector<std::string>& objects,
+                           const std::vector<SoundAction>& actions, int per_pair) {
+  std::vector<Job> jobs;
+  std::error_code ec;
+  for (const auto& object : objects)
+    for (const SoundAction action : actions) {
+      const std::filesystem::path folder = root / object / to_string(action);
+      std::filesystem::create_directories(folder, ec);
+      if (ec) throw InputError(folder.string(), 0, "cannot create the folder: " + ec.message());
+      for (int i = 0; i < per_pair; ++i) jobs.push_back({object, action, i});
+    }
+  return jobs;
+}
+
+// The manifest at `path`, truncated, with its header row written.
+std::ofstream open_manifest(const std::filesystem::path& path) {
+  std::ofstream manifest(path, std::ios::trunc);
+  if (!manifest) throw InputError(path.string(), 0, "cannot write the manifest");
+  manifest << "file,object,action,seed,collision,duration_s,impacts";
+  for (const auto& [name, value] : ActionVariation{}.named()) manifest << ',' << name;
+  for (const auto& [name, value] : ObjectPlacement{}.named()) manifest << ',' << name;
+  manifest << '\n' << std::flush;
+  return manifest;
+}
+
+// One clip's manifest row (without its newline).
+std::string manifest_row(const std::string& relative, const std::string& object,
+                         const std::string& action, std::uint64_t seed,
+                         const ActionOutcome& outcome) {
+  std::string row =
+      fmt::format("{},{},{},{},{},{:.4f},{}", relative, object, action, seed,
+                  outcome.collision() ? 1 : 0, outcome.duration_s, outcome.trace.impacts.size());
+  for (const auto& [name, value] : outcome.variation.named()) row += fmt::format(",{:.6g}", value);
+  for (const auto& [name, value] : outcome.placement.named()) row += fmt::format(",{:.6g}", value);
+  return row;
+}
+
+}  // namespace
+
 DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config,
                              const DatasetOptions& options,
                              const std::function<void(int, int, const std::string&)>& progress,
@@ -44,30 +94,13 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
   if (ec)
     throw InputError(options.output_dir, 0, "cannot create the output folder: " + ec.message());
   const fs::path manifest_path = root / "manifest.csv";
-  std::ofstream manifest(manifest_path, std::ios::trunc);
-  if (!manifest) throw InputError(manifest_path.string(), 0, "cannot write the manifest");
-  manifest << "file,object,action,seed,collision,duration_s,impacts";
-  for (const auto& [name, value] : ActionVariation{}.named()) manifest << ',' << name;
-  for (const auto& [name, value] : ObjectPlacement{}.named()) manifest << ',' << name;
-  manifest << '\n' << std::flush;
+  std::ofstream manifest = open_manifest(manifest_path);
 
   // The clips in manifest order. Workers take the next clip in turn; each keeps one robot and
   // renderer for the object it is on (compiling the MuJoCo scene is the expensive part). Every clip
   // has its own seed, so which worker renders it does not change its bytes; rows are written in
   // manifest order as soon as all earlier clips are done.
-  struct Job {
-    std::string object;
-    SoundAction action;
-    int index;
-  };
-  std::vector<Job> jobs;
-  for (const auto& object : objects)
-    for (const SoundAction action : actions) {
-      const fs::path folder = root / object / to_string(action);
-      fs::create_directories(folder, ec);
-      if (ec) throw InputError(folder.string(), 0, "cannot create the folder: " + ec.message());
-      for (int i = 0; i < options.per_pair; ++i) jobs.push_back({object, action, i});
-    }
+  const std::vector<Job> jobs = list_jobs(root, objects, actions, options.per_pair);
   const int total = static_cast<int>(jobs.size());
   struct Done {
     std::string file, row;
@@ -110,13 +143,7 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
         const fs::path partial = final_path.string() + ".part";
         audio::write_audio(partial.string(), r.clip, audio::WriteOptions{});
         move_into_place(partial, final_path);
-        std::string row = fmt::format("{},{},{},{},{},{:.4f},{}", relative, job.object, action,
-                                      seed, r.outcome.collision() ? 1 : 0, r.outcome.duration_s,
-                                      r.outcome.trace.impacts.size());
-        for (const auto& [name, value] : r.outcome.variation.named())
-          row += fmt::format(",{:.6g}", value);
-        for (const auto& [name, value] : r.outcome.placement.named())
-          row += fmt::format(",{:.6g}", value);
+        std::string row = manifest_row(relative, job.object, action, seed, r.outcome);
         std::lock_guard lock(mutex);
         done[k] = Done{relative, std::move(row), r.outcome.collision()};
         for (; next_row < done.size() && done[next_row]; ++next_row) {
