@@ -11,25 +11,23 @@ namespace {
 
 constexpr double kActionDistance =
     0.05;  // m: the slide's push and the strike's lift (seed section 3.2.1)
-constexpr double kLiftSpeed = 0.10;  // m/s
-constexpr double kPadGap = 0.001;    // m between pad and object before the push
-constexpr double kSettleTime = 0.2;  // s simulated after the strike so the object comes to rest
+constexpr double kLiftSpeed = 0.10;  // m/s, the report's 10 cm/s (seed section 3.2.1)
+// m between pad and object before the push: the pad starts just clear of the object. Geometry of
+// this simulator's start pose, not tuned to the lab's recordings (the push then covers 5.1 cm).
+constexpr double kPadGap = 0.001;
+// s simulated after the strike so the object comes to rest: the object is already held still, and
+// the clip's length does not depend on it (docs/simulator.md, "Realism, measured", session 8).
+constexpr double kSettleTime = 0.2;
 // s simulated after the push. The pad slows to rest gently (ArmConfig: over the push's last fifth,
 // a few tenths of a m/s^2), and friction (mu g: metres per s^2) would stop an object sliding at a
 // few cm/s within 20 ms anyway, so only the contacts settle. (Less physics than the strike's 0.2 s
 // pays for the lab's longer push: docs/BENCHMARKS.md, "Simulator", session 8.)
 constexpr double kSlideSettleTime = 0.05;
-constexpr double kGraspTime = 0.1;  // s for the fingers to close
-constexpr double kLevelTime =
-    0.3;  // s to turn a tilted object upright on the table (slowly: no second hit)
-constexpr double kHoldTime = 0.1;      // s the object is held on the table before the hand opens
-constexpr double kReleaseTime = 0.05;  // s for the fingers to open
-constexpr double kPauseTime = 0.1;     // s at the top of the lift
-constexpr double kEaseTime = 0.15;     // s the strike's lift and descent take to reach speed
 
 // The strike: grasp, lift (tilting), pause, descend until contact, level, hold, release, settle.
 std::vector<Segment> strike_script(const ActionVariation& p, const Eigen::Vector3d& at_object,
-                                   const Eigen::Quaterniond& upright) {
+                                   const Eigen::Quaterniond& upright, const ArmConfig& arm) {
+  const double ease = arm.strike_ease_s;
   std::vector<Segment> plan;
   const Eigen::Vector3d up(0, 0, kActionDistance);
   // The tilt turns the object about a horizontal axis through the grasp point while lifting, so
@@ -41,13 +39,13 @@ std::vector<Segment> strike_script(const ActionVariation& p, const Eigen::Vector
                             Eigen::Vector3d(std::cos(azimuth), std::sin(azimuth), 0.0))) *
       upright;
   const Eigen::Vector3d bottom = at_object - Eigen::Vector3d(0, 0, kPressDepth);
-  plan.push_back({kGraspTime, at_object, at_object, upright, upright, 0, 1});
+  plan.push_back({arm.grasp_time_s, at_object, at_object, upright, upright, 0, 1});
   Segment lift{
-      kActionDistance / kLiftSpeed + kEaseTime, at_object, at_object + up, upright, tilted, 1, 1};
-  lift.ease_in_s = lift.ease_out_s = kEaseTime;
+      kActionDistance / kLiftSpeed + ease, at_object, at_object + up, upright, tilted, 1, 1};
+  lift.ease_in_s = lift.ease_out_s = ease;
   plan.push_back(lift);
-  plan.push_back({kPauseTime, at_object + up, at_object + up, tilted, tilted, 1, 1});
-  Segment descent{(kActionDistance + kPressDepth) / p.impact_speed + kEaseTime / 2,
+  plan.push_back({arm.lift_pause_s, at_object + up, at_object + up, tilted, tilted, 1, 1});
+  Segment descent{(kActionDistance + kPressDepth) / p.impact_speed + ease / 2,
                   at_object + up,
                   bottom,
                   tilted,
@@ -55,11 +53,11 @@ std::vector<Segment> strike_script(const ActionVariation& p, const Eigen::Vector
                   1,
                   1,
                   true};
-  descent.ease_in_s = kEaseTime;
+  descent.ease_in_s = ease;
   plan.push_back(descent);
-  plan.push_back({kLevelTime, bottom, bottom, tilted, upright, 1, 1});
-  plan.push_back({kHoldTime, bottom, bottom, upright, upright, 1, 1});
-  plan.push_back({kReleaseTime, bottom, bottom, upright, upright, 1, 0});
+  plan.push_back({arm.level_time_s, bottom, bottom, tilted, upright, 1, 1});
+  plan.push_back({arm.hold_time_s, bottom, bottom, upright, upright, 1, 1});
+  plan.push_back({arm.release_time_s, bottom, bottom, upright, upright, 1, 0});
   plan.push_back({kSettleTime, bottom, bottom, upright, upright, 0, 0});
   return plan;
 }
@@ -97,7 +95,7 @@ Eigen::Vector3d action_start(SoundAction action, const ActionVariation& p,
 std::vector<Segment> action_script(SoundAction action, const ActionVariation& variation,
                                    const Eigen::Vector3d& at_object,
                                    const Eigen::Quaterniond& upright, const ArmConfig& arm) {
-  return action == SoundAction::strike ? strike_script(variation, at_object, upright)
+  return action == SoundAction::strike ? strike_script(variation, at_object, upright, arm)
                                        : slide_script(variation, at_object, upright, arm);
 }
 

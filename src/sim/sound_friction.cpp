@@ -13,11 +13,14 @@ namespace echoplan::sim {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double kProfileSpacing =
-    2.0e-6;  // m between surface-profile samples (12.5 kHz at 5 cm/s)
-constexpr double kReferenceSlideSpeed = 0.05;  // m/s at which friction_gain is calibrated
-constexpr double kStaticSpeed =
-    2e-3;  // m/s: slower creep of a pressed contact is the solver's compliance, silent
+// m between surface-profile samples: the profile's resolution (12.5 kHz at 5 cm/s). Numerical, not
+// tuned.
+constexpr double kProfileSpacing = 2.0e-6;
+// m/s at which recording.friction_gain is calibrated: a normalisation (the report's 5 cm push).
+constexpr double kReferenceSlideSpeed = 0.05;
+// m/s: slower creep of a pressed contact is the solver's compliance, silent (docs/simulator.md,
+// "What is modelled", friction). A threshold of this simulator, not measured on the lab's surfaces.
+constexpr double kStaticSpeed = 2e-3;
 
 // A 1/f^2 surface profile with `count` samples at kProfileSpacing, unit RMS slope per sample: white
 // Gaussian-like noise shaped in the frequency domain (amplitude ~ 1/f).

@@ -12,9 +12,6 @@
 
 namespace echoplan::sim {
 
-// The rubbing contact's own broadband radiation relative to the modes'.
-inline constexpr double kDirectFriction = 0.5;
-
 // The friction excitation at audio rate: normal force times the profile's change as it passes the
 // contact at the sliding speed (per-step physics values interpolated linearly).
 std::vector<float> friction_excitation(const ContactTrace& trace, int rate, std::size_t frames,

@@ -9,10 +9,6 @@ namespace echoplan::sim {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double kPulseGain = 3.0;  // the contact pulse's direct radiation relative to the modes
-constexpr double kRingGainFloor =
-    0.15;  // real objects are not perfectly round: every ring mode hears a hit
-constexpr double kTableCoupling = 0.25;  // share of an impact's effect that rings the table
 
 }  // namespace
 
@@ -21,7 +17,7 @@ double hertz_pulse_envelope(double omega, double duration_s) {
   return 1.0 / std::sqrt(1.0 + x * x * x * x);
 }
 
-double ring_excitation(const std::vector<RimContact>& contacts, int order) {
+double ring_excitation(const std::vector<RimContact>& contacts, int order, double floor) {
   if (order == 0) return 1.0;
   std::complex<double> sum = 0;
   double total = 0;
@@ -30,13 +26,13 @@ double ring_excitation(const std::vector<RimContact>& contacts, int order) {
     total += c.normal_force;
   }
   const double coherent = total > 0 ? std::abs(sum) / total : 1.0;
-  return kRingGainFloor + (1.0 - kRingGainFloor) * coherent;
+  return floor + (1.0 - floor) * coherent;
 }
 
 void add_impact_impulses(const Impact& impact, std::size_t at, double tau,
-                         const std::vector<Mode>& object_modes, double object_mode_scale,
-                         const std::vector<Mode>& table_modes, double table_coincidence_hz,
-                         std::vector<ModeDrive>& object_drives,
+                         const RecordingConfig& rec, const std::vector<Mode>& object_modes,
+                         double object_mode_scale, const std::vector<Mode>& table_modes,
+                         double table_coincidence_hz, std::vector<ModeDrive>& object_drives,
                          std::vector<ModeDrive>& table_drives) {
   const double momentum = impact.effective_mass * impact.normal_speed;
   auto radiated = [&](double f) {
@@ -46,19 +42,19 @@ void add_impact_impulses(const Impact& impact, std::size_t at, double tau,
     const Mode& m = object_modes[k];
     object_drives[k].impulses.emplace_back(
         at, object_mode_scale * momentum * m.gain * radiated(m.frequency_hz) *
-                ring_excitation(impact.contacts, m.azimuthal_order));
+                ring_excitation(impact.contacts, m.azimuthal_order, rec.ring_mode_floor));
   }
   for (std::size_t k = 0; k < table_modes.size(); ++k) {
     const Mode& m = table_modes[k];
     table_drives[k].impulses.emplace_back(
-        at, kTableCoupling * momentum * m.gain * radiated(m.frequency_hz) *
+        at, rec.table_impact_gain * momentum * m.gain * radiated(m.frequency_hz) *
                 plate_radiation(m.frequency_hz, table_coincidence_hz));
   }
 }
 
-void add_contact_ring(double momentum, double tau, double decay_per_s, std::size_t at, int rate,
-                      std::vector<float>& out) {
-  const double scale = kPulseGain * momentum * std::numbers::pi / (tau * kTwoPi * kReferenceHz);
+void add_contact_ring(double gain, double momentum, double tau, double decay_per_s, std::size_t at,
+                      int rate, std::vector<float>& out) {
+  const double scale = gain * momentum * std::numbers::pi / (tau * kTwoPi * kReferenceHz);
   const double omega = std::numbers::pi / tau;
   const auto length = static_cast<std::size_t>(std::ceil(kTailDecay / decay_per_s * rate));
   // cos(omega t) e^(-decay t) as a two-pole recursion (exact for the sampled sinusoid).

@@ -10,9 +10,13 @@ namespace echoplan::sim {
 
 namespace {
 
-constexpr double kLimiterLookahead = 0.001;  // s
-constexpr double kSourceHeight = 0.02;       // m above the table: where the object radiates from
-constexpr double kDirectPathGain = 0.3;      // pressure at 1 m per unit modal amplitude
+// m above the table: where the object radiates from, taken as a point low on its wall (the
+// objects are 10-23 cm tall: objects/catalogue.yaml). A geometric choice, not tuned to the lab's
+// recordings: it only sets each capsule's distance (delay and 1/r gain).
+constexpr double kSourceHeight = 0.02;
+// Pressure at 1 m per unit modal amplitude. A scale, not a tuned value of its own: only its product
+// with recording.output_gain reaches the clip, and that is the tuned, configurable one.
+constexpr double kDirectPathGain = 0.3;
 
 }  // namespace
 
@@ -42,7 +46,7 @@ void apply_limiter(const RecordingConfig& rec, int rate,
                    std::array<std::vector<float>, 2>& channels) {
   const std::size_t frames = channels[0].size();
   const double ceiling = std::pow(10.0, rec.limiter_ceiling_dbfs / 20.0);
-  const auto ahead = static_cast<std::size_t>(kLimiterLookahead * rate);
+  const auto ahead = static_cast<std::size_t>(rec.limiter_lookahead_s * rate);
   const auto hold = static_cast<std::size_t>(rec.limiter_hold_s * rate);
   const double recover = 1.0 - std::exp(-1.0 / (rec.limiter_release_s * rate));
   std::vector<float> peak(frames);

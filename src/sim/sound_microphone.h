@@ -20,9 +20,9 @@ std::array<std::vector<float>, 2> capsules_hear(const std::vector<float>& room,
                                                 const std::array<double, 3>& object_position,
                                                 double mic_offset, int rate);
 
-// The recorder's peak limiter (stereo-linked): looks kLimiterLookahead ahead, lowers the gain at
-// once so no sample exceeds the ceiling, holds it, then lets it recover. It is why the lab's four
-// strikes peak within 0.3 dB of each other at -3 dBFS whatever the object.
+// The recorder's peak limiter (stereo-linked): looks rec.limiter_lookahead_s ahead, lowers the gain
+// at once so no sample exceeds the ceiling, holds it, then lets it recover. It is why the lab's
+// four strikes peak within 0.3 dB of each other at -3 dBFS whatever the object.
 void apply_limiter(const RecordingConfig& rec, int rate,
                    std::array<std::vector<float>, 2>& channels);
 

@@ -9,24 +9,22 @@ namespace echoplan::sim {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double kMotorHz = 1200.0;    // centre of the motors' and gears' noise band
-constexpr double kMotorQ = 0.7;        // its width (Q of a band-pass: about two octaves)
-constexpr double kMotorAttack = 0.15;  // s for the motor noise to follow rising joint speed
-constexpr double kMotorRelease = 0.4;  // s for it to die away after the arm slows
 
 }  // namespace
 
-void add_motor_noise(const ContactTrace& trace, int rate, double gain, NoiseSource& noise,
+void add_motor_noise(const ContactTrace& trace, const RecordingConfig& rec, NoiseSource& noise,
                      std::vector<float>& out) {
+  const int rate = rec.sample_rate;
+  const double gain = rec.motor_noise_gain;
   if (gain <= 0 || trace.steps == 0 || trace.joint_speed.empty()) return;
   // RBJ band-pass biquad (constant 0 dB peak gain).
-  const double w0 = kTwoPi * kMotorHz / rate;
-  const double bandwidth = std::sin(w0) / (2.0 * kMotorQ);
+  const double w0 = kTwoPi * rec.motor_noise_hz / rate;
+  const double bandwidth = std::sin(w0) / (2.0 * rec.motor_noise_q);
   const double a0 = 1 + bandwidth;
   const double b0 = bandwidth / a0, b2 = -bandwidth / a0, a1 = -2 * std::cos(w0) / a0,
                a2 = (1 - bandwidth) / a0;
-  const double attack = 1.0 - std::exp(-1.0 / (kMotorAttack * rate));
-  const double release = 1.0 - std::exp(-1.0 / (kMotorRelease * rate));
+  const double attack = 1.0 - std::exp(-1.0 / (rec.motor_attack_s * rate));
+  const double release = 1.0 - std::exp(-1.0 / (rec.motor_release_s * rate));
   double envelope = 0, x1 = 0, x2 = 0, y1 = 0, y2 = 0;
   for (std::size_t n = 0; n < out.size(); ++n) {
     const auto step =

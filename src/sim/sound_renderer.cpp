@@ -64,10 +64,10 @@ std::vector<float> SoundRenderer::dry_sound(const ContactTrace& trace, std::size
     const auto at = static_cast<std::size_t>(std::lround(impact.time_s * rate));
     if (at >= frames) continue;
     const double tau = contact_time(impact);
-    add_impact_impulses(impact, at, tau, object_modes_, object_mode_scale_, table_modes_,
+    add_impact_impulses(impact, at, tau, rec, object_modes_, object_mode_scale_, table_modes_,
                         table_coincidence_hz_, object_drives, table_drives);
-    add_contact_ring(impact.effective_mass * impact.normal_speed, tau, contact_ring_decay(impact),
-                     at, rate, dry);
+    add_contact_ring(rec.contact_ring_gain, impact.effective_mass * impact.normal_speed, tau,
+                     contact_ring_decay(impact), at, rate, dry);
   }
   const std::vector<float> friction =
       friction_excitation(trace, rate, frames, rec.friction_gain, noise);
@@ -81,8 +81,8 @@ std::vector<float> SoundRenderer::dry_sound(const ContactTrace& trace, std::size
                     friction, rate, dry);
   // The rubbing contact itself radiates broadband noise besides ringing the modes.
   for (std::size_t n = 0; n < frames; ++n)
-    dry[n] += static_cast<float>(kDirectFriction) * friction[n];
-  add_motor_noise(trace, rate, rec.motor_noise_gain, noise, dry);
+    dry[n] += static_cast<float>(rec.friction_direct_gain) * friction[n];
+  add_motor_noise(trace, rec, noise, dry);
   return dry;
 }
 

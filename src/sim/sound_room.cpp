@@ -8,7 +8,7 @@ namespace echoplan::sim {
 std::vector<std::pair<std::size_t, float>> reverb_taps(const RoomConfig& room, int rate, Rng& rng) {
   std::vector<std::pair<std::size_t, float>> taps;
   const int count = static_cast<int>(std::lround(room.taps_per_s * room.length_s));
-  const double first_reflection = 0.0025;  // s after the direct sound
+  const double first_reflection = room.first_reflection_s;
   for (int i = 0; i < count; ++i) {
     const double t = first_reflection + (room.length_s - first_reflection) * uniform01(rng);
     const double sign = uniform01(rng) < 0.5 ? -1.0 : 1.0;
