@@ -19,7 +19,7 @@
 #include "pomdp/particle_belief.h"
 #include "pomdp/problem.h"
 #include "robot/classifier_service.h"
-#include "sim/simulated_recorder.h"
+#include "sim/recording.h"
 #include "sim/simulated_robot.h"
 
 namespace {
@@ -51,9 +51,9 @@ struct Fixture {
     model = prepared.model;
     problem = prepared.problem->model;
     sim::SimulatedRobot robot(catalogue, "coffee_mug", sim::SimConfig{});
-    sim::SimulatedRecorder recorder(robot.object(), robot.table(), sim::SimConfig{});
+    sim::SoundRenderer recorder(robot.object(), robot.table(), sim::SimConfig{});
     Rng rng(12345);
-    clip = sim::simulate_recording(robot, recorder, "strike", rng).clip;
+    clip = sim::simulate_recording(robot, recorder, sim::SoundAction::strike, rng).clip;
   }
   int strike() const { return 1; }
   pomdp::Observation symbol(const robot::HeardObservation& heard) const {

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "sim/simulated_recorder.h"
+#include "sim/recording.h"
 
 namespace {
 
@@ -17,16 +17,17 @@ const echoplan::sim::Catalogue& catalogue() {
 }
 
 const char* kObjects[] = {"coffee_mug", "pringles_can", "plastic_cup", "paper_base"};
-const char* kActions[] = {"slide", "strike"};
+const echoplan::sim::SoundAction kActions[] = {echoplan::sim::SoundAction::slide,
+                                               echoplan::sim::SoundAction::strike};
 
 // Whole recording: execute the action in MuJoCo and synthesize 3 s of stereo audio. The robot (its
 // compiled scene) is built once, as a running robot would be.
 void BM_Recording(benchmark::State& state) {
   const char* object = kObjects[state.range(0)];
-  const char* action = kActions[state.range(1)];
+  const echoplan::sim::SoundAction action = kActions[state.range(1)];
   const SimConfig config;
   echoplan::sim::SimulatedRobot robot(catalogue(), object, config);
-  echoplan::sim::SimulatedRecorder recorder(robot.object(), robot.table(), config);
+  echoplan::sim::SoundRenderer recorder(robot.object(), robot.table(), config);
   std::uint64_t seed = 0;
   double audio_seconds = 0;
   for (auto _ : state) {
@@ -35,7 +36,7 @@ void BM_Recording(benchmark::State& state) {
     audio_seconds = r.clip.duration_seconds();
     benchmark::DoNotOptimize(r.clip.samples.data());
   }
-  state.SetLabel(std::string(object) + "/" + action);
+  state.SetLabel(std::string(object) + "/" + to_string(action));
   state.counters["audio_s_per_s"] =
       benchmark::Counter(audio_seconds * state.iterations(), benchmark::Counter::kIsRate);
 }
@@ -52,18 +53,20 @@ void BM_PhysicsOnly(benchmark::State& state) {
     robot.reset_trial(rng);
     benchmark::DoNotOptimize(robot.execute(kActions[state.range(0)], rng));
   }
-  state.SetLabel(std::string("coffee_mug/") + kActions[state.range(0)]);
+  state.SetLabel(std::string("coffee_mug/") + to_string(kActions[state.range(0)]));
 }
 BENCHMARK(BM_PhysicsOnly)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_SynthesisOnly(benchmark::State& state) {
   const SimConfig config;
   echoplan::sim::SimulatedRobot robot(catalogue(), kObjects[0], config);
-  echoplan::sim::SimulatedRecorder recorder(robot.object(), robot.table(), config);
+  echoplan::sim::SoundRenderer recorder(robot.object(), robot.table(), config);
   echoplan::Rng rng(1);
   const auto outcome = robot.execute(kActions[state.range(0)], rng);
-  for (auto _ : state) benchmark::DoNotOptimize(recorder.record(outcome, rng).samples.data());
-  state.SetLabel(std::string("coffee_mug/") + kActions[state.range(0)]);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        recorder.render(outcome.trace, outcome.duration_s, rng).samples.data());
+  state.SetLabel(std::string("coffee_mug/") + to_string(kActions[state.range(0)]));
 }
 BENCHMARK(BM_SynthesisOnly)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 

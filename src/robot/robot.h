@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <string>
 
+#include "sim/action_status.h"
+
 namespace echoplan::robot {
 
 // What the world is told when a trial begins.
@@ -20,11 +22,9 @@ struct TrialContext {
   std::uint64_t seed = 0;
 };
 
-enum class ActionStatus {
-  done,       // the action ran to its end
-  collision,  // the arm or the object hit the table or the workspace; the action stopped there
-  failed,     // the action could not be carried out (object out of reach, driver error, ...)
-};
+// How an action ended: the simulator's status (sim/action_status.h), the same for every robot.
+using sim::ActionStatus;
+using sim::to_string;
 
 // How one action went. Physical outcomes are reported here, never thrown.
 struct ActionReport {
@@ -33,8 +33,6 @@ struct ActionReport {
   std::string reason;     // for collision and failed: what happened, in words, for the log
   double duration_s = 0;  // from the command to the end of the action (simulated or wall time)
 };
-
-const char* to_string(ActionStatus status);
 
 class Robot {
  public:

@@ -23,17 +23,15 @@ SimulatedWorld::SimulatedWorld(sim::Catalogue catalogue, sim::SimConfig config,
     : catalogue_(std::move(catalogue)),
       config_(std::move(config)),
       sorting_actions_(std::move(sorting_actions)) {
-  for (const std::string& a : sorting_actions_) {
-    const auto sensing = sensing_actions();
-    if (std::find(sensing.begin(), sensing.end(), a) != sensing.end())
+  for (const std::string& a : sorting_actions_)
+    if (sim::find_sound_action(a))
       throw InputError("sorting action '" + a +
                        "' has the name of one of the simulator's sensing actions");
-  }
 }
 
 SimulatedWorld::~SimulatedWorld() = default;
 
-std::vector<std::string> SimulatedWorld::sensing_actions() { return {sim::kSlide, sim::kStrike}; }
+std::vector<std::string> SimulatedWorld::sensing_actions() { return sim::sound_action_names(); }
 
 void SimulatedWorld::check_object(const std::string& object) const { catalogue_.object(object); }
 
@@ -43,11 +41,12 @@ bool SimulatedWorld::is_sorting(const std::string& action) const {
 }
 
 void SimulatedWorld::check_action(const std::string& action) const {
-  const auto sensing = sensing_actions();
-  if (is_sorting(action) || std::find(sensing.begin(), sensing.end(), action) != sensing.end())
-    return;
+  if (!is_sorting(action) && !sim::find_sound_action(action)) throw_unknown_action(action);
+}
+
+void SimulatedWorld::throw_unknown_action(const std::string& action) const {
   throw InputError(fmt::format("the simulated robot has no action '{}' (sensing: {}; sorting: {})",
-                               action, fmt::join(sensing, ", "),
+                               action, fmt::join(sensing_actions(), ", "),
                                fmt::join(sorting_actions_, ", ")));
 }
 
@@ -57,8 +56,8 @@ void SimulatedWorld::begin_trial(const TrialContext& context) {
     // Compiling a MuJoCo scene takes milliseconds; trials of the same object reuse it.
     ObjectRig rig;
     rig.robot = std::make_unique<sim::SimulatedRobot>(catalogue_, context.object, config_);
-    rig.recorder =
-        std::make_unique<sim::SimulatedRecorder>(rig.robot->object(), rig.robot->table(), config_);
+    rig.renderer =
+        std::make_unique<sim::SoundRenderer>(rig.robot->object(), rig.robot->table(), config_);
     it = rigs_.emplace(context.object, std::move(rig)).first;
   }
   rig_ = &it->second;
@@ -75,24 +74,16 @@ void SimulatedWorld::begin_trial(const TrialContext& context) {
 ActionReport SimulatedWorld::execute(const std::string& action) {
   if (!rig_) throw std::logic_error("SimulatedWorld::execute before begin_trial()");
   if (is_sorting(action)) return ActionReport{action, ActionStatus::done, "", 0.0};
-  check_action(action);
-  return execute_sensing(action);
+  // The name is resolved here, once; the simulator takes the action itself.
+  const std::optional<sim::SoundAction> sound = sim::find_sound_action(action);
+  if (!sound) throw_unknown_action(action);
+  return execute_sensing(action, *sound);
 }
 
-ActionReport SimulatedWorld::execute_sensing(const std::string& action) {
+ActionReport SimulatedWorld::execute_sensing(const std::string& name, sim::SoundAction action) {
   sim::ActionOutcome outcome = rig_->robot->execute(action, physics_rng_);
-  if (listening_) hear(rig_->recorder->record(outcome, sound_rng_));
-  ActionReport report{action, ActionStatus::done, outcome.reason, outcome.duration_s};
-  switch (outcome.status) {
-    case sim::ActionStatus::done:
-      break;
-    case sim::ActionStatus::collision:
-      report.status = ActionStatus::collision;
-      break;
-    case sim::ActionStatus::failed:  // pushed out of reach, fallen over
-      report.status = ActionStatus::failed;
-      break;
-  }
+  if (listening_) hear(rig_->renderer->render(outcome.trace, outcome.duration_s, sound_rng_));
+  ActionReport report{name, outcome.status, outcome.reason, outcome.duration_s};
   last_outcome_ = std::move(outcome);
   return report;
 }
@@ -118,9 +109,9 @@ audio::AudioClip SimulatedWorld::stop_listening() {
   listening_ = false;
   // Nothing happened while listening: the microphone hears the room alone, for the usual length.
   if (heard_.samples.empty()) {
-    sim::ActionOutcome quiet;
-    quiet.trace.object_position = rig_->robot->object_position();
-    return rig_->recorder->record(quiet, sound_rng_);
+    sim::ContactTrace quiet;
+    quiet.object_position = rig_->robot->object_position();
+    return rig_->renderer->render(quiet, 0.0, sound_rng_);
   }
   return std::move(heard_);
 }

@@ -32,8 +32,9 @@
 #include "robot/robot.h"
 #include "sim/catalogue.h"
 #include "sim/sim_config.h"
-#include "sim/simulated_recorder.h"
 #include "sim/simulated_robot.h"
+#include "sim/sound_action.h"
+#include "sim/sound_renderer.h"
 
 namespace echoplan::robot {
 
@@ -52,8 +53,8 @@ class SimulatedWorld {
 
   // Throws InputError naming the catalogue when `object` is not in it (listing the known objects).
   void check_object(const std::string& object) const;
-  // Throws InputError when `action` is neither a sensing action of the simulator nor one of this
-  // world's sorting actions.
+  // Throws InputError when `action` is neither a sensing action of the simulator
+  // (sim::SoundAction) nor one of this world's sorting actions.
   void check_action(const std::string& action) const;
 
   // Resets the scene of `context.object` (the MuJoCo model of each object is compiled once per
@@ -77,13 +78,14 @@ class SimulatedWorld {
   const sim::SimConfig& config() const { return config_; }
 
  private:
-  // The simulator's robot and microphone for one object.
+  // The simulator's robot and its sound for one object.
   struct ObjectRig {
     std::unique_ptr<sim::SimulatedRobot> robot;
-    std::unique_ptr<sim::SimulatedRecorder> recorder;
+    std::unique_ptr<sim::SoundRenderer> renderer;
   };
   bool is_sorting(const std::string& action) const;
-  ActionReport execute_sensing(const std::string& action);
+  ActionReport execute_sensing(const std::string& name, sim::SoundAction action);
+  [[noreturn]] void throw_unknown_action(const std::string& action) const;
   void hear(const audio::AudioClip& clip);
 
   sim::Catalogue catalogue_;

@@ -14,8 +14,9 @@
 #include "common/file_io.h"
 #include "common/rng.h"
 #include "common/stable_hash.h"
-#include "sim/simulated_recorder.h"
+#include "sim/recording.h"
 #include "sim/simulated_robot.h"
+#include "sim/sound_action.h"
 
 namespace echoplan::sim {
 
@@ -25,6 +26,56 @@ std::uint64_t clip_seed(std::uint64_t seed, const std::string& object, const std
                      {stable_hash(object), stable_hash(action), static_cast<std::uint64_t>(index)});
 }
 
+namespace {
+
+// One clip to record.
+struct Job {
+  std::string object;
+  SoundAction action;
+  int index;
+};
+
+// The clips in manifest order, each (object, action) folder created.
+std::vector<Job> list_jobs(const std::filesystem::path& root,
+                           const std::vector<std::string>& objects,
+                           const std::vector<SoundAction>& actions, int per_pair) {
+  std::vector<Job> jobs;
+  std::error_code ec;
+  for (const auto& object : objects)
+    for (const SoundAction action : actions) {
+      const std::filesystem::path folder = root / object / to_string(action);
+      std::filesystem::create_directories(folder, ec);
+      if (ec) throw InputError(folder.string(), 0, "cannot create the folder: " + ec.message());
+      for (int i = 0; i < per_pair; ++i) jobs.push_back({object, action, i});
+    }
+  return jobs;
+}
+
+// The manifest at `path`, truncated, with its header row written.
+std::ofstream open_manifest(const std::filesystem::path& path) {
+  std::ofstream manifest(path, std::ios::trunc);
+  if (!manifest) throw InputError(path.string(), 0, "cannot write the manifest");
+  manifest << "file,object,action,seed,collision,duration_s,impacts";
+  for (const auto& [name, value] : ActionVariation{}.named()) manifest << ',' << name;
+  for (const auto& [name, value] : ObjectPlacement{}.named()) manifest << ',' << name;
+  manifest << '\n' << std::flush;
+  return manifest;
+}
+
+// One clip's manifest row (without its newline).
+std::string manifest_row(const std::string& relative, const std::string& object,
+                         const std::string& action, std::uint64_t seed,
+                         const ActionOutcome& outcome) {
+  std::string row =
+      fmt::format("{},{},{},{},{},{:.4f},{}", relative, object, action, seed,
+                  outcome.collision() ? 1 : 0, outcome.duration_s, outcome.trace.impacts.size());
+  for (const auto& [name, value] : outcome.variation.named()) row += fmt::format(",{:.6g}", value);
+  for (const auto& [name, value] : outcome.placement.named()) row += fmt::format(",{:.6g}", value);
+  return row;
+}
+
+}  // namespace
+
 DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config,
                              const DatasetOptions& options,
                              const std::function<void(int, int, const std::string&)>& progress,
@@ -33,9 +84,8 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
   const std::vector<std::string> objects =
       options.objects.empty() ? catalogue.object_names() : options.objects;
   for (const auto& o : objects) catalogue.object(o);  // throws for an unknown name, before any file
-  for (const auto& a : options.actions)
-    if (a != kSlide && a != kStrike)
-      throw InputError("", 0, "unknown action '" + a + "' (known: slide, strike)");
+  std::vector<SoundAction> actions;                   // throws for an unknown name, before any file
+  for (const auto& a : options.actions) actions.push_back(parse_sound_action(a));
   if (options.per_pair < 1) throw InputError("", 0, "--per-pair must be at least 1");
 
   const fs::path root(options.output_dir);
@@ -44,29 +94,13 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
   if (ec)
     throw InputError(options.output_dir, 0, "cannot create the output folder: " + ec.message());
   const fs::path manifest_path = root / "manifest.csv";
-  std::ofstream manifest(manifest_path, std::ios::trunc);
-  if (!manifest) throw InputError(manifest_path.string(), 0, "cannot write the manifest");
-  manifest << "file,object,action,seed,collision,duration_s,impacts";
-  for (const auto& [name, value] : ActionVariation{}.named()) manifest << ',' << name;
-  for (const auto& [name, value] : ObjectPlacement{}.named()) manifest << ',' << name;
-  manifest << '\n' << std::flush;
+  std::ofstream manifest = open_manifest(manifest_path);
 
   // The clips in manifest order. Workers take the next clip in turn; each keeps one robot and
-  // recorder for the object it is on (compiling the MuJoCo scene is the expensive part). Every clip
+  // renderer for the object it is on (compiling the MuJoCo scene is the expensive part). Every clip
   // has its own seed, so which worker renders it does not change its bytes; rows are written in
   // manifest order as soon as all earlier clips are done.
-  struct Job {
-    std::string object, action;
-    int index;
-  };
-  std::vector<Job> jobs;
-  for (const auto& object : objects)
-    for (const auto& action : options.actions) {
-      const fs::path folder = root / object / action;
-      fs::create_directories(folder, ec);
-      if (ec) throw InputError(folder.string(), 0, "cannot create the folder: " + ec.message());
-      for (int i = 0; i < options.per_pair; ++i) jobs.push_back({object, action, i});
-    }
+  const std::vector<Job> jobs = list_jobs(root, objects, actions, options.per_pair);
   const int total = static_cast<int>(jobs.size());
   struct Done {
     std::string file, row;
@@ -87,7 +121,7 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
   auto worker = [&] {
     std::string current;
     std::unique_ptr<SimulatedRobot> robot;
-    std::unique_ptr<SimulatedRecorder> recorder;
+    std::unique_ptr<SoundRenderer> renderer;
     try {
       for (std::size_t k; !stop.load() && (k = next_job++) < jobs.size();) {
         {
@@ -97,25 +131,19 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
         const Job& job = jobs[k];
         if (job.object != current) {
           robot = std::make_unique<SimulatedRobot>(catalogue, job.object, config);
-          recorder = std::make_unique<SimulatedRecorder>(robot->object(), robot->table(), config);
+          renderer = std::make_unique<SoundRenderer>(robot->object(), robot->table(), config);
           current = job.object;
         }
-        const std::uint64_t seed = clip_seed(options.seed, job.object, job.action, job.index);
+        const std::string action = to_string(job.action);
+        const std::uint64_t seed = clip_seed(options.seed, job.object, action, job.index);
         Rng rng(seed);
-        const Recording r = simulate_recording(*robot, *recorder, job.action, rng);
-        const std::string relative =
-            fmt::format("{}/{}/{:03d}.wav", job.object, job.action, job.index);
+        const Recording r = simulate_recording(*robot, *renderer, job.action, rng);
+        const std::string relative = fmt::format("{}/{}/{:03d}.wav", job.object, action, job.index);
         const fs::path final_path = root / relative;
         const fs::path partial = final_path.string() + ".part";
         audio::write_audio(partial.string(), r.clip, audio::WriteOptions{});
         move_into_place(partial, final_path);
-        std::string row = fmt::format("{},{},{},{},{},{:.4f},{}", relative, job.object, job.action,
-                                      seed, r.outcome.collision() ? 1 : 0, r.outcome.duration_s,
-                                      r.outcome.trace.impacts.size());
-        for (const auto& [name, value] : r.outcome.variation.named())
-          row += fmt::format(",{:.6g}", value);
-        for (const auto& [name, value] : r.outcome.placement.named())
-          row += fmt::format(",{:.6g}", value);
+        std::string row = manifest_row(relative, job.object, action, seed, r.outcome);
         std::lock_guard lock(mutex);
         done[k] = Done{relative, std::move(row), r.outcome.collision()};
         for (; next_row < done.size() && done[next_row]; ++next_row) {

@@ -22,7 +22,10 @@ double decay_of(const ListedMode& listed, const Material& material) {
 // The wall's shell modes are clamped by the base at the bottom and free at the rim: the
 // clamped-free beam function's first axial wavenumber is 1.8751 / height.
 constexpr double kClampedFreeBeta = 1.8751;
-// Struck or rubbed through its base, the wall rings less than the base.
+// Struck or rubbed through its base, the wall rings less than the base. A balance set with the
+// modes against the lab's strike and slide spectra (../shared/reference/real-robot-recordings.md,
+// "Measures per file"); no measurement of its own. It belongs to the object, not the lab, so it is
+// not in the sim config (docs/simulator.md, "Tuned constants").
 constexpr double kWallCoupling = 0.6;
 
 // How added masses load the wall and the base: mass on the base (within a quarter of the height)

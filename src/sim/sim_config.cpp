@@ -88,7 +88,8 @@ SimConfig read_sim_config(const YamlReader& f, const YAML::Node& root) {
                {{"rt60_s", number_into(f, room.rt60_s, 0.01, 5.0)},
                 {"length_s", number_into(f, room.length_s, 0.001, 0.5)},
                 {"taps_per_s", number_into(f, room.taps_per_s, 10.0, 20000.0)},
-                {"reverb_level", number_into(f, room.reverb_level, 0.0, 2.0)}});
+                {"reverb_level", number_into(f, room.reverb_level, 0.0, 2.0)},
+                {"first_reflection_s", number_into(f, room.first_reflection_s, 0.0, 0.05)}});
   auto& rec = c.recording;
   double sample_rate = rec.sample_rate;
   read_section(f, root, "recording",
@@ -102,12 +103,30 @@ SimConfig read_sim_config(const YamlReader& f, const YAML::Node& root) {
                 {"motor_noise_gain", number_into(f, rec.motor_noise_gain, 0.0, 1000.0)},
                 {"limiter_ceiling_dbfs", number_into(f, rec.limiter_ceiling_dbfs, -60.0, 0.0)},
                 {"limiter_hold_s", number_into(f, rec.limiter_hold_s, 0.0, 10.0)},
-                {"limiter_release_s", number_into(f, rec.limiter_release_s, 0.001, 10.0)}});
+                {"limiter_release_s", number_into(f, rec.limiter_release_s, 0.001, 10.0)},
+                {"limiter_lookahead_s", number_into(f, rec.limiter_lookahead_s, 0.0, 0.1)},
+                {"motor_noise_hz", number_into(f, rec.motor_noise_hz, 20.0, 20000.0)},
+                {"motor_noise_q", number_into(f, rec.motor_noise_q, 0.1, 20.0)},
+                {"motor_attack_s", number_into(f, rec.motor_attack_s, 0.001, 10.0)},
+                {"motor_release_s", number_into(f, rec.motor_release_s, 0.001, 10.0)},
+                {"contact_ring_gain", number_into(f, rec.contact_ring_gain, 0.0, 100.0)},
+                {"table_impact_gain", number_into(f, rec.table_impact_gain, 0.0, 10.0)},
+                {"ring_mode_floor", number_into(f, rec.ring_mode_floor, 0.0, 1.0)},
+                {"friction_direct_gain", number_into(f, rec.friction_direct_gain, 0.0, 100.0)}});
   rec.sample_rate = static_cast<int>(std::lround(sample_rate));
+  if (rec.motor_noise_hz >= 0.5 * rec.sample_rate)
+    f.fail(root["recording"]["motor_noise_hz"],
+           "recording.motor_noise_hz must be below half the sample rate");
   auto& arm = c.arm;
   read_section(f, root, "arm",
                {{"push_accelerate_share", number_into(f, arm.push_accelerate_share, 0.0, 1.0)},
-                {"push_decelerate_share", number_into(f, arm.push_decelerate_share, 0.0, 1.0)}});
+                {"push_decelerate_share", number_into(f, arm.push_decelerate_share, 0.0, 1.0)},
+                {"grasp_time_s", number_into(f, arm.grasp_time_s, 0.01, 2.0)},
+                {"strike_ease_s", number_into(f, arm.strike_ease_s, 0.01, 2.0)},
+                {"lift_pause_s", number_into(f, arm.lift_pause_s, 0.01, 2.0)},
+                {"level_time_s", number_into(f, arm.level_time_s, 0.01, 2.0)},
+                {"hold_time_s", number_into(f, arm.hold_time_s, 0.01, 2.0)},
+                {"release_time_s", number_into(f, arm.release_time_s, 0.01, 2.0)}});
   if (arm.push_accelerate_share + arm.push_decelerate_share > 1.0)
     f.fail(root["arm"],
            "push_accelerate_share and push_decelerate_share add up to more than 1: they are shares "

@@ -64,6 +64,9 @@ struct RoomConfig {
   double taps_per_s = 500;     // sparse noise taps per second of impulse response, > 0
   double reverb_level = 0.06;  // tail amplitude relative to the direct sound (microphone close:
                                // strikes fall 20 dB in 15-45 ms)
+  // s, in [0, 0.05]: the first reflection after the direct sound (2.5 ms: a path 0.86 m longer,
+  // the table's edge or a nearby wall); the tail's taps lie between it and length_s.
+  double first_reflection_s = 0.0025;
 };
 
 struct RecordingConfig {
@@ -81,9 +84,32 @@ struct RecordingConfig {
       7.2e-7;  // scale of sliding excitation relative to impacts (slides 17 dB below strikes)
   double motor_noise_gain =
       1.8e-5;  // motor noise per rad/s of summed joint speed (about 20 dB below a slide)
-  double limiter_ceiling_dbfs = -3;  // the recorder's limiter: no sample above this
-  double limiter_hold_s = 0.5;       // s the limiter holds its gain after a peak
-  double limiter_release_s = 0.5;    // s time constant of its recovery
+  double limiter_ceiling_dbfs = -3;    // the recorder's limiter: no sample above this
+  double limiter_hold_s = 0.5;         // s the limiter holds its gain after a peak
+  double limiter_release_s = 0.5;      // s time constant of its recovery
+  double limiter_lookahead_s = 0.001;  // s, in [0, 0.1]: how far ahead the limiter sees a peak
+  // The arm's motor and gear noise (docs/simulator.md, "What is modelled", motor noise): a band
+  // around motor_noise_hz (Q motor_noise_q: 0.7 is about two octaves) whose level follows the
+  // summed joint speed, rising with time constant motor_attack_s and dying with motor_release_s
+  // (the lab's tail after a slide: docs/simulator.md, session 6). Not measured on the lab's arm:
+  // set yours.
+  double motor_noise_hz = 1200;  // Hz, in [20, 20000]
+  double motor_noise_q = 0.7;    // in [0.1, 20]
+  double motor_attack_s = 0.15;  // s, in [0.001, 10]
+  double motor_release_s = 0.4;  // s, in [0.001, 10]
+  // The balance of an impact's parts and of a slide's, set with output_gain and friction_gain
+  // against the lab's recordings (their peak frequencies, decays and strike-to-slide ratios:
+  // ../shared/reference/real-robot-recordings.md, "Measures per file"); no measurement of their
+  // own. contact_ring_gain: the contact's direct radiation (the thud at 1 / (2 tau)) relative to
+  // the object's modes, in [0, 100]; table_impact_gain: the share of an impact that rings the
+  // table's modes, in [0, 10]; ring_mode_floor: how strongly a contact spread evenly round the rim
+  // still drives a ring mode (real objects are not perfectly round), in [0, 1];
+  // friction_direct_gain: the rubbing contact's own broadband radiation relative to the modes', in
+  // [0, 100].
+  double contact_ring_gain = 3.0;
+  double table_impact_gain = 0.25;
+  double ring_mode_floor = 0.15;
+  double friction_direct_gain = 0.5;
 };
 
 // How the simulated arm moves: its controller's profiles, the same in every action.
@@ -95,6 +121,19 @@ struct ArmConfig {
   // (docs/simulator.md, "Realism, measured", session 8).
   double push_accelerate_share = 0.4;
   double push_decelerate_share = 0.2;
+  // The strike's timings (s, each in [0.01, 2]). The report gives its distance and speed only
+  // (5 cm at 10 cm/s, seed section 3.2.1); these are the simulated arm's, not measured on the
+  // lab's: the hand closes over grasp_time_s, the lift and the descent reach their speed over
+  // strike_ease_s (docs/simulator.md, "What is modelled", actions), it pauses lift_pause_s at the
+  // top, turns a tilted object upright on the table over level_time_s (slowly: a faster levelling
+  // can make a second hit; docs/simulator.md, session 6, "the mug's tilted landing"), holds it
+  // hold_time_s and opens over release_time_s.
+  double grasp_time_s = 0.1;
+  double strike_ease_s = 0.15;
+  double lift_pause_s = 0.1;
+  double level_time_s = 0.3;
+  double hold_time_s = 0.1;
+  double release_time_s = 0.05;
 };
 
 struct PhysicsConfig {

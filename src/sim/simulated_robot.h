@@ -1,12 +1,11 @@
 // The simulated robot: executes the two sound-making actions on one object in the MuJoCo scene and
 // reports what happened, including the object-table contacts the sound synthesis needs.
 //
-// Actions (the names used across echoplan):
-//   "slide"  - the fingertip pad pushes the object 5 cm along +x at the action's push speed;
-//   "strike" - the hand closes on the object (a compliant grasp), lifts it 5 cm, brings it down at
-//   the
-//              action's impact speed onto the table, levels it and holds it while the contact
-//              settles, then opens: one impact.
+// Actions (sim/sound_action.h):
+//   slide  - the fingertip pad pushes the object 5 cm along +x at the action's push speed;
+//   strike - the hand closes on the object (a compliant grasp), lifts it 5 cm, brings it down at
+//            the action's impact speed onto the table, levels it and holds it while the contact
+//            settles, then opens: one impact.
 //
 // A trial is a sequence of actions on one object: reset_trial() puts the arm in the original
 // system's initial configuration and the object at its nominal place (plus the trial's placement
@@ -26,29 +25,18 @@
 #include <string>
 
 #include "common/rng.h"
+#include "sim/action_status.h"
 #include "sim/catalogue.h"
 #include "sim/contact_trace.h"
 #include "sim/sim_config.h"
+#include "sim/sound_action.h"
 
 namespace echoplan::sim {
 
 class Scene;
 
-// The action names the simulator knows.
-inline constexpr const char* kSlide = "slide";
-inline constexpr const char* kStrike = "strike";
-
-// How an action ended (the robot module's ActionStatus mirrors these).
-enum class ActionStatus {
-  done,       // ran to its end
-  collision,  // the arm touched the table; the action stopped there
-  failed,     // not carried out: the object is out of reach or has fallen over (see `reason`)
-};
-
-const char* to_string(ActionStatus status);
-
 struct ActionOutcome {
-  std::string action;
+  SoundAction action = SoundAction::slide;
   ActionStatus status = ActionStatus::done;
   std::string reason;           // for collision and failed: what happened, in words
   double collision_time_s = 0;  // s from the start of the action (negative: during the approach)
@@ -79,14 +67,13 @@ class SimulatedRobot {
   void reset_trial(const ObjectPlacement& placement);
   void reset_trial(Rng& rng);
 
-  // Runs `action` ("slide" or "strike") from the current state, drawing the action's variation from
-  // `rng` (and, if no trial has begun, the trial's placement first). Throws InputError for an
-  // unknown action name.
-  ActionOutcome execute(const std::string& action, Rng& rng);
+  // Runs `action` from the current state, drawing the action's variation from `rng` (and, if no
+  // trial has begun, the trial's placement first).
+  ActionOutcome execute(SoundAction action, Rng& rng);
 
   // As execute(), with the action's variation given instead of drawn (a trial must have begun, or
   // one with the nominal placement is begun).
-  ActionOutcome execute(const std::string& action, const ActionVariation& variation);
+  ActionOutcome execute(SoundAction action, const ActionVariation& variation);
 
   // The object's base centre (m, world) and whether a trial is under way.
   std::array<double, 3> object_position() const;

@@ -6,7 +6,7 @@
 
 #include "common/error.h"
 #include "common/rng.h"
-#include "sim/simulated_recorder.h"
+#include "sim/recording.h"
 #include "sim/simulated_robot.h"
 #include "small_training_set.h"
 
@@ -24,9 +24,9 @@ std::shared_ptr<const perception::ObservationModel> model() {
 audio::AudioClip recording(const std::string& object, const std::string& action,
                            std::uint64_t seed) {
   sim::SimulatedRobot robot(testing::shipped_catalogue(), object, sim::SimConfig{});
-  sim::SimulatedRecorder recorder(robot.object(), robot.table(), sim::SimConfig{});
+  sim::SoundRenderer recorder(robot.object(), robot.table(), sim::SimConfig{});
   Rng rng(seed);
-  return sim::simulate_recording(robot, recorder, action, rng).clip;
+  return sim::simulate_recording(robot, recorder, sim::parse_sound_action(action), rng).clip;
 }
 
 TEST(ClassifierService, SaysWhatTheModelCanReport) {

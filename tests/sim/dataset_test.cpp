@@ -10,7 +10,7 @@
 #include "audio/io.h"
 #include "common/error.h"
 #include "shipped_catalogue.h"
-#include "sim/simulated_recorder.h"
+#include "sim/recording.h"
 
 namespace echoplan::sim {
 namespace {
@@ -67,9 +67,9 @@ TEST(Dataset, WritesEveryPairAndAManifestThatReproducesEachFile) {
   EXPECT_EQ(file, "coffee_mug/slide/000.wav");
   EXPECT_EQ(std::stoull(seed), clip_seed(99, "coffee_mug", "slide", 0));
   SimulatedRobot robot(shipped_catalogue(), object, SimConfig{});
-  SimulatedRecorder recorder(robot.object(), robot.table(), SimConfig{});
+  SoundRenderer recorder(robot.object(), robot.table(), SimConfig{});
   Rng rng(std::stoull(seed));
-  const auto again = simulate_recording(robot, recorder, action, rng).clip;
+  const auto again = simulate_recording(robot, recorder, parse_sound_action(action), rng).clip;
   // Written the same way, the re-synthesized clip is the same file byte for byte.
   const fs::path again_path = dir / "again.wav";
   audio::write_audio(again_path.string(), again);

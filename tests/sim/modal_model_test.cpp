@@ -6,7 +6,7 @@
 #include <complex>
 #include <numbers>
 
-#include "sim/simulated_recorder.h"
+#include "sim/recording.h"
 
 namespace echoplan::sim {
 namespace {

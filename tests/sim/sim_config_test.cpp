@@ -33,11 +33,31 @@ TEST(SimConfig, ShippedExampleStatesTheDefaults) {
       {"length_s", c.room.length_s, d.room.length_s},
       {"taps_per_s", c.room.taps_per_s, d.room.taps_per_s},
       {"reverb_level", c.room.reverb_level, d.room.reverb_level},
+      {"first_reflection_s", c.room.first_reflection_s, d.room.first_reflection_s},
       {"duration_s", c.recording.duration_s, d.recording.duration_s},
       {"noise_dbfs", c.recording.noise_dbfs, d.recording.noise_dbfs},
       {"noise_corner_hz", c.recording.noise_corner_hz, d.recording.noise_corner_hz},
       {"output_gain", c.recording.output_gain, d.recording.output_gain},
       {"friction_gain", c.recording.friction_gain, d.recording.friction_gain},
+      {"motor_noise_gain", c.recording.motor_noise_gain, d.recording.motor_noise_gain},
+      {"limiter_ceiling_dbfs", c.recording.limiter_ceiling_dbfs, d.recording.limiter_ceiling_dbfs},
+      {"limiter_hold_s", c.recording.limiter_hold_s, d.recording.limiter_hold_s},
+      {"limiter_release_s", c.recording.limiter_release_s, d.recording.limiter_release_s},
+      {"limiter_lookahead_s", c.recording.limiter_lookahead_s, d.recording.limiter_lookahead_s},
+      {"motor_noise_hz", c.recording.motor_noise_hz, d.recording.motor_noise_hz},
+      {"motor_noise_q", c.recording.motor_noise_q, d.recording.motor_noise_q},
+      {"motor_attack_s", c.recording.motor_attack_s, d.recording.motor_attack_s},
+      {"motor_release_s", c.recording.motor_release_s, d.recording.motor_release_s},
+      {"contact_ring_gain", c.recording.contact_ring_gain, d.recording.contact_ring_gain},
+      {"table_impact_gain", c.recording.table_impact_gain, d.recording.table_impact_gain},
+      {"ring_mode_floor", c.recording.ring_mode_floor, d.recording.ring_mode_floor},
+      {"friction_direct_gain", c.recording.friction_direct_gain, d.recording.friction_direct_gain},
+      {"grasp_time_s", c.arm.grasp_time_s, d.arm.grasp_time_s},
+      {"strike_ease_s", c.arm.strike_ease_s, d.arm.strike_ease_s},
+      {"lift_pause_s", c.arm.lift_pause_s, d.arm.lift_pause_s},
+      {"level_time_s", c.arm.level_time_s, d.arm.level_time_s},
+      {"hold_time_s", c.arm.hold_time_s, d.arm.hold_time_s},
+      {"release_time_s", c.arm.release_time_s, d.arm.release_time_s},
       {"push_accelerate_share", c.arm.push_accelerate_share, d.arm.push_accelerate_share},
       {"push_decelerate_share", c.arm.push_decelerate_share, d.arm.push_decelerate_share},
       {"timestep_s", c.physics.timestep_s, d.physics.timestep_s},
@@ -106,6 +126,34 @@ TEST(SimConfig, ErrorsNameFileLineAndField) {
   const InputError corner = error_of("recording:\n  sample_rate: 44100\n  noise_corner_hz: -50\n");
   EXPECT_EQ(corner.line(), 3);
   EXPECT_NE(corner.problem().find("recording.noise_corner_hz"), std::string::npos) << corner.what();
+  // Every tuned constant the config carries is checked against its range, naming its line.
+  const std::vector<std::pair<std::string, std::string>> out_of_range{
+      {"room", "first_reflection_s: 0.2"},
+      {"recording", "limiter_lookahead_s: 1"},
+      {"recording", "motor_noise_hz: 5"},
+      {"recording", "motor_noise_q: 0"},
+      {"recording", "motor_attack_s: 0"},
+      {"recording", "motor_release_s: 20"},
+      {"recording", "contact_ring_gain: -1"},
+      {"recording", "table_impact_gain: 11"},
+      {"recording", "ring_mode_floor: 1.5"},
+      {"recording", "friction_direct_gain: -0.5"},
+      {"arm", "grasp_time_s: 0"},
+      {"arm", "strike_ease_s: 3"},
+      {"arm", "lift_pause_s: -1"},
+      {"arm", "level_time_s: 5"},
+      {"arm", "hold_time_s: 0.001"},
+      {"arm", "release_time_s: 10"}};
+  for (const auto& [section, line] : out_of_range) {
+    const InputError e = error_of("# my lab\n" + section + ":\n  " + line + "\n");
+    EXPECT_EQ(e.line(), 3) << line;
+    const std::string field = section + "." + line.substr(0, line.find(':'));
+    EXPECT_NE(e.problem().find(field), std::string::npos) << e.what();
+  }
+  // The motor band must lie below the recording's Nyquist frequency.
+  const InputError band = error_of("recording:\n  sample_rate: 8000\n  motor_noise_hz: 5000\n");
+  EXPECT_EQ(band.line(), 3);
+  EXPECT_NE(band.problem().find("recording.motor_noise_hz"), std::string::npos) << band.what();
   EXPECT_NE(
       error_of("variability:\n  push_speed: 0.1\n").problem().find("{mean: ..., stddev: ...}"),
       std::string::npos);

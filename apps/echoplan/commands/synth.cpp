@@ -4,7 +4,7 @@
 #include "audio/io.h"
 #include "commands/commands.h"
 #include "commands/sim_options.h"
-#include "sim/simulated_recorder.h"
+#include "sim/recording.h"
 
 namespace echoplan::cli {
 
@@ -31,9 +31,10 @@ void add_synth_command(CLI::App& app) {
   cmd->callback([opt] {
     const SimSetup setup = load_sim_setup(opt->files);
     sim::SimulatedRobot robot(setup.catalogue, opt->object, setup.config);
-    sim::SimulatedRecorder recorder(robot.object(), robot.table(), setup.config);
+    const sim::SoundAction action = sim::parse_sound_action(opt->action);
+    sim::SoundRenderer recorder(robot.object(), robot.table(), setup.config);
     Rng rng(opt->seed);
-    const sim::Recording r = sim::simulate_recording(robot, recorder, opt->action, rng);
+    const sim::Recording r = sim::simulate_recording(robot, recorder, action, rng);
     audio::write_audio(opt->output, r.clip, audio::write_options_for(opt->output));
 
     // What happened, for people: the trial's parameters and each impact.

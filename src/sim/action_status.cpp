@@ -1,6 +1,6 @@
-#include "robot/robot.h"
+#include "sim/action_status.h"
 
-namespace echoplan::robot {
+namespace echoplan::sim {
 
 const char* to_string(ActionStatus status) {
   switch (status) {
@@ -14,4 +14,4 @@ const char* to_string(ActionStatus status) {
   return "unknown";
 }
 
-}  // namespace echoplan::robot
+}  // namespace echoplan::sim

@@ -1,7 +1,4 @@
-#include "sim/simulated_recorder.h"
-
 #include <gtest/gtest.h>
-#include <kiss_fftr.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +11,8 @@
 #include "audio/features.h"
 #include "audio/io.h"
 #include "shipped_catalogue.h"
+#include "sim/recording.h"
+#include "sound_measures.h"
 
 namespace echoplan::sim {
 namespace {
@@ -43,25 +42,10 @@ Catalogue bare_table_catalogue() {
   return c;
 }
 
-// Magnitude spectrum of `count` frames of `channel` from `start`, Hann-windowed, zero-padded to a
-// power of two >= pad * count (bins of rate / nfft Hz).
+// Magnitude spectrum of `count` frames of `channel` from `start` (sound_measures.h).
 std::vector<double> spectrum(const audio::AudioClip& clip, int channel, std::size_t start,
                              std::size_t count, double* bin_hz, std::size_t pad = 4) {
-  std::size_t nfft = 1;
-  while (nfft < pad * count) nfft *= 2;
-  std::vector<float> x(nfft, 0.0f);
-  for (std::size_t i = 0; i < count && start + i < clip.frames(); ++i) {
-    const double w = 0.5 - 0.5 * std::cos(2 * std::numbers::pi * i / (count - 1));
-    x[i] = static_cast<float>(w * clip.samples[(start + i) * clip.channels + channel]);
-  }
-  std::vector<kiss_fft_cpx> out(nfft / 2 + 1);
-  kiss_fftr_cfg cfg = kiss_fftr_alloc(static_cast<int>(nfft), 0, nullptr, nullptr);
-  kiss_fftr(cfg, x.data(), out.data());
-  kiss_fftr_free(cfg);
-  std::vector<double> mag(out.size());
-  for (std::size_t k = 0; k < out.size(); ++k) mag[k] = std::hypot(out[k].r, out[k].i);
-  *bin_hz = static_cast<double>(clip.sample_rate) / nfft;
-  return mag;
+  return magnitude_spectrum(channel_of(clip, channel), clip.sample_rate, start, count, bin_hz, pad);
 }
 
 // The nominal trial with a small tilt, so the rim lands first and every ring mode is excited.
@@ -71,7 +55,7 @@ ActionVariation nominal() {
   return p;
 }
 
-TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
+TEST(SoundRenderer, StrikeSpectrumPeaksAtTheConfiguredModes) {
   // An object with listed modes; the peak nearest each must sit on it, far above the spectrum
   // floor.
   Catalogue c = bare_table_catalogue();
@@ -80,11 +64,11 @@ TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
   c.objects["bell"] = bell;
   const SimConfig config = quiet();
   SimulatedRobot robot(c, "bell", config);
-  SimulatedRecorder recorder(robot.object(), robot.table(), config);
-  const ActionOutcome out = robot.execute("strike", nominal());
+  SoundRenderer renderer(robot.object(), robot.table(), config);
+  const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
   ASSERT_FALSE(out.trace.impacts.empty());
   Rng rng(3);
-  const audio::AudioClip clip = recorder.record(out, rng);
+  const audio::AudioClip clip = renderer.render(out.trace, out.duration_s, rng);
   const auto start = static_cast<std::size_t>(out.trace.impacts.front().time_s * clip.sample_rate);
   double bin = 0;
   const auto mag = spectrum(clip, 0, start, clip.frames() - start, &bin);
@@ -103,19 +87,19 @@ TEST(SimulatedRecorder, StrikeSpectrumPeaksAtTheConfiguredModes) {
   }
 }
 
-TEST(SimulatedRecorder, DerivedModesOfTheMugAppearInItsStrike) {
+TEST(SoundRenderer, DerivedModesOfTheMugAppearInItsStrike) {
   const SimConfig config = quiet();
   const Catalogue catalogue = bare_table_catalogue();
   SimulatedRobot robot(catalogue, "coffee_mug", config);
-  SimulatedRecorder recorder(robot.object(), robot.table(), config);
-  const ActionOutcome out = robot.execute("strike", nominal());
+  SoundRenderer renderer(robot.object(), robot.table(), config);
+  const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
   Rng rng(3);
-  const audio::AudioClip clip = recorder.record(out, rng);
+  const audio::AudioClip clip = renderer.render(out.trace, out.duration_s, rng);
   const auto start = static_cast<std::size_t>(out.trace.impacts.front().time_s * clip.sample_rate);
   double bin = 0;
   const auto mag = spectrum(clip, 0, start, clip.frames() - start, &bin);
   int checked = 0;
-  for (const Mode& m : recorder.object_modes()) {
+  for (const Mode& m : renderer.object_modes()) {
     if (m.frequency_hz > 8000) continue;  // beyond the Hertz pulse's reach at this contact time
     const auto lo = static_cast<std::size_t>((m.frequency_hz - 50) / bin),
                hi = static_cast<std::size_t>((m.frequency_hz + 50) / bin);
@@ -143,48 +127,63 @@ double dominant_hz_after_impact(const audio::AudioClip& clip, double impact_s) {
   return static_cast<double>(best) * bin;
 }
 
-// After a strike the hand holds the object on the table, so the impact's half-cycle on the Hertz
-// contact spring rings on: a tone at 1 / (2 tau), tau the contact time of that impact, dominating
-// the thud (the lab's mug at 560 Hz, cup at 904 Hz). Added mass lengthens the contact
-// (tau ~ m^0.4) and lowers the tone.
-TEST(SimulatedRecorder, StrikeRingsAtTheContactsHalfPeriod) {
+// After a strike the hand holds the object on the table, so the impact rings on as a short tonal
+// thud (the lab's mug at 560 Hz, cup at 904 Hz: real-robot-recordings.md, peak_hz). Heard in the
+// rendered clip: the mug's thud near the lab's, the 19x lighter cup's higher, and added mass
+// (the weighted mug) lowering it.
+TEST(SoundRenderer, StrikeThudsNearTheLabsAndLowerWithMass) {
   SimConfig config = quiet();
   config.recording.friction_gain = 0;
-  double previous_hz = 0;
-  for (const char* name : {"coffee_mug", "coffee_mug_weighted"}) {
+  std::map<std::string, double> heard_hz;
+  for (const char* name : {"coffee_mug", "coffee_mug_weighted", "plastic_cup"}) {
     SimulatedRobot robot(shipped_catalogue(), name, config);
-    SimulatedRecorder recorder(robot.object(), robot.table(), config);
-    const ActionOutcome out = robot.execute("strike", nominal());
+    SoundRenderer renderer(robot.object(), robot.table(), config);
+    const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
     ASSERT_EQ(out.trace.impacts.size(), 1u) << name;
     Rng rng(5);
-    const audio::AudioClip clip = recorder.record(out, rng);
-    const double expected_hz = 0.5 / recorder.contact_time(out.trace.impacts.front());
-    const double heard_hz = dominant_hz_after_impact(clip, out.trace.impacts.front().time_s);
-    // Within 5%: the spectrum's bins are 4 Hz apart and the ring is damped (its peak is broad).
-    EXPECT_NEAR(heard_hz, expected_hz, 0.05 * expected_hz) << name;
-    if (previous_hz > 0) {
-      EXPECT_LT(heard_hz, 0.9 * previous_hz) << name;
-    }
-    previous_hz = heard_hz;
+    const audio::AudioClip clip = renderer.render(out.trace, out.duration_s, rng);
+    heard_hz[name] = dominant_hz_after_impact(clip, out.trace.impacts.front().time_s);
   }
+  // Within 25% of the lab's thuds (docs/simulator.md: the simulator's are ~690 Hz for the mug,
+  // ~850-950 Hz for the cup).
+  EXPECT_NEAR(heard_hz["coffee_mug"], 560, 0.25 * 560);
+  EXPECT_NEAR(heard_hz["plastic_cup"], 904, 0.25 * 904);
+  EXPECT_GT(heard_hz["plastic_cup"], 1.1 * heard_hz["coffee_mug"]);
+  EXPECT_LT(heard_hz["coffee_mug_weighted"], 0.9 * heard_hz["coffee_mug"]);
 }
 
-TEST(SimulatedRecorder, StrikeRingDiesLikeTheLabsThuds) {
-  // The lab's strikes fell 20 dB (ln 10 in amplitude) in 15-30 ms for the plastic cup and 45 ms for
-  // the coffee mug. The ring's losses (surface, object, finger pads on its effective mass) must put
-  // the cup's within 30 ms and leave the 19x heavier mug's ringing at least 1.5x as long.
+// Seconds from the loudest 5 ms frame of `x` after `from_s` until a frame first lies `drop_db`
+// below it.
+double seconds_to_fall(const std::vector<float>& x, int rate, double from_s, double drop_db) {
+  constexpr double kFrame = 0.005;
+  const std::vector<double> level = frame_levels_db(x, rate, kFrame);
+  const auto first = static_cast<std::size_t>(from_s / kFrame);
+  const auto peak = std::max_element(level.begin() + first, level.end()) - level.begin();
+  for (auto t = static_cast<std::size_t>(peak); t < level.size(); ++t)
+    if (level[t] <= level[peak] - drop_db) return (t - peak) * kFrame;
+  return level.size() * kFrame;
+}
+
+TEST(SoundRenderer, StrikeDiesLikeTheLabsThuds) {
+  // The lab's strikes fell 20 dB in 15-30 ms for the plastic cup and 45 ms for the coffee mug
+  // (real-robot-recordings.md, t_minus20_s). Measured on the rendered clips: the cup's within 30 ms
+  // (plus a frame), the 19x heavier mug's at least 1.5x as long and within 60 ms.
   const SimConfig config = quiet();
   std::map<std::string, double> seconds_to_20db;
   for (const char* name : {"plastic_cup", "coffee_mug"}) {
     SimulatedRobot robot(shipped_catalogue(), name, config);
-    SimulatedRecorder recorder(robot.object(), robot.table(), config);
-    const ActionOutcome out = robot.execute("strike", nominal());
+    SoundRenderer renderer(robot.object(), robot.table(), config);
+    const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
     ASSERT_EQ(out.trace.impacts.size(), 1u) << name;
-    seconds_to_20db[name] = std::log(10.0) / recorder.contact_ring_decay(out.trace.impacts.front());
+    Rng rng(3);
+    const audio::AudioClip clip = renderer.render(out.trace, out.duration_s, rng);
+    seconds_to_20db[name] = seconds_to_fall(channel_of(clip, 0), clip.sample_rate,
+                                            out.trace.impacts.front().time_s - 0.01, 20);
   }
-  EXPECT_LE(seconds_to_20db["plastic_cup"], 0.030);
-  EXPECT_GE(seconds_to_20db["coffee_mug"], 1.5 * seconds_to_20db["plastic_cup"]);
-  EXPECT_LE(seconds_to_20db["coffee_mug"], 0.060);
+  EXPECT_LE(seconds_to_20db["plastic_cup"], 0.035) << seconds_to_20db["plastic_cup"];
+  EXPECT_GE(seconds_to_20db["coffee_mug"], 1.5 * seconds_to_20db["plastic_cup"])
+      << seconds_to_20db["coffee_mug"];
+  EXPECT_LE(seconds_to_20db["coffee_mug"], 0.060) << seconds_to_20db["coffee_mug"];
 }
 
 double high_frequency_share(const audio::AudioClip& clip, double impact_s, double cut_hz) {
@@ -199,7 +198,7 @@ double high_frequency_share(const audio::AudioClip& clip, double impact_s, doubl
   return high / total;
 }
 
-TEST(SimulatedRecorder, HeavierObjectSoundsDuller) {
+TEST(SoundRenderer, HeavierObjectSoundsDuller) {
   // Impacts only: the arm presses the landed object and it scrapes a little, which is broadband and
   // would mask the comparison of the two impact pulses.
   SimConfig config = quiet();
@@ -211,17 +210,17 @@ TEST(SimulatedRecorder, HeavierObjectSoundsDuller) {
   const char* names[2] = {"coffee_mug", "coffee_mug_weighted"};
   for (int i = 0; i < 2; ++i) {
     SimulatedRobot robot(shipped_catalogue(), names[i], config);
-    SimulatedRecorder recorder(robot.object(), robot.table(), config);
-    const ActionOutcome out = robot.execute("strike", nominal());
+    SoundRenderer renderer(robot.object(), robot.table(), config);
+    const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
     Rng rng(11);
-    share[i] =
-        high_frequency_share(recorder.record(out, rng), out.trace.impacts.front().time_s, kCut);
+    share[i] = high_frequency_share(renderer.render(out.trace, out.duration_s, rng),
+                                    out.trace.impacts.front().time_s, kCut);
   }
   // Longer contact: measurably less of the energy above the cut (at least 10% less).
   EXPECT_LT(share[1], share[0] * 0.9) << share[0] << " " << share[1];
 }
 
-TEST(SimulatedRecorder, HeavierObjectResistsTheRoughnessAndSlidesDarker) {
+TEST(SoundRenderer, HeavierObjectResistsTheRoughnessAndSlidesDarker) {
   // Roughness noise splits between the object (j omega m) and the table top (its point impedance):
   // the weighted mug's 0.25 kg more halves the frequency above which it resists the asperities
   // (1.1 kHz to 0.65 kHz), so less of its slide's energy is in its shell modes above 2 kHz.
@@ -230,11 +229,11 @@ TEST(SimulatedRecorder, HeavierObjectResistsTheRoughnessAndSlidesDarker) {
   const char* names[2] = {"coffee_mug", "coffee_mug_weighted"};
   for (int i = 0; i < 2; ++i) {
     SimulatedRobot robot(shipped_catalogue(), names[i], config);
-    SimulatedRecorder recorder(robot.object(), robot.table(), config);
-    const ActionOutcome out = robot.execute("slide", nominal());
+    SoundRenderer renderer(robot.object(), robot.table(), config);
+    const ActionOutcome out = robot.execute(SoundAction::slide, nominal());
     ASSERT_EQ(out.status, ActionStatus::done) << names[i];
     Rng rng(13);
-    const audio::AudioClip clip = recorder.record(out, rng);
+    const audio::AudioClip clip = renderer.render(out.trace, out.duration_s, rng);
     double bin = 0;
     const auto mag = spectrum(clip, 0, 0, clip.frames(), &bin);
     double high = 0, total = 0;
@@ -262,7 +261,7 @@ double flatness_db(const std::vector<double>& mag, double bin_hz, double from_hz
   return 10 * std::log10(std::exp(log_sum / count) / (sum / count));
 }
 
-TEST(SimulatedRecorder, ThinCupHissesWhereItsWallsModesOverlap) {
+TEST(SoundRenderer, ThinCupHissesWhereItsWallsModesOverlap) {
   // The cup's 0.8 mm wall has dozens of modes per kilohertz, overlapping from 1 kHz: rubbed, it
   // answers as a smooth band (dense_wall_band), as the lab's cup slides did (flatness -4.6 to -7.4
   // dB over 100 Hz-10 kHz). The same cup with only its one-by-one modes (listed in the catalogue:
@@ -270,20 +269,20 @@ TEST(SimulatedRecorder, ThinCupHissesWhereItsWallsModesOverlap) {
   // Same slide, same random numbers.
   const SimConfig config = quiet();
   SimulatedRobot robot(shipped_catalogue(), "plastic_cup", config);
-  const ActionOutcome out = robot.execute("slide", nominal());
+  const ActionOutcome out = robot.execute(SoundAction::slide, nominal());
   ASSERT_EQ(out.status, ActionStatus::done);
-  SimulatedRecorder dense(robot.object(), robot.table(), config);
+  SoundRenderer dense(robot.object(), robot.table(), config);
   ASSERT_FALSE(dense.dense_modes().empty());
   ObjectSpec tonal = robot.object();
   for (const Mode& m : dense.object_modes())
     tonal.listed_modes.push_back({m.frequency_hz, m.gain, m.decay_per_s});
-  SimulatedRecorder listed(tonal, robot.table(), config);
+  SoundRenderer listed(tonal, robot.table(), config);
   ASSERT_TRUE(listed.dense_modes().empty());
   double flatness[2], high_share[2];
-  const SimulatedRecorder* recorders[2] = {&dense, &listed};
+  const SoundRenderer* renderers[2] = {&dense, &listed};
   for (int i = 0; i < 2; ++i) {
     Rng rng(21);
-    const audio::AudioClip clip = recorders[i]->record(out, rng);
+    const audio::AudioClip clip = renderers[i]->render(out.trace, out.duration_s, rng);
     double bin = 0;
     const auto mag = spectrum(clip, 0, 0, clip.frames(), &bin);
     flatness[i] = flatness_db(mag, bin, 100, 10000);
@@ -301,36 +300,36 @@ TEST(SimulatedRecorder, ThinCupHissesWhereItsWallsModesOverlap) {
   EXPECT_LT(flatness[0], -4.6 + 3);
 }
 
-TEST(SimulatedRecorder, ThickMugsWallStaysTonal) {
+TEST(SoundRenderer, ThickMugsWallStaysTonal) {
   // The 5 mm ceramic mug's wall modes stay apart (one or two per kilohertz) below 16 kHz: no band
   // there, its slide is the table's field and its own few modes.
   const SimConfig config = quiet();
-  SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
-                             config);
-  for (const Mode& m : recorder.dense_modes()) EXPECT_GE(m.frequency_hz, 12000);
+  SoundRenderer renderer(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
+                         config);
+  for (const Mode& m : renderer.dense_modes()) EXPECT_GE(m.frequency_hz, 12000);
 }
 
-TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
+TEST(SoundRenderer, ChannelsDifferByTheCapsulesDistances) {
   SimConfig config = quiet();
   config.microphone.position = {-0.4, 0.6, 0.4};
   config.microphone.capsule_spacing = 0.2;
   SimulatedRobot robot(shipped_catalogue(), "coffee_mug", config);
-  SimulatedRecorder recorder(robot.object(), robot.table(), config);
-  const ActionOutcome out = robot.execute("strike", nominal());
+  SoundRenderer renderer(robot.object(), robot.table(), config);
+  const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
   Rng rng(1);
-  const audio::AudioClip clip = recorder.record(out, rng);
+  const audio::AudioClip clip = renderer.render(out.trace, out.duration_s, rng);
   ASSERT_EQ(clip.channels, 2);
-  // Expected: each capsule hears the source (0.02 m above the object's base) at its own distance.
+  // Each capsule hears the object from its own distance: sound at 343 m/s, pressure falling as 1/r.
+  // The object radiates from somewhere on its body; its base is within a few centimetres of it.
   double distance[2];
   for (int ch = 0; ch < 2; ++ch) {
     const double dy =
         config.microphone.position[1] + (ch == 0 ? 0.1 : -0.1) - out.trace.object_position[1];
     const double dx = config.microphone.position[0] - out.trace.object_position[0];
-    const double dz = config.microphone.position[2] - out.trace.object_position[2] - 0.02;
+    const double dz = config.microphone.position[2] - out.trace.object_position[2];
     distance[ch] = std::sqrt(dx * dx + dy * dy + dz * dz);
   }
-  const long expected_lag = std::lround(distance[0] / kSpeedOfSound * clip.sample_rate) -
-                            std::lround(distance[1] / kSpeedOfSound * clip.sample_rate);
+  const double expected_lag = (distance[0] - distance[1]) / kSpeedOfSound * clip.sample_rate;
   // Cross-correlation peak over +-40 samples.
   long best_lag = 0;
   double best = -1;
@@ -344,27 +343,29 @@ TEST(SimulatedRecorder, ChannelsDifferByTheCapsulesDistances) {
       best_lag = lag;
     }
   }
-  EXPECT_EQ(best_lag, expected_lag);
-  EXPECT_NE(expected_lag, 0);
-  // Without reverberation the gains are exactly 1/r: the RMS ratio is the inverse distance ratio
-  // (to float rounding, 1e-4).
+  // The nearer capsule hears it first, by the path difference to within a sample.
+  EXPECT_NEAR(static_cast<double>(best_lag), expected_lag, 1.0);
+  EXPECT_GE(std::abs(expected_lag), 3.0);
+  // Without reverberation the nearer capsule is louder by the inverse distance ratio (within 2%:
+  // the point the object radiates from is not its base).
   double energy[2] = {0, 0};
   for (std::size_t i = 0; i < clip.frames(); ++i)
     for (int ch = 0; ch < 2; ++ch)
       energy[ch] += clip.samples[2 * i + ch] * clip.samples[2 * i + ch];
-  EXPECT_NEAR(std::sqrt(energy[0] / energy[1]), distance[1] / distance[0], 1e-4);
+  EXPECT_NEAR(std::sqrt(energy[0] / energy[1]), distance[1] / distance[0],
+              0.02 * distance[1] / distance[0]);
 }
 
-TEST(SimulatedRecorder, BackgroundNoiseHasTheConfiguredLevel) {
+TEST(SoundRenderer, BackgroundNoiseHasTheConfiguredLevel) {
   SimConfig config;
   config.recording.noise_dbfs = -40;
   config.recording.noise_corner_hz = 0;  // white: the level shaped noise has is tested below
   config.variability.background_db.stddev = 0;
-  SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
-                             config);
+  SoundRenderer renderer(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
+                         config);
   ActionOutcome silent;  // no contacts at all
   Rng rng(9);
-  const audio::AudioClip clip = recorder.record(silent, rng);
+  const audio::AudioClip clip = renderer.render(silent.trace, silent.duration_s, rng);
   // The recorder's opening (exact zeros), then the 3 s recording.
   EXPECT_NEAR(clip.duration_seconds(), config.recording.lead_in_s + 3.0, 1e-4);
   const std::size_t lead =
@@ -389,7 +390,7 @@ double band_power(const audio::AudioClip& clip, int channel, double lo, double h
   return sum;
 }
 
-TEST(SimulatedRecorder, RoomNoiseFallsSixDecibelsPerOctaveAboveItsCorner) {
+TEST(SoundRenderer, RoomNoiseFallsSixDecibelsPerOctaveAboveItsCorner) {
   // A room's noise is mostly low frequencies. Above the corner each octave carries half the power
   // of the one below (a power spectrum ~ 1 / (1 + (f / fc)^2) integrates to fc atan(f / fc)), and
   // it is the room's: both capsules hear the same.
@@ -400,10 +401,10 @@ TEST(SimulatedRecorder, RoomNoiseFallsSixDecibelsPerOctaveAboveItsCorner) {
   // 30 s: the noise's power lies below ~80 Hz, so 3 s would hold only ~500 independent samples.
   config.recording.duration_s = 30;
   config.variability.background_db.stddev = 0;
-  SimulatedRecorder recorder(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
-                             config);
+  SoundRenderer renderer(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
+                         config);
   Rng rng(11);
-  const audio::AudioClip clip = recorder.record(ActionOutcome{}, rng);
+  const audio::AudioClip clip = renderer.render(ContactTrace{}, 0.0, rng);
   std::vector<float> left(clip.frames()), right(clip.frames());
   double energy = 0;
   for (std::size_t i = 0; i < clip.frames(); ++i) {
@@ -424,10 +425,103 @@ TEST(SimulatedRecorder, RoomNoiseFallsSixDecibelsPerOctaveAboveItsCorner) {
   EXPECT_NEAR(corner_ratio / (analytic(20, 50) / analytic(200, 800)), 1.0, 0.15);
   // White when the corner is 0: an octave carries twice the power of the one below.
   config.recording.noise_corner_hz = 0;
-  SimulatedRecorder white(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table,
-                          config);
-  const audio::AudioClip flat = white.record(ActionOutcome{}, rng);
+  SoundRenderer white(shipped_catalogue().object("coffee_mug"), shipped_catalogue().table, config);
+  const audio::AudioClip flat = white.render(ContactTrace{}, 0.0, rng);
   EXPECT_NEAR(band_power(flat, 0, 400, 800) / band_power(flat, 0, 800, 1600), 0.5, 0.05);
+}
+
+// One strike of `object` with `config` (nominal trial, small tilt): its clip and the impact's time
+// in the clip (s).
+std::pair<audio::AudioClip, double> strike_of(const char* object, const SimConfig& config,
+                                              std::uint64_t seed) {
+  SimulatedRobot robot(shipped_catalogue(), object, config);
+  SoundRenderer renderer(robot.object(), robot.table(), config);
+  const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
+  EXPECT_EQ(out.trace.impacts.size(), 1u) << object;
+  Rng rng(seed);
+  const double impact_s = out.trace.impacts.empty() ? 0.0 : out.trace.impacts.front().time_s;
+  return {renderer.render(out.trace, out.duration_s, rng), config.recording.lead_in_s + impact_s};
+}
+
+TEST(SoundRenderer, SilentBeforeTheStrikeLandsThenDecays) {
+  // No motor noise or background (quiet()): before the impact the grasp and the lift make no
+  // sound, so the 0.1 s before it are at least 60 dB below the strike's loudest 5 ms; after it the
+  // sound only dies away: each 50 ms quieter than the one before, over the first 0.3 s.
+  const auto [clip, impact_s] = strike_of("coffee_mug", quiet(), 3);
+  const std::vector<double> level = frame_levels_db(channel_of(clip, 0), clip.sample_rate, 0.005);
+  const auto impact = static_cast<std::size_t>(impact_s / 0.005);
+  const double loudest = *std::max_element(level.begin() + impact, level.end());
+  for (std::size_t t = impact - 20; t + 1 < impact; ++t) EXPECT_LT(level[t], loudest - 60) << t;
+  const std::vector<double> tenths = frame_levels_db(channel_of(clip, 0), clip.sample_rate, 0.05);
+  const auto from = static_cast<std::size_t>(impact_s / 0.05) + 1;
+  for (std::size_t t = from; t < from + 5; ++t) EXPECT_LT(tenths[t + 1], tenths[t]) << t;
+}
+
+TEST(SoundRenderer, OneOnsetPerHit) {
+  // With the lab's background, room and motor noise (the default config), the project's onset
+  // detector finds one onset in a strike, where the object lands.
+  const auto [clip, impact_s] = strike_of("plastic_cup", SimConfig{}, 4);
+  const std::vector<double> onsets = onset_times(channel_of(clip, 0), clip.sample_rate);
+  ASSERT_EQ(onsets.size(), 1u);
+  EXPECT_NEAR(onsets.front(), impact_s, 0.03);
+  // Two hits 0.6 s apart (the same impact twice): two onsets, one at each.
+  SimConfig config;
+  config.variability.background_db.stddev = 0;
+  SimulatedRobot robot(shipped_catalogue(), "plastic_cup", config);
+  const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
+  ASSERT_EQ(out.trace.impacts.size(), 1u);
+  ContactTrace twice = out.trace;
+  twice.impacts.push_back(twice.impacts.front());
+  twice.impacts.back().time_s += 0.6;
+  SoundRenderer renderer(robot.object(), robot.table(), config);
+  Rng rng(4);
+  const audio::AudioClip two = renderer.render(twice, out.duration_s, rng);
+  const std::vector<double> both = onset_times(channel_of(two, 0), two.sample_rate);
+  ASSERT_EQ(both.size(), 2u);
+  const double first_s = config.recording.lead_in_s + out.trace.impacts.front().time_s;
+  EXPECT_NEAR(both[0], first_s, 0.03);
+  EXPECT_NEAR(both[1], first_s + 0.6, 0.03);
+}
+
+TEST(SoundRenderer, FasterImpactIsLouder) {
+  // The limiter out of reach (quiet()), impacts only (the hand pressing the landed object scrapes a
+  // little): the same landing at twice the speed makes a louder clip, by at least 3 dB.
+  SimConfig config = quiet();
+  config.recording.friction_gain = 0;
+  config.recording.output_gain /= 10;  // the faster landing's peak, too, below the ceiling
+  SimulatedRobot robot(shipped_catalogue(), "coffee_mug", config);
+  const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
+  ASSERT_EQ(out.trace.impacts.size(), 1u);
+  SoundRenderer renderer(robot.object(), robot.table(), config);
+  double peak_db[2];
+  for (int i = 0; i < 2; ++i) {
+    ContactTrace trace = out.trace;
+    trace.impacts.front().normal_speed *= (i == 0 ? 1.0 : 2.0);
+    Rng rng(6);
+    const audio::AudioClip clip = renderer.render(trace, out.duration_s, rng);
+    const std::vector<double> level = frame_levels_db(channel_of(clip, 0), clip.sample_rate, 0.005);
+    peak_db[i] = *std::max_element(level.begin(), level.end());
+  }
+  EXPECT_GT(peak_db[1], peak_db[0] + 3) << peak_db[0] << " against " << peak_db[1];
+  EXPECT_LT(peak_db[1], -20.0);  // the limiter did not touch it
+}
+
+TEST(SoundRenderer, SlideIsQuieterThanStrike) {
+  // The lab's strikes peaked about 17 dB above its slides (16.9 dB mug, 17.7 dB cup, by peak 5 ms
+  // frame: real-robot-recordings.md, "Format"). The rendered mug's, default config: 12-22 dB.
+  const SimConfig config;
+  SimulatedRobot robot(shipped_catalogue(), "coffee_mug", config);
+  SoundRenderer renderer(robot.object(), robot.table(), config);
+  double peak_db[2];
+  const SoundAction actions[2] = {SoundAction::strike, SoundAction::slide};
+  for (int i = 0; i < 2; ++i) {
+    Rng rng(8);
+    const audio::AudioClip clip = simulate_recording(robot, renderer, actions[i], rng).clip;
+    const std::vector<double> level = frame_levels_db(channel_of(clip, 0), clip.sample_rate, 0.005);
+    peak_db[i] = *std::max_element(level.begin(), level.end());
+  }
+  EXPECT_GT(peak_db[0] - peak_db[1], 12) << peak_db[0] << " against " << peak_db[1];
+  EXPECT_LT(peak_db[0] - peak_db[1], 22) << peak_db[0] << " against " << peak_db[1];
 }
 
 std::string file_bytes(const std::string& path) {
@@ -435,16 +529,16 @@ std::string file_bytes(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-TEST(SimulatedRecorder, SameSeedGivesIdenticalFiles) {
+TEST(SoundRenderer, SameSeedGivesIdenticalFiles) {
   const auto dir = std::filesystem::temp_directory_path() / "echoplan_sim_seed_test";
   std::filesystem::create_directories(dir);
   SimConfig config;
   SimulatedRobot robot(shipped_catalogue(), "plastic_cup", config);
-  SimulatedRecorder recorder(robot.object(), robot.table(), config);
+  SoundRenderer renderer(robot.object(), robot.table(), config);
   std::vector<std::string> paths;
   for (std::uint64_t seed : {7, 7, 8}) {
     Rng rng(seed);
-    const Recording r = simulate_recording(robot, recorder, "slide", rng);
+    const Recording r = simulate_recording(robot, renderer, SoundAction::slide, rng);
     paths.push_back((dir / ("clip" + std::to_string(paths.size()) + ".wav")).string());
     audio::write_audio(paths.back(), r.clip);
   }
@@ -453,7 +547,7 @@ TEST(SimulatedRecorder, SameSeedGivesIdenticalFiles) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(SimulatedRecorder, LoudnessIsNotAnObjectCue) {
+TEST(SoundRenderer, LoudnessIsNotAnObjectCue) {
   // The lab's four strikes peak within 0.3 dB of each other at -3 dBFS: the recorder's limiter, not
   // the object, sets a strike's peak. (This replaces a test that nearest-centroid on MFCC tells the
   // four simulated objects apart: the lab's objects were not that easy to tell apart, and the
@@ -461,9 +555,10 @@ TEST(SimulatedRecorder, LoudnessIsNotAnObjectCue) {
   const SimConfig config;
   for (const char* name : {"pringles_can", "coffee_mug", "plastic_cup", "paper_base"}) {
     SimulatedRobot robot(shipped_catalogue(), name, config);
-    SimulatedRecorder recorder(robot.object(), robot.table(), config);
+    SoundRenderer renderer(robot.object(), robot.table(), config);
     Rng rng(5);
-    const audio::AudioClip clip = simulate_recording(robot, recorder, "strike", rng).clip;
+    const audio::AudioClip clip =
+        simulate_recording(robot, renderer, SoundAction::strike, rng).clip;
     float peak = 0;
     for (float x : clip.samples) peak = std::max(peak, std::abs(x));
     EXPECT_NEAR(20 * std::log10(peak), config.recording.limiter_ceiling_dbfs, 0.3) << name;
