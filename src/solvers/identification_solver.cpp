@@ -421,7 +421,8 @@ bool IdentificationSolver::backup(NodeId node) {
   return raised || lowered;
 }
 
-void IdentificationSolver::expand(NodeId node, double delta, int forced_action, Budget& budget) {
+void IdentificationSolver::expand(NodeId node, double delta, int forced_action,
+                                  RefineSpend& budget) {
   const bool forced = forced_action >= 0;
   const double reach = std::exp(log_reach_[node]);
   if (!forced && reach * (upper_[node] - lower_[node]) <= delta) return;
@@ -452,7 +453,8 @@ void IdentificationSolver::expand(NodeId node, double delta, int forced_action, 
   if (!budget.stopped && !forced) expanded_at_[node] = std::min(expanded_at_[node], delta);
 }
 
-bool IdentificationSolver::trial(NodeId start, int forced_action, double epsilon, Budget& budget) {
+bool IdentificationSolver::trial(NodeId start, int forced_action, double epsilon,
+                                 RefineSpend& budget) {
   // Far deeper than any useful trial: a belief this deep is certain or its reach is negligible.
   constexpr int kMaxDepth = 10000;
   const std::size_t nodes_before = num_nodes();
@@ -513,7 +515,7 @@ bool IdentificationSolver::trial(NodeId start, int forced_action, double epsilon
   return changed || num_nodes() > nodes_before;
 }
 
-bool IdentificationSolver::Budget::exhausted(const IdentificationSolver& solver) {
+bool IdentificationSolver::RefineSpend::exhausted(const IdentificationSolver& solver) {
   if (stopped) return true;
   if (limits.expansions > 0 && expansions >= limits.expansions) stopped = true;
   if (solver.num_nodes() >= solver.max_nodes_) stopped = true;
@@ -524,7 +526,7 @@ bool IdentificationSolver::Budget::exhausted(const IdentificationSolver& solver)
 }
 
 bool IdentificationSolver::refine_to(NodeId node, int action, const RefineLimits& limits) {
-  Budget budget{limits, std::chrono::steady_clock::now()};
+  RefineSpend budget{limits, std::chrono::steady_clock::now()};
   auto gap = [&] {
     return action < 0 ? upper_[node] - lower_[node] : action_value(node, action).gap();
   };

@@ -58,6 +58,7 @@
 
 #include "pomdp/model.h"
 #include "solvers/alpha_vector_set.h"
+#include "solvers/bounds.h"
 #include "solvers/pair_relaxation_bound.h"
 #include "solvers/sawtooth_upper_bound.h"
 
@@ -65,13 +66,6 @@ namespace echoplan::solvers {
 
 // Why `model` is not an identification problem, or nothing when it is one.
 std::optional<std::string> identification_shape_problem(const pomdp::TabularModel& model);
-
-// Lower and upper bound on one value: lower <= true value <= upper.
-struct Bounds {
-  double lower = 0.0;
-  double upper = 0.0;
-  double gap() const { return upper - lower; }
-};
 
 // When a refinement call stops (whichever comes first); a call that stops early leaves valid
 // bounds.
@@ -213,8 +207,9 @@ class IdentificationSolver {
                    double* plan = nullptr) const;
   // Bellman backup of both bounds; true when either tightened.
   bool backup(NodeId node);
-  // What one refine call may still spend.
-  struct Budget {
+  // What one refine call may still spend (its RefineLimits and what it has spent so far; not an
+  // online solver's per-step Budget, solver.h).
+  struct RefineSpend {
     RefineLimits limits;
     std::chrono::steady_clock::time_point start;
     long expansions = 0;
@@ -223,10 +218,10 @@ class IdentificationSolver {
   };
   // Expands `node` and, recursively, every descendant whose reach · gap exceeds `delta`, then
   // backs it up; at `node` only `forced_action` when it is >= 0 (and regardless of its gap).
-  void expand(NodeId node, double delta, int forced_action, Budget& budget);
+  void expand(NodeId node, double delta, int forced_action, RefineSpend& budget);
   // One HSVI trial from `node` (first action `forced_action` when >= 0); true when it tightened a
   // bound or made a node.
-  bool trial(NodeId node, int forced_action, double epsilon, Budget& budget);
+  bool trial(NodeId node, int forced_action, double epsilon, RefineSpend& budget);
   // refine() (action < 0) or refine_action().
   bool refine_to(NodeId node, int action, const RefineLimits& limits);
 

@@ -212,7 +212,7 @@ void run_solve(const SolveArgs& args) {
   };
   const solvers::BeliefVector& b0 = dense->initial_belief;
   const int best = solver.best_action(b0);
-  const std::vector<off::ValueBounds> q = solver.action_bounds(b0);
+  const std::vector<solvers::Bounds> q = solver.action_bounds(b0);
 
   if (!args.out.empty()) {
     std::error_code ec;
