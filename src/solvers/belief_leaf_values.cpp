@@ -28,6 +28,10 @@ std::vector<double> tabular_belief(const pomdp::Belief& belief, const pomdp::Tab
 PolicyLeafValue::PolicyLeafValue(pomdp::ModelPtr model)
     : model_(std::move(model)), policy_(*model_->tabular()) {}
 
+PolicyLeafValue::PolicyLeafValue(pomdp::ModelPtr model,
+                                 std::shared_ptr<const IdentificationTables> tables)
+    : model_(std::move(model)), policy_(std::move(tables)) {}
+
 void PolicyLeafValue::add(LeafEstimate& estimate, const LeafVisit& visit, Rng& rng) {
   double* returns = estimate.accumulate(SensingPolicy::kThresholds, kRolloutsPerLeafVisit);
   for (int i = 0; i < kRolloutsPerLeafVisit; ++i)
@@ -55,9 +59,15 @@ void PolicyLeafValue::descend(std::size_t depth, int action, int observation) {
 }
 
 ExactLeafValue::ExactLeafValue(pomdp::ModelPtr model, double exact_share, long offline_expansions)
-    : PolicyLeafValue(model),
+    : ExactLeafValue(model, ExactBoundsGuide::read_tables(*model->tabular()), exact_share,
+                     offline_expansions) {}
+
+ExactLeafValue::ExactLeafValue(pomdp::ModelPtr model,
+                               const std::shared_ptr<const IdentificationTables>& tables,
+                               double exact_share, long offline_expansions)
+    : PolicyLeafValue(std::move(model), tables),
       exact_share_(exact_share),
-      guide_(*model->tabular(), offline_expansions) {}
+      guide_(tables, offline_expansions) {}
 
 void ExactLeafValue::add(LeafEstimate& estimate, const LeafVisit& visit, Rng& rng) {
   if (!guided()) return PolicyLeafValue::add(estimate, visit, rng);

@@ -31,6 +31,9 @@ class PolicyLeafValue : public LeafValue {
   const SensingPolicy* belief_model() const override { return &policy_; }
 
  protected:
+  // On identification tables already read (shared with the exact solver).
+  PolicyLeafValue(pomdp::ModelPtr model, std::shared_ptr<const IdentificationTables> tables);
+
   std::vector<double> root_belief_;
 
  private:
@@ -45,11 +48,14 @@ class PolicyLeafValue : public LeafValue {
 // While the exact solver holds the root's belief (ExactBoundsGuide::active()) its lower bound
 // values the leaves, its bounds clamp every node and decide at the root, and it is refined for
 // `exact_share` of every step's budget; otherwise (a start belief far from the problem's) the
-// leaves are valued as by `policy`.
+// leaves are valued as by `policy`. The sensing policy and the exact solver share one
+// IdentificationTables.
 class ExactLeafValue final : public PolicyLeafValue {
  public:
   // `offline_expansions` > 0: the offline solve's expansions (`exact-offline`); 0: none (`exact`).
   ExactLeafValue(pomdp::ModelPtr model, double exact_share, long offline_expansions);
+  ExactLeafValue(pomdp::ModelPtr model, const std::shared_ptr<const IdentificationTables>& tables,
+                 double exact_share, long offline_expansions);
 
   void add(LeafEstimate& estimate, const LeafVisit& visit, Rng& rng) override;
   void reset(const pomdp::Belief& belief) override;
