@@ -36,7 +36,9 @@ pomdp::Problem seed_problem() {
 }
 
 std::shared_ptr<const ObjectIdentificationModel> seed_model() {
-  return std::dynamic_pointer_cast<const ObjectIdentificationModel>(seed_problem().model);
+  const pomdp::ModelPtr model = seed_problem().model;
+  // The same model, shared with the problem's pointer (aliasing constructor).
+  return std::shared_ptr<const ObjectIdentificationModel>(model, model->object_identification());
 }
 
 // The seed model with a recalibrated strike: the pringles can and the mug now sound the same when
