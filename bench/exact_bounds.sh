@@ -43,12 +43,12 @@ for p in ${PROBLEMS:-seed099 seed095 objects4 objects8 objects16 objects64}; do
     set -- $m
     label=$(echo "$4" | tr _ ' ')
     "$bin" solve --problem "$dir/$p.yaml" --method exact --exact-frontier "$1" --exact-search "$2" \
-      --pair-relaxation "$3" --max-iterations "$expansions" --time-limit 600 --epsilon 1e-6 --json \
+      --pair-relaxation "$3" --max-expansions "$expansions" --time-limit 600 --epsilon 1e-6 --json \
       2>/dev/null >"$dir/out.json"
     set -- $(fields "$dir/out.json")
     printf '| %s | exact, %s | %.5f | %.5f | %.4g | %.1f | %s %s |\n' "$p" "$label" "$1" "$2" "$3" "$4" "$5" "$6"
   done
-  "$bin" solve --problem "$dir/$p.yaml" --method point-based --max-iterations "$trials" \
+  "$bin" solve --problem "$dir/$p.yaml" --method point-based --max-trials "$trials" \
     --time-limit 600 --epsilon 1e-6 --json 2>/dev/null >"$dir/out.json"
   set -- $(fields "$dir/out.json")
   printf '| %s | point-based | %.5f | %.5f | %.4g | %.1f | %s %s |\n' "$p" "$1" "$2" "$3" "$4" "$5" "$6"

@@ -2,13 +2,12 @@
 
 #include <fmt/core.h>
 #include <fmt/ranges.h>
-#include <spdlog/spdlog.h>
 
 #include <algorithm>
 
 #include "common/error.h"
 #include "solvers/make_solver.h"
-#include "solvers/offline/offline_policy_solver.h"
+#include "solvers/solver_factory.h"
 
 namespace echoplan::loop {
 
@@ -28,22 +27,12 @@ void check_planner(const solvers::PlannerOverrides& f, const pomdp::Problem& pro
 Planner make_planner(const solvers::PlannerOverrides& f, const pomdp::Problem& problem,
                      const std::string& problem_path) {
   check_planner(f, problem);
+  solvers::BuiltSolver built = solvers::make_solver(f, problem, problem_path);
   Planner p;
-  p.name = f.solver.empty() ? problem.planner.solver : f.solver;
-  p.options = solvers::search_options(f, problem);
-  p.budget = solvers::budget(f, problem);
-  if (p.name == "offline") {
-    // The policy file when given, else the point-based solver run now (to its default precision or
-    // time limit).
-    if (f.policy.empty())
-      spdlog::warn(
-          "no --policy given: solving {} offline now, for up to {} s (save a policy once with "
-          "`echoplan solve --method point-based --out DIR` and pass --policy DIR/policy.json)",
-          problem_path, solvers::offline::SolverOptions{}.time_limit_seconds);
-    p.solver = solvers::offline::make_offline_solver(problem.model, {}, f.policy, problem_path);
-  } else {
-    p.solver = solvers::make_solver(p.name, problem.model, p.options);
-  }
+  p.name = std::move(built.name);
+  p.options = built.options;
+  p.budget = built.budget;
+  p.solver = std::move(built.solver);
   return p;
 }
 

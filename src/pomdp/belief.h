@@ -32,6 +32,11 @@ class Belief {
   virtual std::vector<double> discrete_marginal(int variable) const = 0;
 
   virtual std::unique_ptr<Belief> clone() const = 0;
+
+  // P(tabular state s) for every state of the model's tables when this belief is kept exactly over
+  // them (ExactBelief); nullptr for a belief that only samples (particles). Lets a solver that
+  // needs exact probabilities ask for them without knowing the implementation.
+  virtual const std::vector<double>* exact_probabilities() const { return nullptr; }
 };
 
 using BeliefPtr = std::unique_ptr<Belief>;

@@ -29,6 +29,7 @@ class ExactBelief final : public Belief {
 
   // P(tabular state s) for every s; sums to 1.
   const std::vector<double>& probabilities() const { return probabilities_; }
+  const std::vector<double>* exact_probabilities() const override { return &probabilities_; }
 
  private:
   ModelPtr model_;

@@ -140,8 +140,7 @@ void check_objects(const ObjectProblemData& d, std::vector<std::string>& out) {
 
 std::vector<std::string> check_problem(const Problem& problem) {
   std::vector<std::string> out;
-  if (const auto* object_model =
-          dynamic_cast<const ObjectIdentificationModel*>(problem.model.get())) {
+  if (const ObjectIdentificationModel* object_model = problem.model->object_identification()) {
     check_objects(object_model->data(), out);
   }
   if (const TabularModel* t = problem.model->tabular())

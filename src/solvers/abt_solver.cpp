@@ -1,7 +1,6 @@
 #include "solvers/abt_solver.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -12,23 +11,6 @@
 namespace echoplan::solvers {
 
 namespace {
-// Rollouts of the default policy each time an episode ends at a leaf: they cost a few belief
-// updates each, far less than the episode that reached the leaf.
-constexpr int kRolloutsPerLeafVisit = 1;
-
-// The belief's marginal over discrete variable 0 as probabilities over the tabular states (for a
-// tabular model, discrete[0] is the state index), absorbing states excluded.
-std::vector<double> tabular_belief(const pomdp::Belief& belief, const pomdp::TabularModel& tables) {
-  const std::vector<double> marginal = belief.discrete_marginal(0);
-  std::vector<double> out(tables.num_states(), 0.0);
-  double total = 0.0;
-  for (int s = 0; s < tables.num_states() && s < static_cast<int>(marginal.size()); ++s)
-    if (!tables.terminal(s)) total += out[s] = marginal[s];
-  if (total > 0.0)
-    for (double& p : out) p /= total;
-  return out;
-}
-
 void add_particle_rewards(BeliefNode& node, const std::vector<double>& rewards, double sign) {
   node.particle_reward_sums.resize(rewards.size(), 0.0);
   for (std::size_t a = 0; a < rewards.size(); ++a)
@@ -38,82 +20,26 @@ void add_particle_rewards(BeliefNode& node, const std::vector<double>& rewards, 
 }  // namespace
 
 AbtSolver::AbtSolver(pomdp::ModelPtr model, SearchOptions options)
-    : TreeSearchSolver(std::move(model), options) {
-  const LeafMode mode = this->options().leaf.mode;
-  const bool exact = mode == LeafMode::exact || mode == LeafMode::exact_offline;
-  if (mode == LeafMode::policy || exact) {
-    const pomdp::TabularModel* tables = this->model().tabular();
-    if (tables == nullptr)
-      throw InputError(std::string("the ") + leaf_mode_name(mode) +
-                       " leaf value needs a discrete problem with tables; use --leaf "
-                       "lookahead for this one");
-    if (exact)
-      guide_.emplace(*tables,
-                     mode == LeafMode::exact_offline ? this->options().leaf.offline_expansions : 0);
-    policy_.emplace(*tables);
-  }
-}
+    : TreeSearchSolver(std::move(model), options, LeafUse::belief_tree) {}
 
 void AbtSolver::reset(const pomdp::Belief& belief, Rng& rng) {
   TreeSearchSolver::reset(belief, rng);
-  if (policy_) root_belief_ = tabular_belief(belief, *model().tabular());
-  if (guide_) {
-    guide_->reset(root_belief_);
-    // The exact start belief rather than its particle sample's marginal.
-    if (guide_->active()) root_belief_ = guide_->root_belief();
-  }
+  leaf_value().reset(belief);
 }
 
 void AbtSolver::improve(const Budget& budget, Rng& rng) {
-  if (!guided() || budget.amount <= 0) return TreeSearchSolver::improve(budget, rng);
-  const double share = options().leaf.exact_share;
-  if (budget.kind == Budget::Kind::episodes) {
-    const auto expansions = static_cast<long>(std::llround(share * double(budget.amount)));
-    if (expansions > 0)
-      guide_->refine_root(RefineLimits{RefineLimits{}.target_gap, 0.0, expansions});
-    TreeSearchSolver::improve(
-        Budget::episodes(std::max<std::int64_t>(1, budget.amount - expansions)), rng);
-    return;
-  }
-  const auto start = std::chrono::steady_clock::now();
-  const double seconds = share * double(budget.amount) / 1000.0;
-  if (seconds > 0.0) guide_->refine_root(RefineLimits{RefineLimits{}.target_gap, seconds, 0});
-  const double spent_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  // Whole milliseconds left for the episodes; none (the default share 1): one episode, which
-  // keeps the tree's statistics alive without running over the step's time.
-  const auto left = static_cast<std::int64_t>(double(budget.amount) - spent_ms);
-  TreeSearchSolver::improve(left >= 1 ? Budget::milliseconds(left) : Budget::episodes(1), rng);
+  TreeSearchSolver::improve(leaf_value().episode_budget(budget), rng);
 }
 
 int AbtSolver::best_action() const {
-  if (!guided()) return TreeSearchSolver::best_action();
-  // The action whose lower bound on Q* is highest: the first step of the best plan the exact solver
-  // has found here, whose value it guarantees. The episodes' own Q estimates are not consulted:
-  // moved into the exact bounds they still decided between sensing actions by sampling noise and
-  // lost 15 times as much (docs/BENCHMARKS.md, "Certified share of V*"). When the bounds separate,
-  // this is the action they prove optimal.
-  int best = 0;
-  double best_lower = -std::numeric_limits<double>::infinity();
-  for (int a = 0; a < model().num_actions(); ++a) {
-    const double lower = guide_->action_bounds(a).lower;
-    if (lower > best_lower) best = a, best_lower = lower;
-  }
-  return best;
+  const int decided = leaf_value().root_decision(model().num_actions());
+  return decided >= 0 ? decided : TreeSearchSolver::best_action();
 }
 
 void AbtSolver::update(int action, const pomdp::Observation& observation,
                        const pomdp::Belief& belief_after, Rng& rng) {
   TreeSearchSolver::update(action, observation, belief_after, rng);
-  if (!policy_) return;
-  // The tree's own exact belief follows the real step; the agent's belief (maybe a particle
-  // filter) stands in only when the step is one the tables cannot explain.
-  if (guide_) guide_->follow(action, observation.index);
-  const bool sensing = !policy_->is_terminal(action) && observation.index >= 0;
-  if (!sensing || policy_->update(root_belief_, action, observation.index, belief_scratch_) <= 0.0)
-    root_belief_ = tabular_belief(belief_after, *model().tabular());
-  else
-    root_belief_.swap(belief_scratch_);
+  leaf_value().follow(action, observation, belief_after);
 }
 
 const std::vector<double>& AbtSolver::evaluate_particle(BeliefNode& node, const pomdp::State& state,
@@ -146,18 +72,19 @@ double AbtSolver::action_value(const BeliefNode& node, int a,
   // With the exact belief, the children are weighted by P(o | b, a) instead of by how often the
   // episodes happened to hear o (observations never heard yet share the weight of those that were,
   // in proportion); outcomes that end the episode count 0.
+  const SensingPolicy& beliefs = *leaf_value().belief_model();
   double future = 0.0;
   if (!action.children.empty()) {
     double weighted = 0.0, seen = 0.0;
     for (const ObservationChild& child : action.children) {
       if (child.arrivals == 0) continue;  // every episode through it was revised away
-      const double p = policy_->observation_probability(*belief, a, child.observation.index);
+      const double p = beliefs.observation_probability(*belief, a, child.observation.index);
       weighted += p * child.node->value;
       seen += p;
     }
-    if (seen > 0.0) future = policy_->live_probability(*belief, a) * weighted / seen;
+    if (seen > 0.0) future = beliefs.live_probability(*belief, a) * weighted / seen;
   }
-  return policy_->expected_reward(*belief, a) + gamma * future;
+  return beliefs.expected_reward(*belief, a) + gamma * future;
 }
 
 void AbtSolver::refresh_child(ActionNode& action, std::size_t child) {
@@ -193,14 +120,11 @@ void AbtSolver::simulate_from(Episode& episode, BeliefNode* node, pomdp::State s
     if (leaf_or_expand(*node, depth)) {
       std::vector<double> before;
       if (keep) before = node->leaf.sums();
-      if (guided())
-        node->leaf.set(guide_->leaf_value(path_nodes_[static_cast<std::size_t>(depth)]));
-      else if (policy_)
-        node->leaf.add_rollouts(*policy_, path_beliefs_[static_cast<std::size_t>(depth)],
-                                options().max_depth - depth, kRolloutsPerLeafVisit, rng);
-      else
-        node->leaf.add(options().leaf, m, state, options().max_depth - depth, rng,
-                       depth > 0 ? &one_step_each_ : nullptr);
+      leaf_value().add(
+          node->leaf,
+          LeafVisit{m, state, static_cast<std::size_t>(depth), options().max_depth - depth,
+                    depth > 0 ? &one_step_each_ : nullptr},
+          rng);
       if (keep) {
         step.leaf_contribution = node->leaf.sums();
         before.resize(step.leaf_contribution.size(), 0.0);
@@ -233,16 +157,7 @@ void AbtSolver::simulate_from(Episode& episode, BeliefNode* node, pomdp::State s
     action.future_sum += c.counted_value;
     step.child = static_cast<std::ptrdiff_t>(child);
     episode.push_back(std::move(step));
-    if (policy_) {
-      path_beliefs_.resize(static_cast<std::size_t>(depth) + 2);
-      policy_->update(path_beliefs_[static_cast<std::size_t>(depth)], a, c.observation.index,
-                      path_beliefs_.back());
-    }
-    if (guided()) {
-      path_nodes_.resize(static_cast<std::size_t>(depth) + 2);
-      path_nodes_.back() =
-          guide_->child(path_nodes_[static_cast<std::size_t>(depth)], a, c.observation.index);
-    }
+    leaf_value().descend(static_cast<std::size_t>(depth), a, c.observation.index);
     node = c.node.get();
     state = std::move(result.next);
   }
@@ -258,19 +173,17 @@ void AbtSolver::backup(const Episode& episode, std::size_t last) {
       action.value = action_value(node, step.action, step_belief(i));
     }
     recompute_node_value(node);
-    if (guided()) node.value = guide_->clamp(path_nodes_[i], node.value);
+    node.value = leaf_value().clamp(i, node.value);
   }
 }
 
 void AbtSolver::run_episode(Rng& rng) {
   // The root's particle set changes on update (replenishment), so its Q values are refreshed here.
   BeliefNode& top = root();
+  leaf_value().start_episode();
   for (std::size_t a = 0; a < top.actions.size(); ++a)
     if (top.actions[a] && top.actions[a]->visits > 0)
-      top.actions[a]->value =
-          action_value(top, static_cast<int>(a), policy_ ? &root_belief_ : nullptr);
-  if (policy_) path_beliefs_.assign(1, root_belief_);
-  if (guided()) path_nodes_.assign(1, guide_->root());
+      top.actions[a]->value = action_value(top, static_cast<int>(a), step_belief(0));
 
   if (!options().keep_episodes) {
     path_.clear();
@@ -345,7 +258,7 @@ RevisionStats AbtSolver::revise(const ModelChange& change, Rng& rng) {
   // belief, which the table also changed: every node would need revaluing, not only those on the
   // affected episodes; the exact leaves' solver was built from the old table. Rebuilding the tree
   // is the honest cost there.
-  if (policy_)
+  if (leaf_value().belief_model() != nullptr)
     throw std::logic_error(std::string("revise() works with the lookahead, heuristic and rollout "
                                        "leaves; with the ") +
                            leaf_mode_name(options().leaf.mode) +

@@ -29,13 +29,10 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <vector>
 
-#include "solvers/exact_bounds_guide.h"
 #include "solvers/model_change.h"
 #include "solvers/search_tree.h"
-#include "solvers/sensing_policy.h"
 
 namespace echoplan::solvers {
 
@@ -100,17 +97,17 @@ class AbtSolver final : public TreeSearchSolver {
   const std::vector<double>& evaluate_particle(BeliefNode& node, const pomdp::State& state,
                                                Rng& rng);
   // Q(b, a) from the action's children and the immediate reward: its expectation under the node's
-  // exact `belief` when there is one (leaf mode `policy`), else the mean over the node's particles.
+  // exact `belief` when there is one (LeafValue::exact_belief()), else the mean over the node's
+  // particles.
   double action_value(const BeliefNode& node, int action, const std::vector<double>* belief) const;
-  // The exact belief at step `i` of the episode being walked or backed up (leaf mode `policy`),
-  // else nullptr.
+  // The exact belief at step `i` of the episode being walked or backed up (leaf modes `policy`,
+  // `exact`, `exact-offline`), else nullptr.
   const std::vector<double>* step_belief(std::size_t i) const {
-    return policy_ ? &path_beliefs_[i] : nullptr;
+    return leaf_value().exact_belief(i);
   }
   // Walks `episode` on from `node` at `depth` with `state` (filed there unless depth is 0). The
   // steps record the path (node, action, branch); with keep_episodes also everything revise()
-  // needs to take the step back out. Leaf mode `policy`: path_beliefs_ must hold the beliefs of
-  // steps 0..depth; the walk appends the rest.
+  // needs to take the step back out. The leaf value follows the walk (LeafValue::descend()).
   void simulate_from(Episode& episode, BeliefNode* node, pomdp::State state, int depth, Rng& rng);
   // Takes step `i` (depth > 0) of `episode` out of the tree's statistics.
   void remove_step(const EpisodeStep& step);
@@ -123,20 +120,8 @@ class AbtSolver final : public TreeSearchSolver {
   pomdp::Observation couple_observation(const pomdp::Model& before, const EpisodeStep& step,
                                         const pomdp::State& next, Rng& rng) const;
 
-  std::vector<Episode> episodes_;  // with keep_episodes
-  Episode path_;                   // the current episode otherwise (reused)
-  // Leaf mode `policy` only: the default policy, and the root's exact belief over the model's
-  // tabular states (from the belief at reset, then by Bayes' rule from step to step).
-  std::optional<SensingPolicy> policy_;
-  std::vector<double> root_belief_;
-  // Leaf modes `exact` and `exact-offline` only: the exact solver's bounds, and the solver node of
-  // each step of the episode being walked (path_nodes_[i] at depth i).
-  std::optional<ExactBoundsGuide> guide_;
-  std::vector<ExactBoundsGuide::NodeId> path_nodes_;
-  bool guided() const { return guide_ && guide_->active(); }
-  // The exact belief at each step of the episode being walked (path_beliefs_[i] at depth i).
-  std::vector<std::vector<double>> path_beliefs_;
-  std::vector<double> belief_scratch_;
+  std::vector<Episode> episodes_;                 // with keep_episodes
+  Episode path_;                                  // the current episode otherwise (reused)
   std::vector<pomdp::StepResult> one_step_each_;  // reused between particles
   std::vector<double> rewards_;                   // reused between particles
 };

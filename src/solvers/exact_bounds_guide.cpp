@@ -27,15 +27,24 @@ IdentificationOptions planner_solver_options() {
 }
 }  // namespace
 
-ExactBoundsGuide::ExactBoundsGuide(const pomdp::TabularModel& model, long offline_expansions)
-    : tables_(&model) {
+std::shared_ptr<const IdentificationTables> ExactBoundsGuide::read_tables(
+    const pomdp::TabularModel& model) {
   if (auto why = identification_shape_problem(model))
     throw InputError(
         "the exact leaf values need an identification problem (the state fixed until an action "
         "ends the episode), but " +
         *why + "; use --leaf lookahead for this one");
+  return read_identification_tables(model);
+}
+
+ExactBoundsGuide::ExactBoundsGuide(const pomdp::TabularModel& model, long offline_expansions)
+    : ExactBoundsGuide(read_tables(model), offline_expansions) {}
+
+ExactBoundsGuide::ExactBoundsGuide(std::shared_ptr<const IdentificationTables> tables,
+                                   long offline_expansions)
+    : tables_(std::move(tables)) {
   if (offline_expansions > 0) {
-    offline_.emplace(model, planner_solver_options());
+    offline_.emplace(tables_, planner_solver_options());
     offline_->refine(offline_->root(), RefineLimits{0.0, 0.0, offline_expansions});
   }
 }
@@ -44,7 +53,7 @@ void ExactBoundsGuide::reset(const std::vector<double>& belief) {
   if (offline_)
     solver_.emplace(*offline_);
   else
-    solver_.emplace(*tables_, planner_solver_options());
+    solver_.emplace(tables_, planner_solver_options());
   evaluated_.clear();
   const std::vector<double> start = solver_->belief(solver_->root());
   double distance = 0.0;

@@ -19,6 +19,7 @@
 // that solve; without, every trial starts from the problem file alone.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -32,8 +33,13 @@ class ExactBoundsGuide {
   using NodeId = IdentificationSolver::NodeId;
   static constexpr NodeId kNone = IdentificationSolver::kEnded;
 
+  // `model`'s identification tables; throws InputError naming the reason when it is not an
+  // identification problem.
+  static std::shared_ptr<const IdentificationTables> read_tables(const pomdp::TabularModel& model);
   // Throws InputError naming the reason when `model` is not an identification problem.
   ExactBoundsGuide(const pomdp::TabularModel& model, long offline_expansions);
+  // The same on tables from read_tables() (shared with the sensing policy of the same leaves).
+  ExactBoundsGuide(std::shared_ptr<const IdentificationTables> tables, long offline_expansions);
 
   // Starts a trial at `belief` (over the model's states). The solver's root is the problem's start
   // belief; a `belief` further from it than a particle sample's noise (total variation > 0.1)
@@ -63,9 +69,9 @@ class ExactBoundsGuide {
   const IdentificationSolver& solver() const { return *solver_; }
 
  private:
-  std::optional<IdentificationSolver> offline_;  // the offline solve every trial starts from
-  std::optional<IdentificationSolver> solver_;   // this trial's
-  const pomdp::TabularModel* tables_;            // for building a fresh solver (not owned)
+  std::optional<IdentificationSolver> offline_;         // the offline solve every trial starts from
+  std::optional<IdentificationSolver> solver_;          // this trial's
+  std::shared_ptr<const IdentificationTables> tables_;  // every trial's solver is built on them
   NodeId root_ = kNone;
   std::vector<char> evaluated_;  // per solver node: leaf_value() already looked ahead once
 };

@@ -14,10 +14,6 @@ namespace echoplan::solvers {
 
 namespace {
 
-// Transition and reward entries are compared exactly against 0 and 1 where the shape depends on
-// them; tables read from files keep exact zeros, and a row sum is checked elsewhere.
-constexpr double kZero = 0.0;
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -34,83 +30,36 @@ std::size_t default_max_nodes(int live_states, int action_observation_pairs) {
 
 }  // namespace
 
-std::optional<std::string> identification_shape_problem(const pomdp::TabularModel& m) {
-  const int S = m.num_states(), A = m.num_actions();
-  const std::vector<double> b0 = m.initial_belief();
-  for (int s = 0; s < S; ++s) {
-    if (!m.terminal(s)) continue;
-    for (int a = 0; a < A; ++a) {
-      if (m.transition(s, a, s) != 1.0 || m.reward(s, a) != kZero)
-        return fmt::format("absorbing state {} is left or pays a reward under action {}", s, a);
-    }
-    if (b0[s] > kZero) return fmt::format("the start belief puts mass on absorbing state {}", s);
-  }
-  bool any_terminal_action = false;
-  for (int a = 0; a < A; ++a) {
-    bool ends_everywhere = true;
-    for (int s = 0; s < S; ++s) {
-      if (m.terminal(s)) continue;
-      for (int t = 0; t < S; ++t) {
-        if (t == s || m.terminal(t) || m.transition(s, a, t) <= kZero) continue;
-        return fmt::format(
-            "action {} moves state {} to state {}: the hidden state must stay fixed until an "
-            "action ends the episode (for example, Tiger's doors reset the state instead)",
-            a, s, t);
-      }
-      if (m.transition(s, a, s) > kZero) ends_everywhere = false;
-    }
-    any_terminal_action = any_terminal_action || ends_everywhere;
-  }
-  if (!any_terminal_action)
-    return std::string(
-        "no action ends the episode from every state (an identification problem ends by "
-        "committing, e.g. sorting the object)");
-  return std::nullopt;
+namespace {
+// `m`, once identification_shape_problem() has found nothing wrong with it.
+const pomdp::TabularModel& identification_model(const pomdp::TabularModel& m) {
+  if (auto why = identification_shape_problem(m))
+    throw std::invalid_argument("not an identification problem: " + *why);
+  return m;
 }
+}  // namespace
 
 IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m,
                                            const IdentificationOptions& options)
-    : options_(options) {
-  if (auto why = identification_shape_problem(m)) {
-    throw std::invalid_argument("not an identification problem: " + *why);
-  }
-  num_states_ = m.num_states();
-  num_actions_ = m.num_actions();
-  num_observations_ = m.num_observations();
-  discount_ = m.discount();
-  for (int s = 0; s < num_states_; ++s)
-    if (!m.terminal(s)) live_states_.push_back(s);
-  num_live_ = static_cast<int>(live_states_.size());
+    : IdentificationSolver(read_identification_tables(identification_model(m)), options) {}
+
+IdentificationSolver::IdentificationSolver(std::shared_ptr<const IdentificationTables> tables,
+                                           const IdentificationOptions& options)
+    : tables_(std::move(tables)), options_(options) {
+  const IdentificationTables& t = *tables_;
+  num_states_ = t.states;
+  num_actions_ = t.actions;
+  num_observations_ = t.observations;
+  discount_ = t.discount;
+  num_live_ = t.live_states;
   max_nodes_ = options.max_nodes > 0
                    ? options.max_nodes
                    : default_max_nodes(num_live_, num_actions_ * num_observations_);
 
   const int L = num_live_, O = num_observations_, A = num_actions_;
   kind_.assign(A, ActionKind::terminal);
-  reward_.assign(std::size_t(A) * L, 0.0);
-  stay_.assign(std::size_t(A) * L, 0.0);
-  emission_.assign(std::size_t(A) * O * L, 0.0);
-  for (int a = 0; a < A; ++a) {
-    for (int l = 0; l < L; ++l) {
-      const int s = live_states_[l];
-      reward_[a * L + l] = m.reward(s, a);
-      stay_[a * L + l] = m.transition(s, a, s);
-      if (stay_[a * L + l] > kZero) kind_[a] = ActionKind::sensing;
-      for (int o = 0; o < O; ++o)
-        emission_[(std::size_t(a) * O + o) * L + l] = stay_[a * L + l] * m.observation(a, s, o);
-    }
-  }
-  // The value of a known state: with the state fixed, the best stationary plan either ends the
-  // episode now or repeats one sensing action for ever (until a collision ends it).
-  known_value_.assign(L, -std::numeric_limits<double>::infinity());
-  for (int l = 0; l < L; ++l) {
-    for (int a = 0; a < A; ++a) {
-      const double r = reward_[a * L + l];
-      const double v =
-          kind_[a] == ActionKind::terminal ? r : r / (1.0 - discount_ * stay_[a * L + l]);
-      known_value_[l] = std::max(known_value_[l], v);
-    }
-  }
+  for (int a = 0; a < A; ++a)
+    if (!t.terminal[a]) kind_[a] = ActionKind::sensing;
   // The plans every belief starts with: commit now (one vector per terminal action). The upper
   // bound's vectors: each action followed by knowing the state (its FIB vectors, since the state
   // is fixed); the corners are then the known-state values.
@@ -118,22 +67,22 @@ IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m,
   double reward_max = 0.0, reward_min = 0.0;
   for (int a = 0; a < A; ++a) {
     for (int l = 0; l < L; ++l) {
-      const double r = reward_[a * L + l];
+      const double r = tables_->reward[a * L + l];
       reward_max = std::max(reward_max, r);
       reward_min = std::min(reward_min, r);
       one_more_sensing[a][l] =
-          kind_[a] == ActionKind::terminal ? r : r + discount_ * stay_[a * L + l] * known_value_[l];
+          kind_[a] == ActionKind::terminal
+              ? r
+              : r + discount_ * tables_->stay[a * L + l] * tables_->known_value[l];
     }
     if (kind_[a] == ActionKind::terminal)
-      add_plan(AlphaVector{a, std::vector<double>(&reward_[a * L], &reward_[a * L] + L)});
+      add_plan(AlphaVector{
+          a, std::vector<double>(&tables_->reward[a * L], &tables_->reward[a * L] + L)});
   }
   upper_points_ = SawtoothUpperBound(std::move(one_more_sensing),
                                      (reward_max - reward_min) / (1.0 - discount_));
   if (options_.pair_upper_bound) {
-    IdentificationTables tables{L,       A,         O,           discount_, std::vector<bool>(A),
-                                reward_, emission_, known_value_};
-    for (int a = 0; a < A; ++a) tables.terminal[a] = kind_[a] == ActionKind::terminal;
-    pair_bound_ = PairRelaxationBound(tables, options_.pair_relaxation);
+    pair_bound_ = PairRelaxationBound(t, options_.pair_relaxation);
   }
 
   // The codes only need to be fixed and well mixed, not drawn from the user's seed (they do not
@@ -142,11 +91,11 @@ IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m,
   pair_code_.resize(std::size_t(A) * O);
   for (Key& k : pair_code_) k = Key{splitmix64_next(state), splitmix64_next(state)};
 
-  std::vector<double> b0_all = m.initial_belief();
+  const std::vector<double>& b0_all = t.initial_belief;
   std::vector<double> b0(L);
   double total = 0.0;
-  for (int l = 0; l < L; ++l) total += b0_all[live_states_[l]];
-  for (int l = 0; l < L; ++l) b0[l] = b0_all[live_states_[l]] / total;
+  for (int l = 0; l < L; ++l) total += b0_all[t.model_state[l]];
+  for (int l = 0; l < L; ++l) b0[l] = b0_all[t.model_state[l]] / total;
   insert(Key{}, b0.data(), 0.0, nullptr);
   belief_scratch_.resize(L);
   plan_scratch_.resize(L);
@@ -155,7 +104,7 @@ IdentificationSolver::IdentificationSolver(const pomdp::TabularModel& m,
 
 double IdentificationSolver::expected_reward(const double* b, int a) const {
   double r = 0.0;
-  for (int l = 0; l < num_live_; ++l) r += b[l] * reward_[a * num_live_ + l];
+  for (int l = 0; l < num_live_; ++l) r += b[l] * tables_->reward[a * num_live_ + l];
   return r;
 }
 
@@ -170,12 +119,12 @@ Bounds IdentificationSolver::simple_bounds(const double* b, double* plan) const 
     } else {
       double future = 0.0;
       for (int l = 0; l < num_live_; ++l)
-        future += b[l] * stay_[a * num_live_ + l] * known_value_[l];
+        future += b[l] * tables_->stay[a * num_live_ + l] * tables_->known_value[l];
       upper = std::max(upper, r + discount_ * future);
     }
   }
   if (plan != nullptr)
-    std::copy(&reward_[best * num_live_], &reward_[(best + 1) * num_live_], plan);
+    std::copy(&tables_->reward[best * num_live_], &tables_->reward[(best + 1) * num_live_], plan);
   if (pair_bound_.num_pairs() > 0) upper = std::min(upper, pair_bound_.value(b));
   return {lower, std::max(lower, upper)};
 }
@@ -226,7 +175,7 @@ void IdentificationSolver::refresh(NodeId node) {
 }
 
 double IdentificationSolver::child_belief(const double* b, int a, int o, double* out) const {
-  const double* e = &emission_[(std::size_t(a) * num_observations_ + o) * num_live_];
+  const double* e = &tables_->emission[(std::size_t(a) * num_observations_ + o) * num_live_];
   double weight = 0.0;
   for (int l = 0; l < num_live_; ++l) {
     out[l] = b[l] * e[l];
@@ -327,7 +276,7 @@ Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView
   const double* b = node_belief(node);
   const double r = expected_reward(b, a);
   const int L = num_live_;
-  if (plan != nullptr) std::copy(&reward_[a * L], &reward_[a * L] + L, plan);
+  if (plan != nullptr) std::copy(&tables_->reward[a * L], &tables_->reward[a * L] + L, plan);
   if (kind_[a] == ActionKind::terminal) return {r, r};
   double* scratch = belief_scratch_.data();
   double* child_plan = plan_scratch_.data();
@@ -335,7 +284,7 @@ Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView
   for (int o = 0; o < num_observations_; ++o) {
     ChildView& c = children[o];
     c = ChildView{};
-    const double* e = &emission_[(std::size_t(a) * num_observations_ + o) * L];
+    const double* e = &tables_->emission[(std::size_t(a) * num_observations_ + o) * L];
     const Key key = child_key(node, a, o);
     if (const NodeId found = index_.find(key); found != kEnded) {
       c.id = found;
@@ -366,7 +315,7 @@ Bounds IdentificationSolver::action_value(NodeId node, int action) const {
 double IdentificationSolver::observation_probability(NodeId node, int action, int o) const {
   if (kind_[action] != ActionKind::sensing) return 0.0;
   const double* b = node_belief(node);
-  const double* e = &emission_[(std::size_t(action) * num_observations_ + o) * num_live_];
+  const double* e = &tables_->emission[(std::size_t(action) * num_observations_ + o) * num_live_];
   double p = 0.0;
   for (int l = 0; l < num_live_; ++l) p += b[l] * e[l];
   return p;
@@ -375,7 +324,7 @@ double IdentificationSolver::observation_probability(NodeId node, int action, in
 std::vector<double> IdentificationSolver::belief(NodeId node) const {
   std::vector<double> full(num_states_, 0.0);
   const double* b = node_belief(node);
-  for (int l = 0; l < num_live_; ++l) full[live_states_[l]] = b[l];
+  for (int l = 0; l < num_live_; ++l) full[tables_->model_state[l]] = b[l];
   return full;
 }
 
@@ -421,7 +370,8 @@ bool IdentificationSolver::backup(NodeId node) {
   return raised || lowered;
 }
 
-void IdentificationSolver::expand(NodeId node, double delta, int forced_action, Budget& budget) {
+void IdentificationSolver::expand(NodeId node, double delta, int forced_action,
+                                  RefineSpend& budget) {
   const bool forced = forced_action >= 0;
   const double reach = std::exp(log_reach_[node]);
   if (!forced && reach * (upper_[node] - lower_[node]) <= delta) return;
@@ -452,7 +402,8 @@ void IdentificationSolver::expand(NodeId node, double delta, int forced_action, 
   if (!budget.stopped && !forced) expanded_at_[node] = std::min(expanded_at_[node], delta);
 }
 
-bool IdentificationSolver::trial(NodeId start, int forced_action, double epsilon, Budget& budget) {
+bool IdentificationSolver::trial(NodeId start, int forced_action, double epsilon,
+                                 RefineSpend& budget) {
   // Far deeper than any useful trial: a belief this deep is certain or its reach is negligible.
   constexpr int kMaxDepth = 10000;
   const std::size_t nodes_before = num_nodes();
@@ -513,7 +464,7 @@ bool IdentificationSolver::trial(NodeId start, int forced_action, double epsilon
   return changed || num_nodes() > nodes_before;
 }
 
-bool IdentificationSolver::Budget::exhausted(const IdentificationSolver& solver) {
+bool IdentificationSolver::RefineSpend::exhausted(const IdentificationSolver& solver) {
   if (stopped) return true;
   if (limits.expansions > 0 && expansions >= limits.expansions) stopped = true;
   if (solver.num_nodes() >= solver.max_nodes_) stopped = true;
@@ -524,7 +475,7 @@ bool IdentificationSolver::Budget::exhausted(const IdentificationSolver& solver)
 }
 
 bool IdentificationSolver::refine_to(NodeId node, int action, const RefineLimits& limits) {
-  Budget budget{limits, std::chrono::steady_clock::now()};
+  RefineSpend budget{limits, std::chrono::steady_clock::now()};
   auto gap = [&] {
     return action < 0 ? upper_[node] - lower_[node] : action_value(node, action).gap();
   };

@@ -58,20 +58,12 @@
 
 #include "pomdp/model.h"
 #include "solvers/alpha_vector_set.h"
+#include "solvers/bounds.h"
+#include "solvers/identification_tables.h"
 #include "solvers/pair_relaxation_bound.h"
 #include "solvers/sawtooth_upper_bound.h"
 
 namespace echoplan::solvers {
-
-// Why `model` is not an identification problem, or nothing when it is one.
-std::optional<std::string> identification_shape_problem(const pomdp::TabularModel& model);
-
-// Lower and upper bound on one value: lower <= true value <= upper.
-struct Bounds {
-  double lower = 0.0;
-  double upper = 0.0;
-  double gap() const { return upper - lower; }
-};
 
 // When a refinement call stops (whichever comes first); a call that stops early leaves valid
 // bounds.
@@ -120,6 +112,9 @@ class IdentificationSolver {
   // Reads the tables once (the model is not kept). Throws std::invalid_argument with
   // identification_shape_problem()'s reason when the model does not qualify.
   explicit IdentificationSolver(const pomdp::TabularModel& model,
+                                const IdentificationOptions& options = {});
+  // The same on tables already read (shared with other users of the same problem).
+  explicit IdentificationSolver(std::shared_ptr<const IdentificationTables> tables,
                                 const IdentificationOptions& options = {});
 
   NodeId root() const { return 0; }
@@ -213,8 +208,9 @@ class IdentificationSolver {
                    double* plan = nullptr) const;
   // Bellman backup of both bounds; true when either tightened.
   bool backup(NodeId node);
-  // What one refine call may still spend.
-  struct Budget {
+  // What one refine call may still spend (its RefineLimits and what it has spent so far; not an
+  // online solver's per-step Budget, solver.h).
+  struct RefineSpend {
     RefineLimits limits;
     std::chrono::steady_clock::time_point start;
     long expansions = 0;
@@ -223,23 +219,19 @@ class IdentificationSolver {
   };
   // Expands `node` and, recursively, every descendant whose reach · gap exceeds `delta`, then
   // backs it up; at `node` only `forced_action` when it is >= 0 (and regardless of its gap).
-  void expand(NodeId node, double delta, int forced_action, Budget& budget);
+  void expand(NodeId node, double delta, int forced_action, RefineSpend& budget);
   // One HSVI trial from `node` (first action `forced_action` when >= 0); true when it tightened a
   // bound or made a node.
-  bool trial(NodeId node, int forced_action, double epsilon, Budget& budget);
+  bool trial(NodeId node, int forced_action, double epsilon, RefineSpend& budget);
   // refine() (action < 0) or refine_action().
   bool refine_to(NodeId node, int action, const RefineLimits& limits);
 
   int num_states_ = 0, num_actions_ = 0, num_observations_ = 0, num_live_ = 0;
   double discount_ = 0.0;
   std::size_t max_nodes_ = 0;
-  std::vector<int> live_states_;     // model state of each live index
-  std::vector<ActionKind> kind_;     // per action
-  std::vector<double> reward_;       // [a * L + l] = R(live l, a)
-  std::vector<double> emission_;     // [(a * O + o) * L + l] = stay(l, a) · O(a, l, o)
-  std::vector<double> stay_;         // [a * L + l] = P(state kept | live l, a)
-  std::vector<double> known_value_;  // [l] = V*(state l known)
-  std::vector<Key> pair_code_;       // [a * O + o]
+  std::shared_ptr<const IdentificationTables> tables_;  // the problem, over live states
+  std::vector<ActionKind> kind_;                        // per action
+  std::vector<Key> pair_code_;                          // [a * O + o]
   IdentificationOptions options_;
   AlphaVectorSet plans_;             // over live states: the frontier's lower bound
   std::vector<double> plan_matrix_;  // [k * L + l]: plans_'s vectors, contiguous for the scans

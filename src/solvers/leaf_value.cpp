@@ -1,11 +1,12 @@
 #include "solvers/leaf_value.h"
 
 #include <algorithm>
-#include <limits>
 #include <stdexcept>
 
 #include "common/error.h"
+#include "solvers/belief_leaf_values.h"
 #include "solvers/identification_solver.h"
+#include "solvers/state_leaf_values.h"
 
 namespace echoplan::solvers {
 
@@ -45,67 +46,38 @@ LeafMode default_leaf_mode(const std::string& solver, const pomdp::Model& model)
   return LeafMode::lookahead;
 }
 
-namespace {
-
-double random_rollout(const pomdp::Model& model, pomdp::State state, int steps_left, Rng& rng) {
-  const double gamma = model.spec().discount;
-  const int actions = model.num_actions();
-  double total = 0.0;
-  double weight = 1.0;
-  for (int k = 0; k < steps_left; ++k) {
-    const int action = static_cast<int>(uniform01(rng) * actions);
-    pomdp::StepResult step = model.step(state, action, rng);
-    total += weight * step.reward;
-    weight *= gamma;
-    if (step.terminal) return total;
-    state = std::move(step.next);
-  }
-  // Cut off by the depth limit: the model's heuristic stands in for the rest.
-  return total + weight * model.heuristic_value(state);
-}
-
-}  // namespace
-
-void LeafEstimate::add(const LeafOptions& options, const pomdp::Model& model,
-                       const pomdp::State& state, int steps_left, Rng& rng,
-                       const std::vector<pomdp::StepResult>* one_step_each) {
-  if (options.mode == LeafMode::policy || options.mode == LeafMode::exact ||
-      options.mode == LeafMode::exact_offline)
-    throw std::logic_error(std::string("LeafEstimate: the ") + leaf_mode_name(options.mode) +
-                           " leaf value is not added particle by particle");
-  ++count_;
-  switch (options.mode) {
+std::unique_ptr<LeafValue> make_leaf_value(const LeafOptions& options, const pomdp::ModelPtr& model,
+                                           LeafUse use) {
+  const LeafMode mode = options.mode;
+  switch (mode) {
+    case LeafMode::lookahead:
+      return std::make_unique<LookaheadLeafValue>();
+    case LeafMode::heuristic:
+      return std::make_unique<HeuristicLeafValue>();
+    case LeafMode::rollout:
+      return std::make_unique<RolloutLeafValue>();
     case LeafMode::policy:
     case LeafMode::exact:
     case LeafMode::exact_offline:
-      return;  // refused above
-    case LeafMode::heuristic:
-      sums_.resize(1, 0.0);
-      sums_[0] += model.heuristic_value(state);
-      return;
-    case LeafMode::rollout:
-      sums_.resize(1, 0.0);
-      sums_[0] += random_rollout(model, state, steps_left, rng);
-      return;
-    case LeafMode::lookahead: {
-      const int actions = model.num_actions();
-      const double gamma = model.spec().discount;
-      sums_.resize(actions, 0.0);
-      for (int a = 0; a < actions; ++a) {
-        const pomdp::StepResult step =
-            one_step_each ? (*one_step_each)[a] : model.step(state, a, rng);
-        sums_[a] += step.reward + (step.terminal ? 0.0 : gamma * model.heuristic_value(step.next));
-      }
-      return;
-    }
+      break;
   }
+  // POMCP stays the textbook algorithm: its leaves see states, not beliefs.
+  if (use == LeafUse::state_tree)
+    throw InputError(std::string("the ") + leaf_mode_name(mode) +
+                     " leaf value is ABT's; POMCP takes lookahead, heuristic or rollout");
+  if (model->tabular() == nullptr)
+    throw InputError(std::string("the ") + leaf_mode_name(mode) +
+                     " leaf value needs a discrete problem with tables; use --leaf "
+                     "lookahead for this one");
+  if (mode == LeafMode::policy) return std::make_unique<PolicyLeafValue>(model);
+  return std::make_unique<ExactLeafValue>(
+      model, options.exact_share, mode == LeafMode::exact_offline ? options.offline_expansions : 0);
 }
 
-void LeafEstimate::add_rollouts(const SensingPolicy& policy, const std::vector<double>& belief,
-                                int steps_left, int rollouts, Rng& rng) {
-  sums_.resize(SensingPolicy::kThresholds, 0.0);
-  for (int i = 0; i < rollouts; ++i) policy.rollout(belief, steps_left, rng, sums_.data());
-  count_ += rollouts;
+double* LeafEstimate::accumulate(std::size_t accumulators, int samples) {
+  sums_.resize(accumulators, 0.0);
+  count_ += samples;
+  return sums_.data();
 }
 
 double LeafEstimate::value() const {

@@ -34,12 +34,16 @@
 // averages over more than one state before the search branches below it.
 #pragma once
 
+#include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "common/rng.h"
+#include "pomdp/belief.h"
 #include "pomdp/model.h"
 #include "solvers/sensing_policy.h"
+#include "solvers/solver.h"
 
 namespace echoplan::solvers {
 
@@ -67,18 +71,14 @@ struct LeafOptions {
   long offline_expansions = 200000;
 };
 
-// Running estimate of an unexpanded node's value, updated as particles arrive.
+// Running estimate of an unexpanded node's value: one or more accumulators of sampled values, of
+// which the best mean counts. A LeafValue (below) decides what is added.
 class LeafEstimate {
  public:
-  // Adds `state` (a particle that reached the node) to the estimate. `steps_left` bounds a rollout.
-  // `one_step_each` (optional): the result of stepping `state` once with each action, when the
-  // caller already has it; the lookahead estimate then reuses it instead of stepping again.
-  void add(const LeafOptions& options, const pomdp::Model& model, const pomdp::State& state,
-           int steps_left, Rng& rng, const std::vector<pomdp::StepResult>* one_step_each = nullptr);
-  // Mode `policy`: adds `rollouts` rollouts of `policy` from the node's exact `belief` (over the
-  // tabular states), at most `steps_left` steps each.
-  void add_rollouts(const SensingPolicy& policy, const std::vector<double>& belief, int steps_left,
-                    int rollouts, Rng& rng);
+  // Counts `samples` more samples and returns `accumulators` sums (all 0 the first time) for the
+  // caller to add them to. A lookahead keeps one sum per action, the policy one per threshold,
+  // the rest one.
+  double* accumulate(std::size_t accumulators, int samples);
   // The current estimate; 0 before any particle was added.
   double value() const;
   int count() const { return count_; }
@@ -97,5 +97,64 @@ class LeafEstimate {
   std::vector<double> sums_;  // lookahead: one per action; policy: one per threshold; else one
   int count_ = 0;
 };
+
+// Where an episode stands when it reaches a node that is still a leaf.
+struct LeafVisit {
+  const pomdp::Model& model;  // the model planned with now (revise() may have replaced it)
+  const pomdp::State& state;  // the particle that reached the node
+  std::size_t depth;          // the node's depth below the root
+  int steps_left;             // bounds a rollout
+  // The result of stepping `state` once with each action when the caller already has it (ABT
+  // below the root); the lookahead then reuses it instead of stepping again. May be null.
+  const std::vector<pomdp::StepResult>* one_step_each = nullptr;
+};
+
+// How a tree-search solver values its leaves: one implementation per leaf mode, chosen once by
+// make_leaf_value(). The modes that value states (lookahead, heuristic, rollout) only implement
+// add(). The modes that need the exact belief at each node (policy, exact, exact-offline; ABT on a
+// tabular identification problem) also follow it: the root's from reset() and follow(), each
+// episode's from start_episode() and descend(); ABT weighs its Q values by it (exact_belief(),
+// belief_model()). The exact modes also refine the exact solver inside the step's budget
+// (episode_budget()), clamp node values into its bounds (clamp()) and decide at the root
+// (root_decision()).
+class LeafValue {
+ public:
+  virtual ~LeafValue() = default;
+
+  // Adds what `visit` tells about the value of the leaf to `estimate`.
+  virtual void add(LeafEstimate& estimate, const LeafVisit& visit, Rng& rng) = 0;
+
+  // The tree was rooted at `belief` (reset) / moved along a real step.
+  virtual void reset(const pomdp::Belief& /*belief*/) {}
+  virtual void follow(int /*action*/, const pomdp::Observation& /*observation*/,
+                      const pomdp::Belief& /*belief_after*/) {}
+  // An episode starts at the root / goes from `depth` to depth + 1 by `action` into the branch of
+  // (discrete) `observation`.
+  virtual void start_episode() {}
+  virtual void descend(std::size_t /*depth*/, int /*action*/, int /*observation*/) {}
+
+  // The exact belief over the tabular states at `depth` of the episode being walked (depth 0: the
+  // root's), or nullptr for a leaf value that does not follow beliefs.
+  virtual const std::vector<double>* exact_belief(std::size_t /*depth*/) const { return nullptr; }
+  // What weighs those beliefs (observation probabilities, expected rewards); nullptr likewise.
+  virtual const SensingPolicy* belief_model() const { return nullptr; }
+
+  // Spends its share of a step's `budget` outside the episodes; returns what is left for them.
+  virtual Budget episode_budget(const Budget& budget) { return budget; }
+  // `value` of the node at `depth` of the episode being backed up, moved into known bounds.
+  virtual double clamp(std::size_t /*depth*/, double value) const { return value; }
+  // The root's action when this leaf value knows better than the tree's Q estimates; -1 otherwise.
+  virtual int root_decision(int /*actions*/) const { return -1; }
+};
+
+// Which tree asks: a belief tree may use every mode; a state tree (POMCP: its leaves see states,
+// not beliefs) only lookahead, heuristic and rollout.
+enum class LeafUse { belief_tree, state_tree };
+
+// The leaf value `options` asks for, on `model`. Throws InputError when the mode does not fit the
+// use (naming the alternatives) or the model (policy, exact, exact-offline need a tabular
+// identification problem). With exact-offline the offline solve runs here.
+std::unique_ptr<LeafValue> make_leaf_value(const LeafOptions& options, const pomdp::ModelPtr& model,
+                                           LeafUse use);
 
 }  // namespace echoplan::solvers

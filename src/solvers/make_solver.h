@@ -1,4 +1,7 @@
-// Builds an online solver by the name users type ("abt", "pomcp").
+// Builds an online solver by the name users type ("abt", "pomcp") from search options already made.
+// The online part of the one factory, solver_factory.h's make_solver(overrides, problem, path),
+// which also builds the offline solver and derives options and budget; use that one unless you
+// hold SearchOptions already (tests, benchmarks).
 #pragma once
 
 #include <memory>

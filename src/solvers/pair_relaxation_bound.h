@@ -24,18 +24,9 @@
 #include <cstddef>
 #include <vector>
 
-namespace echoplan::solvers {
+#include "solvers/identification_tables.h"
 
-// The tables of an identification problem over its live states, as IdentificationSolver keeps
-// them: L live states, A actions, O observations.
-struct IdentificationTables {
-  int live_states = 0, actions = 0, observations = 0;
-  double discount = 0.0;
-  std::vector<bool> terminal;       // [a]: the action ends the episode from every live state
-  std::vector<double> reward;       // [a * L + l] = R(l, a)
-  std::vector<double> emission;     // [(a * O + o) * L + l] = P(state kept | l, a) · O(a, l, o)
-  std::vector<double> known_value;  // [l] = V*(state l known)
-};
+namespace echoplan::solvers {
 
 struct PairRelaxationOptions {
   // Grid points strictly between 0 and 1, spaced evenly in log-odds over ±max_log_odds.

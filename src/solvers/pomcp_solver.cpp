@@ -1,19 +1,9 @@
 #include "solvers/pomcp_solver.h"
 
-#include <string>
-
-#include "common/error.h"
-
 namespace echoplan::solvers {
 
 PomcpSolver::PomcpSolver(pomdp::ModelPtr model, SearchOptions options)
-    : TreeSearchSolver(std::move(model), options) {
-  // POMCP stays the textbook algorithm: its leaves see states, not beliefs.
-  const LeafMode mode = this->options().leaf.mode;
-  if (mode == LeafMode::policy || mode == LeafMode::exact || mode == LeafMode::exact_offline)
-    throw InputError(std::string("the ") + leaf_mode_name(mode) +
-                     " leaf value is ABT's; POMCP takes lookahead, heuristic or rollout");
-}
+    : TreeSearchSolver(std::move(model), options, LeafUse::state_tree) {}
 
 void PomcpSolver::run_episode(Rng& rng) { simulate(root(), sample_root_particle(rng), 0, rng); }
 
@@ -22,7 +12,9 @@ double PomcpSolver::simulate(BeliefNode& node, pomdp::State state, int depth, Rn
   ++node.visits;
   if (depth > 0) node.particles.push_back(state);
   if (leaf_or_expand(node, depth)) {
-    node.leaf.add(options().leaf, m, state, options().max_depth - depth, rng);
+    leaf_value().add(
+        node.leaf,
+        LeafVisit{m, state, static_cast<std::size_t>(depth), options().max_depth - depth}, rng);
     return node.leaf.value();
   }
   const int a = select_action(node);

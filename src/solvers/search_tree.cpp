@@ -28,10 +28,11 @@ BeliefNode::~BeliefNode() { --counts->belief; }
 ActionNode::ActionNode(NodeCounts* c) : counts(c) { ++counts->action; }
 ActionNode::~ActionNode() { --counts->action; }
 
-TreeSearchSolver::TreeSearchSolver(pomdp::ModelPtr model, SearchOptions options)
+TreeSearchSolver::TreeSearchSolver(pomdp::ModelPtr model, SearchOptions options, LeafUse use)
     : model_(std::move(model)), options_(options) {
   if (!model_) throw std::invalid_argument("TreeSearchSolver needs a model");
   options_.validate();
+  leaf_value_ = make_leaf_value(options_.leaf, model_, use);
 }
 
 std::unique_ptr<BeliefNode> TreeSearchSolver::new_belief_node() {

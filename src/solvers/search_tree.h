@@ -97,7 +97,8 @@ struct ActionNode {
 
 class TreeSearchSolver : public Solver {
  public:
-  TreeSearchSolver(pomdp::ModelPtr model, SearchOptions options);
+  // Builds the leaf value options.leaf asks for (make_leaf_value(), for a tree of kind `use`).
+  TreeSearchSolver(pomdp::ModelPtr model, SearchOptions options, LeafUse use);
   TreeSearchSolver(const TreeSearchSolver&) = delete;
   TreeSearchSolver& operator=(const TreeSearchSolver&) = delete;
 
@@ -135,6 +136,9 @@ class TreeSearchSolver : public Solver {
   bool has_root() const { return root_ != nullptr; }
   BeliefNode& root() { return *root_; }
   const pomdp::State& sample_root_particle(Rng& rng) const;
+  // How leaves are valued (chosen once, from options().leaf).
+  LeafValue& leaf_value() { return *leaf_value_; }
+  const LeafValue& leaf_value() const { return *leaf_value_; }
   // Decides how the episode treats a node at `depth` reached for the visits-th time: returns true
   // when the node is valued as a leaf this time; otherwise expands it (once: `expanded` set, its
   // leaf accumulators freed) and returns false, and the caller must choose an action.
@@ -151,6 +155,7 @@ class TreeSearchSolver : public Solver {
 
   pomdp::ModelPtr model_;
   SearchOptions options_;
+  std::unique_ptr<LeafValue> leaf_value_;
   NodeCounts counts_;  // declared before root_ so it outlives the nodes
   std::unique_ptr<BeliefNode> root_;
   std::int64_t episodes_total_ = 0;

@@ -9,45 +9,41 @@
 
 namespace echoplan::solvers {
 
-SensingPolicy::SensingPolicy(const pomdp::TabularModel& model) {
+namespace {
+// `model`'s identification tables, once identification_shape_problem() has found nothing wrong.
+std::shared_ptr<const IdentificationTables> policy_tables(const pomdp::TabularModel& model) {
   if (auto why = identification_shape_problem(model))
     throw InputError(
         "the policy leaf value needs an identification problem (the state stays "
         "fixed until an action ends the episode), and this one is not: " +
         *why);
-  num_states_ = model.num_states();
-  num_actions_ = model.num_actions();
-  num_observations_ = model.num_observations();
-  discount_ = model.discount();
-  const int S = num_states_, A = num_actions_, O = num_observations_;
-  absorbing_.resize(S);
-  for (int s = 0; s < S; ++s) absorbing_[s] = model.terminal(s);
-  reward_.resize(static_cast<std::size_t>(S) * A);
-  stay_.resize(static_cast<std::size_t>(A) * S);
-  emission_.assign(static_cast<std::size_t>(A) * O * S, 0.0);
-  terminal_.assign(A, true);
+  return read_identification_tables(model);
+}
+}  // namespace
+
+SensingPolicy::SensingPolicy(const pomdp::TabularModel& model)
+    : SensingPolicy(policy_tables(model)) {}
+
+SensingPolicy::SensingPolicy(std::shared_ptr<const IdentificationTables> tables)
+    : tables_(std::move(tables)) {
+  const IdentificationTables& t = *tables_;
+  num_states_ = t.states;
+  num_actions_ = t.actions;
+  num_observations_ = t.observations;
+  discount_ = t.discount;
+  const int L = t.live_states, A = num_actions_;
   for (int a = 0; a < A; ++a)
-    for (int s = 0; s < S; ++s) {
-      reward_[s * A + a] = model.reward(s, a);
-      if (absorbing_[s]) continue;
-      const double stay = model.transition(s, a, s);
-      stay_[a * S + s] = stay;
-      if (stay > 0.0) terminal_[a] = false;
-      for (int o = 0; o < O; ++o)
-        emission_[(a * O + o) * S + s] = stay * model.observation(a, s, o);
-    }
-  for (int a = 0; a < A; ++a)
-    if (!terminal_[a]) sensing_.push_back(a);
-  best_commit_.assign(S, 0.0);
-  best_terminal_.assign(S, -1);
+    if (!t.terminal[a]) sensing_.push_back(a);
+  best_commit_.assign(L, 0.0);
+  best_terminal_.assign(L, -1);
   double top = -std::numeric_limits<double>::infinity(), bottom = -top;
-  for (int s = 0; s < S; ++s) {
-    if (absorbing_[s]) continue;
+  for (int l = 0; l < L; ++l) {
     for (int a = 0; a < A; ++a) {
-      top = std::max(top, reward_[s * A + a]);
-      bottom = std::min(bottom, reward_[s * A + a]);
-      if (terminal_[a] && (best_terminal_[s] < 0 || reward_[s * A + a] > best_commit_[s]))
-        best_commit_[s] = reward_[s * A + a], best_terminal_[s] = a;
+      const double r = t.reward[a * L + l];
+      top = std::max(top, r);
+      bottom = std::min(bottom, r);
+      if (t.terminal[a] && (best_terminal_[l] < 0 || r > best_commit_[l]))
+        best_commit_[l] = r, best_terminal_[l] = a;
     }
   }
   // Halving steps from half the reward span: committing with a loss of half the span down to about
@@ -55,18 +51,24 @@ SensingPolicy::SensingPolicy(const pomdp::TabularModel& model) {
   const double span = std::max(top - bottom, 1e-9);
   thresholds_.push_back(std::numeric_limits<double>::infinity());
   for (int k = 1; k < kThresholds; ++k) thresholds_.push_back(span * std::ldexp(1.0, -k));
-  scratch_.resize(S);
-  scratch2_.resize(S);
+  scratch_.resize(num_states_);
+  scratch2_.resize(num_states_);
   groups_.resize(A);
+}
+
+const double* SensingPolicy::emission(int action, int observation) const {
+  const int L = tables_->live_states;
+  return &tables_->emission[static_cast<std::size_t>(action * num_observations_ + observation) * L];
 }
 
 double SensingPolicy::update(const std::vector<double>& belief, int a, int o,
                              std::vector<double>& out) const {
-  const int S = num_states_;
-  out.resize(S);
-  const double* e = &emission_[static_cast<std::size_t>(a * num_observations_ + o) * S];
+  const std::vector<int>& states = tables_->model_state;
+  out.assign(num_states_, 0.0);  // absorbing states keep none
+  const double* e = emission(a, o);
   double total = 0.0;
-  for (int s = 0; s < S; ++s) total += out[s] = belief[s] * e[s];
+  for (std::size_t l = 0; l < states.size(); ++l)
+    total += out[states[l]] = belief[states[l]] * e[l];
   if (total > 0.0)
     for (double& p : out) p /= total;
   return total;
@@ -74,42 +76,48 @@ double SensingPolicy::update(const std::vector<double>& belief, int a, int o,
 
 double SensingPolicy::observation_probability(const std::vector<double>& belief, int a,
                                               int o) const {
-  const int S = num_states_;
-  const double* e = &emission_[static_cast<std::size_t>(a * num_observations_ + o) * S];
+  const std::vector<int>& states = tables_->model_state;
+  const double* e = emission(a, o);
   double p = 0.0;
-  for (int s = 0; s < S; ++s) p += belief[s] * e[s];
+  for (std::size_t l = 0; l < states.size(); ++l) p += belief[states[l]] * e[l];
   return p;
 }
 
 double SensingPolicy::live_probability(const std::vector<double>& belief, int a) const {
+  const std::vector<int>& states = tables_->model_state;
+  const double* stay = &tables_->stay[static_cast<std::size_t>(a) * states.size()];
   double p = 0.0;
-  for (int s = 0; s < num_states_; ++s) p += belief[s] * stay_[a * num_states_ + s];
+  for (std::size_t l = 0; l < states.size(); ++l) p += belief[states[l]] * stay[l];
   return p;
 }
 
 double SensingPolicy::expected_reward(const std::vector<double>& belief, int a) const {
+  const std::vector<int>& states = tables_->model_state;
+  const double* reward = &tables_->reward[static_cast<std::size_t>(a) * states.size()];
   double r = 0.0;
-  for (int s = 0; s < num_states_; ++s) r += belief[s] * reward_[s * num_actions_ + a];
+  for (std::size_t l = 0; l < states.size(); ++l) r += belief[states[l]] * reward[l];
   return r;
 }
 
 double SensingPolicy::commit_value(const std::vector<double>& belief) const {
   double best = -std::numeric_limits<double>::infinity();
   for (int a = 0; a < num_actions_; ++a)
-    if (terminal_[a]) best = std::max(best, expected_reward(belief, a));
+    if (tables_->terminal[a]) best = std::max(best, expected_reward(belief, a));
   return best;
 }
 
 double SensingPolicy::loss(const std::vector<double>& belief) const {
+  const std::vector<int>& states = tables_->model_state;
   double known = 0.0;
-  for (int s = 0; s < num_states_; ++s) known += belief[s] * best_commit_[s];
+  for (std::size_t l = 0; l < states.size(); ++l) known += belief[states[l]] * best_commit_[l];
   return known - commit_value(belief);
 }
 
 double SensingPolicy::decision_entropy(const std::vector<double>& belief) const {
+  const std::vector<int>& states = tables_->model_state;
   std::fill(groups_.begin(), groups_.end(), 0.0);
-  for (int s = 0; s < num_states_; ++s)
-    if (best_terminal_[s] >= 0) groups_[best_terminal_[s]] += belief[s];
+  for (std::size_t l = 0; l < states.size(); ++l)
+    if (best_terminal_[l] >= 0) groups_[best_terminal_[l]] += belief[states[l]];
   double h = 0.0;
   for (double p : groups_)
     if (p > 0.0) h -= p * std::log(p);
@@ -133,17 +141,17 @@ int SensingPolicy::choose_sensing(const std::vector<double>& belief) const {
 
 void SensingPolicy::rollout(const std::vector<double>& start, int steps, Rng& rng,
                             double* returns) const {
-  const int S = num_states_;
-  std::vector<double> belief(start), next(S);
-  // The true state, drawn from the belief.
-  int state = 0;
+  const std::vector<int>& states = tables_->model_state;
+  const int L = tables_->live_states;
+  std::vector<double> belief(start), next(num_states_);
+  // The true state (its live index), drawn from the belief.
+  int state = -1;
   {
     double u = uniform01(rng), acc = 0.0;
-    state = -1;
-    for (int s = 0; s < S; ++s)
-      if (belief[s] > 0.0) {
-        state = s;
-        if ((acc += belief[s]) > u) break;
+    for (int l = 0; l < L; ++l)
+      if (belief[states[l]] > 0.0) {
+        state = l;
+        if ((acc += belief[states[l]]) > u) break;
       }
   }
   double collected = 0.0, weight = 1.0;
@@ -157,13 +165,13 @@ void SensingPolicy::rollout(const std::vector<double>& start, int steps, Rng& rn
     const int a = choose_sensing(belief);
     collected += weight * expected_reward(belief, a);
     weight *= discount_;
-    if (uniform01(rng) >= stay_[a * S + state]) break;  // the action ended the episode
+    const double stay = tables_->stay[a * L + state];
+    if (uniform01(rng) >= stay) break;  // the action ended the episode
     // The observation, from the true state's row.
-    const double stay = stay_[a * S + state];
     double u = uniform01(rng) * stay, acc = 0.0;
     int heard = num_observations_ - 1;
     for (int o = 0; o < num_observations_; ++o)
-      if ((acc += emission_[(a * num_observations_ + o) * S + state]) > u) {
+      if ((acc += emission(a, o)[state]) > u) {
         heard = o;
         break;
       }

@@ -22,10 +22,12 @@
 // and removes most of the variance of a sorting action's +10 / −100.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "common/rng.h"
 #include "pomdp/model.h"
+#include "solvers/identification_tables.h"
 
 namespace echoplan::solvers {
 
@@ -38,6 +40,8 @@ class SensingPolicy {
   // Reads the tables of `model`. Throws InputError when the model has no tables or is not an
   // identification problem (the reason in words).
   explicit SensingPolicy(const pomdp::TabularModel& model);
+  // The same on tables already read (shared with the exact solver of the same problem).
+  explicit SensingPolicy(std::shared_ptr<const IdentificationTables> tables);
 
   int num_states() const { return num_states_; }
   // Bayes' rule for a sensing action: b'(s) ∝ b(s) stay(s, a) O(a, s, o). Returns P(o | b, a) (live
@@ -45,7 +49,7 @@ class SensingPolicy {
   double update(const std::vector<double>& belief, int action, int observation,
                 std::vector<double>& out) const;
   // True for an action that ends the episode from every live state.
-  bool is_terminal(int action) const { return terminal_[action]; }
+  bool is_terminal(int action) const { return tables_->terminal[action]; }
   // P(o | b, a) for a sensing action, counting only outcomes that keep the episode going.
   double observation_probability(const std::vector<double>& belief, int action,
                                  int observation) const;
@@ -65,16 +69,15 @@ class SensingPolicy {
   double loss(const std::vector<double>& belief) const;
   double decision_entropy(const std::vector<double>& belief) const;
 
-  int num_states_ = 0, num_actions_ = 0, num_observations_ = 0;
+  // P(o | s, a) stay(s, a) over the live states, for a sensing action.
+  const double* emission(int action, int observation) const;
+
+  std::shared_ptr<const IdentificationTables> tables_;           // the problem, over live states
+  int num_states_ = 0, num_actions_ = 0, num_observations_ = 0;  // states: the model's, all
   double discount_ = 0.0;
-  std::vector<bool> terminal_;       // per action
   std::vector<int> sensing_;         // the non-terminal actions
-  std::vector<bool> absorbing_;      // per state
-  std::vector<double> reward_;       // [s * A + a]
-  std::vector<double> emission_;     // [(a * O + o) * S + s] = stay(s, a) O(a, s, o)
-  std::vector<double> stay_;         // [a * S + s]
-  std::vector<double> best_commit_;  // [s]: max over terminal a of R(s, a)
-  std::vector<int> best_terminal_;   // [s]: that action
+  std::vector<double> best_commit_;  // [l]: max over terminal a of R(l, a)
+  std::vector<int> best_terminal_;   // [l]: that action
   std::vector<double> thresholds_;   // kThresholds values, decreasing
   mutable std::vector<double> scratch_, scratch2_, groups_;
 };

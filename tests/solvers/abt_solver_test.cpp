@@ -36,7 +36,9 @@ pomdp::Problem seed_problem() {
 }
 
 std::shared_ptr<const ObjectIdentificationModel> seed_model() {
-  return std::dynamic_pointer_cast<const ObjectIdentificationModel>(seed_problem().model);
+  const pomdp::ModelPtr model = seed_problem().model;
+  // The same model, shared with the problem's pointer (aliasing constructor).
+  return std::shared_ptr<const ObjectIdentificationModel>(model, model->object_identification());
 }
 
 // The seed model with a recalibrated strike: the pringles can and the mug now sound the same when
@@ -238,6 +240,49 @@ TEST(AbtRevision, ChangedRowsAreFoundAndOtherChangesRefused) {
   EXPECT_EQ(forgetful.stored_episodes(), 0);
   EXPECT_THROW(forgetful.revise(observation_table_change(*model, recalibrated(*model)), rng),
                std::logic_error);
+}
+
+// The sequence docs/planning.md gives users ("How to use it when the observation table is
+// recalibrated"): lookahead leaf and kept episodes from the problem's planner section, a real step,
+// the strike's table recalibrated mid-trial, revise(), the belief moved to the new model, planning
+// on.
+TEST(AbtRevision, DocumentedUsageRevisesAMidTrialTable) {
+  const pomdp::Problem problem = seed_problem();
+  const auto old_model = seed_model();
+  const auto new_model = recalibrated(*old_model);
+  PlannerOverrides overrides;
+  overrides.leaf = "lookahead";
+  SearchOptions options = search_options(overrides, problem);
+  options.keep_episodes = true;
+  AbtSolver solver(old_model, options);
+  Rng rng(11);
+  pomdp::ParticleBelief belief(old_model, 1000, rng);
+  solver.reset(belief, rng);
+  solver.improve(Budget::episodes(1000), rng);
+  pomdp::Observation heard;
+  heard.index = 0;  // the strike sounded like the pringles can
+  belief.update(kStrike, heard, rng);
+  solver.update(kStrike, heard, belief, rng);
+  const std::int64_t kept = solver.stored_episodes();
+  ASSERT_GT(kept, 0);
+
+  const RevisionStats stats = solver.revise(observation_table_change(*old_model, new_model), rng);
+  EXPECT_EQ(stats.episodes, kept);
+  // Below the root the strike is tried again, and its changed rows (pringles can, mug) are used.
+  EXPECT_GT(stats.affected_steps, 0);
+  EXPECT_LE(stats.kept_observations, stats.affected_steps);
+  EXPECT_GT(stats.resimulated_episodes, 0);
+
+  pomdp::ParticleBelief new_belief(new_model, 1000, rng);
+  const std::int64_t before = solver.stats().episodes_total;
+  solver.improve(Budget::episodes(500), rng);
+  EXPECT_EQ(solver.stats().episodes_total, before + 500);
+  const int action = solver.best_action();
+  EXPECT_TRUE(action >= 0 && action < new_model->num_actions());
+  // The next real step updates both with the new model's belief.
+  new_belief.update(kStrike, heard, rng);
+  solver.update(kStrike, heard, new_belief, rng);
+  EXPECT_GT(solver.stored_episodes(), 0);
 }
 
 TEST(AbtRevision, UpdateKeepsTheEpisodesThroughTheNewRoot) {

@@ -19,7 +19,7 @@ std::string repo_file(const std::string& relative) {
 
 pomdp::ObjectProblemData seed_data() {
   const pomdp::Problem p = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
-  return dynamic_cast<const pomdp::ObjectIdentificationModel&>(*p.model).data();
+  return p.model->object_identification()->data();
 }
 
 // The seed problem with every sensing action made perfectly reliable (each object heard as itself).

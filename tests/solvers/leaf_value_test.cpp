@@ -18,37 +18,40 @@ std::shared_ptr<const pomdp::Model> seed_model() {
 // The full model state of object k at the start of an episode (arm joints and offset filled in).
 pomdp::State object(int k) { return seed_model()->tabular_state(k); }
 
+// What an episode reaching a leaf at depth 1 with object k's state adds, valued by `mode`.
+void add(LeafEstimate& leaf, LeafMode mode, const pomdp::ModelPtr& model, int k, int steps_left,
+         Rng& rng) {
+  const pomdp::State state = object(k);
+  make_leaf_value({mode, 1}, model, LeafUse::state_tree)
+      ->add(leaf, LeafVisit{*model, state, 1, steps_left}, rng);
+}
+
 TEST(LeafEstimate, LookaheadCommitsWhenCertain) {
   const auto shipped = seed_model();
-  const pomdp::Model& model = *shipped;
   Rng rng(1);
   LeafEstimate leaf;
-  const LeafOptions options{LeafMode::lookahead, 1};
-  leaf.add(options, model, object(0), 10, rng);
-  leaf.add(options, model, object(2), 10, rng);
+  add(leaf, LeafMode::lookahead, shipped, 0, 10, rng);
+  add(leaf, LeafMode::lookahead, shipped, 2, 10, rng);
   // Objects 0 and 2 both belong at A: committing earns 10, more than sensing (-1 + 0.99 * 10).
   EXPECT_DOUBLE_EQ(leaf.value(), 10.0);
 }
 
 TEST(LeafEstimate, LookaheadSensesWhenTheGroupIsUncertain) {
   const auto shipped = seed_model();
-  const pomdp::Model& model = *shipped;
   Rng rng(1);
   LeafEstimate leaf;
-  const LeafOptions options{LeafMode::lookahead, 1};
-  leaf.add(options, model, object(0), 10, rng);
-  leaf.add(options, model, object(1), 10, rng);
+  add(leaf, LeafMode::lookahead, shipped, 0, 10, rng);
+  add(leaf, LeafMode::lookahead, shipped, 1, 10, rng);
   // Either sort is right half the time: (10 - 100) / 2 = -45; sensing then h = 10 is -1 + 9.9.
   EXPECT_DOUBLE_EQ(leaf.value(), -1.0 + 0.99 * 10.0);
 }
 
 TEST(LeafEstimate, HeuristicAveragesTheModelHeuristic) {
   const auto shipped = seed_model();
-  const pomdp::Model& model = *shipped;
   Rng rng(1);
   LeafEstimate leaf;
-  leaf.add({LeafMode::heuristic, 1}, model, object(0), 10, rng);
-  leaf.add({LeafMode::heuristic, 1}, model, object(1), 10, rng);
+  add(leaf, LeafMode::heuristic, shipped, 0, 10, rng);
+  add(leaf, LeafMode::heuristic, shipped, 1, 10, rng);
   EXPECT_DOUBLE_EQ(leaf.value(), 10.0);
   EXPECT_EQ(leaf.count(), 2);
 }
@@ -58,10 +61,9 @@ TEST(LeafEstimate, RandomRolloutIsPoorOnTheSeedProblem) {
   // many rollouts lies far below 0. Exactly: each step senses (-1, continue) or sorts (mean -45)
   // with probability 1/2, so V = 0.5 (-45) + 0.5 (-1 + 0.99 V), V = -23 / 0.505.
   const auto shipped = seed_model();
-  const pomdp::Model& model = *shipped;
   Rng rng(3);
   LeafEstimate leaf;
-  for (int i = 0; i < 4000; ++i) leaf.add({LeafMode::rollout, 1}, model, object(i % 4), 50, rng);
+  for (int i = 0; i < 4000; ++i) add(leaf, LeafMode::rollout, shipped, i % 4, 50, rng);
   // Returns are about -100 or +10 (sd ~55), so the standard error is ~0.9; the band is 5 of them.
   EXPECT_NEAR(leaf.value(), -23.0 / 0.505, 4.5);
 }

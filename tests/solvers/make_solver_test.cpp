@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <typeinfo>
+
 #include "common/error.h"
 #include "common/rng.h"
 #include "pomdp/make_belief.h"
@@ -24,8 +26,10 @@ TEST(MakeSolver, TheNamesAreAbtAndPomcp) {
 
 TEST(MakeSolver, EachNameBuildsItsSolver) {
   const pomdp::Problem problem = tiger();
-  EXPECT_NE(dynamic_cast<AbtSolver*>(make_solver("abt", problem.model, {}).get()), nullptr);
-  EXPECT_NE(dynamic_cast<PomcpSolver*>(make_solver("pomcp", problem.model, {}).get()), nullptr);
+  const std::unique_ptr<Solver> abt = make_solver("abt", problem.model, {});
+  const std::unique_ptr<Solver> pomcp = make_solver("pomcp", problem.model, {});
+  EXPECT_EQ(typeid(*abt), typeid(AbtSolver));
+  EXPECT_EQ(typeid(*pomcp), typeid(PomcpSolver));
 }
 
 TEST(MakeSolver, TheOptionsReachTheSolver) {

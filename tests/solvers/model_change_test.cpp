@@ -32,9 +32,11 @@ constexpr int kPaper = 3;
 std::shared_ptr<const ObjectIdentificationModel> seed_model() {
   const pomdp::Problem p =
       pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
-  auto model = std::dynamic_pointer_cast<const ObjectIdentificationModel>(p.model);
-  if (!model) throw std::logic_error("audio_objects.yaml is not an object-identification problem");
-  return model;
+  const ObjectIdentificationModel* objects = p.model->object_identification();
+  if (!objects)
+    throw std::logic_error("audio_objects.yaml is not an object-identification problem");
+  // The same model, shared with the problem's pointer (aliasing constructor).
+  return std::shared_ptr<const ObjectIdentificationModel>(p.model, objects);
 }
 
 std::shared_ptr<const ObjectIdentificationModel> model_of(ObjectProblemData data) {

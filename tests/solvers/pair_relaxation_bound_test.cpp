@@ -18,7 +18,7 @@ namespace {
 pomdp::ObjectProblemData seed_data(double discount) {
   const pomdp::Problem p =
       pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
-  auto d = dynamic_cast<const pomdp::ObjectIdentificationModel&>(*p.model).data();
+  auto d = p.model->object_identification()->data();
   d.discount = discount;
   return d;
 }

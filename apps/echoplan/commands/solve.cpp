@@ -28,7 +28,9 @@ struct SolveArgs {
   double epsilon = 1e-4;
   double time_limit = 60.0;
   std::uint64_t seed = 1;
-  long max_trials = 0;
+  long max_expansions = 0;  // exact solver: node expansions; 0: no limit
+  long max_trials = 0;      // point-based solver: trials; 0: no limit
+  long max_iterations = 0;  // deprecated --max-iterations: both of the above, unless they are set
   std::string method = "auto";
   std::string out;
   std::string exact_search = "passes";
@@ -76,16 +78,17 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
       "solving {} exactly over count vectors (epsilon {}, time limit {} s{}); setup {:.2f} s, "
       "{} two-state sub-problems",
       args.problem, args.epsilon, args.time_limit,
-      args.max_trials > 0 ? fmt::format(", at most {} expansions", args.max_trials) : "",
+      args.max_expansions > 0 ? fmt::format(", at most {} expansions", args.max_expansions) : "",
       setup_seconds, solver.num_relaxation_pairs());
   for (;;) {
     const double remaining = args.time_limit - elapsed();
-    const long trials_left = args.max_trials > 0 ? args.max_trials - solver.expansions() : 0;
-    if (remaining <= 0.0 || (args.max_trials > 0 && trials_left <= 0)) break;
+    const long expansions_left =
+        args.max_expansions > 0 ? args.max_expansions - solver.expansions() : 0;
+    if (remaining <= 0.0 || (args.max_expansions > 0 && expansions_left <= 0)) break;
     solvers::RefineLimits limits;
     limits.target_gap = target(solver.value(root));
     limits.seconds = std::min(1.0, remaining);
-    limits.expansions = trials_left;
+    limits.expansions = expansions_left;
     const double slice_start = elapsed();
     const bool reached = solver.refine(root, limits);
     const solvers::Bounds v = solver.value(root);
@@ -108,7 +111,7 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
     solvers::RefineLimits limits;
     limits.target_gap = target(v);
     limits.seconds = std::max(0.1, args.time_limit - elapsed());
-    limits.expansions = args.max_trials;  // per action, so that the figures repeat too
+    limits.expansions = args.max_expansions;  // per action, so that the figures repeat too
     solver.refine_action(root, a, limits);
     q[a] = solver.action_value(root, a);
   }
@@ -154,11 +157,23 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
   fmt::print(")\n");
 }
 
-void run_solve(const SolveArgs& args) {
+// `given` with the deprecated --max-iterations standing in for --max-expansions and --max-trials
+// where they were not set (it meant expansions for the exact solver and trials for the other).
+SolveArgs with_iteration_alias(const SolveArgs& given) {
+  if (given.max_iterations < 0) throw InputError("--max-iterations must be >= 0 (0: no limit)");
+  if (given.max_expansions < 0) throw InputError("--max-expansions must be >= 0 (0: no limit)");
+  if (given.max_trials < 0) throw InputError("--max-trials must be >= 0 (0: no limit)");
+  SolveArgs args = given;
+  if (args.max_expansions == 0) args.max_expansions = given.max_iterations;
+  if (args.max_trials == 0) args.max_trials = given.max_iterations;
+  return args;
+}
+
+void run_solve(const SolveArgs& given) {
   namespace off = solvers::offline;
+  const SolveArgs args = with_iteration_alias(given);
   if (!(args.epsilon >= 0.0)) throw InputError("--epsilon must be >= 0");
   if (!(args.time_limit > 0.0)) throw InputError("--time-limit must be > 0 seconds");
-  if (args.max_trials < 0) throw InputError("--max-iterations must be >= 0 (0: no limit)");
   const pomdp::Problem problem = pomdp::load_problem(args.problem);
   const pomdp::TabularModel* tables = problem.model->tabular();
   if (tables == nullptr) {
@@ -212,7 +227,7 @@ void run_solve(const SolveArgs& args) {
   };
   const solvers::BeliefVector& b0 = dense->initial_belief;
   const int best = solver.best_action(b0);
-  const std::vector<off::ValueBounds> q = solver.action_bounds(b0);
+  const std::vector<solvers::Bounds> q = solver.action_bounds(b0);
 
   if (!args.out.empty()) {
     std::error_code ec;
@@ -282,9 +297,18 @@ void add_solve_command(CLI::App& app) {
                   "point-based")
       ->check(CLI::IsMember({"auto", "exact", "point-based"}))
       ->capture_default_str();
-  cmd->add_option("--max-iterations", args->max_trials,
-                  "Stop after this many node expansions (exact) or trials (point-based), 0: no "
-                  "limit; unlike --time-limit, the result repeats on any machine")
+  cmd->add_option("--max-expansions", args->max_expansions,
+                  "Exact solver: stop after this many node expansions (and spend at most as many "
+                  "on each action's Q* at b0), 0: no limit; unlike --time-limit, the result "
+                  "repeats on any machine")
+      ->capture_default_str();
+  cmd->add_option("--max-trials", args->max_trials,
+                  "Point-based solver: stop after this many trials, 0: no limit; unlike "
+                  "--time-limit, the result repeats on any machine")
+      ->capture_default_str();
+  cmd->add_option("--max-iterations", args->max_iterations,
+                  "Deprecated: --max-expansions (exact) or --max-trials (point-based), whichever "
+                  "the method uses and is not given")
       ->capture_default_str();
   cmd->add_option("--exact-search", args->exact_search,
                   "Exact solver's exploration: trials (HSVI-style, gap-directed) or passes "

@@ -6,6 +6,11 @@
 //
 // Terminal states are made exact here: a state the model calls terminal gets reward 0 for every
 // action and loops to itself, whatever its rows say, so its value is exactly 0 in both bounds.
+//
+// Not an identification problem's tables (solvers/identification_tables.h): the point-based
+// solver serves every discrete POMDP, including those whose hidden state moves (Tiger's doors
+// reset it), so FlatPomdp keeps full transitions over all states. The exact solver, the sensing
+// policy and the pair relaxation, which need the identification shape, share IdentificationTables.
 #pragma once
 
 #include <vector>

@@ -28,9 +28,9 @@ OfflinePolicySolver::OfflinePolicySolver(pomdp::ModelPtr model,
 }
 
 void OfflinePolicySolver::reset(const pomdp::Belief& belief, Rng& /*rng*/) {
-  const auto* exact = dynamic_cast<const pomdp::ExactBelief*>(&belief);
-  if (exact != nullptr && static_cast<int>(exact->probabilities().size()) == pomdp_->num_states) {
-    belief_.reset(static_cast<pomdp::ExactBelief*>(exact->clone().release()));
+  const std::vector<double>* exact = belief.exact_probabilities();
+  if (exact != nullptr && static_cast<int>(exact->size()) == pomdp_->num_states) {
+    belief_ = belief.clone();
   } else {
     belief_ = std::make_unique<pomdp::ExactBelief>(model_);
   }

@@ -27,7 +27,8 @@ class OfflinePolicySolver final : public Solver {
   OfflinePolicySolver(pomdp::ModelPtr model, std::shared_ptr<const FlatPomdp> pomdp,
                       AlphaVectorSet vectors);
 
-  // Starts from `belief` when it is an ExactBelief over the same model, else from the model's b0.
+  // Starts from `belief` when it is exact over the same model's tables (exact_probabilities()),
+  // else from the model's b0.
   void reset(const pomdp::Belief& belief, Rng& rng) override;
   // Nothing to do: the policy was computed offline.
   void improve(const Budget& budget, Rng& rng) override;
@@ -40,7 +41,7 @@ class OfflinePolicySolver final : public Solver {
   SolverStats stats() const override { return {}; }
 
   // P(tabular state) now.
-  const std::vector<double>& belief() const { return belief_->probabilities(); }
+  const std::vector<double>& belief() const { return *belief_->exact_probabilities(); }
   // The lower bound on the value of acting with this policy from the current belief.
   double value() const { return vectors_.value(belief()); }
 
@@ -48,7 +49,7 @@ class OfflinePolicySolver final : public Solver {
   pomdp::ModelPtr model_;
   std::shared_ptr<const FlatPomdp> pomdp_;
   AlphaVectorSet vectors_;
-  std::unique_ptr<pomdp::ExactBelief> belief_;
+  pomdp::BeliefPtr belief_;  // always exact: exact_probabilities() is never null
 };
 
 // For the trials runner: solves `model` offline (PointBasedSolver with `options`) and wraps the

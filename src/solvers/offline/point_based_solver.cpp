@@ -28,13 +28,13 @@ PointBasedSolver::PointBasedSolver(std::shared_ptr<const FlatPomdp> pomdp, Solve
   for (AlphaVector& v : blind_policy_vectors(*pomdp_)) lower_.add(std::move(v));
 }
 
-ValueBounds PointBasedSolver::bounds(const BeliefVector& belief) const {
+Bounds PointBasedSolver::bounds(const BeliefVector& belief) const {
   return {lower_.value(belief), upper_.value(belief)};
 }
 
-std::vector<ValueBounds> PointBasedSolver::action_bounds(const BeliefVector& belief) const {
+std::vector<Bounds> PointBasedSolver::action_bounds(const BeliefVector& belief) const {
   const FlatPomdp& m = *pomdp_;
-  std::vector<ValueBounds> out(m.num_actions);
+  std::vector<Bounds> out(m.num_actions);
   for (int a = 0; a < m.num_actions; ++a) {
     const BeliefExpansion children = expand(m, belief, a);
     double lower = 0.0, upper = 0.0;
@@ -99,7 +99,7 @@ bool PointBasedSolver::backup(const BeliefVector& belief) {
 }
 
 double PointBasedSolver::target_gap() const {
-  const ValueBounds b = bounds(pomdp_->initial_belief);
+  const Bounds b = bounds(pomdp_->initial_belief);
   return options_.epsilon * std::max({1.0, std::abs(b.lower), std::abs(b.upper)});
 }
 
@@ -112,7 +112,7 @@ void PointBasedSolver::trial(double target_gap) {
   double weight = 1.0;
   while (static_cast<int>(path.size()) <= options_.max_depth) {
     const BeliefVector& b = path.back();
-    const ValueBounds here = bounds(b);
+    const Bounds here = bounds(b);
     const double gap = here.upper - here.lower;
     if (gap <= allowance || weight * gap <= path_weight_fraction_ * target_gap) break;
 
@@ -142,7 +142,7 @@ void PointBasedSolver::trial(double target_gap) {
     for (int o = 0; o < m.num_observations; ++o) {
       const double p = expansions[action].observation_probability[o];
       if (p == 0.0) continue;
-      const ValueBounds child = bounds(expansions[action].next_belief[o]);
+      const Bounds child = bounds(expansions[action].next_belief[o]);
       const double e = p * (child.upper - child.lower - next_allowance);
       if (e > 0.0) {
         excess[o] = e;
@@ -195,7 +195,7 @@ SolverProgress PointBasedSolver::solve(const ProgressCallback& on_progress) {
   double next_report = options_.progress_interval_seconds;
   while (true) {
     const double gap = target_gap();
-    const ValueBounds root = bounds(pomdp_->initial_belief);
+    const Bounds root = bounds(pomdp_->initial_belief);
     seconds_ = seconds_before + seconds_since(start);
     if (root.upper - root.lower <= gap) break;
     if (options_.time_limit_seconds > 0.0 && seconds_since(start) >= options_.time_limit_seconds)

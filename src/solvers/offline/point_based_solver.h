@@ -18,6 +18,7 @@
 
 #include "common/rng.h"
 #include "solvers/alpha_vector_set.h"
+#include "solvers/bounds.h"
 #include "solvers/offline/flat_pomdp.h"
 #include "solvers/sawtooth_upper_bound.h"
 
@@ -40,15 +41,9 @@ struct SolverOptions {
   std::uint64_t seed = 1;
 };
 
-// Bounds on V* at one belief: lower <= V*(b) <= upper.
-struct ValueBounds {
-  double lower = 0.0;
-  double upper = 0.0;
-};
-
 // A snapshot of the solver, reported while it runs and returned at the end.
 struct SolverProgress {
-  ValueBounds root;         // at b0
+  Bounds root;              // at b0
   double target_gap = 0.0;  // the absolute gap solve() aims for
   long trials = 0;
   long backups = 0;
@@ -69,10 +64,10 @@ class PointBasedSolver {
   // Runs trials until the target gap or the time limit. May be called again to continue.
   SolverProgress solve(const ProgressCallback& on_progress = {});
 
-  ValueBounds bounds(const BeliefVector& belief) const;
+  Bounds bounds(const BeliefVector& belief) const;
   // Per action a: bounds on Q*(b, a) = R(b, a) + g sum_o P(o | b, a) V*(b_ao), by one-step
   // lookahead on the current bounds. Used to measure the loss of a decision against the optimum.
-  std::vector<ValueBounds> action_bounds(const BeliefVector& belief) const;
+  std::vector<Bounds> action_bounds(const BeliefVector& belief) const;
   // The first action of the best lower-bound plan at `belief`: acting on it earns at least
   // bounds(belief).lower.
   int best_action(const BeliefVector& belief) const { return lower_.best_action(belief); }

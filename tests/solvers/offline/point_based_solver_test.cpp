@@ -45,7 +45,7 @@ TEST(PointBasedSolver, TigerKnownDoorFollowsBellmanEquation) {
   ASSERT_TRUE(root.converged);
   // Knowing the tiger is left, opening right (+10) and restarting is optimal:
   // V*(left) = 10 + 0.95 V*(uniform), so its bounds must be consistent with the root's.
-  const ValueBounds known = solver.bounds({1.0, 0.0});
+  const Bounds known = solver.bounds({1.0, 0.0});
   EXPECT_LE(known.lower, 10.0 + 0.95 * root.root.upper + 1e-9);
   EXPECT_GE(known.upper, 10.0 + 0.95 * root.root.lower - 1e-9);
   EXPECT_EQ(solver.best_action({1.0, 0.0}), 2);
@@ -76,7 +76,7 @@ TEST(PointBasedSolver, BracketsSeedProblemValueAndStrikesFirst) {
   const BeliefVector b0 = solver.pomdp().initial_belief;
   EXPECT_EQ(solver.best_action(b0), testing::kStrike);
 
-  const std::vector<ValueBounds> q = solver.action_bounds(b0);
+  const std::vector<Bounds> q = solver.action_bounds(b0);
   // One-step lookahead bounds bracket the known action values (rounding of 2.835: +-5e-4).
   EXPECT_LE(q[testing::kSlide].lower, 2.835 + 5e-4);
   EXPECT_GE(q[testing::kSlide].upper, 2.835 - 5e-4);
@@ -99,15 +99,15 @@ TEST(PointBasedSolver, SameSeedSameBounds) {
 TEST(PointBasedSolver, TerminalAndKnownObjectBeliefsAreExact) {
   PointBasedSolver solver(dense(audio_objects()));
   // Before any trial: the initial bounds already get these right.
-  const ValueBounds done = solver.bounds({0, 0, 0, 0, 1});
+  const Bounds done = solver.bounds({0, 0, 0, 0, 1});
   EXPECT_EQ(done.lower, 0.0);
   EXPECT_EQ(done.upper, 0.0);
   // Object 0 known: move to A at once earns 10, and nothing earns more.
-  const ValueBounds known = solver.bounds({1, 0, 0, 0, 0});
+  const Bounds known = solver.bounds({1, 0, 0, 0, 0});
   EXPECT_DOUBLE_EQ(known.lower, 10.0);
   EXPECT_NEAR(known.upper, 10.0, 1e-6);  // FIB iterated to 1e-9 per step, 1/(1-0.99) steps deep
   // Objects 0 and 2 both go to A: no need to tell them apart.
-  const ValueBounds same_place = solver.bounds({0.5, 0, 0.5, 0, 0});
+  const Bounds same_place = solver.bounds({0.5, 0, 0.5, 0, 0});
   EXPECT_DOUBLE_EQ(same_place.lower, 10.0);
   EXPECT_EQ(solver.best_action({0.5, 0, 0.5, 0, 0}), testing::kMoveA);
 }
@@ -154,13 +154,13 @@ TEST(PointBasedSolver, BoundsAreValidAtRandomBeliefs) {
     double sum = 0.0;
     for (int s = 0; s < 4; ++s) sum += b[s] = uniform01(rng);
     for (double& x : b) x /= sum;
-    const ValueBounds v = solver.bounds(b);
+    const Bounds v = solver.bounds(b);
     const Bracket reference = expectimax(model, b, 4);
     EXPECT_LE(v.lower, v.upper + 1e-9) << "belief " << i;
     // Overlap with the reference interval; 1e-9 absorbs rounding in sums of ~100 terms.
     EXPECT_LE(v.lower, reference.upper + 1e-9) << "belief " << i;
     EXPECT_GE(v.upper, reference.lower - 1e-9) << "belief " << i;
-    for (const ValueBounds& q : solver.action_bounds(b)) EXPECT_LE(q.lower, v.upper + 1e-9);
+    for (const Bounds& q : solver.action_bounds(b)) EXPECT_LE(q.lower, v.upper + 1e-9);
   }
 }
 
