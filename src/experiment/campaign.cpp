@@ -19,6 +19,7 @@
 #include "loop/prepare_observation.h"
 #include "loop/streams.h"
 #include "pomdp/problem.h"
+#include "sim/sound_action.h"
 
 namespace echoplan::experiment {
 
@@ -110,7 +111,7 @@ void check_objects(Campaign& c) {
   // By default the problems' sound-making actions the simulator can perform.
   if (c.training_actions.empty())
     for (const auto& a : c.results.spec.action_names)
-      if (a == "slide" || a == "strike") c.training_actions.push_back(a);
+      if (sim::find_sound_action(a)) c.training_actions.push_back(a);
   std::vector<std::string> named = c.training_objects;
   for (const ObjectGroup& g : config.groups) named.push_back(g.object);
   for (const std::string& o : objects) named.push_back(o);
@@ -153,7 +154,7 @@ void claim_folder(Campaign& c, InputFiles& files) {
   write_file_atomically(described, mine.dump(2) + "\n");
 }
 
-bool simulated(const CampaignConfig& config) { return config.world.type == "simulated"; }
+bool simulated(const CampaignConfig& config) { return config.world.type == WorldType::simulated; }
 
 // The checked loop of every arm and group; InputError when a part does not fit.
 ArmLoops make_loops(const Campaign& c) {
@@ -237,7 +238,7 @@ loop::SimulatedTraining simulated_training(const Campaign& c) {
 // The classifier: training_set.model (loaded already), DIR/training/model.json of an earlier run,
 // or trained now on the training set (and saved there for the user). Null when stopped.
 std::shared_ptr<const perception::ObservationModel> classifier(
-    const Campaign& c, const perception::ProgressFn& progress, const std::atomic<bool>& stop) {
+    const Campaign& c, const ProgressFn& progress, const std::atomic<bool>& stop) {
   if (c.observation_model) return c.observation_model;
   const fs::path saved = c.directory / "training" / "model.json";
   if (fs::exists(saved))
@@ -257,7 +258,7 @@ std::shared_ptr<const perception::ObservationModel> classifier(
 
 }  // namespace
 
-bool prepare_training(Campaign& campaign, const perception::ProgressFn& progress,
+bool prepare_training(Campaign& campaign, const ProgressFn& progress,
                       const std::atomic<bool>& stop) {
   const CampaignConfig& config = campaign.config;
   if (config.training.recordings.empty() && config.training.recordings_per_pair > 0 &&

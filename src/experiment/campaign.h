@@ -69,7 +69,7 @@ std::filesystem::path training_recordings(const Campaign& campaign);
 // (writing it to DIR/training/<arm>.problem.yaml for the user) and checks every arm's loop.
 // `progress(stage, done, total)` reports "synthesise" clips and the trainer's stages. Returns false
 // when stopped.
-bool prepare_training(Campaign& campaign, const perception::ProgressFn& progress,
+bool prepare_training(Campaign& campaign, const ProgressFn& progress,
                       const std::atomic<bool>& stop);
 
 // The trials of `shard` that DIR's journal does not hold yet, in id order.

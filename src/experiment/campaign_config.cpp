@@ -46,6 +46,10 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
 
 }  // namespace
 
+const char* to_string(WorldType type) {
+  return type == WorldType::simulated ? "simulated" : "model";
+}
+
 int CampaignConfig::total_trials() const {
   int per_arm = 0;
   for (const ObjectGroup& g : groups) per_arm += g.trials;
@@ -66,7 +70,7 @@ nlohmann::json CampaignConfig::identity(const FileText& file_text) const {
     j["arms"].push_back({{"name", arm.name},
                          {"problem_sha", content_hash(arm.problem)},
                          {"calibrate", arm.calibrate}});
-  j["world"] = {{"type", world.type}, {"problem_sha", content_hash(world.problem)}};
+  j["world"] = {{"type", to_string(world.type)}, {"problem_sha", content_hash(world.problem)}};
   j["training_set"] = {{"recordings_per_pair", training.recordings_per_pair},
                        {"objects", training.objects},
                        {"actions", training.actions},
@@ -117,9 +121,13 @@ WorldConfig read_world(const YamlReader& f, const YAML::Node& root, const std::s
   f.expect_map(world, "world");
   f.only_keys(world, {"type", "problem"}, "world");
   WorldConfig w;
-  w.type = f.name(f.require(world, "type", "world"), "world type");
-  if (w.type != "model" && w.type != "simulated")
-    f.fail(world, "world type '" + w.type + "' is not one of: model, simulated");
+  const std::string type = f.name(f.require(world, "type", "world"), "world type");
+  if (type == to_string(WorldType::model))
+    w.type = WorldType::model;
+  else if (type == to_string(WorldType::simulated))
+    w.type = WorldType::simulated;
+  else
+    f.fail(world, "world type '" + type + "' is not one of: model, simulated");
   w.problem = resolve(source, f.name(f.require(world, "problem", "world"), "world problem"));
   return w;
 }
@@ -263,7 +271,7 @@ nlohmann::json to_json(const CampaignConfig& c) {
   for (const CampaignArm& arm : c.arms)
     j["arms"].push_back(
         {{"name", arm.name}, {"problem", arm.problem}, {"calibrate", arm.calibrate}});
-  j["world"] = {{"type", c.world.type}, {"problem", c.world.problem}};
+  j["world"] = {{"type", to_string(c.world.type)}, {"problem", c.world.problem}};
   j["training_set"] = {{"recordings_per_pair", c.training.recordings_per_pair},
                        {"objects", c.training.objects},
                        {"actions", c.training.actions},
@@ -291,7 +299,9 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
     for (const auto& a : j.at("arms"))
       c.arms.push_back({a.at("name").get<std::string>(), a.at("problem").get<std::string>(),
                         a.at("calibrate").get<bool>()});
-    c.world.type = j.at("world").at("type").get<std::string>();
+    c.world.type = j.at("world").at("type").get<std::string>() == to_string(WorldType::simulated)
+                       ? WorldType::simulated
+                       : WorldType::model;
     c.world.problem = j.at("world").at("problem").get<std::string>();
     const auto& t = j.at("training_set");
     c.training.recordings_per_pair = t.at("recordings_per_pair").get<int>();

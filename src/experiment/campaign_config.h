@@ -37,13 +37,21 @@ struct ObjectGroup {
 };
 
 // Where actions happen.
-struct WorldConfig {
-  // "model": the world draws observations from `problem`'s own table (a planner study, no sound);
+enum class WorldType {
+  // `model`: the world draws observations from `problem`'s own table (a planner study, no sound);
   // a variant object behaves as the object it plays.
-  // "simulated": the closed loop: the simulated robot acts on the group's object, the simulated
+  model,
+  // `simulated`: the closed loop: the simulated robot acts on the group's object, the simulated
   // recorder records, the trained classifier hears; `problem` gives rewards, kinematics and
   // symbols.
-  std::string type = "model";
+  simulated,
+};
+
+// "model", "simulated": the words of the campaign file.
+const char* to_string(WorldType type);
+
+struct WorldConfig {
+  WorldType type = WorldType::model;
   std::string problem;
 };
 

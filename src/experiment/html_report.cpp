@@ -104,13 +104,13 @@ std::string page_opening(const CampaignResults& results) {
       escape(config.planner.solver),
       config.planner.episodes > 0 ? fmt::format("{} episodes per step", config.planner.episodes)
                                   : fmt::format("{} ms per step", config.planner.step_ms));
-  if (config.world.type == "simulated")
+  if (config.world.type == WorldType::simulated)
     h += "<p class=\"note\">The world here is the simulator: the simulated robot slides or strikes "
          "the object (a weighted variant with its added mass), the simulated recorder records, and "
          "the classifier trained on the synthesised training set reports what it heard. If "
          "simulated objects are easier to tell apart than the lab's real ones, the numbers here "
          "are better than the report's for that reason, not because of the planner.</p>\n";
-  if (config.world.type == "model")
+  if (config.world.type == WorldType::model)
     h += fmt::format(
         "<p class=\"note\">The world here is a problem file's own observation table "
         "(<code>{}</code>): observations are drawn from it, no sound is synthesised or classified "

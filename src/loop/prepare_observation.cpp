@@ -23,7 +23,7 @@ bool complete(const SimulatedTraining& training) {
 
 std::shared_ptr<const perception::ObservationModel> train(const std::string& recordings,
                                                           const perception::TrainOptions& options,
-                                                          const perception::ProgressFn& progress,
+                                                          const ProgressFn& progress,
                                                           const std::atomic<bool>& stop) {
   auto model =
       std::make_shared<const perception::ObservationModel>(perception::train_observation_model(
@@ -34,7 +34,7 @@ std::shared_ptr<const perception::ObservationModel> train(const std::string& rec
 }  // namespace
 
 bool synthesise_training_set(const SimulatedTraining& training,
-                             const perception::ProgressFn& progress,
+                             const ProgressFn& progress,
                              const std::atomic<bool>& stop) {
   if (training.reuse_complete && complete(training)) return true;
   sim::DatasetOptions options;
@@ -45,7 +45,7 @@ bool synthesise_training_set(const SimulatedTraining& training,
   options.output_dir = training.directory.string();
   const sim::DatasetSummary written = sim::write_dataset(
       *training.catalogue, *training.config, options,
-      [&](int done, int total, const std::string&) {
+      [&](const std::string&, int done, int total) {
         if (progress) progress("synthesise", done, total);
       },
       stop);
@@ -55,7 +55,7 @@ bool synthesise_training_set(const SimulatedTraining& training,
 PreparedObservation prepare_observation(const ObservationSource& source,
                                         const pomdp::Problem* calibrate,
                                         const std::string& problem_path,
-                                        const perception::ProgressFn& progress,
+                                        const ProgressFn& progress,
                                         const std::atomic<bool>& stop) {
   PreparedObservation prepared;
   if (const auto* file = std::get_if<ModelFile>(&source)) {

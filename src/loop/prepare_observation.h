@@ -60,11 +60,11 @@ struct PreparedObservation {
 PreparedObservation prepare_observation(const ObservationSource& source,
                                         const pomdp::Problem* calibrate,
                                         const std::string& problem_path,
-                                        const perception::ProgressFn& progress,
+                                        const ProgressFn& progress,
                                         const std::atomic<bool>& stop);
 
 // Synthesises `training`'s recordings unless complete already; false when stopped.
 bool synthesise_training_set(const SimulatedTraining& training,
-                             const perception::ProgressFn& progress, const std::atomic<bool>& stop);
+                             const ProgressFn& progress, const std::atomic<bool>& stop);
 
 }  // namespace echoplan::loop

@@ -5,7 +5,7 @@
 
 #include "perception/calibration.h"
 #include "perception/observation_model.h"
-#include "perception/progress.h"
+#include "common/progress.h"
 #include "perception/recording_set.h"
 
 namespace echoplan::perception {

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "perception/observation_model.h"
-#include "perception/progress.h"
+#include "common/progress.h"
 #include "perception/recording_set.h"
 
 namespace echoplan::perception {

@@ -78,7 +78,7 @@ std::string manifest_row(const std::string& relative, const std::string& object,
 
 DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config,
                              const DatasetOptions& options,
-                             const std::function<void(int, int, const std::string&)>& progress,
+                             const ProgressFn& progress,
                              const std::atomic<bool>& stop) {
   namespace fs = std::filesystem;
   const std::vector<std::string> objects =
@@ -148,7 +148,7 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
         done[k] = Done{relative, std::move(row), r.outcome.collision()};
         for (; next_row < done.size() && done[next_row]; ++next_row) {
           write_row(*done[next_row]);
-          if (progress) progress(summary.written, total, done[next_row]->file);
+          if (progress) progress(done[next_row]->file, summary.written, total);
         }
       }
     } catch (...) {

@@ -11,10 +11,10 @@
 
 #include <atomic>
 #include <cstdint>
-#include <functional>
 #include <string>
 #include <vector>
 
+#include "common/progress.h"
 #include "sim/catalogue.h"
 #include "sim/sim_config.h"
 
@@ -39,12 +39,12 @@ struct DatasetSummary {
 std::uint64_t clip_seed(std::uint64_t seed, const std::string& object, const std::string& action,
                         int index);
 
-// Writes the dataset. `progress(done, total, file)` is called after each clip. Stops early, with
+// Writes the dataset. `progress(file, done, total)` is called after each clip. Stops early, with
 // summary.interrupted set, when `stop` becomes true (checked between clips). Throws InputError for
 // unknown object or action names (before writing anything) and if a file cannot be written.
 DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config,
                              const DatasetOptions& options,
-                             const std::function<void(int, int, const std::string&)>& progress,
+                             const ProgressFn& progress,
                              const std::atomic<bool>& stop);
 
 }  // namespace echoplan::sim

@@ -22,7 +22,7 @@ std::string repo_file(const std::string& relative) {
 
 pomdp::ObjectProblemData perfect_sensing_seed() {
   const pomdp::Problem p = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
-  auto d = dynamic_cast<const pomdp::ObjectIdentificationModel&>(*p.model).data();
+  auto d = (*p.model->object_identification()).data();
   for (auto& action : d.observation_table)
     for (std::size_t k = 0; k < action.size(); ++k)
       for (std::size_t o = 0; o < action[k].size(); ++o) action[k][o] = (o == k) ? 1.0 : 0.0;
@@ -77,7 +77,7 @@ TEST(RegretCertificate, LoosenessBoundsTheDistanceBetweenTheTwoRegrets) {
   // the two regret figures (from the bounds' two ends) differ by at most the summed gaps reported.
   const pomdp::Problem problem =
       pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
-  const auto& model = dynamic_cast<const pomdp::ObjectIdentificationModel&>(*problem.model);
+  const auto& model = (*problem.model->object_identification());
   const fs::path steps = write_steps("loose",
                                      "0,0,strike,coffee_mug,0,0,0,0,-1,10\n"
                                      "0,1,strike,coffee_mug,0,0,0,0,-1,10\n"
@@ -111,7 +111,7 @@ TEST(RegretCertificate, LooseBoundsNeverCertifyLessRegretThanTightOnes) {
   // the tight one's lower end, and the tight one's two ends nearly meet.
   const pomdp::Problem problem =
       pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
-  const auto& model = dynamic_cast<const pomdp::ObjectIdentificationModel&>(*problem.model);
+  const auto& model = (*problem.model->object_identification());
   const fs::path steps = write_steps("rival",
                                      "0,0,strike,coffee_mug,0,0,0,0,-1,10\n"
                                      "0,1,strike,coffee_mug,0,0,0,0,-1,10\n"

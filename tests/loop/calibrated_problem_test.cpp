@@ -31,7 +31,7 @@ const perception::ObservationModel& stored_model() {
 
 ObjectProblemData seed_data() {
   const pomdp::Problem p = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
-  return dynamic_cast<const pomdp::ObjectIdentificationModel&>(*p.model).data();
+  return (*p.model->object_identification()).data();
 }
 
 // The seed problem cut down to the model's two objects, listed in the other order than the

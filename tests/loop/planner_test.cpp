@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <typeinfo>
+
 #include "common/error.h"
 #include "solvers/abt_solver.h"
 #include "solvers/pomcp_solver.h"
@@ -21,7 +23,7 @@ TEST(Planner, TheProblemFilesPlannerByDefault) {
   const std::string path = shipped("audio_objects.yaml");
   const Planner p = make_planner({}, pomdp::load_problem(path), path);
   EXPECT_EQ(p.name, "abt");
-  EXPECT_NE(dynamic_cast<solvers::AbtSolver*>(p.solver.get()), nullptr);
+  EXPECT_EQ(typeid(*p.solver), typeid(solvers::AbtSolver));
   EXPECT_EQ(p.options.exploration, 110.0);
   EXPECT_EQ(p.options.max_depth, 100);
   EXPECT_EQ(p.options.root_particles, 1000);
@@ -47,7 +49,7 @@ TEST(Planner, OverridesChooseTheSolverAndBudget) {
   f.depth = 9;
   const Planner p = make_planner(f, pomdp::load_problem(path), path);
   EXPECT_EQ(p.name, "pomcp");
-  EXPECT_NE(dynamic_cast<solvers::PomcpSolver*>(p.solver.get()), nullptr);
+  EXPECT_EQ(typeid(*p.solver), typeid(solvers::PomcpSolver));
   EXPECT_EQ(p.options.max_depth, 9);
   EXPECT_EQ(p.describe(), "pomcp, 250 episodes/step");
   EXPECT_EQ(p.to_json()["budget"], nlohmann::json({{"episodes", 250}}));

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <typeinfo>
+
 #include "../common/input_error_message.h"
 #include "perception/seed_gaussian_classifier.h"
 #include "perception/seed_template_classifier.h"
@@ -14,11 +16,14 @@ namespace {
 TEST(Classifier, EveryNameBuildsItsClassifier) {
   EXPECT_EQ(classifier_names(), (std::vector<std::string>{"summary-lda", "summary-nearest-mean",
                                                           "seed-template", "seed-gaussian"}));
-  EXPECT_NE(dynamic_cast<SummaryLdaClassifier*>(make_classifier("summary-lda").get()), nullptr);
-  EXPECT_NE(dynamic_cast<SummaryLdaClassifier*>(make_classifier("summary-nearest-mean").get()),
-            nullptr);
-  EXPECT_NE(dynamic_cast<SeedTemplateClassifier*>(make_classifier("seed-template").get()), nullptr);
-  EXPECT_NE(dynamic_cast<SeedGaussianClassifier*>(make_classifier("seed-gaussian").get()), nullptr);
+  const auto made = make_classifier("summary-lda");
+  EXPECT_EQ(typeid(*made), typeid(SummaryLdaClassifier));
+  const auto nearest_mean = make_classifier("summary-nearest-mean");
+  EXPECT_EQ(typeid(*nearest_mean), typeid(SummaryLdaClassifier));
+  const auto templates = make_classifier("seed-template");
+  EXPECT_EQ(typeid(*templates), typeid(SeedTemplateClassifier));
+  const auto gaussian = make_classifier("seed-gaussian");
+  EXPECT_EQ(typeid(*gaussian), typeid(SeedGaussianClassifier));
 }
 
 TEST(Classifier, AnUnknownNameListsTheKnownOnes) {

@@ -42,7 +42,7 @@ TEST(ExactBelief, TigerListeningMatchesBayes) {
 
 TEST(ExactBelief, SeedProblemMatchesBayesAndTracksTheOffset) {
   const Problem p = load_problem(repo_file("problems/audio_objects.yaml"));
-  const auto& d = dynamic_cast<const ObjectIdentificationModel&>(*p.model).data();
+  const auto& d = (*p.model->object_identification()).data();
   ExactBelief b(p.model);
   Rng rng(2);
   const std::vector<std::pair<int, int>> steps = {
@@ -62,7 +62,7 @@ TEST(ExactBelief, SeedProblemMatchesBayesAndTracksTheOffset) {
 
 TEST(ExactBelief, ImpossibleObservationKeepsThePrediction) {
   const Problem p = load_problem(repo_file("problems/audio_objects.yaml"));
-  const auto& m = dynamic_cast<const ObjectIdentificationModel&>(*p.model);
+  const auto& m = (*p.model->object_identification());
   ExactBelief b(p.model);
   Rng rng(3);
   EXPECT_TRUE(b.update(kStrike, Observation{1, {}}, rng));

@@ -22,7 +22,7 @@ TEST(LoadProblem, PomdpFilesAreCassandraFormatWithAnExactBelief) {
 
 TEST(LoadProblem, OtherFilesAreYamlProblems) {
   const Problem p = load_problem(repo_file("problems/audio_objects.yaml"));
-  EXPECT_NE(dynamic_cast<const ObjectIdentificationModel*>(p.model.get()), nullptr);
+  EXPECT_NE(p.model->object_identification(), nullptr);
   EXPECT_EQ(p.belief.type, BeliefSettings::Type::particle);
   EXPECT_EQ(p.source_path, repo_file("problems/audio_objects.yaml"));
 }

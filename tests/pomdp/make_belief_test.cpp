@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <typeinfo>
+
 #include <cmath>
 
 #include "pomdp/exact_belief.h"
@@ -21,11 +23,11 @@ TEST(MakeBelief, FollowsTheProblemSettings) {
   Problem p = load_problem(repo_file("problems/audio_objects.yaml"));
   Rng rng(10);
   BeliefPtr particles = make_belief(p, rng);
-  ASSERT_NE(dynamic_cast<ParticleBelief*>(particles.get()), nullptr);
-  EXPECT_EQ(dynamic_cast<ParticleBelief&>(*particles).size(), 1000);
+  ASSERT_EQ(typeid(*particles), typeid(ParticleBelief));
+  EXPECT_EQ(static_cast<ParticleBelief&>(*particles).size(), 1000);
   p.belief.type = BeliefSettings::Type::exact;
   BeliefPtr exact = make_belief(p, rng);
-  EXPECT_NE(dynamic_cast<ExactBelief*>(exact.get()), nullptr);
+  EXPECT_EQ(typeid(*exact), typeid(ExactBelief));
   // A clone is independent of its original.
   BeliefPtr copy = exact->clone();
   exact->update(kStrike, Observation{0, {}}, rng);

@@ -18,7 +18,7 @@ constexpr int kSlide = 0, kStrike = 1;
 
 TEST(ModelEnvironment, StepsTheTrueStateUntilTheEpisodeEnds) {
   const Problem p = load_problem(repo_file("problems/audio_objects.yaml"));
-  const auto& m = dynamic_cast<const ObjectIdentificationModel&>(*p.model);
+  const auto& m = (*p.model->object_identification());
   ModelEnvironment env(p.model);
   Rng rng(11);
   env.reset(m.tabular_state(2), rng);

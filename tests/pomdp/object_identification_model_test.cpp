@@ -17,7 +17,7 @@ class SeedModel : public ::testing::Test {
  protected:
   Problem problem = load_problem(repo_file("problems/audio_objects.yaml"));
   const ObjectIdentificationModel& model =
-      dynamic_cast<const ObjectIdentificationModel&>(*problem.model);
+      (*problem.model->object_identification());
   static constexpr int kSlide = 0, kStrike = 1, kMoveA = 2, kMoveB = 3;
 };
 
@@ -136,7 +136,7 @@ TEST(ObjectModelCollision, CollisionEndsWithItsReward) {
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   text.replace(text.find("    slide: 0\n"), 13, "    slide: 0.25\n");
   const Problem p = parse_problem_yaml(text, "collide.yaml");
-  const auto& m = dynamic_cast<const ObjectIdentificationModel&>(*p.model);
+  const auto& m = (*p.model->object_identification());
   Rng rng(6);
   const int n = 20000;
   int collisions = 0;

@@ -154,7 +154,7 @@ TEST(ParticleBelief, ReinvigoratedParticlesAreWeightedByTheWholeHistory) {
 
 TEST(ParticleBelief, ImpossibleObservationKeepsTheParticles) {
   const Problem p = load_problem(repo_file("problems/audio_objects.yaml"));
-  const auto& m = dynamic_cast<const ObjectIdentificationModel&>(*p.model);
+  const auto& m = (*p.model->object_identification());
   Rng rng(9);
   ParticleBelief b(p.model, 300, rng);
   const std::vector<int> before = b.particle_counts(0);

@@ -27,7 +27,7 @@ TEST(ProblemCheck, ShippedProblemsAreClean) {
 
 TEST(ProblemCheck, ObjectProblemMistakes) {
   Problem p = load_problem(repo_file("problems/audio_objects.yaml"));
-  ObjectProblemData d = dynamic_cast<const ObjectIdentificationModel&>(*p.model).data();
+  ObjectProblemData d = (*p.model->object_identification()).data();
   // Make coffee_mug sound like pringles_can under every action: they belong in different places.
   d.observation_table[0][1] = d.observation_table[0][0];
   d.observation_table[1][1] = d.observation_table[1][0];

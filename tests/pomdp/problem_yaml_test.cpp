@@ -15,7 +15,7 @@ using testing::repo_file;
 using testing::repo_text;
 
 const ObjectIdentificationModel& object_model(const Problem& p) {
-  return dynamic_cast<const ObjectIdentificationModel&>(*p.model);
+  return (*p.model->object_identification());
 }
 
 // The seed's section 3.3, typed in here independently of the YAML file: [object][action][class].

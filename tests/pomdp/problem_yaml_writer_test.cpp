@@ -12,7 +12,7 @@ namespace {
 using testing::repo_file;
 
 const ObjectIdentificationModel& object_model(const Problem& p) {
-  return dynamic_cast<const ObjectIdentificationModel&>(*p.model);
+  return (*p.model->object_identification());
 }
 
 TEST(ProblemYamlWriter, WrittenProblemReadsBackIdentically) {

@@ -63,7 +63,7 @@ TEST(RandomProblem, RoundTripsThroughYaml) {
   std::ostringstream out;
   write_problem_yaml(out, d, BeliefSettings{BeliefSettings::Type::exact, 500}, planner);
   const Problem p = parse_problem_yaml(out.str(), "random.yaml");
-  const auto& back = dynamic_cast<const ObjectIdentificationModel&>(*p.model).data();
+  const auto& back = (*p.model->object_identification()).data();
   EXPECT_EQ(back.name, d.name);
   EXPECT_EQ(back.objects, d.objects);
   EXPECT_EQ(back.prior, d.prior);

@@ -41,7 +41,7 @@ TEST(Dataset, WritesEveryPairAndAManifestThatReproducesEachFile) {
   int calls = 0;
   const DatasetSummary s = write_dataset(
       shipped_catalogue(), SimConfig{}, options,
-      [&](int done, int total, const std::string&) {
+      [&](const std::string&, int done, int total) {
         ++calls;
         EXPECT_EQ(total, 8);
         EXPECT_EQ(done, calls);
@@ -89,7 +89,7 @@ TEST(Dataset, StoppingKeepsFinishedFilesAndTheirRows) {
   std::atomic<bool> stop{false};
   const DatasetSummary s = write_dataset(
       shipped_catalogue(), SimConfig{}, options,
-      [&](int done, int, const std::string&) { stop = done == 2; }, stop);
+      [&](const std::string&, int done, int) { stop = done == 2; }, stop);
   EXPECT_TRUE(s.interrupted);
   EXPECT_EQ(s.written, 2);
   EXPECT_EQ(lines_of(dir / "manifest.csv").size(), 3u);

@@ -50,7 +50,7 @@ void add_dataset_command(CLI::App& app) {
     const StopSignal stop;
     const sim::DatasetSummary summary = sim::write_dataset(
         setup.catalogue, setup.config, opt->dataset,
-        [](int done, int total, const std::string& file) {
+        [](const std::string& file, int done, int total) {
           fmt::print(stderr, "[{}/{}] {}\n", done, total, file);
         },
         stop.flag());
