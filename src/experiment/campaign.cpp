@@ -138,8 +138,7 @@ void load_simulator(Campaign& c, InputFiles& files) {
 void claim_folder(Campaign& c, InputFiles& files) {
   check_writable(c.directory);
   const fs::path described = c.directory / kDescription;
-  c.results.identity =
-      c.config.identity([&](const std::string& path) { return files.text(path); });
+  c.results.identity = c.config.identity([&](const std::string& path) { return files.text(path); });
   const nlohmann::json mine = {{"config", to_json(c.config)}, {"identity", c.results.identity}};
   if (fs::exists(described)) {
     const nlohmann::json theirs = nlohmann::json::parse(
@@ -237,8 +236,9 @@ loop::SimulatedTraining simulated_training(const Campaign& c) {
 
 // The classifier: training_set.model (loaded already), DIR/training/model.json of an earlier run,
 // or trained now on the training set (and saved there for the user). Null when stopped.
-std::shared_ptr<const perception::ObservationModel> classifier(
-    const Campaign& c, const ProgressFn& progress, const std::atomic<bool>& stop) {
+std::shared_ptr<const perception::ObservationModel> classifier(const Campaign& c,
+                                                               const ProgressFn& progress,
+                                                               const std::atomic<bool>& stop) {
   if (c.observation_model) return c.observation_model;
   const fs::path saved = c.directory / "training" / "model.json";
   if (fs::exists(saved))

@@ -12,6 +12,7 @@
 #include "common/data_dir.h"
 #include "common/error.h"
 #include "common/file_io.h"
+#include "common/json_fields.h"
 #include "common/stable_hash.h"
 #include "common/yaml_reader.h"
 #include "perception/observation_model.h"
@@ -291,43 +292,101 @@ nlohmann::json to_json(const CampaignConfig& c) {
   return j;
 }
 
-CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::string& source) {
-  try {
-    CampaignConfig c;
-    c.source = j.at("source").get<std::string>();
-    c.seed = j.at("seed").get<std::uint64_t>();
-    for (const auto& a : j.at("arms"))
-      c.arms.push_back({a.at("name").get<std::string>(), a.at("problem").get<std::string>(),
-                        a.at("calibrate").get<bool>()});
-    c.world.type = j.at("world").at("type").get<std::string>() == to_string(WorldType::simulated)
-                       ? WorldType::simulated
-                       : WorldType::model;
-    c.world.problem = j.at("world").at("problem").get<std::string>();
-    const auto& t = j.at("training_set");
-    c.training.recordings_per_pair = t.at("recordings_per_pair").get<int>();
-    c.training.objects = t.at("objects").get<std::vector<std::string>>();
-    c.training.actions = t.at("actions").get<std::vector<std::string>>();
-    c.training.recordings = t.at("recordings").get<std::string>();
-    c.training.model = t.at("model").get<std::string>();
-    c.training.classifier = t.at("classifier").get<std::string>();
-    // Absent in campaign folders written before the option existed (they trained on counts).
-    c.training.table = t.value("table", std::string());
-    c.training.catalogue = t.at("catalogue").get<std::string>();
-    c.training.sim_config = t.at("sim_config").get<std::string>();
-    for (const auto& g : j.at("trials"))
-      c.groups.push_back({g.at("object").get<std::string>(), g.at("plays").get<std::string>(),
-                          g.at("trials").get<int>()});
-    const auto& p = j.at("planner");
-    c.planner.solver = p.at("solver").get<std::string>();
-    c.planner.episodes = p.at("episodes").get<std::int64_t>();
-    c.planner.step_ms = p.at("step_ms").get<std::int64_t>();
-    c.planner.max_steps = p.at("max_steps").get<int>();
-    // Absent when the campaign names no reference, and in folders written before the key existed.
-    if (j.contains("reference")) c.reference = reference_results_from_json(j["reference"], source);
-    return c;
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(source, 0, std::string("not a campaign description: ") + e.what());
+namespace {
+
+namespace jf = json_fields;
+
+std::vector<CampaignArm> arms_from_json(const nlohmann::json& j, const jf::JsonSource& source) {
+  std::vector<CampaignArm> arms;
+  const nlohmann::json& list = jf::array(jf::member(j, "arms", "", source), "arms", source);
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string path = jf::element("arms", i);
+    arms.push_back(
+        {jf::string(jf::member(list[i], "name", path, source), path + ".name", source),
+         jf::string(jf::member(list[i], "problem", path, source), path + ".problem", source),
+         jf::boolean(jf::member(list[i], "calibrate", path, source), path + ".calibrate", source)});
   }
+  return arms;
+}
+
+WorldConfig world_from_json(const nlohmann::json& j, const jf::JsonSource& source) {
+  const nlohmann::json& w = jf::member(j, "world", "", source);
+  WorldConfig world;
+  world.type = jf::string(jf::member(w, "type", "world", source), "world.type", source) ==
+                       to_string(WorldType::simulated)
+                   ? WorldType::simulated
+                   : WorldType::model;
+  world.problem = jf::string(jf::member(w, "problem", "world", source), "world.problem", source);
+  return world;
+}
+
+TrainingSetConfig training_from_json(const nlohmann::json& j, const jf::JsonSource& source) {
+  const nlohmann::json& t = jf::member(j, "training_set", "", source);
+  const auto text = [&](const char* key) {
+    return jf::string(jf::member(t, key, "training_set", source), jf::child("training_set", key),
+                      source);
+  };
+  TrainingSetConfig training;
+  training.recordings_per_pair =
+      jf::integer(jf::member(t, "recordings_per_pair", "training_set", source), 0, 1 << 30,
+                  "training_set.recordings_per_pair", source);
+  training.objects =
+      jf::strings(jf::member(t, "objects", "training_set", source), "training_set.objects", source);
+  training.actions =
+      jf::strings(jf::member(t, "actions", "training_set", source), "training_set.actions", source);
+  training.recordings = text("recordings");
+  training.model = text("model");
+  training.classifier = text("classifier");
+  // Absent in campaign folders written before the option existed (they trained on counts).
+  if (const auto* table = jf::optional_member(t, "table", "training_set", source))
+    training.table = jf::string(*table, "training_set.table", source);
+  training.catalogue = text("catalogue");
+  training.sim_config = text("sim_config");
+  return training;
+}
+
+std::vector<ObjectGroup> groups_from_json(const nlohmann::json& j, const jf::JsonSource& source) {
+  std::vector<ObjectGroup> groups;
+  const nlohmann::json& list = jf::array(jf::member(j, "trials", "", source), "trials", source);
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string path = jf::element("trials", i);
+    groups.push_back(
+        {jf::string(jf::member(list[i], "object", path, source), path + ".object", source),
+         jf::string(jf::member(list[i], "plays", path, source), path + ".plays", source),
+         jf::integer(jf::member(list[i], "trials", path, source), 1, 1 << 30, path + ".trials",
+                     source)});
+  }
+  return groups;
+}
+
+PlannerConfig planner_from_json(const nlohmann::json& j, const jf::JsonSource& source) {
+  const nlohmann::json& p = jf::member(j, "planner", "", source);
+  PlannerConfig planner;
+  planner.solver = jf::string(jf::member(p, "solver", "planner", source), "planner.solver", source);
+  planner.episodes =
+      jf::integer64(jf::member(p, "episodes", "planner", source), "planner.episodes", source);
+  planner.step_ms =
+      jf::integer64(jf::member(p, "step_ms", "planner", source), "planner.step_ms", source);
+  planner.max_steps = jf::integer(jf::member(p, "max_steps", "planner", source), 1, 1 << 30,
+                                  "planner.max_steps", source);
+  return planner;
+}
+
+}  // namespace
+
+CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::string& source) {
+  const jf::JsonSource from(source);
+  CampaignConfig c;
+  c.source = jf::string(jf::member(j, "source", "", from), "source", from);
+  c.seed = jf::unsigned64(jf::member(j, "seed", "", from), "seed", from);
+  c.arms = arms_from_json(j, from);
+  c.world = world_from_json(j, from);
+  c.training = training_from_json(j, from);
+  c.groups = groups_from_json(j, from);
+  c.planner = planner_from_json(j, from);
+  // Absent when the campaign names no reference, and in folders written before the key existed.
+  if (j.contains("reference")) c.reference = reference_results_from_json(j["reference"], source);
+  return c;
 }
 
 std::string default_campaign_path() {

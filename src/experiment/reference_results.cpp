@@ -6,6 +6,7 @@
 
 #include "common/error.h"
 #include "common/file_io.h"
+#include "common/json_fields.h"
 #include "common/yaml_reader.h"
 
 namespace echoplan::experiment {
@@ -81,15 +82,28 @@ nlohmann::json result_json(const ReferenceResult& r) {
           {"mean_steps", r.mean_steps}};
 }
 
-ReferenceResult result_from_json(const nlohmann::json& j) {
-  return {j.at("trials").get<int>(), j.at("correct").get<int>(),
-          j.at("mean_discounted_reward").get<double>(), j.at("mean_steps").get<double>()};
+namespace jf = json_fields;
+
+ReferenceResult result_from_json(const nlohmann::json& j, const std::string& path,
+                                 const jf::JsonSource& source) {
+  const auto field = [&](const char* key) -> const nlohmann::json& {
+    return jf::member(j, key, path, source);
+  };
+  return {jf::integer(field("trials"), 0, 1 << 30, jf::child(path, "trials"), source),
+          jf::integer(field("correct"), 0, 1 << 30, jf::child(path, "correct"), source),
+          jf::number(field("mean_discounted_reward"), jf::child(path, "mean_discounted_reward"),
+                     source),
+          jf::number(field("mean_steps"), jf::child(path, "mean_steps"), source)};
 }
 
-std::optional<ReferenceTotal> total_from_json(const nlohmann::json& totals, const char* key) {
-  if (!totals.contains(key)) return std::nullopt;
-  const nlohmann::json& t = totals.at(key);
-  return ReferenceTotal{t.at("objects").get<std::vector<std::string>>(), result_from_json(t)};
+std::optional<ReferenceTotal> total_from_json(const nlohmann::json& totals, const char* key,
+                                              const jf::JsonSource& source) {
+  const std::string path = jf::child("reference.totals", key);
+  const nlohmann::json* t = jf::optional_member(totals, key, "reference.totals", source);
+  if (!t) return std::nullopt;
+  return ReferenceTotal{
+      jf::strings(jf::member(*t, "objects", path, source), jf::child(path, "objects"), source),
+      result_from_json(*t, path, source)};
 }
 
 }  // namespace
@@ -123,21 +137,24 @@ nlohmann::json to_json(const ReferenceResults& reference) {
 }
 
 ReferenceResults reference_results_from_json(const nlohmann::json& j, const std::string& source) {
-  try {
-    ReferenceResults r;
-    r.source = j.at("source").get<std::string>();
-    r.label = j.at("label").get<std::string>();
-    r.note = j.at("note").get<std::string>();
-    for (const auto& [object, result] : j.at("objects").items())
-      r.objects[object] = result_from_json(result);
-    const nlohmann::json& totals = j.at("totals");
-    r.original_objects = total_from_json(totals, "original_objects");
-    r.variants = total_from_json(totals, "variants");
-    r.all = total_from_json(totals, "all");
-    return r;
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(source, 0, std::string("not a reference description: ") + e.what());
-  }
+  const jf::JsonSource from(source);
+  const auto text = [&](const char* key) {
+    return jf::string(jf::member(j, key, "reference", from), jf::child("reference", key), from);
+  };
+  ReferenceResults r;
+  r.source = text("source");
+  r.label = text("label");
+  r.note = text("note");
+  const nlohmann::json& objects = jf::member(j, "objects", "reference", from);
+  if (!objects.is_object())
+    throw InputError(source, 0, "reference.objects: expected an object of results by object");
+  for (const auto& [object, result] : objects.items())
+    r.objects[object] = result_from_json(result, jf::child("reference.objects", object), from);
+  const nlohmann::json& totals = jf::member(j, "totals", "reference", from);
+  r.original_objects = total_from_json(totals, "original_objects", from);
+  r.variants = total_from_json(totals, "variants", from);
+  r.all = total_from_json(totals, "all", from);
+  return r;
 }
 
 }  // namespace echoplan::experiment

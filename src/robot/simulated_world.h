@@ -17,7 +17,7 @@
 // needs to know that the trial ended there.
 //
 // One world serves one thread: MuJoCo's data and the synthesis buffers are not shared. A parallel
-// campaign builds one world per worker (see experiment/environment_factory.h).
+// campaign builds one world per worker (see loop/world_spec.h).
 #pragma once
 
 #include <map>

@@ -1,7 +1,7 @@
 // A change of the planning model announced to a running solver: "these observation rows changed".
 //
 // What echoplan's models can change while a robot runs is the observation table (the classifier
-// retrained on new recordings, its confusion recalibrated: experiment/calibrated_problem.h); the
+// retrained on new recordings, its confusion recalibrated: loop/calibrated_problem.h); the
 // objects, actions, kinematics and rewards stay what the problem file says. A ModelChange names
 // the new model and the rows P(. | s', a) that differ from the old one, so that a solver keeping
 // sampled episodes (AbtSolver::revise) re-samples the observations of the steps that used those

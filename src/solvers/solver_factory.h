@@ -1,7 +1,7 @@
 // The one place that builds a solver by the name users type - "abt", "pomcp" or "offline" - with
 // the search options and per-step budget a problem file and a user's overrides ask for
 // (planner_overrides.h). What `echoplan trials`, `echoplan run`, campaigns and the ROS planner node
-// plan with (through experiment::make_planner, which only wraps it).
+// plan with (through loop::make_planner, which only wraps it).
 //
 // It knows every solver, so it is compiled into the offline solver's library (echoplan::
 // offline_solver), the top of the solvers module: link that to use it. make_solver.h's

@@ -1,6 +1,6 @@
 // The flags shared by the commands that plan (trials, run): which solver, its search settings and
 // its budget per step, each defaulting to the problem file's planner section
-// (solvers/planner_overrides.h says how they combine; experiment/planner.h builds the solver).
+// (solvers/planner_overrides.h says how they combine; loop/planner.h builds the solver).
 #pragma once
 
 #include <CLI/CLI.hpp>
