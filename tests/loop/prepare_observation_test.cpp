@@ -9,6 +9,7 @@
 #include "../common/input_error_message.h"
 #include "../robot/small_training_set.h"
 #include "loop/object_problem.h"
+#include "mug_or_cup.h"
 #include "perception/observation_model_json.h"
 
 namespace echoplan::loop {
@@ -16,43 +17,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kObjects{"coffee_mug", "plastic_cup"};
+using test::kObjects;
 
-pomdp::Problem mug_or_cup() {
-  return pomdp::parse_problem(R"(name: mug_or_cup
-discount: 0.99
-objects: [coffee_mug, plastic_cup]
-actions:
-  sensing: [slide, strike]
-  sorting: [move_to_A, move_to_B]
-initial_belief:
-  type: fixed_configuration
-  joints: [-2.89527, 1.45058, -0.18396, 2.07696, -0.310356, 0.630897, -1.54233]
-  offset: [0.1, 0, 0]
-  objects: {coffee_mug: 0.5, plastic_cup: 0.5}
-transition:
-  type: kinematic
-  offset_change: {slide: [0.05, 0, 0], strike: [0, 0, 0]}
-  collision_probability: {slide: 0, strike: 0}
-observation:
-  type: table
-  symbols: [coffee_mug, plastic_cup]
-  table:
-    slide: {coffee_mug: [0.5, 0.5], plastic_cup: [0.5, 0.5]}
-    strike: {coffee_mug: [0.5, 0.5], plastic_cup: [0.5, 0.5]}
-reward:
-  sensing: {slide: -1, strike: -1}
-  sorting:
-    move_to_A: {coffee_mug: 10, plastic_cup: -100}
-    move_to_B: {coffee_mug: -100, plastic_cup: 10}
-  collision: -100
-terminal:
-  type: sorting_or_collision
-heuristic:
-  type: known_object
-belief: {type: particle, particles: 300}
-)",
-                              "mug_or_cup.yaml");
+// The mug-or-cup problem as if read from a file.
+pomdp::Problem mug_or_cup_problem() {
+  pomdp::Problem p;
+  p.model = std::make_shared<pomdp::ObjectIdentificationModel>(test::mug_or_cup());
+  p.belief.particles = 300;
+  p.source_path = "mug_or_cup.yaml";
+  return p;
 }
 
 SimulatedTraining simulated(const fs::path& dir) {
@@ -69,7 +42,7 @@ SimulatedTraining simulated(const fs::path& dir) {
 
 TEST(PrepareObservation, TrainsOnSynthesisedRecordingsAndCalibratesTheProblemInMemory) {
   const fs::path dir = testing::unique_temp_dir("prepare_simulated");
-  const pomdp::Problem base = mug_or_cup();
+  const pomdp::Problem base = mug_or_cup_problem();
   const std::atomic<bool> never{false};
   int synthesised = 0;
   const PreparedObservation p = prepare_observation(
@@ -114,7 +87,7 @@ TEST(PrepareObservation, ACompleteSetIsReusedOnlyWhenAsked) {
 TEST(PrepareObservation, AStopBeforeTrainingGivesNoModel) {
   const fs::path dir = testing::unique_temp_dir("prepare_stop");
   const std::atomic<bool> stopped{true};
-  const pomdp::Problem base = mug_or_cup();
+  const pomdp::Problem base = mug_or_cup_problem();
   const PreparedObservation p = prepare_observation(simulated(dir), &base, "", {}, stopped);
   EXPECT_EQ(p.model, nullptr);
   EXPECT_EQ(p.problem, nullptr);
@@ -133,7 +106,7 @@ TEST(PrepareObservation, LoadsAModelFileAndSaysWhenItDoesNotFitTheProblem) {
   EXPECT_EQ(loaded.model->classes(), trained->classes());
   EXPECT_EQ(loaded.problem, nullptr);
   // Trained for the strike only, on the mug and the can: the mug-or-cup problem cannot use it.
-  const pomdp::Problem base = mug_or_cup();
+  const pomdp::Problem base = mug_or_cup_problem();
   const std::string e =
       input_error_message([&] { prepare_observation(ModelFile{file}, &base, "", {}, never); });
   EXPECT_NE(e.find("mug_or_cup.yaml"), std::string::npos) << e;
