@@ -33,8 +33,7 @@ std::shared_ptr<const perception::ObservationModel> train(const std::string& rec
 
 }  // namespace
 
-bool synthesise_training_set(const SimulatedTraining& training,
-                             const ProgressFn& progress,
+bool synthesise_training_set(const SimulatedTraining& training, const ProgressFn& progress,
                              const std::atomic<bool>& stop) {
   if (training.reuse_complete && complete(training)) return true;
   sim::DatasetOptions options;
@@ -54,8 +53,7 @@ bool synthesise_training_set(const SimulatedTraining& training,
 
 PreparedObservation prepare_observation(const ObservationSource& source,
                                         const pomdp::Problem* calibrate,
-                                        const std::string& problem_path,
-                                        const ProgressFn& progress,
+                                        const std::string& problem_path, const ProgressFn& progress,
                                         const std::atomic<bool>& stop) {
   PreparedObservation prepared;
   if (const auto* file = std::get_if<ModelFile>(&source)) {

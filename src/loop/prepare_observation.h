@@ -59,12 +59,11 @@ struct PreparedObservation {
 // action, a model that does not fit `calibrate`; returns a null model when `stop` became true.
 PreparedObservation prepare_observation(const ObservationSource& source,
                                         const pomdp::Problem* calibrate,
-                                        const std::string& problem_path,
-                                        const ProgressFn& progress,
+                                        const std::string& problem_path, const ProgressFn& progress,
                                         const std::atomic<bool>& stop);
 
 // Synthesises `training`'s recordings unless complete already; false when stopped.
-bool synthesise_training_set(const SimulatedTraining& training,
-                             const ProgressFn& progress, const std::atomic<bool>& stop);
+bool synthesise_training_set(const SimulatedTraining& training, const ProgressFn& progress,
+                             const std::atomic<bool>& stop);
 
 }  // namespace echoplan::loop

@@ -3,9 +3,9 @@
 
 #include <vector>
 
+#include "common/progress.h"
 #include "perception/calibration.h"
 #include "perception/observation_model.h"
-#include "common/progress.h"
 #include "perception/recording_set.h"
 
 namespace echoplan::perception {

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "perception/observation_model.h"
 #include "common/progress.h"
+#include "perception/observation_model.h"
 #include "perception/recording_set.h"
 
 namespace echoplan::perception {

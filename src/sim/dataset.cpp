@@ -77,8 +77,7 @@ std::string manifest_row(const std::string& relative, const std::string& object,
 }  // namespace
 
 DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config,
-                             const DatasetOptions& options,
-                             const ProgressFn& progress,
+                             const DatasetOptions& options, const ProgressFn& progress,
                              const std::atomic<bool>& stop) {
   namespace fs = std::filesystem;
   const std::vector<std::string> objects =

@@ -43,8 +43,7 @@ std::uint64_t clip_seed(std::uint64_t seed, const std::string& object, const std
 // summary.interrupted set, when `stop` becomes true (checked between clips). Throws InputError for
 // unknown object or action names (before writing anything) and if a file cannot be written.
 DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config,
-                             const DatasetOptions& options,
-                             const ProgressFn& progress,
+                             const DatasetOptions& options, const ProgressFn& progress,
                              const std::atomic<bool>& stop);
 
 }  // namespace echoplan::sim

@@ -3,9 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include <typeinfo>
-
 #include <cmath>
+#include <typeinfo>
 
 #include "pomdp/exact_belief.h"
 #include "pomdp/particle_belief.h"

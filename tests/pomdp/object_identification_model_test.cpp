@@ -16,8 +16,7 @@ using testing::repo_file;
 class SeedModel : public ::testing::Test {
  protected:
   Problem problem = load_problem(repo_file("problems/audio_objects.yaml"));
-  const ObjectIdentificationModel& model =
-      (*problem.model->object_identification());
+  const ObjectIdentificationModel& model = (*problem.model->object_identification());
   static constexpr int kSlide = 0, kStrike = 1, kMoveA = 2, kMoveB = 3;
 };
 
