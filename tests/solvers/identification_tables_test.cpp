@@ -26,7 +26,9 @@ TEST(IdentificationTables, ReadsTheSeedProblemOverItsLiveStates) {
   EXPECT_EQ(t->states, m.num_states());
   ASSERT_EQ(t->live_states, static_cast<int>(t->model_state.size()));
   for (int s = 0, l = 0; s < m.num_states(); ++s)
-    if (!m.terminal(s)) EXPECT_EQ(t->model_state[l++], s);
+    if (!m.terminal(s)) {
+      EXPECT_EQ(t->model_state[l++], s);
+    }
   const int L = t->live_states, O = t->observations;
   for (int a = 0; a < t->actions; ++a) {
     // Sensing keeps the state (sometimes: a collision ends the episode); sorting always ends it.
