@@ -6,6 +6,7 @@
 #   perception_model_fuzz  the observation model file reader (seeds: tests/data/perception/*.json)
 #   policy_file_fuzz    the offline policy file reader (seeds: tests/data/policy/*.json)
 #   experiment_files_fuzz  steps.csv and campaign files (seeds: tests/data/experiment/, experiments/)
+#   oppt_log_fuzz       OPPT run logs for `echoplan import oppt` (seeds: tests/data/oppt/)
 # Usage: scripts/fuzz.sh [seconds=120] [target=audio_decode_fuzz]
 # Findings (crash-*, timeout-*, oom-* files) land in build-fuzz/findings/<target>/; the growing corpus in
 # build-fuzz/corpus/<target>/.
@@ -28,7 +29,8 @@ case "$target" in
   perception_model_fuzz) seeds=("$root"/tests/data/perception/*.json) ;;
   policy_file_fuzz) seeds=("$root"/tests/data/policy/*.json) ;;
   experiment_files_fuzz) seeds=("$root"/tests/data/experiment/* "$root"/experiments/*.yaml) ;;
-  *) echo "fuzz.sh: unknown target '$target' (audio_decode_fuzz, problem_file_fuzz, sim_files_fuzz, perception_model_fuzz, policy_file_fuzz or experiment_files_fuzz)" >&2; exit 2 ;;
+  oppt_log_fuzz) seeds=("$root"/tests/data/oppt/*.log) ;;
+  *) echo "fuzz.sh: unknown target '$target' (audio_decode_fuzz, problem_file_fuzz, sim_files_fuzz, perception_model_fuzz, policy_file_fuzz, experiment_files_fuzz or oppt_log_fuzz)" >&2; exit 2 ;;
 esac
 cp -n "${seeds[@]}" "$corpus/" 2>/dev/null || true
 # One worker; inputs up to 4 KiB keep runs fast (~150/s; larger seeds are read truncated, which exercises the
