@@ -18,8 +18,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// This process's scratch folder, made once (libFuzzer ends with _Exit, so it stays in the temp
-// folder; a few small files): DIR/strike/ holds the modality files.
+// This process's scratch folder, made once (libFuzzer may exit without atexit handlers, so it stays
+// in the temp folder; a few small files): DIR/strike/ holds the modality files.
 const fs::path& scratch() {
   static const fs::path dir = [] {
     const fs::path d =
