@@ -4,13 +4,12 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <set>
-#include <sstream>
 
 #include "audio/io.h"
+#include "common/csv_reader.h"
 #include "common/error.h"
+#include "common/file_io.h"
 
 namespace echoplan::perception {
 namespace fs = std::filesystem;
@@ -27,16 +26,6 @@ std::vector<fs::path> sorted_entries(const fs::path& dir) {
   if (ec) throw InputError(dir.string(), 0, "cannot list the folder: " + ec.message());
   std::sort(entries.begin(), entries.end());
   return entries;
-}
-
-// Splits one CSV line (no quoting: `echoplan dataset` writes plain names and numbers).
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cell;
-  std::istringstream in(line);
-  while (std::getline(in, cell, ',')) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
 }
 
 // Files of DIR/<object>/<action>/ as found on disk: (object, action) -> relative paths, sorted.
@@ -77,6 +66,60 @@ void add_unique(std::vector<std::string>& list, const std::string& name) {
   if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
 }
 
+// Reads DIR/manifest.csv into `set`'s objects and actions (manifest order) and `sessions` (each
+// listed file -> its session column, "" when there is none). Returns (object, action) -> files in
+// manifest order.
+Layout read_manifest(const fs::path& root, const fs::path& manifest_path, RecordingSet& set,
+                     std::map<std::string, std::string>& sessions) {
+  const std::string name = manifest_path.string();
+  CsvReader csv(read_text_file(name, "manifest"), name);
+  std::vector<std::string> header, cells;
+  if (!csv.next(header)) throw InputError(name, 1, "empty manifest: expected a header row");
+  auto column = [&](const std::string& wanted) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), wanted) -
+                                    header.begin());
+  };
+  for (const char* needed : {"file", "object", "action"})
+    if (column(needed) == header.size())
+      throw InputError(
+          name, csv.line(),
+          fmt::format("the header has no '{}' column (need file, object, action)", needed));
+  const std::size_t file_col = column("file"), object_col = column("object"),
+                    action_col = column("action");
+  const std::size_t session_col = column("session");  // header.size(): no session column
+  Layout chosen;
+  while (csv.next(cells)) {
+    const int line_no = csv.line();
+    if (cells.size() != header.size())
+      throw InputError(
+          name, line_no,
+          fmt::format("{} cells, but the header has {} columns", cells.size(), header.size()));
+    const std::string& file = cells[file_col];
+    const std::string& object = cells[object_col];
+    const std::string& action = cells[action_col];
+    const std::string expected_prefix = object + "/" + action + "/";
+    if (!file.starts_with(expected_prefix) ||
+        file.find('/', expected_prefix.size()) != std::string::npos)
+      throw InputError(name, line_no,
+                       fmt::format("file '{}' is not inside its folder {}", file, expected_prefix));
+    if (!fs::is_regular_file(root / file))
+      throw InputError(name, line_no,
+                       fmt::format("file '{}' does not exist", (root / file).string()));
+    const bool has_session = session_col < header.size();
+    if (has_session && cells[session_col].empty())
+      throw InputError(name, line_no,
+                       fmt::format("file '{}' has an empty session (the manifest has a session "
+                                   "column, so every row needs one)",
+                                   file));
+    if (!sessions.emplace(file, has_session ? cells[session_col] : std::string()).second)
+      throw InputError(name, line_no, fmt::format("file '{}' is listed twice", file));
+    add_unique(set.objects, object);
+    add_unique(set.actions, action);
+    chosen[{object, action}].push_back(file);
+  }
+  return chosen;
+}
+
 }  // namespace
 
 bool is_recording_file(const std::string& path) {
@@ -112,55 +155,13 @@ RecordingSet load_recording_set(const std::string& dir) {
   set.root = dir;
   // (object, action) -> files in set order.
   Layout chosen;
+  std::map<std::string, std::string> sessions;  // manifest file -> its session ("" without column)
   const fs::path manifest_path = root / "manifest.csv";
   if (fs::exists(manifest_path)) {
-    std::ifstream in(manifest_path);
-    if (!in) throw InputError(manifest_path.string(), 0, "cannot open the manifest");
-    std::string line;
-    if (!std::getline(in, line))
-      throw InputError(manifest_path.string(), 1, "empty manifest: expected a header row");
-    const auto header = split_csv(line);
-    auto column = [&](const std::string& name) {
-      const auto it = std::find(header.begin(), header.end(), name);
-      if (it == header.end())
-        throw InputError(
-            manifest_path.string(), 1,
-            fmt::format("the header has no '{}' column (need file, object, action)", name));
-      return static_cast<std::size_t>(it - header.begin());
-    };
-    const std::size_t file_col = column("file"), object_col = column("object"),
-                      action_col = column("action");
-    std::set<std::string> listed;
-    for (int line_no = 2; std::getline(in, line); ++line_no) {
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      if (line.empty()) continue;
-      const auto cells = split_csv(line);
-      if (cells.size() != header.size())
-        throw InputError(
-            manifest_path.string(), line_no,
-            fmt::format("{} cells, but the header has {} columns", cells.size(), header.size()));
-      const std::string& file = cells[file_col];
-      const std::string& object = cells[object_col];
-      const std::string& action = cells[action_col];
-      const std::string expected_prefix = object + "/" + action + "/";
-      if (!file.starts_with(expected_prefix) ||
-          file.find('/', expected_prefix.size()) != std::string::npos)
-        throw InputError(
-            manifest_path.string(), line_no,
-            fmt::format("file '{}' is not inside its folder {}", file, expected_prefix));
-      if (!fs::is_regular_file(root / file))
-        throw InputError(manifest_path.string(), line_no,
-                         fmt::format("file '{}' does not exist", (root / file).string()));
-      if (!listed.insert(file).second)
-        throw InputError(manifest_path.string(), line_no,
-                         fmt::format("file '{}' is listed twice", file));
-      add_unique(set.objects, object);
-      add_unique(set.actions, action);
-      chosen[{object, action}].push_back(file);
-    }
+    chosen = read_manifest(root, manifest_path, set, sessions);
     for (const auto& [key, files] : layout)
       for (const auto& file : files)
-        if (!listed.contains(file))
+        if (!sessions.contains(file))
           throw InputError(
               (root / file).string(), 0,
               "recording is not listed in manifest.csv (add a row or remove the file)");
@@ -187,7 +188,8 @@ RecordingSet load_recording_set(const std::string& dir) {
   for (const auto& action : set.actions)
     for (const auto& object : set.objects)
       for (const auto& file : chosen.at({object, action}))
-        set.recordings.push_back({(root / file).string(), object, action});
+        set.recordings.push_back({(root / file).string(), object, action,
+                                  sessions.contains(file) ? sessions.at(file) : std::string()});
   return set;
 }
 

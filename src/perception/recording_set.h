@@ -18,6 +18,9 @@ struct Recording {
   std::string path;    // as opened (DIR joined with the relative path)
   std::string object;  // the class label
   std::string action;  // the sensing action that made the sound
+  // The manifest's `session` column (one exploration of one object); empty when the manifest has
+  // no such column or there is no manifest, meaning each recording is its own session.
+  std::string session;
 };
 
 // Every recording of a folder, grouped by (object, action). Invariants (load_recording_set checks
@@ -42,11 +45,12 @@ bool is_recording_file(const std::string& path);
 // Reads DIR. With DIR/manifest.csv (header with at least the columns file, object and action), the
 // set is the manifest's rows: each row's file must exist and lie in <object>/<action>/; a recording
 // file on disk that the manifest does not list is an error. Without a manifest, every file under
-// DIR/<object>/<action>/ is a recording. Errors (InputError naming the path, and the manifest line
-// where there is one): DIR missing or not a folder; a file where an object or action folder
-// belongs; a file that is not a recording (hidden files are skipped); an (object, action) folder
-// with no recordings; an action recorded for some objects and not others; a manifest row naming a
-// missing file or a file outside its folder.
+// DIR/<object>/<action>/ is a recording. An optional manifest column `session` names each
+// recording's session (then required on every row). Errors (InputError naming the path, and the
+// manifest line where there is one): DIR missing or not a folder; a file where an object or action
+// folder belongs; a file that is not a recording (hidden files are skipped); an (object, action)
+// folder with no recordings; an action recorded for some objects and not others; a manifest row
+// naming a missing file or a file outside its folder; an empty session.
 RecordingSet load_recording_set(const std::string& dir);
 
 // Decodes one recording as the classifiers see it: channels averaged into one, resampled to

@@ -1,0 +1,23 @@
+// A recordings tree as a feature set: the same kind of data as DIR/<action>/<modality>.csv, with
+// the audio's features computed by echoplan's own pipeline (docs/feature-sets.md).
+#pragma once
+
+#include "common/progress.h"
+#include "perception/clip_analysis.h"
+#include "perception/feature_set.h"
+#include "perception/recording_set.h"
+
+namespace echoplan::perception {
+
+// The feature set of `set`: its objects and actions in set order, one modality "audio" per action
+// whose rows are the action's recordings in set order and whose features are the summary features
+// the default classifier (summary-lda) embeds: summary_features() of each clip analysed with
+// `settings`, named by summary_feature_names(). A recording's session is its manifest `session`;
+// when that is empty (no session column, or no manifest) each recording is its own session, named
+// by its path relative to the set's folder. Throws InputError naming a recording that is not
+// readable audio. `progress` (optional) hears ("analyse", done, total) per recording.
+FeatureSet feature_set_from_recordings(const RecordingSet& set,
+                                       const AnalysisSettings& settings = {},
+                                       const ProgressFn& progress = {});
+
+}  // namespace echoplan::perception
