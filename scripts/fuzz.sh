@@ -7,6 +7,7 @@
 #   policy_file_fuzz    the offline policy file reader (seeds: tests/data/policy/*.json)
 #   experiment_files_fuzz  steps.csv and campaign files (seeds: tests/data/experiment/, experiments/)
 #   oppt_log_fuzz       OPPT run logs for `echoplan import oppt` (seeds: tests/data/oppt/)
+#   feature_set_fuzz    feature-set modality and groups files (seeds: tests/data/feature_set/)
 # Usage: scripts/fuzz.sh [seconds=120] [target=audio_decode_fuzz]
 # Findings (crash-*, timeout-*, oom-* files) land in build-fuzz/findings/<target>/; the growing corpus in
 # build-fuzz/corpus/<target>/.
@@ -30,7 +31,8 @@ case "$target" in
   policy_file_fuzz) seeds=("$root"/tests/data/policy/*.json) ;;
   experiment_files_fuzz) seeds=("$root"/tests/data/experiment/* "$root"/experiments/*.yaml) ;;
   oppt_log_fuzz) seeds=("$root"/tests/data/oppt/*.log) ;;
-  *) echo "fuzz.sh: unknown target '$target' (audio_decode_fuzz, problem_file_fuzz, sim_files_fuzz, perception_model_fuzz, policy_file_fuzz, experiment_files_fuzz or oppt_log_fuzz)" >&2; exit 2 ;;
+  feature_set_fuzz) seeds=("$root"/tests/data/feature_set/*) ;;
+  *) echo "fuzz.sh: unknown target '$target' (audio_decode_fuzz, problem_file_fuzz, sim_files_fuzz, perception_model_fuzz, policy_file_fuzz, experiment_files_fuzz, oppt_log_fuzz or feature_set_fuzz)" >&2; exit 2 ;;
 esac
 cp -n "${seeds[@]}" "$corpus/" 2>/dev/null || true
 # One worker; inputs up to 4 KiB keep runs fast (~150/s; larger seeds are read truncated, which exercises the
