@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -24,6 +25,16 @@ std::string read_text_file(const std::string& path, const std::string& what) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+std::vector<fs::path> visible_entries(const fs::path& dir) {
+  std::vector<fs::path> entries;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (!it->path().filename().string().starts_with(".")) entries.push_back(it->path());
+  if (ec) throw InputError(dir.string(), 0, "cannot list the folder: " + ec.message());
+  std::sort(entries.begin(), entries.end());
+  return entries;
 }
 
 void move_into_place(const fs::path& partial, const fs::path& path) {

@@ -5,12 +5,17 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace echoplan {
 
 // The whole text of the file at `path`; InputError(path, 0, "cannot open the <what>") if it cannot
 // be read (also for a directory).
 std::string read_text_file(const std::string& path, const std::string& what);
+
+// The entries of folder `dir` that are not hidden (no leading '.'), sorted by name, so every
+// platform lists them in the same order. InputError naming `dir` when it cannot be listed.
+std::vector<std::filesystem::path> visible_entries(const std::filesystem::path& dir);
 
 // Moves the finished file `partial` onto `path` in one rename (atomic on one file system), so
 // `path` is always either the old file or the whole new one. InputError naming `path` when it

@@ -18,17 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Entries of `dir` that are not hidden, sorted by name (so every platform loads the same order).
-std::vector<fs::path> visible_entries(const fs::path& dir) {
-  std::vector<fs::path> entries;
-  std::error_code ec;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-    if (!it->path().filename().string().starts_with(".")) entries.push_back(it->path());
-  if (ec) throw InputError(dir.string(), 0, "cannot list the folder: " + ec.message());
-  std::sort(entries.begin(), entries.end());
-  return entries;
-}
-
 // One modality file as read: its matrix, and each row's (object, session) names and line.
 struct ModalityFile {
   std::string path;

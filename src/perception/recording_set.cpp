@@ -16,38 +16,26 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool hidden(const fs::path& p) { return p.filename().string().starts_with("."); }
-
-std::vector<fs::path> sorted_entries(const fs::path& dir) {
-  std::vector<fs::path> entries;
-  std::error_code ec;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-    if (!hidden(it->path())) entries.push_back(it->path());
-  if (ec) throw InputError(dir.string(), 0, "cannot list the folder: " + ec.message());
-  std::sort(entries.begin(), entries.end());
-  return entries;
-}
-
 // Files of DIR/<object>/<action>/ as found on disk: (object, action) -> relative paths, sorted.
 using Layout = std::map<std::pair<std::string, std::string>, std::vector<std::string>>;
 
 Layout scan_folders(const fs::path& root) {
   Layout layout;
-  for (const fs::path& object_dir : sorted_entries(root)) {
+  for (const fs::path& object_dir : visible_entries(root)) {
     if (object_dir.filename() == "manifest.csv") continue;
     if (!fs::is_directory(object_dir))
       throw InputError(
           object_dir.string(), 0,
           "expected a folder per object (DIR/<object>/<action>/<recording>), found a file");
     const std::string object = object_dir.filename().string();
-    for (const fs::path& action_dir : sorted_entries(object_dir)) {
+    for (const fs::path& action_dir : visible_entries(object_dir)) {
       if (!fs::is_directory(action_dir))
         throw InputError(
             action_dir.string(), 0,
             "expected a folder per action (DIR/<object>/<action>/<recording>), found a file");
       const std::string action = action_dir.filename().string();
       auto& files = layout[{object, action}];
-      for (const fs::path& file : sorted_entries(action_dir)) {
+      for (const fs::path& file : visible_entries(action_dir)) {
         if (fs::is_directory(file))
           throw InputError(file.string(), 0, "unexpected folder inside an action folder");
         if (!is_recording_file(file.string()))
