@@ -1,4 +1,4 @@
-// `seed-gaussian`: the seed report's first attempt, kept for the record: each class is a Gaussian
+// `seed-gaussian`: the report's first attempt, kept for the record: each class is a Gaussian
 // over two whole-clip features, the spectral centroid (Hz) and the RMS level, with independent
 // dimensions. The report discarded it; the benchmark shows why (docs/BENCHMARKS.md).
 //
