@@ -31,7 +31,7 @@ std::shared_ptr<const perception::ObservationModel> model() {
   return m;
 }
 
-// Mug or cup, sorted to A (mug) or B (cup); the seed report's rewards. Observation symbols and
+// Mug or cup, sorted to A (mug) or B (cup); the report's rewards. Observation symbols and
 // table: `symbols` with a uniform table (calibrated_problem replaces both).
 pomdp::ObjectProblemData mug_or_cup(std::vector<std::string> objects = kObjects) {
   pomdp::ObjectProblemData d;

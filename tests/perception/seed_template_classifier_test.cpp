@@ -1,4 +1,4 @@
-// seed-template reproduces the seed's decision rule: templates are mean logfbank windows, a clip
+// seed-template reproduces the report's decision rule: templates are mean logfbank windows, a clip
 // goes to the template with the smallest mean absolute difference. Checked on hand-made matrices.
 #include "perception/seed_template_classifier.h"
 
@@ -40,7 +40,7 @@ TEST(SeedTemplate, WindowIsAlignedOnTheOnset) {
   EXPECT_EQ(early[2 * 10 + 1], 1);
 }
 
-TEST(SeedTemplate, ReproducesTheSeedsDecisionRule) {
+TEST(SeedTemplate, ReproducesTheReportsDecisionRule) {
   SeedTemplateClassifier c;
   // Class 0: two recordings with levels (1, 1) and (3, 5) after the onset: template (2, 3).
   // Class 1: one recording at (10, 10). Before the onset every clip is (0, 0).
