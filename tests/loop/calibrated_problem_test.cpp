@@ -1,8 +1,9 @@
 // calibrated_problem() with the report's shipped problem (problems/audio_objects.yaml) and the
-// stored observation model tests/data/perception/seed_gaussian_model.json (classes coffee_mug and
-// plastic_cup, actions slide and strike, reject on): the model's table replaces the hand-tuned
-// one, rows matched to the problem's objects and actions by name, everything else kept; problems
-// the model was not trained for are refused naming what is missing.
+// stored observation model tests/data/perception/seed_gaussian_model.json (a report-gaussian model
+// saved under its old name seed-gaussian; classes coffee_mug and plastic_cup, actions slide and
+// strike, reject on): the model's table replaces the hand-tuned one, rows matched to the
+// problem's objects and actions by name, everything else kept; problems the model was not
+// trained for are refused naming what is missing.
 #include "loop/calibrated_problem.h"
 
 #include <gtest/gtest.h>
@@ -40,7 +41,7 @@ ObjectProblemData report_data() {
 constexpr int kReportMug = 1, kReportCup = 2;  // object indices in audio_objects.yaml
 ObjectProblemData cup_or_mug() {
   const ObjectProblemData report = report_data();
-  ObjectProblemData d = seed;
+  ObjectProblemData d = report;
   d.objects = {"plastic_cup", "coffee_mug"};
   d.prior = {0.5, 0.5};
   d.sensing = {report.sensing[1], report.sensing[0]};

@@ -1,4 +1,4 @@
-// `seed-template`: the report's classifier (section 3.2.5), the baseline every other one is
+// `report-template`: the report's classifier (section 3.2.5), the baseline every other one is
 // measured against.
 //
 // Per class, the template is the mean of the recordings' log filterbank matrices
@@ -16,12 +16,12 @@
 
 namespace echoplan::perception {
 
-class SeedTemplateClassifier final : public Classifier {
+class ReportTemplateClassifier final : public Classifier {
  public:
   static constexpr std::size_t kFramesBefore = 10;
   static constexpr std::size_t kFramesAfter = 140;
 
-  std::string name() const override { return "seed-template"; }
+  std::string name() const override { return "report-template"; }
   // The onset-aligned logfbank window, row-major (kFramesBefore + kFramesAfter) x bands.
   std::vector<double> embed(const ClipAnalysis& clip) const override;
   void fit(std::span<const std::vector<double>> examples, std::span<const int> labels,
@@ -30,7 +30,7 @@ class SeedTemplateClassifier final : public Classifier {
   // log_scores = -distances; distances = mean |window - template| per class (natural-log units).
   ClassScores score(std::span<const double> embedding) const override;
   std::unique_ptr<Classifier> clone_unfitted() const override {
-    return std::make_unique<SeedTemplateClassifier>();
+    return std::make_unique<ReportTemplateClassifier>();
   }
   nlohmann::json save() const override;
   void load(const nlohmann::json& fit, const std::string& source) override;
