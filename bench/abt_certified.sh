@@ -1,5 +1,5 @@
 #!/bin/sh
-# Certified share of V* for ABT and POMCP on the seed's problem (issue 12, docs/BENCHMARKS.md
+# Certified share of V* for ABT and POMCP on the report's problem (issue 12, docs/BENCHMARKS.md
 # "Certified share of V*"): for each planner and per-step budget (5, 20, 100 ms; 1,000 and 10,000
 # episodes), `echoplan trials` logs the decisions and `echoplan certify` bounds their regret
 # against the exact V*. Every run uses the same seed, so the trials share their true objects and
@@ -27,7 +27,7 @@ table=$out/certified.md
 printf '| planner | discount | budget | trials | episodes/step | regret ± 95%% CI | certified share of V* | regret, lower ends | V* bounds |\n|---|---|---|---|---|---|---|---|---|\n' >"$table"
 
 for gamma in $discounts; do
-  # The seed problem at this discount (the file's own is 0.99).
+  # The report's problem at this discount (the file's own is 0.99).
   problem=$out/audio_objects_$gamma.yaml
   sed "s/^discount: .*/discount: $gamma/" problems/audio_objects.yaml >"$problem"
   for entry in $planners; do

@@ -1,13 +1,13 @@
 #!/bin/sh
 # Exact identification solver benchmark (docs/BENCHMARKS.md, "Exact identification solver"): the
 # bounds on V*(b0) after a fixed amount of work (node expansions for the exact solver, trials for
-# the point-based one, so the bounds repeat on any machine; wall time is as measured), for the seed
+# the point-based one, so the bounds repeat on any machine; wall time is as measured), for the report's
 # problem at discount 0.99 and 0.95 and generated problems of 4, 8, 16 and 64 objects (3 sensing
 # actions, 3 bins, seed 1). Each exact row is run with the frontier bounds of the default (plans +
 # sawtooth + the two-state partition relaxation), without the relaxation (the solver before it),
 # with the plain bounds (commit now / one more sensing), and with HSVI-style trials; then the
 # point-based solver. Prints one table row per run. PROBLEMS (environment) picks a subset, e.g.
-# PROBLEMS="seed099 objects8".
+# PROBLEMS="report099 objects8".
 # Usage: bench/exact_bounds.sh BUILD_DIR [EXPANSIONS] [POINT_BASED_TRIALS]
 set -eu
 build=$1
@@ -18,8 +18,8 @@ src=$(cd "$(dirname "$0")/.." && pwd)
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 
-cp "$src/problems/audio_objects.yaml" "$dir/seed099.yaml"
-sed 's/^discount: 0.99/discount: 0.95/' "$src/problems/audio_objects.yaml" >"$dir/seed095.yaml"
+cp "$src/problems/audio_objects.yaml" "$dir/report099.yaml"
+sed 's/^discount: 0.99/discount: 0.95/' "$src/problems/audio_objects.yaml" >"$dir/report095.yaml"
 for n in 4 8 16 64; do
   "$bin" make-problem --objects $n --sensing-actions 3 --bins 3 --seed 1 -o "$dir/objects$n.yaml" >/dev/null
 done
@@ -36,7 +36,7 @@ fields() {
 
 echo "| problem | method | lower | upper | gap | seconds | work |"
 echo "|---|---|---|---|---|---|---|"
-for p in ${PROBLEMS:-seed099 seed095 objects4 objects8 objects16 objects64}; do
+for p in ${PROBLEMS:-report099 report095 objects4 objects8 objects16 objects64}; do
   # frontier search pair-relaxation label
   for m in "full passes on full_passes" "full passes off full_passes,_no_pairs" \
     "simple passes off simple_passes" "full trials on full_trials"; do

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Few-shot accuracy of every observation classifier, side by side with seed-template (docs/BENCHMARKS.md).
+"""Few-shot accuracy of every observation classifier, side by side with report-template (docs/BENCHMARKS.md).
 
 Two sources:
   real  Hydrogen drum kits (Debian package hydrogen-drumkits; ~220 MB, so not in CI): every instrument with
@@ -20,7 +20,7 @@ import tempfile
 import xml.etree.ElementTree as ET
 
 KITS_DIR = "/usr/share/hydrogen/data/drumkits"
-CLASSIFIERS = ["summary-lda", "summary-nearest-mean", "seed-template", "seed-gaussian"]
+CLASSIFIERS = ["summary-lda", "summary-nearest-mean", "report-template", "report-gaussian"]
 
 
 def kit_instruments(kit_dir):

@@ -1,6 +1,6 @@
 #!/bin/sh
 # The planning study of docs/BENCHMARKS.md ("Planning"): mean discounted reward (± 95% CI) of ABT and
-# POMCP on the seed's problem at episode and wall-time budgets, the same on generated 16- and
+# POMCP on the report's problem at episode and wall-time budgets, the same on generated 16- and
 # 64-object problems, and Tiger. Trials run one after another (the machine is shared: never in
 # parallel). Progress goes to stderr; the table goes to OUT/study.md.
 #
@@ -39,7 +39,7 @@ header() {
   printf '\n### %s\n\n| run | solver | budget | trials | mean discounted reward ± 95%% CI | accuracy | mean steps | episodes/s |\n|---|---|---|---|---|---|---|---|\n' "$1" >>"$table"
 }
 
-echo "# Planning study ($(date -u +%Y-%m-%dT%H:%MZ), $trials trials per seed-problem row)" >"$table"
+echo "# Planning study ($(date -u +%Y-%m-%dT%H:%MZ), $trials trials per row on the report's problem)" >"$table"
 
 header "problems/audio_objects.yaml (V*(b0) = 2.9534)"
 for solver in abt pomcp; do

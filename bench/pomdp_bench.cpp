@@ -14,7 +14,7 @@ namespace {
 using namespace echoplan;
 using namespace echoplan::pomdp;
 
-// range(0) = number of objects: 4 is the seed's problem, larger ones are random problems.
+// range(0) = number of objects: 4 is the report's problem, larger ones are random problems.
 ModelPtr object_model(int objects) {
   if (objects == 4)
     return load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml").model;
@@ -51,7 +51,7 @@ void BM_ObjectModelLikelihood(benchmark::State& st) {
 }
 BENCHMARK(BM_ObjectModelLikelihood)->Arg(4)->Arg(16)->Arg(64);
 
-// One SIR update of the seed's 1000-particle belief (propagate, weight, resample, and the fresh
+// One SIR update of the report's 1000-particle belief (propagate, weight, resample, and the fresh
 // particles replayed through the history against depletion), averaged over trials of 10 updates:
 // the fresh particles' cost grows with the history, so the belief starts over every 10 updates
 // (outside the timing). `fresh_share` 0 is plain SIR, the baseline.

@@ -22,11 +22,11 @@ sound_measures.py (the tool that measured the real recordings), and prints next 
   - the same ratio as the lab could measure it, from one mug clip and three cup clips (its recordings):
     the spread of that over random draws, and how often it reaches the lab's value (is the lab's one
     measurement surprising under the simulator?);
-  - leave-one-out accuracy of the perception module's `seed-template` classifier (the seed's rule: mean
+  - leave-one-out accuracy of the perception module's `report-template` classifier (the report's rule: mean
     logfbank template per object, nearest by mean absolute difference; docs/perception.md) on the four
-    objects, as `echoplan train --classifier seed-template --folds 0 --no-reject` reports it, and the
-    distances between that classifier's templates beside the seed's own (how alike the objects sound)
-    and how their spectrum shapes differ from the seed's (the part all objects share, the recording
+    objects, as `echoplan train --classifier report-template --folds 0 --no-reject` reports it, and the
+    distances between that classifier's templates beside the report's own (how alike the objects sound)
+    and how their spectrum shapes differ from the report's (the part all objects share, the recording
     chain's, and each object's own).
 
 Usage: bench/sim_realism.py [--per-pair 10] [--seed 1 | --seed 1,2,3] [--sim-config FILE]
@@ -158,13 +158,13 @@ def print_lab_sized(action, between, within, rng, draws):
           f"the lab's {lab} or more in {100 * np.mean(ratios >= lab):.0f}% of draws")
 
 
-def seed_template_model(echoplan, data, workdir):
-    """Leave-one-out accuracy per action of the perception module's `seed-template` classifier (the
-    seed's decision rule; docs/perception.md), as `echoplan train --folds 0` reports it, and the
+def report_template_model(echoplan, data, workdir):
+    """Leave-one-out accuracy per action of the perception module's `report-template` classifier (the
+    report's decision rule; docs/perception.md), as `echoplan train --folds 0` reports it, and the
     templates it keeps (trained on every clip) per action and object. One implementation: the same
     code the planner's observation model is trained with."""
-    model = os.path.join(workdir, "seed_template_model.json")
-    out = subprocess.run([echoplan, "train", "--data", data, "--classifier", "seed-template", "--folds", "0",
+    model = os.path.join(workdir, "report_template_model.json")
+    out = subprocess.run([echoplan, "train", "--data", data, "--classifier", "report-template", "--folds", "0",
                           "--no-reject", "-o", model], check=True, capture_output=True, text=True).stdout
     accuracy = {}
     for line in out.splitlines():
@@ -182,7 +182,7 @@ TEMPLATE_NAMES = {"can": "pringles_can", "mug": "coffee_mug", "cup": "plastic_cu
 
 
 def lab_templates(reference):
-    """The seed's own templates as the reference file describes them: the distance between two
+    """The report's own templates as the reference file describes them: the distance between two
     objects' templates, {action: {(a, b): mean absolute difference}} ("How alike the objects
     sounded", natural-log units), and each template's spectrum shape, {(object, action): 26 values}
     relative to its maximum ("Template spectrum shape")."""
@@ -209,17 +209,17 @@ def lab_templates(reference):
 
 
 def print_template_comparison(templates, reference):
-    """The simulated templates against the seed's: how far apart the objects' templates are, and how
+    """The simulated templates against the report's: how far apart the objects' templates are, and how
     their spectrum shapes (mean over frames, relative to the maximum) differ, split into what all
     four objects share (the recording chain: room, arm, microphone) and what is each object's own."""
     if not os.path.exists(reference):
-        print(f"\n(no {reference}: templates not compared with the seed's)")
+        print(f"\n(no {reference}: templates not compared with the report's)")
         return
     lab_distance, lab_shape = lab_templates(reference)
-    # The seed's templates were means over a few recordings each (how many is not recorded) and its
+    # The report's templates were means over a few recordings each (how many is not recorded) and its
     # slide window was noise-reduced, so a template distance here (means over --per-pair clips)
     # carries less recording noise than the lab's: read the two as a comparison, not a target.
-    print("\nseed-template distances, mean |template a - template b| (natural log), sim (lab):")
+    print("\nreport-template distances, mean |template a - template b| (natural log), sim (lab):")
     for action in ("strike", "slide"):
         pairs = list(itertools.combinations(OBJECTS, 2))
         sim = {(a, b): float(np.mean(np.abs(templates[action][a] - templates[action][b]))) for a, b in pairs}
@@ -228,7 +228,7 @@ def print_template_comparison(templates, reference):
                           for a, b in pairs)
         ratio = statistics.mean(sim.values()) / statistics.mean(lab.values())
         print(f"  {action:<7} {cells}; mean sim/lab {ratio:.2f}")
-    print("\ntemplate spectrum shape against the seed's (26 filters, natural log, each difference's mean "
+    print("\ntemplate spectrum shape against the report's (26 filters, natural log, each difference's mean "
           "removed):")
     for action in ("strike", "slide"):
         diffs = {}
@@ -347,10 +347,10 @@ def report(args, sm, seed):
     for action in ("strike", "slide"):
         print_lab_sized(action, *matrices[action], lab_sized_rng, args.resamples)
 
-    print("\nseed-template classifier (echoplan train --classifier seed-template --folds 0 --no-reject), "
+    print("\nreport-template classifier (echoplan train --classifier report-template --folds 0 --no-reject), "
           "leave-one-out over the four objects:")
     model_dir = tempfile.mkdtemp(prefix="echoplan_realism_model_")
-    accuracy, templates = seed_template_model(args.echoplan, out, model_dir)
+    accuracy, templates = report_template_model(args.echoplan, out, model_dir)
     subprocess.run(["rm", "-rf", model_dir], check=False)
     for action in ("strike", "slide"):
         acc, right, total = accuracy[action]

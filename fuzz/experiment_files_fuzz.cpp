@@ -1,5 +1,5 @@
 // libFuzzer target: arbitrary bytes as the two files `echoplan` reads from users for experiments: a
-// steps.csv (what `certify` and the belief plots read back, checked against the seed problem's
+// steps.csv (what `certify` and the belief plots read back, checked against the report's problem's
 // action and observation names) and a campaign file (`echoplan experiment --config`). Bad input
 // must end in echoplan::InputError; anything else (a crash, a sanitizer report, another exception,
 // a hang) is a bug.

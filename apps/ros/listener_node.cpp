@@ -1,5 +1,6 @@
-// echoplan_listener: the seed's listener node. Records while the parameter /echoplan/record is true
-// and publishes each recording on /echoplan/clip (and saves it as WAV when ~save_dir is set).
+// echoplan_listener: the original system's listener node. Records while the parameter
+// /echoplan/record is true and publishes each recording on /echoplan/clip (and saves it as WAV when
+// ~save_dir is set).
 //
 // Private parameters:
 //   ~source        "microphone" (default): capture with PortAudio; "simulation": collect the

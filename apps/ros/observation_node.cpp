@@ -1,7 +1,7 @@
-// echoplan_observation: the seed's observation service node. Serves Observe: a clip (its samples,
-// or a WAV file the node can read) and the action it was recorded with in; the trained model's
-// class, per-class probabilities and unknown flag out (robot::ClassifierService over the model
-// file).
+// echoplan_observation: the original system's observation service node. Serves Observe: a clip (its
+// samples, or a WAV file the node can read) and the action it was recorded with in; the trained
+// model's class, per-class probabilities and unknown flag out (robot::ClassifierService over the
+// model file).
 //
 // Private parameters:
 //   ~model   the trained observation model (`echoplan train --out`), required

@@ -1,6 +1,6 @@
-// echoplan_planner: the seed's planner process. Runs trials of the closed loop (plan, execute,
-// listen, classify, update the belief) with the arm, the listener and the observation service
-// behind ROS:
+// echoplan_planner: the original system's planner process. Runs trials of the closed loop (plan,
+// execute, listen, classify, update the belief) with the arm, the listener and the observation
+// service behind ROS:
 //   robot     -> /echoplan/begin_trial and /echoplan/execute_action (a real arm's driver or
 //   echoplan_sim_robot) recorder  -> the parameter /echoplan/record around each sensing action
 //   (echoplan_listener) service   -> /echoplan/observe (echoplan_observation)

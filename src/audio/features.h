@@ -103,7 +103,7 @@ std::string_view feature_name(FeatureKind kind);
 FeatureKind feature_from_name(std::string_view name);
 const FeatureMatrix& select_feature(const Features& features, FeatureKind kind);
 
-// Features of the whole signal at once (the seed's "global" features).
+// Features of the whole signal at once (the report's "global" features).
 struct GlobalFeatures {
   double rms = 0.0;              // sqrt(mean x^2)
   long long zero_crossings = 0;  // sign changes between consecutive samples; 0 counts as positive

@@ -1,5 +1,5 @@
-// Whole-signal features (declared in audio/features.h): the seed's "global" RMS, zero crossings and
-// magnitude-weighted spectral centroid of the whole clip's DFT.
+// Whole-signal features (declared in audio/features.h): the report's "global" RMS, zero crossings
+// and magnitude-weighted spectral centroid of the whole clip's DFT.
 #include <fmt/format.h>
 #include <kiss_fft.h>
 

@@ -11,7 +11,7 @@
 //   world draws observations from a table.
 // Both files may end with extra columns named at construction (a campaign adds arm and object); a
 // reader of the columns above finds them where they always were.
-//   belief columns are particle counts ("particles_<value>", the columns of the seed's Table 5.2)
+//   belief columns are particle counts ("particles_<value>", the columns of the report's Table 5.2)
 //   when the belief holds `belief_particles` > 0 particles, probabilities ("p_<value>") otherwise.
 //
 // read_steps_csv() reads steps.csv back (the action and observation history of every trial), for

@@ -1,6 +1,6 @@
 // The closed loop's world: the planner's action goes to a Robot, a Recorder listens
 // around it, an ObservationService classifies the clip, and the heard label becomes the problem's
-// observation symbol. With this environment the trial runner drives the real loop (seed report
+// observation symbol. With this environment the trial runner drives the real loop (the report's
 // section 4.4, Figure 4.2) exactly as it drives the model's own table with TableWorld.
 //
 // Per action:

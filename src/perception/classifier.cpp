@@ -5,8 +5,8 @@
 #include <algorithm>
 
 #include "common/error.h"
-#include "perception/seed_gaussian_classifier.h"
-#include "perception/seed_template_classifier.h"
+#include "perception/report_gaussian_classifier.h"
+#include "perception/report_template_classifier.h"
 #include "perception/summary_lda_classifier.h"
 
 namespace echoplan::perception {
@@ -21,16 +21,25 @@ double ClassScores::nearest_distance() const {
 }
 
 std::vector<std::string> classifier_names() {
-  return {"summary-lda", "summary-nearest-mean", "seed-template", "seed-gaussian"};
+  return {"summary-lda", "summary-nearest-mean", "report-template", "report-gaussian"};
+}
+
+const std::map<std::string, std::string>& classifier_aliases() {
+  static const std::map<std::string, std::string> aliases{{"seed-gaussian", "report-gaussian"},
+                                                          {"seed-template", "report-template"}};
+  return aliases;
 }
 
 std::unique_ptr<Classifier> make_classifier(std::string_view name) {
+  if (const auto alias = classifier_aliases().find(std::string(name));
+      alias != classifier_aliases().end())
+    name = alias->second;
   if (name == "summary-lda")
     return std::make_unique<SummaryLdaClassifier>(SummaryLdaClassifier::Covariance::ledoit_wolf);
   if (name == "summary-nearest-mean")
     return std::make_unique<SummaryLdaClassifier>(SummaryLdaClassifier::Covariance::identity);
-  if (name == "seed-template") return std::make_unique<SeedTemplateClassifier>();
-  if (name == "seed-gaussian") return std::make_unique<SeedGaussianClassifier>();
+  if (name == "report-template") return std::make_unique<ReportTemplateClassifier>();
+  if (name == "report-gaussian") return std::make_unique<ReportGaussianClassifier>();
   throw InputError(fmt::format("unknown classifier '{}' (expected {})", name,
                                fmt::join(classifier_names(), ", ")));
 }

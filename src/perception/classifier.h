@@ -9,6 +9,7 @@
 // alike; the distance to the nearest class decides whether a clip is `unknown`).
 #pragma once
 
+#include <map>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
 #include <span>
@@ -35,7 +36,7 @@ class Classifier {
  public:
   virtual ~Classifier() = default;
 
-  // The registry name ("seed-template", ...).
+  // The registry name ("report-template", ...).
   virtual std::string name() const = 0;
 
   // The fixed-length vector this classifier compares: its own features of one analysed clip (a pure
@@ -76,7 +77,13 @@ inline constexpr std::string_view kDefaultClassifier = "summary-lda";
 // Names of every registered classifier, default first.
 std::vector<std::string> classifier_names();
 
-// A new unfitted classifier. Throws InputError listing the names for an unknown one.
+// Earlier names of registered classifiers, each with its current name: "seed-template" and
+// "seed-gaussian" (the report's two classifiers, named before "seed" was kept for random seeds).
+// Model files, campaign files and scripts written with them keep working.
+const std::map<std::string, std::string>& classifier_aliases();
+
+// A new unfitted classifier, by current name or alias (its name() is always the current one).
+// Throws InputError listing the names for an unknown one.
 std::unique_ptr<Classifier> make_classifier(std::string_view name);
 
 }  // namespace echoplan::perception

@@ -112,13 +112,15 @@ AnalysisSettings read_analysis(const nlohmann::json& doc, const std::string& sou
   return s;
 }
 
-// Everything but the per-action entries; the classifier name is checked against the registry.
+// Everything but the per-action entries; the classifier name is checked against the registry,
+// and an old name (classifier_aliases()) becomes the current one.
 ModelDescription read_description(const nlohmann::json& doc, const std::string& source) {
   ModelDescription d;
   d.analysis = read_analysis(doc, source);
-  d.classifier_name = jf::string(jf::member(doc, "classifier", "", source), "classifier", source);
+  const std::string classifier =
+      jf::string(jf::member(doc, "classifier", "", source), "classifier", source);
   try {
-    make_classifier(d.classifier_name);
+    d.classifier_name = make_classifier(classifier)->name();
   } catch (const InputError& e) {
     throw InputError(source, 0, "classifier: " + e.problem());
   }

@@ -1,4 +1,4 @@
-// The seed's problem, generalised: identify which of K objects the robot holds by making sounds
+// The report's problem, generalised: identify which of K objects the robot holds by making sounds
 // with it, then sort it into a group (report "Planning to listen", sections 3.2-3.3).
 //
 // State: 7 arm joint angles (rad) + 3 object offsets from the end effector (m) as `continuous`,

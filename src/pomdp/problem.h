@@ -23,16 +23,16 @@ struct BeliefSettings {
 
 // The planner defaults a problem file suggests; the trials command uses them unless flags override.
 // Exactly one of the two budgets is positive. Without a planner section (every .pomdp file) the
-// budget is 1000 episodes per step: reproducible, and quick on small problems (the seed's own file
-// asks for its 2 s per step explicitly).
+// budget is 1000 episodes per step: reproducible, and quick on small problems (the report's own
+// file asks for its 2 s per step explicitly).
 struct PlannerDefaults {
   std::string solver = "abt";  // "abt", "pomcp" or "offline"
   int episodes = 1000;         // episodes per step (0: use step_ms)
-  double step_ms = 0.0;        // wall time per step in ms (0: use episodes); the seed used 2 s
+  double step_ms = 0.0;        // wall time per step in ms (0: use episodes); the report used 2 s
   // The search defaults, here once (solvers::SearchOptions takes them from here). Chosen by
-  // measurement on the seed problem (docs/BENCHMARKS.md, "ABT's defaults"): with the policy leaf,
-  // c = 20 and c = 110 were within each other's CI at 1,000 episodes and 20 ms per step, 20 ahead
-  // in both; trials end long before depth 100, which only bounds the tree.
+  // measurement on the report's problem (docs/BENCHMARKS.md, "ABT's defaults"): with the policy
+  // leaf, c = 20 and c = 110 were within each other's CI at 1,000 episodes and 20 ms per step, 20
+  // ahead in both; trials end long before depth 100, which only bounds the tree.
   int depth = 100;            // maximum search depth in steps
   double exploration = 20.0;  // UCB exploration constant (in reward units)
 };

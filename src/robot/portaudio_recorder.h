@@ -31,7 +31,7 @@
 
 namespace echoplan::robot {
 
-// How to capture. Defaults: the default input device, 2 channels at 44.1 kHz (the seed's
+// How to capture. Defaults: the default input device, 2 channels at 44.1 kHz (the report's
 // recordings).
 struct CaptureConfig {
   // Which input device: empty for the system's default input, a device index as listed by

@@ -1,6 +1,6 @@
 // The robot: executes the planner's actions in the world and says how they went.
 //
-// One of the three narrow execution interfaces of the seed's architecture (section 4.4): Robot,
+// One of the three narrow execution interfaces of the report's architecture (section 4.4): Robot,
 // Recorder, ObservationService. The planner side never learns whether the arm is simulated, a real
 // arm behind a driver, or a ROS node; each implementation answers the same calls.
 #pragma once

@@ -10,8 +10,8 @@ namespace echoplan::sim {
 namespace {
 
 constexpr double kActionDistance =
-    0.05;  // m: the slide's push and the strike's lift (seed section 3.2.1)
-constexpr double kLiftSpeed = 0.10;  // m/s, the report's 10 cm/s (seed section 3.2.1)
+    0.05;  // m: the slide's push and the strike's lift (the report's section 3.2.1)
+constexpr double kLiftSpeed = 0.10;  // m/s, the report's 10 cm/s (the report's section 3.2.1)
 // m between pad and object before the push: the pad starts just clear of the object. Geometry of
 // this simulator's start pose, not tuned to the lab's recordings (the push then covers 5.1 cm).
 constexpr double kPadGap = 0.001;

@@ -1,9 +1,9 @@
 // The action script: which straight-line motions of the end effector each sound-making action is,
 // and where it begins relative to the object. Pure geometry and timing; no physics.
 //
-// The distances and times are the seed's (section 3.2.1: a 5 cm push, a 5 cm lift) or chosen so the
-// motion is gentle where the lab's arm was (no second hit while levelling, the hand closed before
-// it lifts); docs/simulator.md, "Tuned constants", lists them.
+// The distances and times are the report's (section 3.2.1: a 5 cm push, a 5 cm lift) or chosen so
+// the motion is gentle where the lab's arm was (no second hit while levelling, the hand closed
+// before it lifts); docs/simulator.md, "Tuned constants", lists them.
 #pragma once
 
 #include <Eigen/Geometry>

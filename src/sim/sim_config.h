@@ -122,8 +122,8 @@ struct ArmConfig {
   double push_accelerate_share = 0.4;
   double push_decelerate_share = 0.2;
   // The strike's timings (s, each in [0.01, 2]). The report gives its distance and speed only
-  // (5 cm at 10 cm/s, seed section 3.2.1); these are the simulated arm's, not measured on the
-  // lab's: the hand closes over grasp_time_s, the lift and the descent reach their speed over
+  // (5 cm at 10 cm/s, the report's section 3.2.1); these are the simulated arm's, not measured on
+  // the lab's: the hand closes over grasp_time_s, the lift and the descent reach their speed over
   // strike_ease_s (docs/simulator.md, "What is modelled", actions), it pauses lift_pause_s at the
   // top, turns a tilted object upright on the table over level_time_s (slowly: a faster levelling
   // can make a second hit; docs/simulator.md, session 6, "the mug's tilted landing"), holds it

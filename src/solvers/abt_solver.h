@@ -1,5 +1,5 @@
-// ABT: the Adaptive Belief Tree solver (Kurniawati & Yadav 2013), the solver the seed ran through
-// OPPT.
+// ABT: the Adaptive Belief Tree solver (Kurniawati & Yadav 2013), the solver the original system
+// ran through OPPT.
 //
 // Each episode starts from a particle of the root, walks down the belief tree choosing actions by
 // UCB, steps the model, files the resulting state as a particle of the belief node its observation

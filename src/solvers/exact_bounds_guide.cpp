@@ -15,9 +15,10 @@ constexpr double kStartBeliefTolerance = 0.1;
 // A leaf's lookahead: one expansion, to no particular gap.
 constexpr RefineLimits kLeafLookahead{1e-12, 0.0, 1};
 // A trial's solver stops refining (its bounds stay valid) at this many nodes, about 600 MB on the
-// seed problem: a trial that never becomes sure (100 steps of 20,000 expansions) would otherwise
-// grow towards the solver's own 2 GB cap in every worker. The measured trials stay far below it
-// (7 steps of 20 ms: about 100,000 nodes; the offline solve's 200,000 expansions: about 800,000).
+// report's problem: a trial that never becomes sure (100 steps of 20,000 expansions) would
+// otherwise grow towards the solver's own 2 GB cap in every worker. The measured trials stay far
+// below it (7 steps of 20 ms: about 100,000 nodes; the offline solve's 200,000 expansions: about
+// 800,000).
 constexpr std::size_t kMaxNodesPerTrial = 3000000;
 
 IdentificationOptions planner_solver_options() {

@@ -1,5 +1,5 @@
 // Exact bounds on V*(b) and Q*(b, a) for identification problems: tabular POMDPs whose hidden state
-// never changes while the agent senses, and whose episodes end with terminal actions (the seed's
+// never changes while the agent senses, and whose episodes end with terminal actions (the report's
 // "which object is it, then sort it" problem, `make-problem` output, .pomdp files of that shape).
 //
 // Why it can be exact: when the state is fixed, the belief after any history is
@@ -95,7 +95,7 @@ struct IdentificationOptions {
   // The plans' own cap when > 0 (else max_frontier_entries): a plan costs a dot product over
   // the states per evaluation (kept contiguous), a sawtooth point a scan over its support, and
   // the frontier's lower bound is the side that gains more from more entries (measured: 1024
-  // plans halved the gap in equal time on the seed and 8-object problems; docs/BENCHMARKS.md).
+  // plans halved the gap in equal time on the report's and 8-object problems; docs/BENCHMARKS.md).
   std::size_t max_frontier_plans = 1024;
   // Memory cap: refinement stops (bounds stay valid) when this many nodes exist; 0: about 2 GB.
   std::size_t max_nodes = 0;

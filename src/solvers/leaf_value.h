@@ -1,6 +1,6 @@
 // The value a search tree assigns to a belief node it has not expanded yet.
 //
-// Why this matters: on the seed's problem a uniformly random rollout makes sensing look worthless
+// Why this matters: on the report's problem a uniformly random rollout makes sensing look worthless
 // next to the -100 of a wrong sort (random play sorts wrongly half the time), so a planner valuing
 // leaves by random rollouts commits after about one observation (about -28 against V* = 2.95).
 // Four estimators are offered:

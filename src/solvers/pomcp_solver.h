@@ -3,8 +3,9 @@
 // Each simulation starts from a root particle, chooses actions by UCB, steps the model, files each
 // state as a particle of the history node it reaches, and ends at a terminal step, a new leaf
 // (valued by the leaf estimate, leaf_value.h - classic POMCP uses a random rollout, which fails on
-// the seed's problem) or the depth limit. Each action node keeps the running mean of the discounted
-// returns sampled through it (Monte-Carlo backup). The tree is kept across real steps like ABT's.
+// the report's problem) or the depth limit. Each action node keeps the running mean of the
+// discounted returns sampled through it (Monte-Carlo backup). The tree is kept across real steps
+// like ABT's.
 #pragma once
 
 #include "solvers/search_tree.h"

@@ -40,7 +40,7 @@ struct SearchOptions {
   // ABT only: keep every episode's (state, action, observation, reward) steps so that
   // AbtSolver::revise() can revise the tree after a model change. Off by default: nothing in
   // echoplan's commands changes the model mid-run, and keeping them costs 1.3x (1,000 episodes)
-  // to 2.4x (10,000) the CPU time per episode on the seed problem (docs/BENCHMARKS.md).
+  // to 2.4x (10,000) the CPU time per episode on the report's problem (docs/BENCHMARKS.md).
   bool keep_episodes = false;
 
   // Throws InputError naming the offending option.

@@ -47,7 +47,7 @@ SensingPolicy::SensingPolicy(std::shared_ptr<const IdentificationTables> tables)
     }
   }
   // Halving steps from half the reward span: committing with a loss of half the span down to about
-  // a thousandth of it (on the seed's problem, P(wrong group) from 0.5 to 0.0005).
+  // a thousandth of it (on the report's problem, P(wrong group) from 0.5 to 0.0005).
   const double span = std::max(top - bottom, 1e-9);
   thresholds_.push_back(std::numeric_limits<double>::infinity());
   for (int k = 1; k < kThresholds; ++k) thresholds_.push_back(span * std::ldexp(1.0, -k));

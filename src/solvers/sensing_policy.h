@@ -2,8 +2,8 @@
 // confident, then commit. ABT rolls it out at new leaves (leaf mode `policy`, leaf_value.h).
 //
 // Why: the `lookahead` leaf value ("commit now, or sense once more and then know for sure") is an
-// upper bound that treats one more observation as a perfect one, so on the seed's noisy sensors it
-// values every uncertain belief at about -1 + γ·10 and keeps the search sensing for the wrong
+// upper bound that treats one more observation as a perfect one, so on the report's noisy sensors
+// it values every uncertain belief at about -1 + γ·10 and keeps the search sensing for the wrong
 // reasons. The value of a policy anyone could follow is a lower bound instead, and the search above
 // the leaves improves on it (ABT's max backup turns the tree into a policy-improvement step on
 // top).

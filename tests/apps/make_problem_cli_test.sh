@@ -10,7 +10,7 @@
 cmp -s "$work/a.yaml" "$work/b.yaml" || fail "same seed wrote different files"
 cmp -s "$work/a.yaml" "$work/c.yaml" && fail "different seeds wrote the same file"
 "$bin" check --problem "$work/a.yaml" | grep -q "ok: no problems found" || fail "generated problem not clean"
-"$bin" check --problem "$src/problems/audio_objects.yaml" | grep -q "ok: no problems found" || fail "seed problem"
+"$bin" check --problem "$src/problems/audio_objects.yaml" | grep -q "ok: no problems found" || fail "the report's problem"
 
 # Bad input: exit status 2 and a message naming the file and line.
 "$bin" make-problem --objects 1 --sensing-actions 4 --seed 1 -o "$work/x.yaml" 2>/dev/null

@@ -4,7 +4,7 @@
 # Usage: perception_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
 . "$(dirname "$0")/cli_test_lib.sh"
 
-# Three recordings per (object, action) of the seed problem's four objects; a second seed is held out.
+# Three recordings per (object, action) of the report's problem's four objects; a second seed is held out.
 objects=pringles_can,coffee_mug,plastic_cup,paper_base
 "$bin" dataset --per-pair 3 --seed 1 --objects $objects -o "$work/data" >/dev/null 2>&1 || fail "dataset 1"
 "$bin" dataset --per-pair 2 --seed 2 --objects $objects -o "$work/held" >/dev/null 2>&1 || fail "dataset 2"

@@ -1,6 +1,6 @@
 #!/bin/sh
 # End-to-end checks of `echoplan solve`: Tiger's bounds as JSON bracket its known value 19.371, the
-# seed problem's YAML and .pomdp files solve and start with a strike, --out writes a policy, and bad
+# report's problem's YAML and .pomdp files solve and start with a strike, --out writes a policy, and bad
 # input exits 2 with a message naming the file.
 # Usage: solve_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
 . "$(dirname "$0")/cli_test_lib.sh"

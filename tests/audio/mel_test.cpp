@@ -13,7 +13,7 @@ namespace {
 using testing::input_error_message;
 
 TEST(Mel, ScalesHaveTheirDefiningPoints) {
-  // HTK: 1000 Hz is ~1000 mel. 2595 log10(1 + f/700) is the seed's 1125 ln(1 + f/700) times a
+  // HTK: 1000 Hz is ~1000 mel. 2595 log10(1 + f/700) is the report's 1125 ln(1 + f/700) times a
   // constant (2595 / ln 10 / 1125), so both give the same filter edges in Hz.
   EXPECT_NEAR(hz_to_mel_htk(1000.0), 1000.0, 0.05);
   for (double hz : {100.0, 4000.0, 15000.0})

@@ -106,11 +106,11 @@ TEST(CampaignConfig, TrainingTableEstimate) {
 }
 
 TEST(CampaignConfig, ClassifierWithModelIsAnError) {
-  EXPECT_EQ(
-      parse_campaign_config(kMinimal + "training_set: {classifier: seed-template}\n", "/dir/c.yaml")
-          .training.classifier,
-      "seed-template");
-  EXPECT_EQ(error_of(kMinimal + "training_set:\n  model: m.json\n  classifier: seed-template\n"),
+  EXPECT_EQ(parse_campaign_config(kMinimal + "training_set: {classifier: report-template}\n",
+                                  "/dir/c.yaml")
+                .training.classifier,
+            "report-template");
+  EXPECT_EQ(error_of(kMinimal + "training_set:\n  model: m.json\n  classifier: report-template\n"),
             "10: classifier chooses how this campaign trains; with model: the model file has its "
             "own");
 }

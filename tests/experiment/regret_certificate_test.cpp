@@ -20,7 +20,7 @@ std::string repo_file(const std::string& relative) {
   return std::string(ECHOPLAN_SOURCE_DIR) + "/" + relative;
 }
 
-pomdp::ObjectProblemData perfect_sensing_seed() {
+pomdp::ObjectProblemData perfect_sensing_report() {
   const pomdp::Problem p = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
   auto d = (*p.model->object_identification()).data();
   for (auto& action : d.observation_table)
@@ -47,7 +47,7 @@ TEST(RegretCertificate, HandComputedRegretsOnPerfectSensing) {
   // With perfect sensing V*(b0) = -1 + 0.99 * 10 = 8.9. Trial 0 plays optimally (regret 0);
   // trial 1 sorts blind (-45: regret 53.9); trial 2 senses, then sorts wrongly after hearing the
   // mug (a known mug sorted to A: V* = 10, Q = -100, discounted by 0.99: regret 108.9).
-  const pomdp::ObjectIdentificationModel model(perfect_sensing_seed());
+  const pomdp::ObjectIdentificationModel model(perfect_sensing_report());
   const fs::path steps = write_steps("hand",
                                      "0,0,strike,coffee_mug,0,0,0,0,-1,10\n"
                                      "0,1,move_to_B,none,0,0,0,0,10,10\n"
@@ -73,8 +73,9 @@ TEST(RegretCertificate, HandComputedRegretsOnPerfectSensing) {
 }
 
 TEST(RegretCertificate, LoosenessBoundsTheDistanceBetweenTheTwoRegrets) {
-  // The noisy seed problem with a search limit too small to converge: the bounds stay valid, and
-  // the two regret figures (from the bounds' two ends) differ by at most the summed gaps reported.
+  // The report's noisy problem with a search limit too small to converge: the bounds stay valid,
+  // and the two regret figures (from the bounds' two ends) differ by at most the summed gaps
+  // reported.
   const pomdp::Problem problem =
       pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
   const auto& model = (*problem.model->object_identification());
@@ -106,9 +107,9 @@ TEST(RegretCertificate, LoosenessBoundsTheDistanceBetweenTheTwoRegrets) {
 
 TEST(RegretCertificate, LooseBoundsNeverCertifyLessRegretThanTightOnes) {
   // The upper end of a loss is measured against the best rival action's upper bound on Q* (not
-  // V*'s): it must stay sound. The same log on the noisy seed problem, certified with bounds far
-  // from converged and with bounds near convergence: the loose certificate's regret is never below
-  // the tight one's lower end, and the tight one's two ends nearly meet.
+  // V*'s): it must stay sound. The same log on the report's noisy problem, certified with bounds
+  // far from converged and with bounds near convergence: the loose certificate's regret is never
+  // below the tight one's lower end, and the tight one's two ends nearly meet.
   const pomdp::Problem problem =
       pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
   const auto& model = (*problem.model->object_identification());
@@ -144,7 +145,7 @@ TEST(RegretCertificate, LooseBoundsNeverCertifyLessRegretThanTightOnes) {
 
 TEST(RegretCertificate, CutShortTrialsCountTheValueLeftBehind) {
   // One sense then the step cap: regret 0 for the sense, plus 0.99 * V*(known mug) = 0.99 * 10.
-  const pomdp::ObjectIdentificationModel model(perfect_sensing_seed());
+  const pomdp::ObjectIdentificationModel model(perfect_sensing_report());
   const fs::path steps = write_steps("capped", "0,0,strike,coffee_mug,0,0,0,0,-1,10\n");
   const Certificate c = certify_file(model, steps);
   ASSERT_EQ(c.trials.size(), 1u);
@@ -154,7 +155,7 @@ TEST(RegretCertificate, CutShortTrialsCountTheValueLeftBehind) {
 }
 
 TEST(RegretCertificate, BadLogsNameTheLine) {
-  const pomdp::ObjectIdentificationModel model(perfect_sensing_seed());
+  const pomdp::ObjectIdentificationModel model(perfect_sensing_report());
   auto expect_error_at = [&](const std::string& rows, int line, const std::string& words) {
     const fs::path steps = write_steps("bad", rows);
     try {

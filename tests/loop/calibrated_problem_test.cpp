@@ -1,8 +1,9 @@
-// calibrated_problem() with the shipped seed problem (problems/audio_objects.yaml) and the stored
-// observation model tests/data/perception/seed_gaussian_model.json (classes coffee_mug and
-// plastic_cup, actions slide and strike, reject on): the model's table replaces the hand-tuned
-// one, rows matched to the problem's objects and actions by name, everything else kept; problems
-// the model was not trained for are refused naming what is missing.
+// calibrated_problem() with the report's shipped problem (problems/audio_objects.yaml) and the
+// stored observation model tests/data/perception/seed_gaussian_model.json (a report-gaussian model
+// saved under its old name seed-gaussian; classes coffee_mug and plastic_cup, actions slide and
+// strike, reject on): the model's table replaces the hand-tuned one, rows matched to the
+// problem's objects and actions by name, everything else kept; problems the model was not
+// trained for are refused naming what is missing.
 #include "loop/calibrated_problem.h"
 
 #include <gtest/gtest.h>
@@ -29,26 +30,26 @@ const perception::ObservationModel& stored_model() {
   return m;
 }
 
-ObjectProblemData seed_data() {
+ObjectProblemData report_data() {
   const pomdp::Problem p = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
   return (*p.model->object_identification()).data();
 }
 
-// The seed problem cut down to the model's two objects, listed in the other order than the
+// The report's problem cut down to the model's two objects, listed in the other order than the
 // model's classes (plastic_cup first), and with its sensing actions in the other order too
 // (strike first), so that matching by position would give wrong rows.
-constexpr int kSeedMug = 1, kSeedCup = 2;  // object indices in audio_objects.yaml
+constexpr int kReportMug = 1, kReportCup = 2;  // object indices in audio_objects.yaml
 ObjectProblemData cup_or_mug() {
-  const ObjectProblemData seed = seed_data();
-  ObjectProblemData d = seed;
+  const ObjectProblemData report = report_data();
+  ObjectProblemData d = report;
   d.objects = {"plastic_cup", "coffee_mug"};
   d.prior = {0.5, 0.5};
-  d.sensing = {seed.sensing[1], seed.sensing[0]};
+  d.sensing = {report.sensing[1], report.sensing[0]};
   d.observation_symbols = {"plastic_cup", "coffee_mug"};
   d.observation_table = {{{0.9, 0.1}, {0.1, 0.9}}, {{0.8, 0.2}, {0.2, 0.8}}};
   d.sorting_reward.clear();
-  for (const auto& row : seed.sorting_reward)
-    d.sorting_reward.push_back({row[kSeedCup], row[kSeedMug]});
+  for (const auto& row : report.sorting_reward)
+    d.sorting_reward.push_back({row[kReportCup], row[kReportMug]});
   pomdp::validate_object_problem(d);
   return d;
 }
@@ -114,9 +115,9 @@ TEST(CalibratedProblem, AProblemWithFewerActionsTakesOnlyItsOwn) {
 }
 
 TEST(CalibratedProblem, RefusesAnObjectTheModelDoesNotKnow) {
-  // The full seed problem: the pringles can and the paper base were never recorded.
+  // The report's full problem: the pringles can and the paper base were never recorded.
   try {
-    calibrated_problem(seed_data(), stored_model());
+    calibrated_problem(report_data(), stored_model());
     ADD_FAILURE() << "calibrated a problem with unknown objects";
   } catch (const InputError& e) {
     const std::string message = e.what();

@@ -1,5 +1,5 @@
 // LoopLog: the closed loop's per-step files, against rows written out by hand from the format in
-// loop_log.h, on the shipped seed problem (objects pringles_can, coffee_mug, plastic_cup,
+// loop_log.h, on the report's shipped problem (objects pringles_can, coffee_mug, plastic_cup,
 // paper_base).
 #include "loop/loop_log.h"
 
@@ -19,14 +19,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const pomdp::ObjectIdentificationModel& seed_model() {
+const pomdp::ObjectIdentificationModel& report_model() {
   static const pomdp::Problem problem =
       pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
   return *problem.model->object_identification();
 }
 
 int symbol(const std::string& name) {
-  const auto& names = seed_model().spec().observation.names;
+  const auto& names = report_model().spec().observation.names;
   return static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
 }
 
@@ -70,7 +70,7 @@ Step sort_step() {
   s.record.step = 1;
   s.record.action = 3;  // move_to_B
   s.record.belief = {0.125, 0.5, 0.3125, 0.0625};
-  s.record.observation.index = seed_model().none_symbol();
+  s.record.observation.index = report_model().none_symbol();
   s.record.reward = 100;
   s.terminal = true;
   s.robot.emplace().report = {"move_to_B", robot::ActionStatus::done, "", 0.0};
@@ -82,7 +82,7 @@ using LoopLogTest = TestFolder;
 TEST_F(LoopLogTest, CsvRowsClipsAndJsonOfATrial) {
   nlohmann::json strike, sort;
   {
-    LoopLog log(dir_, seed_model());
+    LoopLog log(dir_, report_model());
     strike = log.write_step(strike_step());
     sort = log.write_step(sort_step());
   }
@@ -131,7 +131,7 @@ TEST_F(LoopLogTest, ACollisionIsLoggedWithItsReason) {
   s.robot->recorded = false;
   s.record.reward = -200;
   {
-    LoopLog log(dir_, seed_model());
+    LoopLog log(dir_, report_model());
     const nlohmann::json j = log.write_step(s);
     EXPECT_EQ(j["report"]["status"], "collision");
     EXPECT_EQ(j["report"]["reason"], "the arm touched the table");
@@ -142,7 +142,7 @@ TEST_F(LoopLogTest, ACollisionIsLoggedWithItsReason) {
 
 TEST_F(LoopLogTest, AFolderThatCannotBeCreatedIsAnInputError) {
   std::ofstream(dir_ / "a_file") << "";
-  EXPECT_THROW(LoopLog(dir_ / "a_file" / "out", seed_model()), InputError);
+  EXPECT_THROW(LoopLog(dir_ / "a_file" / "out", report_model()), InputError);
 }
 
 }  // namespace

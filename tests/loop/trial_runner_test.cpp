@@ -1,4 +1,4 @@
-// Trials end to end on the shipped seed problem (problems/audio_objects.yaml, its
+// Trials end to end on the report's shipped problem (problems/audio_objects.yaml, its
 // ObjectIdentificationModel as the world, ParticleBelief as the belief): files, determinism,
 // stopping, and ABT's decisions certified against the exact V* (regret_certificate.h).
 #include "loop/trial_runner.h"
@@ -39,7 +39,7 @@ int count_lines(const std::string& text) {
   return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
 }
 
-pomdp::Problem seed_problem() {
+pomdp::Problem report_problem() {
   return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
 }
 
@@ -52,7 +52,7 @@ struct Harness {
     solver =
         std::make_unique<solvers::AbtSolver>(model, solvers::search_options(overrides, problem));
   }
-  pomdp::Problem problem = seed_problem();
+  pomdp::Problem problem = report_problem();
   pomdp::ModelPtr model = problem.model;
   loop::TableWorld world{model};
   std::unique_ptr<solvers::AbtSolver> solver =
@@ -220,9 +220,9 @@ TEST(Trials, BadOptionsAreInputErrors) {
   EXPECT_THROW(TrialLog("/proc/no_such_dir/out", h.model->spec(), 0), InputError);
 }
 
-// 12 trials of ABT with `leaf` at 1000 episodes per step on the seed problem (seed 2026), logged
-// and certified within a test's budget: 100,000 exact-solver expansions at b0, then 2,000 per
-// visited belief (counts, so they repeat). Prints the figures under `label`.
+// 12 trials of ABT with `leaf` at 1000 episodes per step on the report's problem (seed 2026),
+// logged and certified within a test's budget: 100,000 exact-solver expansions at b0, then 2,000
+// per visited belief (counts, so they repeat). Prints the figures under `label`.
 Certificate certified_abt_trials(const std::string& leaf, const std::string& label) {
   Harness h(leaf);
   const auto dir = fresh_dir("certify_" + leaf);
@@ -251,7 +251,7 @@ Certificate certified_abt_trials(const std::string& leaf, const std::string& lab
   return c;
 }
 
-TEST(Trials, AbtIsCertifiedToKeepFourFifthsOfTheOptimalValueOnTheSeedProblem) {
+TEST(Trials, AbtIsCertifiedToKeepFourFifthsOfTheOptimalValueOnTheReportsProblem) {
   // Every decision of every trial is scored by its exact loss V*(b_t) - Q*(b_t, a_t) at the exact
   // belief of its history (regret_certificate.h); the discounted sum per trial has expectation
   // V*(b0) - V^ABT(b0) with a fraction of the returns' variance. The bounds come from the exact

@@ -50,6 +50,17 @@ TEST(ObservationModelJson, RecordsTheTableEstimateAndReadsOldFilesAsCounts) {
   EXPECT_EQ(observation_model_from_json(old, "old.json").table_estimate(), TableEstimate::counts);
 }
 
+// tests/data/perception/seed_gaussian_model.json was written when report-gaussian was called
+// seed-gaussian: it loads under the current name, and saves with it.
+TEST(ObservationModelJson, ReadsAnOldClassifierNameAsTheCurrentOne) {
+  const ObservationModel old = load_observation_model(
+      std::string(ECHOPLAN_SOURCE_DIR) + "/tests/data/perception/seed_gaussian_model.json");
+  EXPECT_EQ(old.classifier_name(), "report-gaussian");
+  for (const std::string& action : {"slide", "strike"})
+    EXPECT_EQ(old.classifier(action).name(), "report-gaussian");
+  EXPECT_EQ(observation_model_to_json(old)["classifier"], "report-gaussian");
+}
+
 TEST(ObservationModelJson, WithoutRejectTheThresholdIsNull) {
   TrainOptions options;
   options.reject = false;

@@ -45,7 +45,7 @@ TEST(CassandraReader, TigerTables) {
   EXPECT_EQ(p.belief.type, BeliefSettings::Type::exact);
 }
 
-// The .pomdp version of the seed problem and the YAML version are one model.
+// The .pomdp version of the report's problem and the YAML version are one model.
 TEST(CassandraReader, AudioObjectsPomdpEqualsTheYamlProblem) {
   const Problem pomdp = load_problem(repo_file("problems/audio_objects.pomdp"));
   const TabularModel& a = *pomdp.model->tabular();

@@ -1,4 +1,4 @@
-// The exact belief filter against Bayes' rule worked by hand, on Tiger and the seed problem.
+// The exact belief filter against Bayes' rule worked by hand, on Tiger and the report's problem.
 #include "pomdp/exact_belief.h"
 
 #include <gtest/gtest.h>
@@ -15,7 +15,8 @@ using testing::repo_file;
 
 constexpr int kSlide = 0, kStrike = 1;
 
-// Bayes' rule for the seed problem written out: uniform prior times the table entries, normalised.
+// Bayes' rule for the report's problem written out: uniform prior times the table entries,
+// normalised.
 std::vector<double> hand_posterior(const ObjectProblemData& d,
                                    const std::vector<std::pair<int, int>>& steps) {
   std::vector<double> p(4, 0.25);
@@ -40,7 +41,7 @@ TEST(ExactBelief, TigerListeningMatchesBayes) {
   EXPECT_NEAR(b.probabilities()[0], 0.5, 1e-15);
 }
 
-TEST(ExactBelief, SeedProblemMatchesBayesAndTracksTheOffset) {
+TEST(ExactBelief, ReportProblemMatchesBayesAndTracksTheOffset) {
   const Problem p = load_problem(repo_file("problems/audio_objects.yaml"));
   const auto& d = (*p.model->object_identification()).data();
   ExactBelief b(p.model);

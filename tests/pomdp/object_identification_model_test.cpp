@@ -1,4 +1,4 @@
-// ObjectIdentificationModel: the seed's dynamics, rewards, sampled observations and its tables.
+// ObjectIdentificationModel: the report's dynamics, rewards, sampled observations and its tables.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,14 +13,14 @@ namespace {
 
 using testing::repo_file;
 
-class SeedModel : public ::testing::Test {
+class ReportModel : public ::testing::Test {
  protected:
   Problem problem = load_problem(repo_file("problems/audio_objects.yaml"));
   const ObjectIdentificationModel& model = (*problem.model->object_identification());
   static constexpr int kSlide = 0, kStrike = 1, kMoveA = 2, kMoveB = 3;
 };
 
-TEST_F(SeedModel, InitialStateIsTheFixedConfiguration) {
+TEST_F(ReportModel, InitialStateIsTheFixedConfiguration) {
   Rng rng(1);
   std::vector<int> counts(4, 0);
   const int n = 40000;
@@ -35,7 +35,7 @@ TEST_F(SeedModel, InitialStateIsTheFixedConfiguration) {
   for (int c : counts) EXPECT_NEAR(c, n / 4.0, 5 * std::sqrt(n * 0.25 * 0.75));
 }
 
-TEST_F(SeedModel, SlideMovesTheObjectStrikeLeavesIt) {
+TEST_F(ReportModel, SlideMovesTheObjectStrikeLeavesIt) {
   Rng rng(2);
   const State s0 = model.sample_initial_state(rng);
   const StepResult slide = model.step(s0, kSlide, rng);
@@ -50,7 +50,7 @@ TEST_F(SeedModel, SlideMovesTheObjectStrikeLeavesIt) {
   EXPECT_FALSE(strike.terminal);
 }
 
-TEST_F(SeedModel, SortingRewardsFollowTheGroups) {
+TEST_F(ReportModel, SortingRewardsFollowTheGroups) {
   Rng rng(3);
   State s = model.tabular_state(0);
   const double expect_a[4] = {10, -100, 10, -100};
@@ -70,7 +70,7 @@ TEST_F(SeedModel, SortingRewardsFollowTheGroups) {
 
 // Sampled observations follow the table: chi-square-free check, each frequency within 5 binomial
 // standard deviations of its probability.
-TEST_F(SeedModel, SampledObservationsFollowTheTable) {
+TEST_F(ReportModel, SampledObservationsFollowTheTable) {
   Rng rng(4);
   const int n = 20000;
   for (int a : {kSlide, kStrike}) {
@@ -89,7 +89,7 @@ TEST_F(SeedModel, SampledObservationsFollowTheTable) {
   }
 }
 
-TEST_F(SeedModel, LikelihoodOfImpossibleObservationsIsZero) {
+TEST_F(ReportModel, LikelihoodOfImpossibleObservationsIsZero) {
   const State s = model.tabular_state(1);
   EXPECT_EQ(model.observation_likelihood(s, kSlide, Observation{model.none_symbol(), {}}), 0.0);
   EXPECT_EQ(model.observation_likelihood(s, kSlide, Observation{99, {}}), 0.0);
@@ -97,7 +97,7 @@ TEST_F(SeedModel, LikelihoodOfImpossibleObservationsIsZero) {
   EXPECT_EQ(model.observation_likelihood(s, kMoveA, Observation{model.none_symbol(), {}}), 1.0);
 }
 
-TEST_F(SeedModel, SpecNamesEverything) {
+TEST_F(ReportModel, SpecNamesEverything) {
   const ModelSpec& spec = model.spec();
   EXPECT_EQ(spec.state.continuous_names.size(), 10u);
   EXPECT_EQ(spec.state.discrete_value_names[0].size(), 4u);
@@ -108,7 +108,7 @@ TEST_F(SeedModel, SpecNamesEverything) {
 }
 
 // The tabular view agrees with what the generative step does.
-TEST_F(SeedModel, TabularViewMatchesTheStep) {
+TEST_F(ReportModel, TabularViewMatchesTheStep) {
   const TabularModel& t = *model.tabular();
   ASSERT_EQ(t.num_states(), 5);
   ASSERT_EQ(t.num_observations(), 5);

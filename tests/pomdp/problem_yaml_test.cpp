@@ -1,4 +1,4 @@
-// The YAML reader reproduces the seed's tables exactly and rejects bad files with file and line.
+// The YAML reader reproduces the report's tables exactly and rejects bad files with file and line.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -18,15 +18,15 @@ const ObjectIdentificationModel& object_model(const Problem& p) {
   return (*p.model->object_identification());
 }
 
-// The seed's section 3.3, typed in here independently of the YAML file: [object][action][class].
-constexpr double kSeedTable[4][2][4] = {
+// The report's section 3.3, typed in here independently of the YAML file: [object][action][class].
+constexpr double kReportTable[4][2][4] = {
     {{0.5, 0.3, 0.15, 0.05}, {0.6, 0.05, 0.3, 0.05}},
     {{0.11, 0.67, 0.11, 0.11}, {0.05, 0.6, 0.3, 0.05}},
     {{0.11, 0.11, 0.67, 0.11}, {0.11, 0.11, 0.67, 0.11}},
     {{0.01, 0.01, 0.48, 0.5}, {0.11, 0.11, 0.11, 0.67}},
 };
 
-TEST(ProblemYaml, SeedProblemMatchesTheReport) {
+TEST(ProblemYaml, ReportProblemMatchesTheReport) {
   const Problem p = load_problem(repo_file("problems/audio_objects.yaml"));
   const auto& m = object_model(p);
   const ObjectProblemData& d = m.data();
@@ -41,7 +41,7 @@ TEST(ProblemYaml, SeedProblemMatchesTheReport) {
     EXPECT_EQ(d.prior[k], 0.25);
     for (int a = 0; a < 2; ++a) {
       for (int o = 0; o < 4; ++o)
-        EXPECT_EQ(d.observation_table[a][k][o], kSeedTable[k][a][o]) << k << a << o;
+        EXPECT_EQ(d.observation_table[a][k][o], kReportTable[k][a][o]) << k << a << o;
     }
   }
   // Section 3.3: pringles_can and plastic_cup belong at A, coffee_mug and paper_base at B.
@@ -71,7 +71,8 @@ TEST(ProblemYaml, WeightedPriorIsNormalised) {
   EXPECT_EQ(object_model(p).data().prior, (std::vector<double>{0.75, 0.25, 0.0, 0.0}));
 }
 
-// Each bad input: replace one piece of the seed file and expect the error's line and message.
+// Each bad input: replace one piece of the report's problem file and expect the error's line and
+// message.
 struct BadCase {
   const char* label;
   const char* from;

@@ -31,8 +31,8 @@ TEST(ProblemYamlWriter, WrittenProblemReadsBackIdentically) {
   EXPECT_EQ(q.planner.exploration, p.planner.exploration);
 }
 
-// Numbers with no short decimal form (1/3, 0.1 + 0.2) and the settings the seed file does not use
-// (exact belief, an episode budget) survive the round trip bit for bit.
+// Numbers with no short decimal form (1/3, 0.1 + 0.2) and the settings the report's problem file
+// does not use (exact belief, an episode budget) survive the round trip bit for bit.
 TEST(ProblemYamlWriter, EveryDoubleAndSettingRoundTripsExactly) {
   ObjectProblemData d = object_model(load_problem(repo_file("problems/audio_objects.yaml"))).data();
   d.observation_table[0][0] = {1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0, 1.0 / 6.0};

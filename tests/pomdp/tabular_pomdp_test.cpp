@@ -41,8 +41,8 @@ TEST(TabularPomdp, HeuristicIsTheMdpValue) {
   // Value iteration stops within 1e-6 of the fixed point.
   EXPECT_NEAR(p.model->heuristic_value(State{{}, {0}}), 200.0, 1e-6);
   EXPECT_NEAR(p.model->heuristic_value(State{{}, {1}}), 200.0, 1e-6);
-  // The seed problem as .pomdp: sorting right now (+10) is the known-object value; 'done' is worth
-  // 0.
+  // The report's problem as .pomdp: sorting right now (+10) is the known-object value; 'done' is
+  // worth 0.
   const Problem objects = load_problem(repo_file("problems/audio_objects.pomdp"));
   EXPECT_NEAR(objects.model->heuristic_value(State{{}, {1}}), 10.0, 1e-6);
   EXPECT_EQ(objects.model->heuristic_value(State{{}, {4}}), 0.0);

@@ -1,4 +1,4 @@
-// ABT on the shipped seed problem: as published, stored episodes revised on a model change (the
+// ABT on the report's shipped problem: as published, stored episodes revised on a model change (the
 // observation table recalibrated) against a tree built afresh with the new model; and the policy
 // leaf value, which decides from the tree's exact belief (POMCP refuses it: it stays textbook).
 #include "solvers/abt_solver.h"
@@ -31,18 +31,18 @@ using pomdp::ObjectProblemData;
 
 constexpr int kSlide = 0, kStrike = 1;
 
-pomdp::Problem seed_problem() {
+pomdp::Problem report_problem() {
   return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
 }
 
-std::shared_ptr<const ObjectIdentificationModel> seed_model() {
-  const pomdp::ModelPtr model = seed_problem().model;
+std::shared_ptr<const ObjectIdentificationModel> report_model() {
+  const pomdp::ModelPtr model = report_problem().model;
   // The same model, shared with the problem's pointer (aliasing constructor).
   return std::shared_ptr<const ObjectIdentificationModel>(model, model->object_identification());
 }
 
-// The seed model with a recalibrated strike: the pringles can and the mug now sound the same when
-// struck (their rows were 0.6 on their own symbols and 0.05 on each other's). The strike loses
+// The report's model with a recalibrated strike: the pringles can and the mug now sound the same
+// when struck (their rows were 0.6 on their own symbols and 0.05 on each other's). The strike loses
 // much of its value.
 std::shared_ptr<const ObjectIdentificationModel> recalibrated(const ObjectIdentificationModel& m) {
   ObjectProblemData data = m.data();
@@ -86,7 +86,7 @@ class CountingModel final : public pomdp::Model {
 SearchOptions seed_options() {
   PlannerOverrides lookahead;
   lookahead.leaf = "lookahead";
-  SearchOptions options = search_options(lookahead, seed_problem());
+  SearchOptions options = search_options(lookahead, report_problem());
   options.keep_episodes = true;
   return options;
 }
@@ -147,7 +147,7 @@ TEST(AbtRevision, RevisedTreeMatchesAFreshTreeAtAFractionOfTheCost) {
   // alarm below 0.2% per action for a revision that is exact in distribution. The stale trees
   // must fail the same check for the strike (the change is large enough for the check to see), and
   // the revision must cost less than a third of the fresh build in model steps.
-  const auto old_model = seed_model();
+  const auto old_model = report_model();
   const auto new_model = recalibrated(*old_model);
   const int K = 10, N = 3000;
   const int actions = old_model->num_actions();
@@ -195,7 +195,7 @@ TEST(AbtRevision, RevisedTreeMatchesAFreshTreeAtAFractionOfTheCost) {
 }
 
 TEST(AbtRevision, AChangeOfNoRowsLeavesTheTreeAsItWas) {
-  const auto model = seed_model();
+  const auto model = report_model();
   std::vector<double> before;
   AbtSolver solver(model, seed_options());
   Rng rng(5);
@@ -212,7 +212,7 @@ TEST(AbtRevision, AChangeOfNoRowsLeavesTheTreeAsItWas) {
 }
 
 TEST(AbtRevision, ChangedRowsAreFoundAndOtherChangesRefused) {
-  const auto model = seed_model();
+  const auto model = report_model();
   const ModelChange change = observation_table_change(*model, recalibrated(*model));
   EXPECT_EQ(change.rows, (std::vector<ObservationRow>{{kStrike, 0}, {kStrike, 1}}));
   ObjectProblemData data = model->data();
@@ -247,8 +247,8 @@ TEST(AbtRevision, ChangedRowsAreFoundAndOtherChangesRefused) {
 // the strike's table recalibrated mid-trial, revise(), the belief moved to the new model, planning
 // on.
 TEST(AbtRevision, DocumentedUsageRevisesAMidTrialTable) {
-  const pomdp::Problem problem = seed_problem();
-  const auto old_model = seed_model();
+  const pomdp::Problem problem = report_problem();
+  const auto old_model = report_model();
   const auto new_model = recalibrated(*old_model);
   PlannerOverrides overrides;
   overrides.leaf = "lookahead";
@@ -286,7 +286,7 @@ TEST(AbtRevision, DocumentedUsageRevisesAMidTrialTable) {
 }
 
 TEST(AbtRevision, UpdateKeepsTheEpisodesThroughTheNewRoot) {
-  const auto model = seed_model();
+  const auto model = report_model();
   AbtSolver solver(model, seed_options());
   Rng rng(3);
   pomdp::ParticleBelief belief(model, 500, rng);
@@ -348,7 +348,7 @@ TEST(AbtPolicyLeaf, SensesFirstAndSortsOnceTheEvidenceIsStrong) {
 }
 
 TEST(AbtPolicyLeaf, RevisionIsRefusedBecauseEveryNodesValueDependsOnTheTable) {
-  const auto model = seed_model();
+  const auto model = report_model();
   SearchOptions options = policy_leaf();
   options.keep_episodes = true;
   AbtSolver solver(model, options);
@@ -364,10 +364,10 @@ TEST(AbtPolicyLeaf, NeedsAnIdentificationProblem) {
   const pomdp::Problem tiger = pomdp::load_problem(repo_file("problems/tiger.pomdp"));
   EXPECT_THROW(AbtSolver(tiger.model, policy_leaf()), InputError);
   EXPECT_EQ(default_leaf_mode("abt", *tiger.model), LeafMode::lookahead);
-  const pomdp::Problem seed = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
-  EXPECT_EQ(default_leaf_mode("abt", *seed.model), LeafMode::policy);
-  EXPECT_EQ(default_leaf_mode("pomcp", *seed.model), LeafMode::lookahead);
-  EXPECT_THROW(PomcpSolver(seed.model, policy_leaf()), InputError);
+  const pomdp::Problem report = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
+  EXPECT_EQ(default_leaf_mode("abt", *report.model), LeafMode::policy);
+  EXPECT_EQ(default_leaf_mode("pomcp", *report.model), LeafMode::lookahead);
+  EXPECT_THROW(PomcpSolver(report.model, policy_leaf()), InputError);
 }
 
 SearchOptions exact_leaf() { return tabular_leaf(LeafMode::exact); }
@@ -426,7 +426,7 @@ TEST(AbtExactLeaf, TakesTheActionTheExactBoundsProveOptimal) {
 TEST(AbtExactLeaf, FallsBackToThePolicyLeafAtABeliefTheExactSolverDoesNotHold) {
   // Reset at "surely the mug" (not the problem's start belief): no count vector holds it, so the
   // guide is off and ABT plans with the policy leaf from the tree's own exact beliefs.
-  const auto model = seed_model();
+  const auto model = report_model();
   AbtSolver solver(model, exact_leaf());
   Rng rng(3);
   pomdp::ParticleBelief belief(model, 200, rng);
@@ -444,13 +444,13 @@ TEST(AbtExactLeaf, FallsBackToThePolicyLeafAtABeliefTheExactSolverDoesNotHold) {
 TEST(AbtExactLeaf, NeedsAnIdentificationProblemAndIsAbtsOnly) {
   const pomdp::Problem tiger = pomdp::load_problem(repo_file("problems/tiger.pomdp"));
   EXPECT_THROW(AbtSolver(tiger.model, exact_leaf()), InputError);
-  const pomdp::Problem seed = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
-  EXPECT_THROW(PomcpSolver(seed.model, exact_leaf()), InputError);
+  const pomdp::Problem report = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
+  EXPECT_THROW(PomcpSolver(report.model, exact_leaf()), InputError);
   SearchOptions offline = exact_leaf();
   offline.leaf.mode = LeafMode::exact_offline;
-  EXPECT_THROW(PomcpSolver(seed.model, offline), InputError);
+  EXPECT_THROW(PomcpSolver(report.model, offline), InputError);
   offline.leaf.exact_share = 1.5;
-  EXPECT_THROW(AbtSolver(seed.model, offline), InputError);
+  EXPECT_THROW(AbtSolver(report.model, offline), InputError);
 }
 
 }  // namespace

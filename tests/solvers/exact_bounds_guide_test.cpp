@@ -1,6 +1,6 @@
-// The exact solver's bounds as ABT's guide (leaf modes exact and exact-offline) on the shipped seed
-// problem: leaf values between "commit now" and V*, the root following real steps, the guide off
-// for a belief the solver does not hold, and the refusal of problems it cannot take.
+// The exact solver's bounds as ABT's guide (leaf modes exact and exact-offline) on the report's
+// shipped problem: leaf values between "commit now" and V*, the root following real steps, the
+// guide off for a belief the solver does not hold, and the refusal of problems it cannot take.
 #include "solvers/exact_bounds_guide.h"
 
 #include <gtest/gtest.h>
@@ -85,7 +85,7 @@ TEST(ExactBoundsGuide, RootFollowsRealStepsAndRefinementTightensItsBounds) {
   guide.follow(kStrike, kMug);
   EXPECT_EQ(guide.root(), expected);
   // A strike hears "coffee_mug" from the mug with 0.6, from the cup and the base with 0.11, from
-  // the can with 0.05 (seed table): after hearing it the mug is the most likely object.
+  // the can with 0.05 (the report's table): after hearing it the mug is the most likely object.
   const std::vector<double> b = guide.root_belief();
   EXPECT_EQ(std::max_element(b.begin(), b.end()) - b.begin(), kMug);
   const double gap_before = guide.solver().value(guide.root()).gap();

@@ -1,4 +1,4 @@
-// The exact identification solver on the shipped seed problem (against DESIGN.md's independent
+// The exact identification solver on the report's shipped problem (against DESIGN.md's independent
 // V*), on variants whose value follows by hand, and its refusal of problems of another shape.
 #include "solvers/identification_solver.h"
 
@@ -17,12 +17,13 @@ std::string repo_file(const std::string& relative) {
   return std::string(ECHOPLAN_SOURCE_DIR) + "/" + relative;
 }
 
-pomdp::ObjectProblemData seed_data() {
+pomdp::ObjectProblemData report_data() {
   const pomdp::Problem p = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
   return p.model->object_identification()->data();
 }
 
-// The seed problem with every sensing action made perfectly reliable (each object heard as itself).
+// The report's problem with every sensing action made perfectly reliable (each object heard as
+// itself).
 pomdp::ObjectProblemData perfect_sensing(pomdp::ObjectProblemData d) {
   for (auto& action : d.observation_table)
     for (std::size_t k = 0; k < action.size(); ++k)
@@ -39,17 +40,18 @@ Bounds root_bounds_after(IdentificationSolver& solver, long expansions) {
   return solver.value(solver.root());
 }
 
-// DESIGN.md: V*(b0) of the seed problem is in [2.95334, 2.95348] by an independent exact search.
-void expect_brackets_seed_value(const Bounds& v) {
+// DESIGN.md: V*(b0) of the report's problem is in [2.95334, 2.95348] by an independent exact
+// search.
+void expect_brackets_report_value(const Bounds& v) {
   EXPECT_LE(v.lower, 2.95348);
   EXPECT_GE(v.upper, 2.95334);
 }
 
-TEST(IdentificationSolver, SeedProblemBracketsTheKnownOptimalValue) {
+TEST(IdentificationSolver, ReportProblemBracketsTheKnownOptimalValue) {
   // DESIGN.md: V*(b0) in [2.95334, 2.95348] by an independent exact search; the strike is optimal
   // and starting with a slide is worth 2.835. A fixed number of expansions (the same bounds on any
   // machine) keeps the test short; the bounds must hold wherever the search stops.
-  const pomdp::ObjectIdentificationModel model(seed_data());
+  const pomdp::ObjectIdentificationModel model(report_data());
   IdentificationSolver solver(*model.tabular());
   RefineLimits limits;
   limits.target_gap = 1e-4;
@@ -69,7 +71,7 @@ TEST(IdentificationSolver, SeedProblemBracketsTheKnownOptimalValue) {
 TEST(IdentificationSolver, PerfectSensingIsWorthOneSenseThenTheRightSort) {
   // Sense once (-1), then sort right (+10) one step later: V* = -1 + 0.99 * 10 = 8.9; committing
   // blind earns 0.5 * 10 + 0.5 * (-100) = -45.
-  const pomdp::ObjectIdentificationModel model(perfect_sensing(seed_data()));
+  const pomdp::ObjectIdentificationModel model(perfect_sensing(report_data()));
   IdentificationSolver solver(*model.tabular());
   RefineLimits limits;
   limits.target_gap = 1e-9;
@@ -88,7 +90,7 @@ TEST(IdentificationSolver, PerfectSensingIsWorthOneSenseThenTheRightSort) {
 TEST(IdentificationSolver, CollisionsEndTheEpisodeAndScaleTheFuture) {
   // Perfect sensing that collides with probability p: sensing earns (1-p)(-1) + p(-100) now and
   // 10 one step later only if it did not collide: V* = max(-45, that + 0.99 (1-p) 10).
-  auto d = perfect_sensing(seed_data());
+  auto d = perfect_sensing(report_data());
   const double p = 0.2;
   for (auto& s : d.sensing) s.collision_probability = p;
   const pomdp::ObjectIdentificationModel model(d);
@@ -105,7 +107,7 @@ TEST(IdentificationSolver, CollisionsEndTheEpisodeAndScaleTheFuture) {
 
 TEST(IdentificationSolver, BoundsAreValidWheneverItStops) {
   // Stopped after a few trials, the bounds must still contain the value found to convergence.
-  const pomdp::ObjectIdentificationModel model(seed_data());
+  const pomdp::ObjectIdentificationModel model(report_data());
   IdentificationSolver early(*model.tabular());
   RefineLimits few;
   few.target_gap = 1e-6;
@@ -123,7 +125,7 @@ TEST(IdentificationSolver, BoundsBracketBruteForceAtBeliefsAlongHistories) {
   // 0.02 there; the solver's bounds (after a fixed number of expansions, valid wherever it stops)
   // must be narrower still and overlap it, i.e. both must contain the same V*. (At discount 0.95
   // depth 16 still leaves a bracket 0.04 wide.)
-  auto d = seed_data();
+  auto d = report_data();
   d.discount = 0.8;
   const pomdp::ObjectIdentificationModel model(d);
   const pomdp::TabularModel& m = *model.tabular();
@@ -152,15 +154,15 @@ TEST(IdentificationSolver, PlansAndSawtoothTightenTheFrontierForTheSameExpansion
   // The same number of expansions with the frontier's plans and sawtooth, and with the plain
   // commit-now / one-more-sensing bounds: both must bracket the known V* (DESIGN.md), and the
   // first must be narrower (what the plans and points are for).
-  const pomdp::ObjectIdentificationModel model(seed_data());
+  const pomdp::ObjectIdentificationModel model(report_data());
   IdentificationOptions plain;
   plain.plan_lower_bound = false;
   plain.sawtooth_upper_bound = false;
   IdentificationSolver full_solver(*model.tabular()), plain_solver(*model.tabular(), plain);
   const Bounds full = root_bounds_after(full_solver, 5000);
   const Bounds simple = root_bounds_after(plain_solver, 5000);
-  expect_brackets_seed_value(full);
-  expect_brackets_seed_value(simple);
+  expect_brackets_report_value(full);
+  expect_brackets_report_value(simple);
   EXPECT_GT(full_solver.num_plans(), 2u);
   EXPECT_GT(full_solver.num_upper_points(), 0u);
   EXPECT_LT(full.gap(), simple.gap());
@@ -168,21 +170,21 @@ TEST(IdentificationSolver, PlansAndSawtoothTightenTheFrontierForTheSameExpansion
   IdentificationOptions trials;
   trials.search = IdentificationOptions::Search::trials;
   IdentificationSolver trial_solver(*model.tabular(), trials);
-  expect_brackets_seed_value(root_bounds_after(trial_solver, 5000));
+  expect_brackets_report_value(root_bounds_after(trial_solver, 5000));
 }
 
 TEST(IdentificationSolver, PairRelaxationNarrowsTheGapForTheSameExpansions) {
   // The same number of expansions with and without the two-state sub-problems capping new
   // beliefs' upper bounds: both must bracket the known V* (DESIGN.md), and the first must be
   // narrower (what the relaxation is for).
-  const pomdp::ObjectIdentificationModel model(seed_data());
+  const pomdp::ObjectIdentificationModel model(report_data());
   IdentificationOptions off;
   off.pair_upper_bound = false;
   IdentificationSolver with_pairs(*model.tabular()), without(*model.tabular(), off);
   const Bounds tight = root_bounds_after(with_pairs, 20000);
   const Bounds loose = root_bounds_after(without, 20000);
-  expect_brackets_seed_value(tight);
-  expect_brackets_seed_value(loose);
+  expect_brackets_report_value(tight);
+  expect_brackets_report_value(loose);
   EXPECT_LT(tight.gap(), loose.gap());
 }
 
@@ -193,9 +195,10 @@ TEST(IdentificationSolver, RefusesProblemsWhoseStateChanges) {
   ASSERT_TRUE(why.has_value());
   EXPECT_NE(why->find("moves state"), std::string::npos) << *why;
   EXPECT_THROW(IdentificationSolver{*tiger.model->tabular()}, std::invalid_argument);
-  // The seed problem in Cassandra format has the identification shape too.
-  const pomdp::Problem seed_pomdp = pomdp::load_problem(repo_file("problems/audio_objects.pomdp"));
-  EXPECT_FALSE(identification_shape_problem(*seed_pomdp.model->tabular()).has_value());
+  // The report's problem in Cassandra format has the identification shape too.
+  const pomdp::Problem report_pomdp =
+      pomdp::load_problem(repo_file("problems/audio_objects.pomdp"));
+  EXPECT_FALSE(identification_shape_problem(*report_pomdp.model->tabular()).has_value());
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// read_identification_tables() on the shipped seed problem: the live states, the terminal
+// read_identification_tables() on the report's shipped problem: the live states, the terminal
 // actions, the emission and known-value tables the exact solver, the sensing policy and the pair
 // relaxation share; and a sensing policy on shared tables behaves as one reading its own.
 #include "solvers/identification_tables.h"
@@ -14,12 +14,12 @@
 namespace echoplan::solvers {
 namespace {
 
-pomdp::Problem seed_problem() {
+pomdp::Problem report_problem() {
   return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
 }
 
-TEST(IdentificationTables, ReadsTheSeedProblemOverItsLiveStates) {
-  const pomdp::Problem problem = seed_problem();
+TEST(IdentificationTables, ReadsTheReportsProblemOverItsLiveStates) {
+  const pomdp::Problem problem = report_problem();
   const pomdp::TabularModel& m = *problem.model->tabular();
   ASSERT_FALSE(identification_shape_problem(m).has_value());
   const auto t = read_identification_tables(m);
@@ -49,7 +49,7 @@ TEST(IdentificationTables, ReadsTheSeedProblemOverItsLiveStates) {
 }
 
 TEST(IdentificationTables, ASensingPolicyOnSharedTablesMatchesOneReadingItsOwn) {
-  const pomdp::Problem problem = seed_problem();
+  const pomdp::Problem problem = report_problem();
   const pomdp::TabularModel& m = *problem.model->tabular();
   const SensingPolicy own(m);
   const SensingPolicy shared(read_identification_tables(m));

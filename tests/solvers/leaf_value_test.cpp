@@ -8,15 +8,15 @@
 namespace echoplan::solvers {
 namespace {
 
-// The shipped seed problem: objects 0 and 2 belong at A, 1 and 3 at B; sorting right earns 10,
+// The report's shipped problem: objects 0 and 2 belong at A, 1 and 3 at B; sorting right earns 10,
 // wrong -100; sensing costs 1; discount 0.99; the heuristic of a known object is 10 (sort it now).
-std::shared_ptr<const pomdp::Model> seed_model() {
+std::shared_ptr<const pomdp::Model> report_model() {
   return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml")
       .model;
 }
 
 // The full model state of object k at the start of an episode (arm joints and offset filled in).
-pomdp::State object(int k) { return seed_model()->tabular_state(k); }
+pomdp::State object(int k) { return report_model()->tabular_state(k); }
 
 // What an episode reaching a leaf at depth 1 with object k's state adds, valued by `mode`.
 void add(LeafEstimate& leaf, LeafMode mode, const pomdp::ModelPtr& model, int k, int steps_left,
@@ -27,7 +27,7 @@ void add(LeafEstimate& leaf, LeafMode mode, const pomdp::ModelPtr& model, int k,
 }
 
 TEST(LeafEstimate, LookaheadCommitsWhenCertain) {
-  const auto shipped = seed_model();
+  const auto shipped = report_model();
   Rng rng(1);
   LeafEstimate leaf;
   add(leaf, LeafMode::lookahead, shipped, 0, 10, rng);
@@ -37,7 +37,7 @@ TEST(LeafEstimate, LookaheadCommitsWhenCertain) {
 }
 
 TEST(LeafEstimate, LookaheadSensesWhenTheGroupIsUncertain) {
-  const auto shipped = seed_model();
+  const auto shipped = report_model();
   Rng rng(1);
   LeafEstimate leaf;
   add(leaf, LeafMode::lookahead, shipped, 0, 10, rng);
@@ -47,7 +47,7 @@ TEST(LeafEstimate, LookaheadSensesWhenTheGroupIsUncertain) {
 }
 
 TEST(LeafEstimate, HeuristicAveragesTheModelHeuristic) {
-  const auto shipped = seed_model();
+  const auto shipped = report_model();
   Rng rng(1);
   LeafEstimate leaf;
   add(leaf, LeafMode::heuristic, shipped, 0, 10, rng);
@@ -56,11 +56,11 @@ TEST(LeafEstimate, HeuristicAveragesTheModelHeuristic) {
   EXPECT_EQ(leaf.count(), 2);
 }
 
-TEST(LeafEstimate, RandomRolloutIsPoorOnTheSeedProblem) {
+TEST(LeafEstimate, RandomRolloutIsPoorOnTheReportsProblem) {
   // The reason lookahead is the default: random play sorts wrongly half of the time. Its mean over
   // many rollouts lies far below 0. Exactly: each step senses (-1, continue) or sorts (mean -45)
   // with probability 1/2, so V = 0.5 (-45) + 0.5 (-1 + 0.99 V), V = -23 / 0.505.
-  const auto shipped = seed_model();
+  const auto shipped = report_model();
   Rng rng(3);
   LeafEstimate leaf;
   for (int i = 0; i < 4000; ++i) add(leaf, LeafMode::rollout, shipped, i % 4, 50, rng);

@@ -1,4 +1,4 @@
-// observation_table_change() on the shipped seed problem with edited observation rows (it must
+// observation_table_change() on the report's shipped problem with edited observation rows (it must
 // find exactly the edited (action, object) rows), its refusal of every other kind of difference,
 // and ModelChange::affects() on the states a step can reach.
 #include "solvers/model_change.h"
@@ -29,7 +29,7 @@ constexpr int kPringles = 0;
 constexpr int kMug = 1;
 constexpr int kPaper = 3;
 
-std::shared_ptr<const ObjectIdentificationModel> seed_model() {
+std::shared_ptr<const ObjectIdentificationModel> report_model() {
   const pomdp::Problem p =
       pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
   const ObjectIdentificationModel* objects = p.model->object_identification();
@@ -60,7 +60,7 @@ pomdp::State state_with_object(const ObjectIdentificationModel& model, int objec
 }
 
 TEST(ObservationTableChange, IdenticalModelsChangeNoRow) {
-  const auto before = seed_model();
+  const auto before = report_model();
   const auto after = model_of(before->data());
   const ModelChange change = observation_table_change(*before, after);
   EXPECT_TRUE(change.rows.empty());
@@ -68,7 +68,7 @@ TEST(ObservationTableChange, IdenticalModelsChangeNoRow) {
 }
 
 TEST(ObservationTableChange, FindsExactlyTheEditedRowsInTableOrder) {
-  const auto before = seed_model();
+  const auto before = report_model();
   ObjectProblemData data = before->data();
   // The paper base slid: 0.48 on plastic_cup and 0.5 on itself in the file; swap them.
   data.observation_table[kSlide][kPaper] = {0.01, 0.01, 0.5, 0.48};
@@ -80,7 +80,7 @@ TEST(ObservationTableChange, FindsExactlyTheEditedRowsInTableOrder) {
 
 TEST(ObservationTableChange, AnyDifferenceInARowCounts) {
   // "the rows whose probabilities differ at all": a shift far below the loader's 1e-6 sum check.
-  const auto before = seed_model();
+  const auto before = report_model();
   ObjectProblemData data = before->data();
   data.observation_table[kStrike][kPringles][0] += 1e-12;
   data.observation_table[kStrike][kPringles][2] -= 1e-12;
@@ -89,15 +89,15 @@ TEST(ObservationTableChange, AnyDifferenceInARowCounts) {
 }
 
 TEST(ObservationTableChange, RefusesEveryOtherDifferenceNamingIt) {
-  const auto before = seed_model();
-  const ObjectProblemData seed = before->data();
+  const auto before = report_model();
+  const ObjectProblemData report = before->data();
   struct Case {
     const char* what;  // the phrase the message must contain
     ObjectProblemData data;
   };
   std::vector<Case> cases;
   auto edited = [&](const char* what, auto edit) {
-    ObjectProblemData d = seed;
+    ObjectProblemData d = report;
     edit(d);
     cases.push_back({what, std::move(d)});
   };
@@ -124,19 +124,19 @@ TEST(ObservationTableChange, RefusesEveryOtherDifferenceNamingIt) {
 }
 
 TEST(ObservationTableChange, RefusesARenamedSensingActionEvenWithTheSameTable) {
-  const auto before = seed_model();
+  const auto before = report_model();
   ObjectProblemData data = before->data();
   data.sensing[kSlide].name = "push";
   EXPECT_THROW(observation_table_change(*before, model_of(std::move(data))), InputError);
 }
 
 TEST(ObservationTableChange, RejectsAMissingNewModel) {
-  const auto before = seed_model();
+  const auto before = report_model();
   EXPECT_THROW(observation_table_change(*before, nullptr), std::invalid_argument);
 }
 
 TEST(ModelChangeAffects, OnlyStepsOfAChangedActionThatReachAChangedObject) {
-  const auto model = seed_model();
+  const auto model = report_model();
   ModelChange change;
   change.model = model;
   change.rows = {{kStrike, kMug}, {kSlide, kPaper}};
@@ -151,7 +151,7 @@ TEST(ModelChangeAffects, OnlyStepsOfAChangedActionThatReachAChangedObject) {
 }
 
 TEST(ModelChangeAffects, ARowForEveryObjectCoversEveryNextState) {
-  const auto model = seed_model();
+  const auto model = report_model();
   ModelChange change;
   change.model = model;
   change.rows = {{kSlide, -1}};
@@ -166,7 +166,7 @@ TEST(ModelChangeAffects, ARowForEveryObjectCoversEveryNextState) {
 }
 
 TEST(ModelChangeAffects, NoRowsAffectNothing) {
-  const auto model = seed_model();
+  const auto model = report_model();
   const ModelChange change = observation_table_change(*model, model_of(model->data()));
   for (int a = 0; a < model->num_actions(); ++a)
     for (int k = 0; k < 4; ++k) EXPECT_FALSE(change.affects(state_with_object(*model, k), a));
@@ -174,7 +174,7 @@ TEST(ModelChangeAffects, NoRowsAffectNothing) {
 
 TEST(ModelChangeAffects, AgreesWithTheRowsFoundForAnEditedTable) {
   // The two functions together: a step is affected exactly when its (action, object) row changed.
-  const auto before = seed_model();
+  const auto before = report_model();
   ObjectProblemData data = before->data();
   data.observation_table[kStrike][kPaper] = {0.05, 0.05, 0.2, 0.7};
   const ModelChange change = observation_table_change(*before, model_of(std::move(data)));

@@ -15,7 +15,7 @@
 namespace echoplan::solvers {
 namespace {
 
-pomdp::ObjectProblemData seed_data(double discount) {
+pomdp::ObjectProblemData report_data(double discount) {
   const pomdp::Problem p =
       pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
   auto d = p.model->object_identification()->data();
@@ -23,7 +23,7 @@ pomdp::ObjectProblemData seed_data(double discount) {
   return d;
 }
 
-// The live part of a node's belief (the seed's live states are its objects, in order).
+// The live part of a node's belief (the report's live states are its objects, in order).
 std::vector<double> live_belief(const IdentificationSolver& solver, IdentificationSolver::NodeId n,
                                 int objects) {
   std::vector<double> b = solver.belief(n);
@@ -32,9 +32,9 @@ std::vector<double> live_belief(const IdentificationSolver& solver, Identificati
 }
 
 TEST(PairRelaxationBound, SolvesOnlyPairsThatMustBeToldApart) {
-  // The seed sorts {pringles_can, plastic_cup} to A and {coffee_mug, paper_base} to B: a pair in
+  // The report sorts {pringles_can, plastic_cup} to A and {coffee_mug, paper_base} to B: a pair in
   // one bin is worth its known values at once, so only the four pairs across bins need solving.
-  const pomdp::ObjectIdentificationModel model(seed_data(0.99));
+  const pomdp::ObjectIdentificationModel model(report_data(0.99));
   const IdentificationSolver solver(*model.tabular());
   const PairRelaxationBound& bound = solver.pair_relaxation();
   ASSERT_EQ(bound.num_pairs(), 4u);
@@ -58,7 +58,7 @@ TEST(PairRelaxationBound, IsNearlyExactOnTwoStateBeliefs) {
   const std::vector<std::pair<int, int>> pairs{{0, 1}, {2, 3}, {0, 3}};
   for (const auto& [i, j] : pairs) {
     for (double p : {0.5, 0.9, 0.03}) {
-      auto d = seed_data(0.95);
+      auto d = report_data(0.95);
       d.prior.assign(4, 0.0);
       d.prior[i] = p;
       d.prior[j] = 1.0 - p;
@@ -85,7 +85,7 @@ TEST(PairRelaxationBound, BoundsVStarFromAboveAndBeatsOneMoreSensingAlongHistori
   // is at least the brute-force lower bound and the exact solver's lower bound (both plans that
   // can be carried out), and below the one-more-sensing bound a fresh node starts with when
   // the relaxation is off.
-  const pomdp::ObjectIdentificationModel model(seed_data(0.95));
+  const pomdp::ObjectIdentificationModel model(report_data(0.95));
   const pomdp::TabularModel& m = *model.tabular();
   IdentificationOptions off;
   off.pair_upper_bound = false;

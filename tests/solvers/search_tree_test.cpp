@@ -1,6 +1,6 @@
 // ABT and POMCP over the shared belief tree, on the shipped problems (problems/audio_objects.yaml,
 // problems/tiger.pomdp) with the shipped ParticleBelief: tree reuse and pruning, determinism, the
-// seed problem's optimal first action, option validation.
+// optimal first action on the report's problem, option validation.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,9 +18,9 @@ namespace {
 pomdp::ModelPtr shipped(const std::string& file) {
   return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/" + file).model;
 }
-pomdp::ModelPtr seed_model() { return shipped("audio_objects.yaml"); }
-// Action indices: the seed problem lists its sensing actions, then its sorting actions; the tiger
-// file lists listen first.
+pomdp::ModelPtr report_model() { return shipped("audio_objects.yaml"); }
+// Action indices: the report's problem lists its sensing actions, then its sorting actions; the
+// tiger file lists listen first.
 constexpr int kSlide = 0, kStrike = 1, kMoveToA = 2;
 constexpr int kListen = 0;
 
@@ -48,7 +48,7 @@ struct Rooted {
 class TreeSolvers : public ::testing::TestWithParam<Kind> {};
 
 TEST_P(TreeSolvers, UpdateKeepsTheTakenBranchAndFreesTheRest) {
-  Rooted t(GetParam(), seed_model(), 7, 1000);
+  Rooted t(GetParam(), report_model(), 7, 1000);
   auto& solver = t.solver;
   auto& rng = t.rng;
   auto& belief = t.belief;
@@ -84,7 +84,7 @@ TEST_P(TreeSolvers, SmallRootIsReplenishedFromTheRealBelief) {
   SearchOptions options;
   options.root_particles = 300;
   options.min_root_particles = 1000000;  // every kept root counts as too small
-  Rooted t(GetParam(), seed_model(), 11, 500, options);
+  Rooted t(GetParam(), report_model(), 11, 500, options);
   auto& solver = t.solver;
   auto& rng = t.rng;
   auto& belief = t.belief;
@@ -100,7 +100,7 @@ TEST_P(TreeSolvers, SmallRootIsReplenishedFromTheRealBelief) {
 TEST_P(TreeSolvers, UntriedActionStartsAFreshRootFromTheRealBelief) {
   SearchOptions options;
   options.root_particles = 150;
-  Rooted t(GetParam(), seed_model(), 5, 200, options);
+  Rooted t(GetParam(), report_model(), 5, 200, options);
   auto& solver = t.solver;
   auto& rng = t.rng;
   auto& belief = t.belief;
@@ -115,7 +115,7 @@ TEST_P(TreeSolvers, UntriedActionStartsAFreshRootFromTheRealBelief) {
 }
 
 TEST_P(TreeSolvers, SameSeedSameSearch) {
-  auto model = seed_model();
+  auto model = report_model();
   auto run = [&](std::uint64_t seed) {
     Rooted t(GetParam(), model, seed, 1000);
     t.solver->improve(Budget::episodes(2000), t.rng);
@@ -127,7 +127,7 @@ TEST_P(TreeSolvers, SameSeedSameSearch) {
 }
 
 TEST_P(TreeSolvers, TimeBudgetRunsAtLeastOneEpisode) {
-  Rooted t(GetParam(), seed_model(), 1, 100);
+  Rooted t(GetParam(), report_model(), 1, 100);
   auto& solver = t.solver;
   auto& rng = t.rng;
   solver->improve(Budget::milliseconds(1), rng);
@@ -149,12 +149,12 @@ INSTANTIATE_TEST_SUITE_P(AbtAndPomcp, TreeSolvers, ::testing::Values(Kind::abt, 
                            return param_info.param == Kind::abt ? "abt" : "pomcp";
                          });
 
-TEST(AbtSolver, PrefersStrikeFirstOnTheSeedProblem) {
+TEST(AbtSolver, PrefersStrikeFirstOnTheReportsProblem) {
   // The optimal first action from the uniform belief is the strike (worth 2.9534 against 2.835 for
   // the slide, DESIGN.md). The gap is small, so each search gets a decent budget; requiring every
   // one of 5 independent seeds to pick the strike makes a planner indifferent between the two fail
   // with probability 1 - 1/32.
-  auto model = seed_model();
+  auto model = report_model();
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     Rooted t(Kind::abt, model, seed, 1000);
     t.solver->improve(Budget::episodes(20000), t.rng);
@@ -163,7 +163,7 @@ TEST(AbtSolver, PrefersStrikeFirstOnTheSeedProblem) {
 }
 
 TEST(SearchOptions, RejectsNonsense) {
-  auto model = seed_model();
+  auto model = report_model();
   SearchOptions options;
   options.max_depth = 0;
   EXPECT_THROW(AbtSolver(model, options), InputError);

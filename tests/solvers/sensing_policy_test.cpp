@@ -1,4 +1,4 @@
-// The sense-until-confident default policy on the shipped seed problem: Bayes' rule, the commit
+// The sense-until-confident default policy on the report's shipped problem: Bayes' rule, the commit
 // value, the choice of sensing action, and what its rollouts return in cases known by hand.
 #include "solvers/sensing_policy.h"
 
@@ -17,19 +17,19 @@ std::string repo_file(const std::string& relative) {
   return std::string(ECHOPLAN_SOURCE_DIR) + "/" + relative;
 }
 
-// The seed problem's indices: objects pringles_can 0, coffee_mug 1, plastic_cup 2, paper_base 3
+// The report's problem's indices: objects pringles_can 0, coffee_mug 1, plastic_cup 2, paper_base 3
 // (state 4 is 'done'); actions slide 0, strike 1, move_to_A 2, move_to_B 3; observations follow the
 // objects, then "none".
 constexpr int kSlide = 0, kStrike = 1, kMoveToA = 2;
 constexpr int kPaperBase = 3;
 
-struct SeedPolicy : ::testing::Test {
+struct ReportPolicy : ::testing::Test {
   pomdp::Problem problem = pomdp::load_problem(repo_file("problems/audio_objects.yaml"));
   SensingPolicy policy{*problem.model->tabular()};
   std::vector<double> uniform{0.25, 0.25, 0.25, 0.25, 0.0};
 };
 
-TEST_F(SeedPolicy, BayesRuleUsesTheObservationTable) {
+TEST_F(ReportPolicy, BayesRuleUsesTheObservationTable) {
   std::vector<double> after;
   // Strike heard paper_base: the strike rows' paper_base column is 0.05, 0.05, 0.11, 0.67.
   const double p = policy.update(uniform, kStrike, kPaperBase, after);
@@ -40,7 +40,7 @@ TEST_F(SeedPolicy, BayesRuleUsesTheObservationTable) {
   EXPECT_EQ(after[4], 0.0);
 }
 
-TEST_F(SeedPolicy, CommitValueIsTheBestSortingActionsExpectedReward) {
+TEST_F(ReportPolicy, CommitValueIsTheBestSortingActionsExpectedReward) {
   EXPECT_DOUBLE_EQ(policy.commit_value(uniform), 0.5 * 10 + 0.5 * -100);
   EXPECT_DOUBLE_EQ(policy.commit_value({0.9, 0.0, 0.1, 0.0, 0.0}), 10.0);
   EXPECT_DOUBLE_EQ(policy.commit_value({0.8, 0.2, 0.0, 0.0, 0.0}), 0.8 * 10 + 0.2 * -100);
@@ -48,20 +48,20 @@ TEST_F(SeedPolicy, CommitValueIsTheBestSortingActionsExpectedReward) {
   EXPECT_FALSE(policy.is_terminal(kSlide));
 }
 
-TEST_F(SeedPolicy, SensesWithTheActionThatSeparatesTheGroups) {
+TEST_F(ReportPolicy, SensesWithTheActionThatSeparatesTheGroups) {
   // Pringles can (A) against coffee mug (B): the expected entropy of the group after one outcome is
   // 0.419 nats for strike and 0.582 for slide (computed from the table rows by hand).
   EXPECT_EQ(policy.choose_sensing({0.5, 0.5, 0.0, 0.0, 0.0}), kStrike);
 }
 
-TEST_F(SeedPolicy, RolloutsFromAKnownGroupCommitAtOnce) {
+TEST_F(ReportPolicy, RolloutsFromAKnownGroupCommitAtOnce) {
   Rng rng(1);
   std::vector<double> returns(SensingPolicy::kThresholds, 0.0);
   for (int i = 0; i < 10; ++i) policy.rollout({0.5, 0.0, 0.5, 0.0, 0.0}, 50, rng, returns.data());
   for (double r : returns) EXPECT_DOUBLE_EQ(r, 10 * 10.0);
 }
 
-TEST_F(SeedPolicy, RolloutsFromUniformImproveOnCommittingNow) {
+TEST_F(ReportPolicy, RolloutsFromUniformImproveOnCommittingNow) {
   Rng rng(2);
   const int n = 2000;
   std::vector<double> returns(SensingPolicy::kThresholds, 0.0);

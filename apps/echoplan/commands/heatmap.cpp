@@ -1,5 +1,5 @@
 // `echoplan heatmap`: a PNG or SVG heat map of one feature matrix, or of the mean over several
-// recordings (like the seed's Figures 3.1 and 3.2), drawn by gnuplot.
+// recordings (like the report's Figures 3.1 and 3.2), drawn by gnuplot.
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>

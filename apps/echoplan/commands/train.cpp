@@ -12,6 +12,7 @@
 #include "commands/perception_report.h"
 #include "common/error.h"
 #include "loop/calibrated_problem.h"
+#include "perception/classifier.h"
 #include "perception/observation_model.h"
 #include "perception/recording_set.h"
 #include "pomdp/problem.h"
@@ -106,8 +107,16 @@ void add_train_command(CLI::App& app) {
   cmd->add_option("-o,--out", opt->out, "Model file to write (JSON)")->required();
   std::string names;
   for (const auto& n : perception::classifier_names()) names += (names.empty() ? "" : ", ") + n;
-  cmd->add_option("--classifier", opt->train.classifier, "Classifier: " + names)
-      ->check(CLI::IsMember(perception::classifier_names()))
+  // Old names are accepted too (make_classifier maps them); the help lists the current ones.
+  std::vector<std::string> accepted = perception::classifier_names();
+  std::string aliases;
+  for (const auto& [old_name, name] : perception::classifier_aliases()) {
+    accepted.push_back(old_name);
+    aliases += fmt::format("{}{} for {}", aliases.empty() ? "" : ", ", old_name, name);
+  }
+  cmd->add_option("--classifier", opt->train.classifier,
+                  "Classifier: " + names + " (old names still accepted: " + aliases + ")")
+      ->check(CLI::IsMember(accepted))
       ->capture_default_str();
   cmd->add_option("--sample-rate", opt->train.analysis.sample_rate,
                   "Rate (Hz) every recording is resampled to")

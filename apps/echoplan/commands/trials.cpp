@@ -128,7 +128,7 @@ void add_trials_command(CLI::App& app) {
           ->check(positive())
           ->capture_default_str();
   cmd->add_option("--per-object", flags->per_object,
-                  "Instead of --trials: this many trials per object (the seed used 10)")
+                  "Instead of --trials: this many trials per object (the report used 10)")
       ->check(positive())
       ->excludes(trials);
   cmd->add_option("--max-steps", flags->max_steps, "Stop a trial after this many steps")

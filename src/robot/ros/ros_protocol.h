@@ -1,7 +1,7 @@
-// The names the echoplan ROS nodes agree on: the seed's protocol (section 4.4) plus what a robot
+// The names the echoplan ROS nodes agree on: the report's protocol (section 4.4) plus what a robot
 // and a listener need to report back. One place, so nodes, clients, launch files and docs match.
 //
-//   parameter /echoplan/record         bool: the listener records while it is true (the seed's
+//   parameter /echoplan/record         bool: the listener records while it is true (the report's
 //   protocol) parameter /echoplan/record_action  string: the action being recorded (for file names
 //   and logs) topic     /echoplan/recording      echoplan_ros/RecordingState, latched: the
 //   listener's state topic     /echoplan/clip           echoplan_ros/Clip: each finished recording

@@ -1,4 +1,4 @@
-// A Recorder whose microphone is behind ROS, speaking the seed's protocol: start() sets the
+// A Recorder whose microphone is behind ROS, speaking the report's protocol: start() sets the
 // parameter /echoplan/record to true, stop() sets it to false, and the listener node
 // (echoplan_listener) captures in between and publishes the clip.
 //

@@ -52,25 +52,25 @@ TEST(PointBasedSolver, TigerKnownDoorFollowsBellmanEquation) {
   EXPECT_EQ(solver.best_action({0.0, 1.0}), 1);
 }
 
-// DESIGN.md: exact search gives V*(b0) in [2.95334, 2.95348] for the seed's model; starting with a
-// slide is worth 2.835 (3 decimals); the optimal first action is the strike.
-constexpr double kSeedLower = 2.95334, kSeedUpper = 2.95348;
+// DESIGN.md: exact search gives V*(b0) in [2.95334, 2.95348] for the report's model; starting with
+// a slide is worth 2.835 (3 decimals); the optimal first action is the strike.
+constexpr double kReportLower = 2.95334, kReportUpper = 2.95348;
 
 // A fixed number of trials (not a time limit) so that the result is the same on every machine.
-SolverOptions seed_problem_options() {
+SolverOptions report_problem_options() {
   SolverOptions options;
   options.max_trials = 300;
   options.time_limit_seconds = 0.0;
   return options;
 }
 
-TEST(PointBasedSolver, BracketsSeedProblemValueAndStrikesFirst) {
-  PointBasedSolver solver(dense(audio_objects()), seed_problem_options());
+TEST(PointBasedSolver, BracketsReportProblemValueAndStrikesFirst) {
+  PointBasedSolver solver(dense(audio_objects()), report_problem_options());
   const double initial_gap = solver.progress().root.upper - solver.progress().root.lower;
   const SolverProgress result = solver.solve();
   EXPECT_EQ(result.trials, 300);
-  EXPECT_LE(result.root.lower, kSeedLower);
-  EXPECT_GE(result.root.upper, kSeedUpper);
+  EXPECT_LE(result.root.lower, kReportLower);
+  EXPECT_GE(result.root.upper, kReportUpper);
   // The trials do real work: the initial gap (blind -45 against FIB 8.9, 53.9) shrinks fiftyfold.
   EXPECT_LT(result.root.upper - result.root.lower, initial_gap / 50.0);
   const BeliefVector b0 = solver.pomdp().initial_belief;
@@ -80,15 +80,15 @@ TEST(PointBasedSolver, BracketsSeedProblemValueAndStrikesFirst) {
   // One-step lookahead bounds bracket the known action values (rounding of 2.835: +-5e-4).
   EXPECT_LE(q[testing::kSlide].lower, 2.835 + 5e-4);
   EXPECT_GE(q[testing::kSlide].upper, 2.835 - 5e-4);
-  EXPECT_LE(q[testing::kStrike].lower, kSeedLower);
-  EXPECT_GE(q[testing::kStrike].upper, kSeedUpper);
+  EXPECT_LE(q[testing::kStrike].lower, kReportLower);
+  EXPECT_GE(q[testing::kStrike].upper, kReportUpper);
   // Committing blind at b0 is worth exactly 0.5 * 10 + 0.5 * (-100) = -45.
   EXPECT_NEAR(q[testing::kMoveA].lower, -45.0, 1e-9);
   EXPECT_NEAR(q[testing::kMoveA].upper, -45.0, 1e-9);
 }
 
 TEST(PointBasedSolver, SameSeedSameBounds) {
-  SolverOptions options = seed_problem_options();
+  SolverOptions options = report_problem_options();
   options.max_trials = 50;
   PointBasedSolver a(dense(audio_objects()), options), b(dense(audio_objects()), options);
   EXPECT_EQ(a.solve().root.lower, b.solve().root.lower);
@@ -146,7 +146,7 @@ Bracket expectimax(const testing::TableModel& m, const std::vector<double>& b, i
 
 TEST(PointBasedSolver, BoundsAreValidAtRandomBeliefs) {
   const testing::TableModel model = audio_objects();
-  PointBasedSolver solver(dense(model), seed_problem_options());
+  PointBasedSolver solver(dense(model), report_problem_options());
   solver.solve();
   Rng rng(derive_seed(7, {1}));
   for (int i = 0; i < 40; ++i) {
@@ -166,7 +166,7 @@ TEST(PointBasedSolver, BoundsAreValidAtRandomBeliefs) {
 
 TEST(PointBasedSolver, StopsAtTimeLimitWithValidBounds) {
   SolverOptions options;
-  options.epsilon = 1e-9;  // out of reach on the seed problem: only the time limit stops it
+  options.epsilon = 1e-9;  // out of reach on the report's problem: only the time limit stops it
   options.time_limit_seconds = 0.2;
   int reports = 0;
   options.progress_interval_seconds = 0.05;
@@ -175,8 +175,8 @@ TEST(PointBasedSolver, StopsAtTimeLimitWithValidBounds) {
   EXPECT_FALSE(result.converged);
   EXPECT_GE(result.seconds, 0.2);
   EXPECT_GT(reports, 0);
-  EXPECT_LE(result.root.lower, kSeedLower);
-  EXPECT_GE(result.root.upper, kSeedUpper);
+  EXPECT_LE(result.root.lower, kReportLower);
+  EXPECT_GE(result.root.upper, kReportUpper);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // save_policy / load_policy on the shipped tiger problem (problems/tiger.pomdp): what the file
 // holds, an exact round trip of every vector, and the rejections not covered by policy_test.cpp
-// (which checks the seed problem's round trip through the trials solver and the JSON syntax, size,
-// action and value checks): the format and version fields, the root and entries that are not
+// (which checks the report's problem's round trip through the trials solver and the JSON syntax,
+// size, action and value checks): the format and version fields, the root and entries that are not
 // objects, a truncated file, a file that cannot be written.
 #include "solvers/offline/policy_file.h"
 

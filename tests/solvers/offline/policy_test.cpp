@@ -18,7 +18,7 @@
 namespace echoplan::solvers::offline {
 namespace {
 
-class SolvedSeedProblem : public ::testing::Test {
+class SolvedReportProblem : public ::testing::Test {
  protected:
   void SetUp() override {
     problem =
@@ -41,7 +41,7 @@ class SolvedSeedProblem : public ::testing::Test {
 // Running the policy through the Solver interface against the model itself must earn its lower
 // bound (and cannot beat V*): the mean over many episodes lies within 4 standard errors of
 // [lower, upper].
-TEST_F(SolvedSeedProblem, PolicyEarnsItsLowerBoundInSimulation) {
+TEST_F(SolvedReportProblem, PolicyEarnsItsLowerBoundInSimulation) {
   OfflinePolicySolver agent = policy();
   const pomdp::ExactBelief b0(problem.model);
   Rng rng(derive_seed(2024, {3}));
@@ -71,7 +71,7 @@ TEST_F(SolvedSeedProblem, PolicyEarnsItsLowerBoundInSimulation) {
   EXPECT_LE(mean, result.root.upper + 4 * stderr_mean);
 }
 
-TEST_F(SolvedSeedProblem, FirstActionIsStrikeAndBeliefFollowsObservations) {
+TEST_F(SolvedReportProblem, FirstActionIsStrikeAndBeliefFollowsObservations) {
   OfflinePolicySolver agent = policy();
   Rng rng(1);
   agent.reset(pomdp::ExactBelief(problem.model), rng);
@@ -86,7 +86,7 @@ TEST_F(SolvedSeedProblem, FirstActionIsStrikeAndBeliefFollowsObservations) {
   EXPECT_NEAR(agent.belief()[3], 0.67 / (0.05 + 0.05 + 0.11 + 0.67), 1e-12);
 }
 
-TEST_F(SolvedSeedProblem, PolicyFileRoundTrip) {
+TEST_F(SolvedReportProblem, PolicyFileRoundTrip) {
   const auto path = std::filesystem::temp_directory_path() / "echoplan_offline_policy_test.json";
   save_policy(*solver, path.string());
   const AlphaVectorSet loaded = load_policy(path.string(), solver->pomdp());

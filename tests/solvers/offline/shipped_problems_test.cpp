@@ -28,7 +28,7 @@ TEST(ShippedProblems, TigerFileReproducesItsKnownValue) {
 
 // The YAML problem and its .pomdp transcription are the same tables, so the same trials give the
 // same bounds, bit for bit.
-TEST(ShippedProblems, SeedProblemYamlAndPomdpAgree) {
+TEST(ShippedProblems, ReportProblemYamlAndPomdpAgree) {
   const auto yaml = load_tables("audio_objects.yaml");
   const auto cassandra = load_tables("audio_objects.pomdp");
   ASSERT_EQ(yaml->num_states, cassandra->num_states);

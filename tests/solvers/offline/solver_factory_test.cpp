@@ -17,12 +17,12 @@
 namespace echoplan::solvers {
 namespace {
 
-pomdp::Problem seed_problem() {
+pomdp::Problem report_problem() {
   return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
 }
 
 TEST(SolverFactory, BuildsAnOnlineSolverWithTheOverridesOptionsAndBudget) {
-  const pomdp::Problem problem = seed_problem();
+  const pomdp::Problem problem = report_problem();
   PlannerOverrides overrides;
   overrides.solver = "pomcp";
   overrides.episodes = 123;
@@ -43,14 +43,14 @@ TEST(SolverFactory, BuildsAnOnlineSolverWithTheOverridesOptionsAndBudget) {
 }
 
 TEST(SolverFactory, TakesTheProblemFilesSolverWhenNoneIsNamed) {
-  const pomdp::Problem problem = seed_problem();
+  const pomdp::Problem problem = report_problem();
   const BuiltSolver built = make_solver(PlannerOverrides{}, problem, "seed");
   EXPECT_EQ(built.name, problem.planner.solver);
   EXPECT_NE(built.solver, nullptr);
 }
 
 TEST(SolverFactory, BuildsTheOfflineSolverFromAPolicyFile) {
-  const pomdp::Problem problem = seed_problem();
+  const pomdp::Problem problem = report_problem();
   auto flat = std::make_shared<const offline::FlatPomdp>(
       offline::make_flat_pomdp(*problem.model->tabular()));
   offline::SolverOptions options;
@@ -74,7 +74,7 @@ TEST(SolverFactory, BuildsTheOfflineSolverFromAPolicyFile) {
 }
 
 TEST(SolverFactory, RefusesAPolicyForAnOnlineSolverAndUnknownNames) {
-  const pomdp::Problem problem = seed_problem();
+  const pomdp::Problem problem = report_problem();
   PlannerOverrides overrides;
   overrides.solver = "abt";
   overrides.policy = "policy.json";

@@ -58,7 +58,7 @@ inline TableModel shipped_tables(const std::string& file) {
 // opening resets the problem; discount 0.95.
 inline TableModel tiger() { return shipped_tables("tiger.pomdp"); }
 
-// The seed report's problem (section 3.3; problems/audio_objects.pomdp): objects 0..3 and a
+// The report's problem (section 3.3; problems/audio_objects.pomdp): objects 0..3 and a
 // terminal state 4; actions slide, strike, move_to_A, move_to_B; objects 0 and 2 belong at A, 1
 // and 3 at B; observations the four classes and "none" (heard only after sorting); discount 0.99.
 inline constexpr int kSlide = 0, kStrike = 1, kMoveA = 2, kMoveB = 3, kDone = 4, kNone = 4;

@@ -1,4 +1,4 @@
-// `seed-gaussian`: the seed report's first attempt, kept for the record: each class is a Gaussian
+// `report-gaussian`: the report's first attempt, kept for the record: each class is a Gaussian
 // over two whole-clip features, the spectral centroid (Hz) and the RMS level, with independent
 // dimensions. The report discarded it; the benchmark shows why (docs/BENCHMARKS.md).
 //
@@ -14,9 +14,9 @@
 
 namespace echoplan::perception {
 
-class SeedGaussianClassifier final : public Classifier {
+class ReportGaussianClassifier final : public Classifier {
  public:
-  std::string name() const override { return "seed-gaussian"; }
+  std::string name() const override { return "report-gaussian"; }
   // (centroid_hz, rms) of the whole clip (audio::global_features).
   std::vector<double> embed(const ClipAnalysis& clip) const override;
   void fit(std::span<const std::vector<double>> examples, std::span<const int> labels,
@@ -25,7 +25,7 @@ class SeedGaussianClassifier final : public Classifier {
   // log_scores: Gaussian log-densities; distances: Mahalanobis distances (diagonal covariance).
   ClassScores score(std::span<const double> embedding) const override;
   std::unique_ptr<Classifier> clone_unfitted() const override {
-    return std::make_unique<SeedGaussianClassifier>();
+    return std::make_unique<ReportGaussianClassifier>();
   }
   nlohmann::json save() const override;
   void load(const nlohmann::json& fit, const std::string& source) override;

@@ -1,13 +1,13 @@
-// `seed-template`: the seed report's classifier (section 3.2.5), the baseline every other one is
+// `report-template`: the report's classifier (section 3.2.5), the baseline every other one is
 // measured against.
 //
 // Per class, the template is the mean of the recordings' log filterbank matrices
 // (python_speech_features logfbank: 26 filters, 25 ms frames, 10 ms step) over a fixed window of
 // frames; a new clip is the class of the template with the smallest mean absolute difference. The
-// one change from the seed: the window is aligned on the clip's onset (10 frames before it, 140
-// after: 1.5 s, the seed's 150-frame strike window) instead of fixed frame offsets, which real
+// one change from the report: the window is aligned on the clip's onset (10 frames before it, 140
+// after: 1.5 s, the report's 150-frame strike window) instead of fixed frame offsets, which real
 // recordings of varying length and silent starts defeat. Levels are compared as they are: a softer
-// strike is further from its own template (what the seed did).
+// strike is further from its own template (what the original system did).
 #pragma once
 
 #include <vector>
@@ -16,12 +16,12 @@
 
 namespace echoplan::perception {
 
-class SeedTemplateClassifier final : public Classifier {
+class ReportTemplateClassifier final : public Classifier {
  public:
   static constexpr std::size_t kFramesBefore = 10;
   static constexpr std::size_t kFramesAfter = 140;
 
-  std::string name() const override { return "seed-template"; }
+  std::string name() const override { return "report-template"; }
   // The onset-aligned logfbank window, row-major (kFramesBefore + kFramesAfter) x bands.
   std::vector<double> embed(const ClipAnalysis& clip) const override;
   void fit(std::span<const std::vector<double>> examples, std::span<const int> labels,
@@ -30,7 +30,7 @@ class SeedTemplateClassifier final : public Classifier {
   // log_scores = -distances; distances = mean |window - template| per class (natural-log units).
   ClassScores score(std::span<const double> embedding) const override;
   std::unique_ptr<Classifier> clone_unfitted() const override {
-    return std::make_unique<SeedTemplateClassifier>();
+    return std::make_unique<ReportTemplateClassifier>();
   }
   nlohmann::json save() const override;
   void load(const nlohmann::json& fit, const std::string& source) override;

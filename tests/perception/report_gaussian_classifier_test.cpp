@@ -1,6 +1,6 @@
-// seed-gaussian: per class a diagonal Gaussian over (centroid, rms), variances floored at 5% of the
-// pooled variance. Checked on hand-made embeddings with the fit worked out by hand.
-#include "perception/seed_gaussian_classifier.h"
+// report-gaussian: per class a diagonal Gaussian over (centroid, rms), variances floored at 5% of
+// the pooled variance. Checked on hand-made embeddings with the fit worked out by hand.
+#include "perception/report_gaussian_classifier.h"
 
 #include <gtest/gtest.h>
 
@@ -21,8 +21,8 @@ namespace {
 const double kCentroidFloor = 364000.0 / 9.0;
 const double kRmsFloor = 0.004 / 3.0;
 
-SeedGaussianClassifier fitted() {
-  SeedGaussianClassifier c;
+ReportGaussianClassifier fitted() {
+  ReportGaussianClassifier c;
   const std::vector<std::vector<double>> x = {{1000, 0.1}, {1200, 0.3}, {3000, 0.5}};
   c.fit(x, std::vector<int>{0, 0, 1}, 2);
   return c;
@@ -44,27 +44,27 @@ void expect_scores(const ClassScores& s) {
   EXPECT_NEAR(s.log_scores[1], log_density(-1900, kCentroidFloor, -0.2, kRmsFloor), 1e-9);
 }
 
-TEST(SeedGaussian, FitsFlooredDiagonalGaussians) {
-  const SeedGaussianClassifier c = fitted();
+TEST(ReportGaussian, FitsFlooredDiagonalGaussians) {
+  const ReportGaussianClassifier c = fitted();
   EXPECT_EQ(c.num_classes(), 2);
   expect_scores(c.score(std::vector<double>{1100, 0.3}));
 }
 
-TEST(SeedGaussian, SavedFitLoadsBackToTheSameScores) {
+TEST(ReportGaussian, SavedFitLoadsBackToTheSameScores) {
   const nlohmann::json saved = fitted().save();
   EXPECT_EQ(saved["features"], nlohmann::json({"centroid_hz", "rms"}));
   ASSERT_EQ(saved["means"].size(), 2u);
   EXPECT_NEAR(saved["means"][0][0].get<double>(), 1100.0, 1e-9);
   EXPECT_NEAR(saved["means"][0][1].get<double>(), 0.2, 1e-12);
   EXPECT_NEAR(saved["variances"][1][0].get<double>(), kCentroidFloor, 1e-6);
-  SeedGaussianClassifier loaded;
+  ReportGaussianClassifier loaded;
   loaded.load(saved, "model.json");
   EXPECT_EQ(loaded.num_classes(), 2);
   expect_scores(loaded.score(std::vector<double>{1100, 0.3}));
 }
 
-TEST(SeedGaussian, BadInputIsAnInputError) {
-  SeedGaussianClassifier c;
+TEST(ReportGaussian, BadInputIsAnInputError) {
+  ReportGaussianClassifier c;
   const std::vector<std::vector<double>> x = {{1000, 0.1}};
   EXPECT_EQ(input_error_message([&] { c.fit(x, std::vector<int>{0}, 2); }),
             "class 1 has no training recordings");

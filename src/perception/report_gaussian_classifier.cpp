@@ -1,4 +1,4 @@
-#include "perception/seed_gaussian_classifier.h"
+#include "perception/report_gaussian_classifier.h"
 
 #include <fmt/format.h>
 
@@ -12,20 +12,20 @@
 
 namespace echoplan::perception {
 
-std::vector<double> SeedGaussianClassifier::embed(const ClipAnalysis& clip) const {
+std::vector<double> ReportGaussianClassifier::embed(const ClipAnalysis& clip) const {
   const auto g = audio::global_features(clip.mono, clip.sample_rate);
   return {g.centroid_hz, g.rms};
 }
 
-void SeedGaussianClassifier::fit(std::span<const std::vector<double>> examples,
-                                 std::span<const int> labels, int num_classes) {
+void ReportGaussianClassifier::fit(std::span<const std::vector<double>> examples,
+                                   std::span<const int> labels, int num_classes) {
   const auto classes = static_cast<std::size_t>(num_classes);
   std::vector<std::array<double, 2>> sum(classes, {0.0, 0.0}), sum_sq(classes, {0.0, 0.0});
   std::vector<int> count(classes, 0);
   std::array<double, 2> all_sum{0.0, 0.0}, all_sq{0.0, 0.0};
   for (std::size_t i = 0; i < examples.size(); ++i) {
     const auto& x = examples[i];
-    if (x.size() != 2) throw InputError("seed-gaussian embeddings are (centroid, rms) pairs");
+    if (x.size() != 2) throw InputError("report-gaussian embeddings are (centroid, rms) pairs");
     const auto k = static_cast<std::size_t>(labels[i]);
     for (int d = 0; d < 2; ++d) {
       sum[k][d] += x[d];
@@ -51,10 +51,10 @@ void SeedGaussianClassifier::fit(std::span<const std::vector<double>> examples,
   }
 }
 
-ClassScores SeedGaussianClassifier::score(std::span<const double> x) const {
+ClassScores ReportGaussianClassifier::score(std::span<const double> x) const {
   if (x.size() != 2)
     throw InputError(
-        fmt::format("seed-gaussian scores (centroid, rms) pairs, got {} values", x.size()));
+        fmt::format("report-gaussian scores (centroid, rms) pairs, got {} values", x.size()));
   ClassScores s;
   for (std::size_t k = 0; k < means_.size(); ++k) {
     double mahalanobis_sq = 0.0, log_det = 0.0;
@@ -69,7 +69,7 @@ ClassScores SeedGaussianClassifier::score(std::span<const double> x) const {
   return s;
 }
 
-nlohmann::json SeedGaussianClassifier::save() const {
+nlohmann::json ReportGaussianClassifier::save() const {
   nlohmann::json means = nlohmann::json::array(), variances = nlohmann::json::array();
   for (std::size_t k = 0; k < means_.size(); ++k) {
     means.push_back({means_[k][0], means_[k][1]});
@@ -78,7 +78,7 @@ nlohmann::json SeedGaussianClassifier::save() const {
   return {{"features", {"centroid_hz", "rms"}}, {"means", means}, {"variances", variances}};
 }
 
-void SeedGaussianClassifier::load(const nlohmann::json& fit, const std::string& source) {
+void ReportGaussianClassifier::load(const nlohmann::json& fit, const std::string& source) {
   const std::string where = "classifier";
   const auto means = json_fields::matrix(json_fields::member(fit, "means", where, source), -1, 2,
                                          where + ".means", source);

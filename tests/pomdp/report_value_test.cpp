@@ -1,6 +1,6 @@
-// The seed problem's tables, searched exactly to a finite horizon, bracket its known optimal value
-// V*(b0) = 2.9534 (DESIGN.md, "Facts the planner needs"). This checks the tabular view end to end
-// (rewards, the absorbing 'done' state, the 'none' observation) against an independent figure.
+// The report's problem's tables, searched exactly to a finite horizon, bracket its known optimal
+// value V*(b0) = 2.9534 (DESIGN.md, "Facts the planner needs"). This checks the tabular view end to
+// end (rewards, the absorbing 'done' state, the 'none' observation) against an independent figure.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -79,7 +79,7 @@ class HorizonSearch {
   std::unordered_map<std::uint64_t, double> memo_;
 };
 
-TEST(SeedProblemValue, HorizonBoundsBracketTheKnownOptimum) {
+TEST(ReportProblemValue, HorizonBoundsBracketTheKnownOptimum) {
   const Problem p = load_problem(repo_file("problems/audio_objects.yaml"));
   const TabularModel& t = *p.model->tabular();
   // 5 bits per (action, observation) count: 2 sensing actions x 5 symbols x 5 bits < 64, and

@@ -1,6 +1,7 @@
-// seed-template reproduces the seed's decision rule: templates are mean logfbank windows, a clip
-// goes to the template with the smallest mean absolute difference. Checked on hand-made matrices.
-#include "perception/seed_template_classifier.h"
+// report-template reproduces the report's decision rule: templates are mean logfbank windows, a
+// clip goes to the template with the smallest mean absolute difference. Checked on hand-made
+// matrices.
+#include "perception/report_template_classifier.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +13,7 @@ namespace echoplan::perception {
 namespace {
 
 constexpr std::size_t kWindow =
-    SeedTemplateClassifier::kFramesBefore + SeedTemplateClassifier::kFramesAfter;
+    ReportTemplateClassifier::kFramesBefore + ReportTemplateClassifier::kFramesAfter;
 
 // A clip whose 2-band log filterbank is `before` up to the onset frame and `after` from it on.
 ClipAnalysis clip(std::size_t frames, std::size_t onset, std::array<float, 2> before,
@@ -26,8 +27,8 @@ ClipAnalysis clip(std::size_t frames, std::size_t onset, std::array<float, 2> be
   return c;
 }
 
-TEST(SeedTemplate, WindowIsAlignedOnTheOnset) {
-  const SeedTemplateClassifier c;
+TEST(ReportTemplate, WindowIsAlignedOnTheOnset) {
+  const ReportTemplateClassifier c;
   // The same sound starting at frame 40 or at frame 90 of a longer clip gives the same window.
   const auto early = c.embed(clip(300, 40, {-5, -5}, {3, 1}));
   const auto late = c.embed(clip(400, 90, {-5, -5}, {3, 1}));
@@ -40,8 +41,8 @@ TEST(SeedTemplate, WindowIsAlignedOnTheOnset) {
   EXPECT_EQ(early[2 * 10 + 1], 1);
 }
 
-TEST(SeedTemplate, ReproducesTheSeedsDecisionRule) {
-  SeedTemplateClassifier c;
+TEST(ReportTemplate, ReproducesTheReportsDecisionRule) {
+  ReportTemplateClassifier c;
   // Class 0: two recordings with levels (1, 1) and (3, 5) after the onset: template (2, 3).
   // Class 1: one recording at (10, 10). Before the onset every clip is (0, 0).
   const std::vector<std::vector<double>> examples{c.embed(clip(200, 20, {0, 0}, {1, 1})),
@@ -63,12 +64,12 @@ TEST(SeedTemplate, ReproducesTheSeedsDecisionRule) {
   EXPECT_LT(t.distances[1], t.distances[0]);
 }
 
-TEST(SeedTemplate, SaveLoadRoundTripAndErrors) {
-  SeedTemplateClassifier c;
+TEST(ReportTemplate, SaveLoadRoundTripAndErrors) {
+  ReportTemplateClassifier c;
   c.fit(std::vector<std::vector<double>>{c.embed(clip(200, 20, {0, 0}, {1, 2})),
                                          c.embed(clip(200, 20, {0, 0}, {4, 4}))},
         std::vector<int>{0, 1}, 2);
-  SeedTemplateClassifier back;
+  ReportTemplateClassifier back;
   back.load(c.save(), "m.json");
   EXPECT_EQ(back.templates(), c.templates());
   nlohmann::json bad = c.save();

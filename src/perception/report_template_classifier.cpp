@@ -1,4 +1,4 @@
-#include "perception/seed_template_classifier.h"
+#include "perception/report_template_classifier.h"
 
 #include <fmt/format.h>
 
@@ -10,21 +10,21 @@
 
 namespace echoplan::perception {
 
-std::vector<double> SeedTemplateClassifier::embed(const ClipAnalysis& clip) const {
+std::vector<double> ReportTemplateClassifier::embed(const ClipAnalysis& clip) const {
   const audio::FeatureMatrix w =
       audio::onset_window(clip.features.log_mel, clip.onset_frame, kFramesBefore, kFramesAfter);
   return {w.values.begin(), w.values.end()};
 }
 
-double SeedTemplateClassifier::mean_absolute_difference(std::span<const double> a,
-                                                        std::span<const double> b) {
+double ReportTemplateClassifier::mean_absolute_difference(std::span<const double> a,
+                                                          std::span<const double> b) {
   double sum = 0.0;
   for (std::size_t i = 0; i < a.size(); ++i) sum += std::abs(a[i] - b[i]);
   return a.empty() ? 0.0 : sum / static_cast<double>(a.size());
 }
 
-void SeedTemplateClassifier::fit(std::span<const std::vector<double>> examples,
-                                 std::span<const int> labels, int num_classes) {
+void ReportTemplateClassifier::fit(std::span<const std::vector<double>> examples,
+                                   std::span<const int> labels, int num_classes) {
   const std::size_t length = examples.empty() ? 0 : examples.front().size();
   if (length == 0 || length % (kFramesBefore + kFramesAfter) != 0)
     throw InputError(fmt::format("template windows must hold {} frames of filterbank bands",
@@ -46,7 +46,7 @@ void SeedTemplateClassifier::fit(std::span<const std::vector<double>> examples,
   bands_ = length / (kFramesBefore + kFramesAfter);
 }
 
-ClassScores SeedTemplateClassifier::score(std::span<const double> embedding) const {
+ClassScores ReportTemplateClassifier::score(std::span<const double> embedding) const {
   ClassScores s;
   for (const auto& t : templates_) {
     if (t.size() != embedding.size())
@@ -59,7 +59,7 @@ ClassScores SeedTemplateClassifier::score(std::span<const double> embedding) con
   return s;
 }
 
-nlohmann::json SeedTemplateClassifier::save() const {
+nlohmann::json ReportTemplateClassifier::save() const {
   nlohmann::json templates = nlohmann::json::array();
   for (const auto& t : templates_)
     templates.push_back(json_fields::rows_of(t, kFramesBefore + kFramesAfter, bands_));
@@ -67,7 +67,7 @@ nlohmann::json SeedTemplateClassifier::save() const {
       {"frames_before", kFramesBefore}, {"frames_after", kFramesAfter}, {"templates", templates}};
 }
 
-void SeedTemplateClassifier::load(const nlohmann::json& fit, const std::string& source) {
+void ReportTemplateClassifier::load(const nlohmann::json& fit, const std::string& source) {
   const std::string where = "classifier";
   const auto rows = kFramesBefore + kFramesAfter;
   const int before = json_fields::integer(json_fields::member(fit, "frames_before", where, source),
