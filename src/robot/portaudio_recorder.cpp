@@ -227,6 +227,24 @@ PortAudioRecorder::~PortAudioRecorder() {
   }
 }
 
+namespace {
+
+// An action can end before the device has delivered its first buffer (a simulated arm acts in
+// milliseconds; a device hands over audio a period at a time). A recording around it is then
+// empty, which no one can classify, so stop() waits for the first buffer of a healthy stream:
+// at most kFirstBufferWait, a few device periods.
+constexpr std::chrono::milliseconds kFirstBufferWait{250};
+
+}  // namespace
+
+void PortAudioRecorder::wait_for_first_buffer(const Stream& s) {
+  const auto until = std::chrono::steady_clock::now() + kFirstBufferWait;
+  while (s.frames_delivered.load(std::memory_order_acquire) == 0 &&
+         !s.stream_ended.load(std::memory_order_acquire) && Pa_IsStreamActive(s.pa) == 1 &&
+         std::chrono::steady_clock::now() < until)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+}
+
 void PortAudioRecorder::start(const std::string& action) {
   if (stream_) throw std::logic_error("PortAudioRecorder::start: a recording is already running");
   report_ = CaptureReport{};
@@ -292,6 +310,7 @@ audio::AudioClip PortAudioRecorder::stop() {
         fmt::format("the input stream of [{}] '{}' ended by itself (device disconnected or failed)",
                     device_.index, device_.name);
   }
+  wait_for_first_buffer(*s);
   // Pa_StopStream waits for the last callback to return, so after it the ring is complete.
   const PaError stop_err = Pa_StopStream(s->pa);
   if (stop_err != paNoError && stream_error.empty()) {

@@ -17,7 +17,9 @@
 //   returns
 //     what was captured before; if nothing was, it throws std::runtime_error saying so;
 //   - the clip reaches CaptureConfig::max_seconds: capture stops there (a recording left running
-//     cannot exhaust memory) and stop() returns exactly that many frames.
+//     cannot exhaust memory) and stop() returns exactly that many frames;
+//   - stop() before the device delivered its first buffer (an action shorter than a device period):
+//     stop() waits up to 250 ms for that buffer, so the clip is not empty.
 #pragma once
 
 #include <atomic>
@@ -98,6 +100,9 @@ class PortAudioRecorder final : public Recorder {
   struct Stream;  // the running stream's shared state (callback, ring, drain thread)
 
  private:
+  // Waits (briefly) until the device has delivered audio, so an instant action is not heard as
+  // nothing.
+  static void wait_for_first_buffer(const Stream& s);
   CaptureConfig config_;
   InputDevice device_;
   CaptureReport report_;
