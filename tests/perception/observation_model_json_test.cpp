@@ -56,7 +56,7 @@ TEST(ObservationModelJson, ReadsAnOldClassifierNameAsTheCurrentOne) {
   const ObservationModel old = load_observation_model(
       std::string(ECHOPLAN_SOURCE_DIR) + "/tests/data/perception/seed_gaussian_model.json");
   EXPECT_EQ(old.classifier_name(), "report-gaussian");
-  for (const std::string& action : {"slide", "strike"})
+  for (const std::string action : {"slide", "strike"})
     EXPECT_EQ(old.classifier(action).name(), "report-gaussian");
   EXPECT_EQ(observation_model_to_json(old)["classifier"], "report-gaussian");
 }
