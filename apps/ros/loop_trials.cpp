@@ -64,20 +64,6 @@ class TimedRecorder final : public robot::Recorder {
   std::unique_ptr<robot::Recorder> inner_;
 };
 
-// How a trial ended, in one line.
-std::string trial_text(const loop::Trial& trial, const pomdp::ModelSpec& spec) {
-  const loop::TrialRecord& r = trial.record;
-  const std::string last =
-      trial.steps.empty() ? "-" : spec.action_names[trial.steps.back().record.action];
-  return fmt::format(
-      "trial {}: {} after {} steps ({}), discounted reward {:.3f}", r.trial,
-      r.collision ? "collision"
-      : r.capped  ? "no sorting action"
-                  : "sorted by " + last,
-      r.steps, r.collision || r.capped ? "" : "believed state " + std::to_string(r.believed_state),
-      r.discounted_reward);
-}
-
 // The loop over the caller's parts, each wrapped to time the latencies.
 loop::LoopSettings loop_settings(const LoopTrialSettings& settings, loop::RobotParts parts,
                                  TimedRobot*& robot_clock, TimedRecorder*& recorder_clock) {
@@ -136,7 +122,7 @@ std::vector<loop::TrialRecord> run_loop_trials(const LoopTrialSettings& settings
   for (int t = 0; t < settings.trials; ++t) {
     const auto trial = trials.run({t, object, seed}, on_step, stop_requested);
     if (!trial) break;
-    say(trial_text(*trial, problem.model->spec()));
+    say(fmt::format("trial {}: {}", t, loop::trial_text(*trial, problem.model->spec())));
     records.push_back(trial->record);
   }
   timings.capture_start_ms = recorder_clock->start_ms;

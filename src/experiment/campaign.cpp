@@ -244,16 +244,14 @@ std::shared_ptr<const perception::ObservationModel> classifier(const Campaign& c
   if (fs::exists(saved))
     return loop::prepare_observation(loop::ModelFile{saved.string()}, nullptr, "", progress, stop)
         .model;
-  loop::RecordingsTraining training{training_recordings(c).string(), {}};
+  loop::RecordingsTraining training{training_recordings(c).string(), {}, saved.string()};
   const TrainingSetConfig& config = c.config.training;
   if (!config.classifier.empty()) training.train.classifier = config.classifier;
   if (!config.table.empty()) training.train.table = perception::parse_table_estimate(config.table);
   // Both arms must hear the same symbols to be compared trial by trial: no reject option.
   training.train.reject = false;
   training.train.seed = loop::stream_seed(c.config.seed, loop::Stream::campaign_folds);
-  auto model = loop::prepare_observation(training, nullptr, "", progress, stop).model;
-  if (model) perception::save_observation_model(*model, saved.string());
-  return model;
+  return loop::prepare_observation(training, nullptr, "", progress, stop).model;
 }
 
 }  // namespace

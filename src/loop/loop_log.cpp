@@ -6,6 +6,7 @@
 
 #include "audio/io.h"
 #include "common/error.h"
+#include "common/file_io.h"
 
 namespace echoplan::loop {
 
@@ -92,7 +93,23 @@ nlohmann::json LoopLog::write_step(const Step& s) {
     j["features"] = features;
   }
   jsonl_ << j.dump() << '\n' << std::flush;
+  ++steps_written_;
   return j;
+}
+
+void LoopLog::write_trial(nlohmann::json settings, const std::optional<Trial>& trial) const {
+  settings["interrupted"] = !trial.has_value();
+  if (trial) {
+    const TrialRecord& r = trial->record;
+    settings.update(
+        {{"believed_state", objects_[r.believed_state]},
+         {"steps", r.steps},
+         {"discounted_reward", r.discounted_reward},
+         {"collision", r.collision},
+         {"capped", r.capped},
+         {"final_action", model_.spec().action_names[trial->steps.back().record.action]}});
+  }
+  write_file_atomically(directory_ / "trial.json", settings.dump(2) + "\n");
 }
 
 }  // namespace echoplan::loop

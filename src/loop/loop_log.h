@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <vector>
 
 #include "loop/trial_runner.h"
@@ -31,7 +32,13 @@ class LoopLog {
   // Returns the step's JSON object (what loop_steps.jsonl got).
   nlohmann::json write_step(const Step& step);
 
+  // Writes DIR/trial.json: `settings` (what the run was asked to do) and, unless the trial was cut
+  // short (`trial` empty), its result: believed state, steps, discounted reward, collision, capped,
+  // final action; `interrupted` says which.
+  void write_trial(nlohmann::json settings, const std::optional<Trial>& trial) const;
+
   const std::filesystem::path& directory() const { return directory_; }
+  int steps_written() const { return steps_written_; }
 
  private:
   std::filesystem::path directory_;
@@ -39,6 +46,7 @@ class LoopLog {
   std::vector<std::string> objects_;
   std::ofstream csv_;
   std::ofstream jsonl_;
+  int steps_written_ = 0;
 };
 
 }  // namespace echoplan::loop

@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "loop/calibrated_problem.h"
+#include "perception/observation_model_json.h"
 #include "perception/recording_set.h"
 #include "sim/dataset.h"
 
@@ -21,17 +22,36 @@ bool complete(const SimulatedTraining& training) {
          training.per_pair * static_cast<int>(training.objects.size() * training.actions.size());
 }
 
+// Trains on `recordings` and saves the model to `save_to` (when named); null when stopped.
 std::shared_ptr<const perception::ObservationModel> train(const std::string& recordings,
                                                           const perception::TrainOptions& options,
+                                                          const std::string& save_to,
                                                           const ProgressFn& progress,
                                                           const std::atomic<bool>& stop) {
   auto model =
       std::make_shared<const perception::ObservationModel>(perception::train_observation_model(
           perception::load_recording_set(recordings), options, progress));
-  return stop.load() ? nullptr : model;
+  if (stop.load()) return nullptr;
+  if (!save_to.empty()) perception::save_observation_model(*model, save_to);
+  return model;
 }
 
 }  // namespace
+
+SimulatedTraining training_for(const pomdp::ObjectProblemData& problem,
+                               std::shared_ptr<const sim::Catalogue> catalogue,
+                               std::shared_ptr<const sim::SimConfig> config, int per_pair,
+                               std::uint64_t seed, std::filesystem::path directory) {
+  SimulatedTraining training;
+  training.catalogue = std::move(catalogue);
+  training.config = std::move(config);
+  training.objects = problem.objects;
+  for (const auto& a : problem.sensing) training.actions.push_back(a.name);
+  training.per_pair = per_pair;
+  training.seed = seed;
+  training.directory = std::move(directory);
+  return training;
+}
 
 bool synthesise_training_set(const SimulatedTraining& training, const ProgressFn& progress,
                              const std::atomic<bool>& stop) {
@@ -60,11 +80,12 @@ PreparedObservation prepare_observation(const ObservationSource& source,
     prepared.model = std::make_shared<const perception::ObservationModel>(
         perception::load_observation_model(file->path));
   } else if (const auto* folder = std::get_if<RecordingsTraining>(&source)) {
-    prepared.model = train(folder->recordings, folder->train, progress, stop);
+    prepared.model = train(folder->recordings, folder->train, folder->save_to, progress, stop);
   } else {
     const auto& simulated = std::get<SimulatedTraining>(source);
     if (!synthesise_training_set(simulated, progress, stop)) return prepared;
-    prepared.model = train(simulated.directory.string(), simulated.train, progress, stop);
+    prepared.model =
+        train(simulated.directory.string(), simulated.train, simulated.save_to, progress, stop);
   }
   if (prepared.model && calibrate)
     prepared.problem = calibrate_problem(*calibrate, *prepared.model, problem_path);

@@ -29,6 +29,7 @@ struct ModelFile {
 struct RecordingsTraining {
   std::string recordings;
   perception::TrainOptions train;
+  std::string save_to;  // non-empty: the trained model is saved there for the user
 };
 
 // A training set the simulator synthesises now into `directory`, then trains on. With
@@ -44,9 +45,17 @@ struct SimulatedTraining {
   std::filesystem::path directory;   // where the recordings are written
   perception::TrainOptions train;
   bool reuse_complete = false;
+  std::string save_to;  // non-empty: the trained model is saved there for the user
 };
 
 using ObservationSource = std::variant<ModelFile, RecordingsTraining, SimulatedTraining>;
+
+// A training set of every object and sensing action of `problem`, `per_pair` recordings each,
+// synthesised into `directory` from `seed` with the default classifier's options.
+SimulatedTraining training_for(const pomdp::ObjectProblemData& problem,
+                               std::shared_ptr<const sim::Catalogue> catalogue,
+                               std::shared_ptr<const sim::SimConfig> config, int per_pair,
+                               std::uint64_t seed, std::filesystem::path directory);
 
 struct PreparedObservation {
   std::shared_ptr<const perception::ObservationModel> model;  // null when stopped

@@ -46,6 +46,32 @@ std::string step_text(const Step& step, const pomdp::ModelSpec& spec) {
   return text + fmt::format(", reward {:g}", r.reward);
 }
 
+std::string step_report(const Step& step, const pomdp::ModelSpec& spec) {
+  const std::vector<std::string>& objects = spec.state.discrete_value_names.at(0);
+  std::string text;
+  if (step.record.step == 0)
+    text += "belief before the first action:\n" + belief_text(objects, step.record.belief);
+  text += step_text(step, spec) + "\n";
+  if (step.belief_after) text += belief_text(objects, *step.belief_after);
+  return text;
+}
+
+std::string trial_text(const Trial& trial, const pomdp::ModelSpec& spec) {
+  const TrialRecord& r = trial.record;
+  std::string text;
+  if (r.collision)
+    text = "ended in a collision";
+  else if (r.capped || trial.steps.empty())
+    text = "no sorting action within the step cap";
+  else
+    text = fmt::format("sorted by {} (believed {})",
+                       spec.action_names[trial.steps.back().record.action],
+                       spec.state.discrete_value_names.empty()
+                           ? std::to_string(r.believed_state)
+                           : spec.state.discrete_value_names[0][r.believed_state]);
+  return text + fmt::format("; {} steps, discounted reward {:.3f}", r.steps, r.discounted_reward);
+}
+
 std::string belief_text(const std::vector<std::string>& objects,
                         const std::vector<double>& belief) {
   std::size_t width = 0;

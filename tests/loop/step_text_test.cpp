@@ -50,6 +50,25 @@ TEST(StepText, SaysHowAFailedActionWentAndWhatATableWorldObserved) {
   EXPECT_EQ(step_text(table, spec()), "step 1: slide -> observed plastic_cup, reward -1");
 }
 
+TEST(StepText, SaysHowATrialEnded) {
+  pomdp::ModelSpec s = spec();
+  s.state.discrete_value_names = {{"coffee_mug", "plastic_cup"}};
+  Trial trial;
+  trial.steps.resize(2);
+  trial.steps[1].record.action = 2;
+  trial.record.steps = 2;
+  trial.record.believed_state = 1;
+  trial.record.discounted_reward = 8.9;
+  EXPECT_EQ(trial_text(trial, s),
+            "sorted by move_to_A (believed plastic_cup); 2 steps, discounted reward 8.900");
+  trial.record.collision = true;
+  trial.record.discounted_reward = -101;
+  EXPECT_EQ(trial_text(trial, s), "ended in a collision; 2 steps, discounted reward -101.000");
+  trial.record.collision = false;
+  trial.record.capped = true;
+  EXPECT_EQ(trial_text(trial, s).substr(0, 37), "no sorting action within the step cap");
+}
+
 TEST(StepText, ABeliefIsOneAlignedLinePerObject) {
   EXPECT_EQ(belief_text({"mug", "cup"}, {0.25, 0.75}),
             "    mug  ██████░░░░░░░░░░░░░░░░░░  0.250\n"

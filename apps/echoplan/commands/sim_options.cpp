@@ -19,4 +19,10 @@ SimSetup load_sim_setup(const SimFiles& files) {
   return setup;
 }
 
+loop::SimulatedWorldSpec load_simulated_world(const SimFiles& files) {
+  SimSetup setup = load_sim_setup(files);
+  return {std::make_shared<const sim::Catalogue>(std::move(setup.catalogue)),
+          std::make_shared<const sim::SimConfig>(std::move(setup.config))};
+}
+
 }  // namespace echoplan::cli

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "loop/world_spec.h"
 #include "sim/catalogue.h"
 #include "sim/sim_config.h"
 
@@ -25,5 +26,7 @@ void add_sim_file_options(CLI::App& cmd, SimFiles& files);
 
 // Loads both; throws InputError for a bad file.
 SimSetup load_sim_setup(const SimFiles& files);
+// The same as a loop's simulated world (shared, read-only).
+loop::SimulatedWorldSpec load_simulated_world(const SimFiles& files);
 
 }  // namespace echoplan::cli
