@@ -114,6 +114,11 @@ class Model {
   // casting.
   virtual const ObjectIdentificationModel* object_identification() const { return nullptr; }
 
+  // How many times `action` may be taken in one episode; 0 (the default): no limit. A limit is a
+  // fact about the episode's history (the actions taken so far), not the state, so solvers count
+  // the uses along each path of their trees and beliefs stay what they are.
+  virtual int max_uses(int /*action*/) const { return 0; }
+
   int num_actions() const { return static_cast<int>(spec().action_names.size()); }
 };
 

@@ -54,6 +54,7 @@ void validate_object_problem(const ObjectProblemData& d) {
   for (const auto& a : d.sensing) {
     require(a.collision_probability >= 0.0 && a.collision_probability <= 1.0,
             "collision probability must be in [0, 1]");
+    require(a.uses >= 0, "a sensing action's use limit must be >= 0 (0: no limit)");
   }
 }
 
@@ -210,6 +211,10 @@ double ObjectIdentificationModel::observation_likelihood(const State& next_state
   if (!is_sensing(action)) return o == num_symbols_ ? 1.0 : 0.0;
   if (o == num_symbols_) return 0.0;
   return data_.observation_table[action][next_state.discrete[0]][o];
+}
+
+int ObjectIdentificationModel::max_uses(int action) const {
+  return is_sensing(action) ? data_.sensing[action].uses : 0;
 }
 
 double ObjectIdentificationModel::heuristic_value(const State& state) const {

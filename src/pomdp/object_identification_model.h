@@ -27,6 +27,10 @@ struct SensingAction {
   double reward = -1.0;                   // reward per use (a cost, so usually negative)
   std::array<double, 3> offset_change{};  // m, added to the object offset (x, y, z)
   double collision_probability = 0.0;     // in [0, 1]: chance the action hits the table
+  // How many times the action can be performed in one episode; 0: no limit. A recorded dataset
+  // holds a few performances of each behaviour per session: once they are used up, the action is
+  // no longer available (Model::max_uses).
+  int uses = 0;
 };
 
 // Everything that defines an object-identification problem. Invariants (checked by
@@ -99,6 +103,7 @@ class ObjectIdentificationModel final : public Model {
   // so search trees that use it are optimistic at new leaves.
   double heuristic_value(const State& state) const override;
   const ObjectIdentificationModel* object_identification() const override { return this; }
+  int max_uses(int action) const override;
   const TabularModel* tabular() const override { return &tabular_; }
   State tabular_state(int s) const override;
 
