@@ -81,7 +81,7 @@ void load_problems(Campaign& c, InputFiles& files) {
     c.arm_problems.push_back(files.problem(arm.problem));
     loop::check_same_names(*c.arm_problems.back(), *c.world_problem);
     // Every solver can be built (unknown names and bad settings fail now, not in a worker).
-    loop::check_planner(arm_planner(config), *c.arm_problems.back());
+    loop::check_planner(arm_planner(config, arm), *c.arm_problems.back());
     if (arm.calibrate) loop::object_problem(*c.arm_problems.back()->model);
   }
   c.results.spec = spec;
@@ -168,17 +168,33 @@ ArmLoops make_loops(const Campaign& c) {
         s.classifier = c.observation_model;
         if (group.object != group.plays) s.world_objects[group.plays] = group.object;
       }
-      s.planner = arm_planner(c.config);
+      s.planner = arm_planner(c.config, c.config.arms[a]);
       s.max_steps = c.config.planner.max_steps;
-      loops[a].push_back(std::make_shared<const loop::LoopSpec>(std::move(s)));
+      auto spec = std::make_shared<const loop::LoopSpec>(std::move(s));
+      const int object = loop::object_index(spec->problem(), group.plays);
+      loops[a].push_back({TrialLoop{std::move(spec), object, ""}});
     }
   return loops;
+}
+
+// A dataset world: the data and its folds instead of problem files, the simulator and trial
+// groups; every arm's strategy checked against the names problem.
+void open_dataset_world(Campaign& c) {
+  c.dataset = std::make_shared<DatasetTrials>(open_dataset(c.config));
+  c.config.groups = dataset_groups(*c.dataset);
+  for (const CampaignArm& arm : c.config.arms)
+    loop::check_planner(arm_planner(c.config, arm), *c.dataset->names);
+  c.results.spec = c.dataset->names->model->spec();
+  c.results.config = c.config;
+  c.results.planned_trials = c.config.total_trials();
+  c.results.right_action = right_actions(*c.dataset);
 }
 
 }  // namespace
 
 bool needs_classifier(const CampaignConfig& config) {
   if (simulated(config)) return true;
+  if (config.world.type == WorldType::dataset) return false;  // fitted per fold instead
   return std::any_of(config.arms.begin(), config.arms.end(),
                      [](const CampaignArm& a) { return a.calibrate; });
 }
@@ -188,6 +204,11 @@ Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) 
   c.config = config;
   c.directory = directory;
   InputFiles files;
+  if (config.world.type == WorldType::dataset) {
+    open_dataset_world(c);
+    claim_folder(c, files);
+    return c;
+  }
   load_problems(c, files);
   load_simulator(c, files);
   check_objects(c);
@@ -259,6 +280,11 @@ std::shared_ptr<const perception::ObservationModel> classifier(const Campaign& c
 bool prepare_training(Campaign& campaign, const ProgressFn& progress,
                       const std::atomic<bool>& stop) {
   const CampaignConfig& config = campaign.config;
+  if (campaign.dataset) {
+    if (!fit_dataset_folds(*campaign.dataset, config, progress, stop)) return false;
+    campaign.loops = dataset_loops(config, *campaign.dataset);
+    return true;
+  }
   if (config.training.recordings.empty() && config.training.recordings_per_pair > 0 &&
       !loop::synthesise_training_set(simulated_training(campaign), progress, stop))
     return false;
@@ -305,8 +331,10 @@ std::string rebuild_report(const Campaign& campaign, bool figures) {
   const std::string text = summary_text(results);
   write_file_atomically(dir / "summary.txt", text);
   if (figures) {
-    const std::vector<TemplateMatrix> templates = template_matrices(
-        training_recordings(campaign), campaign.training_objects, campaign.training_actions);
+    const std::vector<TemplateMatrix> templates =
+        campaign.dataset ? std::vector<TemplateMatrix>{}
+                         : template_matrices(training_recordings(campaign),
+                                             campaign.training_objects, campaign.training_actions);
     const std::vector<Figure> drawn = draw_figures(dir, results, templates);
     write_file_atomically(dir / "index.html", html_report(dir, results, drawn));
   }

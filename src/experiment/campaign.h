@@ -21,6 +21,7 @@
 #include "experiment/campaign_config.h"
 #include "experiment/campaign_report.h"
 #include "experiment/campaign_runner.h"
+#include "experiment/dataset_campaign.h"
 #include "perception/observation_model.h"
 #include "pomdp/problem.h"
 #include "sim/catalogue.h"
@@ -44,6 +45,8 @@ struct Campaign {
   std::shared_ptr<const sim::SimConfig> sim_config;
   // Filled by open_campaign() (training_set.model) or prepare_training() (trained, when needed).
   std::shared_ptr<const perception::ObservationModel> observation_model;
+  // A dataset world's data, folds and (after prepare_training()) fitted fold models.
+  std::shared_ptr<DatasetTrials> dataset;
   // Filled by prepare_training(): the checked loop of each arm and group, what the workers run.
   ArmLoops loops;
 };
@@ -62,7 +65,8 @@ Campaign open_campaign(const CampaignConfig& config, const std::filesystem::path
 // Where the training recordings are: training_set.recordings, else DIR/training/recordings.
 std::filesystem::path training_recordings(const Campaign& campaign);
 
-// Prepares what the trials need: synthesises the training set into DIR/training/recordings (unless
+// Prepares what the trials need. A dataset world: fits each fold's classifiers and table
+// ("fit folds" progress). Otherwise: synthesises the training set into DIR/training/recordings (unless
 // it is complete already or the campaign uses existing recordings), then, when needs_classifier(),
 // trains and calibrates the classifier on it (or loads training_set.model, or
 // DIR/training/model.json of an earlier run), calibrates each calibrating arm's problem in memory

@@ -45,10 +45,37 @@ std::string content_hash(const std::string& path, const CampaignConfig::FileText
 
 CampaignConfig read_campaign(const std::string& yaml_text, const std::string& source);
 
+// A fingerprint of every file under `folder` (paths relative to it, in sorted order, and contents):
+// a dataset world's data is part of the campaign's identity.
+std::uint64_t folder_hash(const std::string& folder) {
+  std::vector<fs::path> files;
+  std::error_code error;
+  for (fs::recursive_directory_iterator it(folder, error), end; !error && it != end;
+       it.increment(error))
+    if (it->is_regular_file(error)) files.push_back(it->path());
+  if (error) throw InputError(folder, 0, "cannot list the data folder: " + error.message());
+  std::sort(files.begin(), files.end());
+  std::string all;
+  for (const fs::path& file : files) {
+    const std::string text = read_text_file(file.string(), "data file");
+    all += fs::relative(file, folder).generic_string();
+    all += fmt::format("\n{:016x}\n", stable_hash(text));
+  }
+  return stable_hash(all);
+}
+
 }  // namespace
 
 const char* to_string(WorldType type) {
-  return type == WorldType::simulated ? "simulated" : "model";
+  switch (type) {
+    case WorldType::simulated:
+      return "simulated";
+    case WorldType::dataset:
+      return "dataset";
+    case WorldType::model:
+      break;
+  }
+  return "model";
 }
 
 int CampaignConfig::total_trials() const {
@@ -67,11 +94,21 @@ nlohmann::json CampaignConfig::identity(const FileText& file_text) const {
   };
   nlohmann::json j;
   j["seed"] = seed;
-  for (const CampaignArm& arm : arms)
-    j["arms"].push_back({{"name", arm.name},
-                         {"problem_sha", content_hash(arm.problem)},
-                         {"calibrate", arm.calibrate}});
+  for (const CampaignArm& arm : arms) {
+    nlohmann::json a = {{"name", arm.name},
+                        {"problem_sha", content_hash(arm.problem)},
+                        {"calibrate", arm.calibrate}};
+    // Only when not the planner: campaigns written before strategies existed keep their identity.
+    if (arm.strategy != kPlanStrategy) a["strategy"] = arm.strategy;
+    j["arms"].push_back(std::move(a));
+  }
   j["world"] = {{"type", to_string(world.type)}, {"problem_sha", content_hash(world.problem)}};
+  if (world.type == WorldType::dataset) {
+    j["world"]["data_sha"] = fmt::format("{:016x}", folder_hash(world.data));
+    j["world"]["hold_out"] = world.hold_out;
+    j["world"]["groups_sha"] = content_hash(world.groups);
+    j["rewards"] = {{"right", rewards.right}, {"wrong", rewards.wrong}, {"sense", rewards.sense}};
+  }
   j["training_set"] = {{"recordings_per_pair", training.recordings_per_pair},
                        {"objects", training.objects},
                        {"actions", training.actions},
@@ -96,41 +133,112 @@ CampaignConfig parse_campaign_config(const std::string& yaml_text, const std::st
 
 namespace {
 
+// An arm's strategy: the planner or one of the solver factory's fixed strategies.
+std::string read_strategy(const YamlReader& f, const YAML::Node& n) {
+  const std::string strategy = f.name(n, "strategy");
+  if (strategy == kPlanStrategy) return strategy;
+  const std::vector<std::string> fixed = solvers::strategy_names();
+  if (std::find(fixed.begin(), fixed.end(), strategy) == fixed.end())
+    f.fail(n, fmt::format("strategy '{}' is not one of: {}, {}", strategy, kPlanStrategy,
+                          fmt::join(fixed, ", ")));
+  return strategy;
+}
+
+CampaignArm read_arm(const YamlReader& f, const YAML::Node& a, const std::string& source,
+                     WorldType world) {
+  f.expect_map(a, "an arm");
+  f.only_keys(a, {"name", "problem", "calibrate", "strategy"}, "an arm");
+  CampaignArm arm;
+  arm.name = f.name(f.require(a, "name", "an arm"), "arm name");
+  if (!is_label(arm.name))
+    f.fail(a, "arm name '" + arm.name + "' may hold only letters, digits, '_' and '-'");
+  if (auto n = f.optional(a, "strategy", "an arm")) arm.strategy = read_strategy(f, n);
+  if (world == WorldType::dataset) {
+    // Every arm of a dataset world decides with the fold's problem, calibrated on the fold.
+    for (const char* key : {"problem", "calibrate"})
+      if (auto n = f.optional(a, key, "an arm"))
+        f.fail(n, fmt::format("{} is not for a dataset world's arms: each fold's problem is built "
+                              "and calibrated from the data",
+                              key));
+    return arm;
+  }
+  arm.problem = resolve(source, f.name(f.require(a, "problem", "an arm"), "arm problem"));
+  if (auto n = f.optional(a, "calibrate", "an arm")) arm.calibrate = f.boolean(n, "calibrate");
+  return arm;
+}
+
 std::vector<CampaignArm> read_arms(const YamlReader& f, const YAML::Node& root,
-                                   const std::string& source) {
+                                   const std::string& source, WorldType world) {
   const YAML::Node arms = f.require(root, "arms", "the campaign");
   if (!arms.IsSequence() || arms.size() == 0) f.fail(arms, "arms must be a non-empty list");
   std::vector<CampaignArm> read;
   for (const YAML::Node& a : arms) {
-    f.expect_map(a, "an arm");
-    f.only_keys(a, {"name", "problem", "calibrate"}, "an arm");
-    CampaignArm arm;
-    arm.name = f.name(f.require(a, "name", "an arm"), "arm name");
-    if (!is_label(arm.name))
-      f.fail(a, "arm name '" + arm.name + "' may hold only letters, digits, '_' and '-'");
+    CampaignArm arm = read_arm(f, a, source, world);
     for (const CampaignArm& other : read)
       if (other.name == arm.name) f.fail(a, "two arms are named '" + arm.name + "'");
-    arm.problem = resolve(source, f.name(f.require(a, "problem", "an arm"), "arm problem"));
-    if (auto n = f.optional(a, "calibrate", "an arm")) arm.calibrate = f.boolean(n, "calibrate");
-    read.push_back(arm);
+    read.push_back(std::move(arm));
   }
   return read;
+}
+
+WorldType read_world_type(const YamlReader& f, const YAML::Node& world) {
+  const std::string type = f.name(f.require(world, "type", "world"), "world type");
+  for (WorldType t : {WorldType::model, WorldType::simulated, WorldType::dataset})
+    if (type == to_string(t)) return t;
+  f.fail(world, "world type '" + type + "' is not one of: model, simulated, dataset");
+}
+
+// A dataset world: where the data is, what a trial holds out, what the objects are sorted by.
+void read_dataset_world(const YamlReader& f, const YAML::Node& world, const std::string& source,
+                        WorldConfig& w) {
+  f.only_keys(world, {"type", "data", "hold_out", "groups"}, "world");
+  const YAML::Node data = f.require(world, "data", "world");
+  w.data = resolve(source, f.name(data, "data"));
+  std::error_code error;
+  if (!fs::is_directory(w.data, error))
+    f.fail(data, "data folder '" + w.data + "' does not exist (a feature set or recordings tree)");
+  if (auto n = f.optional(world, "hold_out", "world")) {
+    w.hold_out = f.name(n, "hold_out");
+    if (w.hold_out != "session" && w.hold_out != "object")
+      f.fail(n, "hold_out '" + w.hold_out + "' is not one of: session, object");
+  }
+  if (auto n = f.optional(world, "groups", "world")) {
+    w.groups = resolve(source, f.name(n, "groups"));
+    if (!fs::is_regular_file(w.groups, error))
+      f.fail(n, "groups file '" + w.groups + "' does not exist");
+  }
+  if (w.hold_out == "object" && w.groups.empty())
+    f.fail(world, "hold_out: object needs groups: a novel object can only be sorted by its group");
 }
 
 WorldConfig read_world(const YamlReader& f, const YAML::Node& root, const std::string& source) {
   const YAML::Node world = f.require(root, "world", "the campaign");
   f.expect_map(world, "world");
-  f.only_keys(world, {"type", "problem"}, "world");
   WorldConfig w;
-  const std::string type = f.name(f.require(world, "type", "world"), "world type");
-  if (type == to_string(WorldType::model))
-    w.type = WorldType::model;
-  else if (type == to_string(WorldType::simulated))
-    w.type = WorldType::simulated;
-  else
-    f.fail(world, "world type '" + type + "' is not one of: model, simulated");
+  w.type = read_world_type(f, world);
+  if (w.type == WorldType::dataset) {
+    read_dataset_world(f, world, source, w);
+    return w;
+  }
+  f.only_keys(world, {"type", "problem"}, "world");
   w.problem = resolve(source, f.name(f.require(world, "problem", "world"), "world problem"));
   return w;
+}
+
+// `task: {rewards: {right, wrong, sense}}`, a dataset world's rewards.
+TaskRewards read_task(const YamlReader& f, const YAML::Node& task) {
+  f.expect_map(task, "task");
+  f.only_keys(task, {"rewards"}, "task");
+  TaskRewards rewards;
+  const YAML::Node r = f.require(task, "rewards", "task");
+  f.expect_map(r, "task.rewards");
+  f.only_keys(r, {"right", "wrong", "sense"}, "task.rewards");
+  if (auto n = f.optional(r, "right", "task.rewards")) rewards.right = f.number(n, "right");
+  if (auto n = f.optional(r, "wrong", "task.rewards")) rewards.wrong = f.number(n, "wrong");
+  if (auto n = f.optional(r, "sense", "task.rewards")) rewards.sense = f.number(n, "sense");
+  if (!(rewards.right > rewards.wrong))
+    f.fail(r, "task.rewards: right must be greater than wrong");
+  return rewards;
 }
 
 // How the classifier is trained (or the trained model used instead): the `training_set` mapping.
@@ -232,12 +340,24 @@ std::optional<ReferenceResults> read_reference(const YamlReader& f, const YAML::
   return load_reference_results(path);
 }
 
+// What a dataset world's campaign takes instead of trial groups and a training set: the task's
+// rewards (its trials are the data's sessions; its classifiers are fitted per fold).
+void read_dataset_sections(const YamlReader& f, const YAML::Node& root, CampaignConfig& c) {
+  if (auto t = f.optional(root, "trials", "campaign"))
+    f.fail(t, "a dataset world's trials are the data's (object, session) pairs: remove trials");
+  if (auto t = f.optional(root, "training_set", "campaign")) {
+    f.only_keys(t, {"classifier"}, "training_set (a dataset world fits its classifiers per fold)");
+  }
+  if (auto t = f.optional(root, "task", "campaign")) c.rewards = read_task(f, t);
+}
+
 CampaignConfig read_campaign(const std::string& yaml_text, const std::string& source) {
   const YamlReader f(source);
   const YAML::Node root = parse_yaml(yaml_text, source);
   f.expect_map(root, "the campaign");
   f.reject_duplicate_keys(root);
-  f.only_keys(root, {"seed", "arms", "world", "training_set", "trials", "planner", "reference"},
+  f.only_keys(root,
+              {"seed", "arms", "world", "task", "training_set", "trials", "planner", "reference"},
               "the campaign");
 
   CampaignConfig c;
@@ -249,11 +369,18 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
       f.fail(n, "seed must be a non-negative integer");
     }
   }
-  c.arms = read_arms(f, root, source);
   c.world = read_world(f, root, source);
+  c.arms = read_arms(f, root, source, c.world.type);
   if (auto t = f.optional(root, "training_set", "campaign"))
     c.training = read_training_set(f, t, source);
-  c.groups = read_trial_groups(f, root);
+  if (c.world.type == WorldType::dataset) {
+    read_dataset_sections(f, root, c);
+  } else {
+    c.groups = read_trial_groups(f, root);
+    if (auto t = f.optional(root, "task", "campaign"))
+      f.fail(t, "task is for dataset worlds; the problem file gives a model or simulated world's "
+                "rewards");
+  }
   c.planner = read_planner(f, root);
   c.reference = read_reference(f, root, source);
   return c;
@@ -269,10 +396,19 @@ nlohmann::json to_json(const CampaignConfig& c) {
   nlohmann::json j;
   j["source"] = c.source;
   j["seed"] = c.seed;
-  for (const CampaignArm& arm : c.arms)
-    j["arms"].push_back(
-        {{"name", arm.name}, {"problem", arm.problem}, {"calibrate", arm.calibrate}});
+  for (const CampaignArm& arm : c.arms) {
+    nlohmann::json a = {{"name", arm.name}, {"problem", arm.problem}, {"calibrate", arm.calibrate}};
+    if (arm.strategy != kPlanStrategy) a["strategy"] = arm.strategy;
+    j["arms"].push_back(std::move(a));
+  }
   j["world"] = {{"type", to_string(c.world.type)}, {"problem", c.world.problem}};
+  if (c.world.type == WorldType::dataset) {
+    j["world"]["data"] = c.world.data;
+    j["world"]["hold_out"] = c.world.hold_out;
+    j["world"]["groups"] = c.world.groups;
+    j["rewards"] = {
+        {"right", c.rewards.right}, {"wrong", c.rewards.wrong}, {"sense", c.rewards.sense}};
+  }
   j["training_set"] = {{"recordings_per_pair", c.training.recordings_per_pair},
                        {"objects", c.training.objects},
                        {"actions", c.training.actions},
@@ -301,10 +437,15 @@ std::vector<CampaignArm> arms_from_json(const nlohmann::json& j, const jf::JsonS
   const nlohmann::json& list = jf::array(jf::member(j, "arms", "", source), "arms", source);
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string path = jf::element("arms", i);
-    arms.push_back(
-        {jf::string(jf::member(list[i], "name", path, source), path + ".name", source),
-         jf::string(jf::member(list[i], "problem", path, source), path + ".problem", source),
-         jf::boolean(jf::member(list[i], "calibrate", path, source), path + ".calibrate", source)});
+    CampaignArm arm;
+    arm.name = jf::string(jf::member(list[i], "name", path, source), path + ".name", source);
+    arm.problem =
+        jf::string(jf::member(list[i], "problem", path, source), path + ".problem", source);
+    arm.calibrate =
+        jf::boolean(jf::member(list[i], "calibrate", path, source), path + ".calibrate", source);
+    if (const auto* s = jf::optional_member(list[i], "strategy", path, source))
+      arm.strategy = jf::string(*s, path + ".strategy", source);
+    arms.push_back(std::move(arm));
   }
   return arms;
 }
@@ -312,11 +453,19 @@ std::vector<CampaignArm> arms_from_json(const nlohmann::json& j, const jf::JsonS
 WorldConfig world_from_json(const nlohmann::json& j, const jf::JsonSource& source) {
   const nlohmann::json& w = jf::member(j, "world", "", source);
   WorldConfig world;
-  world.type = jf::string(jf::member(w, "type", "world", source), "world.type", source) ==
-                       to_string(WorldType::simulated)
-                   ? WorldType::simulated
-                   : WorldType::model;
+  const std::string type =
+      jf::string(jf::member(w, "type", "world", source), "world.type", source);
+  for (WorldType t : {WorldType::model, WorldType::simulated, WorldType::dataset})
+    if (type == to_string(t)) world.type = t;
   world.problem = jf::string(jf::member(w, "problem", "world", source), "world.problem", source);
+  if (world.type == WorldType::dataset) {
+    const auto text = [&](const char* key) {
+      return jf::string(jf::member(w, key, "world", source), jf::child("world", key), source);
+    };
+    world.data = text("data");
+    world.hold_out = text("hold_out");
+    world.groups = text("groups");
+  }
   return world;
 }
 
@@ -384,6 +533,12 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
   c.training = training_from_json(j, from);
   c.groups = groups_from_json(j, from);
   c.planner = planner_from_json(j, from);
+  if (const auto* r = jf::optional_member(j, "rewards", "", from)) {
+    const auto reward = [&](const char* key) {
+      return jf::number(jf::member(*r, key, "rewards", from), jf::child("rewards", key), from);
+    };
+    c.rewards = {reward("right"), reward("wrong"), reward("sense")};
+  }
   // Absent when the campaign names no reference, and in folders written before the key existed.
   if (j.contains("reference")) c.reference = reference_results_from_json(j["reference"], source);
   return c;

@@ -17,14 +17,23 @@
 
 namespace echoplan::experiment {
 
+// The strategy of an arm that plans with the campaign's planner.
+inline constexpr const char* kPlanStrategy = "plan";
+
 // One arm of the campaign (a study arm, not the robot's: that is sim::ArmConfig): the same trials
-// planned with one problem file.
+// decided by one strategy with one problem.
 struct CampaignArm {
-  std::string name;     // a label: letters, digits, '_' and '-'
-  std::string problem;  // path of the problem file the planner uses
+  std::string name;  // a label: letters, digits, '_' and '-'
+  // Path of the problem file the arm decides with; empty in a dataset world, where each fold's
+  // problem is built from the data.
+  std::string problem;
   // Plan with `problem`'s observation table replaced by the trained classifier's calibrated one
   // (what calibration buys is this arm against one planning with the file's own table).
   bool calibrate = false;
+  // "plan": the campaign's planner; else a fixed strategy by its solver name (all_actions,
+  // best_single, information_gain, random: solvers/solver_factory.h), the baselines a planner is
+  // measured against.
+  std::string strategy = kPlanStrategy;
 };
 
 // A group of trials with one object in the world. `object` is what the world holds (a catalogue
@@ -45,14 +54,29 @@ enum class WorldType {
   // recorder records, the trained classifier hears; `problem` gives rewards, kinematics and
   // symbols.
   simulated,
+  // `dataset`: recorded data replayed: each trial is one (object, session) of a feature set or a
+  // recordings tree, heard by classifiers fitted on the other folds (loop/dataset_world.h).
+  dataset,
 };
 
-// "model", "simulated": the words of the campaign file.
+// "model", "simulated", "dataset": the words of the campaign file.
 const char* to_string(WorldType type);
 
 struct WorldConfig {
   WorldType type = WorldType::model;
-  std::string problem;
+  std::string problem;  // model and simulated worlds
+  // Dataset worlds: the data (a feature set or a recordings tree), what a trial holds out
+  // ("session" or "object") and the groups file the objects are sorted by (empty: by object).
+  std::string data;
+  std::string hold_out = "session";
+  std::string groups;
+};
+
+// What a dataset world's sorting earns (a model or simulated world's problem file has its own).
+struct TaskRewards {
+  double right = 10.0;   // sorted into the right bin (the report's +10)
+  double wrong = -100.0; // sorted into another bin
+  double sense = -1.0;   // each sensing action
 };
 
 // The training set synthesised before the trials (`echoplan dataset`'s library code).
@@ -83,7 +107,9 @@ struct CampaignConfig {
   std::vector<CampaignArm> arms;
   WorldConfig world;
   TrainingSetConfig training;
-  std::vector<ObjectGroup> groups;  // trials per object, in report order
+  std::vector<ObjectGroup> groups;  // trials per object, in report order (a dataset world: one
+                                    // group per object of the data, a trial per session)
+  TaskRewards rewards;              // dataset worlds
   PlannerConfig planner;
   // What the results are shown beside (the file named by `reference:`); none: no reference
   // columns. Not part of the identity: it changes the report's comparison, not the trials.

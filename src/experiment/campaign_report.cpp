@@ -95,12 +95,15 @@ std::vector<SummaryRow> summary_rows(const CampaignResults& results) {
       std::vector<std::string> covered;
       for (const ObjectGroup& g : groups)
         if (keep(g)) covered.push_back(g.object);
-      rows.push_back({arm.name, scope, label, summarize(records, num_actions),
+      rows.push_back({arm.name, scope, label,
+                      summarize(records, num_actions, results.right_action),
                       reference_for(results.config.reference, scope, covered)});
     };
+    const bool dataset = results.config.world.type == WorldType::dataset;
     for (const ObjectGroup& g : groups)
-      add(RowScope::object, g.object,
-          [&](const ObjectGroup& other) { return other.object == g.object; });
+      if (!dataset)
+        add(RowScope::object, g.object,
+            [&](const ObjectGroup& other) { return other.object == g.object; });
     if (originals && variants) {
       add(RowScope::original_objects, "original objects", plays_itself);
       add(RowScope::variants, "variants", [](const ObjectGroup& g) { return !plays_itself(g); });
@@ -146,14 +149,15 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
 }
 
 void write_tables(const fs::path& directory, const CampaignResults& results) {
-  TrialLog all(directory, results.spec, results.belief_particles, {"arm", "object"});
+  TrialLog all(directory, results.spec, results.belief_particles, {"arm", "object", "session"});
   for (const JournalEntry& e : results.entries)
-    all.write_trial(e.result.record, e.result.steps, {e.arm, e.object});
+    all.write_trial(e.result.record, e.result.steps, {e.arm, e.object, e.session});
   for (const CampaignArm& arm : results.config.arms) {
     TrialLog per_arm(directory / "arms" / arm.name, results.spec, results.belief_particles,
-                     {"object"});
+                     {"object", "session"});
     for (const JournalEntry& e : results.entries)
-      if (e.arm == arm.name) per_arm.write_trial(e.result.record, e.result.steps, {e.object});
+      if (e.arm == arm.name)
+        per_arm.write_trial(e.result.record, e.result.steps, {e.object, e.session});
   }
 }
 

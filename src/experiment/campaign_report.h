@@ -28,6 +28,9 @@ struct CampaignResults {
   std::vector<JournalEntry> entries;  // sorted by id, at most one per id
   int planned_trials = 0;             // what the campaign (all shards) asks for
   nlohmann::json identity;            // config.identity(), taken once from the files read
+  // A dataset world's sorting: right_action[s] sorts true state s right (summarize()); empty for
+  // other worlds, whose accuracy is the final belief's mode.
+  std::vector<int> right_action;
 };
 
 // Which trials a summary row covers.
@@ -49,7 +52,8 @@ struct SummaryRow {
 };
 
 // The rows: per arm, each group, then the original objects together and the variants together
-// (when the campaign has both), and all.
+// (when the campaign has both), and all. A dataset world, with a group per object of the data,
+// has the "all" row only.
 std::vector<SummaryRow> summary_rows(const CampaignResults& results);
 
 // Confusion counts of one arm and sensing action: counts[group][symbol], symbol over the

@@ -15,32 +15,32 @@ namespace echoplan::experiment {
 
 namespace {
 
-// What one worker owns: a loop per arm and group it has met.
+// What one worker owns: a loop per shared spec it has met (a per-trial spec's loop lives for its
+// trial only).
 class Worker {
  public:
-  Worker(const CampaignConfig& config, const ArmLoops& loops) : config_(config), loops_(loops) {}
+  explicit Worker(const ArmLoops& loops) : loops_(loops) {}
 
-  std::optional<loop::Trial> run(const TrialJob& job, const std::atomic<bool>* stop) {
-    auto it = mine_.find({job.arm, job.group});
-    if (it == mine_.end())
-      it = mine_.emplace(std::pair{job.arm, job.group}, loop::Loop(loops_[job.arm][job.group]))
-               .first;
-    loop::Loop& loop = it->second;
-    const int object = loop::object_index(loop.spec().problem(), config_.groups[job.group].plays);
-    return loop.run({job.index, object, group_seed(config_, job.group)}, {}, stop);
+  std::optional<loop::Trial> run(const TrialJob& job, std::uint64_t seed,
+                                 const std::atomic<bool>* stop) {
+    const TrialLoop& trial = trial_loop(loops_, job);
+    const loop::TrialRequest request{job.index, trial.true_state, seed};
+    if (loops_[job.arm][job.group].size() != 1) return loop::Loop(trial.spec).run(request, {}, stop);
+    auto it = mine_.find(trial.spec.get());
+    if (it == mine_.end()) it = mine_.emplace(trial.spec.get(), loop::Loop(trial.spec)).first;
+    return it->second.run(request, {}, stop);
   }
 
  private:
-  const CampaignConfig& config_;
   const ArmLoops& loops_;
-  std::map<std::pair<int, int>, loop::Loop> mine_;
+  std::map<const loop::LoopSpec*, loop::Loop> mine_;
 };
 
 }  // namespace
 
-solvers::PlannerOverrides arm_planner(const CampaignConfig& config) {
+solvers::PlannerOverrides arm_planner(const CampaignConfig& config, const CampaignArm& arm) {
   solvers::PlannerOverrides overrides;
-  overrides.solver = config.planner.solver;
+  overrides.solver = arm.strategy == kPlanStrategy ? config.planner.solver : arm.strategy;
   overrides.episodes = config.planner.episodes;
   overrides.step_ms = config.planner.step_ms;
   return overrides;
@@ -53,6 +53,11 @@ std::vector<TrialJob> campaign_jobs(const CampaignConfig& config) {
     for (int g = 0; g < static_cast<int>(config.groups.size()); ++g)
       for (int i = 0; i < config.groups[g].trials; ++i) jobs.push_back({id++, a, g, i});
   return jobs;
+}
+
+const TrialLoop& trial_loop(const ArmLoops& loops, const TrialJob& job) {
+  const std::vector<TrialLoop>& group = loops.at(job.arm).at(job.group);
+  return group.size() == 1 ? group[0] : group.at(job.index);
 }
 
 std::uint64_t group_seed(const CampaignConfig& config, int group) {
@@ -86,12 +91,13 @@ int run_campaign_trials(const CampaignConfig& config, const ArmLoops& loops,
 
   auto work = [&] {
     try {
-      Worker worker(config, loops);
+      Worker worker(loops);
       while (!stopped()) {
         const std::size_t k = next.fetch_add(1);
         if (k >= jobs.size()) break;
         const TrialJob& job = jobs[k];
-        const std::optional<loop::Trial> trial = worker.run(job, options.stop);
+        const std::optional<loop::Trial> trial =
+            worker.run(job, group_seed(config, job.group), options.stop);
         if (!trial) break;
         // Trials are numbered by campaign id in every file (the runner numbers them within the
         // group).
@@ -99,7 +105,7 @@ int run_campaign_trials(const CampaignConfig& config, const ArmLoops& loops,
         result.record.trial = job.id;
         for (StepRecord& s : result.steps) s.trial = job.id;
         JournalEntry entry{job.id, config.arms[job.arm].name, config.groups[job.group].object,
-                           std::move(result)};
+                           trial_loop(loops, job).session, std::move(result)};
         journal.append(entry);
         std::lock_guard<std::mutex> lock(report_mutex);
         ++finished;

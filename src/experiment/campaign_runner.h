@@ -48,11 +48,24 @@ struct Shard {
 Shard parse_shard(const std::string& text);
 
 // What an arm's planner takes from the campaign: its solver and budget (the arm problem's file
-// gives the search settings).
-solvers::PlannerOverrides arm_planner(const CampaignConfig& config);
+// gives the search settings), or the arm's fixed strategy.
+solvers::PlannerOverrides arm_planner(const CampaignConfig& config, const CampaignArm& arm);
 
-// The checked loop of each arm and group: loops[arm][group] (campaign.h builds them).
-using ArmLoops = std::vector<std::vector<std::shared_ptr<const loop::LoopSpec>>>;
+// What a trial runs: the checked loop, the true state it fixes and, in a dataset world, the
+// session it replays.
+struct TrialLoop {
+  std::shared_ptr<const loop::LoopSpec> spec;
+  int true_state = -1;   // index into the problem's objects
+  std::string session;   // the data's session name; empty outside a dataset world
+};
+
+// The loops of each arm and group: loops[arm][group] holds one TrialLoop that all the group's
+// trials share (a model or simulated world), or one per trial (a dataset world: each session has
+// its fold's classifiers and its own use limits). campaign.h builds them.
+using ArmLoops = std::vector<std::vector<std::vector<TrialLoop>>>;
+
+// The TrialLoop of `job`.
+const TrialLoop& trial_loop(const ArmLoops& loops, const TrialJob& job);
 
 struct CampaignRunOptions {
   int workers = 1;                          // threads, >= 1; results do not depend on it

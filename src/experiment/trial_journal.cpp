@@ -39,7 +39,7 @@ nlohmann::json to_json(const JournalEntry& entry) {
     if (s.heard_probability) step["heard_probability"] = *s.heard_probability;
     steps.push_back(std::move(step));
   }
-  return {{"id", entry.id},
+  nlohmann::json j = {{"id", entry.id},
           {"arm", entry.arm},
           {"object", entry.object},
           {"trial", r.trial},
@@ -51,6 +51,9 @@ nlohmann::json to_json(const JournalEntry& entry) {
           {"collision", r.collision},
           {"capped", r.capped},
           {"step_log", std::move(steps)}};
+  // Only a dataset world's trials have one (journals of other worlds keep their bytes).
+  if (!entry.session.empty()) j["session"] = entry.session;
+  return j;
 }
 
 namespace {
@@ -94,6 +97,8 @@ JournalEntry journal_entry_from_json(const nlohmann::json& j, const std::string&
   e.id = int_member(j, "id", "", source);
   e.arm = jf::string(jf::member(j, "arm", "", source), "arm", source);
   e.object = jf::string(jf::member(j, "object", "", source), "object", source);
+  if (const auto* session = jf::optional_member(j, "session", "", source))
+    e.session = jf::string(*session, "session", source);
   TrialRecord& r = e.result.record;
   r.trial = int_member(j, "trial", "", source);
   r.true_state = int_member(j, "true_state", "", source);

@@ -21,7 +21,8 @@ namespace echoplan::experiment {
 struct JournalEntry {
   int id = 0;
   std::string arm;
-  std::string object;  // what the world held
+  std::string object;   // what the world held
+  std::string session;  // a dataset world's session of `object` the trial replayed; else empty
   TrialResult result;
 
   friend bool operator==(const JournalEntry&, const JournalEntry&);

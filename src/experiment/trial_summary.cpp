@@ -4,14 +4,24 @@
 
 namespace echoplan::experiment {
 
-TrialSummary summarize(const std::vector<TrialRecord>& trials, int num_actions) {
+namespace {
+
+bool right(const TrialRecord& t, const std::vector<int>& right_action) {
+  if (right_action.empty()) return t.believed_state == t.true_state;
+  return t.action_counts.at(right_action.at(t.true_state)) > 0;
+}
+
+}  // namespace
+
+TrialSummary summarize(const std::vector<TrialRecord>& trials, int num_actions,
+                       const std::vector<int>& right_action) {
   TrialSummary s;
   s.trials = static_cast<int>(trials.size());
   s.mean_action_counts.assign(num_actions, 0.0);
   if (trials.empty()) return s;
   const double n = static_cast<double>(trials.size());
   for (const TrialRecord& t : trials) {
-    s.accuracy += (t.believed_state == t.true_state) / n;
+    s.accuracy += right(t, right_action) / n;
     s.mean_discounted_reward += t.discounted_reward / n;
     s.mean_steps += t.steps / n;
     for (int a = 0; a < num_actions; ++a) s.mean_action_counts[a] += t.action_counts[a] / n;

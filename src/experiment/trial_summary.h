@@ -10,7 +10,9 @@ namespace echoplan::experiment {
 
 struct TrialSummary {
   int trials = 0;
-  double accuracy = 0.0;  // fraction of trials whose final belief's mode is the truth
+  // Fraction of trials whose final belief's mode is the truth; with `right_action` (summarize), the
+  // fraction sorted right.
+  double accuracy = 0.0;
   double mean_discounted_reward = 0.0;
   double sd_discounted_reward = 0.0;  // sample standard deviation (n - 1); 0 for one trial
   double ci95 = 0.0;                  // half-width of the 95% CI of the mean (Student's t)
@@ -20,6 +22,9 @@ struct TrialSummary {
   int capped = 0;  // trials stopped by --max-steps
 };
 
-TrialSummary summarize(const std::vector<TrialRecord>& trials, int num_actions);
+// `right_action[s]`, when given, is the action that sorts true state s right (a dataset world sorts
+// objects by group, so knowing the group is enough): a trial is right when it took that action.
+TrialSummary summarize(const std::vector<TrialRecord>& trials, int num_actions,
+                       const std::vector<int>& right_action = {});
 
 }  // namespace echoplan::experiment

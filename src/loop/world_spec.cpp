@@ -68,7 +68,8 @@ std::string world_name(const WorldSpec& world) {
   return std::visit(Overloaded{[](const TableWorldSpec&) { return std::string("model"); },
                                [](const SimulatedWorldSpec&) { return std::string("simulator"); },
                                [](const ReplayWorldSpec&) { return std::string("replay"); },
-                               [](const PartsWorldSpec& p) { return p.description; }},
+                               [](const PartsWorldSpec& p) { return p.description; },
+                               [](const DatasetWorldSpec&) { return std::string("dataset"); }},
                     world);
 }
 
@@ -79,6 +80,15 @@ WorldFactory make_world_factory(WorldInputs in) {
   if (std::holds_alternative<TableWorldSpec>(in.spec)) {
     auto problem = in.problem;
     return [problem]() -> std::unique_ptr<World> { return std::make_unique<TableWorld>(problem); };
+  }
+  if (const auto* dataset = std::get_if<DatasetWorldSpec>(&in.spec)) {
+    auto problem = in.problem;
+    const DatasetWorldSpec spec = *dataset;
+    const pomdp::ObjectIdentificationModel& model = object_problem(*problem);
+    DatasetWorld check(model, spec);  // the actions fit: an InputError stops all work now
+    return [problem, spec]() -> std::unique_ptr<World> {
+      return std::make_unique<DatasetWorld>(object_problem(*problem), spec);
+    };
   }
   if (!in.classifier) throw std::invalid_argument("make_world_factory: no observation model");
   const pomdp::ObjectProblemData& data = object_problem(*in.problem).data();

@@ -11,6 +11,7 @@
 #include <string>
 #include <variant>
 
+#include "loop/dataset_world.h"
 #include "loop/robot_world.h"
 #include "loop/world.h"
 #include "perception/observation_model.h"
@@ -42,9 +43,11 @@ struct PartsWorldSpec {
   std::string description = "robot";  // for messages and logs
 };
 
-using WorldSpec = std::variant<TableWorldSpec, SimulatedWorldSpec, ReplayWorldSpec, PartsWorldSpec>;
+using WorldSpec = std::variant<TableWorldSpec, SimulatedWorldSpec, ReplayWorldSpec, PartsWorldSpec,
+                               DatasetWorldSpec>;
 
-// "model", "simulator", "replay" or the parts' description: what trial.json and messages call it.
+// "model", "simulator", "replay", "dataset" or the parts' description: what trial.json and
+// messages call it.
 std::string world_name(const WorldSpec& world);
 
 // What a world is built from.
@@ -67,6 +70,8 @@ using WorldFactory = std::function<std::unique_ptr<World>()>;
 //     simulator can execute every sensing action;
 //   - replay: the folder holds recordings of every problem object (after world_objects) and
 //     sensing action;
+//   - dataset: the problem is an object-identification problem whose sensing actions are the
+//     data's actions;
 //   - simulator and replay: the model has a classifier for every sensing action, reports only the
 //     problem's observation symbols and every symbol but `unknown`, and `unknown` only when the
 //     problem has that symbol.

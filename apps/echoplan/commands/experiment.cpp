@@ -43,7 +43,7 @@ void run_experiment(const ExperimentFlags& f) {
 
   const auto start = std::chrono::steady_clock::now();
   spdlog::info(
-      "campaign {} -> {} ({} trials{}, {} workers)", config_path, f.out, config.total_trials(),
+      "campaign {} -> {} ({} trials{}, {} workers)", config_path, f.out, campaign.config.total_trials(),
       shard.count > 1 ? fmt::format(", shard {}/{}", shard.index, shard.count) : "", workers);
   {
     // One bar per stage of the preparation (synthesis, then the trainer's stages).
@@ -73,7 +73,7 @@ void run_experiment(const ExperimentFlags& f) {
 
   const std::vector<experiment::TrialJob> jobs = experiment::remaining_jobs(campaign, shard);
   int shard_total = 0;
-  for (const experiment::TrialJob& job : experiment::campaign_jobs(config))
+  for (const experiment::TrialJob& job : experiment::campaign_jobs(campaign.config))
     shard_total += shard.contains(job.id);
   const int already = shard_total - static_cast<int>(jobs.size());
   if (already > 0)

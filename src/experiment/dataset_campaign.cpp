@@ -1,0 +1,147 @@
+#include "experiment/dataset_campaign.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <map>
+
+#include "common/error.h"
+#include "loop/dataset_problem.h"
+#include "loop/dataset_world.h"
+#include "loop/loop.h"
+#include "perception/recording_features.h"
+#include "perception/recording_set.h"
+
+namespace echoplan::experiment {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A recordings tree has audio under DIR/<object>/<action>/ or a manifest; a feature set has
+// DIR/<action>/<modality>.csv.
+bool is_recordings_tree(const std::string& dir) {
+  if (fs::exists(fs::path(dir) / "manifest.csv")) return true;
+  std::error_code error;
+  for (fs::recursive_directory_iterator it(dir, error), end; !error && it != end;
+       it.increment(error))
+    if (it->is_regular_file(error) && it->path().extension() == ".wav") return true;
+  return false;
+}
+
+perception::FeatureSet load_data(const std::string& dir, const ProgressFn& progress) {
+  if (!is_recordings_tree(dir)) return perception::load_feature_set(dir);
+  return perception::feature_set_from_recordings(perception::load_recording_set(dir), {},
+                                                 progress);
+}
+
+pomdp::Problem dataset_problem_file(pomdp::ObjectProblemData data, const std::string& source) {
+  pomdp::Problem problem;
+  problem.model = std::make_shared<const pomdp::ObjectIdentificationModel>(std::move(data));
+  // The classes are few enough to track exactly; the planner samples its particles from it.
+  problem.belief.type = pomdp::BeliefSettings::Type::exact;
+  problem.source_path = source;
+  return problem;
+}
+
+loop::DatasetRewards task_rewards(const CampaignConfig& config) {
+  loop::DatasetRewards rewards;
+  rewards.right = config.rewards.right;
+  rewards.wrong = config.rewards.wrong;
+  rewards.sense = config.rewards.sense;
+  return rewards;
+}
+
+// The sessions of object `object`, in the data's order.
+std::vector<int> sessions_of(const perception::FeatureSet& data, int object) {
+  std::vector<int> sessions;
+  for (std::size_t s = 0; s < data.sessions.size(); ++s)
+    if (data.sessions[s].object == object) sessions.push_back(static_cast<int>(s));
+  return sessions;
+}
+
+}  // namespace
+
+DatasetTrials open_dataset(const CampaignConfig& config, const ProgressFn& progress) {
+  DatasetTrials t;
+  t.data = std::make_shared<const perception::FeatureSet>(load_data(config.world.data, progress));
+  std::optional<perception::ObjectGroups> groups;
+  if (!config.world.groups.empty()) groups = perception::load_groups(config.world.groups);
+  t.task = perception::make_dataset_task(*t.data, groups ? &*groups : nullptr,
+                                         perception::parse_hold_out(config.world.hold_out));
+  t.folds = perception::make_folds(*t.data, t.task);
+  t.fold_of_session.assign(t.data->sessions.size(), -1);
+  for (std::size_t f = 0; f < t.folds.size(); ++f)
+    for (int s : t.folds[f].test_sessions) t.fold_of_session.at(s) = static_cast<int>(f);
+  t.names = std::make_shared<const pomdp::Problem>(dataset_problem_file(
+      loop::dataset_problem_names(t.task, *t.data, task_rewards(config)), config.world.data));
+  return t;
+}
+
+std::vector<ObjectGroup> dataset_groups(const DatasetTrials& trials) {
+  std::vector<ObjectGroup> groups;
+  for (std::size_t o = 0; o < trials.data->objects.size(); ++o) {
+    const std::string& name = trials.data->objects[o];
+    groups.push_back(
+        {name, name, static_cast<int>(sessions_of(*trials.data, static_cast<int>(o)).size())});
+  }
+  return groups;
+}
+
+std::vector<int> right_actions(const DatasetTrials& trials) {
+  const int sensing = static_cast<int>(trials.data->actions.size());
+  std::vector<int> right;
+  for (int bin : trials.task.bin_of_class) right.push_back(sensing + bin);
+  return right;
+}
+
+bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
+                       const ProgressFn& progress, const std::atomic<bool>& stop) {
+  perception::FeatureModelOptions options;
+  if (!config.training.classifier.empty()) options.classifier = config.training.classifier;
+  trials.models.clear();
+  const int folds = static_cast<int>(trials.folds.size());
+  for (int f = 0; f < folds; ++f) {
+    if (stop.load()) return false;
+    if (progress) progress("fit folds", f, folds);
+    std::vector<int> training;
+    for (std::size_t s = 0; s < trials.data->sessions.size(); ++s)
+      if (trials.fold_of_session[s] != f) training.push_back(static_cast<int>(s));
+    trials.models.push_back(std::make_shared<const perception::FeatureModel>(
+        perception::fit_feature_model(*trials.data, trials.task, training, options)));
+  }
+  if (progress) progress("fit folds", folds, folds);
+  return true;
+}
+
+ArmLoops dataset_loops(const CampaignConfig& config, const DatasetTrials& trials) {
+  // One problem per fold and use limits, shared by every arm and trial that needs it.
+  std::map<std::pair<int, std::vector<int>>, std::shared_ptr<const pomdp::Problem>> problems;
+  const auto& names = trials.names->model->object_identification()->data();
+  const auto problem_for = [&](int fold, const std::vector<int>& uses) {
+    auto& p = problems[{fold, uses}];
+    if (!p)
+      p = std::make_shared<const pomdp::Problem>(dataset_problem_file(
+          loop::dataset_problem(trials.task, *trials.models.at(fold), task_rewards(config), uses),
+          fmt::format("{} (fold {})", config.world.data, fold + 1)));
+    return p;
+  };
+  ArmLoops loops(config.arms.size());
+  for (std::size_t a = 0; a < config.arms.size(); ++a)
+    for (std::size_t o = 0; o < trials.data->objects.size(); ++o) {
+      std::vector<TrialLoop>& group = loops[a].emplace_back();
+      for (int session : sessions_of(*trials.data, static_cast<int>(o))) {
+        const int fold = trials.fold_of_session.at(session);
+        loop::LoopSettings s;
+        s.problem = problem_for(fold, loop::session_uses(names, *trials.data, session));
+        s.world = loop::DatasetWorldSpec{trials.data, trials.models.at(fold), session};
+        s.planner = arm_planner(config, config.arms[a]);
+        s.max_steps = config.planner.max_steps;
+        group.push_back({std::make_shared<const loop::LoopSpec>(std::move(s)),
+                         trials.task.class_of_object.at(o), trials.data->sessions[session].name});
+      }
+    }
+  return loops;
+}
+
+}  // namespace echoplan::experiment

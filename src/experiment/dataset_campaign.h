@@ -1,0 +1,57 @@
+// A campaign in a dataset world: recorded data replayed, a trial per (object, session), for every
+// arm, paired.
+//
+// The data is a feature set or a recordings tree (docs/feature-sets.md); the groups file, when
+// given, says what the objects are sorted by. The sessions are dealt into folds (one session of
+// every object per fold when a trial holds out a session; whole objects when it holds out the
+// object) and each fold's classifiers and calibrated table are fitted once, on the other folds
+// only, then shared by every arm and trial of the fold. A trial's problem is its fold's, with each
+// sensing action limited to the performances its session recorded.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "common/progress.h"
+#include "experiment/campaign_config.h"
+#include "experiment/campaign_runner.h"
+#include "perception/dataset_folds.h"
+#include "perception/dataset_task.h"
+#include "perception/feature_model.h"
+#include "perception/feature_set.h"
+#include "pomdp/problem.h"
+
+namespace echoplan::experiment {
+
+struct DatasetTrials {
+  std::shared_ptr<const perception::FeatureSet> data;
+  perception::DatasetTask task;
+  std::vector<perception::Fold> folds;
+  std::vector<int> fold_of_session;  // [session] -> fold
+  // The fitted model of each fold (empty until fit_dataset_folds()).
+  std::vector<std::shared_ptr<const perception::FeatureModel>> models;
+  // Names only (objects, actions, symbols): what the report needs before any fit.
+  std::shared_ptr<const pomdp::Problem> names;
+};
+
+// Loads and checks the world's data and groups (InputError naming the file and line) and deals
+// the folds. A recordings tree's audio is analysed now (`progress` hears "analyse").
+DatasetTrials open_dataset(const CampaignConfig& config, const ProgressFn& progress = {});
+
+// The trial groups of the data: one per object, in the data's order, a trial per session.
+std::vector<ObjectGroup> dataset_groups(const DatasetTrials& trials);
+
+// The action that sorts each state right, for the report's accuracy (CampaignResults).
+std::vector<int> right_actions(const DatasetTrials& trials);
+
+// Fits every fold's model (`progress` hears "fit folds"). Returns false when stopped.
+bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
+                       const ProgressFn& progress, const std::atomic<bool>& stop);
+
+// The loop of every arm and trial: loops[arm][object][session] (campaign_runner.h). Needs the
+// fitted folds.
+ArmLoops dataset_loops(const CampaignConfig& config, const DatasetTrials& trials);
+
+}  // namespace echoplan::experiment

@@ -1,0 +1,76 @@
+#include "loop/dataset_world.h"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "common/error.h"
+
+namespace echoplan::loop {
+
+namespace {
+
+int data_action_index(const perception::FeatureSet& data, const std::string& name) {
+  for (std::size_t a = 0; a < data.actions.size(); ++a)
+    if (data.actions[a].name == name) return static_cast<int>(a);
+  throw InputError(data.root, 0,
+                   fmt::format("the problem's sensing action '{}' is not an action of the data",
+                               name));
+}
+
+// The rows of `session` in action `a`'s data, in file order.
+std::vector<int> session_rows(const perception::ActionData& action, int session) {
+  std::vector<int> rows;
+  for (std::size_t r = 0; r < action.rows.size(); ++r)
+    if (action.rows[r].session == session) rows.push_back(static_cast<int>(r));
+  return rows;
+}
+
+}  // namespace
+
+std::vector<int> session_uses(const pomdp::ObjectProblemData& problem,
+                              const perception::FeatureSet& data, int session) {
+  std::vector<int> uses;
+  for (const pomdp::SensingAction& act : problem.sensing)
+    uses.push_back(static_cast<int>(
+        session_rows(data.actions[data_action_index(data, act.name)], session).size()));
+  return uses;
+}
+
+DatasetWorld::DatasetWorld(const pomdp::ObjectIdentificationModel& problem, DatasetWorldSpec spec)
+    : problem_(problem), spec_(std::move(spec)) {
+  if (!spec_.data || !spec_.model)
+    throw std::invalid_argument("DatasetWorld: the data and the fitted model are needed");
+  for (const pomdp::SensingAction& act : problem_.data().sensing) {
+    data_action_.push_back(data_action_index(*spec_.data, act.name));
+    rows_.push_back(session_rows(spec_.data->actions[data_action_.back()], spec_.session));
+  }
+  next_.assign(rows_.size(), 0);
+}
+
+void DatasetWorld::reset(const pomdp::State& true_state, Rng& /*rng*/) {
+  true_class_ = true_state.discrete.at(0);
+  next_.assign(rows_.size(), 0);
+}
+
+WorldStep DatasetWorld::execute(int action, Rng& /*rng*/) {
+  const pomdp::ObjectProblemData& data = problem_.data();
+  pomdp::Outcome outcome;
+  if (problem_.is_sensing(action)) {
+    if (next_[action] >= rows_[action].size())
+      throw std::logic_error(fmt::format(
+          "dataset world: '{}' used more often than the session recorded it ({} times)",
+          data.sensing[action].name, rows_[action].size()));
+    const int row = rows_[action][next_[action]++];
+    outcome.observation.index = spec_.model->classify(data_action_[action], *spec_.data, row);
+    outcome.reward = data.sensing[action].reward;
+    return {outcome, {}};
+  }
+  const int sort = action - problem_.num_sensing();
+  outcome.observation.index = problem_.none_symbol();
+  outcome.reward = data.sorting_reward.at(sort).at(true_class_);
+  outcome.terminal = true;
+  return {outcome, {}};
+}
+
+}  // namespace echoplan::loop

@@ -1,0 +1,48 @@
+// Recorded data as the world: a trial replays one held-out session of a feature set (or of a
+// recordings tree's features). Each sensing action takes the session's next recorded performance
+// of that behaviour, and the classifiers fitted on the other folds hear it; a sorting action earns
+// the problem's reward for the trial's true class. Nothing is drawn at random: the same session
+// gives the same observations to every arm, so arms are compared on exactly the same data.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "loop/world.h"
+#include "perception/feature_model.h"
+#include "perception/feature_set.h"
+#include "pomdp/object_identification_model.h"
+
+namespace echoplan::loop {
+
+// What a dataset world replays. The problem's sensing actions are the set's actions, by name.
+struct DatasetWorldSpec {
+  std::shared_ptr<const perception::FeatureSet> data;
+  std::shared_ptr<const perception::FeatureModel> model;  // fitted on folds without `session`
+  int session = 0;                                        // index into data->sessions
+};
+
+class DatasetWorld final : public World {
+ public:
+  // Throws InputError when a sensing action of `problem` is not an action of the data.
+  DatasetWorld(const pomdp::ObjectIdentificationModel& problem, DatasetWorldSpec spec);
+
+  void reset(const pomdp::State& true_state, Rng& rng) override;
+  // A sensing action used more often than the session recorded it is a logic error: the problem's
+  // use limits (the session's counts) stop a planner before that.
+  WorldStep execute(int action, Rng& rng) override;
+
+ private:
+  const pomdp::ObjectIdentificationModel& problem_;
+  DatasetWorldSpec spec_;
+  std::vector<int> data_action_;            // [sensing action] -> index into data->actions
+  std::vector<std::vector<int>> rows_;      // [sensing action] -> the session's rows, file order
+  std::vector<std::size_t> next_;           // [sensing action] -> rows used so far this trial
+  int true_class_ = 0;
+};
+
+// How often the session recorded each of `problem`'s sensing actions: its use limits in a trial.
+std::vector<int> session_uses(const pomdp::ObjectProblemData& problem,
+                              const perception::FeatureSet& data, int session);
+
+}  // namespace echoplan::loop
