@@ -131,17 +131,22 @@ TEST(AudioTopicRecorder, ChunksThatAreNotWholeFramesAreDroppedAndNamed) {
   TopicCaptureConfig config = stand_in_config();
   config.channels = 3;  // 320 stereo frames are 1280 bytes, not a whole number of 6-byte frames
   AudioTopicRecorder recorder(ros::NodeHandle(), config);
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // connected by then
-  recorder.start("strike");
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  try {
-    recorder.stop();
-    FAIL() << "a clip from chunks that do not fit the stated channels";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("not whole frames of 3 channels"), std::string::npos)
-        << e.what();
-  }
+  // Until the subscription is connected (at most 10 s), a recording hears no chunk at all.
+  std::string error;
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  do {
+    recorder.start("strike");
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    try {
+      recorder.stop();
+      FAIL() << "a clip from chunks that do not fit the stated channels";
+    } catch (const std::runtime_error& e) {
+      error = e.what();
+    }
+  } while (recorder.last_report().chunks == 0 && std::chrono::steady_clock::now() < until);
+  EXPECT_NE(error.find("not whole frames of 3 channels"), std::string::npos) << error;
   EXPECT_GT(recorder.last_report().misaligned_chunks, 0u);
+  EXPECT_EQ(recorder.last_report().misaligned_chunks, recorder.last_report().chunks);
 }
 
 TEST(AudioTopicRecorder, NothingPublishedIsAnErrorSayingSo) {
@@ -204,6 +209,16 @@ TEST(AppendS16le, ReadsLittleEndianSignedSamplesOver32768) {
 TEST(ListenerNode, PublishesTheTopicsFramesBetweenTheRecordParametersRiseAndFall) {
   ros::NodeHandle node;
   RosRecorder recorder(node, 10.0);
+  // The script waited for the listener's subscription; its connection to the publisher follows
+  // within moments: until then a recording is empty and fails (at most 10 tries).
+  for (int attempt = 0; attempt < 10; ++attempt) {
+    recorder.start("warm-up");
+    try {
+      recorder.stop();
+      break;
+    } catch (const std::runtime_error&) {
+    }
+  }
   recorder.start("strike");
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   EXPECT_GE(expect_published_frames(recorder.stop()), 2u * kChunkFrames);
