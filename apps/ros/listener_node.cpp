@@ -12,6 +12,9 @@
 //                  topic carries: set them to the audio_capture node's sample_rate and channels
 //   ~audio_topic   topic: the AudioData topic (/audio/audio)
 //   ~sample_format topic: the samples' format (S16LE, the only one read)
+//   ~audio_info_topic  topic: the publisher's AudioInfo, checked against ~rate, ~channels and
+//                  ~sample_format (default: ~audio_topic + "_info", where audio_capture publishes
+//                  it; empty: not checked)
 //   ~first_chunk_wait_s  topic: how long a recording that heard nothing yet waits at its end for
 //                  a first chunk (0.25)
 //   ~max_seconds   a recording stops growing after this long (30)
@@ -130,6 +133,7 @@ Source topic_source(ros::NodeHandle& node, ros::NodeHandle& priv, double max_sec
   config.channels = private_param<int>(priv, "channels", 2);
   config.sample_format = private_param<std::string>(priv, "sample_format", "S16LE");
   config.first_chunk_wait_s = private_param<double>(priv, "first_chunk_wait_s", 0.25);
+  config.info_topic = private_param<std::string>(priv, "audio_info_topic", config.topic + "_info");
   config.max_seconds = max_seconds;
   Source source{std::make_unique<echoplan::robot::AudioTopicRecorder>(node, config), nullptr,
                 config.sample_rate, config.channels};

@@ -51,6 +51,8 @@ AudioTopicRecorder::AudioTopicRecorder(const ros::NodeHandle& node,
   // A robot publishes a chunk every few milliseconds; keep a second's worth queued.
   subscriber_ = node_.subscribe(config_.topic, 200, &AudioTopicRecorder::on_chunk, this,
                                 ros::TransportHints().tcpNoDelay());
+  if (!config_.info_topic.empty())
+    info_subscriber_ = node_.subscribe(config_.info_topic, 1, &AudioTopicRecorder::on_info, this);
   spinner_ = std::make_unique<ros::AsyncSpinner>(1, &queue_);
   spinner_->start();
 }
@@ -58,6 +60,25 @@ AudioTopicRecorder::AudioTopicRecorder(const ros::NodeHandle& node,
 AudioTopicRecorder::~AudioTopicRecorder() {
   spinner_->stop();
   subscriber_.shutdown();
+  info_subscriber_.shutdown();
+}
+
+void AudioTopicRecorder::on_info(const audio_common_msgs::AudioInfo::ConstPtr& info) {
+  std::string mismatch;
+  if (info->coding_format != "wave")
+    mismatch = fmt::format("coding format '{}', not raw audio (run audio_capture with format wave)",
+                           info->coding_format);
+  else if (info->sample_format != config_.sample_format ||
+           static_cast<long long>(info->sample_rate) != config_.sample_rate ||
+           info->channels != config_.channels)
+    mismatch = fmt::format("{} at {} Hz x {} channels, but the listener was told {} at {} Hz x {}",
+                           info->sample_format, info->sample_rate, info->channels,
+                           config_.sample_format, config_.sample_rate, config_.channels);
+  if (!mismatch.empty())
+    mismatch = fmt::format("{} says {} carries {}", config_.info_topic, config_.topic, mismatch);
+  if (!mismatch.empty()) ROS_ERROR("%s", mismatch.c_str());
+  std::lock_guard lock(mutex_);
+  info_mismatch_ = mismatch;
 }
 
 void AudioTopicRecorder::on_chunk(const audio_common_msgs::AudioData::ConstPtr& chunk) {
@@ -78,6 +99,7 @@ void AudioTopicRecorder::on_chunk(const audio_common_msgs::AudioData::ConstPtr& 
 void AudioTopicRecorder::start(const std::string& /*action*/) {
   std::lock_guard lock(mutex_);
   if (started_) throw std::logic_error("AudioTopicRecorder::start: a recording is already running");
+  if (!info_mismatch_.empty()) throw std::runtime_error(info_mismatch_);
   samples_.clear();
   running_ = TopicCaptureReport{};
   started_ = true;

@@ -17,7 +17,10 @@
 //   - the clip stops growing at `max_seconds` (exactly that many frames, limit_reached);
 //   - a chunk that is not a whole number of frames (wrong channel count, an mp3 stream) is dropped,
 //     counted and reported in a warning at stop();
-//   - nothing heard: stop() throws std::runtime_error saying whether anyone publishes on the topic.
+//   - nothing heard: stop() throws std::runtime_error saying whether anyone publishes on the topic;
+//   - with `info_topic` set, the publisher's audio_common_msgs/AudioInfo (audio_capture latches it)
+//     is checked against the configuration: a different rate, channel count or sample format, or
+//     a coding format other than wave, makes start() throw std::runtime_error saying both.
 #pragma once
 
 #include <ros/callback_queue.h>
@@ -45,6 +48,7 @@ struct TopicCaptureConfig {
   std::string sample_format = "S16LE";  // the only one read
   double max_seconds = 600.0;           // a recording stops growing after this long; > 0
   double first_chunk_wait_s = 0.25;     // see the header comment; >= 0
+  std::string info_topic;  // the publisher's AudioInfo (/audio/audio_info); empty: not checked
 
   // Throws InputError naming the bad field and its value.
   void validate() const;
@@ -82,6 +86,7 @@ class AudioTopicRecorder final : public Recorder {
 
  private:
   void on_chunk(const audio_common_msgs::AudioData::ConstPtr& chunk);
+  void on_info(const audio_common_msgs::AudioInfo::ConstPtr& info);
   // The error stop() throws when the recording is empty.
   std::string nothing_heard_reason() const;
 
@@ -91,11 +96,14 @@ class AudioTopicRecorder final : public Recorder {
   ros::CallbackQueue queue_;  // declared before the node, subscriber and spinner that use it
   ros::NodeHandle node_;
   ros::Subscriber subscriber_;
+  ros::Subscriber info_subscriber_;
   std::unique_ptr<ros::AsyncSpinner> spinner_;
 
   mutable std::mutex mutex_;  // guards the members below against on_chunk
   std::condition_variable chunk_arrived_;
   bool started_ = false;  // between start() and stop()
+  std::string
+      info_mismatch_;  // how the publisher's AudioInfo contradicts config_ (empty: it does not)
   std::vector<float> samples_;
   TopicCaptureReport running_;  // the running recording's counts
   TopicCaptureReport report_;   // the last finished recording's (read by the owner's thread only)

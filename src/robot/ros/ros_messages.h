@@ -1,4 +1,5 @@
-// The echoplan_ros messages and services, and audio_common_msgs/AudioData, usable from C++20.
+// The echoplan_ros messages and services, and audio_common_msgs' AudioData and AudioInfo, usable
+// from C++20.
 //
 // Debian's roscpp_serialization (1.15) serializes std::vector fields through
 // `ContainerAllocator::rebind<T>::other`, which C++20 removed from std::allocator, so any message
@@ -76,6 +77,7 @@ struct VectorSerializer<std::string, std::allocator<std::string>, void> {
 }  // namespace ros::serialization
 
 #include <audio_common_msgs/AudioData.h>
+#include <audio_common_msgs/AudioInfo.h>
 #include <echoplan_ros/BeginTrial.h>
 #include <echoplan_ros/Clip.h>
 #include <echoplan_ros/ExecuteAction.h>

@@ -80,6 +80,7 @@ TopicCaptureConfig stand_in_config() {
   config.topic = kTopic;
   config.sample_rate = kRate;
   config.channels = 2;
+  config.info_topic = "/robot/audio_info";  // the stand-in's, which agrees
   return config;
 }
 
@@ -129,7 +130,8 @@ TEST(AudioTopicRecorder, StopsGrowingAtMaxSeconds) {
 
 TEST(AudioTopicRecorder, ChunksThatAreNotWholeFramesAreDroppedAndNamed) {
   TopicCaptureConfig config = stand_in_config();
-  config.channels = 3;  // 320 stereo frames are 1280 bytes, not a whole number of 6-byte frames
+  config.channels = 3;     // 320 stereo frames are 1280 bytes, not a whole number of 6-byte frames
+  config.info_topic = "";  // which would say so at start()
   AudioTopicRecorder recorder(ros::NodeHandle(), config);
   // Until the subscription is connected (at most 10 s), a recording hears no chunk at all.
   std::string error;
@@ -147,6 +149,30 @@ TEST(AudioTopicRecorder, ChunksThatAreNotWholeFramesAreDroppedAndNamed) {
   EXPECT_NE(error.find("not whole frames of 3 channels"), std::string::npos) << error;
   EXPECT_GT(recorder.last_report().misaligned_chunks, 0u);
   EXPECT_EQ(recorder.last_report().misaligned_chunks, recorder.last_report().chunks);
+}
+
+TEST(AudioTopicRecorder, AnAudioInfoThatContradictsTheConfigurationStopsTheStart) {
+  TopicCaptureConfig config = stand_in_config();
+  config.sample_rate = 44100;
+  AudioTopicRecorder recorder(ros::NodeHandle(), config);
+  // Until the stand-in's latched AudioInfo has arrived (at most 10 s), start() succeeds.
+  std::string error;
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (error.empty() && std::chrono::steady_clock::now() < until) {
+    try {
+      recorder.start("strike");
+      try {
+        recorder.stop();
+      } catch (const std::runtime_error&) {
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    } catch (const std::runtime_error& e) {
+      error = e.what();
+    }
+  }
+  EXPECT_EQ(error,
+            "/robot/audio_info says /robot/audio carries S16LE at 16000 Hz x 2 channels, but the "
+            "listener was told S16LE at 44100 Hz x 2");
 }
 
 TEST(AudioTopicRecorder, NothingPublishedIsAnErrorSayingSo) {
