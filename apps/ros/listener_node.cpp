@@ -4,9 +4,19 @@
 //
 // Private parameters:
 //   ~source        "microphone" (default): capture with PortAudio; "simulation": collect the
-//                  clips the simulated robot publishes on /echoplan/sim_clip while recording
-//   ~device        input device (index or part of its name; default: the default input)
-//   ~rate          Hz (44100), ~channels (2): what the microphone records
+//                  clips the simulated robot publishes on /echoplan/sim_clip while recording;
+//                  "topic": the robot's own microphone, the audio_common_msgs/AudioData chunks
+//                  an audio_capture node publishes (robot/ros/audio_topic_recorder.h)
+//   ~device        microphone: input device (index or part of its name; default: the default input)
+//   ~rate          Hz (44100), ~channels (2): what the microphone records, or (topic) what the
+//                  topic carries: set them to the audio_capture node's sample_rate and channels
+//   ~audio_topic   topic: the AudioData topic (/audio/audio)
+//   ~sample_format topic: the samples' format (S16LE, the only one read)
+//   ~audio_info_topic  topic: the publisher's AudioInfo, checked against ~rate, ~channels and
+//                  ~sample_format (default: ~audio_topic + "_info", where audio_capture publishes
+//                  it; empty: not checked)
+//   ~first_chunk_wait_s  topic: how long a recording that heard nothing yet waits at its end for
+//                  a first chunk (0.25)
 //   ~max_seconds   a recording stops growing after this long (30)
 //   ~save_dir      when set, each clip is also written to ~save_dir/NNNN_<action>.wav
 //   ~poll_hz       how often the record parameter is read (200)
@@ -31,6 +41,8 @@
 #include "common/error.h"
 #include "node_main.h"
 #include "robot/portaudio_recorder.h"
+#include "robot/recorder.h"
+#include "robot/ros/audio_topic_recorder.h"
 #include "robot/ros/clip_message.h"
 #include "robot/ros/ros_messages.h"
 #include "robot/ros/ros_protocol.h"
@@ -41,18 +53,18 @@ namespace names = echoplan::robot::ros_names;
 using echoplan::audio::AudioClip;
 
 // The clips the simulated robot publishes while a recording runs, concatenated.
-class SimulatedSource {
+class SimulatedSource final : public echoplan::robot::Recorder {
  public:
   SimulatedSource(ros::NodeHandle& node, double wait_s) : wait_s_(wait_s) {
     sub_ = node.subscribe(names::kSimClipTopic, 8, &SimulatedSource::on_clip, this,
                           ros::TransportHints().tcpNoDelay());
   }
-  void start() {
+  void start(const std::string& /*action*/) override {
     recording_ = true;
     heard_.reset();
   }
   // Waits (spinning) up to wait_s for a clip when none has arrived yet.
-  AudioClip stop() {
+  AudioClip stop() override {
     const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(wait_s_);
     while (!heard_ && ros::ok() && ros::WallTime::now() < deadline) {
       ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.001));
@@ -92,35 +104,66 @@ T private_param(ros::NodeHandle& priv, const char* name, T fallback) {
   return value;
 }
 
-int run(ros::NodeHandle& node, ros::NodeHandle& priv) {
+// The recorder ~source chooses, and what the message of a recording that failed states.
+struct Source {
+  std::unique_ptr<echoplan::robot::Recorder> recorder;
+  const echoplan::robot::PortAudioRecorder* microphone = nullptr;  // for its stream errors
+  int sample_rate = 0;  // of a failed recording's message (0: not known)
+  int channels = 0;
+};
+
+Source microphone_source(ros::NodeHandle& priv, double max_seconds) {
+  echoplan::robot::CaptureConfig config;
+  config.device = private_param<std::string>(priv, "device", "");
+  config.sample_rate = private_param<int>(priv, "rate", 44100);
+  config.channels = private_param<int>(priv, "channels", 2);
+  config.max_seconds = max_seconds;
+  auto microphone = std::make_unique<echoplan::robot::PortAudioRecorder>(config);
+  ROS_INFO("listening on [%d] %s (%d channels, %d Hz)", microphone->device().index,
+           microphone->device().name.c_str(), config.channels, config.sample_rate);
+  Source source{nullptr, microphone.get(), config.sample_rate, config.channels};
+  source.recorder = std::move(microphone);
+  return source;
+}
+
+Source topic_source(ros::NodeHandle& node, ros::NodeHandle& priv, double max_seconds) {
+  echoplan::robot::TopicCaptureConfig config;
+  config.topic = private_param<std::string>(priv, "audio_topic", "/audio/audio");
+  config.sample_rate = private_param<int>(priv, "rate", 44100);
+  config.channels = private_param<int>(priv, "channels", 2);
+  config.sample_format = private_param<std::string>(priv, "sample_format", "S16LE");
+  config.first_chunk_wait_s = private_param<double>(priv, "first_chunk_wait_s", 0.25);
+  config.info_topic = private_param<std::string>(priv, "audio_info_topic", config.topic + "_info");
+  config.max_seconds = max_seconds;
+  Source source{std::make_unique<echoplan::robot::AudioTopicRecorder>(node, config), nullptr,
+                config.sample_rate, config.channels};
+  ROS_INFO("listening to %s (%s, %d channels, %d Hz)", config.topic.c_str(),
+           config.sample_format.c_str(), config.channels, config.sample_rate);
+  return source;
+}
+
+Source make_source(ros::NodeHandle& node, ros::NodeHandle& priv) {
   const std::string source = private_param<std::string>(priv, "source", "microphone");
+  const double max_seconds = private_param<double>(priv, "max_seconds", 30.0);
+  if (source == "microphone") return microphone_source(priv, max_seconds);
+  if (source == "topic") return topic_source(node, priv, max_seconds);
+  if (source != "simulation")
+    throw echoplan::InputError(
+        "~source", 0, fmt::format("'{}' is not 'microphone', 'simulation' or 'topic'", source));
+  ROS_INFO("listening to the simulated robot on %s", names::kSimClipTopic);
+  return Source{
+      std::make_unique<SimulatedSource>(node, private_param<double>(priv, "sim_clip_wait_s", 5.0))};
+}
+
+int run(ros::NodeHandle& node, ros::NodeHandle& priv) {
   const std::string save_dir = private_param<std::string>(priv, "save_dir", "");
   const double poll_hz = private_param<double>(priv, "poll_hz", 200.0);
   const bool cached_param = private_param<bool>(priv, "cached_param", false);
   auto read_param = [cached_param](const char* name, auto& value) {
     return cached_param ? ros::param::getCached(name, value) : ros::param::get(name, value);
   };
-  if (source != "microphone" && source != "simulation")
-    throw echoplan::InputError("~source", 0,
-                               fmt::format("'{}' is not 'microphone' or 'simulation'", source));
+  const Source source = make_source(node, priv);
   if (!save_dir.empty()) std::filesystem::create_directories(save_dir);
-
-  std::unique_ptr<echoplan::robot::PortAudioRecorder> microphone;
-  std::unique_ptr<SimulatedSource> simulated;
-  if (source == "microphone") {
-    echoplan::robot::CaptureConfig config;
-    config.device = private_param<std::string>(priv, "device", "");
-    config.sample_rate = private_param<int>(priv, "rate", 44100);
-    config.channels = private_param<int>(priv, "channels", 2);
-    config.max_seconds = private_param<double>(priv, "max_seconds", 30.0);
-    microphone = std::make_unique<echoplan::robot::PortAudioRecorder>(config);
-    ROS_INFO("listening on [%d] %s (%d channels, %d Hz)", microphone->device().index,
-             microphone->device().name.c_str(), config.channels, config.sample_rate);
-  } else {
-    simulated = std::make_unique<SimulatedSource>(
-        node, private_param<double>(priv, "sim_clip_wait_s", 5.0));
-    ROS_INFO("listening to the simulated robot on %s", names::kSimClipTopic);
-  }
 
   ros::Publisher clips = node.advertise<echoplan_ros::Clip>(names::kClipTopic, 4);
   ros::Publisher states =
@@ -146,8 +189,7 @@ int run(ros::NodeHandle& node, ros::NodeHandle& priv) {
       action.clear();
       read_param(names::kRecordActionParam, action);
       try {
-        if (microphone) microphone->start(action);
-        if (simulated) simulated->start();
+        source.recorder->start(action);
         recording = true;
         publish_state(true, action, "");
       } catch (const std::exception& e) {
@@ -165,10 +207,10 @@ int run(ros::NodeHandle& node, ros::NodeHandle& priv) {
       message.sequence = ++sequence;
       message.action = action;
       try {
-        const AudioClip clip = microphone ? microphone->stop() : simulated->stop();
+        const AudioClip clip = source.recorder->stop();
         echoplan::robot::fill_message(clip, message);
-        if (microphone && !microphone->last_report().stream_error.empty())
-          message.error = microphone->last_report().stream_error;
+        if (source.microphone && !source.microphone->last_report().stream_error.empty())
+          message.error = source.microphone->last_report().stream_error;
         if (!save_dir.empty()) {
           message.path =
               (std::filesystem::path(save_dir) / fmt::format("{:04d}_{}.wav", sequence, action))
@@ -178,8 +220,8 @@ int run(ros::NodeHandle& node, ros::NodeHandle& priv) {
       } catch (const std::exception& e) {
         ROS_ERROR("recording '%s' failed: %s", action.c_str(), e.what());
         message.error = e.what();
-        message.sample_rate = microphone ? microphone->config().sample_rate : 0;
-        message.channels = microphone ? microphone->config().channels : 0;
+        message.sample_rate = source.sample_rate;
+        message.channels = source.channels;
       }
       clips.publish(message);
       publish_state(false, action, "");

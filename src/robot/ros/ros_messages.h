@@ -1,4 +1,5 @@
-// The echoplan_ros messages and services, usable from C++20.
+// The echoplan_ros messages and services, and audio_common_msgs' AudioData and AudioInfo, usable
+// from C++20.
 //
 // Debian's roscpp_serialization (1.15) serializes std::vector fields through
 // `ContainerAllocator::rebind<T>::other`, which C++20 removed from std::allocator, so any message
@@ -16,7 +17,7 @@
 
 namespace ros::serialization {
 
-// float32[] and float64[]: fixed-size simple elements, copied as raw memory.
+// uint8[], float32[] and float64[]: fixed-size simple elements, copied as raw memory.
 template <typename T>
 struct SimpleVectorSerializer {
   using VecType = std::vector<T>;
@@ -45,6 +46,9 @@ struct SimpleVectorSerializer {
 template <>
 struct VectorSerializer<float, std::allocator<float>, void> : SimpleVectorSerializer<float> {};
 template <>
+struct VectorSerializer<unsigned char, std::allocator<unsigned char>, void>
+    : SimpleVectorSerializer<unsigned char> {};
+template <>
 struct VectorSerializer<double, std::allocator<double>, void> : SimpleVectorSerializer<double> {};
 
 // string[]: each element length-prefixed.
@@ -72,6 +76,8 @@ struct VectorSerializer<std::string, std::allocator<std::string>, void> {
 
 }  // namespace ros::serialization
 
+#include <audio_common_msgs/AudioData.h>
+#include <audio_common_msgs/AudioInfo.h>
 #include <echoplan_ros/BeginTrial.h>
 #include <echoplan_ros/Clip.h>
 #include <echoplan_ros/ExecuteAction.h>
