@@ -36,6 +36,7 @@ packages=(
   # ROS 1 from Debian (docs/real-robot.md): nodes, their services, a master and roslaunch for the ros_* tests
   libroscpp-dev catkin ros-message-generation libstd-msgs-dev
   python3-roslaunch python3-rosparam python3-rosservice python3-rostest librostest-dev
+  python3-rospy              # tests/robot/ros/audio_capture_stand_in.py: a stand-in audio_capture node
 )
 
 install_deps() {

@@ -188,6 +188,7 @@ void open_dataset_world(Campaign& c) {
   c.results.config = c.config;
   c.results.planned_trials = c.config.total_trials();
   c.results.right_action = right_actions(*c.dataset);
+  c.results.sensing_actions = static_cast<int>(c.dataset->data->actions.size());
 }
 
 }  // namespace

@@ -148,6 +148,64 @@ Drawing confusion_drawing(const CampaignResults& results, const std::string& arm
   return d;
 }
 
+// Each arm's accuracy against its mean number of sensing actions per trial: where a strategy sits
+// between deciding early and performing every behaviour.
+Drawing tradeoff_drawing(const CampaignResults& results, int sensing, const fs::path& data_dir) {
+  Drawing d;
+  d.figure.stem = "accuracy_vs_actions";
+  d.figure.title = "Accuracy against sensing actions per trial, per arm";
+  d.figure.caption =
+      "Each point is an arm over all its trials: the share sorted right against the mean number of "
+      "sensing actions it performed before sorting.";
+  d.width = 700;
+  d.height = 500;
+  std::string data;
+  int index = 0;
+  for (const SummaryRow& row : summary_rows(results)) {
+    if (row.scope != RowScope::all) continue;
+    double actions = 0.0;
+    for (int a = 0; a < sensing; ++a) actions += row.summary.mean_action_counts.at(a);
+    data += fmt::format("{} {} {} {}\n", index++, actions, row.summary.accuracy,
+                        gnuplot_text(row.arm));
+  }
+  std::ofstream(data_dir / "tradeoff.dat") << data;
+  d.commands =
+      "set xlabel 'mean sensing actions per trial'\nset ylabel 'sorted right'\n"
+      "set yrange [0:1.05]\nset xrange [0:*]\nset grid\nset key off\n"
+      "plot 'tradeoff.dat' using 2:3 with points pt 7 ps 2, '' using 2:3:4 with labels offset "
+      "0,1 noenhanced\n";
+  return d;
+}
+
+// How often each arm chose each sensing action: mean uses per trial.
+Drawing action_use_drawing(const CampaignResults& results, int sensing, const fs::path& data_dir) {
+  Drawing d;
+  d.figure.stem = "actions_chosen";
+  d.figure.title = "How often each arm chose each sensing action";
+  d.figure.caption = "Mean number of times each sensing action was performed per trial, per arm.";
+  d.width = std::max(700, 90 * sensing * static_cast<int>(results.config.arms.size()) / 2);
+  d.height = 500;
+  std::string data = "action";
+  for (const CampaignArm& arm : results.config.arms) data += " " + gnuplot_text(arm.name);
+  data += "\n";
+  std::vector<std::vector<double>> uses;
+  for (const SummaryRow& row : summary_rows(results))
+    if (row.scope == RowScope::all) uses.push_back(row.summary.mean_action_counts);
+  for (int a = 0; a < sensing; ++a) {
+    data += gnuplot_text(results.spec.action_names[a]);
+    for (const std::vector<double>& arm : uses) data += fmt::format(" {}", arm.at(a));
+    data += "\n";
+  }
+  std::ofstream(data_dir / "actions_chosen.dat") << data;
+  d.commands = fmt::format(
+      "set style data histograms\nset style histogram clustered gap 1\nset style fill solid "
+      "0.8 border -1\nset ylabel 'uses per trial'\nset xtics rotate by 30 right noenhanced\n"
+      "set key top right noenhanced\nset grid ytics\nset yrange [0:*]\n"
+      "plot for [c=2:{}] 'actions_chosen.dat' using c:xtic(1) title columnhead\n",
+      results.config.arms.size() + 1);
+  return d;
+}
+
 Drawing templates_drawing(const std::vector<TemplateMatrix>& templates, const fs::path& data_dir) {
   std::vector<std::string> objects, actions;
   for (const TemplateMatrix& t : templates) {
@@ -271,7 +329,14 @@ std::vector<Figure> draw_figures(const fs::path& directory, const CampaignResult
   const TemporaryFolder work("echoplan-figures");
   std::vector<Drawing> drawings;
   if (!templates.empty()) drawings.push_back(templates_drawing(templates, work.path()));
+  if (results.config.world.type == WorldType::dataset) {
+    // A belief panel per trial and a confusion matrix per object would be hundreds of figures: a
+    // dataset's page compares the arms instead.
+    drawings.push_back(tradeoff_drawing(results, results.sensing_actions, work.path()));
+    drawings.push_back(action_use_drawing(results, results.sensing_actions, work.path()));
+  }
   for (const CampaignArm& arm : results.config.arms) {
+    if (results.config.world.type == WorldType::dataset) break;
     for (const ObjectGroup& group : results.config.groups) {
       const bool any = std::any_of(
           results.entries.begin(), results.entries.end(),

@@ -31,6 +31,7 @@ struct CampaignResults {
   // A dataset world's sorting: right_action[s] sorts true state s right (summarize()); empty for
   // other worlds, whose accuracy is the final belief's mode.
   std::vector<int> right_action;
+  int sensing_actions = 0;  // a dataset world's sensing actions (the first actions), for figures
 };
 
 // Which trials a summary row covers.

@@ -58,19 +58,24 @@ std::ofstream open_manifest(const std::filesystem::path& path) {
   manifest << "file,object,action,seed,collision,duration_s,impacts";
   for (const auto& [name, value] : ActionVariation{}.named()) manifest << ',' << name;
   for (const auto& [name, value] : ObjectPlacement{}.named()) manifest << ',' << name;
+  // Last, so readers of the columns before it find them where they were: recording i of every
+  // action of an object is its exploration (session) i + 1, so the set is a dataset world's data
+  // as it stands (docs/feature-sets.md).
+  manifest << ",session";
   manifest << '\n' << std::flush;
   return manifest;
 }
 
 // One clip's manifest row (without its newline).
 std::string manifest_row(const std::string& relative, const std::string& object,
-                         const std::string& action, std::uint64_t seed,
+                         const std::string& action, int index, std::uint64_t seed,
                          const ActionOutcome& outcome) {
   std::string row =
       fmt::format("{},{},{},{},{},{:.4f},{}", relative, object, action, seed,
                   outcome.collision() ? 1 : 0, outcome.duration_s, outcome.trace.impacts.size());
   for (const auto& [name, value] : outcome.variation.named()) row += fmt::format(",{:.6g}", value);
   for (const auto& [name, value] : outcome.placement.named()) row += fmt::format(",{:.6g}", value);
+  row += fmt::format(",{}", index + 1);
   return row;
 }
 
@@ -142,7 +147,7 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
         const fs::path partial = final_path.string() + ".part";
         audio::write_audio(partial.string(), r.clip, audio::WriteOptions{});
         move_into_place(partial, final_path);
-        std::string row = manifest_row(relative, job.object, action, seed, r.outcome);
+        std::string row = manifest_row(relative, job.object, action, job.index, seed, r.outcome);
         std::lock_guard lock(mutex);
         done[k] = Done{relative, std::move(row), r.outcome.collision()};
         for (; next_row < done.size() && done[next_row]; ++next_row) {

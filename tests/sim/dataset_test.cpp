@@ -54,6 +54,10 @@ TEST(Dataset, WritesEveryPairAndAManifestThatReproducesEachFile) {
   EXPECT_EQ(rows[0].rfind("file,object,action,seed,collision,duration_s,impacts,impact_speed,", 0),
             0u)
       << rows[0];
+  // The session column comes last: recording i of each action of an object is session i + 1.
+  EXPECT_TRUE(rows[0].ends_with(",session")) << rows[0];
+  EXPECT_TRUE(rows[1].ends_with(",1")) << rows[1];
+  EXPECT_TRUE(rows[2].ends_with(",2")) << rows[2];
   EXPECT_TRUE(fs::exists(dir / "plastic_cup/strike/001.wav"));
   EXPECT_TRUE(fs::exists(dir / "coffee_mug/slide/000.wav"));
 
