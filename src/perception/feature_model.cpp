@@ -87,6 +87,24 @@ void measure(ActionFit& fit, const ModalityScores& scores, const std::vector<int
   fit.fused_accuracy = right / n;
 }
 
+// [fold] the table shrunk with `strength` from the decisions of every other inner fold: the
+// table each fold's sequences are scored with when the tempering is fitted.
+std::vector<Table> cross_fitted_tables(const TrainingRows& t, const std::vector<int>& decisions,
+                                       std::span<const int> bin_of_class, int num_folds,
+                                       double strength) {
+  const std::size_t classes = bin_of_class.size();
+  std::vector<Table> tables;
+  for (int f = 0; f < num_folds; ++f) {
+    std::vector<std::vector<double>> counts(classes, std::vector<double>(classes, 0.0));
+    for (std::size_t i = 0; i < t.rows.size(); ++i)
+      if (t.fold[i] != f)
+        counts[static_cast<std::size_t>(t.labels[i])][static_cast<std::size_t>(decisions[i])] +=
+            1.0;
+    tables.push_back(shrink_counts(counts, bin_of_class, strength));
+  }
+  return tables;
+}
+
 // Each inner-held-out session's sequence of fused decisions for this action.
 std::vector<Sequence> sequences_of(const ActionData& action, const TrainingRows& t,
                                    const std::vector<int>& decisions) {
@@ -94,6 +112,7 @@ std::vector<Sequence> sequences_of(const ActionData& action, const TrainingRows&
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     Sequence& s = by_session[action.rows[static_cast<std::size_t>(t.rows[i])].session];
     s.true_class = t.labels[i];
+    s.table = t.fold[i];
     s.symbols.push_back(decisions[i]);
   }
   std::vector<Sequence> sequences;
@@ -163,7 +182,9 @@ struct FeatureModelFitter {
     fit.weights = fusion.weights;
     const ShrunkTable shrunk = shrink_counts(counts, task.bin_of_class);
     fit.shrinkage_strength = shrunk.strength;
-    fit.temper = fit_temper(shrunk.table, sequences_of(action, t, decisions));
+    fit.temper =
+        fit_temper(cross_fitted_tables(t, decisions, task.bin_of_class, num_folds, shrunk.strength),
+                   sequences_of(action, t, decisions));
     model.table_.push_back(temper(shrunk.table, fit.temper));
     model.fits_.push_back(std::move(fit));
     std::vector<std::shared_ptr<const FeatureClassifier>> final_classifiers;

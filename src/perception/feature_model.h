@@ -18,7 +18,8 @@
 //     bin), estimated over all classes of the action); then tempered for repeated performances:
 //     rows p^beta renormalised, beta in (0, 1] per action minimising the NLL of the true class
 //     after each inner-held-out session's whole sequence of that action's observations (repeats of
-//     one action on one object are correlated; the untempered iid product is overconfident).
+//     one action on one object are correlated; the untempered iid product is overconfident), each
+//     sequence scored with the table of the other inner folds' decisions.
 // Symbols are the task's classes (no `unknown`: every trial's object is one of the set's).
 #pragma once
 

@@ -19,7 +19,7 @@ struct Derivatives {
 };
 
 Derivatives derivatives(const ModalityScores& scores, std::span<const int> labels,
-                        std::span<const double> weights) {
+                        const std::vector<double>& weights) {
   const auto m_count = static_cast<Eigen::Index>(scores.size());
   Derivatives d{Eigen::VectorXd::Zero(m_count), Eigen::MatrixXd::Zero(m_count, m_count)};
   for (std::size_t i = 0; i < labels.size(); ++i) {
@@ -78,7 +78,7 @@ std::vector<double> newton_step(const ModalityScores& scores, std::span<const in
 }  // namespace
 
 std::vector<double> fuse(const std::vector<std::vector<double>>& scores,
-                         std::span<const double> weights) {
+                         const std::vector<double>& weights) {
   std::vector<double> fused(scores.front().size(), 0.0);
   for (std::size_t m = 0; m < scores.size(); ++m)
     if (weights[m] != 0.0)
@@ -87,7 +87,7 @@ std::vector<double> fuse(const std::vector<std::vector<double>>& scores,
 }
 
 double fused_mean_nll(const ModalityScores& scores, std::span<const int> labels,
-                      std::span<const double> weights) {
+                      const std::vector<double>& weights) {
   double total = 0.0;
   std::vector<std::vector<double>> example(scores.size());
   for (std::size_t i = 0; i < labels.size(); ++i) {

@@ -26,11 +26,11 @@ struct Fusion {
 
 // sum_m weights[m] * scores[m] for one example (scores[m] is one modality's log-scores).
 std::vector<double> fuse(const std::vector<std::vector<double>>& scores,
-                         std::span<const double> weights);
+                         const std::vector<double>& weights);
 
 // Mean NLL of `labels` under softmax(fused log-scores) with `weights`.
 double fused_mean_nll(const ModalityScores& scores, std::span<const int> labels,
-                      std::span<const double> weights);
+                      const std::vector<double>& weights);
 
 // The weights as above. Requires at least one modality and one example (std::invalid_argument).
 Fusion fit_fusion(const ModalityScores& scores, std::span<const int> labels);

@@ -88,14 +88,19 @@ ShrunkTable shrink_counts(const std::vector<std::vector<double>>& counts,
   const double log_a =
       golden_minimum([&](double x) { return -log_marginal(counts, prior, std::exp(x)); },
                      std::log(1e-2), std::log(1e6));
-  ShrunkTable shrunk{prior, std::exp(log_a)};
+  return {shrink_counts(counts, bin_of_class, std::exp(log_a)), std::exp(log_a)};
+}
+
+Table shrink_counts(const std::vector<std::vector<double>>& counts,
+                    std::span<const int> bin_of_class, double strength) {
+  Table table = pooled_prior(counts, bin_of_class);
   for (std::size_t c = 0; c < counts.size(); ++c) {
     double n = 0.0;
     for (double count : counts[c]) n += count;
     for (std::size_t o = 0; o < counts[c].size(); ++o)
-      shrunk.table[c][o] = (counts[c][o] + shrunk.strength * prior[c][o]) / (n + shrunk.strength);
+      table[c][o] = (counts[c][o] + strength * table[c][o]) / (n + strength);
   }
-  return shrunk;
+  return table;
 }
 
 Table temper(const Table& table, double beta) {
@@ -108,15 +113,18 @@ Table temper(const Table& table, double beta) {
   return tempered;
 }
 
-double sequence_nll(const Table& table, double beta, std::span<const Sequence> sequences) {
-  const Table tempered = temper(table, beta);
+double sequence_nll(std::span<const Table> tables, double beta,
+                    std::span<const Sequence> sequences) {
+  std::vector<Table> tempered;
+  for (const Table& table : tables) tempered.push_back(temper(table, beta));
   double total = 0.0;
-  std::vector<double> log_posterior(table.size());
+  std::vector<double> log_posterior(tables.front().size());
   for (const Sequence& sequence : sequences) {
+    const Table& table = tempered.at(static_cast<std::size_t>(sequence.table));
     std::fill(log_posterior.begin(), log_posterior.end(), 0.0);
     for (int symbol : sequence.symbols)
       for (std::size_t c = 0; c < table.size(); ++c)
-        log_posterior[c] += std::log(tempered[c][static_cast<std::size_t>(symbol)]);
+        log_posterior[c] += std::log(table[c][static_cast<std::size_t>(symbol)]);
     const double top = *std::max_element(log_posterior.begin(), log_posterior.end());
     double sum = 0.0;
     for (double l : log_posterior) sum += std::exp(l - top);
@@ -125,13 +133,25 @@ double sequence_nll(const Table& table, double beta, std::span<const Sequence> s
   return total;
 }
 
-double fit_temper(const Table& table, std::span<const Sequence> sequences) {
+double sequence_nll(const Table& table, double beta, std::span<const Sequence> sequences) {
+  std::vector<Sequence> one_table(sequences.begin(), sequences.end());
+  for (Sequence& s : one_table) s.table = 0;
+  return sequence_nll(std::span<const Table>(&table, 1), beta, one_table);
+}
+
+double fit_temper(std::span<const Table> tables, std::span<const Sequence> sequences) {
   if (sequences.empty()) return 1.0;
   constexpr double kLowest = 0.02;
   const double beta =
-      golden_minimum([&](double b) { return sequence_nll(table, b, sequences); }, kLowest, 1.0);
+      golden_minimum([&](double b) { return sequence_nll(tables, b, sequences); }, kLowest, 1.0);
   // The search never evaluates the end points; keep 1 (no tempering) when it is at least as good.
-  return sequence_nll(table, 1.0, sequences) <= sequence_nll(table, beta, sequences) ? 1.0 : beta;
+  return sequence_nll(tables, 1.0, sequences) <= sequence_nll(tables, beta, sequences) ? 1.0 : beta;
+}
+
+double fit_temper(const Table& table, std::span<const Sequence> sequences) {
+  std::vector<Sequence> one_table(sequences.begin(), sequences.end());
+  for (Sequence& s : one_table) s.table = 0;
+  return fit_temper(std::span<const Table>(&table, 1), one_table);
 }
 
 }  // namespace echoplan::perception

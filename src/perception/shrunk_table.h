@@ -12,7 +12,10 @@
 // Tempering. Repeated performances of one action on one object are correlated, so the iid product
 // of table rows becomes overconfident over a session's sequence. Rows are replaced by p^beta
 // renormalised, beta in [0.02, 1] minimising the NLL of the true class under the uniform-prior
-// posterior after each held-out sequence (golden-section search).
+// posterior after each held-out sequence (golden-section search). Each sequence is scored with a
+// table that did not count its own decisions (FeatureModel: the table of the other inner folds):
+// a table counting them has learnt the very confusions a session repeated, and looks calibrated
+// when it is not.
 #pragma once
 
 #include <span>
@@ -34,20 +37,29 @@ Table pooled_prior(const std::vector<std::vector<double>>& counts,
 // counts[class][symbol] (square: symbols are classes) shrunk as above.
 ShrunkTable shrink_counts(const std::vector<std::vector<double>>& counts,
                           std::span<const int> bin_of_class);
+// The same rows with a given strength (no search).
+Table shrink_counts(const std::vector<std::vector<double>>& counts,
+                    std::span<const int> bin_of_class, double strength);
 
 // One held-out sequence: its true class and the symbols heard, in order.
 struct Sequence {
   int true_class = 0;
   std::vector<int> symbols;
+  int table = 0;  // which of the tables it is scored with (the multi-table functions)
 };
 
 // Rows p^beta, renormalised.
 Table temper(const Table& table, double beta);
 
-// Sum over sequences of -log P(true class | symbols) under temper(table, beta), uniform prior.
+// Sum over sequences of -log P(true class | symbols) under temper(tables[sequence.table], beta),
+// uniform prior.
+double sequence_nll(std::span<const Table> tables, double beta,
+                    std::span<const Sequence> sequences);
+// The same with one table for all sequences.
 double sequence_nll(const Table& table, double beta, std::span<const Sequence> sequences);
 
 // The beta in [0.02, 1] minimising sequence_nll (1 when there are no sequences).
+double fit_temper(std::span<const Table> tables, std::span<const Sequence> sequences);
 double fit_temper(const Table& table, std::span<const Sequence> sequences);
 
 }  // namespace echoplan::perception
