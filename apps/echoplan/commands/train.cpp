@@ -1,6 +1,7 @@
 // `echoplan train`: fit the observation model on a folder of recordings, report its cross-validated
 // confusion, save it as JSON and, optionally, write a problem file that plans with the calibrated
-// table.
+// table. Without --out, the data is a dataset (a feature set or a recordings tree) and train writes
+// its problem (train_dataset.cpp).
 #include <fmt/core.h>
 #include <spdlog/spdlog.h>
 
@@ -10,6 +11,7 @@
 
 #include "commands/commands.h"
 #include "commands/perception_report.h"
+#include "commands/train_dataset.h"
 #include "common/error.h"
 #include "loop/calibrated_problem.h"
 #include "perception/classifier.h"
@@ -21,6 +23,7 @@ namespace echoplan::cli {
 namespace {
 
 struct TrainFlags {
+  DatasetTrainFlags dataset;
   std::string data;
   std::string out;
   std::string problem_out;
@@ -62,6 +65,16 @@ void print_calibration(const TrainFlags& f, const perception::ObservationModel& 
 }
 
 void train(TrainFlags f) {
+  if (f.out.empty()) {
+    f.dataset.data = f.data;
+    f.dataset.problem_out = f.problem_out;
+    train_dataset(f.dataset);
+    return;
+  }
+  if (!f.dataset.groups.empty() || !f.dataset.hold_out.empty())
+    throw InputError(
+        "--groups and --hold-out are for datasets: leave out --out (which saves an "
+        "audio model of recordings) and give --problem-out");
   f.train.reject = !f.no_reject;
   f.train.table = perception::parse_table_estimate(f.table);
   // Read the base problem first: a wrong path should fail before minutes of training.
@@ -94,17 +107,31 @@ void train(TrainFlags f) {
 
 void add_train_command(CLI::App& app) {
   auto opt = std::make_shared<TrainFlags>();
-  auto* cmd = app.add_subcommand("train",
-                                 "Fit the observation model on recordings "
-                                 "DIR/<object>/<action>/*.wav (and DIR/manifest.csv if present):\n"
-                                 "one classifier per action, cross-validated; prints accuracy and "
-                                 "confusion per action and saves the model\n"
-                                 "(JSON) with the calibrated table P(heard | object, action).\n"
-                                 "Example: echoplan train --data recordings --out model.json "
-                                 "--problem-out problems/calibrated.yaml");
-  cmd->add_option("--data", opt->data, "Folder of recordings (e.g. written by `echoplan dataset`)")
+  auto* cmd = app.add_subcommand(
+      "train",
+      "With --out: fit the observation model on recordings DIR/<object>/<action>/*.wav (and "
+      "DIR/manifest.csv if present):\n"
+      "one classifier per action, cross-validated; prints accuracy and confusion per action and "
+      "saves the model\n"
+      "(JSON) with the calibrated table P(heard | object, action).\n"
+      "Example: echoplan train --data recordings --out model.json --problem-out "
+      "problems/calibrated.yaml\n"
+      "Without --out: DIR is a dataset, a feature set DIR/<action>/<modality>.csv or a recordings "
+      "tree; fits a fused,\n"
+      "calibrated model on all of it (docs/feature-sets.md), prints each behaviour's held-out "
+      "accuracy per modality\n"
+      "and fused, and writes --problem-out: the classes, one sensing action per behaviour with "
+      "its use limit,\n"
+      "the sorting actions and rewards, and the calibrated table.\n"
+      "Example: echoplan train --data features --groups features/groups.csv --hold-out object "
+      "--problem-out dataset.yaml");
+  cmd->add_option("--data", opt->data,
+                  "Folder of recordings (e.g. written by `echoplan dataset`), or without --out a "
+                  "feature set")
       ->required();
-  cmd->add_option("-o,--out", opt->out, "Model file to write (JSON)")->required();
+  cmd->add_option("-o,--out", opt->out,
+                  "Model file to write (JSON); without it, DIR is trained as a dataset");
+  add_dataset_train_options(*cmd, opt->dataset);
   std::string names;
   for (const auto& n : perception::classifier_names()) names += (names.empty() ? "" : ", ") + n;
   // Old names are accepted too (make_classifier maps them); the help lists the current ones.

@@ -1,0 +1,30 @@
+// `echoplan train --data DIR` without --out: a dataset (a feature set, or a recordings tree turned
+// into one) fitted into a fused, calibrated FeatureModel on all its sessions, and the planning
+// problem of it written for the user (docs/feature-sets.md, "echoplan train --data").
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "loop/dataset_problem.h"
+
+namespace echoplan::cli {
+
+struct DatasetTrainFlags {
+  std::string data;         // DIR (set by train from its --data)
+  std::string problem_out;  // required (set by train from its --problem-out)
+  std::string groups;       // optional groups file
+  std::string hold_out;     // "session" (default) or "object"
+  std::string classifier = "lda";
+  loop::DatasetRewards rewards;
+};
+
+// Adds --groups, --hold-out, --feature-classifier and the --reward-* options to `cmd`.
+void add_dataset_train_options(CLI::App& cmd, DatasetTrainFlags& flags);
+
+// Loads, fits, prints the held-out accuracies and writes the problem. InputError for bad input
+// (a missing --problem-out, a DIR that is neither kind of data, a groups file that misses an
+// object, too few sessions or objects for the hold-out).
+void train_dataset(const DatasetTrainFlags& flags);
+
+}  // namespace echoplan::cli

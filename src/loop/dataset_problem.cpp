@@ -1,0 +1,59 @@
+#include "loop/dataset_problem.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+#include "common/error.h"
+
+namespace echoplan::loop {
+
+pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
+                                         const perception::FeatureModel& model,
+                                         const DatasetRewards& rewards, std::vector<int> uses) {
+  const auto& actions = model.actions();
+  if (uses.size() != actions.size())
+    throw InputError(fmt::format("{} use limits for {} actions; expected one per action",
+                                 uses.size(), actions.size()));
+  pomdp::ObjectProblemData data;
+  data.name = "dataset";
+  data.discount = 0.99;
+  data.objects = task.classes;
+  data.prior.assign(task.classes.size(), 1.0 / static_cast<double>(task.classes.size()));
+  for (std::size_t a = 0; a < actions.size(); ++a) {
+    if (uses[a] < 0)
+      throw InputError(fmt::format("action '{}': use limit {} is negative", actions[a], uses[a]));
+    pomdp::SensingAction sensing;
+    sensing.name = actions[a];
+    sensing.reward = rewards.sense;
+    sensing.uses = uses[a];
+    data.sensing.push_back(std::move(sensing));
+  }
+  data.sorting = task.bins;
+  for (std::size_t j = 0; j < task.bins.size(); ++j) {
+    std::vector<double> row;
+    for (int bin : task.bin_of_class)
+      row.push_back(bin == static_cast<int>(j) ? rewards.right : rewards.wrong);
+    data.sorting_reward.push_back(std::move(row));
+  }
+  data.observation_symbols = task.classes;
+  data.observation_table = model.table();
+  pomdp::validate_object_problem(data);
+  return data;
+}
+
+std::vector<int> default_uses(const perception::FeatureSet& set) {
+  std::vector<int> uses;
+  for (const perception::ActionData& action : set.actions) {
+    std::map<int, int> per_session;
+    int most = 0;
+    for (const perception::RowLabel& row : action.rows)
+      most = std::max(most, ++per_session[row.session]);
+    uses.push_back(most);
+  }
+  return uses;
+}
+
+}  // namespace echoplan::loop

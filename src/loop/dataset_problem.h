@@ -1,0 +1,36 @@
+// The planning problem of a recorded dataset: identify a trial's class (an object, or its group)
+// by performing the set's behaviours, each at most as often as a session recorded it, then sort it
+// into a bin (docs/feature-sets.md, "The problem of a feature set").
+#pragma once
+
+#include <vector>
+
+#include "perception/dataset_task.h"
+#include "perception/feature_model.h"
+#include "perception/feature_set.h"
+#include "pomdp/object_identification_model.h"
+
+namespace echoplan::loop {
+
+// The rewards: +10 for the right bin, -100 for a wrong one, -1 per behaviour performed.
+struct DatasetRewards {
+  double right = 10.0;
+  double wrong = -100.0;
+  double sense = -1.0;
+};
+
+// The problem: objects = the task's classes with a uniform prior (the datasets are balanced, and a
+// prior from the trials' own frequencies would leak the test split); one sensing action per model
+// action (same order, reward `sense`, no motion, no collision, `uses[a]` its use limit, 0: none);
+// one sorting action per bin, rewarding `right` when the class is in that bin and `wrong`
+// otherwise; observation symbols = the classes; the table = model.table(); discount 0.99 (the
+// report's problems). Throws InputError when `uses` is not one entry per action, or negative.
+pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
+                                         const perception::FeatureModel& model,
+                                         const DatasetRewards& rewards, std::vector<int> uses);
+
+// Per action of `set`: the most performances of that action in any one session (a trial can
+// perform it at most that often).
+std::vector<int> default_uses(const perception::FeatureSet& set);
+
+}  // namespace echoplan::loop

@@ -1,0 +1,238 @@
+#include "perception/feature_model.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+
+#include "common/error.h"
+#include "perception/calibration.h"
+#include "perception/dataset_folds.h"
+#include "perception/modality_fusion.h"
+#include "perception/shrunk_table.h"
+
+namespace echoplan::perception {
+namespace {
+
+// One action's training rows: their indices into the action's rows, classes and inner folds.
+struct TrainingRows {
+  std::vector<int> rows;    // indices into ActionData::rows
+  std::vector<int> labels;  // class of each
+  std::vector<int> fold;    // inner fold of each
+};
+
+TrainingRows training_rows(const DatasetTask& task, const ActionData& action,
+                           const std::vector<int>& fold_of_session) {
+  TrainingRows t;
+  for (int r = 0; r < static_cast<int>(action.rows.size()); ++r) {
+    const RowLabel& label = action.rows[static_cast<std::size_t>(r)];
+    const int fold = fold_of_session[static_cast<std::size_t>(label.session)];
+    if (fold < 0) continue;
+    t.rows.push_back(r);
+    t.labels.push_back(task.class_of_object[static_cast<std::size_t>(label.object)]);
+    t.fold.push_back(fold);
+  }
+  return t;
+}
+
+std::shared_ptr<FeatureClassifier> fit_on(const FeatureClassifier& prototype,
+                                          const Modality& modality, const TrainingRows& t,
+                                          int num_classes, int except_fold) {
+  std::vector<std::vector<double>> rows;
+  std::vector<int> labels;
+  for (std::size_t i = 0; i < t.rows.size(); ++i)
+    if (t.fold[i] != except_fold) {
+      rows.push_back(modality.rows[static_cast<std::size_t>(t.rows[i])]);
+      labels.push_back(t.labels[i]);
+    }
+  std::shared_ptr<FeatureClassifier> classifier = prototype.clone_unfitted();
+  classifier->fit(rows, labels, num_classes);
+  return classifier;
+}
+
+// scores[m][i]: modality m's log-scores for training row i, from the classifier fitted without
+// row i's inner fold.
+ModalityScores held_out_scores(const FeatureClassifier& prototype, const ActionData& action,
+                               const TrainingRows& t, int num_classes, int num_folds) {
+  ModalityScores scores(action.modalities.size(), std::vector<std::vector<double>>(t.rows.size()));
+  for (std::size_t m = 0; m < action.modalities.size(); ++m)
+    for (int f = 0; f < num_folds; ++f) {
+      const auto classifier = fit_on(prototype, action.modalities[m], t, num_classes, f);
+      for (std::size_t i = 0; i < t.rows.size(); ++i)
+        if (t.fold[i] == f)
+          scores[m][i] = classifier->log_scores(
+              action.modalities[m].rows[static_cast<std::size_t>(t.rows[i])]);
+    }
+  return scores;
+}
+
+int best_of(const std::vector<double>& scores) {
+  return static_cast<int>(std::max_element(scores.begin(), scores.end()) - scores.begin());
+}
+
+// The held-out accuracy and NLL of each modality alone (at its fitted temperature) and fused.
+void measure(ActionFit& fit, const ModalityScores& scores, const std::vector<int>& labels,
+             const std::vector<int>& fused_decisions) {
+  const auto n = static_cast<double>(labels.size());
+  for (std::size_t m = 0; m < scores.size(); ++m) {
+    std::vector<double> w(scores.size(), 0.0);
+    w[m] = 1.0 / fit_temperature(scores[m], labels);
+    int right = 0;
+    for (std::size_t i = 0; i < labels.size(); ++i) right += best_of(scores[m][i]) == labels[i];
+    fit.modality_accuracy.push_back(right / n);
+    fit.modality_nll.push_back(fused_mean_nll(scores, labels, w));
+  }
+  int right = 0;
+  for (std::size_t i = 0; i < labels.size(); ++i) right += fused_decisions[i] == labels[i];
+  fit.fused_accuracy = right / n;
+}
+
+// [fold] the table shrunk with `strength` from the decisions of every other inner fold: the
+// table each fold's sequences are scored with when the tempering is fitted.
+std::vector<Table> cross_fitted_tables(const TrainingRows& t, const std::vector<int>& decisions,
+                                       std::span<const int> bin_of_class, int num_folds,
+                                       double strength) {
+  const std::size_t classes = bin_of_class.size();
+  std::vector<Table> tables;
+  for (int f = 0; f < num_folds; ++f) {
+    std::vector<std::vector<double>> counts(classes, std::vector<double>(classes, 0.0));
+    for (std::size_t i = 0; i < t.rows.size(); ++i)
+      if (t.fold[i] != f)
+        counts[static_cast<std::size_t>(t.labels[i])][static_cast<std::size_t>(decisions[i])] +=
+            1.0;
+    tables.push_back(shrink_counts(counts, bin_of_class, strength));
+  }
+  return tables;
+}
+
+// Each inner-held-out session's sequence of fused decisions for this action.
+std::vector<Sequence> sequences_of(const ActionData& action, const TrainingRows& t,
+                                   const std::vector<int>& decisions) {
+  std::map<int, Sequence> by_session;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    Sequence& s = by_session[action.rows[static_cast<std::size_t>(t.rows[i])].session];
+    s.true_class = t.labels[i];
+    s.table = t.fold[i];
+    s.symbols.push_back(decisions[i]);
+  }
+  std::vector<Sequence> sequences;
+  for (auto& [session, sequence] : by_session) sequences.push_back(std::move(sequence));
+  return sequences;
+}
+
+// [session] -> its inner fold, or -1 for sessions outside training.
+std::vector<int> inner_folds(const FeatureSet& set, const DatasetTask& task,
+                             std::span<const int> training, int& num_folds) {
+  std::vector<Fold> folds;
+  try {
+    folds = make_folds(set, task, training);
+  } catch (const InputError& e) {
+    throw InputError(e.file(), e.line(),
+                     "inner cross-validation within the training sessions: " + e.problem());
+  }
+  num_folds = static_cast<int>(folds.size());
+  std::vector<int> fold_of(set.sessions.size(), -1);
+  for (int f = 0; f < num_folds; ++f)
+    for (int s : folds[static_cast<std::size_t>(f)].test_sessions)
+      fold_of[static_cast<std::size_t>(s)] = f;
+  return fold_of;
+}
+
+}  // namespace
+
+struct FeatureModelFitter {
+  const FeatureSet& set;
+  const DatasetTask& task;
+  const FeatureClassifier& prototype;
+  std::vector<int> fold_of_session;
+  int num_folds = 0;
+
+  FeatureModel fit(const ProgressFn& progress) const {
+    FeatureModel model;
+    model.classes_ = task.classes;
+    const int total = static_cast<int>(set.actions.size());
+    for (int a = 0; a < total; ++a) {
+      model.actions_.push_back(set.actions[static_cast<std::size_t>(a)].name);
+      fit_action(model, set.actions[static_cast<std::size_t>(a)]);
+      if (progress) progress("fit", a + 1, total);
+    }
+    return model;
+  }
+
+  // Fits one action: its fusion, table and final classifiers, appended to `model`.
+  void fit_action(FeatureModel& model, const ActionData& action) const {
+    const int num_classes = static_cast<int>(task.classes.size());
+    const TrainingRows t = training_rows(task, action, fold_of_session);
+    const ModalityScores scores = held_out_scores(prototype, action, t, num_classes, num_folds);
+    const Fusion fusion = fit_fusion(scores, t.labels);
+    std::vector<int> decisions(t.rows.size());
+    std::vector<std::vector<double>> counts(task.classes.size(),
+                                            std::vector<double>(task.classes.size(), 0.0));
+    for (std::size_t i = 0; i < t.rows.size(); ++i) {
+      std::vector<std::vector<double>> example(scores.size());
+      for (std::size_t m = 0; m < scores.size(); ++m) example[m] = scores[m][i];
+      decisions[i] = best_of(fuse(example, fusion.weights));
+      counts[static_cast<std::size_t>(t.labels[i])][static_cast<std::size_t>(decisions[i])] += 1.0;
+    }
+    ActionFit fit;
+    fit.action = action.name;
+    for (const Modality& m : action.modalities) fit.modalities.push_back(m.name);
+    measure(fit, scores, t.labels, decisions);
+    fit.fused_nll = fusion.mean_nll;
+    fit.weights = fusion.weights;
+    const ShrunkTable shrunk = shrink_counts(counts, task.bin_of_class);
+    fit.shrinkage_strength = shrunk.strength;
+    fit.temper =
+        fit_temper(cross_fitted_tables(t, decisions, task.bin_of_class, num_folds, shrunk.strength),
+                   sequences_of(action, t, decisions));
+    model.table_.push_back(temper(shrunk.table, fit.temper));
+    model.fits_.push_back(std::move(fit));
+    std::vector<std::shared_ptr<const FeatureClassifier>> final_classifiers;
+    for (const Modality& m : action.modalities)
+      final_classifiers.push_back(fit_on(prototype, m, t, num_classes, -1));
+    model.classifiers_.push_back(std::move(final_classifiers));
+  }
+};
+
+FeatureModel fit_feature_model(const FeatureSet& set, const DatasetTask& task,
+                               std::span<const int> training_sessions,
+                               const FeatureModelOptions& options, const ProgressFn& progress) {
+  std::vector<bool> has_class(task.classes.size(), false);
+  for (int s : training_sessions)
+    has_class[static_cast<std::size_t>(task.class_of_object[static_cast<std::size_t>(
+        set.sessions.at(static_cast<std::size_t>(s)).object)])] = true;
+  for (std::size_t c = 0; c < has_class.size(); ++c)
+    if (!has_class[c])
+      throw InputError(set.root, 0,
+                       fmt::format("class '{}' has no training session", task.classes[c]));
+  const auto prototype = make_feature_classifier(options.classifier);
+  FeatureModelFitter fitter{set, task, *prototype, {}, 0};
+  fitter.fold_of_session = inner_folds(set, task, training_sessions, fitter.num_folds);
+  return fitter.fit(progress);
+}
+
+std::vector<double> FeatureModel::fused_scores(int action, const FeatureSet& set, int row) const {
+  const auto a = static_cast<std::size_t>(action);
+  const ActionData& data = set.actions.at(a);
+  std::vector<std::vector<double>> scores;
+  for (std::size_t m = 0; m < classifiers_.at(a).size(); ++m)
+    scores.push_back(classifiers_[a][m]->log_scores(
+        data.modalities.at(m).rows.at(static_cast<std::size_t>(row))));
+  return fuse(scores, fits_[a].weights);
+}
+
+int FeatureModel::classify(int action, const FeatureSet& set, int row) const {
+  return best_of(fused_scores(action, set, row));
+}
+
+std::vector<double> FeatureModel::probabilities(int action, const FeatureSet& set, int row) const {
+  return softmax(fused_scores(action, set, row), 1.0);
+}
+
+std::vector<double> FeatureModel::held_out_accuracy() const {
+  std::vector<double> accuracy;
+  for (const ActionFit& fit : fits_) accuracy.push_back(fit.fused_accuracy);
+  return accuracy;
+}
+
+}  // namespace echoplan::perception

@@ -1,0 +1,78 @@
+#include "loop/dataset_problem.h"
+
+#include <gtest/gtest.h>
+
+#include "../perception/synthetic_feature_set.h"
+#include "common/error.h"
+#include "perception/dataset_folds.h"
+#include "pomdp/object_identification_model.h"
+
+namespace echoplan::loop {
+namespace {
+
+using perception::test_features::SyntheticSpec;
+
+struct Fitted {
+  perception::FeatureSet set;
+  perception::DatasetTask task;
+  perception::FeatureModel model;
+};
+
+// 6 objects in groups of 3, two actions (strike performed twice per session, press once).
+Fitted fitted() {
+  const auto dir = perception::test_features::fresh_folder("dataset_problem");
+  SyntheticSpec spec;
+  spec.objects = 6;
+  spec.group_size = 3;
+  spec.actions = {"press", "strike"};
+  spec.repeats = 1;
+  perception::test_features::write_synthetic_feature_set(dir, spec);
+  spec.actions = {"strike"};
+  spec.repeats = 2;
+  perception::test_features::write_synthetic_feature_set(dir, spec);
+  Fitted f{perception::load_feature_set(dir.string()), {}, {}};
+  const auto groups = perception::load_groups((dir / "groups.csv").string());
+  f.task = perception::make_dataset_task(f.set, &groups, perception::HoldOut::session);
+  std::vector<int> all(f.set.sessions.size());
+  for (std::size_t s = 0; s < all.size(); ++s) all[s] = static_cast<int>(s);
+  f.model = perception::fit_feature_model(f.set, f.task, all);
+  return f;
+}
+
+TEST(DatasetProblem, ObjectsAreClassesSortingIsByBinAndTheTableIsTheModels) {
+  const Fitted f = fitted();
+  EXPECT_EQ(default_uses(f.set), (std::vector<int>{1, 2}));
+  const pomdp::ObjectProblemData p = dataset_problem(f.task, f.model, {}, default_uses(f.set));
+  EXPECT_EQ(p.objects, f.set.objects);
+  EXPECT_EQ(p.prior, std::vector<double>(6, 1.0 / 6));
+  ASSERT_EQ(p.sensing.size(), 2u);
+  EXPECT_EQ(p.sensing[0].name, "press");
+  EXPECT_EQ(p.sensing[1].name, "strike");
+  EXPECT_EQ(p.sensing[1].uses, 2);
+  EXPECT_EQ(p.sensing[0].reward, -1.0);
+  EXPECT_EQ(p.sorting, (std::vector<std::string>{"group0", "group1"}));
+  // obj0-2 are group0: sorting into group0 earns 10 for them and -100 for obj3-5.
+  EXPECT_EQ(p.sorting_reward[0], (std::vector<double>{10, 10, 10, -100, -100, -100}));
+  EXPECT_EQ(p.sorting_reward[1], (std::vector<double>{-100, -100, -100, 10, 10, 10}));
+  EXPECT_EQ(p.observation_symbols, f.set.objects);
+  EXPECT_EQ(p.observation_table, f.model.table());
+  EXPECT_EQ(p.discount, 0.99);
+  // A model of it plans with the limits.
+  const pomdp::ObjectIdentificationModel model(p);
+  EXPECT_EQ(model.max_uses(1), 2);
+}
+
+TEST(DatasetProblem, RewardsAndUsesAreTheCallers) {
+  const Fitted f = fitted();
+  const auto p = dataset_problem(f.task, f.model, {1.0, -5.0, -0.5}, {0, 3});
+  EXPECT_EQ(p.sensing[0].uses, 0);
+  EXPECT_EQ(p.sensing[1].uses, 3);
+  EXPECT_EQ(p.sensing[1].reward, -0.5);
+  EXPECT_EQ(p.sorting_reward[1][5], 1.0);
+  EXPECT_EQ(p.sorting_reward[1][0], -5.0);
+  EXPECT_THROW(dataset_problem(f.task, f.model, {}, {1}), InputError);
+  EXPECT_THROW(dataset_problem(f.task, f.model, {}, {1, -1}), InputError);
+}
+
+}  // namespace
+}  // namespace echoplan::loop

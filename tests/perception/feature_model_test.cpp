@@ -1,0 +1,182 @@
+#include "perception/feature_model.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "common/error.h"
+#include "perception/dataset_folds.h"
+#include "perception/shrunk_table.h"
+#include "synthetic_feature_set.h"
+
+namespace echoplan::perception {
+namespace {
+
+using test_features::SyntheticSpec;
+
+FeatureSet synthetic(const SyntheticSpec& spec, const std::string& name) {
+  const auto dir = test_features::fresh_folder(name);
+  test_features::write_synthetic_feature_set(dir, spec);
+  return load_feature_set(dir.string());
+}
+
+// The fused decisions of `model` on the rows of `fold`: fraction right.
+double test_accuracy(const FeatureModel& model, const FeatureSet& set, const DatasetTask& task,
+                     const Fold& fold, int action = 0) {
+  int right = 0, total = 0;
+  const ActionData& data = set.actions[static_cast<std::size_t>(action)];
+  for (int r = 0; r < static_cast<int>(data.rows.size()); ++r) {
+    const RowLabel& label = data.rows[static_cast<std::size_t>(r)];
+    if (!std::binary_search(fold.test_sessions.begin(), fold.test_sessions.end(), label.session))
+      continue;
+    right += model.classify(action, set, r) == task.class_of_object[label.object];
+    ++total;
+  }
+  return static_cast<double>(right) / total;
+}
+
+TEST(FeatureModel, WellSeparatedObjectsAreRecognisedAndTheTableSaysSo) {
+  SyntheticSpec spec;
+  spec.objects = 8;
+  spec.modalities = {{"audio", 8, 10.0}};  // object means ~40 noise sd apart: near-certain
+  const FeatureSet set = synthetic(spec, "fm_separated");
+  const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
+  const auto folds = make_folds(set, task);
+  const FeatureModel model = fit_feature_model(set, task, training_sessions(set, folds[0]));
+  EXPECT_EQ(model.classes(), set.objects);
+  EXPECT_EQ(model.held_out_accuracy(), std::vector<double>{1.0});
+  EXPECT_EQ(test_accuracy(model, set, task, folds[0]), 1.0);
+  for (std::size_t c = 0; c < 8; ++c) {
+    double sum = 0.0;
+    for (double p : model.table()[0][c]) {
+      EXPECT_GT(p, 0.0);
+      sum += p;
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-9);
+    EXPECT_GT(model.table()[0][c][c], 0.8);
+  }
+}
+
+TEST(FeatureModel, ANoiseModalityIsWeighedOutAndFusionIsNoWorseThanTheBestModality) {
+  SyntheticSpec spec;
+  spec.objects = 20;
+  spec.modalities = {{"audio", 5, 1.0}, {"haptic", 20, 0.0}};  // haptic: pure noise
+  const FeatureSet set = synthetic(spec, "fm_noise");
+  const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
+  const auto folds = make_folds(set, task);
+  const FeatureModel model = fit_feature_model(set, task, training_sessions(set, folds[0]));
+  const ActionFit& fit = model.fits()[0];
+  ASSERT_EQ(fit.modalities, (std::vector<std::string>{"audio", "haptic"}));
+  EXPECT_LT(fit.modality_accuracy[1], 0.2);  // chance is 0.05
+  EXPECT_GT(fit.modality_accuracy[0], 0.25);
+  // Fitted on 80 held-out rows, the noise keeps a little weight (modality_fusion_test shows it
+  // vanishing with 2000).
+  EXPECT_LT(fit.weights[1], 0.25 * fit.weights[0]);
+  EXPECT_LE(fit.fused_nll, fit.modality_nll[0] + 1e-9);
+  EXPECT_GE(fit.fused_accuracy, fit.modality_accuracy[0] - 0.02);
+}
+
+TEST(FeatureModel, TemperingKeepsCorrelatedRepeatsFromBecomingOverconfident) {
+  SyntheticSpec spec;
+  spec.objects = 20;
+  spec.repeats = 6;
+  spec.session_sd = 1.5;  // a session's repeats share an offset as large as the noise
+  spec.modalities = {{"audio", 4, 1.5}};
+  const FeatureSet set = synthetic(spec, "fm_correlated");
+  const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
+  double tempered_nll = 0.0, untempered_nll = 0.0;
+  double untempered_confidence = 0.0, tempered_confidence = 0.0, right = 0.0, n = 0.0;
+  for (const Fold& fold : make_folds(set, task)) {
+    const FeatureModel model = fit_feature_model(set, task, training_sessions(set, fold));
+    const double beta = model.fits()[0].temper;
+    EXPECT_LT(beta, 0.7);
+    const Table& tempered = model.table()[0];
+    const Table untempered = temper(tempered, 1.0 / beta);  // (p^b)^(1/b) renormalised = p
+    for (int s : fold.test_sessions) {
+      Sequence seq{task.class_of_object[set.sessions[s].object], {}};
+      for (int r = 0; r < static_cast<int>(set.actions[0].rows.size()); ++r)
+        if (set.actions[0].rows[r].session == s) seq.symbols.push_back(model.classify(0, set, r));
+      const std::vector<Sequence> one{seq};
+      tempered_nll += sequence_nll(tempered, 1.0, one);
+      untempered_nll += sequence_nll(untempered, 1.0, one);
+      // Confidence in the most probable class, posterior = exp(-NLL) of each class.
+      auto confidence = [&](const Table& t) {
+        double best = 0.0;
+        int best_class = 0;
+        for (int c = 0; c < static_cast<int>(t.size()); ++c) {
+          const double p = std::exp(-sequence_nll(t, 1.0, std::vector<Sequence>{{c, seq.symbols}}));
+          if (p > best) best = p, best_class = c;
+        }
+        return std::pair{best, best_class};
+      };
+      const auto [u, guess] = confidence(untempered);
+      untempered_confidence += u;
+      tempered_confidence += confidence(tempered).first;
+      right += guess == seq.true_class;
+      n += 1.0;
+    }
+  }
+  const double accuracy = right / n;
+  EXPECT_LT(tempered_nll, untempered_nll);
+  EXPECT_GT(untempered_confidence / n, accuracy + 0.1) << "untempered is overconfident";
+  EXPECT_NEAR(tempered_confidence / n, accuracy, 0.1) << "tempered is calibrated";
+}
+
+TEST(FeatureModel, NovelObjectsAreRecognisedByTheirGroup) {
+  SyntheticSpec spec;
+  spec.objects = 20;
+  spec.sessions = 2;
+  spec.group_size = 5;
+  spec.group_separation = 6.0;  // group means ~24 sd apart; objects within a group ~ 4 sd
+  spec.modalities = {{"audio", 8, 1.0}};
+  const auto dir = test_features::fresh_folder("fm_groups");
+  test_features::write_synthetic_feature_set(dir, spec);
+  const FeatureSet set = load_feature_set(dir.string());
+  const ObjectGroups groups = load_groups((dir / "groups.csv").string());
+  const DatasetTask task = make_dataset_task(set, &groups, HoldOut::object);
+  const auto folds = make_folds(set, task);
+  ASSERT_EQ(folds.size(), 5u);
+  for (const char* classifier : {"lda", "nearest-neighbour"}) {
+    double accuracy = 0.0;
+    for (const Fold& fold : folds) {
+      const FeatureModel model =
+          fit_feature_model(set, task, training_sessions(set, fold), {classifier});
+      EXPECT_EQ(model.classes().size(), 4u);
+      accuracy += test_accuracy(model, set, task, fold) / 5.0;
+    }
+    EXPECT_GT(accuracy, 0.95) << classifier;
+  }
+}
+
+TEST(FeatureModel, TrainingWithoutAClassIsAnError) {
+  SyntheticSpec spec;
+  spec.objects = 3;
+  const FeatureSet set = synthetic(spec, "fm_missing");
+  const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
+  const std::vector<int> only_first_two{0, 1, 2, 5, 6, 7};  // object 2's sessions are 10-14
+  EXPECT_THROW(fit_feature_model(set, task, only_first_two), InputError);
+}
+
+// The scale of the largest set: 100 objects x 9 behaviours x 5 sessions, two modalities
+// of 50 features. One fold must fit in seconds (the campaign fits one per fold).
+TEST(FeatureModel, OneFoldAtFullScaleFitsInSeconds) {
+  SyntheticSpec spec;
+  spec.objects = 100;
+  spec.actions = {"a1", "a2", "a3", "a4", "a5", "a6", "a7", "a8", "a9"};
+  spec.modalities = {{"audio", 50, 0.5}, {"haptic", 50, 0.3}};
+  const FeatureSet set = synthetic(spec, "fm_scale");
+  const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
+  const auto folds = make_folds(set, task);
+  const auto start = std::chrono::steady_clock::now();
+  const FeatureModel model = fit_feature_model(set, task, training_sessions(set, folds[0]));
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("one fold, 100 objects x 9 actions x 4 training sessions x 2 x 50 features: %.2f s\n",
+              seconds);
+  EXPECT_LT(seconds, 30.0);
+  EXPECT_EQ(model.table().size(), 9u);
+}
+
+}  // namespace
+}  // namespace echoplan::perception
