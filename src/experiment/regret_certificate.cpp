@@ -71,6 +71,11 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
       if (r.ended)
         throw InputError(steps_file, step.line,
                          fmt::format("trial {} goes on after its episode ended", trial.trial));
+      if (!solver.available(node, step.action))
+        throw InputError(steps_file, step.line,
+                         fmt::format("trial {} takes action {} more often than the problem's use "
+                                     "limit allows",
+                                     trial.trial, step.action));
       if (!solver.refine(node, limits)) ++c.unconverged_beliefs;
       if (!solver.refine_action(node, step.action, limits)) ++c.unconverged_beliefs;
       const solvers::Bounds v = solver.value(node);

@@ -70,9 +70,12 @@ struct Certificate {
   double share_of_vstar() const;
 };
 
-// Certifies `trials` (read from steps.csv) against the exact solver's bounds. Throws InputError
-// naming the steps.csv line of a history the model cannot produce (an observation impossible after
-// the logged history, a step after the episode ended).
+// Certifies `trials` (read from steps.csv) against the exact solver's bounds. With use limits in
+// the solver's tables, each decision is bounded at the node the trial's earlier steps reach, whose
+// counts are the uses so far: V* and the rivals' Q* there exclude the actions already used up.
+// Throws InputError naming the steps.csv line of a history the model cannot produce (an
+// observation impossible after the logged history, a step after the episode ended, an action past
+// its use limit).
 Certificate certify_trials(solvers::IdentificationSolver& solver,
                            const std::vector<LoggedTrial>& trials, const CertifyOptions& options,
                            const std::string& steps_file);

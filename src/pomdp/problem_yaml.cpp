@@ -119,6 +119,24 @@ void read_transition(const YamlReader& f, const YAML::Node& root, ObjectProblemD
   }
 }
 
+// `actions.uses`: a map `sensing action: N` (N >= 1) of per-episode use limits; unlisted actions
+// have none (SensingAction::uses = 0).
+void read_use_limits(const YamlReader& f, const YAML::Node& actions, ObjectProblemData& d) {
+  const YAML::Node uses = f.optional(actions, "uses", "actions");
+  if (!uses.IsDefined()) return;
+  f.expect_map(uses, "actions.uses");
+  std::vector<std::string> sensing_names;
+  for (const auto& a : d.sensing) sensing_names.push_back(a.name);
+  for (auto it = uses.begin(); it != uses.end(); ++it) {
+    const int a =
+        index_of(f, it->first, sensing_names, f.name(it->first, "action"), "sensing action");
+    const std::string what = "use limit of " + sensing_names[a];
+    const int n = f.non_negative_int(it->second, what);
+    if (n == 0) f.fail(it->second, what + " must be a positive integer (leave it out: no limit)");
+    d.sensing[a].uses = n;
+  }
+}
+
 void read_observation(const YamlReader& f, const YAML::Node& root, ObjectProblemData& d) {
   const YAML::Node o = f.require(root, "observation", "the problem");
   f.only_keys(o, {"type", "symbols", "table"}, "observation");
@@ -277,7 +295,7 @@ Problem read_problem(const YamlReader& f, const YAML::Node& root) {
   d.objects = f.names(f.require(root, "objects", "the problem"), "objects");
 
   const YAML::Node actions = f.require(root, "actions", "the problem");
-  f.only_keys(actions, {"sensing", "sorting"}, "actions");
+  f.only_keys(actions, {"sensing", "sorting", "uses"}, "actions");
   for (const auto& n : f.names(f.require(actions, "sensing", "actions"), "actions.sensing")) {
     d.sensing.push_back(SensingAction{n});
   }
@@ -287,6 +305,7 @@ Problem read_problem(const YamlReader& f, const YAML::Node& root) {
       if (a.name == s) f.fail(actions, "action '" + s + "' is both a sensing and a sorting action");
     }
   }
+  read_use_limits(f, actions, d);
 
   read_initial_belief(f, root, d);
   read_transition(f, root, d);

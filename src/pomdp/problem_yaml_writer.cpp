@@ -47,8 +47,16 @@ void write_problem_yaml(std::ostream& out, const ObjectProblemData& d, const Bel
       << "discount: " << exact(d.discount) << "\n"
       << "objects: " << names(d.objects) << "\n"
       << "actions:\n  sensing: " << names(sensing_names) << "\n  sorting: " << names(d.sorting)
-      << "\n"
-      << "initial_belief:\n  type: fixed_configuration\n"
+      << "\n";
+  // Written only when some action has a limit, so problems without limits read as before.
+  bool limited = false;
+  for (const auto& a : d.sensing) limited = limited || a.uses > 0;
+  if (limited) {
+    out << "  uses:\n";
+    for (const auto& a : d.sensing)
+      if (a.uses > 0) out << "    " << a.name << ": " << a.uses << "\n";
+  }
+  out << "initial_belief:\n  type: fixed_configuration\n"
       << "  joints: " << flow_list(d.initial_joints) << "\n"
       << "  offset: " << flow_list(d.initial_offset) << "\n"
       << "  objects:\n";

@@ -123,7 +123,7 @@ void AbtSolver::simulate_from(Episode& episode, BeliefNode* node, pomdp::State s
       leaf_value().add(
           node->leaf,
           LeafVisit{m, state, static_cast<std::size_t>(depth), options().max_depth - depth,
-                    depth > 0 ? &one_step_each_ : nullptr},
+                    depth > 0 ? &one_step_each_ : nullptr, &use_limits(), &path_uses_},
           rng);
       if (keep) {
         step.leaf_contribution = node->leaf.sums();
@@ -135,7 +135,8 @@ void AbtSolver::simulate_from(Episode& episode, BeliefNode* node, pomdp::State s
       episode.push_back(std::move(step));
       return;
     }
-    const int a = select_action(*node);
+    const int a = select_action(*node, path_uses_);
+    use_limits().count(path_uses_, a);
     ActionNode& action = action_node(*node, a);
     pomdp::StepResult result = m.step(state, a, rng);
     ++node->action_visits;
@@ -185,6 +186,7 @@ void AbtSolver::run_episode(Rng& rng) {
     if (top.actions[a] && top.actions[a]->visits > 0)
       top.actions[a]->value = action_value(top, static_cast<int>(a), step_belief(0));
 
+  path_uses_ = path_uses_at_root();
   if (!options().keep_episodes) {
     path_.clear();
     simulate_from(path_, &top, sample_root_particle(rng), 0, rng);
@@ -313,6 +315,10 @@ RevisionStats AbtSolver::revise(const ModelChange& change, Rng& rng) {
       action.future_sum -= left.counted_value;
       refresh_child(action, old_child);
       episode.resize(k + 1);
+      // The uses up to the new branch: the real episode's, then the stored steps' actions.
+      path_uses_ = path_uses_at_root();
+      for (const EpisodeStep& taken : episode)
+        if (taken.action >= 0) use_limits().count(path_uses_, taken.action);
       step.observation = std::move(heard);
       const std::size_t child = child_for(action, step.observation);
       ObservationChild& entered = action.children[child];

@@ -120,8 +120,9 @@ class AbtSolver final : public TreeSearchSolver {
   pomdp::Observation couple_observation(const pomdp::Model& before, const EpisodeStep& step,
                                         const pomdp::State& next, Rng& rng) const;
 
-  std::vector<Episode> episodes_;                 // with keep_episodes
-  Episode path_;                                  // the current episode otherwise (reused)
+  std::vector<Episode> episodes_;  // with keep_episodes
+  Episode path_;                   // the current episode otherwise (reused)
+  UseCounts path_uses_;  // the episode's uses (real steps, then its path) where it stands now
   std::vector<pomdp::StepResult> one_step_each_;  // reused between particles
   std::vector<double> rewards_;                   // reused between particles
 };

@@ -10,6 +10,7 @@ namespace {
 // Rollouts of the default policy each time an episode ends at a leaf: they cost a few belief
 // updates each, far less than the episode that reached the leaf.
 constexpr int kRolloutsPerLeafVisit = 1;
+const UseCounts kNoUses;
 
 // The belief's marginal over discrete variable 0 as probabilities over the tabular states (for a
 // tabular model, discrete[0] is the state index), absorbing states excluded.
@@ -26,7 +27,7 @@ std::vector<double> tabular_belief(const pomdp::Belief& belief, const pomdp::Tab
 }  // namespace
 
 PolicyLeafValue::PolicyLeafValue(pomdp::ModelPtr model)
-    : model_(std::move(model)), policy_(*model_->tabular()) {}
+    : model_(std::move(model)), policy_(*model_->tabular(), UseLimits(*model_)) {}
 
 PolicyLeafValue::PolicyLeafValue(pomdp::ModelPtr model,
                                  std::shared_ptr<const IdentificationTables> tables)
@@ -35,7 +36,8 @@ PolicyLeafValue::PolicyLeafValue(pomdp::ModelPtr model,
 void PolicyLeafValue::add(LeafEstimate& estimate, const LeafVisit& visit, Rng& rng) {
   double* returns = estimate.accumulate(SensingPolicy::kThresholds, kRolloutsPerLeafVisit);
   for (int i = 0; i < kRolloutsPerLeafVisit; ++i)
-    policy_.rollout(path_beliefs_[visit.depth], visit.steps_left, rng, returns);
+    policy_.rollout(path_beliefs_[visit.depth], visit.uses ? *visit.uses : kNoUses,
+                    visit.steps_left, rng, returns);
 }
 
 void PolicyLeafValue::reset(const pomdp::Belief& belief) {
@@ -59,8 +61,8 @@ void PolicyLeafValue::descend(std::size_t depth, int action, int observation) {
 }
 
 ExactLeafValue::ExactLeafValue(pomdp::ModelPtr model, double exact_share, long offline_expansions)
-    : ExactLeafValue(model, ExactBoundsGuide::read_tables(*model->tabular()), exact_share,
-                     offline_expansions) {}
+    : ExactLeafValue(model, ExactBoundsGuide::read_tables(*model->tabular(), UseLimits(*model)),
+                     exact_share, offline_expansions) {}
 
 ExactLeafValue::ExactLeafValue(pomdp::ModelPtr model,
                                const std::shared_ptr<const IdentificationTables>& tables,

@@ -29,13 +29,13 @@ IdentificationOptions planner_solver_options() {
 }  // namespace
 
 std::shared_ptr<const IdentificationTables> ExactBoundsGuide::read_tables(
-    const pomdp::TabularModel& model) {
+    const pomdp::TabularModel& model, const UseLimits& limits) {
   if (auto why = identification_shape_problem(model))
     throw InputError(
         "the exact leaf values need an identification problem (the state fixed until an action "
         "ends the episode), but " +
         *why + "; use --leaf lookahead for this one");
-  return read_identification_tables(model);
+  return read_identification_tables(model, limits);
 }
 
 ExactBoundsGuide::ExactBoundsGuide(const pomdp::TabularModel& model, long offline_expansions)
@@ -78,7 +78,7 @@ void ExactBoundsGuide::refine_root(const RefineLimits& limits) {
 
 ExactBoundsGuide::NodeId ExactBoundsGuide::child(NodeId node, int action, int observation) {
   if (node == kNone || !solver_->is_sensing_action(action) || observation < 0 ||
-      observation >= solver_->num_observations())
+      observation >= solver_->num_observations() || !solver_->available(node, action))
     return kNone;
   return solver_->child(node, action, observation);
 }

@@ -33,9 +33,10 @@ class ExactBoundsGuide {
   using NodeId = IdentificationSolver::NodeId;
   static constexpr NodeId kNone = IdentificationSolver::kEnded;
 
-  // `model`'s identification tables; throws InputError naming the reason when it is not an
-  // identification problem.
-  static std::shared_ptr<const IdentificationTables> read_tables(const pomdp::TabularModel& model);
+  // `model`'s identification tables with the use `limits` of the Model they belong to; throws
+  // InputError naming the reason when it is not an identification problem.
+  static std::shared_ptr<const IdentificationTables> read_tables(const pomdp::TabularModel& model,
+                                                                 const UseLimits& limits = {});
   // Throws InputError naming the reason when `model` is not an identification problem.
   ExactBoundsGuide(const pomdp::TabularModel& model, long offline_expansions);
   // The same on tables from read_tables() (shared with the sensing policy of the same leaves).

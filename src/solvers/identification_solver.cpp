@@ -47,6 +47,8 @@ IdentificationSolver::IdentificationSolver(std::shared_ptr<const IdentificationT
                                            const IdentificationOptions& options)
     : tables_(std::move(tables)), options_(options) {
   const IdentificationTables& t = *tables_;
+  // Stored plans and points hold for the uses of the node they came from (see the header).
+  if (t.limits.any()) options_.plan_lower_bound = options_.sawtooth_upper_bound = false;
   num_states_ = t.states;
   num_actions_ = t.actions;
   num_observations_ = t.observations;
@@ -241,11 +243,28 @@ IdentificationSolver::NodeId IdentificationSolver::insert(const Key& key, const 
   return id;
 }
 
+int IdentificationSolver::uses(NodeId node, int action) const {
+  if (kind_[action] != ActionKind::sensing) return 0;
+  const std::uint16_t* n =
+      &counts_[(std::size_t(node) * num_actions_ + action) * num_observations_];
+  int total = 0;
+  for (int o = 0; o < num_observations_; ++o) total += n[o];
+  return total;
+}
+
+bool IdentificationSolver::available(NodeId node, int action) const {
+  const int limit = tables_->limits.max_uses(action);
+  return limit == 0 || kind_[action] != ActionKind::sensing || uses(node, action) < limit;
+}
+
 IdentificationSolver::NodeId IdentificationSolver::child(NodeId node, int action, int observation) {
   if (node < 0 || static_cast<std::size_t>(node) >= num_nodes())
     throw std::invalid_argument("no such node");
   if (action < 0 || action >= num_actions_ || kind_[action] != ActionKind::sensing)
     throw std::invalid_argument(fmt::format("action {} is not a sensing action", action));
+  if (!available(node, action))
+    throw std::invalid_argument(fmt::format("action {} is used up here ({} uses allowed)", action,
+                                            tables_->limits.max_uses(action)));
   if (observation < 0 || observation >= num_observations_)
     throw std::invalid_argument(fmt::format("observation {} is out of range", observation));
   const Key key = child_key(node, action, observation);
@@ -278,6 +297,11 @@ Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView
   const int L = num_live_;
   if (plan != nullptr) std::copy(&tables_->reward[a * L], &tables_->reward[a * L] + L, plan);
   if (kind_[a] == ActionKind::terminal) return {r, r};
+  if (!available(node, a)) {
+    constexpr double kNever = -std::numeric_limits<double>::infinity();
+    for (ChildView& c : children) c = ChildView{};
+    return {kNever, kNever};
+  }
   double* scratch = belief_scratch_.data();
   double* child_plan = plan_scratch_.data();
   Bounds q{r, r};
@@ -385,7 +409,7 @@ void IdentificationSolver::expand(NodeId node, double delta, int forced_action,
   ++budget.expansions;
   std::vector<ChildView> children(num_observations_);
   for (int a = 0; a < num_actions_; ++a) {
-    if (kind_[a] != ActionKind::sensing) continue;
+    if (kind_[a] != ActionKind::sensing || !available(node, a)) continue;
     if (forced && a != forced_action) continue;
     // An action whose best case is worse than what the node already guarantees cannot be
     // optimal here: its subtree cannot change V's bounds.
@@ -423,6 +447,7 @@ bool IdentificationSolver::trial(NodeId start, int forced_action, double epsilon
     // evaluating the frontier again); only the chosen action's are refreshed.
     for (int a = 0; a < num_actions_; ++a) {
       if (kind_[a] != ActionKind::sensing || (forced && a != forced_action)) continue;
+      if (!available(node, a)) continue;
       for (int o = 0; o < num_observations_; ++o)
         if (index_.find(child_key(node, a, o)) == kEnded) child(node, a, o);
     }
@@ -519,6 +544,7 @@ bool IdentificationSolver::refine(NodeId node, const RefineLimits& limits) {
 bool IdentificationSolver::refine_action(NodeId node, int action, const RefineLimits& limits) {
   if (action < 0 || action >= num_actions_) throw std::invalid_argument("action out of range");
   if (kind_[action] == ActionKind::terminal) return true;
+  if (!available(node, action)) return true;  // -inf, exactly
   return refine_to(node, action, limits);
 }
 

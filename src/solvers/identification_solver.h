@@ -45,6 +45,21 @@
 // live belief, whose value is then scaled, V*(mixture) = (1 - q) V*(live part), since absorbing
 // states earn nothing whatever is done.
 //
+// Use limits (IdentificationTables::limits, from pomdp::Model::max_uses): the uses of sensing
+// action a at a node are its counts Σ_o n_ao, so a node is a (belief, uses) pair and V* there is
+// the value with the remaining uses. Used-up actions are skipped everywhere (expansion, backups,
+// trials; action_value() gives them -inf). A belief *after some uses* is the node its history
+// reaches from the root by child(), as certify and the exact leaves walk it. The bounds stay
+// sound: commit-now plans and every node's own plan are feasible from that node; the upper
+// bounds (one more sensing, known-state values, the pair relaxation, the sawtooth corners) ignore
+// the limits, and dropping a limit can only raise V*. What does not carry over is reuse across
+// nodes with different uses: a plan stored at one node may need more uses than another node has
+// left, and a point's upper bound holds only for nodes with at least its uses spent. With limits
+// the solver therefore keeps neither (plan_lower_bound and the sawtooth points off): the frontier
+// falls back to commit now / one more sensing. Tagging each plan with its worst-case uses would
+// keep more, at a cost on every frontier evaluation; with limits the tree is shallow (at most
+// Σ_a max_uses sensing steps when every action is limited), where the fallback costs little.
+//
 // Nodes are found by a 128-bit key, the sum of two independent random 64-bit codes per (a, o) pair
 // times its count (order-free, so every path to the same counts meets the same node); two count
 // vectors share a key with probability about 2^-128 per pair of nodes.
@@ -120,17 +135,22 @@ class IdentificationSolver {
   NodeId root() const { return 0; }
   // The node after sensing action `action` heard observation `observation` at `node`, created if
   // needed; kEnded when no live state can emit it. Throws std::invalid_argument when `action` is
-  // not a sensing action or an index is out of range.
+  // not a sensing action, is used up at `node` (available()), or an index is out of range.
   NodeId child(NodeId node, int action, int observation);
 
   // Bounds on V*(b) at the node's belief b (over live states only; see the header comment).
   Bounds value(NodeId node) const;
-  // Bounds on Q*(b, a) from the current bounds of the children (one backup, no search).
+  // Bounds on Q*(b, a) from the current bounds of the children (one backup, no search); -inf for
+  // an action used up at the node.
   Bounds action_value(NodeId node, int action) const;
   // P(observation | b, action) for a sensing action, counting only outcomes that stay live.
   double observation_probability(NodeId node, int action, int observation) const;
   // The node's belief over all model states (absorbing ones 0).
   std::vector<double> belief(NodeId node) const;
+  // How often sensing action `action` was taken on the way to `node` (Σ_o n_ao; 0 for a terminal
+  // action), and whether the use limits allow it once more there (a terminal action: always).
+  int uses(NodeId node, int action) const;
+  bool available(NodeId node, int action) const;
 
   // Tightens value(node) until its gap is at most limits.target_gap (or a limit is hit).
   // Returns true when the target was reached.

@@ -47,9 +47,10 @@ std::optional<std::string> identification_shape_problem(const pomdp::TabularMode
   return std::nullopt;
 }
 
-std::shared_ptr<const IdentificationTables> read_identification_tables(
-    const pomdp::TabularModel& m) {
+std::shared_ptr<const IdentificationTables> read_identification_tables(const pomdp::TabularModel& m,
+                                                                       const UseLimits& limits) {
   auto t = std::make_shared<IdentificationTables>();
+  t->limits = limits;
   t->states = m.num_states();
   t->actions = m.num_actions();
   t->observations = m.num_observations();
@@ -74,7 +75,8 @@ std::shared_ptr<const IdentificationTables> read_identification_tables(
     }
   }
   // The value of a known state: with the state fixed, the best stationary plan either ends the
-  // episode now or repeats one sensing action for ever (until a collision ends it).
+  // episode now or repeats one sensing action for ever (until a collision ends it). With use
+  // limits this stays an upper bound (a limit only removes plans).
   t->known_value.assign(L, -std::numeric_limits<double>::infinity());
   for (int l = 0; l < L; ++l) {
     for (int a = 0; a < A; ++a) {

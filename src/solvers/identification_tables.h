@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "pomdp/model.h"
+#include "solvers/use_limits.h"
 
 namespace echoplan::solvers {
 
@@ -32,12 +33,15 @@ struct IdentificationTables {
   std::vector<double> emission;        // [(a * O + o) * L + l] = stay(l, a) · O(a, l, o)
   std::vector<double> known_value;     // [l] = V*(state l known)
   std::vector<double> initial_belief;  // [s] over the model's states: the problem's b0
+  // Per-action use limits in one episode (pomdp::Model::max_uses; empty: none). They are not in a
+  // TabularModel's tables, so they come from the Model that owns them.
+  UseLimits limits;
 };
 
-// Reads `model`'s tables. The caller checks identification_shape_problem() first (each says in
-// its own words why it needs an identification problem); on another model the tables are
-// meaningless.
+// Reads `model`'s tables, with the use `limits` of the Model they belong to (UseLimits(model);
+// none by default). The caller checks identification_shape_problem() first (each says in its own
+// words why it needs an identification problem); on another model the tables are meaningless.
 std::shared_ptr<const IdentificationTables> read_identification_tables(
-    const pomdp::TabularModel& model);
+    const pomdp::TabularModel& model, const UseLimits& limits = {});
 
 }  // namespace echoplan::solvers

@@ -1,6 +1,7 @@
 #include "solvers/leaf_value.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "common/error.h"
@@ -90,7 +91,10 @@ double LeafEstimate::value() const {
 void LeafEstimate::remove(const std::vector<double>& contribution) {
   if (count_ == 0 || contribution.size() != sums_.size())
     throw std::logic_error("LeafEstimate::remove(): not a contribution of this estimate");
-  for (std::size_t i = 0; i < sums_.size(); ++i) sums_[i] -= contribution[i];
+  // An action used up at the node holds -inf from every particle (a contribution measured across
+  // add() is then NaN or infinite): it stays -inf.
+  for (std::size_t i = 0; i < sums_.size(); ++i)
+    if (std::isfinite(contribution[i])) sums_[i] -= contribution[i];
   --count_;
 }
 

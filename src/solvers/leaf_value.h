@@ -44,6 +44,7 @@
 #include "pomdp/model.h"
 #include "solvers/sensing_policy.h"
 #include "solvers/solver.h"
+#include "solvers/use_limits.h"
 
 namespace echoplan::solvers {
 
@@ -107,6 +108,13 @@ struct LeafVisit {
   // The result of stepping `state` once with each action when the caller already has it (ABT
   // below the root); the lookahead then reuses it instead of stepping again. May be null.
   const std::vector<pomdp::StepResult>* one_step_each = nullptr;
+  // The model's use limits and the episode's uses up to the node (from the start of the real
+  // episode, then along the tree's path): estimates never count an action used up there. Null
+  // (or no limits): every action is available.
+  const UseLimits* limits = nullptr;
+  const UseCounts* uses = nullptr;
+
+  bool allows(int action) const { return !limits || !uses || limits->allows(*uses, action); }
 };
 
 // How a tree-search solver values its leaves: one implementation per leaf mode, chosen once by

@@ -22,6 +22,8 @@ class PomcpSolver final : public TreeSearchSolver {
  private:
   // The discounted return of one simulation from `node` (at `depth`) in `state`.
   double simulate(BeliefNode& node, pomdp::State state, int depth, Rng& rng);
+
+  UseCounts path_uses_;  // the episode's uses (real steps, then its path) where it stands now
 };
 
 }  // namespace echoplan::solvers

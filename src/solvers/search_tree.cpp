@@ -31,6 +31,7 @@ ActionNode::~ActionNode() { --counts->action; }
 TreeSearchSolver::TreeSearchSolver(pomdp::ModelPtr model, SearchOptions options, LeafUse use)
     : model_(std::move(model)), options_(options) {
   if (!model_) throw std::invalid_argument("TreeSearchSolver needs a model");
+  use_limits_ = UseLimits(*model_);
   options_.validate();
   leaf_value_ = make_leaf_value(options_.leaf, model_, use);
 }
@@ -53,6 +54,7 @@ void TreeSearchSolver::replace_model(pomdp::ModelPtr model) {
                      "' does not share the actions, observations and discount of '" +
                      old_spec.name + "'");
   model_ = std::move(model);
+  use_limits_ = UseLimits(*model_);
 }
 
 void TreeSearchSolver::reset(const pomdp::Belief& belief, Rng& rng) {
@@ -62,6 +64,7 @@ void TreeSearchSolver::reset(const pomdp::Belief& belief, Rng& rng) {
   root_->expanded = true;  // the root always branches: it is where the decision is made
   episodes_total_ = 0;
   episodes_last_ = 0;
+  root_uses_.clear();
   replenish_root(belief, rng);
 }
 
@@ -99,6 +102,7 @@ int TreeSearchSolver::best_action() const {
   double best_value = -std::numeric_limits<double>::infinity();
   for (std::size_t a = 0; a < root_->actions.size(); ++a) {
     const ActionNode* node = root_->actions[a].get();
+    if (!use_limits_.allows(root_uses_, static_cast<int>(a))) continue;
     if (node && node->value > best_value) best = static_cast<int>(a), best_value = node->value;
   }
   if (best < 0) throw std::logic_error("best_action() before any episode");
@@ -118,6 +122,7 @@ void TreeSearchSolver::update(int action, const pomdp::Observation& observation,
   if (!root_) throw std::logic_error("update() before reset()");
   if (action < 0 || action >= model_->num_actions())
     throw std::out_of_range("update(): bad action");
+  use_limits_.count(root_uses_, action);
   // Keep the subtree the real step leads to; everything else goes when the old root is destroyed.
   std::unique_ptr<BeliefNode> kept;
   if (ActionNode* taken = root_->actions[action].get()) {
@@ -204,17 +209,19 @@ bool TreeSearchSolver::leaf_or_expand(BeliefNode& node, int depth) {
   return false;
 }
 
-int TreeSearchSolver::select_action(const BeliefNode& node) const {
+int TreeSearchSolver::select_action(const BeliefNode& node, const UseCounts& uses) const {
   const double log_n = std::log(static_cast<double>(std::max<std::int64_t>(node.action_visits, 1)));
-  int best = 0;
+  int best = use_limits_.any() ? -1 : 0;
   double best_score = -std::numeric_limits<double>::infinity();
   for (std::size_t a = 0; a < node.actions.size(); ++a) {
+    if (!use_limits_.allows(uses, static_cast<int>(a))) continue;
     const ActionNode* action = node.actions[a].get();
     if (!action || action->visits == 0) return static_cast<int>(a);
     const double score = action->value + options_.exploration *
                                              std::sqrt(log_n / static_cast<double>(action->visits));
     if (score > best_score) best = static_cast<int>(a), best_score = score;
   }
+  if (best < 0) throw std::logic_error("the use limits leave no action to take");
   return best;
 }
 

@@ -22,6 +22,7 @@
 #include "solvers/leaf_value.h"
 #include "solvers/observation_branch.h"
 #include "solvers/solver.h"
+#include "solvers/use_limits.h"
 
 namespace echoplan::solvers {
 
@@ -143,8 +144,14 @@ class TreeSearchSolver : public Solver {
   // when the node is valued as a leaf this time; otherwise expands it (once: `expanded` set, its
   // leaf accumulators freed) and returns false, and the caller must choose an action.
   bool leaf_or_expand(BeliefNode& node, int depth);
-  // UCB1 over the node's actions; untried actions first, in index order.
-  int select_action(const BeliefNode& node) const;
+  // UCB1 over the node's actions still allowed after `uses` (the episode's uses up to the node,
+  // path_uses_at_root() plus the path); untried actions first, in index order. Throws
+  // std::logic_error when the limits leave no action.
+  int select_action(const BeliefNode& node, const UseCounts& uses) const;
+  // The model's use limits (empty when it has none) and the uses of the real steps since reset():
+  // where every episode's count starts.
+  const UseLimits& use_limits() const { return use_limits_; }
+  const UseCounts& path_uses_at_root() const { return root_uses_; }
   ActionNode& action_node(BeliefNode& node, int action);
   // Index of the child of `action` that `observation` branches to, created if new.
   std::size_t child_for(ActionNode& action, const pomdp::Observation& observation);
@@ -155,6 +162,8 @@ class TreeSearchSolver : public Solver {
 
   pomdp::ModelPtr model_;
   SearchOptions options_;
+  UseLimits use_limits_;
+  UseCounts root_uses_;  // actions taken in the real episode so far (told through update())
   std::unique_ptr<LeafValue> leaf_value_;
   NodeCounts counts_;  // declared before root_ so it outlives the nodes
   std::unique_ptr<BeliefNode> root_;

@@ -11,18 +11,19 @@ namespace echoplan::solvers {
 
 namespace {
 // `model`'s identification tables, once identification_shape_problem() has found nothing wrong.
-std::shared_ptr<const IdentificationTables> policy_tables(const pomdp::TabularModel& model) {
+std::shared_ptr<const IdentificationTables> policy_tables(const pomdp::TabularModel& model,
+                                                          const UseLimits& limits) {
   if (auto why = identification_shape_problem(model))
     throw InputError(
         "the policy leaf value needs an identification problem (the state stays "
         "fixed until an action ends the episode), and this one is not: " +
         *why);
-  return read_identification_tables(model);
+  return read_identification_tables(model, limits);
 }
 }  // namespace
 
-SensingPolicy::SensingPolicy(const pomdp::TabularModel& model)
-    : SensingPolicy(policy_tables(model)) {}
+SensingPolicy::SensingPolicy(const pomdp::TabularModel& model, const UseLimits& limits)
+    : SensingPolicy(policy_tables(model, limits)) {}
 
 SensingPolicy::SensingPolicy(std::shared_ptr<const IdentificationTables> tables)
     : tables_(std::move(tables)) {
@@ -124,25 +125,34 @@ double SensingPolicy::decision_entropy(const std::vector<double>& belief) const 
   return h;
 }
 
-int SensingPolicy::choose_sensing(const std::vector<double>& belief) const {
-  int best = sensing_.front();
+bool SensingPolicy::can_sense(const UseCounts& uses) const {
+  for (int a : sensing_)
+    if (tables_->limits.allows(uses, a)) return true;
+  return false;
+}
+
+int SensingPolicy::choose_sensing(const std::vector<double>& belief, const UseCounts& uses) const {
+  int best = -1;
   double best_score = std::numeric_limits<double>::infinity();
   for (int a : sensing_) {
+    if (!tables_->limits.allows(uses, a)) continue;
     // Expected decision entropy after hearing a's outcome (outcomes that end the episode count 0).
     double expected = 0.0;
     for (int o = 0; o < num_observations_; ++o) {
       const double p = update(belief, a, o, scratch2_);
       if (p > 0.0) expected += p * decision_entropy(scratch2_);
     }
-    if (expected < best_score - 1e-12) best = a, best_score = expected;
+    if (best < 0 || expected < best_score - 1e-12) best = a, best_score = expected;
   }
   return best;
 }
 
-void SensingPolicy::rollout(const std::vector<double>& start, int steps, Rng& rng,
-                            double* returns) const {
+void SensingPolicy::rollout(const std::vector<double>& start, const UseCounts& start_uses,
+                            int steps, Rng& rng, double* returns) const {
   const std::vector<int>& states = tables_->model_state;
   const int L = tables_->live_states;
+  const UseLimits& limits = tables_->limits;
+  UseCounts uses = limits.any() ? start_uses : UseCounts{};
   std::vector<double> belief(start), next(num_states_);
   // The true state (its live index), drawn from the belief.
   int state = -1;
@@ -158,11 +168,14 @@ void SensingPolicy::rollout(const std::vector<double>& start, int steps, Rng& rn
   int stopped = 0;  // thresholds_[0..stopped) have committed (they are in decreasing order)
   for (int step = 0;; ++step) {
     const double commit = commit_value(belief);
-    const double l = step < steps ? loss(belief) : -std::numeric_limits<double>::infinity();
+    // Past the step cap, or with every sensing action used up, every threshold commits now.
+    const bool go_on = step < steps && (!limits.any() || can_sense(uses));
+    const double l = go_on ? loss(belief) : -std::numeric_limits<double>::infinity();
     while (stopped < kThresholds && l <= thresholds_[stopped])
       returns[stopped++] += collected + weight * commit;
     if (stopped == kThresholds) return;
-    const int a = choose_sensing(belief);
+    const int a = choose_sensing(belief, uses);
+    limits.count(uses, a);
     collected += weight * expected_reward(belief, a);
     weight *= discount_;
     const double stay = tables_->stay[a * L + state];

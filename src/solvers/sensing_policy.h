@@ -37,9 +37,10 @@ class SensingPolicy {
   // The stopping thresholds ε followed by one rollout (reward units), the first +inf (commit now).
   static constexpr int kThresholds = 12;
 
-  // Reads the tables of `model`. Throws InputError when the model has no tables or is not an
-  // identification problem (the reason in words).
-  explicit SensingPolicy(const pomdp::TabularModel& model);
+  // Reads the tables of `model`, with the use `limits` of the Model they belong to. Throws
+  // InputError when the model has no tables or is not an identification problem (the reason in
+  // words).
+  explicit SensingPolicy(const pomdp::TabularModel& model, const UseLimits& limits = {});
   // The same on tables already read (shared with the exact solver of the same problem).
   explicit SensingPolicy(std::shared_ptr<const IdentificationTables> tables);
 
@@ -59,14 +60,22 @@ class SensingPolicy {
   double expected_reward(const std::vector<double>& belief, int action) const;
   // The best terminal action's expected reward under `belief`.
   double commit_value(const std::vector<double>& belief) const;
-  // The sensing action the policy takes at `belief`.
-  int choose_sensing(const std::vector<double>& belief) const;
-  // One rollout from `belief` (the true state drawn from it), at most `steps` steps: adds the
-  // discounted return of each threshold's policy to returns[0..kThresholds).
-  void rollout(const std::vector<double>& belief, int steps, Rng& rng, double* returns) const;
+  // The sensing action the policy takes at `belief` after the episode's `uses` (empty: none); -1
+  // when the use limits leave none.
+  int choose_sensing(const std::vector<double>& belief, const UseCounts& uses = {}) const;
+  // One rollout from `belief` (the true state drawn from it), at most `steps` steps, after the
+  // episode's `uses` (the policy then senses only with actions still available, and commits when
+  // none is): adds the discounted return of each threshold's policy to returns[0..kThresholds).
+  void rollout(const std::vector<double>& belief, const UseCounts& uses, int steps, Rng& rng,
+               double* returns) const;
+  void rollout(const std::vector<double>& belief, int steps, Rng& rng, double* returns) const {
+    rollout(belief, UseCounts{}, steps, rng, returns);
+  }
 
  private:
   double loss(const std::vector<double>& belief) const;
+  // True when some sensing action is still available after `uses`.
+  bool can_sense(const UseCounts& uses) const;
   double decision_entropy(const std::vector<double>& belief) const;
 
   // P(o | s, a) stay(s, a) over the live states, for a sensing action.

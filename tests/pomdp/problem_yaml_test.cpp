@@ -71,6 +71,18 @@ TEST(ProblemYaml, WeightedPriorIsNormalised) {
   EXPECT_EQ(object_model(p).data().prior, (std::vector<double>{0.75, 0.25, 0.0, 0.0}));
 }
 
+TEST(ProblemYaml, UseLimitsAreReadPerSensingAction) {
+  std::string text = repo_text("problems/audio_objects.yaml");
+  const std::string from = "sorting: [move_to_A, move_to_B]";
+  text.replace(text.find(from), from.size(), from + "\n  uses: {strike: 3}");
+  const Problem p = parse_problem_yaml(text, "uses.yaml");
+  EXPECT_EQ(object_model(p).data().sensing[0].uses, 0);  // slide: not listed, no limit
+  EXPECT_EQ(object_model(p).data().sensing[1].uses, 3);
+  EXPECT_EQ(p.model->max_uses(0), 0);
+  EXPECT_EQ(p.model->max_uses(1), 3);
+  EXPECT_EQ(p.model->max_uses(2), 0);  // a sorting action
+}
+
 // Each bad input: replace one piece of the report's problem file and expect the error's line and
 // message.
 struct BadCase {
@@ -146,7 +158,15 @@ INSTANTIATE_TEST_SUITE_P(
                 "0.11]\n      paper_base: [0.01",
                 36, "key 'coffee_mug' appears twice"},
         BadCase{"collision_probability", "    slide: 0\n    strike: 0",
-                "    slide: 2\n    strike: 0", -1, "collision probability must be in [0, 1]"}),
+                "    slide: 2\n    strike: 0", -1, "collision probability must be in [0, 1]"},
+        BadCase{"zero_uses", "sorting: [move_to_A, move_to_B]",
+                "sorting: [move_to_A, move_to_B]\n  uses: {slide: 0}", 10,
+                "use limit of slide must be a positive integer"},
+        BadCase{"fractional_uses", "sorting: [move_to_A, move_to_B]",
+                "sorting: [move_to_A, move_to_B]\n  uses: {slide: 1.5}", 10, "use limit of slide"},
+        BadCase{"uses_of_a_sorting_action", "sorting: [move_to_A, move_to_B]",
+                "sorting: [move_to_A, move_to_B]\n  uses: {move_to_A: 1}", 10,
+                "unknown sensing action 'move_to_A'"}),
     [](const auto& test_info) { return std::string(test_info.param.label); });
 
 TEST(ProblemYaml, EmptyFileIsAnError) {

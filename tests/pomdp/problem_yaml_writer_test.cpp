@@ -31,6 +31,28 @@ TEST(ProblemYamlWriter, WrittenProblemReadsBackIdentically) {
   EXPECT_EQ(q.planner.exploration, p.planner.exploration);
 }
 
+// A problem without limits writes no `uses:` at all (the writer's output for such problems is what
+// it was before limits existed); one with limits writes them and reads them back.
+TEST(ProblemYamlWriter, UseLimitsAreWrittenOnlyWhenSetAndReadBack) {
+  const Problem p = load_problem(repo_file("problems/audio_objects.yaml"));
+  std::ostringstream plain;
+  write_problem_yaml(plain, object_model(p).data(), p.belief, p.planner);
+  EXPECT_EQ(plain.str().find("uses"), std::string::npos);
+
+  ObjectProblemData d = object_model(p).data();
+  d.sensing[1].uses = 2;
+  std::ostringstream limited;
+  write_problem_yaml(limited, d, p.belief, p.planner);
+  EXPECT_NE(limited.str().find("  uses:\n    strike: 2\n"), std::string::npos) << limited.str();
+  const Problem q = parse_problem_yaml(limited.str(), "written.yaml");
+  EXPECT_EQ(object_model(q).data().sensing[0].uses, 0);
+  EXPECT_EQ(object_model(q).data().sensing[1].uses, 2);
+  // Written again, the text is the same.
+  std::ostringstream again;
+  write_problem_yaml(again, object_model(q).data(), q.belief, q.planner);
+  EXPECT_EQ(again.str(), limited.str());
+}
+
 // Numbers with no short decimal form (1/3, 0.1 + 0.2) and the settings the report's problem file
 // does not use (exact belief, an episode budget) survive the round trip bit for bit.
 TEST(ProblemYamlWriter, EveryDoubleAndSettingRoundTripsExactly) {

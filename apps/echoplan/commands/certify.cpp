@@ -47,7 +47,10 @@ void run_certify(const CertifyArgs& args) {
   if (trials.empty()) throw InputError(args.steps, 0, "no trials in the steps file");
 
   const auto start = std::chrono::steady_clock::now();
-  solvers::IdentificationSolver solver(*tables);
+  // With the problem's use limits: each decision is judged with the uses its trial had made so far
+  // (the solver's node after the trial's earlier steps counts them).
+  solvers::IdentificationSolver solver(
+      solvers::read_identification_tables(*tables, solvers::UseLimits(*problem.model)));
   spdlog::info("certifying {} trials of {} against {}", trials.size(), args.steps, args.problem);
   experiment::CertifyOptions options;
   options.decision_gap = args.gap;

@@ -68,7 +68,10 @@ void run_exact(const SolveArgs& args, const pomdp::Problem& problem,
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  solvers::IdentificationSolver solver(tables, exact_options(args));
+  // With the problem's use limits (pomdp::Model::max_uses), which the tables alone do not hold.
+  solvers::IdentificationSolver solver(
+      solvers::read_identification_tables(tables, solvers::UseLimits(*problem.model)),
+      exact_options(args));
   const double setup_seconds = elapsed();
   const auto root = solver.root();
   auto target = [&](solvers::Bounds b) {
@@ -202,6 +205,11 @@ void run_solve(const SolveArgs& given) {
     spdlog::info("not an identification problem ({}): using the point-based solver",
                  *shape_problem);
   }
+  if (solvers::UseLimits(*problem.model).any())
+    throw InputError(args.problem, 0,
+                     "the point-based solver does not support per-action use limits "
+                     "(actions.uses); use --method exact (identification problems) or an online "
+                     "solver");
   auto dense = std::make_shared<const off::FlatPomdp>(off::make_flat_pomdp(*tables, args.problem));
 
   off::SolverOptions options;

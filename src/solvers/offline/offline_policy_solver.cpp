@@ -5,6 +5,7 @@
 #include "common/error.h"
 #include "solvers/offline/belief_expansion.h"
 #include "solvers/offline/policy_file.h"
+#include "solvers/use_limits.h"
 
 namespace echoplan::solvers::offline {
 
@@ -69,6 +70,11 @@ std::unique_ptr<Solver> make_offline_solver(const pomdp::ModelPtr& model,
                      "the offline solver needs a problem with tables (discrete states, "
                      "actions and observations)");
   }
+  // Its alpha vectors are over beliefs alone; a use limit makes the value depend on the history.
+  if (UseLimits(*model).any())
+    throw InputError(source, 0,
+                     "the offline solver does not support per-action use limits (actions.uses); "
+                     "use --solver abt or pomcp");
   auto flat = std::make_shared<const FlatPomdp>(make_flat_pomdp(*tables, source));
   if (!policy_path.empty()) {
     return std::make_unique<OfflinePolicySolver>(model, flat, load_policy(policy_path, *flat));
