@@ -15,7 +15,7 @@ namespace echoplan::loop {
 
 // The solver, ready to reset().
 struct Planner {
-  std::string name;  // "abt", "pomcp" or "offline"
+  std::string name;  // "abt", "pomcp", "offline" or a strategy (solvers/baseline_strategies.h)
   solvers::SearchOptions options;
   solvers::Budget budget;
   std::unique_ptr<solvers::Solver> solver;
