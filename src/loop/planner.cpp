@@ -41,6 +41,7 @@ Planner make_planner(const solvers::PlannerOverrides& f, const pomdp::Problem& p
 }
 
 std::string Planner::describe() const {
+  if (solvers::is_strategy(name)) return name + " (fixed strategy, no search)";
   return budget.kind == solvers::Budget::Kind::episodes
              ? fmt::format("{}, {} episodes/step", name, budget.amount)
              : fmt::format("{}, {} ms/step", name, budget.amount);

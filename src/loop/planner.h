@@ -20,7 +20,7 @@ struct Planner {
   solvers::Budget budget;
   std::unique_ptr<solvers::Solver> solver;
 
-  // "abt, 2000 episodes/step"
+  // "abt, 2000 episodes/step"; "random (fixed strategy, no search)"
   std::string describe() const;
   // The settings for summary files: solver, budget and search options.
   nlohmann::json to_json() const;
