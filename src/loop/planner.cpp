@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "common/error.h"
+#include "solvers/baseline_strategies.h"
 #include "solvers/make_solver.h"
 #include "solvers/solver_factory.h"
 
@@ -14,8 +15,11 @@ namespace echoplan::loop {
 void check_planner(const solvers::PlannerOverrides& f, const pomdp::Problem& problem) {
   const std::string name = f.solver.empty() ? problem.planner.solver : f.solver;
   const auto online = solvers::solver_names();
-  if (name != "offline" && std::find(online.begin(), online.end(), name) == online.end())
-    throw InputError(fmt::format("solver '{}' is not one of {}", name, fmt::join(online, ", ")));
+  if (name != "offline" && std::find(online.begin(), online.end(), name) == online.end() &&
+      !solvers::is_strategy(name))
+    throw InputError(fmt::format("solver '{}' is not one of {}, offline, {}", name,
+                                 fmt::join(online, ", "),
+                                 fmt::join(solvers::strategy_names(), ", ")));
   if (!f.policy.empty() && name != "offline")
     throw InputError("--policy is for --solver offline; the " + name +
                      " solver plans online and would ignore it");
@@ -37,6 +41,7 @@ Planner make_planner(const solvers::PlannerOverrides& f, const pomdp::Problem& p
 }
 
 std::string Planner::describe() const {
+  if (solvers::is_strategy(name)) return name + " (fixed strategy, no search)";
   return budget.kind == solvers::Budget::Kind::episodes
              ? fmt::format("{}, {} episodes/step", name, budget.amount)
              : fmt::format("{}, {} ms/step", name, budget.amount);

@@ -15,12 +15,12 @@ namespace echoplan::loop {
 
 // The solver, ready to reset().
 struct Planner {
-  std::string name;  // "abt", "pomcp" or "offline"
+  std::string name;  // "abt", "pomcp", "offline" or a strategy (solvers/baseline_strategies.h)
   solvers::SearchOptions options;
   solvers::Budget budget;
   std::unique_ptr<solvers::Solver> solver;
 
-  // "abt, 2000 episodes/step"
+  // "abt, 2000 episodes/step"; "random (fixed strategy, no search)"
   std::string describe() const;
   // The settings for summary files: solver, budget and search options.
   nlohmann::json to_json() const;

@@ -1,4 +1,5 @@
-// Builds an online solver by the name users type ("abt", "pomcp") from search options already made.
+// Builds an online solver by the name users type ("abt", "pomcp", or a baseline strategy of
+// baseline_strategies.h, which ignores the options) from search options already made.
 // The online part of the one factory, solver_factory.h's make_solver(overrides, problem, path),
 // which also builds the offline solver and derives options and budget; use that one unless you
 // hold SearchOptions already (tests, benchmarks).
@@ -14,7 +15,8 @@
 
 namespace echoplan::solvers {
 
-// The names make_solver() accepts.
+// The search solvers make_solver() accepts; it also accepts strategy_names()
+// (baseline_strategies.h).
 std::vector<std::string> solver_names();
 
 // Throws InputError for an unknown name or invalid options.

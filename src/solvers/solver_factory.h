@@ -1,4 +1,5 @@
-// The one place that builds a solver by the name users type - "abt", "pomcp" or "offline" - with
+// The one place that builds a solver by the name users type - "abt", "pomcp", "offline" or a
+// baseline strategy (baseline_strategies.h: all_actions, best_single, ...) - with
 // the search options and per-step budget a problem file and a user's overrides ask for
 // (planner_overrides.h). What `echoplan trials`, `echoplan run`, campaigns and the ROS planner node
 // plan with (through loop::make_planner, which only wraps it).
@@ -21,7 +22,7 @@ namespace echoplan::solvers {
 
 // A solver, ready to reset(), and what it was built with.
 struct BuiltSolver {
-  std::string name;       // "abt", "pomcp" or "offline"
+  std::string name;       // "abt", "pomcp", "offline" or a strategy
   SearchOptions options;  // the online solvers' search options (the offline solver ignores them)
   Budget budget;          // search per step
   std::unique_ptr<Solver> solver;

@@ -10,6 +10,7 @@
 
 #include "common/error.h"
 #include "solvers/abt_solver.h"
+#include "solvers/baseline_strategies.h"
 #include "solvers/pomcp_solver.h"
 
 namespace echoplan::loop {
@@ -70,6 +71,35 @@ TEST(Planner, BadChoicesAreInputErrors) {
   offline.solver = "offline";
   offline.policy = "/nonexistent/policy.json";
   EXPECT_THROW(make_planner(offline, problem, path), InputError);
+}
+
+TEST(Planner, TheBaselineStrategiesArePlannersByName) {
+  const std::string path = shipped("audio_objects.yaml");
+  const pomdp::Problem problem = pomdp::load_problem(path);
+  for (const std::string& name : solvers::strategy_names()) {
+    solvers::PlannerOverrides f;
+    f.solver = name;
+    EXPECT_NO_THROW(check_planner(f, problem)) << name;
+    const Planner p = make_planner(f, problem, path);
+    EXPECT_EQ(p.name, name);
+    EXPECT_EQ(p.describe(), name + " (fixed strategy, no search)");  // no budget to spend
+    ASSERT_NE(p.solver, nullptr);
+  }
+  // A strategy needs objects to sort: the tiger is not an identification problem of objects.
+  const std::string tiger = shipped("tiger.pomdp");
+  solvers::PlannerOverrides f;
+  f.solver = "random";
+  EXPECT_THROW(make_planner(f, pomdp::load_problem(tiger), tiger), InputError);
+  // The unknown-name message lists every name a user may type.
+  f.solver = "greedy";
+  try {
+    check_planner(f, problem);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "solver 'greedy' is not one of abt, pomcp, offline, all_actions, best_single, "
+                 "information_gain, random");
+  }
 }
 
 }  // namespace

@@ -52,7 +52,9 @@ TEST(MakeSolver, UnknownNamesAndBadOptionsAreInputErrors) {
     make_solver("ABT", problem.model, {});
     FAIL() << "no InputError for an unknown name";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "solver 'ABT' is not one of abt, pomcp");
+    EXPECT_STREQ(e.what(),
+                 "solver 'ABT' is not one of abt, pomcp, all_actions, best_single, "
+                 "information_gain, random");
   }
   SearchOptions bad;
   bad.max_depth = 0;

@@ -1,7 +1,12 @@
 #include "commands/planner_options.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <exception>
 #include <string>
+
+#include "solvers/baseline_strategies.h"
 
 namespace echoplan::cli {
 
@@ -19,7 +24,10 @@ CLI::Validator positive() {
 }
 
 void add_planner_options(CLI::App& cmd, solvers::PlannerOverrides& f) {
-  cmd.add_option("--solver", f.solver, "abt, pomcp or offline (default: the problem file's)");
+  cmd.add_option("--solver", f.solver,
+                 fmt::format("abt, pomcp, offline, or a baseline strategy: {} (default: the "
+                             "problem file's; docs/planning.md)",
+                             fmt::join(solvers::strategy_names(), ", ")));
   cmd.add_option("--policy", f.policy,
                  "--solver offline: policy.json from `echoplan solve --out` (else solved now)");
   auto* episodes = cmd.add_option("--episodes", f.episodes,

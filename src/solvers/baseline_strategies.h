@@ -1,0 +1,41 @@
+// The four baseline strategies a campaign compares the planner with, as Solvers the loop can run
+// (`--solver <name>`, built by make_solver.h like "abt" and "pomcp"). Each decides by a fixed rule
+// from the belief over the objects and the actions taken so far (fixed_strategy.h), with no search,
+// and ends by sorting to the bin most likely right (most_likely_right_sort()):
+//   all_actions       every sensing action once, in the problem's order, skipping any whose uses
+//                     have run out; then sort.
+//   best_single       the sensing action with the best held-out accuracy (held_out_accuracy(); the
+//                     first on ties), repeated while its uses last; then sort. An action with no
+//                     use limit is repeated while one more performance is worth its cost by
+//                     information_gain's rule (sense_then_commit_value() above commit_value()),
+//                     since repeating it forever never sorts.
+//   information_gain  greedy: while some sensing action is available, commit when committing now is
+//                     worth at least the best one-step lookahead (sense once, then commit), else
+//                     take the available sensing action with the greatest expected entropy
+//                     reduction per unit cost (cost |r_a|, the action's reward per use; a zero cost
+//                     counts as 1, i.e. the gain itself; the first on ties).
+//   random            each step, uniformly among the available sensing actions and "sort now" (so
+//                     with M available actions, sorting has chance 1/(M+1)); sorts when none is
+//                     available. Draws from the Rng improve() is given.
+// root_action_values(): information_gain's lookahead values (sensing) and expected rewards
+// (sorting); NaN for the other strategies and for actions a strategy did not weigh.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pomdp/model.h"
+#include "solvers/solver.h"
+
+namespace echoplan::solvers {
+
+// all_actions, best_single, information_gain, random.
+std::vector<std::string> strategy_names();
+bool is_strategy(const std::string& name);
+
+// Throws InputError for an unknown name, or a model that is not an object-identification problem
+// (naming the strategy and why).
+std::unique_ptr<Solver> make_strategy(const std::string& name, pomdp::ModelPtr model);
+
+}  // namespace echoplan::solvers

@@ -1,0 +1,201 @@
+// The four baseline strategies' decisions on the two-object problem
+// (tiny_identification_problems.h: tap 0, press 1, shake 2 with accuracies 0.60, 0.85, 0.70; to_a
+// 3, to_b 4), worked out by hand.
+#include "solvers/baseline_strategies.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+
+#include "common/error.h"
+#include "solvers/make_solver.h"
+#include "tiny_identification_problems.h"
+
+namespace echoplan::solvers {
+namespace {
+
+using testing::GivenBelief;
+using testing::model_of;
+
+constexpr int kTap = 0, kPress = 1, kShake = 2, kToA = 3, kToB = 4;
+
+// Runs a strategy: reset at `start`, then one improve() per entry of `steps`, each decision
+// followed by an update() to the belief given.
+struct StrategyRun {
+  std::unique_ptr<Solver> strategy;
+  Rng rng{7};
+
+  StrategyRun(const std::string& name, pomdp::ObjectProblemData d, std::vector<double> start)
+      : strategy(make_strategy(name, model_of(std::move(d)))) {
+    strategy->reset(GivenBelief(std::move(start)), rng);
+  }
+  int decide() {
+    strategy->improve(Budget::episodes(1), rng);
+    return strategy->best_action();
+  }
+  void heard(int action, std::vector<double> belief_after) {
+    strategy->update(action, {0, {}}, GivenBelief(std::move(belief_after)), rng);
+  }
+};
+
+TEST(BaselineStrategies, NamesAndFactory) {
+  EXPECT_EQ(strategy_names(),
+            (std::vector<std::string>{"all_actions", "best_single", "information_gain", "random"}));
+  EXPECT_TRUE(is_strategy("random"));
+  EXPECT_FALSE(is_strategy("abt"));
+  for (const std::string& name : strategy_names())
+    EXPECT_NE(make_solver(name, model_of(testing::two_objects()), {}), nullptr) << name;
+  try {
+    make_strategy("greedy", model_of(testing::two_objects()));
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(
+        e.what(),
+        "strategy 'greedy' is not one of all_actions, best_single, information_gain, random");
+  }
+}
+
+TEST(AllActions, EverySensingActionOnceInOrderThenSort) {
+  StrategyRun run("all_actions", testing::two_objects(), {0.5, 0.5});
+  EXPECT_EQ(run.decide(), kTap);
+  run.heard(kTap, {0.6, 0.4});
+  EXPECT_EQ(run.decide(), kPress);
+  run.heard(kPress, {0.4, 0.6});
+  EXPECT_EQ(run.decide(), kShake);
+  run.heard(kShake, {0.3, 0.7});
+  EXPECT_EQ(run.decide(), kToB);  // P(to_b right) = 0.7
+}
+
+TEST(AllActions, SkipsAnActionWhoseUsesAreSpent) {
+  pomdp::ObjectProblemData d = testing::two_objects();
+  d.sensing[kPress].uses = 1;
+  StrategyRun run("all_actions", d, {0.5, 0.5});
+  run.heard(kPress, {0.8, 0.2});  // press performed (its only use) before the strategy's turn
+  EXPECT_EQ(run.decide(), kTap);
+  run.heard(kTap, {0.8, 0.2});
+  EXPECT_EQ(run.decide(), kShake);
+  run.heard(kShake, {0.8, 0.2});
+  EXPECT_EQ(run.decide(), kToA);
+}
+
+TEST(BestSingle, RepeatsTheMostAccurateActionUntilItsUsesRunOut) {
+  pomdp::ObjectProblemData d = testing::two_objects();
+  for (auto& a : d.sensing) a.uses = 2;
+  StrategyRun run("best_single", d, {0.5, 0.5});
+  EXPECT_EQ(run.decide(), kPress);  // 0.85 > 0.70 > 0.60
+  run.heard(kPress, {0.9, 0.1});
+  EXPECT_EQ(run.decide(), kPress);  // confident already, but a limited action is used up
+  run.heard(kPress, {0.95, 0.05});
+  EXPECT_EQ(run.decide(), kToA);  // press spent; tap and shake are not its business
+}
+
+TEST(BestSingle, FollowsTheAccuracyNotTheOrder) {
+  pomdp::ObjectProblemData d = testing::two_objects();
+  d.observation_table[kShake] = {{0.95, 0.05}, {0.05, 0.95}};  // accuracy 0.95
+  d.sensing[kShake].uses = 1;
+  StrategyRun run("best_single", d, {0.5, 0.5});
+  EXPECT_EQ(run.decide(), kShake);
+  run.heard(kShake, {0.05, 0.95});
+  EXPECT_EQ(run.decide(), kToB);
+}
+
+TEST(BestSingle, WithoutALimitRepeatsWhileOneMoreLookIsWorthIt) {
+  {
+    // Uniform: pressing once more then committing is worth -1 + 0.99·(-6.5) = -7.435 against
+    // committing now at 0.5·10 - 0.5·100 = -45.
+    StrategyRun run("best_single", testing::two_objects(), {0.5, 0.5});
+    EXPECT_EQ(run.decide(), kPress);
+    EXPECT_NEAR(run.strategy->root_action_values()[kPress], -7.435, 1e-12);
+  }
+  // At (0.99, 0.01) no symbol changes the bin: -1 + 0.99·(0.99·10 - 0.01·100) = 7.811 < 8.9.
+  StrategyRun run("best_single", testing::two_objects(), {0.99, 0.01});
+  EXPECT_EQ(run.decide(), kToA);
+}
+
+TEST(InformationGain, CommitsWhenTheObjectIsKnown) {
+  StrategyRun run("information_gain", testing::two_objects(), {1.0, 0.0});
+  // Commit now: 10. Any sensing action then commit: -1 + 0.99·10 = 8.9.
+  EXPECT_EQ(run.decide(), kToA);
+  const std::vector<double> values = run.strategy->root_action_values();
+  EXPECT_DOUBLE_EQ(values[kToA], 10.0);
+  EXPECT_DOUBLE_EQ(values[kToB], -100.0);
+  for (int a : {kTap, kPress, kShake}) EXPECT_NEAR(values[a], 8.9, 1e-12);
+}
+
+TEST(InformationGain, CommitsWhenNoSymbolWouldChangeTheBin) {
+  // (0.99, 0.01): commit 8.9; every action's lookahead -1 + 0.99·8.9 = 7.811 (BestSingle's case).
+  StrategyRun run("information_gain", testing::two_objects(), {0.99, 0.01});
+  EXPECT_EQ(run.decide(), kToA);
+  EXPECT_NEAR(run.strategy->root_action_values()[kPress], 7.811, 1e-12);
+}
+
+TEST(InformationGain, SensesWithTheMostInformativeActionPerUnitCost) {
+  {
+    // Uniform: gains (nats) tap 0.020136, press 0.275396, shake 0.082283 (strategy_measures_test),
+    // all at cost 1; every lookahead (press -7.435) beats committing (-45).
+    StrategyRun run("information_gain", testing::two_objects(), {0.5, 0.5});
+    EXPECT_EQ(run.decide(), kPress);
+  }
+  // Press costing 4: 0.275396 / 4 = 0.068849 < shake's 0.082283 (its lookahead, -4 + 0.99·(-6.5),
+  // still beats -45).
+  pomdp::ObjectProblemData d = testing::two_objects();
+  d.sensing[kPress].reward = -4.0;
+  StrategyRun run("information_gain", d, {0.5, 0.5});
+  EXPECT_EQ(run.decide(), kShake);
+  EXPECT_NEAR(run.strategy->root_action_values()[kPress], -4 + 0.99 * -6.5, 1e-12);
+}
+
+TEST(InformationGain, SortsWhenEverySensingActionIsSpent) {
+  pomdp::ObjectProblemData d = testing::two_objects();
+  for (auto& a : d.sensing) a.uses = 1;
+  StrategyRun run("information_gain", d, {0.5, 0.5});
+  EXPECT_EQ(run.decide(), kPress);
+  run.heard(kPress, {0.5, 0.5});
+  EXPECT_EQ(run.decide(), kShake);  // press spent: the next most informative
+  run.heard(kShake, {0.5, 0.5});
+  EXPECT_EQ(run.decide(), kTap);
+  run.heard(kTap, {0.4, 0.6});
+  EXPECT_EQ(run.decide(), kToB);
+}
+
+// Decisions of `random` at a fixed belief, with no update (so the choices stay the same).
+std::vector<int> random_decisions(const pomdp::ObjectProblemData& d, std::vector<double> belief,
+                                  std::uint64_t seed, int n, int spent = -1) {
+  const auto strategy = make_strategy("random", model_of(d));
+  Rng rng(seed);
+  strategy->reset(GivenBelief(belief), rng);
+  if (spent >= 0) strategy->update(spent, {0, {}}, GivenBelief(belief), rng);
+  std::vector<int> decisions;
+  for (int i = 0; i < n; ++i) {
+    strategy->improve(Budget::episodes(1), rng);
+    decisions.push_back(strategy->best_action());
+  }
+  return decisions;
+}
+
+TEST(Random, ReproducibleForASeed) {
+  const auto d = testing::two_objects();
+  EXPECT_EQ(random_decisions(d, {0.5, 0.5}, 11, 50), random_decisions(d, {0.5, 0.5}, 11, 50));
+  EXPECT_NE(random_decisions(d, {0.5, 0.5}, 11, 50), random_decisions(d, {0.5, 0.5}, 12, 50));
+}
+
+TEST(Random, UniformOverTheAvailableSensingActionsAndSortNow) {
+  // Four choices at 1/4 each; 4000 draws: sd sqrt(0.25·0.75/4000) = 0.0068, so ±0.03 is 4.4 sd.
+  // "Sort now" at (0.2, 0.8) is to_b; to_a never.
+  const int n = 4000;
+  std::array<int, 5> count{};
+  for (int a : random_decisions(testing::two_objects(), {0.2, 0.8}, 5, n)) ++count[a];
+  EXPECT_EQ(count[kToA], 0);
+  for (int a : {kTap, kPress, kShake, kToB}) EXPECT_NEAR(count[a] / double(n), 0.25, 0.03) << a;
+  // Press spent: three choices at 1/3 (sd 0.0075).
+  pomdp::ObjectProblemData d = testing::two_objects();
+  d.sensing[kPress].uses = 1;
+  count = {};
+  for (int a : random_decisions(d, {0.2, 0.8}, 6, n, kPress)) ++count[a];
+  EXPECT_EQ(count[kPress], 0);
+  for (int a : {kTap, kShake, kToB}) EXPECT_NEAR(count[a] / double(n), 1.0 / 3, 0.03) << a;
+}
+
+}  // namespace
+}  // namespace echoplan::solvers
