@@ -66,9 +66,9 @@ Campaign open_campaign(const CampaignConfig& config, const std::filesystem::path
 std::filesystem::path training_recordings(const Campaign& campaign);
 
 // Prepares what the trials need. A dataset world: fits each fold's classifiers and table
-// ("fit folds" progress). Otherwise: synthesises the training set into DIR/training/recordings (unless
-// it is complete already or the campaign uses existing recordings), then, when needs_classifier(),
-// trains and calibrates the classifier on it (or loads training_set.model, or
+// ("fit folds" progress). Otherwise: synthesises the training set into DIR/training/recordings
+// (unless it is complete already or the campaign uses existing recordings), then, when
+// needs_classifier(), trains and calibrates the classifier on it (or loads training_set.model, or
 // DIR/training/model.json of an earlier run), calibrates each calibrating arm's problem in memory
 // (writing it to DIR/training/<arm>.problem.yaml for the user) and checks every arm's loop.
 // `progress(stage, done, total)` reports "synthesise" clips and the trainer's stages. Returns false

@@ -16,6 +16,7 @@
 #include "common/stable_hash.h"
 #include "common/yaml_reader.h"
 #include "perception/observation_model.h"
+#include "solvers/baseline_strategies.h"
 #include "solvers/make_solver.h"
 
 namespace echoplan::experiment {
@@ -236,8 +237,7 @@ TaskRewards read_task(const YamlReader& f, const YAML::Node& task) {
   if (auto n = f.optional(r, "right", "task.rewards")) rewards.right = f.number(n, "right");
   if (auto n = f.optional(r, "wrong", "task.rewards")) rewards.wrong = f.number(n, "wrong");
   if (auto n = f.optional(r, "sense", "task.rewards")) rewards.sense = f.number(n, "sense");
-  if (!(rewards.right > rewards.wrong))
-    f.fail(r, "task.rewards: right must be greater than wrong");
+  if (!(rewards.right > rewards.wrong)) f.fail(r, "task.rewards: right must be greater than wrong");
   return rewards;
 }
 
@@ -378,8 +378,9 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
   } else {
     c.groups = read_trial_groups(f, root);
     if (auto t = f.optional(root, "task", "campaign"))
-      f.fail(t, "task is for dataset worlds; the problem file gives a model or simulated world's "
-                "rewards");
+      f.fail(t,
+             "task is for dataset worlds; the problem file gives a model or simulated world's "
+             "rewards");
   }
   c.planner = read_planner(f, root);
   c.reference = read_reference(f, root, source);
@@ -453,8 +454,7 @@ std::vector<CampaignArm> arms_from_json(const nlohmann::json& j, const jf::JsonS
 WorldConfig world_from_json(const nlohmann::json& j, const jf::JsonSource& source) {
   const nlohmann::json& w = jf::member(j, "world", "", source);
   WorldConfig world;
-  const std::string type =
-      jf::string(jf::member(w, "type", "world", source), "world.type", source);
+  const std::string type = jf::string(jf::member(w, "type", "world", source), "world.type", source);
   for (WorldType t : {WorldType::model, WorldType::simulated, WorldType::dataset})
     if (type == to_string(t)) world.type = t;
   world.problem = jf::string(jf::member(w, "problem", "world", source), "world.problem", source);

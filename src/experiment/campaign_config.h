@@ -74,9 +74,9 @@ struct WorldConfig {
 
 // What a dataset world's sorting earns (a model or simulated world's problem file has its own).
 struct TaskRewards {
-  double right = 10.0;   // sorted into the right bin (the report's +10)
-  double wrong = -100.0; // sorted into another bin
-  double sense = -1.0;   // each sensing action
+  double right = 10.0;    // sorted into the right bin (the report's +10)
+  double wrong = -100.0;  // sorted into another bin
+  double sense = -1.0;    // each sensing action
 };
 
 // The training set synthesised before the trials (`echoplan dataset`'s library code).

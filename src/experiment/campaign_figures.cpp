@@ -160,20 +160,23 @@ Drawing tradeoff_drawing(const CampaignResults& results, int sensing, const fs::
   d.width = 700;
   d.height = 500;
   std::string data;
+  std::string plot;
   int index = 0;
   for (const SummaryRow& row : summary_rows(results)) {
     if (row.scope != RowScope::all) continue;
     double actions = 0.0;
     for (int a = 0; a < sensing; ++a) actions += row.summary.mean_action_counts.at(a);
-    data += fmt::format("{} {} {} {}\n", index++, actions, row.summary.accuracy,
-                        gnuplot_text(row.arm));
+    data += fmt::format("{} {}\n", actions, row.summary.accuracy);
+    // One series per arm, so each has its own colour and a key entry (labels would overlap).
+    plot += fmt::format("{}'tradeoff.dat' every ::{}::{} using 1:2 with points pt 7 ps 2 title {}",
+                        index ? ", " : "plot ", index, index, gnuplot_text(row.arm));
+    ++index;
   }
   std::ofstream(data_dir / "tradeoff.dat") << data;
   d.commands =
       "set xlabel 'mean sensing actions per trial'\nset ylabel 'sorted right'\n"
-      "set yrange [0:1.05]\nset xrange [0:*]\nset grid\nset key off\n"
-      "plot 'tradeoff.dat' using 2:3 with points pt 7 ps 2, '' using 2:3:4 with labels offset "
-      "0,1 noenhanced\n";
+      "set yrange [0:1.05]\nset xrange [0:*]\nset grid\nset key bottom right noenhanced\n" +
+      plot + "\n";
   return d;
 }
 

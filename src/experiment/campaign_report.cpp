@@ -95,8 +95,7 @@ std::vector<SummaryRow> summary_rows(const CampaignResults& results) {
       std::vector<std::string> covered;
       for (const ObjectGroup& g : groups)
         if (keep(g)) covered.push_back(g.object);
-      rows.push_back({arm.name, scope, label,
-                      summarize(records, num_actions, results.right_action),
+      rows.push_back({arm.name, scope, label, summarize(records, num_actions, results.right_action),
                       reference_for(results.config.reference, scope, covered)});
     };
     const bool dataset = results.config.world.type == WorldType::dataset;
@@ -204,6 +203,22 @@ nlohmann::json summary_json(const CampaignResults& results) {
   return j;
 }
 
+namespace {
+
+// How an arm decides, for the summary's heading.
+std::string arm_text(const CampaignResults& results, const CampaignArm& arm) {
+  const bool dataset = results.config.world.type == WorldType::dataset;
+  const std::string problem =
+      dataset
+          ? "each fold's problem"
+          : (arm.calibrate ? arm.problem + ", its observation table calibrated on the training set"
+                           : arm.problem);
+  if (arm.strategy == kPlanStrategy) return "plans with " + problem;
+  return fmt::format("fixed strategy {} with {}", arm.strategy, problem);
+}
+
+}  // namespace
+
 std::string summary_text(const CampaignResults& results) {
   std::string out;
   const auto& actions = results.spec.action_names;
@@ -217,13 +232,8 @@ std::string summary_text(const CampaignResults& results) {
   for (const SummaryRow& row : summary_rows(results)) {
     if (row.arm != current_arm) {
       current_arm = row.arm;
-      std::string problem;
       for (const CampaignArm& a : results.config.arms)
-        if (a.name == row.arm)
-          problem = a.calibrate
-                        ? a.problem + ", its observation table calibrated on the training set"
-                        : a.problem;
-      out += fmt::format("\narm {} (plans with {})\n", row.arm, problem);
+        if (a.name == row.arm) out += fmt::format("\narm {} ({})\n", row.arm, arm_text(results, a));
       out += fmt::format("  {:<24}{:>7}{:>10}{:>22}{:>7}", "objects", "trials", "accuracy",
                          "reward (95% CI)", "steps");
       for (const auto& a : actions) out += fmt::format("{:>10}", a.substr(0, 9));

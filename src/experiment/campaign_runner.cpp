@@ -25,7 +25,8 @@ class Worker {
                                  const std::atomic<bool>* stop) {
     const TrialLoop& trial = trial_loop(loops_, job);
     const loop::TrialRequest request{job.index, trial.true_state, seed};
-    if (loops_[job.arm][job.group].size() != 1) return loop::Loop(trial.spec).run(request, {}, stop);
+    if (loops_[job.arm][job.group].size() != 1)
+      return loop::Loop(trial.spec).run(request, {}, stop);
     auto it = mine_.find(trial.spec.get());
     if (it == mine_.end()) it = mine_.emplace(trial.spec.get(), loop::Loop(trial.spec)).first;
     return it->second.run(request, {}, stop);

@@ -55,8 +55,8 @@ solvers::PlannerOverrides arm_planner(const CampaignConfig& config, const Campai
 // session it replays.
 struct TrialLoop {
   std::shared_ptr<const loop::LoopSpec> spec;
-  int true_state = -1;   // index into the problem's objects
-  std::string session;   // the data's session name; empty outside a dataset world
+  int true_state = -1;  // index into the problem's objects
+  std::string session;  // the data's session name; empty outside a dataset world
 };
 
 // The loops of each arm and group: loops[arm][group] holds one TrialLoop that all the group's

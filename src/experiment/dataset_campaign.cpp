@@ -31,8 +31,7 @@ bool is_recordings_tree(const std::string& dir) {
 
 perception::FeatureSet load_data(const std::string& dir, const ProgressFn& progress) {
   if (!is_recordings_tree(dir)) return perception::load_feature_set(dir);
-  return perception::feature_set_from_recordings(perception::load_recording_set(dir), {},
-                                                 progress);
+  return perception::feature_set_from_recordings(perception::load_recording_set(dir), {}, progress);
 }
 
 pomdp::Problem dataset_problem_file(pomdp::ObjectProblemData data, const std::string& source) {
@@ -68,13 +67,14 @@ DatasetTrials open_dataset(const CampaignConfig& config, const ProgressFn& progr
   std::optional<perception::ObjectGroups> groups;
   if (!config.world.groups.empty()) groups = perception::load_groups(config.world.groups);
   t.task = perception::make_dataset_task(*t.data, groups ? &*groups : nullptr,
-                                         perception::parse_hold_out(config.world.hold_out));
+                                         perception::parse_hold_out(config.world.hold_out),
+                                         config.world.groups);
   t.folds = perception::make_folds(*t.data, t.task);
   t.fold_of_session.assign(t.data->sessions.size(), -1);
   for (std::size_t f = 0; f < t.folds.size(); ++f)
     for (int s : t.folds[f].test_sessions) t.fold_of_session.at(s) = static_cast<int>(f);
   t.names = std::make_shared<const pomdp::Problem>(dataset_problem_file(
-      loop::dataset_problem_names(t.task, *t.data, task_rewards(config)), config.world.data));
+      loop::dataset_problem_shape(t.task, *t.data, task_rewards(config)), config.world.data));
   return t;
 }
 

@@ -40,17 +40,17 @@ nlohmann::json to_json(const JournalEntry& entry) {
     steps.push_back(std::move(step));
   }
   nlohmann::json j = {{"id", entry.id},
-          {"arm", entry.arm},
-          {"object", entry.object},
-          {"trial", r.trial},
-          {"true_state", r.true_state},
-          {"believed_state", r.believed_state},
-          {"steps", r.steps},
-          {"action_counts", r.action_counts},
-          {"discounted_reward", r.discounted_reward},
-          {"collision", r.collision},
-          {"capped", r.capped},
-          {"step_log", std::move(steps)}};
+                      {"arm", entry.arm},
+                      {"object", entry.object},
+                      {"trial", r.trial},
+                      {"true_state", r.true_state},
+                      {"believed_state", r.believed_state},
+                      {"steps", r.steps},
+                      {"action_counts", r.action_counts},
+                      {"discounted_reward", r.discounted_reward},
+                      {"collision", r.collision},
+                      {"capped", r.capped},
+                      {"step_log", std::move(steps)}};
   // Only a dataset world's trials have one (journals of other worlds keep their bytes).
   if (!entry.session.empty()) j["session"] = entry.session;
   return j;

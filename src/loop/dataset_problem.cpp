@@ -10,10 +10,13 @@
 
 namespace echoplan::loop {
 
-pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
-                                         const perception::FeatureModel& model,
-                                         const DatasetRewards& rewards, std::vector<int> uses) {
-  const auto& actions = model.actions();
+namespace {
+
+using Table = std::vector<std::vector<std::vector<double>>>;
+
+pomdp::ObjectProblemData problem_of(const perception::DatasetTask& task,
+                                    const std::vector<std::string>& actions, const Table& table,
+                                    const DatasetRewards& rewards, std::vector<int> uses) {
   if (uses.size() != actions.size())
     throw InputError(fmt::format("{} use limits for {} actions; expected one per action",
                                  uses.size(), actions.size()));
@@ -39,9 +42,28 @@ pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
     data.sorting_reward.push_back(std::move(row));
   }
   data.observation_symbols = task.classes;
-  data.observation_table = model.table();
+  data.observation_table = table;
   pomdp::validate_object_problem(data);
   return data;
+}
+
+}  // namespace
+
+pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
+                                         const perception::FeatureModel& model,
+                                         const DatasetRewards& rewards, std::vector<int> uses) {
+  return problem_of(task, model.actions(), model.table(), rewards, std::move(uses));
+}
+
+pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& task,
+                                               const perception::FeatureSet& set,
+                                               const DatasetRewards& rewards) {
+  std::vector<std::string> actions;
+  for (const perception::ActionData& action : set.actions) actions.push_back(action.name);
+  const std::size_t classes = task.classes.size();
+  const Table uniform(actions.size(), std::vector<std::vector<double>>(
+                                          classes, std::vector<double>(classes, 1.0 / classes)));
+  return problem_of(task, actions, uniform, rewards, default_uses(set));
 }
 
 std::vector<int> default_uses(const perception::FeatureSet& set) {

@@ -29,6 +29,11 @@ pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
                                          const perception::FeatureModel& model,
                                          const DatasetRewards& rewards, std::vector<int> uses);
 
+// The same problem's shape, with every observation row uniform and default_uses(set): its names
+// (classes, actions, bins, symbols) before any model is fitted, e.g. for a campaign's report.
+pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& task,
+                                               const perception::FeatureSet& set,
+                                               const DatasetRewards& rewards);
 // Per action of `set`: the most performances of that action in any one session (a trial can
 // perform it at most that often).
 std::vector<int> default_uses(const perception::FeatureSet& set);

@@ -13,9 +13,9 @@ namespace {
 int data_action_index(const perception::FeatureSet& data, const std::string& name) {
   for (std::size_t a = 0; a < data.actions.size(); ++a)
     if (data.actions[a].name == name) return static_cast<int>(a);
-  throw InputError(data.root, 0,
-                   fmt::format("the problem's sensing action '{}' is not an action of the data",
-                               name));
+  throw InputError(
+      data.root, 0,
+      fmt::format("the problem's sensing action '{}' is not an action of the data", name));
 }
 
 // The rows of `session` in action `a`'s data, in file order.
@@ -31,9 +31,21 @@ std::vector<int> session_rows(const perception::ActionData& action, int session)
 std::vector<int> session_uses(const pomdp::ObjectProblemData& problem,
                               const perception::FeatureSet& data, int session) {
   std::vector<int> uses;
-  for (const pomdp::SensingAction& act : problem.sensing)
-    uses.push_back(static_cast<int>(
-        session_rows(data.actions[data_action_index(data, act.name)], session).size()));
+  for (const pomdp::SensingAction& act : problem.sensing) {
+    const int recorded = static_cast<int>(
+        session_rows(data.actions[data_action_index(data, act.name)], session).size());
+    // A limit of 0 means "no limit" (pomdp::SensingAction::uses), so a session that never
+    // performed a behaviour cannot be replayed as it stands.
+    if (recorded == 0)
+      throw InputError(
+          data.root, 0,
+          fmt::format("session '{}' of object '{}' has no recording of '{}': a dataset world "
+                      "replays sessions that performed every behaviour (a recordings tree needs a "
+                      "manifest `session` column that groups each exploration's recordings)",
+                      data.sessions.at(session).name,
+                      data.objects.at(data.sessions.at(session).object), act.name));
+    uses.push_back(recorded);
+  }
   return uses;
 }
 
@@ -58,9 +70,9 @@ WorldStep DatasetWorld::execute(int action, Rng& /*rng*/) {
   pomdp::Outcome outcome;
   if (problem_.is_sensing(action)) {
     if (next_[action] >= rows_[action].size())
-      throw std::logic_error(fmt::format(
-          "dataset world: '{}' used more often than the session recorded it ({} times)",
-          data.sensing[action].name, rows_[action].size()));
+      throw std::logic_error(
+          fmt::format("dataset world: '{}' used more often than the session recorded it ({} times)",
+                      data.sensing[action].name, rows_[action].size()));
     const int row = rows_[action][next_[action]++];
     outcome.observation.index = spec_.model->classify(data_action_[action], *spec_.data, row);
     outcome.reward = data.sensing[action].reward;

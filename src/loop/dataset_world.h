@@ -35,13 +35,14 @@ class DatasetWorld final : public World {
  private:
   const pomdp::ObjectIdentificationModel& problem_;
   DatasetWorldSpec spec_;
-  std::vector<int> data_action_;            // [sensing action] -> index into data->actions
-  std::vector<std::vector<int>> rows_;      // [sensing action] -> the session's rows, file order
-  std::vector<std::size_t> next_;           // [sensing action] -> rows used so far this trial
+  std::vector<int> data_action_;        // [sensing action] -> index into data->actions
+  std::vector<std::vector<int>> rows_;  // [sensing action] -> the session's rows, file order
+  std::vector<std::size_t> next_;       // [sensing action] -> rows used so far this trial
   int true_class_ = 0;
 };
 
 // How often the session recorded each of `problem`'s sensing actions: its use limits in a trial.
+// InputError for a session without a recording of some action (a limit of 0 means none).
 std::vector<int> session_uses(const pomdp::ObjectProblemData& problem,
                               const perception::FeatureSet& data, int session);
 

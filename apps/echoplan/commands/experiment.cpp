@@ -42,9 +42,10 @@ void run_experiment(const ExperimentFlags& f) {
   const std::atomic<bool>& stop_requested = stop.flag();
 
   const auto start = std::chrono::steady_clock::now();
-  spdlog::info(
-      "campaign {} -> {} ({} trials{}, {} workers)", config_path, f.out, campaign.config.total_trials(),
-      shard.count > 1 ? fmt::format(", shard {}/{}", shard.index, shard.count) : "", workers);
+  spdlog::info("campaign {} -> {} ({} trials{}, {} workers)", config_path, f.out,
+               campaign.config.total_trials(),
+               shard.count > 1 ? fmt::format(", shard {}/{}", shard.index, shard.count) : "",
+               workers);
   {
     // One bar per stage of the preparation (synthesis, then the trainer's stages).
     std::unique_ptr<experiment::ProgressBar> bar;
