@@ -206,6 +206,41 @@ TEST(Trials, StopRequestKeepsFinishedTrialsAndValidFiles) {
   EXPECT_EQ(count_lines(slurp(dir / "trials.csv")), 1 + 2);
 }
 
+// A solver that strikes whatever it is told: on a problem where strike may be used once, the
+// second strike must stop the trial with a clear logic error (it would ask the world for a
+// performance it does not have).
+class AlwaysStrike final : public solvers::Solver {
+ public:
+  void reset(const pomdp::Belief&, Rng&) override {}
+  void improve(const solvers::Budget&, Rng&) override {}
+  int best_action() const override { return 1; }  // strike
+  std::vector<double> root_action_values() const override { return {}; }
+  void update(int, const pomdp::Observation&, const pomdp::Belief&, Rng&) override {}
+  solvers::SolverStats stats() const override { return {}; }
+};
+
+TEST(Trials, ASolverChoosingAUsedUpActionIsALogicError) {
+  pomdp::ObjectProblemData d = report_problem().model->object_identification()->data();
+  d.sensing[1].uses = 1;
+  const auto model = std::make_shared<const pomdp::ObjectIdentificationModel>(std::move(d));
+  loop::TableWorld world{model};
+  AlwaysStrike solver;
+  loop::TrialParts parts;
+  parts.model = model.get();
+  parts.world = &world;
+  parts.solver = &solver;
+  parts.make_belief = [model](Rng& rng) {
+    return std::make_unique<pomdp::ParticleBelief>(model, 100, rng);
+  };
+  try {
+    loop::run_trial(parts, TrialOptions{}, 0, -1, {});
+    FAIL() << "no error";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("'strike'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("1 allowed use"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Trials, BadOptionsAreInputErrors) {
   Harness h;
   TrialOptions options;
