@@ -47,8 +47,9 @@ IdentificationSolver::IdentificationSolver(std::shared_ptr<const IdentificationT
                                            const IdentificationOptions& options)
     : tables_(std::move(tables)), options_(options) {
   const IdentificationTables& t = *tables_;
-  // Stored plans and points hold for the uses of the node they came from (see the header).
-  if (t.limits.any()) options_.plan_lower_bound = options_.sawtooth_upper_bound = false;
+  // Points bound V* only at nodes with their uses spent (see the header).
+  limited_ = t.limits.any();
+  if (limited_) options_.sawtooth_upper_bound = false;
   num_states_ = t.states;
   num_actions_ = t.actions;
   num_observations_ = t.observations;
@@ -101,6 +102,7 @@ IdentificationSolver::IdentificationSolver(std::shared_ptr<const IdentificationT
   insert(Key{}, b0.data(), 0.0, nullptr);
   belief_scratch_.resize(L);
   plan_scratch_.resize(L);
+  uses_scratch_.resize(A);
   children_scratch_.resize(O);
 }
 
@@ -131,32 +133,62 @@ Bounds IdentificationSolver::simple_bounds(const double* b, double* plan) const 
   return {lower, std::max(lower, upper)};
 }
 
-Bounds IdentificationSolver::frontier_bounds(const double* b, double* plan,
-                                             double upper_cap) const {
+Bounds IdentificationSolver::frontier_bounds(const double* b, double* plan, double upper_cap,
+                                             const std::uint16_t* node_uses,
+                                             std::size_t* index) const {
   const BeliefVector belief(b, b + num_live_);
   double lower = 0.0;
-  const double* best = best_plan(b, lower);
+  const double* best = best_plan(b, lower, node_uses, index);
   if (plan != nullptr) std::copy(best, best + num_live_, plan);
   // Without points the sawtooth is max over the one-more-sensing vectors. (The pair relaxation
   // is in every node's bounds from the start: simple_bounds.)
   return {lower, std::max(lower, upper_points_.value_below(belief, upper_cap))};
 }
 
-const double* IdentificationSolver::best_plan(const double* b, double& value) const {
+const double* IdentificationSolver::best_plan(const double* b, double& value,
+                                              const std::uint16_t* node_uses,
+                                              std::size_t* index) const {
   const int L = num_live_;
   const std::size_t count = plan_matrix_.size() / L;
   std::size_t best = 0;
   value = -std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < count; ++k) {
+    if (node_uses != nullptr && !plan_fits(k, node_uses)) continue;
     const double* alpha = &plan_matrix_[k * L];
     double v = 0.0;
     for (int l = 0; l < L; ++l) v += alpha[l] * b[l];
     if (v > value) value = v, best = k;
   }
+  if (index != nullptr) *index = best;
   return &plan_matrix_[best * L];
 }
 
-void IdentificationSolver::add_plan(AlphaVector plan) {
+bool IdentificationSolver::plan_fits(std::size_t plan, const std::uint16_t* node_uses) const {
+  const std::uint16_t* needs = &plan_uses_matrix_[plan * num_actions_];
+  for (int a = 0; a < num_actions_; ++a) {
+    const int limit = tables_->limits.max_uses(a);
+    if (limit > 0 && node_uses[a] + needs[a] > limit) return false;
+  }
+  return true;
+}
+
+const std::uint16_t* IdentificationSolver::node_uses(NodeId node) const {
+  for (int a = 0; a < num_actions_; ++a)
+    uses_scratch_[a] = static_cast<std::uint16_t>(uses(node, a));
+  return uses_scratch_.data();
+}
+
+void IdentificationSolver::add_plan(AlphaVector plan, const std::uint16_t* plan_uses) {
+  if (limited_) {
+    // No pruning by dominance: a dominated plan that needs fewer uses still bounds nodes the
+    // dominating one does not fit.
+    plan_matrix_.insert(plan_matrix_.end(), plan.values.begin(), plan.values.end());
+    if (plan_uses != nullptr)
+      plan_uses_matrix_.insert(plan_uses_matrix_.end(), plan_uses, plan_uses + num_actions_);
+    else
+      plan_uses_matrix_.resize(plan_uses_matrix_.size() + num_actions_, 0);
+    return;
+  }
   if (!plans_.add(std::move(plan))) return;
   // The set may have dropped plans the new one dominates: copy it afresh (as costly as the add).
   plan_matrix_.clear();
@@ -168,10 +200,15 @@ void IdentificationSolver::refresh(NodeId node) {
   const double* b = node_belief(node);
   double* plan = &plan_[std::size_t(node) * num_live_];
   // The node's own upper bound caps the sawtooth: points that cannot beat it are cut short.
-  const Bounds f = frontier_bounds(b, plan_scratch_.data(), upper_[node]);
+  std::size_t index = 0;
+  const Bounds f = frontier_bounds(b, plan_scratch_.data(), upper_[node],
+                                   limited_ ? node_uses(node) : nullptr, &index);
   if (f.lower > lower_[node]) {
     lower_[node] = f.lower;
     std::copy(plan_scratch_.begin(), plan_scratch_.end(), plan);
+    if (limited_)
+      std::copy_n(&plan_uses_matrix_[index * num_actions_], num_actions_,
+                  &node_plan_uses_[std::size_t(node) * num_actions_]);
   }
   upper_[node] = std::max(lower_[node], std::min(upper_[node], f.upper));
 }
@@ -239,6 +276,7 @@ IdentificationSolver::NodeId IdentificationSolver::insert(const Key& key, const 
   lower_.push_back(f.lower);
   upper_.push_back(f.upper);
   expanded_at_.push_back(std::numeric_limits<double>::infinity());
+  if (limited_) node_plan_uses_.resize(node_plan_uses_.size() + num_actions_, 0);  // commit now
   index_.insert(key, id);
   return id;
 }
@@ -291,11 +329,15 @@ IdentificationSolver::NodeId IdentificationSolver::child(NodeId node, int action
 Bounds IdentificationSolver::value(NodeId node) const { return {lower_[node], upper_[node]}; }
 
 Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView>& children,
-                                       double* plan) const {
+                                       double* plan, std::uint16_t* plan_uses) const {
   const double* b = node_belief(node);
   const double r = expected_reward(b, a);
   const int L = num_live_;
   if (plan != nullptr) std::copy(&tables_->reward[a * L], &tables_->reward[a * L] + L, plan);
+  if (plan_uses != nullptr) {
+    std::fill_n(plan_uses, num_actions_, 0);
+    if (kind_[a] == ActionKind::sensing) plan_uses[a] = 1;
+  }
   if (kind_[a] == ActionKind::terminal) return {r, r};
   if (!available(node, a)) {
     constexpr double kNever = -std::numeric_limits<double>::infinity();
@@ -317,6 +359,11 @@ Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView
       c.bounds = value(c.id);
       if (plan != nullptr)
         std::copy(&plan_[std::size_t(c.id) * L], &plan_[std::size_t(c.id) * L] + L, child_plan);
+      // The plan's uses on its worst branch: a more, then the most any child's plan needs.
+      if (plan_uses != nullptr)
+        for (int x = 0; x < num_actions_; ++x)
+          plan_uses[x] = std::max<std::uint16_t>(
+              plan_uses[x], (x == a) + node_plan_uses_[std::size_t(c.id) * num_actions_ + x]);
     } else {
       c.probability = child_belief(b, a, o, scratch);
       if (c.probability <= 0.0) continue;
@@ -355,14 +402,18 @@ std::vector<double> IdentificationSolver::belief(NodeId node) const {
 bool IdentificationSolver::backup(NodeId node) {
   const int L = num_live_;
   std::vector<double> plan(L), chosen(L);
+  // With limits, the plans' worst-case uses per action (else unused).
+  std::vector<std::uint16_t> uses(limited_ ? num_actions_ : 0), chosen_uses(uses.size());
   double lower = -std::numeric_limits<double>::infinity(), upper = lower;
   int best_action = 0;
   for (int a = 0; a < num_actions_; ++a) {
-    const Bounds q = lookahead(node, a, children_scratch_, plan.data());
+    const Bounds q =
+        lookahead(node, a, children_scratch_, plan.data(), limited_ ? uses.data() : nullptr);
     if (q.lower > lower) {
       lower = q.lower;
       best_action = a;
       chosen.swap(plan);
+      chosen_uses.swap(uses);
     }
     upper = std::max(upper, q.upper);
   }
@@ -372,14 +423,17 @@ bool IdentificationSolver::backup(NodeId node) {
   if (raised) {
     lower_[node] = lower;
     std::copy(chosen.begin(), chosen.end(), &plan_[std::size_t(node) * L]);
+    std::copy(chosen_uses.begin(), chosen_uses.end(),
+              node_plan_uses_.begin() + std::ptrdiff_t(node) * std::ptrdiff_t(chosen_uses.size()));
     // Stored only when it beats the plans at this belief: a plan that does not would never be the
     // maximum where it was found, and every stored plan costs every later frontier evaluation.
     const std::size_t max_plans = options_.max_frontier_plans > 0 ? options_.max_frontier_plans
                                                                   : options_.max_frontier_entries;
-    if (options_.plan_lower_bound && plans_.size() < max_plans) {
+    if (options_.plan_lower_bound && num_plans() < max_plans) {
       double known = 0.0;
-      best_plan(b, known);
-      if (lower > known + options_.frontier_margin) add_plan(AlphaVector{best_action, chosen});
+      best_plan(b, known, limited_ ? node_uses(node) : nullptr);
+      if (lower > known + options_.frontier_margin)
+        add_plan(AlphaVector{best_action, chosen}, limited_ ? chosen_uses.data() : nullptr);
     }
   }
   if (lowered) {

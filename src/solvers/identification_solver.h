@@ -50,15 +50,17 @@
 // the value with the remaining uses. Used-up actions are skipped everywhere (expansion, backups,
 // trials; action_value() gives them -inf). A belief *after some uses* is the node its history
 // reaches from the root by child(), as certify and the exact leaves walk it. The bounds stay
-// sound: commit-now plans and every node's own plan are feasible from that node; the upper
-// bounds (one more sensing, known-state values, the pair relaxation, the sawtooth corners) ignore
-// the limits, and dropping a limit can only raise V*. What does not carry over is reuse across
-// nodes with different uses: a plan stored at one node may need more uses than another node has
-// left, and a point's upper bound holds only for nodes with at least its uses spent. With limits
-// the solver therefore keeps neither (plan_lower_bound and the sawtooth points off): the frontier
-// falls back to commit now / one more sensing. Tagging each plan with its worst-case uses would
-// keep more, at a cost on every frontier evaluation; with limits the tree is shallow (at most
-// Σ_a max_uses sensing steps when every action is limited), where the fallback costs little.
+// sound: every node's own plan is feasible from that node; the upper bounds (one more sensing,
+// known-state values, the pair relaxation, the sawtooth corners) ignore the limits, and dropping a
+// limit can only raise V*. What does not carry over as is, is reuse across nodes with different
+// uses. The frontier's plans are therefore kept with their worst-case uses per action (the most
+// any branch of the plan takes each action; commit-now plans need none) and a plan bounds a node
+// from below only when it fits the node's remaining uses; they are not pruned by dominance (a
+// dominated plan that needs fewer uses may be the one that fits). A sawtooth point's upper bound
+// holds only for nodes with at least its uses spent, so with limits no points are stored (the
+// corners stay). Falling back to commit-now vectors alone was measured far weaker: on a 20-class,
+// 9-action problem with one use per action the lower bound at b0 stayed at -6.4 while ABT earned
+// +6.1 (docs/BENCHMARKS.md, "Use limits").
 //
 // Nodes are found by a 128-bit key, the sum of two independent random 64-bit codes per (a, o) pair
 // times its count (order-free, so every path to the same counts meets the same node); two count
@@ -166,7 +168,7 @@ class IdentificationSolver {
   std::size_t num_nodes() const { return lower_.size(); }
   long expansions() const { return expansions_; }
   // How many plans bound new beliefs from below, and how many belief points from above.
-  std::size_t num_plans() const { return plans_.size(); }
+  std::size_t num_plans() const { return plan_matrix_.size() / std::size_t(num_live_); }
   std::size_t num_upper_points() const { return upper_points_.num_points(); }
   // How many two-state sub-problems cap new beliefs' upper bounds (0 when the option is off).
   std::size_t num_relaxation_pairs() const { return pair_bound_.num_pairs(); }
@@ -212,10 +214,22 @@ class IdentificationSolver {
   // frontier_bounds: the stored plans and the sawtooth (tighter, costs a pass over both).
   Bounds simple_bounds(const double* belief, double* plan = nullptr) const;
   // The upper bound is never above upper_cap (a bound already known there).
-  Bounds frontier_bounds(const double* belief, double* plan, double upper_cap) const;
+  // With limits, `node_uses` (the node's uses per action) admits only the plans that fit them;
+  // the chosen plan's index goes to `index` when not null.
+  Bounds frontier_bounds(const double* belief, double* plan, double upper_cap,
+                         const std::uint16_t* node_uses = nullptr,
+                         std::size_t* index = nullptr) const;
   // The stored plan best at `belief` (its values over live states) and its value there.
-  const double* best_plan(const double* belief, double& value) const;
-  void add_plan(AlphaVector plan);
+  // With `node_uses`, only among the plans that fit them (plan_fits); `index` as above.
+  const double* best_plan(const double* belief, double& value,
+                          const std::uint16_t* node_uses = nullptr,
+                          std::size_t* index = nullptr) const;
+  // `plan_uses`: with limits, the plan's worst-case uses per action (null: none, commit now).
+  void add_plan(AlphaVector plan, const std::uint16_t* plan_uses = nullptr);
+  // With limits: stored plan `plan` needs no more uses than a node with `node_uses` has left.
+  bool plan_fits(std::size_t plan, const std::uint16_t* node_uses) const;
+  // The node's uses per action (into scratch space, valid until the next call).
+  const std::uint16_t* node_uses(NodeId node) const;
   // Tightens a stored node's bounds with what the plans and points know now.
   void refresh(NodeId node);
   double expected_reward(const double* belief, int action) const;
@@ -224,8 +238,9 @@ class IdentificationSolver {
   Key child_key(NodeId node, int action, int observation) const;
   // Bounds on Q(node, action) from its children's bounds; fills `children` (one per observation)
   // and, when `plan` is not null, the vector of the plan "action, then each child's plan".
+  // With limits, `plan_uses` (when not null) gets that plan's worst-case uses per action.
   Bounds lookahead(NodeId node, int action, std::vector<ChildView>& children,
-                   double* plan = nullptr) const;
+                   double* plan = nullptr, std::uint16_t* plan_uses = nullptr) const;
   // Bellman backup of both bounds; true when either tightened.
   bool backup(NodeId node);
   // What one refine call may still spend (its RefineLimits and what it has spent so far; not an
@@ -274,6 +289,12 @@ class IdentificationSolver {
   std::vector<ChildView> children_scratch_;     // backup()'s lookahead
   mutable std::vector<double> belief_scratch_;  // lookahead()'s child belief
   mutable std::vector<double> plan_scratch_;    // lookahead()'s child plan
+  // Use limits (tables_->limits.any()): stored plans are kept with their worst-case uses per
+  // action and admitted at a node only when they fit its remaining uses.
+  bool limited_ = false;
+  std::vector<std::uint16_t> plan_uses_matrix_;      // [k * A + a]: stored plan k's uses of a
+  std::vector<std::uint16_t> node_plan_uses_;        // [node * A + a]: the node's plan's uses of a
+  mutable std::vector<std::uint16_t> uses_scratch_;  // node_uses()
 };
 
 }  // namespace echoplan::solvers
