@@ -17,7 +17,7 @@ TEST(CampaignRunner, AnArmPlansWithTheCampaignsSolverAndBudgetAndTheProblemsSear
   config.planner.solver = "pomcp";
   config.planner.episodes = 120;
   const pomdp::Problem problem = pomdp::load_problem(kProblem);
-  const loop::Planner p = loop::make_planner(arm_planner(config), problem, kProblem);
+  const loop::Planner p = loop::make_planner(arm_planner(config, CampaignArm{}), problem, kProblem);
   EXPECT_EQ(p.name, "pomcp");
   EXPECT_EQ(p.budget.kind, solvers::Budget::Kind::episodes);
   EXPECT_EQ(p.budget.amount, 120);
@@ -27,9 +27,21 @@ TEST(CampaignRunner, AnArmPlansWithTheCampaignsSolverAndBudgetAndTheProblemsSear
 
   config.planner.episodes = 0;
   config.planner.step_ms = 40;
-  const loop::Planner timed = loop::make_planner(arm_planner(config), problem, kProblem);
+  const loop::Planner timed =
+      loop::make_planner(arm_planner(config, CampaignArm{}), problem, kProblem);
   EXPECT_EQ(timed.budget.kind, solvers::Budget::Kind::milliseconds);
   EXPECT_EQ(timed.budget.amount, 40);
+}
+
+TEST(CampaignRunner, AStrategyArmDecidesByItsStrategyNotTheCampaignsSolver) {
+  CampaignConfig config;
+  config.planner.solver = "abt";
+  config.planner.episodes = 120;
+  CampaignArm arm;
+  arm.strategy = "best_single";
+  EXPECT_EQ(arm_planner(config, arm).solver, "best_single");
+  arm.strategy = kPlanStrategy;
+  EXPECT_EQ(arm_planner(config, arm).solver, "abt");
 }
 
 TEST(CampaignRunner, JobsNumberArmsThenGroupsThenTrials) {
