@@ -419,6 +419,7 @@ nlohmann::json to_json(const CampaignConfig& c) {
                        {"table", c.training.table},
                        {"catalogue", c.training.catalogue},
                        {"sim_config", c.training.sim_config}};
+  j["trials"] = nlohmann::json::array();  // a dataset world's file has none (the data has them)
   for (const ObjectGroup& g : c.groups)
     j["trials"].push_back({{"object", g.object}, {"plays", g.plays}, {"trials", g.trials}});
   j["planner"] = {{"solver", c.planner.solver},

@@ -170,4 +170,105 @@ TEST(CampaignConfig, ReferenceIsRelativeToTheFileAndChecked) {
 }
 
 }  // namespace
+
+// A dataset world: the data folder must exist, so the tests make one (its contents are read by the
+// campaign, not by the file's reader).
+class DatasetCampaignConfig : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("echoplan_dataset_config_" +
+            std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    std::filesystem::create_directories(dir_ / "data");
+    std::ofstream(dir_ / "groups.csv") << "object,group\nmug,ceramic\n";
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::string source() const { return (dir_ / "c.yaml").string(); }
+  std::string error(const std::string& text) const {
+    try {
+      parse_campaign_config(text, source());
+    } catch (const InputError& e) {
+      return std::to_string(e.line()) + ": " + e.problem();
+    }
+    return "no error";
+  }
+
+  std::filesystem::path dir_;
+  const std::string text_ = R"(
+world: {type: dataset, data: data, hold_out: object, groups: groups.csv}
+task: {rewards: {right: 5, wrong: -50, sense: -2}}
+arms:
+  - {name: plan, strategy: plan}
+  - {name: greedy, strategy: information_gain}
+planner: {episodes: 100}
+)";
+};
+
+TEST_F(DatasetCampaignConfig, ReadsTheDataHoldOutGroupsRewardsAndStrategies) {
+  const CampaignConfig c = parse_campaign_config(text_, source());
+  EXPECT_EQ(c.world.type, WorldType::dataset);
+  EXPECT_EQ(c.world.data, (dir_ / "data").string());
+  EXPECT_EQ(c.world.groups, (dir_ / "groups.csv").string());
+  EXPECT_EQ(c.world.hold_out, "object");
+  EXPECT_EQ(c.rewards.right, 5);
+  EXPECT_EQ(c.rewards.wrong, -50);
+  EXPECT_EQ(c.rewards.sense, -2);
+  ASSERT_EQ(c.arms.size(), 2u);
+  EXPECT_EQ(c.arms[0].strategy, "plan");
+  EXPECT_EQ(c.arms[1].strategy, "information_gain");
+  EXPECT_TRUE(c.arms[0].problem.empty());
+  EXPECT_TRUE(c.groups.empty());  // the campaign takes its trials from the data
+  const CampaignConfig back = campaign_config_from_json(to_json(c), "campaign.json");
+  EXPECT_EQ(to_json(back), to_json(c));
+}
+
+TEST_F(DatasetCampaignConfig, DefaultsAreTheReportsRewardsAndSessions) {
+  const CampaignConfig c = parse_campaign_config(
+      "world: {type: dataset, data: data}\narms: [{name: plan}]\nplanner: {episodes: 10}\n",
+      source());
+  EXPECT_EQ(c.world.hold_out, "session");
+  EXPECT_EQ(c.rewards.right, 10);
+  EXPECT_EQ(c.rewards.wrong, -100);
+  EXPECT_EQ(c.rewards.sense, -1);
+  EXPECT_EQ(c.arms[0].strategy, "plan");
+}
+
+TEST_F(DatasetCampaignConfig, MistakesNameTheLineAndTheProblem) {
+  auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string text = text_;
+    text.replace(text.find(from), from.size(), to);
+    return error(text);
+  };
+  EXPECT_NE(replaced("data: data", "data: nowhere").find("does not exist"), std::string::npos);
+  EXPECT_NE(replaced("hold_out: object", "hold_out: trial").find("hold_out 'trial'"),
+            std::string::npos);
+  EXPECT_NE(replaced(", groups: groups.csv", "").find("hold_out: object needs groups"),
+            std::string::npos);
+  EXPECT_NE(replaced("groups.csv", "none.csv").find("groups file"), std::string::npos);
+  EXPECT_NE(replaced("strategy: information_gain", "strategy: greedy").find("strategy 'greedy'"),
+            std::string::npos);
+  EXPECT_NE(replaced("strategy: plan}", "strategy: plan, problem: p.yaml}")
+                .find("not for a dataset world's arms"),
+            std::string::npos);
+  EXPECT_NE(replaced("right: 5", "right: -500").find("right must be greater than wrong"),
+            std::string::npos);
+  const std::string trials = error(text_ + "trials: [{object: mug}]\n");
+  EXPECT_NE(trials.find("(object, session) pairs"), std::string::npos) << trials;
+  EXPECT_EQ(trials.substr(0, 2), "8:") << trials;
+  // task is for dataset worlds only.
+  EXPECT_NE(error_of(kMinimal + "task: {rewards: {right: 1}}\n").find("task is for dataset worlds"),
+            std::string::npos);
+}
+
+TEST_F(DatasetCampaignConfig, IdentityCoversTheDataItself) {
+  const CampaignConfig c = parse_campaign_config(text_, source());
+  const auto before = c.identity();
+  std::ofstream(dir_ / "data" / "x.csv") << "object,session,f\nmug,1,0.5\n";
+  const auto with_file = c.identity();
+  EXPECT_NE(before, with_file);
+  std::ofstream(dir_ / "data" / "x.csv") << "object,session,f\nmug,1,0.6\n";
+  EXPECT_NE(c.identity(), with_file);
+}
+
 }  // namespace echoplan::experiment
