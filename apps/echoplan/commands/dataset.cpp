@@ -15,7 +15,8 @@ void add_dataset_command(CLI::App& app) {
       "dataset",
       "Record every (object, action) pair --per-pair times: DIR/<object>/<action>/NNN.wav and "
       "DIR/manifest.csv "
-      "(file, object, action, seed, collision, duration, impacts, sampled parameters).\n"
+      "(file, object, action, seed, collision, duration, impacts, sampled parameters, session: "
+      "recording i of each action is session i + 1).\n"
       "Example: echoplan dataset --per-pair 10 --seed 1 -o recordings --objects "
       "coffee_mug,plastic_cup");
   struct Options {

@@ -101,8 +101,10 @@ void run_experiment(const ExperimentFlags& f) {
   const double report_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - report_start).count();
   fmt::print("{}\n", summary);
-  fmt::print("time: training set and classifier {:.1f} s, trials {:.1f} s, report {:.1f} s\n",
-             preparation_seconds, trial_seconds, report_seconds);
+  fmt::print(
+      "time: preparation (training set and classifier, or folds) {:.1f} s, trials {:.1f} s, report "
+      "{:.1f} s\n",
+      preparation_seconds, trial_seconds, report_seconds);
   fmt::print("report: {}/index.html\n", f.out);
   if (stop_requested) {
     spdlog::warn("interrupted: {} of {} trials are in {}; the same command continues the campaign",
