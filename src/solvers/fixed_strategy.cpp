@@ -35,6 +35,7 @@ FixedStrategy::FixedStrategy(const std::string& strategy, pomdp::ModelPtr model)
         "strategy '" + strategy + "' needs an object-identification problem (objects, " +
         "sensing and sorting actions: it decides from the belief over the objects and " +
         "sorts into a bin), and '" + model_->spec().name + "' is not one");
+  limits_ = UseLimits(*model_);
   uses_.assign(model_->num_actions(), 0);
   values_.assign(model_->num_actions(), std::numeric_limits<double>::quiet_NaN());
 }
@@ -68,10 +69,7 @@ void FixedStrategy::update(int action, const pomdp::Observation& /*observation*/
   decision_ = -1;
 }
 
-bool FixedStrategy::available(int action) const {
-  const int limit = model_->max_uses(action);
-  return limit == 0 || uses_[action] < limit;
-}
+bool FixedStrategy::available(int action) const { return limits_.allows(uses_, action); }
 
 std::vector<int> FixedStrategy::available_sensing() const {
   std::vector<int> actions;

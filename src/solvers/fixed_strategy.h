@@ -14,6 +14,7 @@
 
 #include "pomdp/object_identification_model.h"
 #include "solvers/solver.h"
+#include "solvers/use_limits.h"
 
 namespace echoplan::solvers {
 
@@ -59,8 +60,9 @@ class FixedStrategy : public Solver {
 
   pomdp::ModelPtr model_;
   const pomdp::ObjectIdentificationModel* problem_ = nullptr;
+  UseLimits limits_;
   std::vector<double> objects_;
-  std::vector<int> uses_;
+  UseCounts uses_;  // every action's uses since reset() (all_actions reads them without limits)
   std::vector<double> values_;
   int decision_ = -1;
 };
