@@ -196,9 +196,10 @@ std::string trials_table(const CampaignResults& results) {
     h += fmt::format(
         "<tr><td>{}</td><td class=\"l\">{}</td><td class=\"l\">{}</td><td class=\"l\">{}</td>"
         "<td class=\"l{}\">{}</td><td>{}</td>",
-        e.id, escape(e.arm), escape(e.object), escape(objects.at(r.true_state)),
-        r.believed_state == r.true_state ? "" : " bad", escape(objects.at(r.believed_state)),
-        r.steps);
+        e.id, escape(e.arm),
+        escape(e.session.empty() ? e.object : e.object + " (session " + e.session + ")"),
+        escape(objects.at(r.true_state)), r.believed_state == r.true_state ? "" : " bad",
+        escape(objects.at(r.believed_state)), r.steps);
     for (int c : r.action_counts) h += fmt::format("<td>{}</td>", c);
     h += fmt::format("<td>{:.4f}</td></tr>\n", r.discounted_reward);
   }
@@ -247,7 +248,11 @@ std::string html_report(const fs::path& directory, const CampaignResults& result
   std::string h = page_opening(results) + results_table(results) + paired_comparison(results);
   const std::optional<ReferenceResults>& reference = results.config.reference;
   if (reference && !reference->note.empty()) h += "<p>" + escape(reference->note) + "</p>\n";
-  h += figure_sections(directory, figures) + trials_table(results) + steps_table(results);
+  h += figure_sections(directory, figures) + trials_table(results);
+  // A dataset's decisions (a belief over every class at each) would make a page of megabytes.
+  h += results.config.world.type == WorldType::dataset
+           ? "<p>Every decision, with the belief it was taken from: steps.csv.</p>\n"
+           : steps_table(results);
   h += "<p>Files in this folder: trials.csv, steps.csv, arms/&lt;arm&gt;/ (the same per arm, for "
        "<code>echoplan certify</code>), summary.json, summary.txt, figures/ (PNG and SVG), "
        "journal.jsonl (one line per finished trial; everything else is rebuilt from it).</p>\n";
