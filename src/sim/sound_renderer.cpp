@@ -70,7 +70,10 @@ std::vector<float> SoundRenderer::dry_sound(const ContactTrace& trace, std::size
                      contact_ring_decay(impact), at, rate, dry);
   }
   const std::vector<float> friction =
-      friction_excitation(trace, rate, frames, rec.friction_gain, noise);
+      friction_excitation(trace, rate, frames, rec.friction_gain,
+                          {object_.friction, rec.friction_load_exponent,
+                           rec.friction_reference_force_n},
+                          noise);
   std::vector<ModeDrive> dense_drives(dense_modes_.size());
   set_friction_drives(object_.total_mass(), table_impedance_, table_coincidence_hz_,
                       wall_coincidence_hz_, object_modes_, table_modes_, dense_modes_,
