@@ -13,9 +13,9 @@
 namespace echoplan::sim {
 
 // How the friction sound's amplitude follows the load: (mu N / reference_force)^exponent, mu N the
-// Coulomb friction force of the object on the table (N the trace's normal force). Exponent 0 is pure
-// roughness noise (load-independent, Akay 2002); 0.5 makes the sound power a fixed share of the
-// frictional power mu N v, as when the pushed contact sticks and slips (docs/simulator.md,
+// Coulomb friction force of the object on the table (N the trace's normal force). Exponent 0 is
+// pure roughness noise (load-independent, Akay 2002); 0.5 makes the sound power a fixed share of
+// the frictional power mu N v, as when the pushed contact sticks and slips (docs/simulator.md,
 // "Slides as the lab heard them").
 struct FrictionLoad {
   double coefficient = 0;      // mu, the object's against the table
