@@ -249,9 +249,13 @@ std::string heard_cells(const HeardCounts* counts, const std::string& object) {
   if (row == counts->rows.end()) return "<td>-</td><td>-</td>";
   const auto r = static_cast<std::size_t>(row - counts->rows.begin());
   const int n = counts->total(r);
-  return fmt::format("<td>{}</td><td>{}/{}{}</td>", fmt::join(counts->counts[r], " "),
-                     counts->right(r), n,
-                     n > 0 ? fmt::format(" = {:.2f}", double(counts->right(r)) / n) : "");
+  const std::string heard = fmt::format("<td>{}</td>", fmt::join(counts->counts[r], " "));
+  // A variant (no class of its own) is never heard right or wrong: only its counts.
+  const bool a_class =
+      std::find(counts->columns.begin(), counts->columns.end(), object) != counts->columns.end();
+  if (!a_class || n == 0) return heard + "<td>-</td>";
+  return heard + fmt::format("<td>{}/{} = {:.2f}</td>", counts->right(r), n,
+                             static_cast<double>(counts->right(r)) / n);
 }
 
 const HeardCounts* of_action(const std::vector<HeardCounts>& all, const std::string& action) {
