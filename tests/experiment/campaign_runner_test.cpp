@@ -17,7 +17,7 @@ TEST(CampaignRunner, AnArmPlansWithTheCampaignsSolverAndBudgetAndTheProblemsSear
   config.planner.solver = "pomcp";
   config.planner.episodes = 120;
   const pomdp::Problem problem = pomdp::load_problem(kProblem);
-  const loop::Planner p = loop::make_planner(arm_planner(config), problem, kProblem);
+  const loop::Planner p = loop::make_planner(arm_planner(config, CampaignArm{}), problem, kProblem);
   EXPECT_EQ(p.name, "pomcp");
   EXPECT_EQ(p.budget.kind, solvers::Budget::Kind::episodes);
   EXPECT_EQ(p.budget.amount, 120);
@@ -27,7 +27,8 @@ TEST(CampaignRunner, AnArmPlansWithTheCampaignsSolverAndBudgetAndTheProblemsSear
 
   config.planner.episodes = 0;
   config.planner.step_ms = 40;
-  const loop::Planner timed = loop::make_planner(arm_planner(config), problem, kProblem);
+  const loop::Planner timed =
+      loop::make_planner(arm_planner(config, CampaignArm{}), problem, kProblem);
   EXPECT_EQ(timed.budget.kind, solvers::Budget::Kind::milliseconds);
   EXPECT_EQ(timed.budget.amount, 40);
 }
