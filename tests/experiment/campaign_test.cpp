@@ -101,14 +101,14 @@ TEST(Campaign, ParallelRunWritesTheFilesOfAOneCoreRun) {
   EXPECT_EQ(run(config, many, 3), 9);
   expect_same_files(one, many);
   EXPECT_EQ(lines_of(one / "trials.csv"), 10);
-  // Table 5.2's columns stay where `echoplan trials` writes them; arm and object come last.
+  // Table 5.2's columns stay where `echoplan trials` writes them; arm, object and session last.
   std::ifstream steps(one / "steps.csv");
   std::string header;
   std::getline(steps, header);
   EXPECT_EQ(header,
             "trial,step,action,observation,particles_pringles_can,particles_coffee_mug,particles_"
             "plastic_cup,"
-            "particles_paper_base,reward,episodes,heard_probability,arm,object");
+            "particles_paper_base,reward,episodes,heard_probability,arm,object,session");
 }
 
 TEST(Campaign, StoppedAndResumedRunWritesTheFilesOfOneRun) {
