@@ -18,6 +18,7 @@
 #include "loop/object_problem.h"
 #include "loop/prepare_observation.h"
 #include "loop/streams.h"
+#include "perception/heard_confusion.h"
 #include "pomdp/problem.h"
 #include "sim/sound_action.h"
 
@@ -315,6 +316,25 @@ std::vector<TrialJob> remaining_jobs(const Campaign& campaign, const Shard& shar
   return jobs;
 }
 
+namespace {
+
+// A simulated world's training set as the reference's classifier hears it (the page's comparison
+// with the lab's counts); empty for other worlds, a reference without `heard`, or no training set.
+std::vector<HeardCounts> heard_training_set(const Campaign& campaign) {
+  const std::optional<ReferenceResults>& reference = campaign.config.reference;
+  const fs::path recordings = training_recordings(campaign);
+  if (!simulated(campaign.config) || !reference || !reference->heard ||
+      !fs::is_directory(recordings))
+    return {};
+  std::vector<HeardCounts> heard;
+  for (const perception::HeardConfusion& h : perception::heard_confusion(
+           perception::load_recording_set(recordings.string()), reference->heard->classifier))
+    heard.push_back({h.action, h.confusion.objects, h.confusion.symbols, h.confusion.counts});
+  return heard;
+}
+
+}  // namespace
+
 std::string rebuild_report(const Campaign& campaign, bool figures) {
   const fs::path& dir = campaign.directory;
   std::vector<JournalEntry> entries = read_journal(dir / kJournal);
@@ -327,6 +347,7 @@ std::string rebuild_report(const Campaign& campaign, bool figures) {
 
   CampaignResults results = campaign.results;
   results.entries = std::move(entries);
+  results.heard = heard_training_set(campaign);
   write_tables(dir, results);
   write_file_atomically(dir / "summary.json", summary_json(results).dump(2) + "\n");
   const std::string text = summary_text(results);

@@ -200,6 +200,14 @@ nlohmann::json summary_json(const CampaignResults& results) {
                          {"heard", c.columns},
                          {"counts", c.counts}});
   j["confusion"] = std::move(confusion);
+  const std::optional<ReferenceResults>& reference = results.config.reference;
+  if (!results.heard.empty() && reference && reference->heard) {
+    nlohmann::json heard = {{"classifier", reference->heard->classifier},
+                            {"simulated", nlohmann::json::array()},
+                            {"lab", to_json(*reference->heard)["actions"]}};
+    for (const HeardCounts& h : results.heard) heard["simulated"].push_back(to_json(h));
+    j["heard"] = std::move(heard);
+  }
   return j;
 }
 

@@ -32,6 +32,10 @@ struct CampaignResults {
   // other worlds, whose accuracy is the final belief's mode.
   std::vector<int> right_action;
   int sensing_actions = 0;  // a dataset world's sensing actions (the first actions), for figures
+  // A simulated world's training set heard by the reference's classifier (leave-one-out, per
+  // action; perception::heard_confusion), shown beside the reference's `heard` counts; empty when
+  // the world is not simulated or the reference has no such counts.
+  std::vector<HeardCounts> heard;
 };
 
 // Which trials a summary row covers.

@@ -1,7 +1,9 @@
 #include "experiment/html_report.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 
@@ -241,6 +243,59 @@ std::string steps_table(const CampaignResults& results) {
   return h + "</table>\n</details>\n";
 }
 
+// One object's counts of one action: "a b c d" (per class heard) and the share heard right.
+std::string heard_cells(const HeardCounts* counts, const std::string& object) {
+  if (!counts) return "<td>-</td><td>-</td>";
+  const auto row = std::find(counts->rows.begin(), counts->rows.end(), object);
+  if (row == counts->rows.end()) return "<td>-</td><td>-</td>";
+  const auto r = static_cast<std::size_t>(row - counts->rows.begin());
+  const int n = counts->total(r);
+  const std::string heard = fmt::format("<td>{}</td>", fmt::join(counts->counts[r], " "));
+  // A variant (no class of its own) is never heard right or wrong: only its counts.
+  const bool a_class =
+      std::find(counts->columns.begin(), counts->columns.end(), object) != counts->columns.end();
+  if (!a_class || n == 0) return heard + "<td>-</td>";
+  return heard + fmt::format("<td>{}/{} = {:.2f}</td>", counts->right(r), n,
+                             static_cast<double>(counts->right(r)) / n);
+}
+
+const HeardCounts* of_action(const std::vector<HeardCounts>& all, const std::string& action) {
+  for (const HeardCounts& h : all)
+    if (h.action == action) return &h;
+  return nullptr;
+}
+
+// The simulated training set heard by the reference's classifier beside what the lab's heard,
+// per action and object (a simulated world whose reference has `heard:` counts).
+std::string heard_section(const CampaignResults& results) {
+  const std::optional<ReferenceResults>& reference = results.config.reference;
+  if (results.heard.empty() || !reference || !reference->heard) return "";
+  const HeardReference& lab = *reference->heard;
+  std::string h = fmt::format(
+      "<h2>What the classifier hears: the simulated training set and the {}'s runs</h2>\n"
+      "<p>Classifier <code>{}</code>; simulated: leave-one-out over the training set. Each row: "
+      "the object's recordings heard as {}, and the share heard as itself.</p>\n",
+      escape(reference->label), escape(lab.classifier),
+      escape(fmt::format("{}", fmt::join(results.heard.front().columns, ", "))));
+  if (!lab.note.empty()) h += "<p>" + escape(lab.note) + "</p>\n";
+  for (const HeardCounts& simulated : results.heard) {
+    const HeardCounts* measured = of_action(lab.actions, simulated.action);
+    std::vector<std::string> objects = simulated.rows;
+    if (measured)
+      for (const std::string& o : measured->rows)
+        if (std::find(objects.begin(), objects.end(), o) == objects.end()) objects.push_back(o);
+    h += fmt::format(
+        "<h3>{0}</h3>\n<table>\n<tr><th>object</th><th>simulated: heard as</th><th>simulated: "
+        "right</th><th>{1}: heard as</th><th>{1}: right</th></tr>\n",
+        escape(simulated.action), escape(reference->label));
+    for (const std::string& o : objects)
+      h += "<tr><td>" + escape(o) + "</td>" + heard_cells(&simulated, o) +
+           heard_cells(measured, o) + "</tr>\n";
+    h += "</table>\n";
+  }
+  return h;
+}
+
 }  // namespace
 
 std::string html_report(const fs::path& directory, const CampaignResults& results,
@@ -248,6 +303,7 @@ std::string html_report(const fs::path& directory, const CampaignResults& result
   std::string h = page_opening(results) + results_table(results) + paired_comparison(results);
   const std::optional<ReferenceResults>& reference = results.config.reference;
   if (reference && !reference->note.empty()) h += "<p>" + escape(reference->note) + "</p>\n";
+  h += heard_section(results);
   h += figure_sections(directory, figures) + trials_table(results);
   // A dataset's decisions (a belief over every class at each) would make a page of megabytes.
   h += results.config.world.type == WorldType::dataset

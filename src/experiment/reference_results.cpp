@@ -47,7 +47,7 @@ ReferenceResults read_reference(const std::string& yaml_text, const std::string&
   const YAML::Node root = parse_yaml(yaml_text, source);
   f.expect_map(root, "the reference");
   f.reject_duplicate_keys(root);
-  f.only_keys(root, {"label", "note", "objects", "totals"}, "the reference");
+  f.only_keys(root, {"label", "note", "objects", "totals", "heard"}, "the reference");
 
   ReferenceResults r;
   r.source = source;
@@ -72,6 +72,8 @@ ReferenceResults read_reference(const std::string& yaml_text, const std::string&
       r.variants = read_total(f, n, "totals.variants");
     if (auto n = f.optional(totals, "all", "totals")) r.all = read_total(f, n, "totals.all");
   }
+  if (auto heard = f.optional(root, "heard", "the reference"))
+    r.heard = read_heard_reference(f, heard);
   return r;
 }
 
@@ -133,6 +135,7 @@ nlohmann::json to_json(const ReferenceResults& reference) {
   add_total("original_objects", reference.original_objects);
   add_total("variants", reference.variants);
   add_total("all", reference.all);
+  if (reference.heard) j["heard"] = to_json(*reference.heard);
   return j;
 }
 
@@ -154,6 +157,8 @@ ReferenceResults reference_results_from_json(const nlohmann::json& j, const std:
   r.original_objects = total_from_json(totals, "original_objects", from);
   r.variants = total_from_json(totals, "variants", from);
   r.all = total_from_json(totals, "all", from);
+  if (const nlohmann::json* heard = jf::optional_member(j, "heard", "reference", from))
+    r.heard = heard_reference_from_json(*heard, source);
   return r;
 }
 

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "experiment/heard_reference.h"
+
 namespace echoplan::experiment {
 
 // One reported result: trials, correct ones, mean discounted reward and mean steps.
@@ -40,6 +42,9 @@ struct ReferenceResults {
   std::optional<ReferenceTotal> original_objects;  // objects that play themselves
   std::optional<ReferenceTotal> variants;          // objects that play another
   std::optional<ReferenceTotal> all;
+  // What the lab's classifier heard per action (`heard:`), shown beside a simulated world's
+  // training set heard by the same classifier; none: no such comparison.
+  std::optional<HeardReference> heard;
 };
 
 // Reads a reference file; throws InputError naming the file, the line and the problem.

@@ -112,7 +112,10 @@ SimConfig read_sim_config(const YamlReader& f, const YAML::Node& root) {
                 {"contact_ring_gain", number_into(f, rec.contact_ring_gain, 0.0, 100.0)},
                 {"table_impact_gain", number_into(f, rec.table_impact_gain, 0.0, 10.0)},
                 {"ring_mode_floor", number_into(f, rec.ring_mode_floor, 0.0, 1.0)},
-                {"friction_direct_gain", number_into(f, rec.friction_direct_gain, 0.0, 100.0)}});
+                {"friction_direct_gain", number_into(f, rec.friction_direct_gain, 0.0, 100.0)},
+                {"friction_load_exponent", number_into(f, rec.friction_load_exponent, 0.0, 1.0)},
+                {"friction_reference_force_n",
+                 number_into(f, rec.friction_reference_force_n, 0.001, 100.0)}});
   rec.sample_rate = static_cast<int>(std::lround(sample_rate));
   if (rec.motor_noise_hz >= 0.5 * rec.sample_rate)
     f.fail(root["recording"]["motor_noise_hz"],

@@ -112,6 +112,14 @@ struct RecordingConfig {
   double table_impact_gain = 0.25;
   double ring_mode_floor = 0.15;
   double friction_direct_gain = 0.5;
+  // How a slide's friction sound follows the load (sound_friction.h, FrictionLoad): its amplitude
+  // scales as (mu N / friction_reference_force_n)^friction_load_exponent, mu N the object's
+  // friction force on the table. Exponent in [0, 1]: 0 load-independent roughness noise, 0.5 sound
+  // power a fixed share of the frictional power. Fitted to the lab's slides heard right
+  // (docs/simulator.md, "Slides as the lab heard them"). Reference force in [0.001, 100] N: the
+  // four objects' geometric mean friction force, so friction_gain keeps its calibration.
+  double friction_load_exponent = 0.45;
+  double friction_reference_force_n = 0.2;
 };
 
 // How the simulated arm moves: its controller's profiles, the same in every action.

@@ -48,8 +48,14 @@ std::vector<float> fractal_profile(std::size_t count, NoiseSource& noise) {
 
 }  // namespace
 
+double FrictionLoad::scale(double normal_force) const {
+  if (normal_force <= 0) return 0.0;
+  if (exponent == 0) return 1.0;
+  return std::pow(coefficient * normal_force / reference_force, exponent);
+}
+
 std::vector<float> friction_excitation(const ContactTrace& trace, int rate, std::size_t frames,
-                                       double gain, NoiseSource& noise) {
+                                       double gain, const FrictionLoad& load, NoiseSource& noise) {
   std::vector<float> e(frames, 0.0f);
   double distance = 0;
   for (double v : trace.sliding_speed) distance += v * trace.timestep_s;
@@ -75,11 +81,10 @@ std::vector<float> friction_excitation(const ContactTrace& trace, int rate, std:
     // The profile has unit slope per profile sample, so (height change) * spacing * rate is slope
     // times speed: at the reference speed the drive is gain * force * slope.
     // Roughness noise: the contact is forced to follow the surfaces' asperities, a velocity source
-    // (speed times the profile's slope) that does not depend on the load once the surfaces touch
-    // (Akay 2002, "Acoustics of friction"): a heavy object slides no louder than a light one.
-    const double touching = force > 0 ? 1.0 : 0.0;
-    e[n] = static_cast<float>(gain * touching * (height - previous_height) * kProfileSpacing *
-                              rate / kReferenceSlideSpeed);
+    // (speed times the profile's slope; Akay 2002, "Acoustics of friction"), scaled by the load
+    // (FrictionLoad: how hard the pad has to push the object along).
+    e[n] = static_cast<float>(gain * load.scale(force) * (height - previous_height) *
+                              kProfileSpacing * rate / kReferenceSlideSpeed);
     previous_height = height;
   }
   return e;

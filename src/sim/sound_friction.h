@@ -12,10 +12,22 @@
 
 namespace echoplan::sim {
 
-// The friction excitation at audio rate: normal force times the profile's change as it passes the
-// contact at the sliding speed (per-step physics values interpolated linearly).
+// How the friction sound's amplitude follows the load: (mu N / reference_force)^exponent, mu N the
+// Coulomb friction force of the object on the table (N the trace's normal force). Exponent 0 is
+// pure roughness noise (load-independent, Akay 2002); 0.5 makes the sound power a fixed share of
+// the frictional power mu N v, as when the pushed contact sticks and slips (docs/simulator.md,
+// "Slides as the lab heard them").
+struct FrictionLoad {
+  double coefficient = 0;      // mu, the object's against the table
+  double exponent = 0;         // in [0, 1]
+  double reference_force = 1;  // N, > 0: the force at which the scale is 1
+  double scale(double normal_force) const;
+};
+
+// The friction excitation at audio rate: the profile's change as it passes the contact at the
+// sliding speed, scaled by the load (per-step physics values interpolated linearly).
 std::vector<float> friction_excitation(const ContactTrace& trace, int rate, std::size_t frames,
-                                       double gain, NoiseSource& noise);
+                                       double gain, const FrictionLoad& load, NoiseSource& noise);
 
 // Sets the continuous (friction) gains of the object's, the table's and the wall's dense-band
 // drives. Roughness noise is a velocity source between two bodies, so the imposed velocity splits

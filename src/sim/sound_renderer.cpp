@@ -69,8 +69,9 @@ std::vector<float> SoundRenderer::dry_sound(const ContactTrace& trace, std::size
     add_contact_ring(rec.contact_ring_gain, impact.effective_mass * impact.normal_speed, tau,
                      contact_ring_decay(impact), at, rate, dry);
   }
-  const std::vector<float> friction =
-      friction_excitation(trace, rate, frames, rec.friction_gain, noise);
+  const std::vector<float> friction = friction_excitation(
+      trace, rate, frames, rec.friction_gain,
+      {object_.friction, rec.friction_load_exponent, rec.friction_reference_force_n}, noise);
   std::vector<ModeDrive> dense_drives(dense_modes_.size());
   set_friction_drives(object_.total_mass(), table_impedance_, table_coincidence_hz_,
                       wall_coincidence_hz_, object_modes_, table_modes_, dense_modes_,

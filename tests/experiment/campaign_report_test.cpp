@@ -108,6 +108,18 @@ TEST(CampaignReport, SummaryJson) {
   EXPECT_DOUBLE_EQ(reported["accuracy"].get<double>(), 0.9);
   EXPECT_DOUBLE_EQ(reported["mean_discounted_reward"].get<double>(), 7.5);
   EXPECT_FALSE(j["results"][1].contains("report"));
+  EXPECT_FALSE(j.contains("heard"));
+
+  // A simulated world's training set heard beside the reference's counts.
+  results.heard = {{"listen", {"a", "b"}, {"a", "b"}, {{3, 1}, {0, 4}}}};
+  EXPECT_FALSE(summary_json(results).contains("heard")) << "the reference has no heard counts";
+  results.config.reference->heard =
+      HeardReference{"report-template", "", {{"listen", {"a"}, {"a", "b"}, {{5, 3}}}}};
+  j = summary_json(results);
+  EXPECT_EQ(j["heard"]["classifier"], "report-template");
+  EXPECT_EQ(j["heard"]["simulated"][0]["counts"], nlohmann::json::parse("[[3, 1], [0, 4]]"));
+  EXPECT_EQ(j["heard"]["lab"][0]["objects"], nlohmann::json::parse(R"(["a"])"));
+  EXPECT_EQ(j["heard"]["lab"][0]["counts"], nlohmann::json::parse("[[5, 3]]"));
 }
 
 TEST(CampaignReport, ConfusionCountsPerArmAndSensingAction) {

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "common/file_io.h"
 
 namespace echoplan::experiment {
 namespace {
@@ -182,7 +183,8 @@ TEST(Campaign, ClosedLoopRunsWithACalibratedArmAndGivesTheSameFilesOnAnyNumberOf
       "/objects/catalogue.yaml}\n"
       "trials:\n  - {object: paper_base, trials: 1}\n"
       "  - {object: coffee_mug_weighted, plays: coffee_mug, trials: 1}\n"
-      "planner: {solver: abt, episodes: 200, max_steps: 12}\n";
+      "planner: {solver: abt, episodes: 200, max_steps: 12}\nreference: " +
+      std::string(ECHOPLAN_SOURCE_DIR) + "/experiments/chapter5_reference.yaml\n";
   const CampaignConfig config = parse_campaign_config(text, "closed_loop.yaml");
   const fs::path one = fresh_dir("loop_one"), two = fresh_dir("loop_two");
   EXPECT_EQ(run(config, one, 1), 4);
@@ -197,6 +199,20 @@ TEST(Campaign, ClosedLoopRunsWithACalibratedArmAndGivesTheSameFilesOnAnyNumberOf
       if (s.observation.index < 4) {
         EXPECT_TRUE(s.heard_probability.has_value()) << "trial " << e.id;
       }
+  // The training set heard by the reference's classifier, leave-one-out: every recording (the
+  // problem's 4 objects x 2 per action) counted once, beside the lab's counts.
+  const nlohmann::json summary =
+      nlohmann::json::parse(read_text_file((one / "summary.json").string(), "summary"));
+  EXPECT_EQ(summary["heard"]["classifier"], "report-template");
+  ASSERT_EQ(summary["heard"]["simulated"].size(), 2u);
+  for (const nlohmann::json& action : summary["heard"]["simulated"]) {
+    EXPECT_EQ(action["objects"].size(), 4u);
+    int total = 0;
+    for (const auto& row : action["counts"])
+      for (const auto& c : row) total += c.get<int>();
+    EXPECT_EQ(total, 8) << action["action"];
+  }
+  EXPECT_EQ(summary["heard"]["lab"].size(), 2u);
 }
 
 // The InputError message of opening `config` in `dir`.

@@ -99,6 +99,32 @@ TEST_F(HtmlReport, ReferenceColumnsOnlyWithAReference) {
   EXPECT_TRUE(has(page, "<p>Numbers from the lab's notebook &lt;p. 3&gt; &amp; friends.</p>"));
 }
 
+TEST_F(HtmlReport, HeardConfusionBesideTheReferencesOnlyWhenBothAreThere) {
+  CampaignResults results = small_campaign();
+  results.config.reference = small_reference("lab");
+  // The simulated training set: 3 of 4 "a" heard as "a"; the lab: 5 of 8, and a variant.
+  results.heard = {{"listen", {"a", "b"}, {"a", "b"}, {{3, 1}, {0, 4}}}};
+  std::string page = html_report(dir_, results, {});
+  EXPECT_FALSE(has(page, "What the classifier hears")) << "no heard counts in the reference";
+
+  results.config.reference->heard =
+      HeardReference{"report-template",
+                     "From the logs.",
+                     {{"listen", {"a", "b_heavy"}, {"a", "b"}, {{5, 3}, {2, 6}}}}};
+  page = html_report(dir_, results, {});
+  EXPECT_TRUE(has(page, "<code>report-template</code>"));
+  EXPECT_TRUE(has(page, "<p>From the logs.</p>"));
+  EXPECT_TRUE(has(page,
+                  "<tr><td>a</td><td>3 1</td><td>3/4 = 0.75</td><td>5 3</td><td>5/8 = "
+                  "0.62</td></tr>"));
+  // "b" was not heard in the lab; "b_heavy" is no class: counts only.
+  EXPECT_TRUE(has(page, "<tr><td>b</td><td>0 4</td><td>4/4 = 1.00</td><td>-</td><td>-</td></tr>"));
+  EXPECT_TRUE(has(page, "<tr><td>b_heavy</td><td>-</td><td>-</td><td>2 6</td><td>-</td></tr>"));
+
+  results.heard.clear();  // not a simulated world
+  EXPECT_FALSE(has(html_report(dir_, results, {}), "What the classifier hears"));
+}
+
 TEST_F(HtmlReport, TrialAndStepTables) {
   CampaignResults results = small_campaign();
   std::string page = html_report(dir_, results, {});

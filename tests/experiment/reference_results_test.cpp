@@ -49,13 +49,39 @@ TEST(ReferenceResults, ShippedFileHoldsTheReportsTables) {
   EXPECT_NEAR(r.variants->result.mean_steps, (2.7 + 2.9) / 2, 1e-12);
 }
 
+TEST(ReferenceResults, ShippedFileHoldsWhatTheLabsClassifierHeard) {
+  const ReferenceResults r = load_reference_results(std::string(ECHOPLAN_SOURCE_DIR) +
+                                                    "/experiments/chapter5_reference.yaml");
+  ASSERT_TRUE(r.heard);
+  EXPECT_EQ(r.heard->classifier, "report-template");
+  ASSERT_EQ(r.heard->actions.size(), 2u);
+  // original-robot-runs.md: strikes of the four objects heard right 43 of 46 times, slides 23 of
+  // 35, the paper base's slides 5 of 15; 81 sensing actions with the four objects, 36 with the
+  // weighted ones.
+  int four = 0, weighted = 0;
+  for (const HeardCounts& h : r.heard->actions) {
+    EXPECT_EQ(h.columns, (std::vector<std::string>{"pringles_can", "coffee_mug", "plastic_cup",
+                                                   "paper_base"}));
+    ASSERT_EQ(h.rows.size(), 6u);
+    int right = 0, total = 0;
+    for (std::size_t row = 0; row < 4; ++row) right += h.right(row), total += h.total(row);
+    four += total;
+    weighted += h.total(4) + h.total(5);
+    EXPECT_EQ(right, h.action == "strike" ? 43 : 23) << h.action;
+    EXPECT_EQ(total, h.action == "strike" ? 46 : 35) << h.action;
+    if (h.action == "slide") EXPECT_EQ(h.right(3), 5);
+  }
+  EXPECT_EQ(four, 81);
+  EXPECT_EQ(weighted, 36);
+}
+
 TEST(ReferenceResults, MinimalFile) {
   const ReferenceResults r = parse_reference_results(kMinimal, "/dir/ref.yaml");
   EXPECT_EQ(r.source, "/dir/ref.yaml");
   EXPECT_EQ(r.note, "");
   EXPECT_EQ(r.objects.at("mug").correct, 3);
   EXPECT_DOUBLE_EQ(r.objects.at("mug").mean_discounted_reward, 1.5);
-  EXPECT_FALSE(r.original_objects || r.variants || r.all);
+  EXPECT_FALSE(r.original_objects || r.variants || r.all || r.heard);
 }
 
 TEST(ReferenceResults, MistakesNameTheFileAndLine) {
@@ -78,6 +104,17 @@ TEST(ReferenceResults, MistakesNameTheFileAndLine) {
   EXPECT_NE(no_objects.find("objects"), std::string::npos) << no_objects;
   EXPECT_EQ(error_of("label: lab\nobjects: [mug]\n").substr(0, 16), "/dir/ref.yaml:2:");
   EXPECT_EQ(error_of("label: [lab\n").substr(0, 14), "/dir/ref.yaml:");
+  const std::string heard = kMinimal +
+                            "heard:\n  classifier: report-template\n  classes: [mug, cup]\n"
+                            "  actions:\n    slide:\n";
+  EXPECT_EQ(error_of(heard + "      mug: [1, 2, 3]\n"),
+            "/dir/ref.yaml:9: heard.actions.slide.mug: expected 2 counts, one per class of "
+            "heard.classes");
+  EXPECT_EQ(error_of(heard + "      mug: [1, 0.5]\n"),
+            "/dir/ref.yaml:9: heard.actions.slide.mug: counts must be whole numbers >= 0");
+  const std::string no_classifier =
+      error_of(kMinimal + "heard:\n  classes: [mug]\n  actions: {}\n");
+  EXPECT_NE(no_classifier.find("classifier"), std::string::npos) << no_classifier;
 }
 
 TEST(ReferenceResults, JsonRoundTrip) {
@@ -86,6 +123,8 @@ TEST(ReferenceResults, JsonRoundTrip) {
   const ReferenceResults back = reference_results_from_json(to_json(r), "campaign.json");
   EXPECT_EQ(to_json(back), to_json(r));
   EXPECT_EQ(back.original_objects->objects, r.original_objects->objects);
+  ASSERT_TRUE(back.heard);
+  EXPECT_EQ(back.heard->actions[1].counts, r.heard->actions[1].counts);
   EXPECT_THROW(reference_results_from_json(nlohmann::json{{"label", "x"}}, "campaign.json"),
                InputError);
 }
