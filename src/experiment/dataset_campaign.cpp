@@ -59,6 +59,29 @@ std::vector<int> sessions_of(const perception::FeatureSet& data, int object) {
   return sessions;
 }
 
+// A trial's fold is held out, and the fold's calibration cross-validates what is left, so each
+// class needs three objects (hold_out: object) or each object three sessions (hold_out: session).
+void check_enough_for_folds(const perception::FeatureSet& data, const perception::DatasetTask& task,
+                            const std::string& source) {
+  const bool by_object = task.hold_out == perception::HoldOut::object;
+  std::vector<int> count(by_object ? task.classes.size() : data.objects.size(), 0);
+  if (by_object)
+    for (int c : task.class_of_object) ++count.at(c);
+  else
+    for (const perception::Session& s : data.sessions) ++count.at(s.object);
+  for (std::size_t i = 0; i < count.size(); ++i)
+    if (count[i] < 3)
+      throw InputError(
+          source, 0,
+          by_object
+              ? fmt::format("class '{}' has {} object(s); hold_out: object needs at least 3 per "
+                            "class (one held out per trial, two left to calibrate on)",
+                            task.classes[i], count[i])
+              : fmt::format("object '{}' has {} session(s); hold_out: session needs at least 3 "
+                            "per object (one held out per trial, two left to calibrate on)",
+                            data.objects[i], count[i]));
+}
+
 }  // namespace
 
 DatasetTrials open_dataset(const CampaignConfig& config, const ProgressFn& progress) {
@@ -69,6 +92,7 @@ DatasetTrials open_dataset(const CampaignConfig& config, const ProgressFn& progr
   t.task = perception::make_dataset_task(*t.data, groups ? &*groups : nullptr,
                                          perception::parse_hold_out(config.world.hold_out),
                                          config.world.groups);
+  check_enough_for_folds(*t.data, t.task, config.world.data);
   t.folds = perception::make_folds(*t.data, t.task);
   t.fold_of_session.assign(t.data->sessions.size(), -1);
   for (std::size_t f = 0; f < t.folds.size(); ++f)

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "../perception/synthetic_feature_set.h"
+#include "common/error.h"
 #include "experiment/campaign.h"
 
 namespace echoplan::experiment {
@@ -154,6 +155,24 @@ TEST(DatasetCampaign, HoldingOutObjectsSortsNovelObjectsByGroup) {
   for (const JournalEntry& e : results.entries) {
     const int object = std::stoi(e.object.substr(3));
     EXPECT_EQ(e.result.record.true_state, object / 3) << e.object;
+  }
+}
+
+TEST(DatasetCampaign, TooFewSessionsOrObjectsToCalibrateOnAreRefusedBeforeAnyWork) {
+  const fs::path data = perception::test_features::fresh_folder("dataset_few") / "data";
+  SyntheticSpec spec;
+  spec.objects = 4;
+  spec.sessions = 2;
+  spec.group_size = 2;
+  perception::test_features::write_synthetic_feature_set(data, spec);
+  for (const std::string hold_out : {"session", "object"}) {
+    try {
+      open_campaign(dataset_config(data, hold_out, "lda"), data.parent_path() / "out");
+      FAIL() << "no error for hold_out " << hold_out;
+    } catch (const InputError& e) {
+      EXPECT_NE(e.problem().find("needs at least 3"), std::string::npos) << e.what();
+      EXPECT_EQ(e.file(), data.string());
+    }
   }
 }
 
