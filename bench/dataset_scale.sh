@@ -31,9 +31,10 @@ for n in 20 100; do
     "$dir/c${n}_uses1.yaml" >"$dir/c${n}_unlimited.yaml"
 done
 
-# "seconds max_kb" of a command, from /usr/bin/time (user + system CPU, peak resident memory).
+# "seconds max_kb" of a command, from /usr/bin/time (user + system CPU, peak resident memory);
+# its standard output goes to $dir/out.
 measure() {
-  /usr/bin/time -f "%U %S %M" -o "$dir/time" "$@" >/dev/null 2>&1
+  /usr/bin/time -f "%U %S %M" -o "$dir/time" "$@" >"$dir/out" 2>/dev/null
   awk '{printf "%.2f %d", $1 + $2, $3}' "$dir/time"
 }
 # Mean steps per trial of a trials.csv (the decisions a trial made).
@@ -57,9 +58,7 @@ echo "|---|---|---|---|---|---|"
 for p in c20_uses1 c20_unlimited c100_uses1 c100_unlimited; do
   set -- $(measure "$bin" solve --problem "$dir/$p.yaml" --method exact \
     --time-limit "$solve_seconds" --json)
-  "$bin" solve --problem "$dir/$p.yaml" --method exact --time-limit "$solve_seconds" --json \
-    2>/dev/null >"$dir/solve.json"
-  b=$(sed 's/.*"lower":\([^,]*\),"upper":\([^,]*\),"gap":\([^,]*\),.*/\1 \2 \3/' "$dir/solve.json")
+  b=$(sed 's/.*"lower":\([^,]*\),"upper":\([^,]*\),"gap":\([^,]*\),.*/\1 \2 \3/' "$dir/out")
   set -- $b $1 $2
   printf '| %s | %.4f | %.4f | %.4g | %.1f | %.0f |\n' "$p" "$1" "$2" "$3" "$4" \
     "$(echo "$5 / 1024" | bc -l)"
@@ -70,6 +69,5 @@ echo "certify on each 2000-episode run's steps (default --expansions and --root-
 for p in c20_uses1 c20_unlimited c100_uses1 c100_unlimited; do
   set -- $(measure "$bin" certify --problem "$dir/$p.yaml" --steps "$dir/run_${p}_2000/steps.csv")
   echo "## $p: $1 CPU s, $(echo "$2 / 1024" | bc -l | cut -d. -f1) MB"
-  "$bin" certify --problem "$dir/$p.yaml" --steps "$dir/run_${p}_2000/steps.csv" 2>/dev/null |
-    head -12
+  head -12 "$dir/out"
 done
