@@ -1,5 +1,6 @@
 #include "solvers/sensing_policy.h"
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -55,6 +56,28 @@ SensingPolicy::SensingPolicy(std::shared_ptr<const IdentificationTables> tables)
   scratch_.resize(num_states_);
   scratch2_.resize(num_states_);
   groups_.resize(A);
+  // A choice costs a Bayes update and an entropy per sensing action and outcome; below a few
+  // thousand of those, looking it up would cost about as much as making it.
+  memoize_ = static_cast<double>(sensing_.size()) * num_observations_ * L >= kMemoizeAbove;
+  if (memoize_) {
+    // The decision groups: the terminal actions, in action order.
+    std::vector<int> group_of_action(A, -1);
+    for (int a = 0; a < A; ++a)
+      if (t.terminal[a]) group_of_action[a] = num_groups_++;
+    for (int l = 0; l < L; ++l)
+      group_of_live_.push_back(best_terminal_[l] >= 0 ? group_of_action[best_terminal_[l]] : -1);
+    live_belief_.resize(L);
+    grouped_.resize(static_cast<std::size_t>(num_observations_) * num_groups_);
+    totals_.resize(num_observations_);
+    // Each sensing action's emissions by state, then outcome.
+    const int O = num_observations_;
+    sensing_index_.assign(A, -1);
+    for (std::size_t i = 0; i < sensing_.size(); ++i) {
+      sensing_index_[sensing_[i]] = static_cast<int>(i);
+      for (int l = 0; l < L; ++l)
+        for (int o = 0; o < O; ++o) emission_by_state_.push_back(emission(sensing_[i], o)[l]);
+    }
+  }
 }
 
 const double* SensingPolicy::emission(int action, int observation) const {
@@ -132,19 +155,76 @@ bool SensingPolicy::can_sense(const UseCounts& uses) const {
 }
 
 int SensingPolicy::choose_sensing(const std::vector<double>& belief, const UseCounts& uses) const {
+  if (!memoize_) return choose_sensing_now(belief, uses);
+  // The key is the belief's and the uses' exact bits: a hit is the very same question.
+  choice_key_.assign(reinterpret_cast<const char*>(belief.data()), belief.size() * sizeof(double));
+  choice_key_.append(reinterpret_cast<const char*>(uses.data()), uses.size() * sizeof(uses[0]));
+  if (auto it = choices_.find(choice_key_); it != choices_.end()) return it->second;
+  if (choices_.size() >= kMaxMemoizedChoices) choices_.clear();
+  const int chosen = choose_sensing_now(belief, uses);
+  choices_.emplace(choice_key_, chosen);
+  return chosen;
+}
+
+int SensingPolicy::choose_sensing_now(const std::vector<double>& belief,
+                                      const UseCounts& uses) const {
   int best = -1;
   double best_score = std::numeric_limits<double>::infinity();
+  if (memoize_) {
+    const std::vector<int>& states = tables_->model_state;
+    for (std::size_t l = 0; l < states.size(); ++l) live_belief_[l] = belief[states[l]];
+  }
   for (int a : sensing_) {
     if (!tables_->limits.allows(uses, a)) continue;
-    // Expected decision entropy after hearing a's outcome (outcomes that end the episode count 0).
-    double expected = 0.0;
-    for (int o = 0; o < num_observations_; ++o) {
-      const double p = update(belief, a, o, scratch2_);
-      if (p > 0.0) expected += p * decision_entropy(scratch2_);
-    }
+    const double expected =
+        memoize_ ? expected_entropy_grouped(a) : expected_entropy_by_outcome(belief, a);
     if (best < 0 || expected < best_score - 1e-12) best = a, best_score = expected;
   }
   return best;
+}
+
+double SensingPolicy::expected_entropy_by_outcome(const std::vector<double>& belief, int a) const {
+  // Outcomes that end the episode count 0.
+  double expected = 0.0;
+  for (int o = 0; o < num_observations_; ++o) {
+    const double p = update(belief, a, o, scratch2_);
+    if (p > 0.0) expected += p * decision_entropy(scratch2_);
+  }
+  return expected;
+}
+
+double SensingPolicy::expected_entropy_grouped(int a) const {
+  // With g[k][o] = Σ_{l sorted by k} b(l) e(a, o, l) and T[o] = Σ_l b(l) e(a, o, l), the entropy
+  // after o weighted by P(o) = T[o] is T[o] H(g[.][o] / T[o]) = G[o] log T[o] − Σ_k g[k][o] log
+  // g[k][o] (G[o] = Σ_k g[k][o]): no normalised belief, every log in one vectorised pass, and
+  // the sums run over the outcomes contiguously (emission_by_state_).
+  const int L = tables_->live_states, O = num_observations_, K = num_groups_;
+  std::fill(grouped_.begin(), grouped_.end(), 0.0);
+  std::fill(totals_.begin(), totals_.end(), 0.0);
+  using Column = Eigen::Map<Eigen::ArrayXd>;
+  const double* e = &emission_by_state_[static_cast<std::size_t>(sensing_index_[a]) * L * O];
+  Column t(totals_.data(), O);
+  for (int l = 0; l < L; ++l, e += O) {
+    const double b = live_belief_[l];
+    if (b == 0.0) continue;
+    const Eigen::Map<const Eigen::ArrayXd> row(e, O);
+    t += b * row;
+    if (group_of_live_[l] >= 0)
+      Column(&grouped_[static_cast<std::size_t>(group_of_live_[l]) * O], O) += b * row;
+  }
+  // glibc's log (FMA) beats Eigen's packet log (SSE2) here.
+  const auto x_log_x = [](double x) { return x > 0.0 ? x * std::log(x) : 0.0; };
+  double result = 0.0;
+  for (int o = 0; o < O; ++o) {
+    double sorted = 0.0;
+    for (int k = 0; k < K; ++k) {
+      const double gk = grouped_[static_cast<std::size_t>(k) * O + o];
+      sorted += gk;
+      result -= x_log_x(gk);
+    }
+    if (totals_[o] > 0.0) result += sorted * std::log(totals_[o]);
+  }
+  return result;
 }
 
 void SensingPolicy::rollout(const std::vector<double>& start, const UseCounts& start_uses,

@@ -4,11 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "common/error.h"
 #include "pomdp/problem.h"
+#include "pomdp/random_problem.h"
 
 namespace echoplan::solvers {
 namespace {
@@ -79,6 +82,63 @@ TEST_F(ReportPolicy, RolloutsFromUniformImproveOnCommittingNow) {
 TEST(SensingPolicy, RefusesProblemsThatAreNotIdentification) {
   const pomdp::Problem tiger = pomdp::load_problem(repo_file("problems/tiger.pomdp"));
   EXPECT_THROW(SensingPolicy{*tiger.model->tabular()}, InputError);
+}
+
+// At 64 objects, 9 sensing actions and 64 outcomes the policy takes its large-problem path (a memo
+// and the expected entropy summed without normalised posteriors). Its choices must be those of the
+// definition, computed here outcome by outcome from Bayes' rule: argmin over the available sensing
+// actions of sum_o P(o | b, a) H(right sorting action | b, a, o), first in action order on ties.
+TEST(SensingPolicyLarge, ChoosesWhatTheDefinitionChoosesAndRemembersIt) {
+  Rng rng(7);
+  pomdp::RandomProblemSettings settings;
+  settings.objects = 64;
+  settings.sensing_actions = 9;
+  settings.bins = 8;
+  auto model = std::make_shared<const pomdp::ObjectIdentificationModel>(
+      pomdp::make_random_object_problem(settings, rng));
+  const SensingPolicy policy(*model->tabular());
+  const int states = policy.num_states(), actions = model->num_actions();
+  const int outcomes = static_cast<int>(model->spec().observation.names.size());
+  // Each live state's right sorting action, from point beliefs.
+  std::vector<int> right(states, -1);
+  for (int s = 0; s < settings.objects; ++s) {
+    std::vector<double> point(states, 0.0);
+    point[s] = 1.0;
+    double best = -std::numeric_limits<double>::infinity();
+    for (int a = 0; a < actions; ++a)
+      if (policy.is_terminal(a) && policy.expected_reward(point, a) > best)
+        best = policy.expected_reward(point, a), right[s] = a;
+  }
+  const auto reference = [&](const std::vector<double>& b, const UseCounts& used) {
+    int chosen = -1;
+    double chosen_score = 0.0;
+    for (int a = 0; a < actions; ++a) {
+      if (policy.is_terminal(a) || (!used.empty() && used[a] > 0)) continue;
+      double expected = 0.0;
+      for (int o = 0; o < outcomes; ++o) {
+        std::vector<double> after;
+        const double p = policy.update(b, a, o, after);
+        if (p <= 0.0) continue;
+        std::vector<double> mass(actions, 0.0);
+        for (int s = 0; s < settings.objects; ++s) mass[right[s]] += after[s];
+        double h = 0.0;
+        for (double m : mass)
+          if (m > 0.0) h -= m * std::log(m);
+        expected += p * h;
+      }
+      if (chosen < 0 || expected < chosen_score - 1e-9) chosen = a, chosen_score = expected;
+    }
+    return chosen;
+  };
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<double> b(states, 0.0);
+    double total = 0.0;
+    for (int s = 0; s < settings.objects; ++s) total += b[s] = std::pow(uniform01(rng), 4);
+    for (double& p : b) p /= total;
+    const int expected = reference(b, {});
+    EXPECT_EQ(policy.choose_sensing(b), expected) << "belief " << trial;
+    EXPECT_EQ(policy.choose_sensing(b), expected) << "belief " << trial << ", remembered";
+  }
 }
 
 }  // namespace

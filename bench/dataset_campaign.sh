@@ -1,0 +1,38 @@
+#!/bin/sh
+# The dataset campaign's speed target on a synthetic proxy (docs/BENCHMARKS.md, "Planning on
+# recorded data at scale"): 100 objects x 9 behaviours whose informativeness differs (action
+# scales 0.3 to 1.2), 20 categories of 5, five sessions per object, audio and haptic modalities;
+# five arms (plan, all_actions, best_single, information_gain, random), ABT at EPISODES episodes,
+# HOLD_OUT session or object, on WORKERS workers. Prints the wall and CPU time, peak memory and
+# summary.txt's arm rows and paired differences.
+# Usage: bench/dataset_campaign.sh BUILD_DIR [EPISODES] [HOLD_OUT] [WORKERS] [OUT]
+set -eu
+build=$1
+episodes=${2:-20000}
+hold_out=${3:-session}
+workers=${4:-2}
+dir=$(mktemp -d)
+out=${5:-$dir/campaign}
+trap 'rm -rf "$dir"' EXIT
+"$build/bench/make_feature_set" -o "$dir/fs100" --objects 100 --group-size 5 --sessions 5 \
+  --actions press,grasp,lift,drop,poke,push,shake,tap,squeeze \
+  --action-scales 0.3,0.4,0.5,0.6,0.7,0.8,0.9,1.0,1.2 --modality audio:8:1.5 \
+  --modality haptic:4:1.0 --group-separation 1.0 --session-sd 0.3 --seed 1
+cat >"$dir/campaign.yaml" <<YAML
+seed: 1
+world: {type: dataset, data: $dir/fs100, hold_out: $hold_out, groups: $dir/fs100/groups.csv}
+task:
+  rewards: {right: 10, wrong: -100, sense: -1}
+arms:
+  - {name: plan, strategy: plan}
+  - {name: all_actions, strategy: all_actions}
+  - {name: best_single, strategy: best_single}
+  - {name: information_gain, strategy: information_gain}
+  - {name: random, strategy: random}
+planner: {solver: abt, episodes: $episodes, max_steps: 100}
+YAML
+/usr/bin/time -f "%e s wall, %U s user, %M KB peak" -o "$dir/time" "$build/echoplan" experiment \
+  --config "$dir/campaign.yaml" --out "$out" --workers "$workers" >/dev/null 2>&1
+cat "$dir/time"
+grep -E "^arm|^  all|minus" "$out/summary.txt"
+grep "^time:" "$out/summary.txt" || true

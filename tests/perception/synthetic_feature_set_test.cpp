@@ -1,0 +1,108 @@
+#include "perception/synthetic_feature_set.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/error.h"
+#include "perception/feature_set.h"
+#include "synthetic_feature_set.h"
+
+namespace echoplan::perception {
+namespace {
+
+// The mean and variance of column j of a modality's rows.
+std::pair<double, double> column_moments(const Modality& m, std::size_t j) {
+  double sum = 0, sum2 = 0;
+  for (const auto& row : m.rows) sum += row[j];
+  const double mean = sum / static_cast<double>(m.rows.size());
+  for (const auto& row : m.rows) sum2 += (row[j] - mean) * (row[j] - mean);
+  return {mean, sum2 / static_cast<double>(m.rows.size() - 1)};
+}
+
+TEST(SyntheticFeatureSet, WritesTheShapeTheSpecAsks) {
+  const auto dir = test_features::fresh_folder("synthetic_shape");
+  SyntheticSpec spec;
+  spec.objects = 6;
+  spec.sessions = 3;
+  spec.repeats = 2;
+  spec.actions = {"press", "shake"};
+  spec.modalities = {{"audio", 4, 2.0}, {"haptic", 2, 1.0}};
+  spec.group_size = 3;
+  write_synthetic_feature_set(dir, spec);
+  const FeatureSet set = load_feature_set(dir.string());
+  EXPECT_EQ(set.objects.size(), 6u);
+  EXPECT_EQ(set.sessions.size(), 18u);
+  ASSERT_EQ(set.actions.size(), 2u);
+  for (const ActionData& a : set.actions) {
+    EXPECT_EQ(a.rows.size(), 36u);  // 6 objects x 3 sessions x 2 repeats
+    ASSERT_EQ(a.modalities.size(), 2u);
+    EXPECT_EQ(a.modalities[0].feature_names.size(), 4u);  // audio (sorted by name)
+    EXPECT_EQ(a.modalities[1].feature_names.size(), 2u);  // haptic
+  }
+  const ObjectGroups groups = load_groups((dir / "groups.csv").string());
+  ASSERT_EQ(groups.groups.size(), 6u);
+  EXPECT_EQ(groups.groups[2], "group0");
+  EXPECT_EQ(groups.groups[3], "group1");
+}
+
+// With one object and no groups, a feature's variance over performances is
+// (action scale x separation)^2 x 0 (one object mean, a constant) + session_sd^2 + 1, and its mean
+// is scale x separation x O: a scale of 0 leaves pure standard-normal noise around 0.
+TEST(SyntheticFeatureSet, AnActionScaleOfZeroIsPureNoise) {
+  const auto dir = test_features::fresh_folder("synthetic_scale");
+  SyntheticSpec spec;
+  spec.objects = 40;
+  spec.sessions = 50;
+  spec.actions = {"mute", "loud"};
+  spec.action_scales = {0.0, 1.0};
+  spec.modalities = {{"audio", 3, 4.0}};
+  write_synthetic_feature_set(dir, spec);
+  const FeatureSet set = load_feature_set(dir.string());
+  ASSERT_EQ(set.actions[1].name, "mute");  // sorted by name
+  for (std::size_t j = 0; j < 3; ++j) {
+    const auto [mean, variance] = column_moments(set.actions[1].modalities[0], j);
+    EXPECT_NEAR(mean, 0.0, 0.15);      // 2000 standard normals: SE 0.022
+    EXPECT_NEAR(variance, 1.0, 0.15);  // SE of the variance about 0.032
+    // "loud": object means spread with SD 4 over 40 objects: variance about 17, far above 1.
+    EXPECT_GT(column_moments(set.actions[0].modalities[0], j).second, 5.0);
+  }
+}
+
+// Repeats share their session's offset: the difference of two repeats is noise only (variance 2),
+// whatever session_sd is.
+TEST(SyntheticFeatureSet, RepeatsShareTheirSessionOffset) {
+  const auto dir = test_features::fresh_folder("synthetic_repeats");
+  SyntheticSpec spec;
+  spec.objects = 20;
+  spec.sessions = 50;
+  spec.repeats = 2;
+  spec.session_sd = 5.0;
+  spec.modalities = {{"audio", 1, 0.0}};
+  write_synthetic_feature_set(dir, spec);
+  const FeatureSet set = load_feature_set(dir.string());
+  const Modality& m = set.actions[0].modalities[0];
+  double within = 0, across = 0;
+  const std::size_t pairs = m.rows.size() / 2;
+  for (std::size_t i = 0; i < pairs; ++i) {
+    within += std::pow(m.rows[2 * i][0] - m.rows[2 * i + 1][0], 2);
+    if (i + 1 < pairs) across += std::pow(m.rows[2 * i][0] - m.rows[2 * i + 2][0], 2);
+  }
+  EXPECT_NEAR(within / static_cast<double>(pairs), 2.0, 0.3);  // 2 x noise variance
+  // Consecutive sessions: 2 x (25 + 1) = 52.
+  EXPECT_NEAR(across / static_cast<double>(pairs - 1), 52.0, 8.0);
+}
+
+TEST(SyntheticFeatureSet, RefusesASpecThatCannotMakeAFeatureSet) {
+  const auto dir = test_features::fresh_folder("synthetic_bad");
+  SyntheticSpec spec;
+  spec.actions = {"a", "b"};
+  spec.action_scales = {1.0};
+  EXPECT_THROW(write_synthetic_feature_set(dir, spec), InputError);
+  spec.action_scales.clear();
+  spec.objects = 0;
+  EXPECT_THROW(write_synthetic_feature_set(dir, spec), InputError);
+}
+
+}  // namespace
+}  // namespace echoplan::perception
