@@ -60,9 +60,34 @@ void AbtSolver::root_particle_added(BeliefNode& root, const pomdp::State& state,
   evaluate_particle(root, state, rng);
 }
 
-double AbtSolver::action_value(const BeliefNode& node, int a,
-                               const std::vector<double>* belief) const {
-  const ActionNode& action = *node.actions[a];
+namespace {
+
+// The exact-belief terms of `action` at `belief` (the belief `node` holds now): computed once per
+// belief, and for each child once, in the order children were added.
+void weigh(const SensingPolicy& beliefs, BeliefNode& node, ActionNode& action, int a,
+           const std::vector<double>& belief) {
+  if (node.weighed_belief != belief) {
+    node.weighed_belief = belief;
+    for (const auto& other : node.actions)
+      if (other) {
+        other->weighed = false;
+        other->child_probability.clear();
+      }
+  }
+  if (!action.weighed) {
+    action.expected_reward = beliefs.expected_reward(belief, a);
+    action.live_probability = beliefs.live_probability(belief, a);
+    action.weighed = true;
+  }
+  for (std::size_t k = action.child_probability.size(); k < action.children.size(); ++k)
+    action.child_probability.push_back(
+        beliefs.observation_probability(belief, a, action.children[k].observation.index));
+}
+
+}  // namespace
+
+double AbtSolver::action_value(BeliefNode& node, int a, const std::vector<double>* belief) const {
+  ActionNode& action = *node.actions[a];
   // An action whose every episode was revised away counts as untried (NaN, as for a missing node).
   if (action.visits == 0) return std::numeric_limits<double>::quiet_NaN();
   const double gamma = model().spec().discount;
@@ -72,19 +97,20 @@ double AbtSolver::action_value(const BeliefNode& node, int a,
   // With the exact belief, the children are weighted by P(o | b, a) instead of by how often the
   // episodes happened to hear o (observations never heard yet share the weight of those that were,
   // in proportion); outcomes that end the episode count 0.
-  const SensingPolicy& beliefs = *leaf_value().belief_model();
+  weigh(*leaf_value().belief_model(), node, action, a, *belief);
   double future = 0.0;
   if (!action.children.empty()) {
     double weighted = 0.0, seen = 0.0;
-    for (const ObservationChild& child : action.children) {
+    for (std::size_t k = 0; k < action.children.size(); ++k) {
+      const ObservationChild& child = action.children[k];
       if (child.arrivals == 0) continue;  // every episode through it was revised away
-      const double p = beliefs.observation_probability(*belief, a, child.observation.index);
+      const double p = action.child_probability[k];
       weighted += p * child.node->value;
       seen += p;
     }
-    if (seen > 0.0) future = beliefs.live_probability(*belief, a) * weighted / seen;
+    if (seen > 0.0) future = action.live_probability * weighted / seen;
   }
-  return beliefs.expected_reward(*belief, a) + gamma * future;
+  return action.expected_reward + gamma * future;
 }
 
 void AbtSolver::refresh_child(ActionNode& action, std::size_t child) {

@@ -99,7 +99,9 @@ class AbtSolver final : public TreeSearchSolver {
   // Q(b, a) from the action's children and the immediate reward: its expectation under the node's
   // exact `belief` when there is one (LeafValue::exact_belief()), else the mean over the node's
   // particles.
-  double action_value(const BeliefNode& node, int action, const std::vector<double>* belief) const;
+  // Q(node, action); `belief` (the exact belief at the node, when the leaf value tracks one)
+  // weighs the children by P(o | b, a), cached in the nodes while the belief stays the same.
+  double action_value(BeliefNode& node, int action, const std::vector<double>* belief) const;
   // The exact belief at step `i` of the episode being walked or backed up (leaf modes `policy`,
   // `exact`, `exact-offline`), else nullptr.
   const std::vector<double>* step_belief(std::size_t i) const {

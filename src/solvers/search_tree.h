@@ -74,6 +74,11 @@ struct BeliefNode {
   // rewards, so Q's immediate term averages over all of the node's particles.
   std::vector<double> particle_reward_sums;
   std::int64_t particles_evaluated = 0;
+  // ABT with an exact belief along the path: the belief the actions' cached terms below
+  // (ActionNode::child_probability, ...) were computed at. Re-weighing a node's children at every
+  // episode costs O(children x states) per action; the belief at a node rarely changes, so the
+  // terms are kept until it does.
+  std::vector<double> weighed_belief;
 };
 
 struct ObservationChild {
@@ -94,6 +99,12 @@ struct ActionNode {
   double future_sum = 0.0;  // ABT: sum over children of arrivals * value
   double value = 0.0;       // the action's estimated value, used by UCB and best_action()
   std::vector<ObservationChild> children;
+  // ABT's exact-belief terms at the node's weighed_belief: P(o | b, a) of children[0..k) (children
+  // are only ever appended), the expected reward and the chance the episode goes on.
+  std::vector<double> child_probability;
+  double expected_reward = 0.0;
+  double live_probability = 0.0;
+  bool weighed = false;
 };
 
 class TreeSearchSolver : public Solver {
