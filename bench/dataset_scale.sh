@@ -6,11 +6,12 @@
 # then, per problem: ABT's CPU seconds per decision and peak memory at 2000 and 20000 episodes
 # (`echoplan trials`, TRIALS trials), the exact solver's bounds after SOLVE_SECONDS
 # (`echoplan solve --method exact`), and `echoplan certify` on the 2000-episode run's steps.
-# Usage: bench/dataset_scale.sh BUILD_DIR [TRIALS] [SOLVE_SECONDS]
+# Usage: bench/dataset_scale.sh BUILD_DIR [TRIALS] [SOLVE_SECONDS] [CERTIFY_ROOT_EXPANSIONS]
 set -eu
 build=$1
 trials=${2:-10}
 solve_seconds=${3:-60}
+certify_root=${4:-100000}
 bin=$build/echoplan
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
@@ -65,9 +66,10 @@ for p in c20_uses1 c20_unlimited c100_uses1 c100_unlimited; do
 done
 
 echo
-echo "certify on each 2000-episode run's steps (default --expansions and --root-expansions):"
+echo "certify on each 2000-episode run's steps (--root-expansions $certify_root, --expansions 2000):"
 for p in c20_uses1 c20_unlimited c100_uses1 c100_unlimited; do
-  set -- $(measure "$bin" certify --problem "$dir/$p.yaml" --steps "$dir/run_${p}_2000/steps.csv")
+  set -- $(measure "$bin" certify --problem "$dir/$p.yaml" --steps "$dir/run_${p}_2000/steps.csv" \
+    --root-expansions "$certify_root" --expansions 2000)
   echo "## $p: $1 CPU s, $(echo "$2 / 1024" | bc -l | cut -d. -f1) MB"
   head -12 "$dir/out"
 done
