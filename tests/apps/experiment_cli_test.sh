@@ -119,4 +119,19 @@ expect_refused "merging other campaigns" "holds another campaign" \
   merge --out "$work/err_merge" "$work/shard1" "$work/other"
 [ ! -e "$work/err_merge" ] || fail "a refused merge created its folder"
 
+# The shipped dataset-world example: every (object, session) a trial of five arms, paired; the session
+# in trials.csv; the arms' figures; a resumed run writes the same files.
+"$bin" experiment --config "$src/experiments/dataset_example.yaml" --out "$work/dataset" \
+  >"$work/dataset.out" 2>"$work/dataset.err" || { fail "dataset example exited $?"; cat "$work/dataset.err"; }
+[ "$(wc -l <"$work/dataset/trials.csv")" -eq 241 ] || fail "dataset trials.csv: a header and 5 x 48 rows"
+head -1 "$work/dataset/trials.csv" | grep -q ",arm,object,session$" || fail "dataset trials.csv lacks session"
+grep -q "^0,.*,plan,obj0,s0$" "$work/dataset/trials.csv" || fail "dataset trial 0 is not obj0's session s0"
+for file in figures/accuracy_vs_actions.png figures/actions_chosen.svg index.html summary.json; do
+  [ -s "$work/dataset/$file" ] || fail "the dataset run did not write $file"
+done
+grep -q "information_gain minus plan, paired" "$work/dataset.out" || fail "no paired difference printed"
+"$bin" experiment --config "$src/experiments/dataset_example.yaml" --out "$work/dataset" \
+  >"$work/dataset2.out" 2>&1 || fail "dataset example again exited $?"
+grep -q "240 of 240 trials already" "$work/dataset2.out" || fail "the second dataset run redid trials"
+
 finish "experiment CLI"
