@@ -7,6 +7,7 @@
 
 #include "common/error.h"
 #include "solvers/identification_solver.h"
+#include "solvers/sum_x_log_x.h"
 
 namespace echoplan::solvers {
 
@@ -212,16 +213,11 @@ double SensingPolicy::expected_entropy_grouped(int a) const {
     if (group_of_live_[l] >= 0)
       Column(&grouped_[static_cast<std::size_t>(group_of_live_[l]) * O], O) += b * row;
   }
-  // glibc's log (FMA) beats Eigen's packet log (SSE2) here.
-  const auto x_log_x = [](double x) { return x > 0.0 ? x * std::log(x) : 0.0; };
-  double result = 0.0;
+  double x_log_x = sum_x_log_x(grouped_.data(), static_cast<std::size_t>(K) * O);
+  double result = -x_log_x;
   for (int o = 0; o < O; ++o) {
     double sorted = 0.0;
-    for (int k = 0; k < K; ++k) {
-      const double gk = grouped_[static_cast<std::size_t>(k) * O + o];
-      sorted += gk;
-      result -= x_log_x(gk);
-    }
+    for (int k = 0; k < K; ++k) sorted += grouped_[static_cast<std::size_t>(k) * O + o];
     if (totals_[o] > 0.0) result += sorted * std::log(totals_[o]);
   }
   return result;
