@@ -41,10 +41,69 @@ double best_rival_upper(solvers::IdentificationSolver& solver,
 
 }  // namespace
 
+namespace {
+
+using NodeId = solvers::IdentificationSolver::NodeId;
+
+// A decision's loss with its node, to list the worst at the end.
+struct Visited {
+  DecisionLoss loss;
+  NodeId node;
+};
+
+// The loss of taking `step`'s action at `node` (bounded by refining there); counts beliefs whose
+// bounds missed the target in `unconverged`. InputError for an action past its use limit.
+DecisionLoss judge_decision(solvers::IdentificationSolver& solver, NodeId node, int trial,
+                            const LoggedStep& step, const solvers::RefineLimits& limits,
+                            const std::string& steps_file, int& unconverged) {
+  if (!solver.available(node, step.action))
+    throw InputError(steps_file, step.line,
+                     fmt::format("trial {} takes action {} more often than the problem's use "
+                                 "limit allows",
+                                 trial, step.action));
+  if (!solver.refine(node, limits)) ++unconverged;
+  if (!solver.refine_action(node, step.action, limits)) ++unconverged;
+  const solvers::Bounds v = solver.value(node);
+  const solvers::Bounds q = solver.action_value(node, step.action);
+  DecisionLoss d;
+  d.trial = trial;
+  d.step = step.step;
+  d.line = step.line;
+  d.action = step.action;
+  d.loss = std::max(
+      0.0,
+      std::min(v.upper, best_rival_upper(solver, node, step.action, q.lower, limits)) - q.lower);
+  d.loss_lower = std::max(0.0, v.lower - q.upper);
+  return d;
+}
+
+// The `count` largest losses, each with the action that was best at its belief.
+std::vector<DecisionLoss> worst_decisions(solvers::IdentificationSolver& solver,
+                                          std::vector<Visited> visited, int count,
+                                          const solvers::RefineLimits& limits) {
+  std::sort(visited.begin(), visited.end(),
+            [](const Visited& a, const Visited& b) { return a.loss.loss > b.loss.loss; });
+  const std::size_t n = std::min<std::size_t>(visited.size(), std::max(0, count));
+  std::vector<DecisionLoss> worst;
+  for (std::size_t i = 0; i < n; ++i) {
+    Visited& w = visited[i];
+    double best = -1e300;
+    for (int a = 0; a < solver.num_actions(); ++a) {
+      solver.refine_action(w.node, a, limits);
+      const double lower = solver.action_value(w.node, a).lower;
+      if (lower > best) best = lower, w.loss.best_action = a;
+    }
+    w.loss.belief = solver.belief(w.node);
+    worst.push_back(w.loss);
+  }
+  return worst;
+}
+
+}  // namespace
+
 Certificate certify_trials(solvers::IdentificationSolver& solver,
                            const std::vector<LoggedTrial>& trials, const CertifyOptions& options,
                            const std::string& steps_file) {
-  using NodeId = solvers::IdentificationSolver::NodeId;
   solvers::RefineLimits limits;
   limits.target_gap = options.decision_gap;
   limits.expansions = options.expansions_per_belief;
@@ -55,11 +114,6 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
   if (!solver.refine(solver.root(), root_limits)) ++c.unconverged_beliefs;
   const double gamma = solver.discount();
   std::vector<double> regrets;
-  // Every decision's loss with its node, to list the worst at the end.
-  struct Visited {
-    DecisionLoss loss;
-    NodeId node;
-  };
   std::vector<Visited> visited;
 
   for (const LoggedTrial& trial : trials) {
@@ -71,24 +125,8 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
       if (r.ended)
         throw InputError(steps_file, step.line,
                          fmt::format("trial {} goes on after its episode ended", trial.trial));
-      if (!solver.available(node, step.action))
-        throw InputError(steps_file, step.line,
-                         fmt::format("trial {} takes action {} more often than the problem's use "
-                                     "limit allows",
-                                     trial.trial, step.action));
-      if (!solver.refine(node, limits)) ++c.unconverged_beliefs;
-      if (!solver.refine_action(node, step.action, limits)) ++c.unconverged_beliefs;
-      const solvers::Bounds v = solver.value(node);
-      const solvers::Bounds q = solver.action_value(node, step.action);
-      DecisionLoss d;
-      d.trial = trial.trial;
-      d.step = step.step;
-      d.line = step.line;
-      d.action = step.action;
-      d.loss = std::max(
-          0.0, std::min(v.upper, best_rival_upper(solver, node, step.action, q.lower, limits)) -
-                   q.lower);
-      d.loss_lower = std::max(0.0, v.lower - q.upper);
+      const DecisionLoss d = judge_decision(solver, node, trial.trial, step, limits, steps_file,
+                                            c.unconverged_beliefs);
       r.regret += weight * d.loss;
       r.regret_lower += weight * d.loss_lower;
       r.bound_gap += weight * (d.loss - d.loss_lower);
@@ -126,22 +164,7 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
   }
   c.regret = mean_ci95(regrets);
   c.vstar = solver.value(solver.root());
-
-  // The worst decisions, with the action that was best there.
-  std::sort(visited.begin(), visited.end(),
-            [](const Visited& a, const Visited& b) { return a.loss.loss > b.loss.loss; });
-  const std::size_t n = std::min<std::size_t>(visited.size(), std::max(0, options.worst));
-  for (std::size_t i = 0; i < n; ++i) {
-    Visited& w = visited[i];
-    double best = -1e300;
-    for (int a = 0; a < solver.num_actions(); ++a) {
-      solver.refine_action(w.node, a, limits);
-      const double lower = solver.action_value(w.node, a).lower;
-      if (lower > best) best = lower, w.loss.best_action = a;
-    }
-    w.loss.belief = solver.belief(w.node);
-    c.worst.push_back(w.loss);
-  }
+  c.worst = worst_decisions(solver, std::move(visited), options.worst, limits);
   return c;
 }
 

@@ -5,6 +5,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "common/golden_section.h"
+
 namespace echoplan::perception {
 
 ConfusionMatrix ConfusionMatrix::zeros(std::vector<std::string> objects,
@@ -129,29 +131,10 @@ double fit_temperature(std::span<const std::vector<double>> log_scores, std::spa
     throw std::invalid_argument("label smoothing must be in [0, 1)");
   // The cross-entropy of temperature scaling is convex in 1/T, hence unimodal in log T:
   // golden-section search.
-  double lo = std::log(1e-4), hi = std::log(1e6);
-  const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
   auto f = [&](double log_t) {
     return cross_entropy(log_scores, labels, smoothing, std::exp(log_t));
   };
-  double a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
-  double fa = f(a), fb = f(b);
-  for (int i = 0; i < 80; ++i) {
-    if (fa <= fb) {
-      hi = b;
-      b = a;
-      fb = fa;
-      a = hi - ratio * (hi - lo);
-      fa = f(a);
-    } else {
-      lo = a;
-      a = b;
-      fa = fb;
-      b = lo + ratio * (hi - lo);
-      fb = f(b);
-    }
-  }
-  return std::exp((lo + hi) / 2.0);
+  return std::exp(golden_section_minimum(f, std::log(1e-4), std::log(1e6)));
 }
 
 }  // namespace echoplan::perception

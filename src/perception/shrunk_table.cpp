@@ -4,31 +4,10 @@
 #include <cmath>
 #include <functional>
 
+#include "common/golden_section.h"
+
 namespace echoplan::perception {
 namespace {
-
-// The minimiser of a unimodal f on [lo, hi] (golden-section search, 80 steps).
-double golden_minimum(const std::function<double(double)>& f, double lo, double hi) {
-  const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
-  double a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
-  double fa = f(a), fb = f(b);
-  for (int i = 0; i < 80; ++i) {
-    if (fa <= fb) {
-      hi = b;
-      b = a;
-      fb = fa;
-      a = hi - ratio * (hi - lo);
-      fa = f(a);
-    } else {
-      lo = a;
-      a = b;
-      fa = fb;
-      b = lo + ratio * (hi - lo);
-      fb = f(b);
-    }
-  }
-  return (lo + hi) / 2.0;
-}
 
 enum Kind { right = 0, same_bin = 1, other_bin = 2 };
 
@@ -86,8 +65,8 @@ ShrunkTable shrink_counts(const std::vector<std::vector<double>>& counts,
                           std::span<const int> bin_of_class) {
   const Table prior = pooled_prior(counts, bin_of_class);
   const double log_a =
-      golden_minimum([&](double x) { return -log_marginal(counts, prior, std::exp(x)); },
-                     std::log(1e-2), std::log(1e6));
+      golden_section_minimum([&](double x) { return -log_marginal(counts, prior, std::exp(x)); },
+                             std::log(1e-2), std::log(1e6));
   return {shrink_counts(counts, bin_of_class, std::exp(log_a)), std::exp(log_a)};
 }
 
@@ -142,8 +121,8 @@ double sequence_nll(const Table& table, double beta, std::span<const Sequence> s
 double fit_temper(std::span<const Table> tables, std::span<const Sequence> sequences) {
   if (sequences.empty()) return 1.0;
   constexpr double kLowest = 0.02;
-  const double beta =
-      golden_minimum([&](double b) { return sequence_nll(tables, b, sequences); }, kLowest, 1.0);
+  const double beta = golden_section_minimum(
+      [&](double b) { return sequence_nll(tables, b, sequences); }, kLowest, 1.0);
   // The search never evaluates the end points; keep 1 (no tempering) when it is at least as good.
   return sequence_nll(tables, 1.0, sequences) <= sequence_nll(tables, beta, sequences) ? 1.0 : beta;
 }

@@ -172,78 +172,18 @@ SolveArgs with_iteration_alias(const SolveArgs& given) {
   return args;
 }
 
-void run_solve(const SolveArgs& given) {
-  namespace off = solvers::offline;
-  const SolveArgs args = with_iteration_alias(given);
-  if (!(args.epsilon >= 0.0)) throw InputError("--epsilon must be >= 0");
-  if (!(args.time_limit > 0.0)) throw InputError("--time-limit must be > 0 seconds");
-  const pomdp::Problem problem = pomdp::load_problem(args.problem);
-  const pomdp::TabularModel* tables = problem.model->tabular();
-  if (tables == nullptr) {
-    throw InputError(args.problem, 0,
-                     "this problem has no tables (continuous observations?); the offline solver "
-                     "needs a discrete problem: a .pomdp file or an object-identification YAML");
-  }
-  const auto shape_problem = solvers::identification_shape_problem(*tables);
-  if (args.method == "exact" && shape_problem) {
-    throw InputError(args.problem, 0,
-                     "--method exact needs an identification problem, and this one is not: " +
-                         *shape_problem + " (use --method point-based)");
-  }
-  if (args.method == "exact" && !args.out.empty()) {
-    throw InputError("--out saves a point-based policy; use it with --method point-based");
-  }
-  if (args.method == "auto" && args.out.empty() && !shape_problem) {
-    run_exact(args, problem, *tables);
-    return;
-  }
-  if (args.method == "exact") {
-    run_exact(args, problem, *tables);
-    return;
-  }
-  if (args.method == "auto" && shape_problem) {
-    spdlog::info("not an identification problem ({}): using the point-based solver",
-                 *shape_problem);
-  }
-  if (solvers::UseLimits(*problem.model).any())
-    throw InputError(args.problem, 0,
-                     "the point-based solver does not support per-action use limits "
-                     "(actions.uses); use --method exact (identification problems) or an online "
-                     "solver");
-  auto dense = std::make_shared<const off::FlatPomdp>(off::make_flat_pomdp(*tables, args.problem));
-
-  off::SolverOptions options;
-  options.epsilon = args.epsilon;
-  options.time_limit_seconds = args.time_limit;
-  options.seed = args.seed;
-  options.max_trials = args.max_trials;
-  off::PointBasedSolver solver(dense, options);
-  // Progress through spdlog (stderr, see main.cpp) so that stdout holds only the result.
-  spdlog::info("solving {} ({} states, {} actions, {} observations; epsilon {}, time limit {} s)",
-               args.problem, dense->num_states, dense->num_actions, dense->num_observations,
-               args.epsilon, args.time_limit);
-  const off::SolverProgress result = solver.solve([](const off::SolverProgress& p) {
-    spdlog::info(
-        "{:7.1f} s  trials {:6}  V* in [{:.6f}, {:.6f}]  gap {:.3g}  vectors {}  points {}",
-        p.seconds, p.trials, p.root.lower, p.root.upper, p.root.upper - p.root.lower,
-        p.alpha_vectors, p.upper_points);
-  });
-
+// The point-based solver's result at b0: its bounds, the best first action and every action's Q*
+// bounds, as JSON or text.
+void print_point_based(const SolveArgs& args, const pomdp::Problem& problem,
+                       const solvers::offline::PointBasedSolver& solver,
+                       const solvers::offline::SolverProgress& result,
+                       const solvers::BeliefVector& b0) {
   const auto& action_names = problem.model->spec().action_names;
   auto action_name = [&](int a) {
     return a < static_cast<int>(action_names.size()) ? action_names[a] : std::to_string(a);
   };
-  const solvers::BeliefVector& b0 = dense->initial_belief;
   const int best = solver.best_action(b0);
   const std::vector<solvers::Bounds> q = solver.action_bounds(b0);
-
-  if (!args.out.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(args.out, ec);
-    if (ec) throw InputError(args.out, 0, "cannot create the output folder: " + ec.message());
-    off::save_policy(solver, (std::filesystem::path(args.out) / "policy.json").string());
-  }
-
   if (args.json) {
     nlohmann::ordered_json out;
     out["lower"] = result.root.lower;
@@ -274,6 +214,75 @@ void run_solve(const SolveArgs& given) {
   }
   fmt::print(")\n");
   if (!args.out.empty()) fmt::print("policy written to {}/policy.json\n", args.out);
+}
+
+// The point-based solver on any discrete problem without use limits: solve, save the policy when
+// asked, print.
+void run_point_based(const SolveArgs& args, const pomdp::Problem& problem,
+                     const pomdp::TabularModel& tables) {
+  namespace off = solvers::offline;
+  if (solvers::UseLimits(*problem.model).any())
+    throw InputError(args.problem, 0,
+                     "the point-based solver does not support per-action use limits "
+                     "(actions.uses); use --method exact (identification problems) or an online "
+                     "solver");
+  auto dense = std::make_shared<const off::FlatPomdp>(off::make_flat_pomdp(tables, args.problem));
+
+  off::SolverOptions options;
+  options.epsilon = args.epsilon;
+  options.time_limit_seconds = args.time_limit;
+  options.seed = args.seed;
+  options.max_trials = args.max_trials;
+  off::PointBasedSolver solver(dense, options);
+  // Progress through spdlog (stderr, see main.cpp) so that stdout holds only the result.
+  spdlog::info("solving {} ({} states, {} actions, {} observations; epsilon {}, time limit {} s)",
+               args.problem, dense->num_states, dense->num_actions, dense->num_observations,
+               args.epsilon, args.time_limit);
+  const off::SolverProgress result = solver.solve([](const off::SolverProgress& p) {
+    spdlog::info(
+        "{:7.1f} s  trials {:6}  V* in [{:.6f}, {:.6f}]  gap {:.3g}  vectors {}  points {}",
+        p.seconds, p.trials, p.root.lower, p.root.upper, p.root.upper - p.root.lower,
+        p.alpha_vectors, p.upper_points);
+  });
+
+  if (!args.out.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(args.out, ec);
+    if (ec) throw InputError(args.out, 0, "cannot create the output folder: " + ec.message());
+    off::save_policy(solver, (std::filesystem::path(args.out) / "policy.json").string());
+  }
+  print_point_based(args, problem, solver, result, dense->initial_belief);
+}
+
+void run_solve(const SolveArgs& given) {
+  const SolveArgs args = with_iteration_alias(given);
+  if (!(args.epsilon >= 0.0)) throw InputError("--epsilon must be >= 0");
+  if (!(args.time_limit > 0.0)) throw InputError("--time-limit must be > 0 seconds");
+  const pomdp::Problem problem = pomdp::load_problem(args.problem);
+  const pomdp::TabularModel* tables = problem.model->tabular();
+  if (tables == nullptr) {
+    throw InputError(args.problem, 0,
+                     "this problem has no tables (continuous observations?); the offline solver "
+                     "needs a discrete problem: a .pomdp file or an object-identification YAML");
+  }
+  const auto shape_problem = solvers::identification_shape_problem(*tables);
+  if (args.method == "exact" && shape_problem) {
+    throw InputError(args.problem, 0,
+                     "--method exact needs an identification problem, and this one is not: " +
+                         *shape_problem + " (use --method point-based)");
+  }
+  if (args.method == "exact" && !args.out.empty()) {
+    throw InputError("--out saves a point-based policy; use it with --method point-based");
+  }
+  if (args.method == "exact" || (args.method == "auto" && args.out.empty() && !shape_problem)) {
+    run_exact(args, problem, *tables);
+    return;
+  }
+  if (args.method == "auto" && shape_problem) {
+    spdlog::info("not an identification problem ({}): using the point-based solver",
+                 *shape_problem);
+  }
+  run_point_based(args, problem, *tables);
 }
 
 }  // namespace
