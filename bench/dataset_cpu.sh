@@ -9,7 +9,7 @@
 #
 # RUNS: runs of each binary (default 9); THREADS: --threads (default 1: CPU per core).
 # Run from the repository root (its objects/ and problems/ are the data). Needs /usr/bin/time and
-# Debian's python3. Results: docs/BENCHMARKS.md ("Session 5 (branch s5-speed)").
+# Debian's python3. Results: docs/BENCHMARKS.md ("Simulator").
 set -eu
 if [ $# -lt 2 ]; then
   sed -n '2,12p' "$0"

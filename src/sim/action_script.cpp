@@ -16,12 +16,12 @@ constexpr double kLiftSpeed = 0.10;  // m/s, the report's 10 cm/s (the report's 
 // this simulator's start pose, not tuned to the lab's recordings (the push then covers 5.1 cm).
 constexpr double kPadGap = 0.001;
 // s simulated after the strike so the object comes to rest: the object is already held still, and
-// the clip's length does not depend on it (docs/simulator.md, "Realism, measured", session 8).
+// the clip's length does not depend on it (docs/simulator.md, "The push: speed and profile").
 constexpr double kSettleTime = 0.2;
 // s simulated after the push. The pad slows to rest gently (ArmConfig: over the push's last fifth,
 // a few tenths of a m/s^2), and friction (mu g: metres per s^2) would stop an object sliding at a
 // few cm/s within 20 ms anyway, so only the contacts settle. (Less physics than the strike's 0.2 s
-// pays for the lab's longer push: docs/BENCHMARKS.md, "Simulator", session 8.)
+// pays for the lab's longer push: docs/BENCHMARKS.md, "Simulator".)
 constexpr double kSlideSettleTime = 0.05;
 
 // The strike: grasp, lift (tilting), pause, descend until contact, level, hold, release, settle.

@@ -11,8 +11,8 @@ namespace echoplan::sim {
 namespace {
 
 // What counts as an impact (docs/simulator.md, "What is modelled", contacts to sound; checked in
-// "Realism, measured", session 5 "the mug's second hit" and session 6 "the mug's tilted landing":
-// every strike of every object and seed gives one impact, no slide gives any).
+// "The mug strike: second hit, tilted landing, low frequencies": every strike of every object and
+// seed gives one impact, no slide gives any).
 constexpr double kImpactSpeedThreshold =
     0.02;  // m/s: slower approaches (resting, rocking while pushed) are heard through friction
 constexpr double kImpactRefractory =

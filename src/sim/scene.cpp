@@ -28,7 +28,7 @@ constexpr double kTorsionalFriction = 0.005;  // every geom's
 constexpr double kRollingFriction = 0.0001;   // every geom's
 // s, MuJoCo solref time constant of the object-table contact: stiff enough that the object does
 // not bounce on its resting contact; softer ones were measured and not kept (docs/simulator.md,
-// "Realism, measured", session 5, "Is the lab mug's second hit a rebound on the grasp?").
+// "The mug strike: second hit, tilted landing, low frequencies").
 constexpr double kObjectContactTime = 0.01;
 
 // The arm as nested bodies, one per joint, each with a capsule from its origin to the next joint.

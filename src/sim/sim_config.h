@@ -38,7 +38,7 @@ struct VariabilityConfig {
   // m/s, the slide's mean speed: 5 cm over the push's duration (its profile is ArmConfig's). The
   // report gives only the distance. The lab's four slides lasted 0.95-2.0 s above -20 dB (mean 1.5
   // s, about 30% around it); 3.4 cm/s pushes for 1.5 s, and the spread, 24%, spans the lab's
-  // durations within two stddev (docs/simulator.md, "Realism, measured", sessions 7 and 8).
+  // durations within two stddev (docs/simulator.md, "The push: speed and profile").
   TruncatedGaussian push_speed{0.034, 0.008};
   TruncatedGaussian push_offset{0.0,
                                 0.005};  // m, the pad off the object's centre line across the push
@@ -93,8 +93,8 @@ struct RecordingConfig {
   // The arm's motor and gear noise (docs/simulator.md, "What is modelled", motor noise): a band
   // around motor_noise_hz (Q motor_noise_q: 0.7 is about two octaves) whose level follows the
   // summed joint speed, rising with time constant motor_attack_s and dying with motor_release_s
-  // (the lab's tail after a slide: docs/simulator.md, session 6). Not measured on the lab's arm:
-  // set yours.
+  // (the lab's tail after a slide: docs/simulator.md, "The mug slide"). Not measured on the lab's
+  // arm: set yours.
   double motor_noise_hz = 1200;  // Hz, in [20, 20000]
   double motor_noise_q = 0.7;    // in [0.1, 20]
   double motor_attack_s = 0.15;  // s, in [0.001, 10]
@@ -128,7 +128,7 @@ struct ArmConfig {
   // from rest over this share of the duration and decelerates to rest over the second share (each
   // in [0, 1], together at most 1). The lab's slides build up over about a second and peak in their
   // second half; a push that reaches its speed at once is as loud from its first tenth of a second
-  // (docs/simulator.md, "Realism, measured", session 8).
+  // (docs/simulator.md, "The push: speed and profile").
   double push_accelerate_share = 0.4;
   double push_decelerate_share = 0.2;
   // The strike's timings (s, each in [0.01, 2]). The report gives its distance and speed only
@@ -136,7 +136,7 @@ struct ArmConfig {
   // the lab's: the hand closes over grasp_time_s, the lift and the descent reach their speed over
   // strike_ease_s (docs/simulator.md, "What is modelled", actions), it pauses lift_pause_s at the
   // top, turns a tilted object upright on the table over level_time_s (slowly: a faster levelling
-  // can make a second hit; docs/simulator.md, session 6, "the mug's tilted landing"), holds it
+  // can make a second hit; docs/simulator.md, "The mug strike", the tilted landing), holds it
   // hold_time_s and opens over release_time_s.
   double grasp_time_s = 0.1;
   double strike_ease_s = 0.15;

@@ -32,8 +32,8 @@ class NoiseSource {
 // through a one-pole low-pass). A real room's noise is dominated by low frequencies (ventilation,
 // traffic, the building: ANSI/ASA S12.2's room-criterion curves fall 5 dB per octave band from
 // 16 Hz), and the lab's templates carried far more 100-500 Hz than white noise does; what it does
-// to the realism targets is in docs/simulator.md (session 6). Both capsules hear it alike: it is
-// the room's, and they are 10 cm apart in it.
+// to the realism targets is in docs/simulator.md ("The room's noise"). Both capsules hear it alike:
+// it is the room's, and they are 10 cm apart in it.
 std::vector<float> room_noise(std::size_t frames, int rate, double corner_hz, double rms,
                               NoiseSource& noise);
 

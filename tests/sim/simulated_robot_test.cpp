@@ -154,7 +154,7 @@ TEST(SimulatedRobot, StrikeMakesOneImpact) {
   // on contact, levels it and opens only after the contact settled, so the object does not bounce
   // and its release makes no second hit. One impact as the contact recorder counts them: its gap
   // test looks at the lowest rim point, so a tilted landing's opposite edge, which touches 10-28 ms
-  // later inside the first ring, is not a separate event (docs/simulator.md, session 6).
+  // later inside the first ring, is not a separate event (docs/simulator.md, "The mug strike").
   for (const char* name :
        {"coffee_mug", "plastic_cup", "pringles_can", "paper_base", "coffee_mug_weighted"}) {
     SimulatedRobot robot(shipped_catalogue(), name, SimConfig{});
