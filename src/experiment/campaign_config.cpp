@@ -108,6 +108,8 @@ nlohmann::json CampaignConfig::identity(const FileText& file_text) const {
     j["world"]["data_sha"] = fmt::format("{:016x}", folder_hash(world.data));
     j["world"]["hold_out"] = world.hold_out;
     j["world"]["groups_sha"] = content_hash(world.groups);
+    // Only when frozen: fold campaigns written before frozen models existed keep their identity.
+    if (!world.model.empty()) j["world"]["model_sha"] = content_hash(world.model);
     j["rewards"] = {{"right", rewards.right}, {"wrong", rewards.wrong}, {"sense", rewards.sense}};
   }
   j["training_set"] = {{"recordings_per_pair", training.recordings_per_pair},
@@ -192,7 +194,7 @@ WorldType read_world_type(const YamlReader& f, const YAML::Node& world) {
 // A dataset world: where the data is, what a trial holds out, what the objects are sorted by.
 void read_dataset_world(const YamlReader& f, const YAML::Node& world, const std::string& source,
                         WorldConfig& w) {
-  f.only_keys(world, {"type", "data", "hold_out", "groups"}, "world");
+  f.only_keys(world, {"type", "data", "hold_out", "groups", "model"}, "world");
   const YAML::Node data = f.require(world, "data", "world");
   w.data = resolve(source, f.name(data, "data"));
   std::error_code error;
@@ -210,6 +212,13 @@ void read_dataset_world(const YamlReader& f, const YAML::Node& world, const std:
   }
   if (w.hold_out == "object" && w.groups.empty())
     f.fail(world, "hold_out: object needs groups: a novel object can only be sorted by its group");
+  if (auto n = f.optional(world, "model", "world")) {
+    w.model = resolve(source, f.name(n, "model"));
+    if (!fs::is_regular_file(w.model, error))
+      f.fail(n, "model file '" + w.model +
+                    "' does not exist (`echoplan train --data DIR --out "
+                    "MODEL` writes one)");
+  }
 }
 
 WorldConfig read_world(const YamlReader& f, const YAML::Node& root, const std::string& source) {
@@ -263,7 +272,7 @@ TrainingSetConfig read_training_set(const YamlReader& f, const YAML::Node& t,
     training.classifier = f.name(n, "classifier");
   if (auto n = f.optional(t, "table", "training_set")) {
     training.table = f.name(n, "table");
-    const auto& names = perception::table_estimate_names();
+    const auto& names = perception::clip_table_estimate_names();
     if (std::find(names.begin(), names.end(), training.table) == names.end())
       f.fail(n,
              fmt::format("table '{}' is not one of: {}", training.table, fmt::join(names, ", ")));
@@ -341,11 +350,13 @@ std::optional<ReferenceResults> read_reference(const YamlReader& f, const YAML::
 }
 
 // What a dataset world's campaign takes instead of trial groups and a training set: the task's
-// rewards (its trials are the data's sessions; its classifiers are fitted per fold).
+// rewards (its trials are the data's sessions; its classifiers are fitted per fold, or frozen).
 void read_dataset_sections(const YamlReader& f, const YAML::Node& root, CampaignConfig& c) {
   if (auto t = f.optional(root, "trials", "campaign"))
     f.fail(t, "a dataset world's trials are the data's (object, session) pairs: remove trials");
   if (auto t = f.optional(root, "training_set", "campaign")) {
+    if (!c.world.model.empty())
+      f.fail(t, "training_set: the world's model is frozen (world.model); nothing is trained");
     f.only_keys(t, {"classifier"}, "training_set (a dataset world fits its classifiers per fold)");
   }
   if (auto t = f.optional(root, "task", "campaign")) c.rewards = read_task(f, t);
@@ -407,6 +418,7 @@ nlohmann::json to_json(const CampaignConfig& c) {
     j["world"]["data"] = c.world.data;
     j["world"]["hold_out"] = c.world.hold_out;
     j["world"]["groups"] = c.world.groups;
+    if (!c.world.model.empty()) j["world"]["model"] = c.world.model;
     j["rewards"] = {
         {"right", c.rewards.right}, {"wrong", c.rewards.wrong}, {"sense", c.rewards.sense}};
   }
@@ -456,8 +468,15 @@ WorldConfig world_from_json(const nlohmann::json& j, const jf::JsonSource& sourc
   const nlohmann::json& w = jf::member(j, "world", "", source);
   WorldConfig world;
   const std::string type = jf::string(jf::member(w, "type", "world", source), "world.type", source);
+  bool known = false;
   for (WorldType t : {WorldType::model, WorldType::simulated, WorldType::dataset})
-    if (type == to_string(t)) world.type = t;
+    if (type == to_string(t)) {
+      world.type = t;
+      known = true;
+    }
+  if (!known)
+    throw InputError(source.file, source.line,
+                     "world.type: '" + type + "' is not one of: model, simulated, dataset");
   world.problem = jf::string(jf::member(w, "problem", "world", source), "world.problem", source);
   if (world.type == WorldType::dataset) {
     const auto text = [&](const char* key) {
@@ -466,6 +485,7 @@ WorldConfig world_from_json(const nlohmann::json& j, const jf::JsonSource& sourc
     world.data = text("data");
     world.hold_out = text("hold_out");
     world.groups = text("groups");
+    if (w.contains("model")) world.model = text("model");
   }
   return world;
 }

@@ -55,7 +55,8 @@ enum class WorldType {
   // symbols.
   simulated,
   // `dataset`: recorded data replayed: each trial is one (object, session) of a feature set or a
-  // recordings tree, heard by classifiers fitted on the other folds (loop/dataset_world.h).
+  // recordings tree, heard by the model fitted on the other folds, or by a frozen model file
+  // (loop/dataset_world.h).
   dataset,
 };
 
@@ -70,6 +71,9 @@ struct WorldConfig {
   std::string data;
   std::string hold_out = "session";
   std::string groups;
+  // A frozen observation model file (`echoplan train --out`): no folds, every session replayed
+  // with it (a model trained one day, judged on data recorded another). Empty: fit per fold.
+  std::string model;
 };
 
 // What a dataset world's sorting earns (a model or simulated world's problem file has its own).

@@ -147,16 +147,28 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
   return all;
 }
 
+// The seed a trial's random streams came from, with its number among its object's trials (a
+// dataset world: its session's place among the object's sessions): `echoplan run --seed`.
+std::string trial_seed(const CampaignConfig& config, const std::string& object) {
+  for (std::size_t g = 0; g < config.groups.size(); ++g)
+    if (config.groups[g].object == object)
+      return std::to_string(group_seed(config, static_cast<int>(g)));
+  return {};
+}
+
 void write_tables(const fs::path& directory, const CampaignResults& results) {
-  TrialLog all(directory, results.spec, results.belief_particles, {"arm", "object", "session"});
+  TrialLog all(directory, results.spec, results.belief_particles, {"arm", "object", "session"},
+               {"seed"});
   for (const JournalEntry& e : results.entries)
-    all.write_trial(e.result.record, e.result.steps, {e.arm, e.object, e.session});
+    all.write_trial(e.result.record, e.result.steps, {e.arm, e.object, e.session},
+                    {trial_seed(results.config, e.object)});
   for (const CampaignArm& arm : results.config.arms) {
     TrialLog per_arm(directory / "arms" / arm.name, results.spec, results.belief_particles,
-                     {"object", "session"});
+                     {"object", "session"}, {"seed"});
     for (const JournalEntry& e : results.entries)
       if (e.arm == arm.name)
-        per_arm.write_trial(e.result.record, e.result.steps, {e.object, e.session});
+        per_arm.write_trial(e.result.record, e.result.steps, {e.object, e.session},
+                            {trial_seed(results.config, e.object)});
   }
 }
 

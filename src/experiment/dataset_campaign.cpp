@@ -1,38 +1,20 @@
 #include "experiment/dataset_campaign.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
-#include <filesystem>
 #include <map>
 
 #include "common/error.h"
 #include "loop/dataset_problem.h"
 #include "loop/dataset_world.h"
 #include "loop/loop.h"
+#include "perception/observation_model_json.h"
 #include "perception/recording_features.h"
-#include "perception/recording_set.h"
 
 namespace echoplan::experiment {
 
 namespace {
-
-namespace fs = std::filesystem;
-
-// A recordings tree has audio under DIR/<object>/<action>/ or a manifest; a feature set has
-// DIR/<action>/<modality>.csv.
-bool is_recordings_tree(const std::string& dir) {
-  if (fs::exists(fs::path(dir) / "manifest.csv")) return true;
-  std::error_code error;
-  for (fs::recursive_directory_iterator it(dir, error), end; !error && it != end;
-       it.increment(error))
-    if (it->is_regular_file(error) && it->path().extension() == ".wav") return true;
-  return false;
-}
-
-perception::FeatureSet load_data(const std::string& dir, const ProgressFn& progress) {
-  if (!is_recordings_tree(dir)) return perception::load_feature_set(dir);
-  return perception::feature_set_from_recordings(perception::load_recording_set(dir), {}, progress);
-}
 
 pomdp::Problem dataset_problem_file(pomdp::ObjectProblemData data, const std::string& source) {
   pomdp::Problem problem;
@@ -82,21 +64,50 @@ void check_enough_for_folds(const perception::FeatureSet& data, const perception
                             data.objects[i], count[i]));
 }
 
+// A frozen model: one "fold" holding every session, its model the file's (checked against the
+// task's classes and the data's actions and modalities before any trial).
+void open_frozen_model(DatasetTrials& t, const std::string& path) {
+  auto model = std::make_shared<const perception::ObservationModel>(
+      perception::load_observation_model(path));
+  if (model->classes() != t.task.classes)
+    throw InputError(
+        path, 0,
+        fmt::format("the model's classes ({}) are not the campaign's ({}): train it "
+                    "with the same groups and hold_out",
+                    fmt::join(model->classes(), ", "), fmt::join(t.task.classes, ", ")));
+  for (const perception::ActionData& action : t.data->actions) try {
+      perception::PerformanceReader(*model, action.name, *t.data);
+    } catch (const InputError& e) {
+      throw InputError(path, 0, e.problem());
+    }
+  perception::Fold all;
+  for (std::size_t s = 0; s < t.data->sessions.size(); ++s)
+    all.test_sessions.push_back(static_cast<int>(s));
+  t.folds = {all};
+  t.fold_of_session.assign(t.data->sessions.size(), 0);
+  t.models = {std::move(model)};
+}
+
 }  // namespace
 
 DatasetTrials open_dataset(const CampaignConfig& config, const ProgressFn& progress) {
   DatasetTrials t;
-  t.data = std::make_shared<const perception::FeatureSet>(load_data(config.world.data, progress));
+  t.data = std::make_shared<const perception::FeatureSet>(
+      perception::load_data(config.world.data, progress));
   std::optional<perception::ObjectGroups> groups;
   if (!config.world.groups.empty()) groups = perception::load_groups(config.world.groups);
   t.task = perception::make_dataset_task(*t.data, groups ? &*groups : nullptr,
                                          perception::parse_hold_out(config.world.hold_out),
                                          config.world.groups);
-  check_enough_for_folds(*t.data, t.task, config.world.data);
-  t.folds = perception::make_folds(*t.data, t.task);
-  t.fold_of_session.assign(t.data->sessions.size(), -1);
-  for (std::size_t f = 0; f < t.folds.size(); ++f)
-    for (int s : t.folds[f].test_sessions) t.fold_of_session.at(s) = static_cast<int>(f);
+  if (!config.world.model.empty()) {
+    open_frozen_model(t, config.world.model);
+  } else {
+    check_enough_for_folds(*t.data, t.task, config.world.data);
+    t.folds = perception::make_folds(*t.data, t.task);
+    t.fold_of_session.assign(t.data->sessions.size(), -1);
+    for (std::size_t f = 0; f < t.folds.size(); ++f)
+      for (int s : t.folds[f].test_sessions) t.fold_of_session.at(s) = static_cast<int>(f);
+  }
   t.names = std::make_shared<const pomdp::Problem>(dataset_problem_file(
       loop::dataset_problem_shape(t.task, *t.data, task_rewards(config)), config.world.data));
   return t;
@@ -121,6 +132,7 @@ std::vector<int> right_actions(const DatasetTrials& trials) {
 
 bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
                        const ProgressFn& progress, const std::atomic<bool>& stop) {
+  if (!config.world.model.empty()) return true;  // frozen: open_dataset loaded it
   perception::FeatureModelOptions options;
   if (!config.training.classifier.empty()) options.classifier = config.training.classifier;
   trials.models.clear();
@@ -131,7 +143,7 @@ bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
     std::vector<int> training;
     for (std::size_t s = 0; s < trials.data->sessions.size(); ++s)
       if (trials.fold_of_session[s] != f) training.push_back(static_cast<int>(s));
-    trials.models.push_back(std::make_shared<const perception::FeatureModel>(
+    trials.models.push_back(std::make_shared<const perception::ObservationModel>(
         perception::fit_feature_model(*trials.data, trials.task, training, options)));
   }
   if (progress) progress("fit folds", folds, folds);

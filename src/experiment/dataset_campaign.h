@@ -31,7 +31,7 @@ struct DatasetTrials {
   std::vector<perception::Fold> folds;
   std::vector<int> fold_of_session;  // [session] -> fold
   // The fitted model of each fold (empty until fit_dataset_folds()).
-  std::vector<std::shared_ptr<const perception::FeatureModel>> models;
+  std::vector<std::shared_ptr<const perception::ObservationModel>> models;
   // Names only (objects, actions, symbols): what the report needs before any fit.
   std::shared_ptr<const pomdp::Problem> names;
 };

@@ -117,11 +117,13 @@ std::vector<LoggedTrial> read_steps_csv(std::istream& in, const std::string& fil
 }
 
 TrialLog::TrialLog(const std::filesystem::path& directory, const pomdp::ModelSpec& spec,
-                   int belief_particles, std::vector<std::string> extra_columns)
+                   int belief_particles, std::vector<std::string> extra_columns,
+                   std::vector<std::string> trial_columns)
     : directory_(directory),
       spec_(spec),
       belief_particles_(belief_particles),
-      extra_columns_(std::move(extra_columns)) {
+      extra_columns_(std::move(extra_columns)),
+      trial_columns_(std::move(trial_columns)) {
   std::error_code error;
   std::filesystem::create_directories(directory_, error);
   if (error)
@@ -134,6 +136,7 @@ TrialLog::TrialLog(const std::filesystem::path& directory, const pomdp::ModelSpe
   for (const auto& action : spec_.action_names) trials_ << ',' << csv_field("n_" + action);
   trials_ << ",discounted_reward,collision";
   for (const auto& column : extra_columns_) trials_ << ',' << csv_field(column);
+  for (const auto& column : trial_columns_) trials_ << ',' << csv_field(column);
   trials_ << '\n';
   steps_ << "trial,step,action,observation";
   const std::string prefix = belief_particles_ > 0 ? "particles_" : "p_";
@@ -168,15 +171,18 @@ std::string TrialLog::observation_text(const pomdp::Observation& observation) co
 }
 
 void TrialLog::trial_finished(const TrialRecord& trial, const std::vector<StepRecord>& steps) {
-  write_trial(trial, steps, std::vector<std::string>(extra_columns_.size()));
+  write_trial(trial, steps, std::vector<std::string>(extra_columns_.size()),
+              std::vector<std::string>(trial_columns_.size()));
 }
 
 void TrialLog::write_trial(const TrialRecord& trial, const std::vector<StepRecord>& steps,
-                           const std::vector<std::string>& extra_values) {
-  if (extra_values.size() != extra_columns_.size())
+                           const std::vector<std::string>& extra_values,
+                           const std::vector<std::string>& trial_values) {
+  if (extra_values.size() != extra_columns_.size() || trial_values.size() != trial_columns_.size())
     throw std::invalid_argument("TrialLog::write_trial: one value per extra column expected");
-  std::string extras;
+  std::string extras, trial_extras;
   for (const auto& value : extra_values) extras += ',' + csv_field(value);
+  for (const auto& value : trial_values) trial_extras += ',' + csv_field(value);
   for (const StepRecord& s : steps) {
     steps_ << s.trial << ',' << s.step << ',' << csv_field(spec_.action_names[s.action]) << ','
            << observation_text(s.observation);
@@ -194,7 +200,7 @@ void TrialLog::write_trial(const TrialRecord& trial, const std::vector<StepRecor
           << state_name(trial.believed_state) << ',' << trial.steps;
   for (int count : trial.action_counts) trials_ << ',' << count;
   trials_ << ',' << number(trial.discounted_reward) << ',' << (trial.collision ? 1 : 0) << extras
-          << '\n';
+          << trial_extras << '\n';
   // Flush per trial: an interrupted run keeps every finished trial, and no half rows.
   steps_.flush();
   trials_.flush();

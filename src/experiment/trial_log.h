@@ -9,7 +9,8 @@
 //             reward, episodes, heard_probability
 //   heard_probability: the classifier's calibrated probability of the heard class, empty when the
 //   world draws observations from a table.
-// Both files may end with extra columns named at construction (a campaign adds arm and object); a
+// Both files may end with extra columns named at construction (a campaign adds arm, object and
+// session), and trials.csv with trial columns after them (a campaign adds the trial's seed); a
 // reader of the columns above finds them where they always were.
 //   belief columns are particle counts ("particles_<value>", the columns of the report's Table 5.2)
 //   when the belief holds `belief_particles` > 0 particles, probabilities ("p_<value>") otherwise.
@@ -35,14 +36,16 @@ class TrialLog final {
  public:
   // Creates `directory` if needed; throws InputError when it cannot be written.
   TrialLog(const std::filesystem::path& directory, const pomdp::ModelSpec& spec,
-           int belief_particles, std::vector<std::string> extra_columns = {});
+           int belief_particles, std::vector<std::string> extra_columns = {},
+           std::vector<std::string> trial_columns = {});
 
   // Writes one finished trial: its row in trials.csv and its steps' rows in steps.csv.
   void trial_finished(const TrialRecord& trial, const std::vector<StepRecord>& steps);
   // As trial_finished, with one value per extra column, repeated on the trial's row and each
-  // step's.
+  // step's, and one per trial column, on the trial's row.
   void write_trial(const TrialRecord& trial, const std::vector<StepRecord>& steps,
-                   const std::vector<std::string>& extra_values);
+                   const std::vector<std::string>& extra_values,
+                   const std::vector<std::string>& trial_values = {});
 
   // Writes summary.json: the summary's fields plus everything in `run` (problem, solver, seed,
   // ...).
@@ -56,6 +59,7 @@ class TrialLog final {
   pomdp::ModelSpec spec_;
   int belief_particles_;
   std::vector<std::string> extra_columns_;
+  std::vector<std::string> trial_columns_;
   std::ofstream trials_;
   std::ofstream steps_;
 };

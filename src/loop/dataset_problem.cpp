@@ -1,6 +1,7 @@
 #include "loop/dataset_problem.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <map>
@@ -50,9 +51,18 @@ pomdp::ObjectProblemData problem_of(const perception::DatasetTask& task,
 }  // namespace
 
 pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
-                                         const perception::FeatureModel& model,
+                                         const perception::ObservationModel& model,
                                          const DatasetRewards& rewards, std::vector<int> uses) {
-  return problem_of(task, model.actions(), model.table(), rewards, std::move(uses));
+  if (model.classes() != task.classes || model.reject())
+    throw InputError(fmt::format(
+        "the model's classes ({}{}) are not the task's ({}): a dataset problem needs a model "
+        "fitted on sessions for the same classes",
+        fmt::join(model.classes(), ", "), model.reject() ? ", unknown" : "",
+        fmt::join(task.classes, ", ")));
+  Table table;
+  for (const std::string& action : model.actions())
+    table.push_back(model.observation_table(action));
+  return problem_of(task, model.actions(), table, rewards, std::move(uses));
 }
 
 pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& task,

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "perception/dataset_task.h"
-#include "perception/feature_model.h"
 #include "perception/feature_set.h"
+#include "perception/observation_model.h"
 #include "pomdp/object_identification_model.h"
 
 namespace echoplan::loop {
@@ -23,10 +23,11 @@ struct DatasetRewards {
 // prior from the trials' own frequencies would leak the test split); one sensing action per model
 // action (same order, reward `sense`, no motion, no collision, `uses[a]` its use limit, 0: none);
 // one sorting action per bin, rewarding `right` when the class is in that bin and `wrong`
-// otherwise; observation symbols = the classes; the table = model.table(); discount 0.99 (the
-// report's problems). Throws InputError when `uses` is not one entry per action, or negative.
+// otherwise; observation symbols = the classes; the table = the model's observation tables;
+// discount 0.99 (the report's problems). Throws InputError when `uses` is not one entry per
+// action, or negative, or the model's classes are not the task's (or it rejects).
 pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
-                                         const perception::FeatureModel& model,
+                                         const perception::ObservationModel& model,
                                          const DatasetRewards& rewards, std::vector<int> uses);
 
 // The same problem's shape, with every observation row uniform and default_uses(set): its names

@@ -54,8 +54,9 @@ DatasetWorld::DatasetWorld(const pomdp::ObjectIdentificationModel& problem, Data
   if (!spec_.data || !spec_.model)
     throw std::invalid_argument("DatasetWorld: the data and the fitted model are needed");
   for (const pomdp::SensingAction& act : problem_.data().sensing) {
-    data_action_.push_back(data_action_index(*spec_.data, act.name));
-    rows_.push_back(session_rows(spec_.data->actions[data_action_.back()], spec_.session));
+    const int data_action = data_action_index(*spec_.data, act.name);
+    readers_.emplace_back(*spec_.model, act.name, *spec_.data);
+    rows_.push_back(session_rows(spec_.data->actions[data_action], spec_.session));
   }
   next_.assign(rows_.size(), 0);
 }
@@ -74,7 +75,7 @@ WorldStep DatasetWorld::execute(int action, Rng& /*rng*/) {
           fmt::format("dataset world: '{}' used more often than the session recorded it ({} times)",
                       data.sensing[action].name, rows_[action].size()));
     const int row = rows_[action][next_[action]++];
-    outcome.observation.index = spec_.model->classify(data_action_[action], *spec_.data, row);
+    outcome.observation.index = readers_[action].classify(row).symbol;
     outcome.reward = data.sensing[action].reward;
     return {outcome, {}};
   }

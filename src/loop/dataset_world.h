@@ -1,6 +1,7 @@
 // Recorded data as the world: a trial replays one held-out session of a feature set (or of a
 // recordings tree's features). Each sensing action takes the session's next recorded performance
-// of that behaviour, and the classifiers fitted on the other folds hear it; a sorting action earns
+// of that behaviour, and the observation model (fitted on the other folds, or a frozen model
+// file) hears it; a sorting action earns
 // the problem's reward for the trial's true class. Nothing is drawn at random: the same session
 // gives the same observations to every arm, so arms are compared on exactly the same data.
 #pragma once
@@ -11,6 +12,7 @@
 #include "loop/world.h"
 #include "perception/feature_model.h"
 #include "perception/feature_set.h"
+#include "perception/observation_model.h"
 #include "pomdp/object_identification_model.h"
 
 namespace echoplan::loop {
@@ -18,13 +20,15 @@ namespace echoplan::loop {
 // What a dataset world replays. The problem's sensing actions are the set's actions, by name.
 struct DatasetWorldSpec {
   std::shared_ptr<const perception::FeatureSet> data;
-  std::shared_ptr<const perception::FeatureModel> model;  // fitted on folds without `session`
-  int session = 0;                                        // index into data->sessions
+  // Fitted on folds without `session`, or trained on other data (its modalities matched by name).
+  std::shared_ptr<const perception::ObservationModel> model;
+  int session = 0;  // index into data->sessions
 };
 
 class DatasetWorld final : public World {
  public:
-  // Throws InputError when a sensing action of `problem` is not an action of the data.
+  // Throws InputError when a sensing action of `problem` is not an action of the data or the
+  // model, or the data lacks a modality the model needs.
   DatasetWorld(const pomdp::ObjectIdentificationModel& problem, DatasetWorldSpec spec);
 
   void reset(const pomdp::State& true_state, Rng& rng) override;
@@ -35,7 +39,7 @@ class DatasetWorld final : public World {
  private:
   const pomdp::ObjectIdentificationModel& problem_;
   DatasetWorldSpec spec_;
-  std::vector<int> data_action_;        // [sensing action] -> index into data->actions
+  std::vector<perception::PerformanceReader> readers_;  // [sensing action]
   std::vector<std::vector<int>> rows_;  // [sensing action] -> the session's rows, file order
   std::vector<std::size_t> next_;       // [sensing action] -> rows used so far this trial
   int true_class_ = 0;

@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <stdexcept>
-
 #include "audio/io.h"
 #include "common/error.h"
 #include "common/file_io.h"
@@ -43,8 +41,9 @@ LoopLog::LoopLog(const fs::path& directory, const pomdp::ObjectIdentificationMod
 }
 
 nlohmann::json LoopLog::write_step(const Step& s) {
-  if (!s.robot) throw std::invalid_argument("LoopLog: a step without a robot");
-  const RobotStep& step = *s.robot;
+  // A world without a robot (recorded data replayed, a table world) leaves the robot's fields
+  // empty: no status, clip or classifier answer beyond the observation itself.
+  const RobotStep step = s.robot ? *s.robot : RobotStep{};
   const StepRecord& r = s.record;
   const std::string& action = model_.spec().action_names[r.action];
   const std::string& observation = model_.spec().observation.names[r.observation.index];
@@ -56,8 +55,8 @@ nlohmann::json LoopLog::write_step(const Step& s) {
   }
   const std::string heard =
       step.classified ? (step.heard.unknown ? "unknown" : step.heard.label) : "";
-  csv_ << r.trial << ',' << r.step << ',' << action << ',' << robot::to_string(step.report.status)
-       << ',' << heard << ','
+  const std::string status = s.robot ? robot::to_string(step.report.status) : "";
+  csv_ << r.trial << ',' << r.step << ',' << action << ',' << status << ',' << heard << ','
        << (step.classified ? fmt::format("{:.4f}", step.heard.probability) : "") << ','
        << observation;
   for (std::size_t k = 0; k < objects_.size(); ++k)
@@ -68,10 +67,10 @@ nlohmann::json LoopLog::write_step(const Step& s) {
       {"trial", r.trial},
       {"step", r.step},
       {"action", action},
-      {"report",
-       {{"status", robot::to_string(step.report.status)},
-        {"reason", step.report.reason},
-        {"duration_s", step.report.duration_s}}},
+      {"report", s.robot ? nlohmann::json{{"status", status},
+                                          {"reason", step.report.reason},
+                                          {"duration_s", step.report.duration_s}}
+                         : nlohmann::json(nullptr)},
       {"observation", observation},
       {"reward", r.reward},
       {"terminal", s.terminal},

@@ -28,8 +28,8 @@ class LoopLog {
   // Creates DIR and DIR/clips; throws InputError naming the file when either cannot be written.
   LoopLog(const std::filesystem::path& directory, const pomdp::ObjectIdentificationModel& model);
 
-  // Writes one step of a world with a robot (std::invalid_argument for a step without one).
-  // Returns the step's JSON object (what loop_steps.jsonl got).
+  // Writes one step; a world without a robot (recorded data replayed) leaves the robot's fields
+  // empty. Returns the step's JSON object (what loop_steps.jsonl got).
   nlohmann::json write_step(const Step& step);
 
   // Writes DIR/trial.json: `settings` (what the run was asked to do) and, unless the trial was cut

@@ -1,27 +1,55 @@
 #include "perception/classifier.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <array>
+#include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "perception/report_gaussian_classifier.h"
-#include "perception/report_template_classifier.h"
-#include "perception/summary_lda_classifier.h"
 
 namespace echoplan::perception {
+namespace {
 
-int ClassScores::best_class() const {
-  return static_cast<int>(std::max_element(log_scores.begin(), log_scores.end()) -
-                          log_scores.begin());
+struct Preset {
+  const char* name;
+  const char* extractor;
+  const char* rows;
+};
+
+constexpr std::array<Preset, 4> kPresets{{{"summary-lda", "summary", "lda-class-scaled"},
+                                          {"summary-nearest-mean", "summary", "nearest-mean"},
+                                          {"report-template", "onset-logfbank", "template"},
+                                          {"report-gaussian", "centroid-rms", "gaussian"}}};
+
+}  // namespace
+
+Classifier::Classifier(std::string name, const ClipExtractor* extractor,
+                       std::unique_ptr<RowClassifier> rows)
+    : name_(std::move(name)), extractor_(extractor), rows_(std::move(rows)) {}
+
+std::vector<double> Classifier::embed(const ClipAnalysis& clip) const {
+  if (extractor_ == nullptr)
+    throw InputError(fmt::format(
+        "the '{}' classifier's rows are given by a sensor, not computed from a clip", name_));
+  return extractor_->extract(clip);
 }
 
-double ClassScores::nearest_distance() const {
-  return *std::min_element(distances.begin(), distances.end());
+std::unique_ptr<Classifier> Classifier::clone_unfitted() const {
+  return std::make_unique<Classifier>(name_, extractor_, rows_->clone_unfitted());
+}
+
+nlohmann::json Classifier::save() const { return rows_->save(); }
+
+void Classifier::load(const nlohmann::json& fit, const std::string& source) {
+  rows_->load(fit, source);
 }
 
 std::vector<std::string> classifier_names() {
-  return {"summary-lda", "summary-nearest-mean", "report-template", "report-gaussian"};
+  std::vector<std::string> names;
+  for (const Preset& p : kPresets) names.emplace_back(p.name);
+  return names;
 }
 
 const std::map<std::string, std::string>& classifier_aliases() {
@@ -34,14 +62,20 @@ std::unique_ptr<Classifier> make_classifier(std::string_view name) {
   if (const auto alias = classifier_aliases().find(std::string(name));
       alias != classifier_aliases().end())
     name = alias->second;
-  if (name == "summary-lda")
-    return std::make_unique<SummaryLdaClassifier>(SummaryLdaClassifier::Covariance::ledoit_wolf);
-  if (name == "summary-nearest-mean")
-    return std::make_unique<SummaryLdaClassifier>(SummaryLdaClassifier::Covariance::identity);
-  if (name == "report-template") return std::make_unique<ReportTemplateClassifier>();
-  if (name == "report-gaussian") return std::make_unique<ReportGaussianClassifier>();
+  for (const Preset& p : kPresets)
+    if (name == p.name)
+      return std::make_unique<Classifier>(p.name, &clip_extractor(p.extractor),
+                                          make_row_classifier(p.rows));
   throw InputError(fmt::format("unknown classifier '{}' (expected {})", name,
                                fmt::join(classifier_names(), ", ")));
+}
+
+std::unique_ptr<Classifier> make_modality_classifier(std::string_view row_classifier,
+                                                     std::string_view extractor) {
+  auto rows = make_row_classifier(row_classifier);
+  std::string name = rows->name();
+  return std::make_unique<Classifier>(
+      std::move(name), extractor.empty() ? nullptr : &clip_extractor(extractor), std::move(rows));
 }
 
 }  // namespace echoplan::perception

@@ -1,12 +1,12 @@
-// The interface every observation classifier implements, and the registry of classifiers by name.
-//
-// A classifier turns each analysed clip into a fixed-length embedding (its own features), is fitted
-// on the embeddings of one sensing action's recordings (one classifier per action), and then scores
-// a new clip against every class. Scores are turned into calibrated probabilities and a reject
-// decision by the ObservationModel (perception/observation_model.h), so a classifier only has to
-// say how alike the clip is to each class, in two forms: log-scores (higher = more alike; their
-// softmax after temperature calibration is P(class | clip)) and distances (>= 0, smaller = more
-// alike; the distance to the nearest class decides whether a clip is `unknown`).
+// A classifier of one modality: a row classifier (row_classifier.h) and, for audio, the clip
+// extractor (clip_extractor.h) that turns a clip into its row. The audio presets by name pair the
+// two:
+//   summary-lda           summary + lda-class-scaled   (the default)
+//   summary-nearest-mean  summary + nearest-mean
+//   report-template       onset-logfbank + template    (the report's classifier)
+//   report-gaussian       centroid-rms + gaussian      (the report's first attempt)
+// A modality whose rows are given (a feature set's haptic.csv, a feature topic) has a classifier
+// without an extractor, named after its row classifier (make_modality_classifier).
 #pragma once
 
 #include <map>
@@ -18,72 +18,63 @@
 #include <vector>
 
 #include "perception/clip_analysis.h"
+#include "perception/clip_extractor.h"
+#include "perception/row_classifier.h"
 
 namespace echoplan::perception {
 
-// How one clip compares with each class; both vectors have one entry per class.
-struct ClassScores {
-  std::vector<double> log_scores;  // higher = more alike; differences are log-likelihood-like
-  std::vector<double> distances;   // >= 0, in the classifier's own units; smaller = more alike
-
-  // The class with the highest log-score (the first of equals).
-  int best_class() const;
-  // The distance to the nearest class.
-  double nearest_distance() const;
-};
-
-class Classifier {
+class Classifier final {
  public:
-  virtual ~Classifier() = default;
+  // `extractor` may be null: rows are given, not computed from clips.
+  Classifier(std::string name, const ClipExtractor* extractor, std::unique_ptr<RowClassifier> rows);
 
-  // The registry name ("report-template", ...).
-  virtual std::string name() const = 0;
+  // The preset name ("summary-lda", ...), or the row classifier's name when rows are given.
+  const std::string& name() const { return name_; }
+  // Null when rows are given.
+  const ClipExtractor* extractor() const { return extractor_; }
+  const RowClassifier& rows() const { return *rows_; }
 
-  // The fixed-length vector this classifier compares: its own features of one analysed clip (a pure
-  // function of the clip, so training computes it once per recording and cross-validation reuses
-  // it).
-  virtual std::vector<double> embed(const ClipAnalysis& clip) const = 0;
-
-  // Fits on embeddings of clips of one action: examples[i] is a recording of class labels[i] in
-  // [0, num_classes). Every class needs at least one example (throws InputError otherwise).
-  // Refitting replaces the fit.
-  virtual void fit(std::span<const std::vector<double>> examples, std::span<const int> labels,
-                   int num_classes) = 0;
-
-  // Classes of the current fit (0 before fit).
-  virtual int num_classes() const = 0;
-
-  // Scores an embedding against every class. Requires a fit; throws InputError for an embedding of
-  // the wrong length.
-  virtual ClassScores score(std::span<const double> embedding) const = 0;
-
+  // The extractor's row of one analysed clip (a pure function of the clip, so training computes
+  // it once per recording and cross-validation reuses it). InputError when rows are given.
+  std::vector<double> embed(const ClipAnalysis& clip) const;
+  void fit(std::span<const std::vector<double>> rows, std::span<const int> labels,
+           int num_classes) {
+    rows_->fit(rows, labels, num_classes);
+  }
+  int num_classes() const { return rows_->num_classes(); }
+  ClassScores score(std::span<const double> row) const { return rows_->score(row); }
   // score(embed(clip)).
   ClassScores score_clip(const ClipAnalysis& clip) const { return score(embed(clip)); }
+  // A new, unfitted classifier of the same kind and settings.
+  std::unique_ptr<Classifier> clone_unfitted() const;
+  // The row classifier's fit (the model file's "classifier" object of a modality).
+  nlohmann::json save() const;
+  void load(const nlohmann::json& fit, const std::string& source);
 
-  // A new, unfitted classifier of the same kind and settings (cross-validation fits copies).
-  virtual std::unique_ptr<Classifier> clone_unfitted() const = 0;
-
-  // The fitted parameters as JSON (the model file's per-action "classifier" object, without its
-  // name).
-  virtual nlohmann::json save() const = 0;
-  // Restores a fit written by save(). Throws InputError(source, 0, ...) naming the missing or
-  // malformed field, e.g. "classifier.templates[2]: expected 150 x 26 numbers".
-  virtual void load(const nlohmann::json& fit, const std::string& source) = 0;
+ private:
+  std::string name_;
+  const ClipExtractor* extractor_;
+  std::unique_ptr<RowClassifier> rows_;
 };
 
-// The classifier the commands use when none is named.
+// The audio preset the commands use when none is named.
 inline constexpr std::string_view kDefaultClassifier = "summary-lda";
 
-// Names of every registered classifier, default first.
+// Names of every audio preset, default first.
 std::vector<std::string> classifier_names();
 
-// Earlier names of registered classifiers, each with its current name: "seed-template" and
-// "seed-gaussian" (the report's two classifiers, named before "seed" was kept for random seeds).
-// Model files, campaign files and scripts written with them keep working.
+// Earlier names of presets, each with its current name: "seed-template" and "seed-gaussian" (the
+// report's two classifiers, named before "seed" was kept for random seeds). Model files, campaign
+// files and scripts written with them keep working.
 const std::map<std::string, std::string>& classifier_aliases();
 
-// A new unfitted classifier, by current name or alias (its name() is always the current one).
+// A new unfitted audio classifier, by preset name or alias (its name() is always the current one).
 // Throws InputError listing the names for an unknown one.
 std::unique_ptr<Classifier> make_classifier(std::string_view name);
+
+// A new unfitted classifier of one modality by row classifier name, named after it, with the clip
+// extractor `extractor` (empty: rows are given). InputError for an unknown name.
+std::unique_ptr<Classifier> make_modality_classifier(std::string_view row_classifier,
+                                                     std::string_view extractor = {});
 
 }  // namespace echoplan::perception

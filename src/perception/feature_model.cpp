@@ -1,8 +1,10 @@
 #include "perception/feature_model.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 
 #include "common/error.h"
@@ -35,9 +37,8 @@ TrainingRows training_rows(const DatasetTask& task, const ActionData& action,
   return t;
 }
 
-std::shared_ptr<FeatureClassifier> fit_on(const FeatureClassifier& prototype,
-                                          const Modality& modality, const TrainingRows& t,
-                                          int num_classes, int except_fold) {
+std::shared_ptr<Classifier> fit_on(const std::string& classifier_name, const Modality& modality,
+                                   const TrainingRows& t, int num_classes, int except_fold) {
   std::vector<std::vector<double>> rows;
   std::vector<int> labels;
   for (std::size_t i = 0; i < t.rows.size(); ++i)
@@ -45,23 +46,25 @@ std::shared_ptr<FeatureClassifier> fit_on(const FeatureClassifier& prototype,
       rows.push_back(modality.rows[static_cast<std::size_t>(t.rows[i])]);
       labels.push_back(t.labels[i]);
     }
-  std::shared_ptr<FeatureClassifier> classifier = prototype.clone_unfitted();
+  std::shared_ptr<Classifier> classifier =
+      make_modality_classifier(classifier_name, modality.extractor);
   classifier->fit(rows, labels, num_classes);
   return classifier;
 }
 
 // scores[m][i]: modality m's log-scores for training row i, from the classifier fitted without
 // row i's inner fold.
-ModalityScores held_out_scores(const FeatureClassifier& prototype, const ActionData& action,
+ModalityScores held_out_scores(const std::string& classifier_name, const ActionData& action,
                                const TrainingRows& t, int num_classes, int num_folds) {
   ModalityScores scores(action.modalities.size(), std::vector<std::vector<double>>(t.rows.size()));
   for (std::size_t m = 0; m < action.modalities.size(); ++m)
     for (int f = 0; f < num_folds; ++f) {
-      const auto classifier = fit_on(prototype, action.modalities[m], t, num_classes, f);
+      const auto classifier = fit_on(classifier_name, action.modalities[m], t, num_classes, f);
       for (std::size_t i = 0; i < t.rows.size(); ++i)
         if (t.fold[i] == f)
-          scores[m][i] = classifier->log_scores(
-              action.modalities[m].rows[static_cast<std::size_t>(t.rows[i])]);
+          scores[m][i] =
+              classifier->score(action.modalities[m].rows[static_cast<std::size_t>(t.rows[i])])
+                  .log_scores;
     }
   return scores;
 }
@@ -140,30 +143,46 @@ std::vector<int> inner_folds(const FeatureSet& set, const DatasetTask& task,
 
 }  // namespace
 
+// The confusion of the fused held-out decisions (symbols: the classes).
+ConfusionMatrix confusion_of(const DatasetTask& task,
+                             const std::vector<std::vector<double>>& counts) {
+  ConfusionMatrix confusion = ConfusionMatrix::zeros(task.classes, task.classes);
+  for (std::size_t k = 0; k < counts.size(); ++k)
+    for (std::size_t o = 0; o < counts[k].size(); ++o)
+      confusion.counts[k][o] = static_cast<int>(counts[k][o]);
+  return confusion;
+}
+
 struct FeatureModelFitter {
   const FeatureSet& set;
   const DatasetTask& task;
-  const FeatureClassifier& prototype;
+  const std::string& classifier_name;
   std::vector<int> fold_of_session;
   int num_folds = 0;
 
-  FeatureModel fit(const ProgressFn& progress) const {
-    FeatureModel model;
-    model.classes_ = task.classes;
+  ObservationModel fit(const ProgressFn& progress) const {
+    ModelDescription description;
+    description.classifier_name = classifier_name;
+    description.classes = task.classes;
+    description.reject = false;
+    description.dirichlet_alpha = 0.0;
+    description.table_estimate = TableEstimate::shrunk;
+    std::vector<ActionModel> per_action;
     const int total = static_cast<int>(set.actions.size());
     for (int a = 0; a < total; ++a) {
-      model.actions_.push_back(set.actions[static_cast<std::size_t>(a)].name);
-      fit_action(model, set.actions[static_cast<std::size_t>(a)]);
+      description.actions.push_back(set.actions[static_cast<std::size_t>(a)].name);
+      per_action.push_back(fit_action(set.actions[static_cast<std::size_t>(a)]));
       if (progress) progress("fit", a + 1, total);
     }
-    return model;
+    return ObservationModel(std::move(description), std::move(per_action));
   }
 
-  // Fits one action: its fusion, table and final classifiers, appended to `model`.
-  void fit_action(FeatureModel& model, const ActionData& action) const {
+  // Fits one action: its fusion, table and final classifiers.
+  ActionModel fit_action(const ActionData& action) const {
     const int num_classes = static_cast<int>(task.classes.size());
     const TrainingRows t = training_rows(task, action, fold_of_session);
-    const ModalityScores scores = held_out_scores(prototype, action, t, num_classes, num_folds);
+    const ModalityScores scores =
+        held_out_scores(classifier_name, action, t, num_classes, num_folds);
     const Fusion fusion = fit_fusion(scores, t.labels);
     std::vector<int> decisions(t.rows.size());
     std::vector<std::vector<double>> counts(task.classes.size(),
@@ -175,28 +194,29 @@ struct FeatureModelFitter {
       counts[static_cast<std::size_t>(t.labels[i])][static_cast<std::size_t>(decisions[i])] += 1.0;
     }
     ActionFit fit;
-    fit.action = action.name;
-    for (const Modality& m : action.modalities) fit.modalities.push_back(m.name);
     measure(fit, scores, t.labels, decisions);
     fit.fused_nll = fusion.mean_nll;
-    fit.weights = fusion.weights;
     const ShrunkTable shrunk = shrink_counts(counts, task.bin_of_class);
     fit.shrinkage_strength = shrunk.strength;
     fit.temper =
         fit_temper(cross_fitted_tables(t, decisions, task.bin_of_class, num_folds, shrunk.strength),
                    sequences_of(action, t, decisions));
-    model.table_.push_back(temper(shrunk.table, fit.temper));
-    model.fits_.push_back(std::move(fit));
-    std::vector<std::shared_ptr<const FeatureClassifier>> final_classifiers;
+    ActionModel model;
+    model.weights = fusion.weights;
+    model.calibration.action = action.name;
+    model.calibration.reject_threshold = std::numeric_limits<double>::infinity();
+    model.calibration.confusion = confusion_of(task, counts);
+    model.calibration.table = temper(shrunk.table, fit.temper);
+    model.calibration.fit = std::move(fit);
     for (const Modality& m : action.modalities)
-      final_classifiers.push_back(fit_on(prototype, m, t, num_classes, -1));
-    model.classifiers_.push_back(std::move(final_classifiers));
+      model.modalities.push_back({m.name, fit_on(classifier_name, m, t, num_classes, -1)});
+    return model;
   }
 };
 
-FeatureModel fit_feature_model(const FeatureSet& set, const DatasetTask& task,
-                               std::span<const int> training_sessions,
-                               const FeatureModelOptions& options, const ProgressFn& progress) {
+ObservationModel fit_feature_model(const FeatureSet& set, const DatasetTask& task,
+                                   std::span<const int> training_sessions,
+                                   const FeatureModelOptions& options, const ProgressFn& progress) {
   std::vector<bool> has_class(task.classes.size(), false);
   for (int s : training_sessions)
     has_class[static_cast<std::size_t>(task.class_of_object[static_cast<std::size_t>(
@@ -205,34 +225,46 @@ FeatureModel fit_feature_model(const FeatureSet& set, const DatasetTask& task,
     if (!has_class[c])
       throw InputError(set.root, 0,
                        fmt::format("class '{}' has no training session", task.classes[c]));
-  const auto prototype = make_feature_classifier(options.classifier);
-  FeatureModelFitter fitter{set, task, *prototype, {}, 0};
+  const std::string name = make_row_classifier(options.classifier)->name();  // checks the name
+  FeatureModelFitter fitter{set, task, name, {}, 0};
   fitter.fold_of_session = inner_folds(set, task, training_sessions, fitter.num_folds);
   return fitter.fit(progress);
 }
 
-std::vector<double> FeatureModel::fused_scores(int action, const FeatureSet& set, int row) const {
-  const auto a = static_cast<std::size_t>(action);
-  const ActionData& data = set.actions.at(a);
-  std::vector<std::vector<double>> scores;
-  for (std::size_t m = 0; m < classifiers_.at(a).size(); ++m)
-    scores.push_back(classifiers_[a][m]->log_scores(
-        data.modalities.at(m).rows.at(static_cast<std::size_t>(row))));
-  return fuse(scores, fits_[a].weights);
+PerformanceReader::PerformanceReader(const ObservationModel& model, const std::string& action,
+                                     const FeatureSet& set)
+    : model_(&model), model_action_(model.action_index(action)), data_(set.action(action)) {
+  if (model_action_ < 0)
+    throw InputError(set.root, 0,
+                     fmt::format("the model has no action '{}' (it was trained for: {})", action,
+                                 fmt::join(model.actions(), ", ")));
+  if (data_ == nullptr)
+    throw InputError(set.root, 0, fmt::format("the data has no action '{}'", action));
+  for (const ModalityModel& m : model.modalities(action)) {
+    const Modality* column = nullptr;
+    for (const Modality& candidate : data_->modalities)
+      if (candidate.name == m.name) column = &candidate;
+    if (column == nullptr)
+      throw InputError(
+          set.root, 0,
+          fmt::format("action '{}' has no modality '{}', which the model needs", action, m.name));
+    columns_.push_back(column);
+  }
 }
 
-int FeatureModel::classify(int action, const FeatureSet& set, int row) const {
-  return best_of(fused_scores(action, set, row));
+Prediction PerformanceReader::classify(int row) const {
+  std::vector<std::span<const double>> rows;
+  for (const Modality* column : columns_)
+    rows.emplace_back(column->rows.at(static_cast<std::size_t>(row)));
+  return model_->classify_rows(model_action_, rows);
 }
 
-std::vector<double> FeatureModel::probabilities(int action, const FeatureSet& set, int row) const {
-  return softmax(fused_scores(action, set, row), 1.0);
-}
-
-std::vector<double> FeatureModel::held_out_accuracy() const {
-  std::vector<double> accuracy;
-  for (const ActionFit& fit : fits_) accuracy.push_back(fit.fused_accuracy);
-  return accuracy;
+int classify_row(const ObservationModel& model, int action, const FeatureSet& set, int row) {
+  const ActionData& data = set.actions.at(static_cast<std::size_t>(action));
+  std::vector<std::span<const double>> rows;
+  for (const Modality& m : data.modalities)
+    rows.emplace_back(m.rows.at(static_cast<std::size_t>(row)));
+  return model.classify_rows(action, rows).best_class;
 }
 
 }  // namespace echoplan::perception

@@ -19,6 +19,10 @@ struct Modality {
   std::string name;                        // the file stem ("audio", "haptic", ...)
   std::vector<std::string> feature_names;  // the header after object,session; distinct
   std::vector<std::vector<double>> rows;   // rows[i].size() == feature_names.size(); finite
+  // The clip extractor (clip_extractor.h) that computed the rows from recordings ("summary" for a
+  // recordings tree's audio), or empty when a sensor gave them: a model fitted on them then
+  // classifies live clips the same way.
+  std::string extractor;
 };
 
 // A session: one exploration of one object. Names are per object: (mug, "1") and (cup, "1") are

@@ -1,4 +1,5 @@
-// Fusing several modalities' class log-scores into one calibrated probability (FeatureModel).
+// Fusing several modalities' class log-scores into one calibrated probability (ObservationModel
+// fitted on sessions).
 //
 // The fused log-score of class c is sum_m w_m * s_m(c), and P(c) = softmax of it: a weighted
 // product of the modalities' tempered likelihoods (stacking with one weight per modality; a single

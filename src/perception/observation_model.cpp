@@ -7,21 +7,31 @@
 #include <stdexcept>
 
 #include "common/error.h"
+#include "perception/modality_fusion.h"
 
 namespace echoplan::perception {
 
 const char* table_estimate_name(TableEstimate estimate) {
-  return estimate == TableEstimate::soft ? "soft" : "counts";
+  switch (estimate) {
+    case TableEstimate::soft:
+      return "soft";
+    case TableEstimate::shrunk:
+      return "shrunk";
+    case TableEstimate::counts:
+      break;
+  }
+  return "counts";
 }
 
 const std::vector<std::string>& table_estimate_names() {
-  static const std::vector<std::string> names{"counts", "soft"};
+  static const std::vector<std::string> names{"counts", "soft", "shrunk"};
   return names;
 }
 
 TableEstimate parse_table_estimate(const std::string& name) {
   if (name == "counts") return TableEstimate::counts;
   if (name == "soft") return TableEstimate::soft;
+  if (name == "shrunk") return TableEstimate::shrunk;
   throw InputError(fmt::format("table estimate '{}' is not one of: {}", name,
                                fmt::join(table_estimate_names(), ", ")));
 }
@@ -38,32 +48,52 @@ ObservationModel::ObservationModel(ModelDescription description,
   if (per_action_.size() != description_.actions.size())
     throw std::invalid_argument(fmt::format("ObservationModel: {} actions but {} action models",
                                             description_.actions.size(), per_action_.size()));
-  for (std::size_t i = 0; i < per_action_.size(); ++i)
-    if (!per_action_[i].classifier || per_action_[i].calibration.action != description_.actions[i])
+  for (std::size_t i = 0; i < per_action_.size(); ++i) {
+    const ActionModel& a = per_action_[i];
+    bool complete = !a.modalities.empty() && a.weights.size() == a.modalities.size() &&
+                    a.calibration.action == description_.actions[i];
+    for (const ModalityModel& m : a.modalities) complete = complete && m.classifier != nullptr;
+    if (!complete)
       throw std::invalid_argument("ObservationModel: action model " + std::to_string(i) +
-                                  " has no classifier or is not for action '" +
+                                  " lacks a classifier or a weight, or is not for action '" +
                                   description_.actions[i] + "'");
+    if (description_.reject && a.modalities.size() != 1)
+      throw std::invalid_argument("ObservationModel: the reject option needs one modality");
+  }
 }
 
 std::vector<std::string> ObservationModel::observation_symbols() const {
   return perception::observation_symbols(description_);
 }
 
-const ActionModel& ObservationModel::of(const std::string& action) const {
+int ObservationModel::action_index(const std::string& action) const {
   const auto& actions = description_.actions;
   const auto it = std::find(actions.begin(), actions.end(), action);
-  if (it == actions.end())
+  return it == actions.end() ? -1 : static_cast<int>(it - actions.begin());
+}
+
+const ActionModel& ObservationModel::of(const std::string& action) const {
+  const int index = action_index(action);
+  if (index < 0)
     throw InputError(fmt::format("action '{}' is not in the model (it was trained for: {})", action,
-                                 fmt::join(actions, ", ")));
-  return per_action_[static_cast<std::size_t>(it - actions.begin())];
+                                 fmt::join(description_.actions, ", ")));
+  return per_action_[static_cast<std::size_t>(index)];
 }
 
 const ActionCalibration& ObservationModel::calibration(const std::string& action) const {
   return of(action).calibration;
 }
 
+const std::vector<ModalityModel>& ObservationModel::modalities(const std::string& action) const {
+  return of(action).modalities;
+}
+
 const Classifier& ObservationModel::classifier(const std::string& action) const {
-  return *of(action).classifier;
+  return *of(action).modalities.front().classifier;
+}
+
+const std::vector<double>& ObservationModel::weights(const std::string& action) const {
+  return of(action).weights;
 }
 
 const std::vector<std::vector<double>>& ObservationModel::observation_table(
@@ -71,20 +101,49 @@ const std::vector<std::vector<double>>& ObservationModel::observation_table(
   return calibration(action).table;
 }
 
-Prediction ObservationModel::classify(const ClipAnalysis& analysed,
-                                      const std::string& action) const {
-  const ActionModel& a = of(action);
-  const ClassScores scores = a.classifier->score_clip(analysed);
+Prediction ObservationModel::predict(int action, const std::vector<ClassScores>& scores) const {
+  const ActionModel& a = per_action_[static_cast<std::size_t>(action)];
+  std::vector<std::vector<double>> log_scores;
+  for (const ClassScores& s : scores) log_scores.push_back(s.log_scores);
+  const std::vector<double> fused = fuse(log_scores, a.weights);
   Prediction p;
-  p.action = action;
-  p.probabilities = softmax(scores.log_scores, a.calibration.temperature);
-  p.best_class = scores.best_class();
-  p.distance = scores.nearest_distance();
+  p.action = description_.actions[static_cast<std::size_t>(action)];
+  p.probabilities = softmax(fused, a.calibration.temperature);
+  p.best_class = static_cast<int>(std::max_element(fused.begin(), fused.end()) - fused.begin());
+  // The reject option needs one modality (the constructor checks): its distance decides.
+  p.distance = scores.front().nearest_distance();
   p.reject_threshold = a.calibration.reject_threshold;
   p.unknown = description_.reject && p.distance > a.calibration.reject_threshold;
   p.symbol = p.unknown ? static_cast<int>(classes().size()) : p.best_class;
   p.label = p.unknown ? kUnknownSymbol : classes()[static_cast<std::size_t>(p.best_class)];
   return p;
+}
+
+Prediction ObservationModel::classify(const ClipAnalysis& analysed,
+                                      const std::string& action) const {
+  const ActionModel& a = of(action);
+  std::vector<ClassScores> scores;
+  for (const ModalityModel& m : a.modalities) {
+    if (m.classifier->extractor() == nullptr)
+      throw InputError(fmt::format(
+          "action '{}' needs the '{}' modality's rows, which come from another sensor, not a clip",
+          action, m.name));
+    scores.push_back(m.classifier->score_clip(analysed));
+  }
+  return predict(action_index(action), scores);
+}
+
+Prediction ObservationModel::classify_rows(int action,
+                                           std::span<const std::span<const double>> rows) const {
+  const ActionModel& a = per_action_.at(static_cast<std::size_t>(action));
+  if (rows.size() != a.modalities.size())
+    throw InputError(fmt::format("action '{}' has {} modalities, got {} rows",
+                                 description_.actions[static_cast<std::size_t>(action)],
+                                 a.modalities.size(), rows.size()));
+  std::vector<ClassScores> scores;
+  for (std::size_t m = 0; m < rows.size(); ++m)
+    scores.push_back(a.modalities[m].classifier->score(rows[m]));
+  return predict(action, scores);
 }
 
 }  // namespace echoplan::perception

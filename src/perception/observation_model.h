@@ -1,5 +1,13 @@
-// The trained observation model: one fitted classifier per sensing action, its calibration, and the
-// table P(o | object, action) the planner plans with.
+// The observation model, the one echoplan trains, saves, measures in campaigns and runs live: per
+// sensing action, one fitted classifier per modality (audio computed from a clip by a clip
+// extractor, or rows a sensor gives), their fusion weights and calibration, and the table
+// P(o | object, action) the planner plans with.
+//
+// Two recipes fit it (both in perception/): from clips, each recording a unit of cross-validation
+// (train_observation_model.h: one audio modality, temperature, reject option, counts or soft
+// table); from sessions, each exploration of an object a unit (fit_feature_model in
+// feature_model.h: any modalities fused, the table shrunk and tempered for correlated repeats).
+// Either way the result is this class and one file (observation_model_json.h).
 //
 // This header holds the model and its classification. Training it (cross-validation and
 // calibration) is train_observation_model.h, its JSON file observation_model_json.h, and held-out
@@ -8,6 +16,8 @@
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,21 +36,36 @@ inline constexpr const char* kUnknownSymbol = "unknown";
 //           object's row (a rejected clip still adds its whole unit to `unknown`): the expected
 //           confusion under the calibrated classifier, so an action that wins by narrow margins
 //           gets a softer row than one that wins by wide margins.
-enum class TableEstimate { counts, soft };
+//   shrunk: the sessions recipe's: counts of fused decisions shrunk by empirical Bayes towards a
+//           pooled structure, then tempered for repeats (shrunk_table.h).
+enum class TableEstimate { counts, soft, shrunk };
 const char* table_estimate_name(TableEstimate estimate);
 const std::vector<std::string>& table_estimate_names();
-// Throws InputError("table estimate '<name>' is not one of: counts, soft").
+// Throws InputError("table estimate '<name>' is not one of: counts, soft, shrunk").
 TableEstimate parse_table_estimate(const std::string& name);
 
 // What every action of a model shares: how clips are analysed, which classifier, what it reports.
 struct ModelDescription {
   AnalysisSettings analysis;
-  std::string classifier_name;       // make_classifier name
+  // The audio preset (make_classifier), or the row classifier of every modality of a model fitted
+  // on sessions (make_modality_classifier).
+  std::string classifier_name;
   std::vector<std::string> classes;  // the objects, in training-set order
   std::vector<std::string> actions;
   bool reject = true;  // the `unknown` symbol and a reject threshold per action
   double dirichlet_alpha = 1.0;
   TableEstimate table_estimate = TableEstimate::counts;
+};
+
+// What session-grouped (inner) cross-validation measured about one action of a model fitted on
+// sessions: for reports and the fusion claim.
+struct ActionFit {
+  std::vector<double> modality_accuracy;  // held-out accuracy of each modality alone
+  std::vector<double> modality_nll;       // its held-out mean NLL (temperature-calibrated)
+  double fused_accuracy = 0.0;            // held-out accuracy of the fused decision
+  double fused_nll = 0.0;                 // held-out mean NLL of the fused probabilities
+  double shrinkage_strength = 0.0;        // empirical-Bayes prior count per table row
+  double temper = 1.0;                    // beta: table rows are p^beta renormalised
 };
 
 // Per action: what cross-validation measured and what the planner gets.
@@ -49,14 +74,22 @@ struct ActionCalibration {
   double temperature = 1.0;
   double reject_threshold = 0.0;           // infinity when reject is off
   ConfusionMatrix confusion;               // cross-validated counts, objects x symbols
-  std::vector<std::vector<double>> table;  // P(symbol | object), Dirichlet-smoothed confusion
-                                           // (hard or soft, the model's table_estimate())
+  std::vector<std::vector<double>> table;  // P(symbol | object), the model's table_estimate()
+  std::optional<ActionFit> fit;            // models fitted on sessions
 };
 
-// One action's part of a model: its classifier, fitted on every recording of the action, and its
-// calibration.
+// One sensor's part of an action: its name ("audio", "haptic", ...) and its fitted classifier.
+struct ModalityModel {
+  std::string name;
+  std::shared_ptr<const Classifier> classifier;
+};
+
+// One action's part of a model: a classifier per modality, fitted on every training example of the
+// action, the fusion weights and the calibration. Fused log-scores are sum_m weights[m] *
+// score_m; P(class) = softmax(fused / temperature).
 struct ActionModel {
-  std::unique_ptr<Classifier> classifier;
+  std::vector<ModalityModel> modalities;
+  std::vector<double> weights;  // one per modality, >= 0
   ActionCalibration calibration;
 };
 
@@ -65,7 +98,8 @@ class ObservationModel {
   // An empty model (no classes, no actions), e.g. what an interrupted training returns.
   ObservationModel() = default;
   // `per_action` follows description.actions, each classifier fitted for description.classes.
-  // Throws std::invalid_argument when they do not match (a programming error: training and the
+  // Throws std::invalid_argument when they do not match, or an action has no modality, a weight
+  // per modality missing, or reject with several modalities (a programming error: training and the
   // model file check their input first).
   ObservationModel(ModelDescription description, std::vector<ActionModel> per_action);
 
@@ -81,17 +115,28 @@ class ObservationModel {
   std::vector<std::string> observation_symbols() const;
   // Calibration of `action`; throws InputError listing the actions for an unknown one.
   const ActionCalibration& calibration(const std::string& action) const;
-  // The fitted classifier of `action` (InputError for an unknown one, as calibration()).
+  // The modalities of `action` (InputError for an unknown one, as calibration()).
+  const std::vector<ModalityModel>& modalities(const std::string& action) const;
+  // The fitted classifier of `action`'s first modality (an audio model's only one).
   const Classifier& classifier(const std::string& action) const;
+  // The fusion weights of `action`, one per modality.
+  const std::vector<double>& weights(const std::string& action) const;
+  // The index of `action` in actions(), or -1.
+  int action_index(const std::string& action) const;
   // P(symbol | object, action): classes().size() x observation_symbols().size().
   const std::vector<std::vector<double>>& observation_table(const std::string& action) const;
 
   // Classifies a clip recorded with `action`, already analysed with analysis() (a ClipAnalyzer
-  // per thread; the model itself is read-only, so threads may share it).
+  // per thread; the model itself is read-only, so threads may share it). InputError when a
+  // modality of the action is not computed from clips (its rows come from another sensor).
   Prediction classify(const ClipAnalysis& analysed, const std::string& action) const;
+  // Classifies one performance of actions()[action] given as one row per modality, in
+  // modalities() order. InputError for a missing row or one of the wrong length.
+  Prediction classify_rows(int action, std::span<const std::span<const double>> rows) const;
 
  private:
   const ActionModel& of(const std::string& action) const;
+  Prediction predict(int action, const std::vector<ClassScores>& scores) const;
 
   ModelDescription description_;
   std::vector<ActionModel> per_action_;  // description_.actions order

@@ -3,10 +3,12 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "common/error.h"
 #include "common/file_io.h"
@@ -36,12 +38,30 @@ nlohmann::json analysis_json(const AnalysisSettings& analysis) {
 
 }  // namespace
 
+nlohmann::json fit_json(const ActionFit& fit) {
+  return {{"modality_accuracy", fit.modality_accuracy},   {"modality_nll", fit.modality_nll},
+          {"fused_accuracy", fit.fused_accuracy},         {"fused_nll", fit.fused_nll},
+          {"shrinkage_strength", fit.shrinkage_strength}, {"temper", fit.temper}};
+}
+
+nlohmann::json modalities_json(const std::vector<ModalityModel>& modalities) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const ModalityModel& m : modalities) {
+    const ClipExtractor* extractor = m.classifier->extractor();
+    list.push_back({{"name", m.name},
+                    {"extractor", extractor ? nlohmann::json(extractor->name) : nlohmann::json()},
+                    {"classifier", m.classifier->save()}});
+  }
+  return list;
+}
+
 nlohmann::json observation_model_to_json(const ObservationModel& model) {
   nlohmann::json per_action = nlohmann::json::object();
   for (const auto& action : model.actions()) {
     const ActionCalibration& c = model.calibration(action);
     per_action[action] = {
-        {"classifier", model.classifier(action).save()},
+        {"modalities", modalities_json(model.modalities(action))},
+        {"weights", model.weights(action)},
         {"temperature", c.temperature},
         {"reject_threshold",
          model.reject() ? nlohmann::json(c.reject_threshold) : nlohmann::json(nullptr)},
@@ -49,6 +69,7 @@ nlohmann::json observation_model_to_json(const ObservationModel& model) {
         {"confusion", c.confusion.counts},
         {"table", c.table},
     };
+    if (c.fit) per_action[action]["fit"] = fit_json(*c.fit);
   }
   return {{"format", kFormatName},
           {"version", kModelFormatVersion},
@@ -64,7 +85,8 @@ nlohmann::json observation_model_to_json(const ObservationModel& model) {
 
 namespace {
 
-void check_format_and_version(const nlohmann::json& doc, const std::string& source) {
+// The file's version: 1 (one audio classifier per action) or kModelFormatVersion.
+int check_format_and_version(const nlohmann::json& doc, const std::string& source) {
   if (!doc.is_object())
     throw InputError(source, 0, "not an observation model: expected a JSON object");
   if (!doc.contains("format") || !doc["format"].is_string() || doc["format"] != kFormatName)
@@ -73,13 +95,14 @@ void check_format_and_version(const nlohmann::json& doc, const std::string& sour
         fmt::format("format: not an observation model (expected \"format\": \"{}\")", kFormatName));
   const int version = jf::integer(jf::member(doc, "version", "", source), 0,
                                   std::numeric_limits<int>::max(), "version", source);
-  if (version != kModelFormatVersion)
+  if (version < 1 || version > kModelFormatVersion)
     throw InputError(
         source, 0,
         fmt::format(
-            "version: model format version {} is not supported (this build reads version {}); "
-            "retrain with `echoplan train`",
+            "version: model format version {} is not supported (this build reads versions 1 to "
+            "{}); retrain with `echoplan train --data DIR --out MODEL`",
             version, kModelFormatVersion));
+  return version;
 }
 
 // The analysis settings, checked by building an analyser with them.
@@ -112,6 +135,12 @@ AnalysisSettings read_analysis(const nlohmann::json& doc, const std::string& sou
   return s;
 }
 
+bool is_audio_preset(const std::string& name) {
+  const auto names = classifier_names();
+  return std::find(names.begin(), names.end(), name) != names.end() ||
+         classifier_aliases().count(name) > 0;
+}
+
 // Everything but the per-action entries; the classifier name is checked against the registry,
 // and an old name (classifier_aliases()) becomes the current one.
 ModelDescription read_description(const nlohmann::json& doc, const std::string& source) {
@@ -120,9 +149,14 @@ ModelDescription read_description(const nlohmann::json& doc, const std::string& 
   const std::string classifier =
       jf::string(jf::member(doc, "classifier", "", source), "classifier", source);
   try {
-    d.classifier_name = make_classifier(classifier)->name();
+    d.classifier_name = is_audio_preset(classifier) ? make_classifier(classifier)->name()
+                                                    : make_row_classifier(classifier)->name();
   } catch (const InputError& e) {
-    throw InputError(source, 0, "classifier: " + e.problem());
+    throw InputError(source, 0,
+                     fmt::format("classifier: '{}' is neither an audio preset ({}) nor a row "
+                                 "classifier ({})",
+                                 classifier, fmt::join(classifier_names(), ", "),
+                                 fmt::join(row_classifier_names(), ", ")));
   }
   d.classes = jf::names(jf::member(doc, "classes", "", source), -1, "classes", source);
   if (d.classes.size() < 2)
@@ -155,18 +189,91 @@ struct ActionEntry {
   const std::string& source;
 };
 
-std::unique_ptr<Classifier> read_classifier(const ActionEntry& e, const ModelDescription& d) {
-  auto classifier = make_classifier(d.classifier_name);
+// A fitted classifier read from `fit` at `where`, checked to have the model's classes.
+std::shared_ptr<const Classifier> read_fit(std::unique_ptr<Classifier> classifier,
+                                           const nlohmann::json& fit, const std::string& where,
+                                           const ActionEntry& e, const ModelDescription& d) {
   try {
-    classifier->load(jf::member(e.json, "classifier", e.where, e.source), e.source);
+    classifier->load(fit, e.source);
   } catch (const InputError& error) {
-    throw InputError(e.source, 0, e.where + "." + error.problem());
+    throw InputError(e.source, 0, where + "." + error.problem());
   }
   if (classifier->num_classes() != static_cast<int>(d.classes.size()))
     throw InputError(e.source, 0,
-                     fmt::format("{}.classifier: fitted for {} classes, the model has {}", e.where,
+                     fmt::format("{}.classifier: fitted for {} classes, the model has {}", where,
                                  classifier->num_classes(), d.classes.size()));
   return classifier;
+}
+
+// Version 1: one audio classifier per action, `classifier` beside the calibration.
+void read_v1_modality(const ActionEntry& e, const ModelDescription& d, ActionModel& a) {
+  if (!is_audio_preset(d.classifier_name))
+    throw InputError(e.source, 0, "classifier: version 1 files hold audio presets only");
+  a.modalities.push_back(
+      {"audio", read_fit(make_classifier(d.classifier_name),
+                         jf::member(e.json, "classifier", e.where, e.source), e.where, e, d)});
+  a.weights = {1.0};
+}
+
+// One modality of a version 2 entry: its name, extractor and fit.
+ModalityModel read_modality(const nlohmann::json& entry, const std::string& where,
+                            const ActionEntry& e, const ModelDescription& d) {
+  ModalityModel m;
+  m.name = jf::string(jf::member(entry, "name", where, e.source), where + ".name", e.source);
+  const auto& extractor = jf::member(entry, "extractor", where, e.source);
+  const std::string extractor_name =
+      extractor.is_null() ? "" : jf::string(extractor, where + ".extractor", e.source);
+  std::unique_ptr<Classifier> classifier;
+  try {
+    if (is_audio_preset(d.classifier_name)) {
+      classifier = make_classifier(d.classifier_name);
+      if (classifier->extractor()->name != extractor_name)
+        throw InputError(fmt::format("the '{}' preset computes its rows with '{}'",
+                                     d.classifier_name, classifier->extractor()->name));
+    } else {
+      classifier = make_modality_classifier(d.classifier_name, extractor_name);
+    }
+  } catch (const InputError& error) {
+    throw InputError(e.source, 0, where + ".extractor: " + error.problem());
+  }
+  m.classifier = read_fit(std::move(classifier), jf::member(entry, "classifier", where, e.source),
+                          where, e, d);
+  return m;
+}
+
+void read_modalities(const ActionEntry& e, const ModelDescription& d, ActionModel& a) {
+  const auto& list = jf::member(e.json, "modalities", e.where, e.source);
+  if (!list.is_array() || list.empty() || list.size() > 1000)
+    throw InputError(e.source, 0, e.where + ".modalities: expected 1 to 1000 modalities");
+  for (std::size_t m = 0; m < list.size(); ++m)
+    a.modalities.push_back(
+        read_modality(list[m], fmt::format("{}.modalities[{}]", e.where, m), e, d));
+  a.weights = jf::numbers(jf::member(e.json, "weights", e.where, e.source),
+                          static_cast<long long>(list.size()), e.where + ".weights", e.source);
+  for (double w : a.weights)
+    if (w < 0.0) throw InputError(e.source, 0, e.where + ".weights: must be >= 0");
+  if (d.reject && list.size() != 1)
+    throw InputError(e.source, 0, e.where + ".modalities: the reject option needs one modality");
+}
+
+std::optional<ActionFit> read_fit_report(const ActionEntry& e, std::size_t modalities) {
+  if (!e.json.contains("fit")) return std::nullopt;
+  const auto& j = e.json["fit"];
+  const std::string where = e.where + ".fit";
+  ActionFit fit;
+  const auto n = static_cast<long long>(modalities);
+  fit.modality_accuracy = jf::numbers(jf::member(j, "modality_accuracy", where, e.source), n,
+                                      where + ".modality_accuracy", e.source);
+  fit.modality_nll = jf::numbers(jf::member(j, "modality_nll", where, e.source), n,
+                                 where + ".modality_nll", e.source);
+  const auto number = [&](const char* key) {
+    return jf::number(jf::member(j, key, where, e.source), where + "." + key, e.source);
+  };
+  fit.fused_accuracy = number("fused_accuracy");
+  fit.fused_nll = number("fused_nll");
+  fit.shrinkage_strength = number("shrinkage_strength");
+  fit.temper = number("temper");
+  return fit;
 }
 
 double read_reject_threshold(const ActionEntry& e, bool reject) {
@@ -222,12 +329,15 @@ std::vector<std::vector<double>> read_table(const ActionEntry& e, std::size_t ro
   return out;
 }
 
-ActionModel read_action(const ActionEntry& e, const std::string& action,
-                        const ModelDescription& d) {
+ActionModel read_action(const ActionEntry& e, const std::string& action, const ModelDescription& d,
+                        int version) {
   const std::vector<std::string> symbols = observation_symbols(d);
   ActionModel a;
   a.calibration.action = action;
-  a.classifier = read_classifier(e, d);
+  if (version == 1)
+    read_v1_modality(e, d, a);
+  else
+    read_modalities(e, d, a);
   a.calibration.temperature = jf::number(jf::member(e.json, "temperature", e.where, e.source),
                                          e.where + ".temperature", e.source);
   if (!(a.calibration.temperature > 0.0))
@@ -242,13 +352,14 @@ ActionModel read_action(const ActionEntry& e, const std::string& action,
                                  fmt::join(symbols, ", "), d.reject ? " and unknown" : ""));
   a.calibration.confusion = read_confusion(e, d, symbols);
   a.calibration.table = read_table(e, d.classes.size(), symbols.size());
+  a.calibration.fit = read_fit_report(e, a.modalities.size());
   return a;
 }
 
 }  // namespace
 
 ObservationModel observation_model_from_json(const nlohmann::json& doc, const std::string& source) {
-  check_format_and_version(doc, source);
+  const int version = check_format_and_version(doc, source);
   ModelDescription description = read_description(doc, source);
   const auto& per_action = jf::member(doc, "per_action", "", source);
   if (!per_action.is_object() || per_action.size() != description.actions.size())
@@ -259,7 +370,7 @@ ObservationModel observation_model_from_json(const nlohmann::json& doc, const st
   for (const auto& action : description.actions) {
     const std::string where = "per_action." + action;
     const auto& entry = jf::member(per_action, action, "per_action", source);
-    actions.push_back(read_action({entry, where, source}, action, description));
+    actions.push_back(read_action({entry, where, source}, action, description, version));
   }
   return ObservationModel(std::move(description), std::move(actions));
 }

@@ -1,12 +1,20 @@
 // The observation model file: one JSON document, read back with every field checked.
 //
-// Model file (JSON, format "echoplan-observation-model", version 1):
+// One file for every model, whatever its data (JSON, format "echoplan-observation-model",
+// version 2):
 //   { "format", "version", "analysis": {sample_rate, preset, onset {...}, silence_rms},
-//     "classifier": name, "classes": [...], "actions": [...], "reject": bool, "dirichlet_alpha",
-//     "table_estimate": "counts" | "soft" (absent in files written before it existed: "counts"),
-//     "per_action": { action: { "classifier": {fit}, "temperature", "reject_threshold",
-//                               "confusion": [[counts]], "symbols": [...], "table": [[P(o|k)]] } }
-//                               }
+//     "classifier": an audio preset (make_classifier) or a row classifier (row_classifier_names),
+//     "classes": [...], "actions": [...], "reject": bool, "dirichlet_alpha",
+//     "table_estimate": "counts" | "soft" | "shrunk",
+//     "per_action": { action: {
+//         "modalities": [ {"name", "extractor": clip extractor or null, "classifier": {fit}} ],
+//         "weights": [one per modality], "temperature", "reject_threshold" (null without reject),
+//         "symbols": [...], "confusion": [[counts]], "table": [[P(o|k)]],
+//         "fit": {modality_accuracy, modality_nll, fused_accuracy, fused_nll,
+//                 shrinkage_strength, temper} (models fitted on sessions only) } } }
+// Version 1 files (one audio classifier per action: per_action.<action>.classifier, no modalities
+// or weights; table_estimate absent before it existed: counts) still load, as one "audio" modality
+// of weight 1.
 #pragma once
 
 #include <nlohmann/json_fwd.hpp>
@@ -16,7 +24,7 @@
 
 namespace echoplan::perception {
 
-inline constexpr int kModelFormatVersion = 1;
+inline constexpr int kModelFormatVersion = 2;
 
 nlohmann::json observation_model_to_json(const ObservationModel& model);
 // Throws InputError(source, 0, "<field>: <problem>") for a malformed document or a wrong version.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "common/error.h"
+#include "common/file_io.h"
 #include "perception/summary_features.h"
 
 namespace echoplan::perception {
@@ -24,7 +26,8 @@ FeatureSet feature_set_from_recordings(const RecordingSet& set, const AnalysisSe
   features.root = set.root;
   features.objects = set.objects;
   for (const std::string& action : set.actions)
-    features.actions.push_back({action, {}, {Modality{"audio", summary_feature_names(), {}}}});
+    features.actions.push_back(
+        {action, {}, {Modality{"audio", summary_feature_names(), {}, "summary"}}});
   ClipAnalyzer analyzer(settings);
   ClipAnalysis analysis;
   for (std::size_t i = 0; i < set.recordings.size(); ++i) {
@@ -40,6 +43,32 @@ FeatureSet feature_set_from_recordings(const RecordingSet& set, const AnalysisSe
       progress("analyse", static_cast<int>(i + 1), static_cast<int>(set.recordings.size()));
   }
   return features;
+}
+
+DataKind data_kind(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(dir, ec))
+    throw InputError(dir, 0, "data folder does not exist (a feature set or a recordings tree)");
+  if (!fs::is_directory(dir, ec))
+    throw InputError(dir, 0, "not a folder (expected a feature set or a recordings tree)");
+  if (fs::exists(fs::path(dir) / "manifest.csv", ec)) return DataKind::recordings;
+  // Two levels of folders (<object>/<action>/) make a recordings tree; a feature set's action
+  // folders hold files only.
+  for (const fs::path& object : visible_entries(dir))
+    if (fs::is_directory(object, ec))
+      for (const fs::path& action : visible_entries(object))
+        if (fs::is_directory(action, ec)) return DataKind::recordings;
+  return DataKind::features;
+}
+
+const char* data_kind_name(DataKind kind) {
+  return kind == DataKind::recordings ? "recordings tree" : "feature set";
+}
+
+FeatureSet load_data(const std::string& dir, const ProgressFn& progress) {
+  if (data_kind(dir) == DataKind::features) return load_feature_set(dir);
+  return feature_set_from_recordings(load_recording_set(dir), {}, progress);
 }
 
 }  // namespace echoplan::perception

@@ -2,6 +2,8 @@
 // the audio's features computed by echoplan's own pipeline (docs/feature-sets.md).
 #pragma once
 
+#include <string>
+
 #include "common/progress.h"
 #include "perception/clip_analysis.h"
 #include "perception/feature_set.h"
@@ -19,5 +21,17 @@ namespace echoplan::perception {
 FeatureSet feature_set_from_recordings(const RecordingSet& set,
                                        const AnalysisSettings& settings = {},
                                        const ProgressFn& progress = {});
+
+// What a data folder holds: a recordings tree (DIR/manifest.csv, or folders two levels down,
+// DIR/<object>/<action>/) or a feature set (anything else; load_feature_set says what is wrong
+// with it). The one test every command and campaign uses. InputError when DIR is missing or not
+// a folder.
+enum class DataKind { recordings, features };
+DataKind data_kind(const std::string& dir);
+const char* data_kind_name(DataKind kind);  // "recordings tree" or "feature set"
+
+// DIR as a feature set, whichever kind it is: read, or a recordings tree's audio analysed with
+// default settings (`progress` hears "analyse").
+FeatureSet load_data(const std::string& dir, const ProgressFn& progress = {});
 
 }  // namespace echoplan::perception

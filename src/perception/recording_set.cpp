@@ -22,11 +22,8 @@ using Layout = std::map<std::pair<std::string, std::string>, std::vector<std::st
 Layout scan_folders(const fs::path& root) {
   Layout layout;
   for (const fs::path& object_dir : visible_entries(root)) {
-    if (object_dir.filename() == "manifest.csv") continue;
-    if (!fs::is_directory(object_dir))
-      throw InputError(
-          object_dir.string(), 0,
-          "expected a folder per object (DIR/<object>/<action>/<recording>), found a file");
+    // Files beside the object folders (manifest.csv, a groups file, a README) are not recordings.
+    if (!fs::is_directory(object_dir)) continue;
     const std::string object = object_dir.filename().string();
     for (const fs::path& action_dir : visible_entries(object_dir)) {
       if (!fs::is_directory(action_dir))

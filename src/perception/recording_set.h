@@ -47,10 +47,11 @@ bool is_recording_file(const std::string& path);
 // file on disk that the manifest does not list is an error. Without a manifest, every file under
 // DIR/<object>/<action>/ is a recording. An optional manifest column `session` names each
 // recording's session (then required on every row). Errors (InputError naming the path, and the
-// manifest line where there is one): DIR missing or not a folder; a file where an object or action
-// folder belongs; a file that is not a recording (hidden files are skipped); an (object, action)
-// folder with no recordings; an action recorded for some objects and not others; a manifest row
-// naming a missing file or a file outside its folder; an empty session.
+// manifest line where there is one): DIR missing or not a folder; a file where an action folder
+// belongs (files directly in DIR, such as a groups file or a README, are ignored); a file that is
+// not a recording (hidden files are skipped); an (object, action) folder with no recordings; an
+// action recorded for some objects and not others; a manifest row naming a missing file or a file
+// outside its folder; an empty session.
 RecordingSet load_recording_set(const std::string& dir);
 
 // Decodes one recording as the classifiers see it: channels averaged into one, resampled to

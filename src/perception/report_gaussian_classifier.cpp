@@ -12,7 +12,7 @@
 
 namespace echoplan::perception {
 
-std::vector<double> ReportGaussianClassifier::embed(const ClipAnalysis& clip) const {
+std::vector<double> ReportGaussianClassifier::centroid_rms(const ClipAnalysis& clip) {
   const auto g = audio::global_features(clip.mono, clip.sample_rate);
   return {g.centroid_hz, g.rms};
 }

@@ -10,7 +10,7 @@
 
 namespace echoplan::perception {
 
-std::vector<double> ReportTemplateClassifier::embed(const ClipAnalysis& clip) const {
+std::vector<double> ReportTemplateClassifier::onset_window(const ClipAnalysis& clip) {
   const audio::FeatureMatrix w =
       audio::onset_window(clip.features.log_mel, clip.onset_frame, kFramesBefore, kFramesAfter);
   return {w.values.begin(), w.values.end()};

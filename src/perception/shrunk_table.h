@@ -1,4 +1,5 @@
-// The calibrated observation table of a feature model (FeatureModel), from held-out decisions.
+// The calibrated observation table of a feature model (ObservationModel fitted on sessions), from
+// held-out decisions.
 //
 // Shrinkage. With 100 classes and a few held-out rows per class, a count row (100 cells from ~4
 // decisions) says almost nothing by itself. Each row is therefore shrunk towards a pooled
@@ -13,9 +14,9 @@
 // of table rows becomes overconfident over a session's sequence. Rows are replaced by p^beta
 // renormalised, beta in [0.02, 1] minimising the NLL of the true class under the uniform-prior
 // posterior after each held-out sequence (golden-section search). Each sequence is scored with a
-// table that did not count its own decisions (FeatureModel: the table of the other inner folds):
-// a table counting them has learnt the very confusions a session repeated, and looks calibrated
-// when it is not.
+// table that did not count its own decisions (fit_feature_model: the table of the other inner
+// folds): a table counting them has learnt the very confusions a session repeated, and looks
+// calibrated when it is not.
 #pragma once
 
 #include <span>

@@ -21,6 +21,10 @@ void check_options(const TrainOptions& o) {
     throw InputError(fmt::format("reject margin {} is outside 1..100", o.reject_margin));
   if (!(o.dirichlet_alpha >= 0.0 && o.dirichlet_alpha <= 1000.0))
     throw InputError(fmt::format("Dirichlet alpha {} is outside 0..1000", o.dirichlet_alpha));
+  if (o.table == TableEstimate::shrunk)
+    throw InputError(
+        "the shrunk table is fitted on sessions (train --data with --hold-out); clips take counts "
+        "or soft");
   if (o.folds < 0 || o.folds == 1)
     throw InputError(fmt::format("folds = {}: use 0 (leave-one-out) or at least 2", o.folds));
 }
@@ -172,6 +176,11 @@ ActionCalibration calibrate(const HeldOut& held, std::span<const int> labels,
 
 }  // namespace
 
+const std::vector<std::string>& clip_table_estimate_names() {
+  static const std::vector<std::string> names{"counts", "soft"};
+  return names;
+}
+
 std::vector<int> cross_validation_folds(std::span<const int> labels, int num_classes, int folds,
                                         std::uint64_t seed, const std::string& action) {
   std::vector<int> fold(labels.size());
@@ -209,8 +218,10 @@ ObservationModel train_observation_model(const RecordingSet& set, const TrainOpt
         cross_validate(examples, *prototype, num_classes, options, action, progress);
     ActionModel a;
     a.calibration = calibrate(held, examples.labels, description, options, action);
-    a.classifier = prototype->clone_unfitted();
-    a.classifier->fit(examples.embeddings, examples.labels, num_classes);
+    std::unique_ptr<Classifier> classifier = prototype->clone_unfitted();
+    classifier->fit(examples.embeddings, examples.labels, num_classes);
+    a.modalities.push_back({"audio", std::move(classifier)});
+    a.weights = {1.0};
     per_action.push_back(std::move(a));
   }
   return ObservationModel(std::move(description), std::move(per_action));

@@ -28,12 +28,15 @@ struct TrainOptions {
   // unknown.
   double reject_margin = 1.5;
   double dirichlet_alpha = 1.0;  // pseudo-count added to every cell of each confusion row
-  TableEstimate table = TableEstimate::counts;
-  int folds = 0;  // cross-validation folds; 0 = leave-one-out
+  TableEstimate table = TableEstimate::counts;  // counts or soft (shrunk is fit_feature_model's)
+  int folds = 0;                                // cross-validation folds; 0 = leave-one-out
   // Fold assignment when folds > 0: each action's shuffle draws from derive_seed(seed, {"fold",
   // stable_hash(action)}), the same on every platform.
   std::uint64_t seed = 0;
 };
+
+// The table estimates this recipe fits: counts and soft (shrunk is fit on sessions).
+const std::vector<std::string>& clip_table_estimate_names();
 
 // The cross-validation fold of each example of one action (labels[i] in [0, num_classes)):
 // folds == 0 is leave-one-out (example i is fold i); otherwise stratified k folds, each class's

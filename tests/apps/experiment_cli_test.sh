@@ -124,8 +124,8 @@ expect_refused "merging other campaigns" "holds another campaign" \
 "$bin" experiment --config "$src/experiments/dataset_example.yaml" --out "$work/dataset" \
   >"$work/dataset.out" 2>"$work/dataset.err" || { fail "dataset example exited $?"; cat "$work/dataset.err"; }
 [ "$(wc -l <"$work/dataset/trials.csv")" -eq 241 ] || fail "dataset trials.csv: a header and 5 x 48 rows"
-head -1 "$work/dataset/trials.csv" | grep -q ",arm,object,session$" || fail "dataset trials.csv lacks session"
-grep -q "^0,.*,plan,obj0,s0$" "$work/dataset/trials.csv" || fail "dataset trial 0 is not obj0's session s0"
+head -1 "$work/dataset/trials.csv" | grep -q ",arm,object,session,seed$" || fail "dataset trials.csv lacks session and seed"
+grep -q "^0,.*,plan,obj0,s0,[0-9][0-9]*$" "$work/dataset/trials.csv" || fail "dataset trial 0 is not obj0's session s0 with its seed"
 for file in figures/accuracy_vs_actions.png figures/actions_chosen.svg index.html summary.json; do
   [ -s "$work/dataset/$file" ] || fail "the dataset run did not write $file"
 done

@@ -115,7 +115,15 @@ TEST(TrainDatasetCli, BadInputExitsWithTwoAndSaysWhy) {
   EXPECT_NE(r.err.find("'obj1'"), std::string::npos) << r.err;
   r = run("train" + data + " --groups '" + partial.string() + "' --out model.json");
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("--groups and --hold-out are for datasets"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("'obj1'"), std::string::npos) << r.err;
+  // An option of the other recipe is named, not ignored.
+  r = run("train" + data + " --out /tmp/x.json --no-reject");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--no-reject is an option of the clips recipe"), std::string::npos) << r.err;
+  r = run("train" + data + " --recipe clips --out /tmp/x.json --hold-out object");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--hold-out is an option of the sessions recipe"), std::string::npos)
+      << r.err;
 }
 
 }  // namespace

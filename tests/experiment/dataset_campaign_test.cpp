@@ -92,8 +92,10 @@ TEST(DatasetCampaign, EverySessionIsATrialOfEveryArmPairedAndSortedRightIsCounte
   std::string header, first;
   std::getline(csv, header);
   std::getline(csv, first);
-  EXPECT_TRUE(header.ends_with(",arm,object,session")) << header;
-  EXPECT_TRUE(first.ends_with(",plan,obj0,s0")) << first;
+  EXPECT_TRUE(header.ends_with(",arm,object,session,seed")) << header;
+  // The seed the trial's streams came from: the campaign's, derived for the object's trials.
+  const std::string seed = std::to_string(group_seed(results.config, 0));
+  EXPECT_TRUE(first.ends_with(",plan,obj0,s0," + seed)) << first;
 
   // Sensing actions are 0..2 (press, shake, tap), sorting 3..4.
   for (const JournalEntry& e : results.entries) {

@@ -5,6 +5,7 @@
 #include "../perception/synthetic_feature_set.h"
 #include "common/error.h"
 #include "perception/dataset_folds.h"
+#include "perception/feature_model.h"
 #include "pomdp/object_identification_model.h"
 
 namespace echoplan::loop {
@@ -15,7 +16,7 @@ using perception::test_features::SyntheticSpec;
 struct Fitted {
   perception::FeatureSet set;
   perception::DatasetTask task;
-  perception::FeatureModel model;
+  perception::ObservationModel model;
 };
 
 // 6 objects in groups of 3, two actions (strike performed twice per session, press once).
@@ -55,7 +56,9 @@ TEST(DatasetProblem, ObjectsAreClassesSortingIsByBinAndTheTableIsTheModels) {
   EXPECT_EQ(p.sorting_reward[0], (std::vector<double>{10, 10, 10, -100, -100, -100}));
   EXPECT_EQ(p.sorting_reward[1], (std::vector<double>{-100, -100, -100, 10, 10, 10}));
   EXPECT_EQ(p.observation_symbols, f.set.objects);
-  EXPECT_EQ(p.observation_table, f.model.table());
+  ASSERT_EQ(p.observation_table.size(), 2u);
+  EXPECT_EQ(p.observation_table[0], f.model.observation_table("press"));
+  EXPECT_EQ(p.observation_table[1], f.model.observation_table("strike"));
   EXPECT_EQ(p.discount, 0.99);
   // A model of it plans with the limits.
   const pomdp::ObjectIdentificationModel model(p);

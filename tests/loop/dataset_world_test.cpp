@@ -20,7 +20,7 @@ using perception::test_features::SyntheticSpec;
 struct Replay {
   std::shared_ptr<const perception::FeatureSet> set;
   perception::DatasetTask task;
-  std::shared_ptr<const perception::FeatureModel> model;
+  std::shared_ptr<const perception::ObservationModel> model;
 };
 
 // 6 objects in groups of 3, 3 sessions each; press once and strike twice per session. The model
@@ -45,7 +45,7 @@ Replay replay(int held_out) {
   std::vector<int> training;
   for (std::size_t s = 0; s < r.set->sessions.size(); ++s)
     if (static_cast<int>(s) != held_out) training.push_back(static_cast<int>(s));
-  r.model = std::make_shared<const perception::FeatureModel>(
+  r.model = std::make_shared<const perception::ObservationModel>(
       perception::fit_feature_model(*r.set, r.task, training));
   return r;
 }
@@ -76,7 +76,8 @@ TEST(DatasetWorld, EachSensingActionHearsTheSessionsNextPerformance) {
   ASSERT_EQ(strikes.size(), 2u);
   for (int k = 0; k < 2; ++k) {
     const WorldStep step = world.execute(1, rng);
-    EXPECT_EQ(step.outcome.observation.index, r.model->classify(1, *r.set, strikes[k]));
+    EXPECT_EQ(step.outcome.observation.index,
+              perception::classify_row(*r.model, 1, *r.set, strikes[k]));
     EXPECT_EQ(step.outcome.reward, -1.0);
     EXPECT_FALSE(step.outcome.terminal);
     EXPECT_FALSE(step.robot.has_value());
@@ -84,7 +85,7 @@ TEST(DatasetWorld, EachSensingActionHearsTheSessionsNextPerformance) {
   EXPECT_THROW(world.execute(1, rng), std::logic_error);  // a third strike was never recorded
   const WorldStep press = world.execute(0, rng);
   EXPECT_EQ(press.outcome.observation.index,
-            r.model->classify(0, *r.set, rows_of(*r.set, 0, session)[0]));
+            perception::classify_row(*r.model, 0, *r.set, rows_of(*r.set, 0, session)[0]));
   // obj1 is in group0: sorting into group0 (action 2) is right, into group1 wrong.
   EXPECT_EQ(world.execute(2, rng).outcome.reward, 10.0);
   world.reset(pomdp::State{{}, {r.task.class_of_object[object]}}, rng);
@@ -94,7 +95,7 @@ TEST(DatasetWorld, EachSensingActionHearsTheSessionsNextPerformance) {
   EXPECT_EQ(wrong.outcome.observation.index, problem.none_symbol());
   // A new trial starts from the session's first performance again.
   EXPECT_EQ(world.execute(1, rng).outcome.observation.index,
-            r.model->classify(1, *r.set, strikes[0]));
+            perception::classify_row(*r.model, 1, *r.set, strikes[0]));
 }
 
 TEST(DatasetWorld, ASessionMissingABehaviourIsAnInputErrorNamingIt) {

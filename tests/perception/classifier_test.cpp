@@ -1,4 +1,5 @@
-// make_classifier(): each name `echoplan train --classifier` accepts builds its classifier.
+// make_classifier(): each audio preset `echoplan train --classifier` accepts pairs its clip
+// extractor with its row classifier.
 #include "perception/classifier.h"
 
 #include <gtest/gtest.h>
@@ -6,9 +7,9 @@
 #include <typeinfo>
 
 #include "../common/input_error_message.h"
+#include "common/error.h"
 #include "perception/report_gaussian_classifier.h"
 #include "perception/report_template_classifier.h"
-#include "perception/summary_lda_classifier.h"
 
 namespace echoplan::perception {
 namespace {
@@ -16,14 +17,19 @@ namespace {
 TEST(Classifier, EveryNameBuildsItsClassifier) {
   EXPECT_EQ(classifier_names(), (std::vector<std::string>{"summary-lda", "summary-nearest-mean",
                                                           "report-template", "report-gaussian"}));
-  const auto made = make_classifier("summary-lda");
-  EXPECT_EQ(typeid(*made), typeid(SummaryLdaClassifier));
-  const auto nearest_mean = make_classifier("summary-nearest-mean");
-  EXPECT_EQ(typeid(*nearest_mean), typeid(SummaryLdaClassifier));
-  const auto templates = make_classifier("report-template");
-  EXPECT_EQ(typeid(*templates), typeid(ReportTemplateClassifier));
-  const auto gaussian = make_classifier("report-gaussian");
-  EXPECT_EQ(typeid(*gaussian), typeid(ReportGaussianClassifier));
+  const std::map<std::string, std::pair<std::string, std::string>> parts{
+      {"summary-lda", {"summary", "lda-class-scaled"}},
+      {"summary-nearest-mean", {"summary", "nearest-mean"}},
+      {"report-template", {"onset-logfbank", "template"}},
+      {"report-gaussian", {"centroid-rms", "gaussian"}}};
+  for (const auto& [name, pair] : parts) {
+    const auto made = make_classifier(name);
+    ASSERT_NE(made->extractor(), nullptr);
+    EXPECT_EQ(made->extractor()->name, pair.first) << name;
+    EXPECT_EQ(made->rows().name(), pair.second) << name;
+  }
+  EXPECT_EQ(typeid(make_classifier("report-template")->rows()), typeid(ReportTemplateClassifier));
+  EXPECT_EQ(typeid(make_classifier("report-gaussian")->rows()), typeid(ReportGaussianClassifier));
   for (const std::string& name : classifier_names()) EXPECT_EQ(make_classifier(name)->name(), name);
 }
 
@@ -32,10 +38,10 @@ TEST(Classifier, OldNamesBuildTheRenamedClassifiers) {
             (std::map<std::string, std::string>{{"seed-gaussian", "report-gaussian"},
                                                 {"seed-template", "report-template"}}));
   const auto templates = make_classifier("seed-template");
-  EXPECT_EQ(typeid(*templates), typeid(ReportTemplateClassifier));
+  EXPECT_EQ(templates->rows().name(), "template");
   EXPECT_EQ(templates->name(), "report-template");
   const auto gaussian = make_classifier("seed-gaussian");
-  EXPECT_EQ(typeid(*gaussian), typeid(ReportGaussianClassifier));
+  EXPECT_EQ(gaussian->rows().name(), "gaussian");
   EXPECT_EQ(gaussian->name(), "report-gaussian");
 }
 
@@ -43,6 +49,17 @@ TEST(Classifier, AnUnknownNameListsTheKnownOnes) {
   EXPECT_EQ(input_error_message([] { make_classifier("knn"); }),
             "unknown classifier 'knn' (expected summary-lda, summary-nearest-mean, "
             "report-template, report-gaussian)");
+}
+
+TEST(Classifier, AModalityOfGivenRowsHasNoExtractorAndSaysSoWhenGivenAClip) {
+  const auto haptic = make_modality_classifier("lda");
+  EXPECT_EQ(haptic->name(), "lda");
+  EXPECT_EQ(haptic->extractor(), nullptr);
+  EXPECT_THROW(haptic->embed(ClipAnalysis{}), InputError);
+  const auto audio = make_modality_classifier("nearest-neighbour", "summary");
+  ASSERT_NE(audio->extractor(), nullptr);
+  EXPECT_EQ(audio->extractor()->name, "summary");
+  EXPECT_THROW(make_modality_classifier("lda", "mfcc"), InputError);
 }
 
 }  // namespace

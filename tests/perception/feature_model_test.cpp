@@ -22,7 +22,7 @@ FeatureSet synthetic(const SyntheticSpec& spec, const std::string& name) {
 }
 
 // The fused decisions of `model` on the rows of `fold`: fraction right.
-double test_accuracy(const FeatureModel& model, const FeatureSet& set, const DatasetTask& task,
+double test_accuracy(const ObservationModel& model, const FeatureSet& set, const DatasetTask& task,
                      const Fold& fold, int action = 0) {
   int right = 0, total = 0;
   const ActionData& data = set.actions[static_cast<std::size_t>(action)];
@@ -30,7 +30,7 @@ double test_accuracy(const FeatureModel& model, const FeatureSet& set, const Dat
     const RowLabel& label = data.rows[static_cast<std::size_t>(r)];
     if (!std::binary_search(fold.test_sessions.begin(), fold.test_sessions.end(), label.session))
       continue;
-    right += model.classify(action, set, r) == task.class_of_object[label.object];
+    right += classify_row(model, action, set, r) == task.class_of_object[label.object];
     ++total;
   }
   return static_cast<double>(right) / total;
@@ -43,18 +43,18 @@ TEST(FeatureModel, WellSeparatedObjectsAreRecognisedAndTheTableSaysSo) {
   const FeatureSet set = synthetic(spec, "fm_separated");
   const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
   const auto folds = make_folds(set, task);
-  const FeatureModel model = fit_feature_model(set, task, training_sessions(set, folds[0]));
+  const ObservationModel model = fit_feature_model(set, task, training_sessions(set, folds[0]));
   EXPECT_EQ(model.classes(), set.objects);
-  EXPECT_EQ(model.held_out_accuracy(), std::vector<double>{1.0});
+  EXPECT_EQ(model.calibration(set.actions[0].name).fit->fused_accuracy, 1.0);
   EXPECT_EQ(test_accuracy(model, set, task, folds[0]), 1.0);
   for (std::size_t c = 0; c < 8; ++c) {
     double sum = 0.0;
-    for (double p : model.table()[0][c]) {
+    for (double p : model.observation_table(set.actions[0].name)[c]) {
       EXPECT_GT(p, 0.0);
       sum += p;
     }
     EXPECT_NEAR(sum, 1.0, 1e-9);
-    EXPECT_GT(model.table()[0][c][c], 0.8);
+    EXPECT_GT(model.observation_table(set.actions[0].name)[c][c], 0.8);
   }
 }
 
@@ -65,14 +65,18 @@ TEST(FeatureModel, ANoiseModalityIsWeighedOutAndFusionIsNoWorseThanTheBestModali
   const FeatureSet set = synthetic(spec, "fm_noise");
   const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
   const auto folds = make_folds(set, task);
-  const FeatureModel model = fit_feature_model(set, task, training_sessions(set, folds[0]));
-  const ActionFit& fit = model.fits()[0];
-  ASSERT_EQ(fit.modalities, (std::vector<std::string>{"audio", "haptic"}));
+  const ObservationModel model = fit_feature_model(set, task, training_sessions(set, folds[0]));
+  const ActionFit& fit = (*model.calibration(set.actions[0].name).fit);
+  const auto& modalities = model.modalities(set.actions[0].name);
+  ASSERT_EQ(modalities.size(), 2u);
+  EXPECT_EQ(modalities[0].name, "audio");
+  EXPECT_EQ(modalities[1].name, "haptic");
+  const std::vector<double>& weights = model.weights(set.actions[0].name);
   EXPECT_LT(fit.modality_accuracy[1], 0.2);  // chance is 0.05
   EXPECT_GT(fit.modality_accuracy[0], 0.25);
   // Fitted on 80 held-out rows, the noise keeps a little weight (modality_fusion_test shows it
   // vanishing with 2000).
-  EXPECT_LT(fit.weights[1], 0.25 * fit.weights[0]);
+  EXPECT_LT(weights[1], 0.25 * weights[0]);
   EXPECT_LE(fit.fused_nll, fit.modality_nll[0] + 1e-9);
   EXPECT_GE(fit.fused_accuracy, fit.modality_accuracy[0] - 0.02);
 }
@@ -88,15 +92,16 @@ TEST(FeatureModel, TemperingKeepsCorrelatedRepeatsFromBecomingOverconfident) {
   double tempered_nll = 0.0, untempered_nll = 0.0;
   double untempered_confidence = 0.0, tempered_confidence = 0.0, right = 0.0, n = 0.0;
   for (const Fold& fold : make_folds(set, task)) {
-    const FeatureModel model = fit_feature_model(set, task, training_sessions(set, fold));
-    const double beta = model.fits()[0].temper;
+    const ObservationModel model = fit_feature_model(set, task, training_sessions(set, fold));
+    const double beta = (*model.calibration(set.actions[0].name).fit).temper;
     EXPECT_LT(beta, 0.7);
-    const Table& tempered = model.table()[0];
+    const Table& tempered = model.observation_table(set.actions[0].name);
     const Table untempered = temper(tempered, 1.0 / beta);  // (p^b)^(1/b) renormalised = p
     for (int s : fold.test_sessions) {
       Sequence seq{task.class_of_object[set.sessions[s].object], {}};
       for (int r = 0; r < static_cast<int>(set.actions[0].rows.size()); ++r)
-        if (set.actions[0].rows[r].session == s) seq.symbols.push_back(model.classify(0, set, r));
+        if (set.actions[0].rows[r].session == s)
+          seq.symbols.push_back(classify_row(model, 0, set, r));
       const std::vector<Sequence> one{seq};
       tempered_nll += sequence_nll(tempered, 1.0, one);
       untempered_nll += sequence_nll(untempered, 1.0, one);
@@ -140,7 +145,7 @@ TEST(FeatureModel, NovelObjectsAreRecognisedByTheirGroup) {
   for (const char* classifier : {"lda", "nearest-neighbour"}) {
     double accuracy = 0.0;
     for (const Fold& fold : folds) {
-      const FeatureModel model =
+      const ObservationModel model =
           fit_feature_model(set, task, training_sessions(set, fold), {classifier});
       EXPECT_EQ(model.classes().size(), 4u);
       accuracy += test_accuracy(model, set, task, fold) / 5.0;
@@ -169,13 +174,13 @@ TEST(FeatureModel, OneFoldAtFullScaleFitsInSeconds) {
   const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
   const auto folds = make_folds(set, task);
   const auto start = std::chrono::steady_clock::now();
-  const FeatureModel model = fit_feature_model(set, task, training_sessions(set, folds[0]));
+  const ObservationModel model = fit_feature_model(set, task, training_sessions(set, folds[0]));
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("one fold, 100 objects x 9 actions x 4 training sessions x 2 x 50 features: %.2f s\n",
               seconds);
   EXPECT_LT(seconds, 30.0);
-  EXPECT_EQ(model.table().size(), 9u);
+  EXPECT_EQ(model.actions().size(), 9u);
 }
 
 }  // namespace

@@ -61,6 +61,30 @@ TEST(ObservationModelJson, ReadsAnOldClassifierNameAsTheCurrentOne) {
   EXPECT_EQ(observation_model_to_json(old)["classifier"], "report-gaussian");
 }
 
+// A version 1 file (one classifier per action beside its calibration, no modalities or weights)
+// loads as one audio modality of weight 1 and classifies exactly as the model it was written from.
+TEST(ObservationModelJson, ReadsVersionOneFiles) {
+  const ObservationModel& model = trained().model;
+  nlohmann::json v1 = observation_model_to_json(model);
+  v1["version"] = 1;
+  for (auto& [action, entry] : v1["per_action"].items()) {
+    nlohmann::json fit = entry["modalities"][0]["classifier"];
+    fit["summary_size"] = fit["features"];  // version 1's summary-lda wrote no mean
+    fit.erase("features");
+    fit.erase("mean");
+    entry["classifier"] = fit;
+    entry.erase("modalities");
+    entry.erase("weights");
+  }
+  const ObservationModel old = observation_model_from_json(v1, "v1.json");
+  EXPECT_EQ(observation_model_to_json(old), observation_model_to_json(model));
+  ASSERT_EQ(old.modalities("tap").size(), 1u);
+  EXPECT_EQ(old.modalities("tap")[0].name, "audio");
+  EXPECT_EQ(old.weights("tap"), std::vector<double>{1.0});
+  const ClipAnalysis clip = analysed(model, recording(2, 778));
+  EXPECT_EQ(old.classify(clip, "tap").probabilities, model.classify(clip, "tap").probabilities);
+}
+
 TEST(ObservationModelJson, WithoutRejectTheThresholdIsNull) {
   TrainOptions options;
   options.reject = false;
@@ -104,10 +128,14 @@ TEST(ObservationModelJson, EveryBrokenModelFileIsAClearError) {
     change(doc);
     return doc.dump();
   };
-  expect_error(with([](auto& d) { d["version"] = 2; }), "version 2 is not supported");
+  expect_error(with([](auto& d) { d["version"] = 3; }),
+               "version 3 is not supported (this build reads versions 1 to 2); retrain with "
+               "`echoplan train --data DIR --out MODEL`");
+  expect_error(with([](auto& d) { d["version"] = 0; }), "version 0 is not supported");
   expect_error(with([](auto& d) { d["format"] = "other"; }), "not an observation model");
   expect_error(with([](auto& d) { d.erase("classes"); }), "classes: missing");
-  expect_error(with([](auto& d) { d["classifier"] = "magic"; }), "unknown classifier 'magic'");
+  expect_error(with([](auto& d) { d["classifier"] = "magic"; }),
+               "classifier: 'magic' is neither an audio preset");
   expect_error(with([](auto& d) { d["analysis"]["sample_rate"] = 5; }), "analysis.sample_rate");
   expect_error(with([](auto& d) { d["analysis"]["preset"] = "nope"; }), "unknown feature preset");
   expect_error(with([](auto& d) { d["classes"][1] = d["classes"][0]; }), "appears twice");
@@ -120,15 +148,31 @@ TEST(ObservationModelJson, EveryBrokenModelFileIsAClearError) {
                "per_action.strike.temperature");
   expect_error(with([](auto& d) { d["per_action"]["strike"]["reject_threshold"] = nullptr; }),
                "reject_threshold");
-  expect_error(with([](auto& d) { d["per_action"]["strike"]["classifier"]["scale"].erase(0); }),
-               "per_action.strike.classifier.scale: expected 123 numbers");
+  expect_error(with([](auto& d) {
+                 d["per_action"]["strike"]["modalities"][0]["classifier"]["scale"].erase(0);
+               }),
+               "per_action.strike.modalities[0].classifier.scale: expected 123 numbers");
+  expect_error(with([](auto& d) {
+                 d["per_action"]["strike"]["modalities"][0]["classifier"]["class_means"].erase(0);
+               }),
+               "fitted for 2 classes");
   expect_error(
-      with([](auto& d) { d["per_action"]["strike"]["classifier"]["class_means"].erase(0); }),
-      "fitted for 2 classes");
+      with([](auto& d) { d["per_action"]["strike"]["modalities"] = nlohmann::json::array(); }),
+      "per_action.strike.modalities: expected 1 to 1000 modalities");
+  expect_error(
+      with([](auto& d) { d["per_action"]["strike"]["modalities"][0]["extractor"] = "mfcc"; }),
+      "per_action.strike.modalities[0].extractor: the 'summary-lda' preset computes its "
+      "rows with 'summary'");
+  expect_error(with([](auto& d) {
+                 d["per_action"]["strike"]["weights"] = {1.0, 2.0};
+               }),
+               "per_action.strike.weights: expected 1 numbers");
+  expect_error(with([](auto& d) { d["per_action"]["strike"]["weights"] = {-1.0}; }),
+               "per_action.strike.weights: must be >= 0");
   expect_error(with([](auto& d) { d["per_action"]["strike"]["symbols"][3] = "nothing"; }),
                "per_action.strike.symbols");
   expect_error(with([](auto& d) { d["table_estimate"] = "hard"; }),
-               "table_estimate: table estimate 'hard' is not one of: counts, soft");
+               "table_estimate: table estimate 'hard' is not one of: counts, soft, shrunk");
   expect_error(with([](auto& d) { d["table_estimate"] = 3; }), "table_estimate");
   try {
     load_observation_model((trained().dir / "missing.json").string());

@@ -87,20 +87,28 @@ TEST(ObservationModel, RefusesActionModelsThatDoNotMatchItsActions) {
   d.actions = {"strike"};
   EXPECT_THROW(ObservationModel(d, {}), std::invalid_argument);
   std::vector<ActionModel> unnamed(1);
-  unnamed[0].classifier = make_classifier(kDefaultClassifier);
+  unnamed[0].modalities.push_back({"audio", make_classifier(kDefaultClassifier)});
+  unnamed[0].weights = {1.0};
   unnamed[0].calibration.action = "slide";  // not the description's action
-  EXPECT_THROW(ObservationModel(d, std::move(unnamed)), std::invalid_argument);
+  EXPECT_THROW(ObservationModel(d, unnamed), std::invalid_argument);
+  unnamed[0].calibration.action = "strike";
+  unnamed[0].weights = {};  // a weight per modality missing
+  EXPECT_THROW(ObservationModel(d, unnamed), std::invalid_argument);
+  unnamed[0].weights = {0.5, 0.5};
+  unnamed[0].modalities.push_back({"haptic", make_modality_classifier("lda")});
+  d.reject = true;  // with two modalities
+  EXPECT_THROW(ObservationModel(d, unnamed), std::invalid_argument);
 }
 
 TEST(TableEstimate, NamesParseBackAndUnknownNamesAreListed) {
-  for (const auto estimate : {TableEstimate::counts, TableEstimate::soft})
+  for (const auto estimate : {TableEstimate::counts, TableEstimate::soft, TableEstimate::shrunk})
     EXPECT_EQ(parse_table_estimate(table_estimate_name(estimate)), estimate);
-  EXPECT_EQ(table_estimate_names(), (std::vector<std::string>{"counts", "soft"}));
+  EXPECT_EQ(table_estimate_names(), (std::vector<std::string>{"counts", "soft", "shrunk"}));
   try {
     parse_table_estimate("hard");
     ADD_FAILURE();
   } catch (const InputError& e) {
-    EXPECT_EQ(e.problem(), "table estimate 'hard' is not one of: counts, soft");
+    EXPECT_EQ(e.problem(), "table estimate 'hard' is not one of: counts, soft, shrunk");
   }
 }
 

@@ -83,9 +83,19 @@ TEST_F(RecordingSetTest, MissingOrNotAFolder) {
   expect_error(dir_ / "file.txt", {"file.txt", "not a folder"});
 }
 
-TEST_F(RecordingSetTest, FileWhereAnObjectFolderBelongs) {
-  write_text(dir_ / "notes.txt", "x");
-  expect_error(dir_, {"notes.txt", "folder per object"});
+// As in a feature set, files beside the object folders (a groups file, a README) are ignored.
+TEST_F(RecordingSetTest, FilesBesideTheObjectFoldersAreIgnored) {
+  const RecordingSet before = load_recording_set(dir_.string());
+  write_text(dir_ / "README.md", "x");
+  write_text(dir_ / "groups.csv", "object,group\nmug,ceramic\n");
+  const RecordingSet after = load_recording_set(dir_.string());
+  EXPECT_EQ(after.objects, before.objects);
+  EXPECT_EQ(after.recordings.size(), before.recordings.size());
+}
+
+TEST_F(RecordingSetTest, FileWhereAnActionFolderBelongs) {
+  write_text(dir_ / "mug/notes.txt", "x");
+  expect_error(dir_, {"mug/notes.txt", "folder per action"});
 }
 
 TEST_F(RecordingSetTest, NotARecording) {

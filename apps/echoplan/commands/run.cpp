@@ -9,6 +9,7 @@
 
 #include "commands/commands.h"
 #include "commands/planner_options.h"
+#include "commands/run_dataset.h"
 #include "commands/sim_options.h"
 #include "common/data_dir.h"
 #include "common/error.h"
@@ -33,6 +34,9 @@ struct RunFlags {
   std::string problem;     // empty: the shipped problem with the model's calibrated table
   std::string model;       // empty: train one on freshly synthesised recordings
   std::string recordings;  // non-empty: replay these instead of simulating
+  std::string data;        // non-empty: replay this session of recorded data (run_dataset.h)
+  std::string session;
+  std::string groups;
   std::uint64_t seed = 1;
   int max_steps = 100;
   int train_per_pair = 10;
@@ -117,7 +121,18 @@ nlohmann::json run_settings(const RunFlags& f, const loop::Loop& run,
   return j;
 }
 
+// --data: one recorded session instead of the simulator or a recordings folder.
+void run_recorded(const RunFlags& f) {
+  if (!f.recordings.empty()) throw InputError("--data and --recordings are two worlds: give one");
+  if (f.session.empty()) throw InputError("--data needs --session: the session to replay");
+  run_dataset_session({f.data, f.session, f.object, f.groups, f.model, f.problem, f.seed,
+                       f.max_steps, f.out, f.planner});
+}
+
 void run_command(const RunFlags& f) {
+  if (!f.data.empty()) return run_recorded(f);
+  if (!f.session.empty() || !f.groups.empty())
+    throw InputError("--session and --groups replay recorded data: give --data too");
   check_flags(f);
   const loop::SimulatedWorldSpec sim = load_simulated_world(f.sim);
   const auto base = std::make_shared<const pomdp::Problem>(pomdp::load_problem(
@@ -167,10 +182,13 @@ and plans on the shipped problem with that model's calibrated table (both saved 
 Examples:
   echoplan run --object coffee_mug --out runs/mug
   echoplan run --object coffee_mug_weighted --model runs/mug/model.json --out runs/heavy_mug
-  echoplan run --object plastic_cup --model model.json --recordings recordings/ --out runs/replay)");
+  echoplan run --object plastic_cup --model model.json --recordings recordings/ --out runs/replay
+  echoplan run --data features --object mug3 --session 2 --model model.json --problem dataset.yaml --out runs/mug3
+With --data, the session's recorded performances are replayed as a dataset campaign replays
+them, and --seed is the trial's seed (a campaign's trials.csv `seed` column).)");
   cmd->add_option("--object", flags->object,
                   "The true object: one of the problem's, or a catalogue variant of one (e.g. "
-                  "coffee_mug_weighted)")
+                  "coffee_mug_weighted); with --data, an object of the data")
       ->required();
   cmd->add_option(
       "--problem", flags->problem,
@@ -184,6 +202,12 @@ Examples:
       "--recordings", flags->recordings,
       "Replay recordings of the true object from DIR/<object>/<action>/* instead of simulating "
       "(needs --model)");
+  cmd->add_option("--data", flags->data,
+                  "Replay a session of recorded data (a feature set or a recordings tree) with "
+                  "--model and --problem (`echoplan train --out MODEL --problem-out FILE`)");
+  cmd->add_option("--session", flags->session, "With --data: the session of --object to replay");
+  cmd->add_option("--groups", flags->groups,
+                  "With --data: groups file (object,group), when the problem's classes are groups");
   cmd->add_option("--seed", flags->seed, "Seed of every random choice")->capture_default_str();
   cmd->add_option("--max-steps", flags->max_steps, "Stop the trial after this many steps")
       ->capture_default_str();

@@ -1,7 +1,11 @@
-// `echoplan train`: fit the observation model on a folder of recordings, report its cross-validated
-// confusion, save it as JSON and, optionally, write a problem file that plans with the calibrated
-// table. Without --out, the data is a dataset (a feature set or a recordings tree) and train writes
-// its problem (train_dataset.cpp).
+// `echoplan train`: fit the one observation model on a data folder (a recordings tree or a feature
+// set), report what cross-validation measured, save the model file and, when asked, the problem
+// that plans with its calibrated table. Two recipes, chosen by what the user asks for:
+//   clips     each recording a unit of cross-validation: an audio classifier per action, the
+//             reject option, a counts or soft table, --problem-out from --problem-base (this file);
+//   sessions  each session a unit: any modalities fused, the table shrunk and tempered, classes
+//             the objects or (--groups, --hold-out object) their groups, --problem-out a
+//             dataset problem (train_dataset.cpp).
 #include <fmt/core.h>
 #include <spdlog/spdlog.h>
 
@@ -16,6 +20,7 @@
 #include "loop/calibrated_problem.h"
 #include "perception/classifier.h"
 #include "perception/observation_model.h"
+#include "perception/recording_features.h"
 #include "perception/recording_set.h"
 #include "pomdp/problem.h"
 
@@ -24,6 +29,7 @@ namespace {
 
 struct TrainFlags {
   DatasetTrainFlags dataset;
+  std::string recipe;  // "clips", "sessions", or empty: chosen by choose_recipe
   std::string data;
   std::string out;
   std::string problem_out;
@@ -64,17 +70,43 @@ void print_calibration(const TrainFlags& f, const perception::ObservationModel& 
   }
 }
 
-void train(TrainFlags f) {
-  if (f.out.empty()) {
-    f.dataset.data = f.data;
-    f.dataset.problem_out = f.problem_out;
-    train_dataset(f.dataset);
-    return;
-  }
-  if (!f.dataset.groups.empty() || !f.dataset.hold_out.empty())
-    throw InputError(
-        "--groups and --hold-out are for datasets: leave out --out (which saves an "
-        "audio model of recordings) and give --problem-out");
+// The options only one recipe reads, for the error that names them.
+const std::vector<std::string>& clips_only() {
+  static const std::vector<std::string> names{"--classifier",    "--sample-rate", "--no-reject",
+                                              "--reject-margin", "--alpha",       "--table",
+                                              "--folds",         "--seed",        "--problem-base"};
+  return names;
+}
+const std::vector<std::string>& sessions_only() {
+  static const std::vector<std::string> names{
+      "--groups",       "--hold-out",     "--feature-classifier",
+      "--reward-right", "--reward-wrong", "--reward-sense"};
+  return names;
+}
+
+// --recipe when given; else sessions for a feature set, for options only sessions read, or without
+// --out (the problem-only form, as before --out existed for it); else clips.
+std::string choose_recipe(const TrainFlags& f, const CLI::App& cmd) {
+  if (!f.recipe.empty()) return f.recipe;
+  for (const std::string& name : sessions_only())
+    if (cmd.count(name) > 0) return "sessions";
+  if (f.out.empty()) return "sessions";
+  return perception::data_kind(f.data) == perception::DataKind::features ? "sessions" : "clips";
+}
+
+// An option of the other recipe is a mistake worth saying, not ignoring.
+void check_recipe_options(const std::string& recipe, const CLI::App& cmd) {
+  for (const std::string& name : recipe == "clips" ? sessions_only() : clips_only())
+    if (cmd.count(name) > 0)
+      throw InputError(fmt::format(
+          "{} is an option of the {} recipe, and this training is the {} recipe ({})", name,
+          recipe == "clips" ? "sessions" : "clips", recipe,
+          recipe == "clips" ? "a recordings tree, each clip a unit"
+                            : "each session a unit: a feature set, --groups or --hold-out"));
+}
+
+void train_clips(TrainFlags f) {
+  if (f.out.empty()) throw InputError("--out is required: the clips recipe writes a model file");
   f.train.reject = !f.no_reject;
   f.train.table = perception::parse_table_estimate(f.table);
   // Read the base problem first: a wrong path should fail before minutes of training.
@@ -103,34 +135,47 @@ void train(TrainFlags f) {
   fmt::print("problem: {}\n", f.problem_out);
 }
 
+void train(TrainFlags f, const CLI::App& cmd) {
+  const std::string recipe = choose_recipe(f, cmd);
+  check_recipe_options(recipe, cmd);
+  if (recipe == "clips") return train_clips(std::move(f));
+  f.dataset.data = f.data;
+  f.dataset.out = f.out;
+  f.dataset.problem_out = f.problem_out;
+  train_dataset(f.dataset);
+}
+
 }  // namespace
 
 void add_train_command(CLI::App& app) {
   auto opt = std::make_shared<TrainFlags>();
   auto* cmd = app.add_subcommand(
       "train",
-      "With --out: fit the observation model on recordings DIR/<object>/<action>/*.wav (and "
-      "DIR/manifest.csv if present):\n"
-      "one classifier per action, cross-validated; prints accuracy and confusion per action and "
-      "saves the model\n"
-      "(JSON) with the calibrated table P(heard | object, action).\n"
-      "Example: echoplan train --data recordings --out model.json --problem-out "
-      "problems/calibrated.yaml\n"
-      "Without --out: DIR is a dataset, a feature set DIR/<action>/<modality>.csv or a recordings "
-      "tree; fits a fused,\n"
-      "calibrated model on all of it (docs/feature-sets.md), prints each behaviour's held-out "
-      "accuracy per modality\n"
-      "and fused, and writes --problem-out: the classes, one sensing action per behaviour with "
-      "its use limit,\n"
-      "the sorting actions and rewards, and the calibrated table.\n"
-      "Example: echoplan train --data features --groups features/groups.csv --hold-out object "
-      "--problem-out dataset.yaml");
+      R"(Fit the observation model on DIR, a recordings tree DIR/<object>/<action>/*.wav (with
+DIR/manifest.csv if present) or a feature set DIR/<action>/<modality>.csv; print what
+cross-validation measured; write the model (--out) and, when asked, the problem that plans with
+its calibrated table (--problem-out). The model runs wherever it was measured: `echoplan run
+--model`, a campaign's `world.model`, the ROS observation node. Two recipes (--recipe):
+  clips     each recording a unit of cross-validation: one audio classifier per action
+            (--classifier), the reject option, a counts or soft table; --problem-out keeps
+            --problem-base with the table replaced. The default for a recordings tree.
+  sessions  each session a unit (docs/feature-sets.md): every modality classified and fused, the
+            table shrunk and tempered for repeats; classes are the objects, or their groups
+            (--groups, --hold-out object); --problem-out is the data's problem. The default for a
+            feature set, or when --groups or --hold-out is given.
+Examples:
+  echoplan train --data recordings --out model.json --problem-out problems/calibrated.yaml
+  echoplan train --data features --groups features/groups.csv --hold-out object --out model.json --problem-out dataset.yaml)");
   cmd->add_option("--data", opt->data,
-                  "Folder of recordings (e.g. written by `echoplan dataset`), or without --out a "
-                  "feature set")
+                  "Folder of recordings (e.g. written by `echoplan "
+                  "dataset`) or a feature set")
       ->required();
   cmd->add_option("-o,--out", opt->out,
-                  "Model file to write (JSON); without it, DIR is trained as a dataset");
+                  "Model file to write (JSON; one format for every recipe and data)");
+  cmd->add_option("--recipe", opt->recipe,
+                  "clips or sessions (default: sessions for a feature set or with --groups or "
+                  "--hold-out, else clips)")
+      ->check(CLI::IsMember(std::vector<std::string>{"clips", "sessions"}));
   add_dataset_train_options(*cmd, opt->dataset);
   std::string names;
   for (const auto& n : perception::classifier_names()) names += (names.empty() ? "" : ", ") + n;
@@ -141,40 +186,45 @@ void add_train_command(CLI::App& app) {
     accepted.push_back(old_name);
     aliases += fmt::format("{}{} for {}", aliases.empty() ? "" : ", ", old_name, name);
   }
-  cmd->add_option("--classifier", opt->train.classifier,
-                  "Classifier: " + names + " (old names still accepted: " + aliases + ")")
+  cmd->add_option(
+         "--classifier", opt->train.classifier,
+         "Clips: audio classifier: " + names + " (old names still accepted: " + aliases + ")")
       ->check(CLI::IsMember(accepted))
       ->capture_default_str();
   cmd->add_option("--sample-rate", opt->train.analysis.sample_rate,
-                  "Rate (Hz) every recording is resampled to")
+                  "Clips: rate (Hz) every recording is resampled to")
       ->capture_default_str();
-  cmd->add_flag("--no-reject", opt->no_reject, "Always report a class (no `unknown` symbol)");
-  cmd->add_option("--reject-margin", opt->train.reject_margin,
-                  "Unknown beyond this many times the largest held-out distance of a correctly "
-                  "classified recording")
+  cmd->add_flag("--no-reject", opt->no_reject,
+                "Clips: always report a class (no `unknown` symbol)");
+  cmd->add_option(
+         "--reject-margin", opt->train.reject_margin,
+         "Clips: unknown beyond this many times the largest held-out distance of a correctly "
+         "classified recording")
       ->capture_default_str();
   cmd->add_option("--alpha", opt->train.dirichlet_alpha,
-                  "Dirichlet pseudo-count added to each confusion cell")
+                  "Clips: Dirichlet pseudo-count added to each confusion cell")
       ->capture_default_str();
   opt->table = perception::table_estimate_name(opt->train.table);
-  cmd->add_option("--table", opt->table,
-                  "Observation table from the held-out decisions: 'counts' (one count per clip "
-                  "for the class it was given) or 'soft' (each clip adds its calibrated class "
-                  "probabilities: narrow wins give softer rows)")
-      ->check(CLI::IsMember(perception::table_estimate_names()))
+  cmd->add_option(
+         "--table", opt->table,
+         "Clips: observation table from the held-out decisions: 'counts' (one count per clip "
+         "for the class it was given) or 'soft' (each clip adds its calibrated class "
+         "probabilities: narrow wins give softer rows)")
+      ->check(CLI::IsMember(perception::clip_table_estimate_names()))
       ->capture_default_str();
-  cmd->add_option("--folds", opt->train.folds, "Cross-validation folds (0 = leave-one-out)")
+  cmd->add_option("--folds", opt->train.folds, "Clips: cross-validation folds (0 = leave-one-out)")
       ->capture_default_str();
-  cmd->add_option("--seed", opt->train.seed, "Seed of the fold assignment (with --folds)")
+  cmd->add_option("--seed", opt->train.seed, "Clips: seed of the fold assignment (with --folds)")
       ->capture_default_str();
   cmd->add_option(
       "--problem-out", opt->problem_out,
-      "Also write this problem file (YAML): --problem-base with the calibrated observation table");
+      "Also write this problem file (YAML): clips, --problem-base with the calibrated table; "
+      "sessions, the data's problem (classes, behaviours with use limits, bins, rewards, table)");
   cmd->add_option(
          "--problem-base", opt->problem_base,
-         "Problem whose objects, actions, rewards and planner settings --problem-out keeps")
+         "Clips: problem whose objects, actions, rewards and planner settings --problem-out keeps")
       ->capture_default_str();
-  cmd->callback([opt] { train(*opt); });
+  cmd->callback([opt, cmd] { train(*opt, *cmd); });
 }
 
 }  // namespace echoplan::cli

@@ -1,6 +1,7 @@
-// `echoplan train --data DIR` without --out: a dataset (a feature set, or a recordings tree turned
-// into one) fitted into a fused, calibrated FeatureModel on all its sessions, and the planning
-// problem of it written for the user (docs/feature-sets.md, "echoplan train --data").
+// `echoplan train --recipe sessions`: recorded data (a feature set, or a recordings tree turned
+// into one) fitted into the observation model on all its sessions (perception/feature_model.h),
+// the model file and the planning problem of it written for the user (docs/feature-sets.md,
+// "echoplan train --data").
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -12,7 +13,8 @@ namespace echoplan::cli {
 
 struct DatasetTrainFlags {
   std::string data;         // DIR (set by train from its --data)
-  std::string problem_out;  // required (set by train from its --problem-out)
+  std::string out;          // the model file (set by train from its --out); may be empty
+  std::string problem_out;  // set by train from its --problem-out; required without `out`
   std::string groups;       // optional groups file
   std::string hold_out;     // "session" (default) or "object"
   std::string classifier = "lda";
@@ -22,9 +24,9 @@ struct DatasetTrainFlags {
 // Adds --groups, --hold-out, --feature-classifier and the --reward-* options to `cmd`.
 void add_dataset_train_options(CLI::App& cmd, DatasetTrainFlags& flags);
 
-// Loads, fits, prints the held-out accuracies and writes the problem. InputError for bad input
-// (a missing --problem-out, a DIR that is neither kind of data, a groups file that misses an
-// object, too few sessions or objects for the hold-out).
+// Loads, fits, prints the held-out accuracies and writes the model and the problem. InputError for
+// bad input (neither --out nor --problem-out, a DIR that is neither kind of data, a groups file
+// that misses an object, too few sessions or objects for the hold-out).
 void train_dataset(const DatasetTrainFlags& flags);
 
 }  // namespace echoplan::cli

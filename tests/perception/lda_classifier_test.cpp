@@ -1,5 +1,5 @@
-// The default classifier: level-normalised summaries and shrinkage LDA.
-#include "perception/summary_lda_classifier.h"
+// The default audio preset's parts: level-normalised summaries, Ledoit-Wolf and the one LDA.
+#include "perception/lda_classifier.h"
 
 #include <gtest/gtest.h>
 
@@ -7,6 +7,7 @@
 #include <random>
 
 #include "common/error.h"
+#include "perception/ledoit_wolf.h"
 #include "perception/summary_features.h"
 #include "synthetic_sounds.h"
 
@@ -47,14 +48,14 @@ TEST(SummaryFeatures, IgnoreLevelAndLeadingSilence) {
   EXPECT_GT(difference / kSummarySize, 0.3);
 }
 
-TEST(SummaryLda, LedoitWolfMatchesTheClosedFormOnAKnownCase) {
+TEST(LedoitWolf, MatchesTheClosedFormOnAKnownCase) {
   // Residual rows +-(1, 0) and +-(0, 3) (dof = n = 4): sample covariance diag(0.5, 4.5), mu = 2.5,
   // ||S - mu I||^2 = 8. Rank-one terms z z^T with z scaled by 1: diag(1, 0) or diag(0, 9); their
   // squared distances from S: 0.25 + 20.25 = 20.5 (twice) and 0.25 + 20.25 = 20.5 (twice): b^2 = 4
   // * 20.5 / 16.
   Eigen::MatrixXd r(4, 2);
   r << 1, 0, -1, 0, 0, 3, 0, -3;
-  const auto [weight, covariance] = SummaryLdaClassifier::ledoit_wolf(r, 4.0);
+  const auto [weight, covariance] = ledoit_wolf(r, 4.0);
   EXPECT_NEAR(weight, (4 * 20.5 / 16) / 8, 1e-12);
   EXPECT_NEAR(covariance(0, 0), (1 - weight) * 0.5 + weight * 2.5, 1e-12);
   EXPECT_NEAR(covariance(0, 1), 0.0, 1e-12);
@@ -79,14 +80,14 @@ void examples(int per_class, unsigned seed, std::vector<std::vector<double>>& x,
     }
 }
 
-TEST(SummaryLda, ClassifiesHeldOutRecordingsAndSavesItsFit) {
+TEST(LdaClassScaled, ClassifiesHeldOutRecordingsAndSavesItsFit) {
   std::vector<std::vector<double>> train, test;
   std::vector<int> train_y, test_y;
   examples(3, 1, train, train_y);
   examples(2, 5000, test, test_y);
-  for (auto covariance : {SummaryLdaClassifier::Covariance::ledoit_wolf,
-                          SummaryLdaClassifier::Covariance::identity}) {
-    SummaryLdaClassifier c(covariance);
+  using Lda = LdaClassifier;
+  for (auto covariance : {Lda::Covariance::ledoit_wolf, Lda::Covariance::identity}) {
+    Lda c(Lda::Scaling::class_scaled, covariance);
     c.fit(train, train_y, 3);
     EXPECT_GE(c.shrinkage(), 0.0);
     EXPECT_LE(c.shrinkage(), 1.0);
@@ -96,21 +97,22 @@ TEST(SummaryLda, ClassifiesHeldOutRecordingsAndSavesItsFit) {
           std::min_element(s.distances.begin(), s.distances.end()) - s.distances.begin();
       EXPECT_EQ(best, test_y[i]) << c.name() << " test clip " << i;
     }
-    SummaryLdaClassifier back(covariance);
+    Lda back(Lda::Scaling::class_scaled, covariance);
     back.load(c.save(), "m.json");
     const ClassScores a = c.score(test[0]), b = back.score(test[0]);
     for (std::size_t k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(a.distances[k], b.distances[k]);
   }
 }
 
-TEST(SummaryLda, LoadRejectsMalformedFits) {
+TEST(LdaClassScaled, LoadRejectsMalformedFits) {
   std::vector<std::vector<double>> x;
   std::vector<int> y;
   examples(2, 1, x, y);
-  SummaryLdaClassifier c;
+  using Lda = LdaClassifier;
+  Lda c(Lda::Scaling::class_scaled, Lda::Covariance::ledoit_wolf);
   c.fit(x, y, 3);
   const nlohmann::json good = c.save();
-  SummaryLdaClassifier back;
+  Lda back(Lda::Scaling::class_scaled, Lda::Covariance::ledoit_wolf);
   nlohmann::json bad = good;
   bad["scale"][0] = -1.0;
   EXPECT_THROW(back.load(bad, "m.json"), InputError);
@@ -118,12 +120,33 @@ TEST(SummaryLda, LoadRejectsMalformedFits) {
   bad["whitening"][0][5] = 1.0;  // above the diagonal
   EXPECT_THROW(back.load(bad, "m.json"), InputError);
   bad = good;
-  bad["summary_size"] = 12;
+  bad["features"] = 12;  // the vectors hold 123
+  EXPECT_THROW(back.load(bad, "m.json"), InputError);
+  bad = good;
+  bad["mean"] = std::vector<double>(5, 0.0);
   EXPECT_THROW(back.load(bad, "m.json"), InputError);
   bad = good;
   bad.erase("class_means");
   EXPECT_THROW(back.load(bad, "m.json"), InputError);
   EXPECT_THROW(c.score(std::vector<double>(5, 0.0)), InputError);
+}
+
+// A fit as model format 1 wrote it (summary_size, no mean) scores exactly as the fit it came from.
+TEST(LdaClassScaled, LoadsTheFormatOneFit) {
+  std::vector<std::vector<double>> x;
+  std::vector<int> y;
+  examples(2, 1, x, y);
+  using Lda = LdaClassifier;
+  Lda c(Lda::Scaling::class_scaled, Lda::Covariance::ledoit_wolf);
+  c.fit(x, y, 3);
+  nlohmann::json old = c.save();
+  for (double m : old["mean"].get<std::vector<double>>()) ASSERT_EQ(m, 0.0);
+  old["summary_size"] = old["features"];
+  old.erase("features");
+  old.erase("mean");
+  Lda back(Lda::Scaling::class_scaled, Lda::Covariance::ledoit_wolf);
+  back.load(old, "old.json");
+  EXPECT_EQ(back.score(x[4]).log_scores, c.score(x[4]).log_scores);
 }
 
 }  // namespace
