@@ -1,5 +1,5 @@
 #!/bin/sh
-# Certified share of V* for ABT and POMCP on the report's problem (issue 12, docs/BENCHMARKS.md
+# Certified share of V* for ABT and POMCP on the report's problem (docs/BENCHMARKS.md
 # "Certified share of V*"): for each planner and per-step budget (5, 20, 100 ms; 1,000 and 10,000
 # episodes), `echoplan trials` logs the decisions and `echoplan certify` bounds their regret
 # against the exact V*. Every run uses the same seed, so the trials share their true objects and

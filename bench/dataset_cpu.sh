@@ -1,5 +1,5 @@
 #!/bin/bash
-# CPU cost of `echoplan dataset` end to end, two binaries compared in one run: A and B alternated
+# CPU cost of `echoplan synth-recordings` end to end, two binaries compared in one run: A and B alternated
 # (A B A B ...) so both see the same machine load, CPU time (user + sys, /usr/bin/time) and wall time
 # of each run, medians, and B's median CPU over A's. Each run writes the 48 recordings (161 s of audio)
 # of the four original objects, 6 per object and action, seed 1; the last run's folders of A and B are
@@ -26,7 +26,7 @@ for run in $(seq "$runs"); do
   for which in A B; do
     if [ "$which" = A ]; then binary=$a; else binary=$b; fi
     rm -rf "$work/$which"
-    /usr/bin/time -f "%U %S %e" -o "$work/time" "$binary" dataset --per-pair 6 --seed 1 \
+    /usr/bin/time -f "%U %S %e" -o "$work/time" "$binary" synth-recordings --per-pair 6 --seed 1 \
       -o "$work/$which" --threads "$threads" \
       --objects pringles_can,coffee_mug,plastic_cup,paper_base > /dev/null 2>&1
     echo "$which $(cat "$work/time")" >> "$work/times"

@@ -1,5 +1,5 @@
 // Observation latency of the closed loop: from the end of a recording (the clip in hand) to the
-// belief updated with what was heard. Target: <= 5 ms (issue 9). Results: docs/BENCHMARKS.md.
+// belief updated with what was heard. Target: <= 5 ms. Results: docs/BENCHMARKS.md.
 //
 // The clip is a 3 s stereo 44.1 kHz simulated strike (what SimulatedMicrophone hands back); the
 // model is trained on 5 simulated recordings per object and action of the report's four objects;

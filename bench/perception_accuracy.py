@@ -5,7 +5,7 @@ Two sources:
   real  Hydrogen drum kits (Debian package hydrogen-drumkits; ~220 MB, so not in CI): every instrument with
         enough velocity layers is a class; train on its n loudest layers, test on its quietest one (a force
         the training set never had). Each kit is one task; accuracy is pooled over the kits' test clips.
-  sim   `echoplan dataset` recordings: train on the first n recordings per (object, action) of one
+  sim   `echoplan synth-recordings` recordings: train on the first n recordings per (object, action) of one
         dataset seed, test on every recording of another seed.
 
 Usage: bench/perception_accuracy.py BUILD_DIR [--shots 3,5,7] [--sim-per-pair 20] [--out results.json]
@@ -91,7 +91,7 @@ def main():
         # Simulated recordings: two dataset seeds, train on the first n of seed 1, test on all of seed 2.
         sim_train, sim_test = os.path.join(work, "sim1"), os.path.join(work, "sim2")
         for seed, d in ((1, sim_train), (2, sim_test)):
-            subprocess.run([echoplan, "dataset", "--per-pair", str(args.sim_per_pair), "--seed", str(seed), "-o", d],
+            subprocess.run([echoplan, "synth-recordings", "--per-pair", str(args.sim_per_pair), "--seed", str(seed), "-o", d],
                            check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         objects = sorted(o for o in os.listdir(sim_train) if os.path.isdir(os.path.join(sim_train, o)))
         for shots in [int(s) for s in args.sim_shots.split(",")]:

@@ -3,7 +3,7 @@
 
 The lab's counts are the final experiments' logs (../shared/reference/original-robot-runs.md: 81 sensing
 actions with the four objects, 36 with the weighted can and mug). For each seed the simulator
-synthesises --per-pair recordings of every (object, action) pair (`echoplan dataset`); each classifier is
+synthesises --per-pair recordings of every (object, action) pair (`echoplan synth-recordings`); each classifier is
 then measured as the report did:
 
   - the four objects: leave-one-out over that seed's recordings of the four originals
@@ -96,7 +96,7 @@ def heard_for_seed(args, seed, classifier, work):
     """{action: {true object: {heard: count}}} for one seed and classifier (originals and variants)."""
     data = os.path.join(work, "seed%d" % seed)
     if not os.path.isdir(data):
-        command = [args.echoplan, "dataset", "--per-pair", str(args.per_pair), "--seed", str(seed), "-o", data,
+        command = [args.echoplan, "synth-recordings", "--per-pair", str(args.per_pair), "--seed", str(seed), "-o", data,
                    "--threads", "1", "--objects", ",".join(ORIGINALS + WEIGHTED)]
         command += ["--sim-config", args.sim_config] if args.sim_config else []
         command += ["--catalogue", args.catalogue] if args.catalogue else []

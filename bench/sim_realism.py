@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """How the simulator's recordings compare with the original robot's real ones.
 
-Synthesises N clips per object and action with `echoplan dataset`, measures each with the shared
+Synthesises N clips per object and action with `echoplan synth-recordings`, measures each with the shared
 sound_measures.py (the tool that measured the real recordings), and prints next to the real values
 (../shared/reference/real-robot-recordings.md):
 
@@ -254,7 +254,7 @@ def report(args, sm, seed):
     (mug clips', cup clips' level-removed log-mel spectra), "levels": (met, of), "clear_misses": n}."""
     out = os.path.join(args.keep, f"seed{seed}") if args.keep else tempfile.mkdtemp(prefix="echoplan_realism_")
     start = time.time()
-    command = [args.echoplan, "dataset", "--per-pair", str(args.per_pair), "--seed", str(seed), "-o", out,
+    command = [args.echoplan, "synth-recordings", "--per-pair", str(args.per_pair), "--seed", str(seed), "-o", out,
                "--objects", ",".join(OBJECTS), "--threads", "2"]
     if args.sim_config:
         command += ["--sim-config", args.sim_config]
@@ -368,7 +368,7 @@ def main():
     ap.add_argument("--per-pair", type=int, default=10, help="clips per object and action (default 10)")
     ap.add_argument("--seed", default="1",
                     help="seed, or seeds separated by commas (1,2,3): a report for each, then a summary")
-    ap.add_argument("--sim-config", help="a sim config YAML for `echoplan dataset` (default: built-in)")
+    ap.add_argument("--sim-config", help="a sim config YAML for `echoplan synth-recordings` (default: built-in)")
     ap.add_argument("--echoplan", default=os.path.join(REPO, "build", "echoplan"))
     ap.add_argument("--measures", default=os.path.join(REPO, "..", "..", "shared", "tools", "sound_measures.py"))
     ap.add_argument("--keep", help="write the clips to DIR/seedS and keep them (default: a temporary folder)")

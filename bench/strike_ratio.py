@@ -3,7 +3,7 @@
 
 sim_realism.py's strike ratio (between mug and cup / within cups, mean absolute difference of the
 level-removed mean 64-band log-mel spectra; lab 1.5) is taken over whole clips. This script
-synthesises N mug and N cup strikes per seed with `echoplan dataset` and prints that ratio
+synthesises N mug and N cup strikes per seed with `echoplan synth-recordings` and prints that ratio
 
   - over the whole clip (sim_realism.py's figure),
   - over parts of the clip, placed at its loudest 5 ms frame (the impact): the thud (50 ms before to
@@ -74,7 +74,7 @@ def louder_room_config(db, path):
 
 
 def dataset(echoplan, per_pair, seed, out, objects, config=None):
-    cmd = [echoplan, "dataset", "--per-pair", str(per_pair), "--seed", str(seed), "-o", out,
+    cmd = [echoplan, "synth-recordings", "--per-pair", str(per_pair), "--seed", str(seed), "-o", out,
            "--objects", objects, "--actions", "strike"]
     if config:
         cmd += ["--sim-config", config]

@@ -2,7 +2,8 @@
 # echoplan setup: installs every dependency from Debian 12 packages, builds, and optionally runs.
 #
 #   scripts/setup.sh          install dependencies and build (build/)
-#   scripts/setup.sh run      ... then run the main job with its default configuration
+#   scripts/setup.sh run      install dependencies, build the `echoplan` command only, and run the
+#                             main job with its default configuration
 #   scripts/setup.sh test     ... then run all tests: the normal build, an install into a temporary prefix
 #                             with a project built on it (scripts/check-install.sh), an ASan+UBSan build
 #   scripts/setup.sh deps     only install dependencies
@@ -55,17 +56,24 @@ install_deps() {
   DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
-build() {  # build DIR [extra cmake args...]
+build() {  # build DIR [extra cmake args...]: every target (tests, benchmarks, ROS nodes)
   local dir=$1; shift
   cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
   cmake --build "$dir" -j"$jobs"
+}
+
+build_command() {  # build DIR: only the `echoplan` command, all the main job runs
+  local dir=$1
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+  cmake --build "$dir" -j"$jobs" --target echoplan
 }
 
 case "$mode" in
   deps) install_deps ;;
   build) install_deps; build "$build_dir" ;;
   run)
-    install_deps; build "$build_dir"
+    # Only the command: the tests and benchmarks the main job never runs wait for `test`.
+    install_deps; build_command "$build_dir"
     # The main job: the report's chapter 5 (experiments/chapter5.yaml) on all cores. Running it again
     # continues an interrupted campaign; a finished one is only re-reported.
     "$build_dir/echoplan" experiment --out results/chapter5

@@ -21,57 +21,33 @@
 #include "experiment/campaign_config.h"
 #include "experiment/campaign_report.h"
 #include "experiment/campaign_runner.h"
-#include "experiment/dataset_campaign.h"
-#include "perception/observation_model.h"
-#include "pomdp/problem.h"
-#include "sim/catalogue.h"
-#include "sim/sim_config.h"
+#include "experiment/campaign_world.h"
 
 namespace echoplan::experiment {
 
-// A checked campaign bound to its output folder, with every input loaded once and shared
-// read-only by the workers.
+// A checked campaign bound to its output folder: the specification (configuration, folder, the
+// report's skeleton) and its world, with every input loaded once and shared read-only by the
+// workers. The journal on disk is the only state that changes as trials finish.
 struct Campaign {
   CampaignConfig config;
   std::filesystem::path directory;
-  CampaignResults results;                    // spec, particles, planned trials (entries: none yet)
-  std::vector<std::string> training_objects;  // the training set's objects and actions
-  std::vector<std::string> training_actions;
-  std::shared_ptr<const pomdp::Problem> world_problem;
-  // Each arm's problem as its file says; prepare_training() puts a calibrating arm's calibrated
-  // problem in its place.
-  std::vector<std::shared_ptr<const pomdp::Problem>> arm_problems;
-  std::shared_ptr<const sim::Catalogue> catalogue;
-  std::shared_ptr<const sim::SimConfig> sim_config;
-  // Filled by open_campaign() (training_set.model) or prepare_training() (trained, when needed).
-  std::shared_ptr<const perception::ObservationModel> observation_model;
-  // A dataset world's data, folds and (after prepare_training()) fitted fold models.
-  std::shared_ptr<DatasetTrials> dataset;
+  CampaignResults results;  // spec, particles, planned trials, presentation (entries: none yet)
+  std::shared_ptr<CampaignWorld> world;
   // Filled by prepare_training(): the checked loop of each arm and group, what the workers run.
   ArmLoops loops;
 };
-
-// True when the campaign needs a trained classifier: an arm calibrates or the world is simulated.
-bool needs_classifier(const CampaignConfig& config);
 
 // Checks everything a campaign needs before any work starts, and claims `directory` for it (writes
 // campaign.json). Throws InputError, naming the file and the problem, for: a problem that does not
 // load or whose objects, actions or observations differ from the other arms' or the world's; an
 // object the problems do not know; an object with no catalogue entry; a missing recordings folder;
-// a given model trained for other objects or actions; an unknown solver; an output folder that
-// cannot be written or that holds a different campaign.
+// a given model trained for other objects or actions; data too small for its folds, or a frozen
+// model of other classes; an unknown solver; an output folder that cannot be written or that holds
+// a different campaign.
 Campaign open_campaign(const CampaignConfig& config, const std::filesystem::path& directory);
 
-// Where the training recordings are: training_set.recordings, else DIR/training/recordings.
-std::filesystem::path training_recordings(const Campaign& campaign);
-
-// Prepares what the trials need. A dataset world: fits each fold's classifiers and table
-// ("fit folds" progress). Otherwise: synthesises the training set into DIR/training/recordings
-// (unless it is complete already or the campaign uses existing recordings), then, when
-// needs_classifier(), trains and calibrates the classifier on it (or loads training_set.model, or
-// DIR/training/model.json of an earlier run), calibrates each calibrating arm's problem in memory
-// (writing it to DIR/training/<arm>.problem.yaml for the user) and checks every arm's loop.
-// `progress(stage, done, total)` reports "synthesise" clips and the trainer's stages. Returns false
+// Prepares what the trials need (CampaignWorld::prepare: each fold's model, synthesised, trained
+// or fitted, and the loops). `progress(stage, done, total)` reports its stages. Returns false
 // when stopped.
 bool prepare_training(Campaign& campaign, const ProgressFn& progress,
                       const std::atomic<bool>& stop);

@@ -106,7 +106,7 @@ nlohmann::json CampaignConfig::identity(const FileText& file_text) const {
   j["world"] = {{"type", to_string(world.type)}, {"problem_sha", content_hash(world.problem)}};
   if (world.type == WorldType::dataset) {
     j["world"]["data_sha"] = fmt::format("{:016x}", folder_hash(world.data));
-    j["world"]["hold_out"] = world.hold_out;
+    j["world"]["hold_out"] = perception::hold_out_name(world.hold_out);
     j["world"]["groups_sha"] = content_hash(world.groups);
     // Only when frozen: fold campaigns written before frozen models existed keep their identity.
     if (!world.model.empty()) j["world"]["model_sha"] = content_hash(world.model);
@@ -201,16 +201,18 @@ void read_dataset_world(const YamlReader& f, const YAML::Node& world, const std:
   if (!fs::is_directory(w.data, error))
     f.fail(data, "data folder '" + w.data + "' does not exist (a feature set or recordings tree)");
   if (auto n = f.optional(world, "hold_out", "world")) {
-    w.hold_out = f.name(n, "hold_out");
-    if (w.hold_out != "session" && w.hold_out != "object")
-      f.fail(n, "hold_out '" + w.hold_out + "' is not one of: session, object");
+    try {
+      w.hold_out = perception::parse_hold_out(f.name(n, "hold_out"));
+    } catch (const InputError& e) {
+      f.fail(n, e.problem());
+    }
   }
   if (auto n = f.optional(world, "groups", "world")) {
     w.groups = resolve(source, f.name(n, "groups"));
     if (!fs::is_regular_file(w.groups, error))
       f.fail(n, "groups file '" + w.groups + "' does not exist");
   }
-  if (w.hold_out == "object" && w.groups.empty())
+  if (w.hold_out == perception::HoldOut::object && w.groups.empty())
     f.fail(world, "hold_out: object needs groups: a novel object can only be sorted by its group");
   if (auto n = f.optional(world, "model", "world")) {
     w.model = resolve(source, f.name(n, "model"));
@@ -236,10 +238,10 @@ WorldConfig read_world(const YamlReader& f, const YAML::Node& root, const std::s
 }
 
 // `task: {rewards: {right, wrong, sense}}`, a dataset world's rewards.
-TaskRewards read_task(const YamlReader& f, const YAML::Node& task) {
+loop::TaskRewards read_task(const YamlReader& f, const YAML::Node& task) {
   f.expect_map(task, "task");
   f.only_keys(task, {"rewards"}, "task");
-  TaskRewards rewards;
+  loop::TaskRewards rewards;
   const YAML::Node r = f.require(task, "rewards", "task");
   f.expect_map(r, "task.rewards");
   f.only_keys(r, {"right", "wrong", "sense"}, "task.rewards");
@@ -416,7 +418,7 @@ nlohmann::json to_json(const CampaignConfig& c) {
   j["world"] = {{"type", to_string(c.world.type)}, {"problem", c.world.problem}};
   if (c.world.type == WorldType::dataset) {
     j["world"]["data"] = c.world.data;
-    j["world"]["hold_out"] = c.world.hold_out;
+    j["world"]["hold_out"] = perception::hold_out_name(c.world.hold_out);
     j["world"]["groups"] = c.world.groups;
     if (!c.world.model.empty()) j["world"]["model"] = c.world.model;
     j["rewards"] = {
@@ -483,7 +485,11 @@ WorldConfig world_from_json(const nlohmann::json& j, const jf::JsonSource& sourc
       return jf::string(jf::member(w, key, "world", source), jf::child("world", key), source);
     };
     world.data = text("data");
-    world.hold_out = text("hold_out");
+    try {
+      world.hold_out = perception::parse_hold_out(text("hold_out"));
+    } catch (const InputError& e) {
+      throw InputError(source.file, source.line, "world.hold_out: " + e.problem());
+    }
     world.groups = text("groups");
     if (w.contains("model")) world.model = text("model");
   }

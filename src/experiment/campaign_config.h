@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "experiment/reference_results.h"
+#include "loop/dataset_problem.h"
+#include "perception/dataset_task.h"
 
 namespace echoplan::experiment {
 
@@ -69,21 +71,14 @@ struct WorldConfig {
   // Dataset worlds: the data (a feature set or a recordings tree), what a trial holds out
   // ("session" or "object") and the groups file the objects are sorted by (empty: by object).
   std::string data;
-  std::string hold_out = "session";
+  perception::HoldOut hold_out = perception::HoldOut::session;
   std::string groups;
   // A frozen observation model file (`echoplan train --out`): no folds, every session replayed
   // with it (a model trained one day, judged on data recorded another). Empty: fit per fold.
   std::string model;
 };
 
-// What a dataset world's sorting earns (a model or simulated world's problem file has its own).
-struct TaskRewards {
-  double right = 10.0;    // sorted into the right bin (the report's +10)
-  double wrong = -100.0;  // sorted into another bin
-  double sense = -1.0;    // each sensing action
-};
-
-// The training set synthesised before the trials (`echoplan dataset`'s library code).
+// The training set synthesised before the trials (`echoplan synth-recordings`'s library code).
 struct TrainingSetConfig {
   int recordings_per_pair = 10;      // 0: no synthesis (and no template figures)
   std::vector<std::string> objects;  // catalogue names; empty: the planning problems' objects
@@ -113,7 +108,7 @@ struct CampaignConfig {
   TrainingSetConfig training;
   std::vector<ObjectGroup> groups;  // trials per object, in report order (a dataset world: one
                                     // group per object of the data, a trial per session)
-  TaskRewards rewards;              // dataset worlds
+  loop::TaskRewards rewards;        // dataset worlds (a problem file has its own)
   PlannerConfig planner;
   // What the results are shown beside (the file named by `reference:`); none: no reference
   // columns. Not part of the identity: it changes the report's comparison, not the trials.

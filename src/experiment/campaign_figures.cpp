@@ -332,14 +332,14 @@ std::vector<Figure> draw_figures(const fs::path& directory, const CampaignResult
   const TemporaryFolder work("echoplan-figures");
   std::vector<Drawing> drawings;
   if (!templates.empty()) drawings.push_back(templates_drawing(templates, work.path()));
-  if (results.config.world.type == WorldType::dataset) {
+  if (!results.world.per_object) {
     // A belief panel per trial and a confusion matrix per object would be hundreds of figures: a
-    // dataset's page compares the arms instead.
+    // page of recorded data compares the arms instead.
     drawings.push_back(tradeoff_drawing(results, results.sensing_actions, work.path()));
     drawings.push_back(action_use_drawing(results, results.sensing_actions, work.path()));
   }
   for (const CampaignArm& arm : results.config.arms) {
-    if (results.config.world.type == WorldType::dataset) break;
+    if (!results.world.per_object) break;
     for (const ObjectGroup& group : results.config.groups) {
       const bool any = std::any_of(
           results.entries.begin(), results.entries.end(),

@@ -98,9 +98,8 @@ std::vector<SummaryRow> summary_rows(const CampaignResults& results) {
       rows.push_back({arm.name, scope, label, summarize(records, num_actions, results.right_action),
                       reference_for(results.config.reference, scope, covered)});
     };
-    const bool dataset = results.config.world.type == WorldType::dataset;
     for (const ObjectGroup& g : groups)
-      if (!dataset)
+      if (results.world.per_object)
         add(RowScope::object, g.object,
             [&](const ObjectGroup& other) { return other.object == g.object; });
     if (originals && variants) {
@@ -227,10 +226,9 @@ namespace {
 
 // How an arm decides, for the summary's heading.
 std::string arm_text(const CampaignResults& results, const CampaignArm& arm) {
-  const bool dataset = results.config.world.type == WorldType::dataset;
   const std::string problem =
-      dataset
-          ? "each fold's problem"
+      !results.world.arm_problem.empty()
+          ? results.world.arm_problem
           : (arm.calibrate ? arm.problem + ", its observation table calibrated on the training set"
                            : arm.problem);
   if (arm.strategy == kPlanStrategy) return "plans with " + problem;
@@ -239,9 +237,16 @@ std::string arm_text(const CampaignResults& results, const CampaignArm& arm) {
 
 }  // namespace
 
+int shown_actions(const CampaignResults& results) {
+  const int all = static_cast<int>(results.spec.action_names.size());
+  return results.world.per_object ? all : std::min(all, results.sensing_actions);
+}
+
 std::string summary_text(const CampaignResults& results) {
   std::string out;
-  const auto& actions = results.spec.action_names;
+  const std::vector<std::string> actions(
+      results.spec.action_names.begin(),
+      results.spec.action_names.begin() + shown_actions(results));
   const std::optional<ReferenceResults>& reference = results.config.reference;
   out += fmt::format("{} of {} trials; planner {} with {}\n", results.entries.size(),
                      results.planned_trials, results.config.planner.solver,
@@ -265,7 +270,8 @@ std::string summary_text(const CampaignResults& results) {
     out +=
         fmt::format("  {:<24}{:>7}{:>10}{:>22}{:>7.2f}", row.label, s.trials, percent(s.accuracy),
                     fmt::format("{:.2f} ± {:.2f}", s.mean_discounted_reward, s.ci95), s.mean_steps);
-    for (double c : s.mean_action_counts) out += fmt::format("{:>10.2f}", c);
+    for (std::size_t a = 0; a < actions.size(); ++a)
+      out += fmt::format("{:>10.2f}", s.mean_action_counts[a]);
     if (row.reference)
       out += fmt::format("   | {:{}}{:>7}{:>8.2f}", "", reference->label.size() + 2,
                          fmt::format("{}/{}", row.reference->correct, row.reference->trials),
@@ -276,10 +282,9 @@ std::string summary_text(const CampaignResults& results) {
   for (std::size_t k = 1; k < arms.size(); ++k) {
     const TrialSummary d = paired_difference(results, arms[0].name, arms[k].name);
     if (d.trials == 0) continue;
-    out += fmt::format(
-        "\n{} minus {}, paired trials (same objects, same world noise): {:+.2f} ± {:.2f} (95% CI, "
-        "{} pairs)\n",
-        arms[k].name, arms[0].name, d.mean_discounted_reward, d.ci95, d.trials);
+    out += fmt::format("\n{} minus {}, paired trials ({}): {:+.2f} ± {:.2f} (95% CI, {} pairs)\n",
+                       arms[k].name, arms[0].name, results.world.pairing, d.mean_discounted_reward,
+                       d.ci95, d.trials);
   }
   return out;
 }

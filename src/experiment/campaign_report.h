@@ -21,8 +21,24 @@
 namespace echoplan::experiment {
 
 // What the report needs besides the entries: the campaign and the planning problems' shared names.
+// How the report presents the campaign's world (the world fills it: campaign_world.h), so the
+// report layer never asks which kind of world it reports.
+struct WorldPresentation {
+  std::string title = "echoplan campaign";  // the page's heading
+  std::string note;                         // what the world is, what its numbers show
+  // How an arm's problem is named when it is not the arm's file ("each fold's problem"); empty:
+  // the file.
+  std::string arm_problem;
+  std::string pairing = "same objects, same world noise";  // what paired trials share
+  // A results row, belief panels and a confusion figure per object, and every decision on the
+  // page; false for recorded data (hundreds of objects, a belief over every class per decision):
+  // the page compares the arms instead, with only the sensing actions' counts in its tables.
+  bool per_object = true;
+};
+
 struct CampaignResults {
   CampaignConfig config;
+  WorldPresentation world;
   pomdp::ModelSpec spec;     // objects, actions and observation names, the same for every arm
   int belief_particles = 0;  // > 0: steps.csv shows particle counts (Table 5.2); 0: probabilities
   std::vector<JournalEntry> entries;  // sorted by id, at most one per id
@@ -37,6 +53,11 @@ struct CampaignResults {
   // the world is not simulated or the reference has no such counts.
   std::vector<HeardCounts> heard;
 };
+
+// How many of the spec's actions (the first ones) the results tables give a column: all of them,
+// or only the sensing actions when the world does not present objects one by one (recorded data:
+// a column per bin would run off the page; accuracy says how the sorting went).
+int shown_actions(const CampaignResults& results);
 
 // Which trials a summary row covers.
 enum class RowScope {

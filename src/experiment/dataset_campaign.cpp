@@ -25,14 +25,6 @@ pomdp::Problem dataset_problem_file(pomdp::ObjectProblemData data, const std::st
   return problem;
 }
 
-loop::DatasetRewards task_rewards(const CampaignConfig& config) {
-  loop::DatasetRewards rewards;
-  rewards.right = config.rewards.right;
-  rewards.wrong = config.rewards.wrong;
-  rewards.sense = config.rewards.sense;
-  return rewards;
-}
-
 // The sessions of object `object`, in the data's order.
 std::vector<int> sessions_of(const perception::FeatureSet& data, int object) {
   std::vector<int> sessions;
@@ -97,8 +89,7 @@ DatasetTrials open_dataset(const CampaignConfig& config, const ProgressFn& progr
   std::optional<perception::ObjectGroups> groups;
   if (!config.world.groups.empty()) groups = perception::load_groups(config.world.groups);
   t.task = perception::make_dataset_task(*t.data, groups ? &*groups : nullptr,
-                                         perception::parse_hold_out(config.world.hold_out),
-                                         config.world.groups);
+                                         config.world.hold_out, config.world.groups);
   if (!config.world.model.empty()) {
     open_frozen_model(t, config.world.model);
   } else {
@@ -109,7 +100,7 @@ DatasetTrials open_dataset(const CampaignConfig& config, const ProgressFn& progr
       for (int s : t.folds[f].test_sessions) t.fold_of_session.at(s) = static_cast<int>(f);
   }
   t.names = std::make_shared<const pomdp::Problem>(dataset_problem_file(
-      loop::dataset_problem_shape(t.task, *t.data, task_rewards(config)), config.world.data));
+      loop::dataset_problem_shape(t.task, *t.data, config.rewards), config.world.data));
   return t;
 }
 
@@ -158,7 +149,7 @@ ArmLoops dataset_loops(const CampaignConfig& config, const DatasetTrials& trials
     auto& p = problems[{fold, uses}];
     if (!p)
       p = std::make_shared<const pomdp::Problem>(dataset_problem_file(
-          loop::dataset_problem(trials.task, *trials.models.at(fold), task_rewards(config), uses),
+          loop::dataset_problem(trials.task, *trials.models.at(fold), config.rewards, uses),
           fmt::format("{} (fold {})", config.world.data, fold + 1)));
     return p;
   };

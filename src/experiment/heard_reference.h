@@ -2,7 +2,7 @@
 // each class (columns). The lab's counts (the final experiments' logs) are data in the campaign's
 // reference file (`heard:`, format: experiments/chapter5_reference.yaml, docs/experiment.md); a
 // simulated world's training set is heard by the same classifier (campaign.cpp) and the page shows
-// the two side by side (issue 24: is the simulated world as hard to hear as the lab?).
+// the two side by side: is the simulated world as hard to hear as the lab?
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -97,29 +97,17 @@ std::string page_opening(const CampaignResults& results) {
   const CampaignConfig& config = results.config;
   std::string h;
   h += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
-  h += "<title>echoplan campaign: the report's chapter 5</title>\n<style>" + std::string(kStyle) +
-       "</style>\n";
-  h += "</head>\n<body>\n<h1>echoplan campaign: the report's chapter 5</h1>\n";
+  const std::string title = escape(results.world.title);
+  h += "<title>" + title + "</title>\n<style>" + std::string(kStyle) + "</style>\n";
+  h += "</head>\n<body>\n<h1>" + title + "</h1>\n";
   h += fmt::format(
       "<p>{} of {} trials finished; campaign <code>{}</code>, seed {}, planner {} with {}.</p>\n",
       results.entries.size(), results.planned_trials, escape(config.source), config.seed,
       escape(config.planner.solver),
       config.planner.episodes > 0 ? fmt::format("{} episodes per step", config.planner.episodes)
                                   : fmt::format("{} ms per step", config.planner.step_ms));
-  if (config.world.type == WorldType::simulated)
-    h += "<p class=\"note\">The world here is the simulator: the simulated robot slides or strikes "
-         "the object (a weighted variant with its added mass), the simulated recorder records, and "
-         "the classifier trained on the synthesised training set reports what it heard. If "
-         "simulated objects are easier to tell apart than the lab's real ones, the numbers here "
-         "are better than the report's for that reason, not because of the planner.</p>\n";
-  if (config.world.type == WorldType::model)
-    h += fmt::format(
-        "<p class=\"note\">The world here is a problem file's own observation table "
-        "(<code>{}</code>): observations are drawn from it, no sound is synthesised or classified "
-        "during the trials, and a variant object (e.g. a weighted can) behaves exactly as the "
-        "object it plays. These trials measure the planner; they say nothing about how well sound "
-        "tells the objects apart.</p>\n",
-        escape(config.world.problem));
+  if (!results.world.note.empty())
+    h += "<p class=\"note\">" + escape(results.world.note) + "</p>\n";
   return h;
 }
 
@@ -131,7 +119,8 @@ std::string results_table(const CampaignResults& results) {
   h += "<table>\n<tr><th class=\"l\">arm</th><th class=\"l\">objects</th>"
        "<th>trials</th><th>accuracy</th><th>mean discounted reward (95% CI)</th><th>mean "
        "steps</th>";
-  for (const auto& a : results.spec.action_names) h += "<th>mean " + escape(a) + "</th>";
+  const int shown = shown_actions(results);
+  for (int a = 0; a < shown; ++a) h += "<th>mean " + escape(results.spec.action_names[a]) + "</th>";
   if (reference)
     h += fmt::format("<th>{0}: correct</th><th>{0}: reward</th>", escape(reference->label));
   h += "</tr>\n";
@@ -143,7 +132,7 @@ std::string results_table(const CampaignResults& results) {
         row.scope != RowScope::object ? " class=\"total\"" : "", escape(row.arm), escape(row.label),
         s.trials, s.accuracy >= 0.999 ? "good" : (s.accuracy < 0.8 ? "bad" : ""),
         100.0 * s.accuracy, s.mean_discounted_reward, s.ci95, s.mean_steps);
-    for (double c : s.mean_action_counts) h += fmt::format("<td>{:.2f}</td>", c);
+    for (int a = 0; a < shown; ++a) h += fmt::format("<td>{:.2f}</td>", s.mean_action_counts[a]);
     if (row.reference)
       h += fmt::format("<td>{}/{}</td><td>{:.2f}</td>", row.reference->correct,
                        row.reference->trials, row.reference->mean_discounted_reward);
@@ -160,7 +149,8 @@ std::string paired_comparison(const CampaignResults& results) {
   if (!summary.contains("paired_differences")) return "";
   std::string h =
       "<p>Paired comparison of the arms (each trial of one arm against the trial of the other "
-      "with the same object and the same world noise):</p>\n<ul>\n";
+      "with the " +
+      escape(results.world.pairing) + "):</p>\n<ul>\n";
   for (const auto& d : summary["paired_differences"])
     h +=
         fmt::format("<li>{} minus {}: {:+.2f} ± {:.2f} discounted reward (95% CI, {} pairs)</li>\n",
@@ -183,11 +173,19 @@ std::string figure_sections(const fs::path& directory, const std::vector<Figure>
   return h;
 }
 
-// Table 5.1: every trial.
+// The name of the report's table a campaign beside the report's results reproduces.
+std::string as_report_table(const CampaignResults& results, const char* table) {
+  return results.config.reference
+             ? fmt::format(" (the {}'s Table {})", escape(results.config.reference->label), table)
+             : std::string();
+}
+
+// Every trial (the report's Table 5.1).
 std::string trials_table(const CampaignResults& results) {
   const auto& objects = results.spec.state.discrete_value_names.at(0);
   std::string h =
-      "<h2>Every trial (the report's Table 5.1)</h2>\n<details "
+      "<h2>Every trial" + as_report_table(results, "5.1") +
+      "</h2>\n<details "
       "open><summary>trials.csv</summary>\n<table>\n"
       "<tr><th>trial</th><th class=\"l\">arm</th><th class=\"l\">object</th><th class=\"l\">true "
       "state</th><th class=\"l\">final belief</th><th>steps</th>";
@@ -228,13 +226,12 @@ std::string step_row(const CampaignResults& results, int trial, const StepRecord
                  s.heard_probability ? fmt::format("{:.3f}", *s.heard_probability) : std::string());
 }
 
-// Table 5.2: every decision.
+// Every decision (the report's Table 5.2).
 std::string steps_table(const CampaignResults& results) {
   const bool particles = results.belief_particles > 0;
-  std::string h =
-      "<h2>Every decision (the report's Table "
-      "5.2)</h2>\n<details><summary>steps.csv</summary>\n<table>\n"
-      "<tr><th>trial</th><th>step</th>";
+  std::string h = "<h2>Every decision" + as_report_table(results, "5.2") +
+                  "</h2>\n<details><summary>steps.csv</summary>\n<table>\n"
+                  "<tr><th>trial</th><th>step</th>";
   for (const auto& o : results.spec.state.discrete_value_names.at(0))
     h += "<th>" + escape(o) + (particles ? " particles" : " p") + "</th>";
   h += "<th class=\"l\">action</th><th class=\"l\">heard</th><th>heard p</th></tr>\n";
@@ -306,9 +303,9 @@ std::string html_report(const fs::path& directory, const CampaignResults& result
   h += heard_section(results);
   h += figure_sections(directory, figures) + trials_table(results);
   // A dataset's decisions (a belief over every class at each) would make a page of megabytes.
-  h += results.config.world.type == WorldType::dataset
-           ? "<p>Every decision, with the belief it was taken from: steps.csv.</p>\n"
-           : steps_table(results);
+  h += results.world.per_object
+           ? steps_table(results)
+           : "<p>Every decision, with the belief it was taken from: steps.csv.</p>\n";
   h += "<p>Files in this folder: trials.csv, steps.csv, arms/&lt;arm&gt;/ (the same per arm, for "
        "<code>echoplan certify</code>), summary.json, summary.txt, figures/ (PNG and SVG), "
        "journal.jsonl (one line per finished trial; everything else is rebuilt from it).</p>\n";

@@ -1,6 +1,6 @@
 // The planner's problem with the trained classifier's calibrated observation table in place of the
-// hand-tuned one: the planner then plans with what the classifier really does (issue 7's
-// calibration, the report's section 3.3 for the table it replaces).
+// hand-tuned one: the planner then plans with what the classifier really does (the
+// report's section 3.3 for the table it replaces).
 #pragma once
 
 #include <memory>

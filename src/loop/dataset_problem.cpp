@@ -17,7 +17,7 @@ using Table = std::vector<std::vector<std::vector<double>>>;
 
 pomdp::ObjectProblemData problem_of(const perception::DatasetTask& task,
                                     const std::vector<std::string>& actions, const Table& table,
-                                    const DatasetRewards& rewards, std::vector<int> uses) {
+                                    const TaskRewards& rewards, std::vector<int> uses) {
   if (uses.size() != actions.size())
     throw InputError(fmt::format("{} use limits for {} actions; expected one per action",
                                  uses.size(), actions.size()));
@@ -52,7 +52,7 @@ pomdp::ObjectProblemData problem_of(const perception::DatasetTask& task,
 
 pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
                                          const perception::ObservationModel& model,
-                                         const DatasetRewards& rewards, std::vector<int> uses) {
+                                         const TaskRewards& rewards, std::vector<int> uses) {
   if (model.classes() != task.classes || model.reject())
     throw InputError(fmt::format(
         "the model's classes ({}{}) are not the task's ({}): a dataset problem needs a model "
@@ -67,7 +67,7 @@ pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
 
 pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& task,
                                                const perception::FeatureSet& set,
-                                               const DatasetRewards& rewards) {
+                                               const TaskRewards& rewards) {
   std::vector<std::string> actions;
   for (const perception::ActionData& action : set.actions) actions.push_back(action.name);
   const std::size_t classes = task.classes.size();

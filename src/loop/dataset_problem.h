@@ -12,8 +12,9 @@
 
 namespace echoplan::loop {
 
-// The rewards: +10 for the right bin, -100 for a wrong one, -1 per behaviour performed.
-struct DatasetRewards {
+// What sorting recorded data earns (a campaign's `task: rewards`, `train --reward-*`): by default
+// the report's +10 for the right bin, -100 for a wrong one, and -1 per behaviour performed.
+struct TaskRewards {
   double right = 10.0;
   double wrong = -100.0;
   double sense = -1.0;
@@ -28,13 +29,13 @@ struct DatasetRewards {
 // action, or negative, or the model's classes are not the task's (or it rejects).
 pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
                                          const perception::ObservationModel& model,
-                                         const DatasetRewards& rewards, std::vector<int> uses);
+                                         const TaskRewards& rewards, std::vector<int> uses);
 
 // The same problem's shape, with every observation row uniform and default_uses(set): its names
 // (classes, actions, bins, symbols) before any model is fitted, e.g. for a campaign's report.
 pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& task,
                                                const perception::FeatureSet& set,
-                                               const DatasetRewards& rewards);
+                                               const TaskRewards& rewards);
 // Per action of `set`: the most performances of that action in any one session (a trial can
 // perform it at most that often).
 std::vector<int> default_uses(const perception::FeatureSet& set);

@@ -1,11 +1,10 @@
 // The closed loop, assembled once: what `echoplan run`, `echoplan trials`, the ROS planner node and
 // a campaign's workers all call.
 //
-//   LoopSettings settings;                    // the problem, the world, the classifier, the
-//   planner auto spec = std::make_shared<const LoopSpec>(std::move(settings));  // checked:
-//   InputError now Loop loop(spec);                          // a world and a planner of its own
-//   (one per thread) std::optional<Trial> trial = loop.run({.index = 0, .object = 2, .seed = 7},
-//   print_step);
+//   LoopSettings settings;  // the problem, the world, the classifier, the planner
+//   auto spec = std::make_shared<const LoopSpec>(std::move(settings));  // checked: InputError now
+//   Loop loop(spec);        // a world and a planner of its own (one per thread)
+//   std::optional<Trial> trial = loop.run({.index = 0, .object = 2, .seed = 7}, print_step);
 //
 // Each returned step carries everything it produced: the decision, the belief before and after,
 // what the planner was told and, in a world with a robot, the robot's report, the clip and what

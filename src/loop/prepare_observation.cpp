@@ -5,7 +5,7 @@
 #include "loop/calibrated_problem.h"
 #include "perception/observation_model_json.h"
 #include "perception/recording_set.h"
-#include "sim/dataset.h"
+#include "sim/simulated_recordings.h"
 
 namespace echoplan::loop {
 
@@ -56,13 +56,13 @@ SimulatedTraining training_for(const pomdp::ObjectProblemData& problem,
 bool synthesise_training_set(const SimulatedTraining& training, const ProgressFn& progress,
                              const std::atomic<bool>& stop) {
   if (training.reuse_complete && complete(training)) return true;
-  sim::DatasetOptions options;
+  sim::SimulatedRecordingsOptions options;
   options.objects = training.objects;
   options.actions = training.actions;
   options.per_pair = training.per_pair;
   options.seed = training.seed;
   options.output_dir = training.directory.string();
-  const sim::DatasetSummary written = sim::write_dataset(
+  const sim::SimulatedRecordingsSummary written = sim::write_simulated_recordings(
       *training.catalogue, *training.config, options,
       [&](const std::string&, int done, int total) {
         if (progress) progress("synthesise", done, total);

@@ -41,7 +41,7 @@ struct SimulatedTraining {
   std::vector<std::string> objects;  // catalogue names, the classes
   std::vector<std::string> actions;  // sensing actions
   int per_pair = 10;                 // recordings per (object, action); the report used 10
-  std::uint64_t seed = 0;            // the dataset's seed (sim::write_dataset)
+  std::uint64_t seed = 0;            // the dataset's seed (sim::write_simulated_recordings)
   std::filesystem::path directory;   // where the recordings are written
   perception::TrainOptions train;
   bool reuse_complete = false;

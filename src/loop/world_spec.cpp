@@ -66,7 +66,7 @@ WorldFactory robot_world_factory(const WorldInputs& in, std::function<RobotParts
 
 std::string world_name(const WorldSpec& world) {
   return std::visit(Overloaded{[](const TableWorldSpec&) { return std::string("model"); },
-                               [](const SimulatedWorldSpec&) { return std::string("simulator"); },
+                               [](const SimulatedWorldSpec&) { return std::string("simulated"); },
                                [](const ReplayWorldSpec&) { return std::string("replay"); },
                                [](const PartsWorldSpec& p) { return p.description; },
                                [](const DatasetWorldSpec&) { return std::string("dataset"); }},

@@ -46,7 +46,7 @@ struct PartsWorldSpec {
 using WorldSpec = std::variant<TableWorldSpec, SimulatedWorldSpec, ReplayWorldSpec, PartsWorldSpec,
                                DatasetWorldSpec>;
 
-// "model", "simulator", "replay", "dataset" or the parts' description: what trial.json and
+// "model", "simulated", "replay", "dataset" or the parts' description: what trial.json and
 // messages call it.
 std::string world_name(const WorldSpec& world);
 

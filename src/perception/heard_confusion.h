@@ -1,7 +1,7 @@
 // What a classifier hears in a recording set: per sensing action, the leave-one-out confusion of
 // the set's objects (each recording classified by the classifier fitted on every other recording of
 // its action), with no reject option. The report's own measure of how well its classifier heard
-// (issue 24's behavioural realism; bench/sim_heard.py measures the same through `echoplan train
+// (the behavioural realism measure; bench/sim_heard.py measures the same through `echoplan train
 // --folds 0 --no-reject`), shown on the chapter-5 page beside the lab's counts.
 #pragma once
 

@@ -1,5 +1,5 @@
 // A labelled set of recordings on disk: DIR/<object>/<action>/<file>, optionally with the
-// manifest.csv that `echoplan dataset` writes.
+// manifest.csv that `echoplan synth-recordings` writes.
 //
 // Training and evaluation read recordings through this one loader so that every tool sees the same
 // objects, actions and files in the same order, and every malformed folder gets the same clear

@@ -2,9 +2,9 @@
 // without a robot.
 //
 // ReplayRecorder plays recordings of the trial's true object from DIR/<object>/<action>/* (the
-// layout `echoplan dataset` writes and `echoplan train` reads). Which file an action hears is drawn
-// from the trial's seed: each action deals its files in an order shuffled once per trial, so the
-// same seed replays the same files, and an action repeated within a trial hears a different
+// layout `echoplan synth-recordings` writes and `echoplan train` reads). Which file an action hears
+// is drawn from the trial's seed: each action deals its files in an order shuffled once per trial,
+// so the same seed replays the same files, and an action repeated within a trial hears a different
 // recording each time until its files run out (then the deal starts again).
 //
 // ReplayRobot is the robot that goes with it: the recordings already hold the motion, so every

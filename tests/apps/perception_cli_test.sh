@@ -6,8 +6,8 @@
 
 # Three recordings per (object, action) of the report's problem's four objects; a second seed is held out.
 objects=pringles_can,coffee_mug,plastic_cup,paper_base
-"$bin" dataset --per-pair 3 --seed 1 --objects $objects -o "$work/data" >/dev/null 2>&1 || fail "dataset 1"
-"$bin" dataset --per-pair 2 --seed 2 --objects $objects -o "$work/held" >/dev/null 2>&1 || fail "dataset 2"
+"$bin" synth-recordings --per-pair 3 --seed 1 --objects $objects -o "$work/data" >/dev/null 2>&1 || fail "dataset 1"
+"$bin" synth-recordings --per-pair 2 --seed 2 --objects $objects -o "$work/held" >/dev/null 2>&1 || fail "dataset 2"
 
 "$bin" train --data "$work/data" --out "$work/model.json" --problem-out "$work/problem.yaml" \
   --problem-base "$src/problems/audio_objects.yaml" >"$work/train.out" 2>"$work/train.err" || { fail "train exited $?"; cat "$work/train.err"; }

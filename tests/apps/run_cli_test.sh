@@ -40,7 +40,7 @@ for clip in "$work/a/clips/"*; do
 done
 
 # Replay: recordings from a folder drive the loop; every clip heard is one of the true object's files.
-"$bin" dataset --per-pair 2 --seed 9 -o "$work/recordings" \
+"$bin" synth-recordings --per-pair 2 --seed 9 -o "$work/recordings" \
   --objects pringles_can,coffee_mug,plastic_cup,paper_base >/dev/null 2>&1 || fail "dataset exited $?"
 "$bin" run --object coffee_mug --model "$work/a/model.json" --recordings "$work/recordings" \
   --episodes 300 --seed 4 --out "$work/c" >"$work/c.out" 2>"$work/c.err" || { fail "replay exited $?"; cat "$work/c.err"; }

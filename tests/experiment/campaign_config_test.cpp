@@ -210,7 +210,7 @@ TEST_F(DatasetCampaignConfig, ReadsTheDataHoldOutGroupsRewardsAndStrategies) {
   EXPECT_EQ(c.world.type, WorldType::dataset);
   EXPECT_EQ(c.world.data, (dir_ / "data").string());
   EXPECT_EQ(c.world.groups, (dir_ / "groups.csv").string());
-  EXPECT_EQ(c.world.hold_out, "object");
+  EXPECT_EQ(c.world.hold_out, perception::HoldOut::object);
   EXPECT_EQ(c.rewards.right, 5);
   EXPECT_EQ(c.rewards.wrong, -50);
   EXPECT_EQ(c.rewards.sense, -2);
@@ -227,7 +227,7 @@ TEST_F(DatasetCampaignConfig, DefaultsAreTheReportsRewardsAndSessions) {
   const CampaignConfig c = parse_campaign_config(
       "world: {type: dataset, data: data}\narms: [{name: plan}]\nplanner: {episodes: 10}\n",
       source());
-  EXPECT_EQ(c.world.hold_out, "session");
+  EXPECT_EQ(c.world.hold_out, perception::HoldOut::session);
   EXPECT_EQ(c.rewards.right, 10);
   EXPECT_EQ(c.rewards.wrong, -100);
   EXPECT_EQ(c.rewards.sense, -1);
@@ -241,7 +241,8 @@ TEST_F(DatasetCampaignConfig, MistakesNameTheLineAndTheProblem) {
     return error(text);
   };
   EXPECT_NE(replaced("data: data", "data: nowhere").find("does not exist"), std::string::npos);
-  EXPECT_NE(replaced("hold_out: object", "hold_out: trial").find("hold_out 'trial'"),
+  EXPECT_NE(replaced("hold_out: object", "hold_out: trial")
+                .find("hold-out 'trial': expected session or object"),
             std::string::npos);
   EXPECT_NE(replaced(", groups: groups.csv", "").find("hold_out: object needs groups"),
             std::string::npos);

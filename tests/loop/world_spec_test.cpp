@@ -104,7 +104,7 @@ TEST(WorldFactory, EachCallBuildsAnIndependentWorld) {
 
 TEST(WorldFactory, NamesEachWorld) {
   EXPECT_EQ(world_name(TableWorldSpec{}), "model");
-  EXPECT_EQ(world_name(simulator()), "simulator");
+  EXPECT_EQ(world_name(simulator()), "simulated");
   EXPECT_EQ(world_name(ReplayWorldSpec{"dir"}), "replay");
   EXPECT_EQ(world_name(PartsWorldSpec{{}, "ros"}), "ros");
 }

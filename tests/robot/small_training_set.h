@@ -1,6 +1,6 @@
 // Test fixture shared by the robot and experiment tests: a few simulated recordings per object and
 // action written to a temporary folder, and the observation model trained on them (the real
-// pipeline: sim::write_dataset, perception::load_recording_set,
+// pipeline: sim::write_simulated_recordings, perception::load_recording_set,
 // perception::train_observation_model).
 #pragma once
 
@@ -15,7 +15,7 @@
 #include "perception/observation_model.h"
 #include "perception/recording_set.h"
 #include "sim/catalogue.h"
-#include "sim/dataset.h"
+#include "sim/simulated_recordings.h"
 
 namespace echoplan::testing {
 
@@ -38,14 +38,14 @@ inline void write_small_dataset(const std::filesystem::path& dir,
                                 const std::vector<std::string>& actions, int per_pair,
                                 std::uint64_t seed) {
   std::filesystem::remove_all(dir);
-  sim::DatasetOptions options;
+  sim::SimulatedRecordingsOptions options;
   options.objects = objects;
   options.actions = actions;
   options.per_pair = per_pair;
   options.seed = seed;
   options.output_dir = dir.string();
   const std::atomic<bool> never{false};
-  sim::write_dataset(shipped_catalogue(), sim::SimConfig{}, options, {}, never);
+  sim::write_simulated_recordings(shipped_catalogue(), sim::SimConfig{}, options, {}, never);
 }
 
 // A model trained on `per_pair` simulated recordings per (object, action).

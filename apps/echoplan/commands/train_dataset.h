@@ -18,7 +18,7 @@ struct DatasetTrainFlags {
   std::string groups;       // optional groups file
   std::string hold_out;     // "session" (default) or "object"
   std::string classifier = "lda";
-  loop::DatasetRewards rewards;
+  loop::TaskRewards rewards;
 };
 
 // Adds --groups, --hold-out, --feature-classifier and the --reward-* options to `cmd`.

@@ -1,4 +1,4 @@
-#include "sim/dataset.h"
+#include "sim/simulated_recordings.h"
 
 #include <gtest/gtest.h>
 
@@ -32,14 +32,14 @@ std::string file_bytes(const fs::path& path) {
 TEST(Dataset, WritesEveryPairAndAManifestThatReproducesEachFile) {
   const fs::path dir = fs::temp_directory_path() / "echoplan_dataset_test";
   fs::remove_all(dir);
-  DatasetOptions options;
+  SimulatedRecordingsOptions options;
   options.objects = {"coffee_mug", "plastic_cup"};
   options.per_pair = 2;
   options.seed = 99;
   options.output_dir = dir.string();
   std::atomic<bool> stop{false};
   int calls = 0;
-  const DatasetSummary s = write_dataset(
+  const SimulatedRecordingsSummary s = write_simulated_recordings(
       shipped_catalogue(), SimConfig{}, options,
       [&](const std::string&, int done, int total) {
         ++calls;
@@ -84,14 +84,14 @@ TEST(Dataset, WritesEveryPairAndAManifestThatReproducesEachFile) {
 TEST(Dataset, StoppingKeepsFinishedFilesAndTheirRows) {
   const fs::path dir = fs::temp_directory_path() / "echoplan_dataset_stop_test";
   fs::remove_all(dir);
-  DatasetOptions options;
+  SimulatedRecordingsOptions options;
   options.objects = {"paper_base"};
   options.actions = {"strike"};
   options.per_pair = 5;
   options.output_dir = dir.string();
   options.threads = 1;  // one clip in progress at a time: stopping after the 2nd leaves exactly 2
   std::atomic<bool> stop{false};
-  const DatasetSummary s = write_dataset(
+  const SimulatedRecordingsSummary s = write_simulated_recordings(
       shipped_catalogue(), SimConfig{}, options,
       [&](const std::string&, int done, int) { stop = done == 2; }, stop);
   EXPECT_TRUE(s.interrupted);
@@ -111,14 +111,16 @@ TEST(Dataset, TwoThreadsWriteTheSameFilesAsOne) {
     const fs::path dir =
         fs::temp_directory_path() / ("echoplan_dataset_threads_" + std::to_string(threads));
     fs::remove_all(dir);
-    DatasetOptions options;
+    SimulatedRecordingsOptions options;
     options.objects = {"plastic_cup", "coffee_mug"};
     options.actions = {"strike"};
     options.per_pair = 2;
     options.output_dir = dir.string();
     options.threads = threads;
     std::atomic<bool> stop{false};
-    EXPECT_EQ(write_dataset(shipped_catalogue(), SimConfig{}, options, nullptr, stop).written, 4);
+    EXPECT_EQ(write_simulated_recordings(shipped_catalogue(), SimConfig{}, options, nullptr, stop)
+                  .written,
+              4);
     std::ifstream in(dir / "manifest.csv");
     manifests.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     std::string bytes;
@@ -137,14 +139,16 @@ TEST(Dataset, TwoThreadsWriteTheSameFilesAsOne) {
 TEST(Dataset, UnknownNamesFailBeforeAnyFileIsWritten) {
   const fs::path dir = fs::temp_directory_path() / "echoplan_dataset_bad_test";
   fs::remove_all(dir);
-  DatasetOptions options;
+  SimulatedRecordingsOptions options;
   options.output_dir = dir.string();
   std::atomic<bool> stop{false};
   options.objects = {"teapot"};
-  EXPECT_THROW(write_dataset(shipped_catalogue(), SimConfig{}, options, nullptr, stop), InputError);
+  EXPECT_THROW(write_simulated_recordings(shipped_catalogue(), SimConfig{}, options, nullptr, stop),
+               InputError);
   options.objects = {"coffee_mug"};
   options.actions = {"juggle"};
-  EXPECT_THROW(write_dataset(shipped_catalogue(), SimConfig{}, options, nullptr, stop), InputError);
+  EXPECT_THROW(write_simulated_recordings(shipped_catalogue(), SimConfig{}, options, nullptr, stop),
+               InputError);
   EXPECT_FALSE(fs::exists(dir));
 }
 

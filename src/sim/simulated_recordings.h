@@ -1,8 +1,8 @@
-// Recording datasets: every (object, action) pair recorded `per_pair` times into
+// Simulated recordings: every (object, action) pair simulated and recorded `per_pair` times into
 // DIR/<object>/<action>/NNN.wav, with DIR/manifest.csv listing each file, its seed and the trial's
 // sampled parameters.
 //
-// Each clip has its own seed, derived from the dataset seed and the clip's object, action and
+// Each clip has its own seed, derived from the recordings' seed and the clip's object, action and
 // index, so `echoplan synth --object O --action A --seed <manifest seed>` reproduces any file bit
 // for bit and adding objects does not change the others' recordings. Files appear atomically
 // (written under a temporary name, then renamed) and each manifest row is flushed after its file,
@@ -20,7 +20,7 @@
 
 namespace echoplan::sim {
 
-struct DatasetOptions {
+struct SimulatedRecordingsOptions {
   std::vector<std::string> objects;  // catalogue names; empty = every object in the catalogue
   std::vector<std::string> actions{"slide", "strike"};
   int per_pair = 10;  // recordings per (object, action), >= 1
@@ -29,21 +29,23 @@ struct DatasetOptions {
   int threads = 2;  // worker threads (>= 1); the files and manifest do not depend on it
 };
 
-struct DatasetSummary {
+struct SimulatedRecordingsSummary {
   int written = 0;     // clips written (and rows in the manifest)
   int collisions = 0;  // of which the arm touched the table
   bool interrupted = false;
 };
 
-// The seed of clip `index` of (object, action) in a dataset with seed `seed`.
+// The seed of clip `index` of (object, action) in recordings written with seed `seed`.
 std::uint64_t clip_seed(std::uint64_t seed, const std::string& object, const std::string& action,
                         int index);
 
-// Writes the dataset. `progress(file, done, total)` is called after each clip. Stops early, with
-// summary.interrupted set, when `stop` becomes true (checked between clips). Throws InputError for
-// unknown object or action names (before writing anything) and if a file cannot be written.
-DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config,
-                             const DatasetOptions& options, const ProgressFn& progress,
-                             const std::atomic<bool>& stop);
+// Writes the recordings tree. `progress(file, done, total)` is called after each clip. Stops early,
+// with summary.interrupted set, when `stop` becomes true (checked between clips). Throws InputError
+// for unknown object or action names (before writing anything) and if a file cannot be written.
+SimulatedRecordingsSummary write_simulated_recordings(const Catalogue& catalogue,
+                                                      const SimConfig& config,
+                                                      const SimulatedRecordingsOptions& options,
+                                                      const ProgressFn& progress,
+                                                      const std::atomic<bool>& stop);
 
 }  // namespace echoplan::sim

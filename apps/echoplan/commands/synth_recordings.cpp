@@ -1,27 +1,30 @@
-// `echoplan dataset`: record every (object, action) pair several times into a folder with a
-// manifest.
-#include "sim/dataset.h"
-
+// `echoplan synth-recordings` (formerly `dataset`, still accepted): simulate every (object, action)
+// pair several times into a recordings tree with a manifest. "Dataset" is kept for recorded data
+// replayed (the dataset world); this writes simulated recordings.
 #include <fmt/core.h>
 
 #include "commands/commands.h"
 #include "commands/sim_options.h"
 #include "common/stop_signal.h"
+#include "sim/simulated_recordings.h"
 
 namespace echoplan::cli {
 
-void add_dataset_command(CLI::App& app) {
+void add_synth_recordings_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
-      "dataset",
-      "Record every (object, action) pair --per-pair times: DIR/<object>/<action>/NNN.wav and "
+      "synth-recordings",
+      "Simulate and record every (object, action) pair --per-pair times: a recordings tree "
+      "DIR/<object>/<action>/NNN.wav and "
       "DIR/manifest.csv "
       "(file, object, action, seed, collision, duration, impacts, sampled parameters, session: "
       "recording i of each action is session i + 1).\n"
-      "Example: echoplan dataset --per-pair 10 --seed 1 -o recordings --objects "
-      "coffee_mug,plastic_cup");
+      "Example: echoplan synth-recordings --per-pair 10 --seed 1 -o recordings --objects "
+      "coffee_mug,plastic_cup\n"
+      "(`echoplan dataset`, its earlier name, still works.)");
+  cmd->alias("dataset");
   struct Options {
     SimFiles files;
-    sim::DatasetOptions dataset;
+    sim::SimulatedRecordingsOptions dataset;
   };
   auto opt = std::make_shared<Options>();
   cmd->add_option("--per-pair", opt->dataset.per_pair, "Recordings per (object, action)")
@@ -49,7 +52,7 @@ void add_dataset_command(CLI::App& app) {
     // Ctrl-C stops the writer after the clips in progress, so every file on disk is complete and
     // listed in the manifest.
     const StopSignal stop;
-    const sim::DatasetSummary summary = sim::write_dataset(
+    const sim::SimulatedRecordingsSummary summary = sim::write_simulated_recordings(
         setup.catalogue, setup.config, opt->dataset,
         [](const std::string& file, int done, int total) {
           fmt::print(stderr, "[{}/{}] {}\n", done, total, file);

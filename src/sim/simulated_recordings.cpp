@@ -1,4 +1,4 @@
-#include "sim/dataset.h"
+#include "sim/simulated_recordings.h"
 
 #include <fmt/format.h>
 
@@ -81,9 +81,11 @@ std::string manifest_row(const std::string& relative, const std::string& object,
 
 }  // namespace
 
-DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config,
-                             const DatasetOptions& options, const ProgressFn& progress,
-                             const std::atomic<bool>& stop) {
+SimulatedRecordingsSummary write_simulated_recordings(const Catalogue& catalogue,
+                                                      const SimConfig& config,
+                                                      const SimulatedRecordingsOptions& options,
+                                                      const ProgressFn& progress,
+                                                      const std::atomic<bool>& stop) {
   namespace fs = std::filesystem;
   const std::vector<std::string> objects =
       options.objects.empty() ? catalogue.object_names() : options.objects;
@@ -114,7 +116,7 @@ DatasetSummary write_dataset(const Catalogue& catalogue, const SimConfig& config
   std::size_t next_row = 0;
   std::atomic<std::size_t> next_job{0};
   std::mutex mutex;
-  DatasetSummary summary;
+  SimulatedRecordingsSummary summary;
   std::exception_ptr failure;
   auto write_row = [&](const Done& d) {
     manifest << d.row << '\n' << std::flush;

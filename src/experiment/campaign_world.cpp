@@ -1,0 +1,330 @@
+#include "experiment/campaign_world.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+
+#include "common/error.h"
+#include "experiment/dataset_campaign.h"
+#include "loop/calibrated_problem.h"
+#include "loop/loop.h"
+#include "loop/object_problem.h"
+#include "loop/prepare_observation.h"
+#include "loop/streams.h"
+#include "perception/heard_confusion.h"
+#include "sim/sound_action.h"
+
+namespace echoplan::experiment {
+
+namespace fs = std::filesystem;
+
+std::vector<HeardCounts> CampaignWorld::heard(const CampaignConfig&) const { return {}; }
+std::vector<TemplateMatrix> CampaignWorld::templates() const { return {}; }
+
+namespace {
+
+// The file's name without its folder and extension, for the page's title.
+std::string title_of(const CampaignConfig& config) {
+  return "echoplan campaign: " + fs::path(config.source).stem().string();
+}
+
+// Problem files decide the objects, actions and rewards; the world is the world problem's table
+// (model) or the simulator with the trained classifier (simulated).
+class ProblemFileWorld final : public CampaignWorld {
+ public:
+  ProblemFileWorld(bool simulates, fs::path directory)
+      : simulates_(simulates), training_(std::move(directory) / "training") {}
+
+  void open(CampaignConfig& config, CampaignResults& results, InputFiles& files) override;
+  std::optional<ArmLoops> prepare(const CampaignConfig& config, const ProgressFn& progress,
+                                  const std::atomic<bool>& stop) override;
+  std::vector<HeardCounts> heard(const CampaignConfig& config) const override;
+  std::vector<TemplateMatrix> templates() const override {
+    return template_matrices(recordings_, training_objects_, training_actions_);
+  }
+
+ private:
+  // A trained classifier is needed: an arm calibrates, or the simulator's sound is heard.
+  bool needs_classifier(const CampaignConfig& config) const;
+  void load_problems(const CampaignConfig& config, CampaignResults& results, InputFiles& files);
+  void check_objects(const CampaignConfig& config, const pomdp::ModelSpec& spec);
+  void load_simulator(const CampaignConfig& config, InputFiles& files);
+  void load_given_model(const CampaignConfig& config, InputFiles& files);
+  WorldPresentation presentation(const CampaignConfig& config) const;
+  loop::SimulatedTraining simulated_training(const CampaignConfig& config) const;
+  std::shared_ptr<const perception::ObservationModel> classifier(const CampaignConfig& config,
+                                                                 const ProgressFn& progress,
+                                                                 const std::atomic<bool>& stop);
+  ArmLoops make_loops(const CampaignConfig& config) const;
+
+  bool simulates_;
+  fs::path training_;    // DIR/training: the model, the calibrated problems
+  fs::path recordings_;  // the training set: training_set.recordings or DIR/training/recordings
+  std::vector<std::string> training_objects_, training_actions_;
+  std::shared_ptr<const pomdp::Problem> world_problem_;
+  // Each arm's problem as its file says; prepare() puts a calibrating arm's calibrated problem in
+  // its place.
+  std::vector<std::shared_ptr<const pomdp::Problem>> arm_problems_;
+  std::shared_ptr<const sim::Catalogue> catalogue_;
+  std::shared_ptr<const sim::SimConfig> sim_config_;
+  std::shared_ptr<const perception::ObservationModel> model_;  // given, or trained by prepare()
+};
+
+bool ProblemFileWorld::needs_classifier(const CampaignConfig& config) const {
+  return simulates_ || std::any_of(config.arms.begin(), config.arms.end(),
+                                   [](const CampaignArm& a) { return a.calibrate; });
+}
+
+// The problems: each loads, and all share objects, actions and observations with the world.
+void ProblemFileWorld::load_problems(const CampaignConfig& config, CampaignResults& results,
+                                     InputFiles& files) {
+  world_problem_ = files.problem(config.world.problem);
+  const pomdp::ModelSpec& spec = world_problem_->model->spec();
+  if (spec.state.discrete_value_names.empty())
+    throw InputError(config.world.problem, 0,
+                     "a campaign needs an object-identification problem (objects as its state)");
+  for (const CampaignArm& arm : config.arms) {
+    arm_problems_.push_back(files.problem(arm.problem));
+    loop::check_same_names(*arm_problems_.back(), *world_problem_);
+    // Every solver can be built (unknown names and bad settings fail now, not in a worker).
+    loop::check_planner(arm_planner(config, arm), *arm_problems_.back());
+    if (arm.calibrate) loop::object_problem(*arm_problems_.back()->model);
+  }
+  results.spec = spec;
+  const auto particles = [](const pomdp::Problem& p) {
+    return p.belief.type == pomdp::BeliefSettings::Type::particle ? p.belief.particles : 0;
+  };
+  results.belief_particles = particles(*arm_problems_.front());
+  for (const auto& p : arm_problems_)
+    if (particles(*p) != results.belief_particles)
+      results.belief_particles = 0;  // arms disagree: show probabilities
+}
+
+// Objects: each group plays an object of the problems, and every object named has a catalogue
+// entry. Fills the training set's objects and actions.
+void ProblemFileWorld::check_objects(const CampaignConfig& config, const pomdp::ModelSpec& spec) {
+  const auto& objects = spec.state.discrete_value_names[0];
+  for (const ObjectGroup& g : config.groups)
+    if (std::find(objects.begin(), objects.end(), g.plays) == objects.end())
+      throw InputError(config.source, 0,
+                       fmt::format("trial group '{}' plays '{}', which is not an object of {}",
+                                   g.object, g.plays, config.world.problem));
+  training_objects_ = config.training.objects.empty() ? objects : config.training.objects;
+  training_actions_ = config.training.actions;
+  // By default the problems' sound-making actions the simulator can perform.
+  if (training_actions_.empty())
+    for (const auto& a : spec.action_names)
+      if (sim::find_sound_action(a)) training_actions_.push_back(a);
+  std::vector<std::string> named = training_objects_;
+  for (const ObjectGroup& g : config.groups) named.push_back(g.object);
+  for (const std::string& o : objects) named.push_back(o);
+  const auto known = catalogue_->object_names();
+  for (const std::string& name : named)
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      throw InputError(config.source, 0,
+                       fmt::format("object '{}' has no entry in the catalogue {} (it has: {})",
+                                   name, catalogue_->source, fmt::join(known, ", ")));
+}
+
+// The simulator's inputs: the catalogue and the sim config, loaded once.
+void ProblemFileWorld::load_simulator(const CampaignConfig& config, InputFiles& files) {
+  const TrainingSetConfig& t = config.training;
+  const std::string catalogue = t.catalogue.empty() ? sim::default_catalogue_path() : t.catalogue;
+  catalogue_ = std::make_shared<const sim::Catalogue>(
+      sim::parse_catalogue(files.text(catalogue), catalogue));
+  sim_config_ = std::make_shared<const sim::SimConfig>(
+      t.sim_config.empty() ? sim::SimConfig{}
+                           : sim::parse_sim_config(files.text(t.sim_config), t.sim_config));
+}
+
+// training_set.model: one for these objects and actions, checked against every calibrating arm
+// and every loop now.
+void ProblemFileWorld::load_given_model(const CampaignConfig& config, InputFiles& files) {
+  model_ = std::make_shared<const perception::ObservationModel>(perception::parse_observation_model(
+      files.text(config.training.model), config.training.model));
+  for (std::size_t a = 0; a < config.arms.size(); ++a)
+    if (config.arms[a].calibrate) loop::calibrate_problem(*arm_problems_[a], *model_);
+  make_loops(config);
+}
+
+WorldPresentation ProblemFileWorld::presentation(const CampaignConfig& config) const {
+  WorldPresentation p;
+  p.title = title_of(config);
+  if (simulates_)
+    p.note =
+        "The world here is the simulator: the simulated robot slides or strikes the object (a "
+        "weighted variant with its added mass), the simulated recorder records, and the "
+        "classifier trained on the synthesised training set reports what it heard. If simulated "
+        "objects are easier to tell apart than the lab's real ones, the numbers here are better "
+        "than the report's for that reason, not because of the planner.";
+  else
+    p.note = fmt::format(
+        "The world here is a problem file's own observation table ({}): "
+        "observations are drawn from it, no sound is synthesised or classified during the trials, "
+        "and a variant object (e.g. a weighted can) behaves exactly as the object it plays. These "
+        "trials measure the planner; they say nothing about how well sound tells the objects "
+        "apart.",
+        config.world.problem);
+  return p;
+}
+
+void ProblemFileWorld::open(CampaignConfig& config, CampaignResults& results, InputFiles& files) {
+  recordings_ = config.training.recordings.empty() ? training_ / "recordings"
+                                                   : fs::path(config.training.recordings);
+  load_problems(config, results, files);
+  load_simulator(config, files);
+  check_objects(config, results.spec);
+  results.world = presentation(config);
+  if (!config.training.recordings.empty() && !fs::is_directory(config.training.recordings))
+    throw InputError(config.training.recordings, 0, "the recordings folder does not exist");
+  if (!config.training.model.empty() && needs_classifier(config))
+    load_given_model(config, files);
+  else if (needs_classifier(config) && config.training.recordings_per_pair == 0 &&
+           config.training.recordings.empty())
+    throw InputError(
+        config.source, 0,
+        "a calibrating arm or a simulated world needs a classifier: give training_set.model, "
+        "training_set.recordings or recordings_per_pair > 0");
+}
+
+// The campaign's training set as the loop synthesises it.
+loop::SimulatedTraining ProblemFileWorld::simulated_training(const CampaignConfig& config) const {
+  loop::SimulatedTraining t;
+  t.catalogue = catalogue_;
+  t.config = sim_config_;
+  t.objects = training_objects_;
+  t.actions = training_actions_;
+  t.per_pair = config.training.recordings_per_pair;
+  t.seed = loop::stream_seed(config.seed, loop::Stream::campaign_training);
+  t.directory = recordings_;
+  t.reuse_complete = true;
+  return t;
+}
+
+// The classifier: training_set.model (loaded already), DIR/training/model.json of an earlier run,
+// or trained now on the training set (and saved there for the user). Null when stopped.
+std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier(
+    const CampaignConfig& config, const ProgressFn& progress, const std::atomic<bool>& stop) {
+  if (model_) return model_;
+  const fs::path saved = training_ / "model.json";
+  if (fs::exists(saved))
+    return loop::prepare_observation(loop::ModelFile{saved.string()}, nullptr, "", progress, stop)
+        .model;
+  loop::RecordingsTraining training{recordings_.string(), {}, saved.string()};
+  if (!config.training.classifier.empty()) training.train.classifier = config.training.classifier;
+  if (!config.training.table.empty())
+    training.train.table = perception::parse_table_estimate(config.training.table);
+  // Both arms must hear the same symbols to be compared trial by trial: no reject option.
+  training.train.reject = false;
+  training.train.seed = loop::stream_seed(config.seed, loop::Stream::campaign_folds);
+  return loop::prepare_observation(training, nullptr, "", progress, stop).model;
+}
+
+std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
+                                                  const ProgressFn& progress,
+                                                  const std::atomic<bool>& stop) {
+  if (config.training.recordings.empty() && config.training.recordings_per_pair > 0 &&
+      !loop::synthesise_training_set(simulated_training(config), progress, stop))
+    return std::nullopt;
+  if (needs_classifier(config)) {
+    fs::create_directories(training_);
+    model_ = classifier(config, progress, stop);
+    if (!model_) return std::nullopt;
+    for (std::size_t a = 0; a < config.arms.size(); ++a) {
+      if (!config.arms[a].calibrate) continue;
+      const std::string file = (training_ / (config.arms[a].name + ".problem.yaml")).string();
+      arm_problems_[a] = loop::calibrate_problem(*arm_problems_[a], *model_, file);
+      loop::save_problem(*arm_problems_[a], file);
+    }
+  }
+  return make_loops(config);
+}
+
+// The checked loop of every arm and group; InputError when a part does not fit.
+ArmLoops ProblemFileWorld::make_loops(const CampaignConfig& config) const {
+  ArmLoops loops(config.arms.size());
+  for (std::size_t a = 0; a < config.arms.size(); ++a)
+    for (const ObjectGroup& group : config.groups) {
+      loop::LoopSettings s;
+      s.problem = arm_problems_[a];
+      s.world_problem = world_problem_;
+      if (simulates_) {
+        s.world = loop::SimulatedWorldSpec{catalogue_, sim_config_};
+        s.classifier = model_;
+        if (group.object != group.plays) s.world_objects[group.plays] = group.object;
+      }
+      s.planner = arm_planner(config, config.arms[a]);
+      s.max_steps = config.planner.max_steps;
+      auto spec = std::make_shared<const loop::LoopSpec>(std::move(s));
+      const int object = loop::object_index(spec->problem(), group.plays);
+      loops[a].push_back({TrialLoop{std::move(spec), object, ""}});
+    }
+  return loops;
+}
+
+// A simulated world's training set as the reference's classifier hears it (the page's comparison
+// with the lab's counts); empty for a reference without `heard`, or no training set.
+std::vector<HeardCounts> ProblemFileWorld::heard(const CampaignConfig& config) const {
+  const std::optional<ReferenceResults>& reference = config.reference;
+  if (!simulates_ || !reference || !reference->heard || !fs::is_directory(recordings_)) return {};
+  std::vector<HeardCounts> heard;
+  for (const perception::HeardConfusion& h : perception::heard_confusion(
+           perception::load_recording_set(recordings_.string()), reference->heard->classifier))
+    heard.push_back({h.action, h.confusion.objects, h.confusion.symbols, h.confusion.counts});
+  return heard;
+}
+
+// Recorded data: the data and its folds instead of problem files, the simulator and trial groups.
+class RecordedDataWorld final : public CampaignWorld {
+ public:
+  void open(CampaignConfig& config, CampaignResults& results, InputFiles& files) override;
+  std::optional<ArmLoops> prepare(const CampaignConfig& config, const ProgressFn& progress,
+                                  const std::atomic<bool>& stop) override {
+    if (!fit_dataset_folds(*trials_, config, progress, stop)) return std::nullopt;
+    return dataset_loops(config, *trials_);
+  }
+
+ private:
+  std::shared_ptr<DatasetTrials> trials_;
+};
+
+void RecordedDataWorld::open(CampaignConfig& config, CampaignResults& results,
+                             InputFiles& /*files*/) {
+  trials_ = std::make_shared<DatasetTrials>(open_dataset(config));
+  config.groups = dataset_groups(*trials_);
+  // Every arm's strategy is checked against the names problem now, not in a worker.
+  for (const CampaignArm& arm : config.arms)
+    loop::check_planner(arm_planner(config, arm), *trials_->names);
+  results.spec = trials_->names->model->spec();
+  results.right_action = right_actions(*trials_);
+  results.sensing_actions = static_cast<int>(trials_->data->actions.size());
+  results.world.title = title_of(config);
+  results.world.note = config.world.model.empty()
+                           ? "The world here is recorded data replayed: each trial is one "
+                             "session of one object, heard by the model fitted on the folds "
+                             "that do not hold it."
+                           : "The world here is recorded data replayed: each trial is one "
+                             "session of one object, heard by a frozen model trained beforehand.";
+  results.world.arm_problem =
+      config.world.model.empty() ? "each fold's problem" : "the frozen model's problem";
+  results.world.pairing = "same objects, same recorded sessions";
+  results.world.per_object = false;
+}
+
+}  // namespace
+
+std::unique_ptr<CampaignWorld> make_campaign_world(const CampaignConfig& config,
+                                                   const fs::path& directory) {
+  switch (config.world.type) {
+    case WorldType::model:
+      return std::make_unique<ProblemFileWorld>(false, directory);
+    case WorldType::simulated:
+      return std::make_unique<ProblemFileWorld>(true, directory);
+    case WorldType::dataset:
+      break;
+  }
+  return std::make_unique<RecordedDataWorld>();
+}
+
+}  // namespace echoplan::experiment
