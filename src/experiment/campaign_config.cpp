@@ -5,6 +5,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -67,17 +68,32 @@ std::uint64_t folder_hash(const std::string& folder) {
 
 }  // namespace
 
-const char* to_string(WorldType type) {
-  switch (type) {
-    case WorldType::simulated:
-      return "simulated";
-    case WorldType::dataset:
-      return "dataset";
-    case WorldType::model:
-      break;
-  }
-  return "model";
+namespace {
+
+constexpr std::array<WorldKind, 3> kWorldKinds{{{WorldType::model, "model", false},
+                                                {WorldType::simulated, "simulated", false},
+                                                {WorldType::dataset, "dataset", true}}};
+
+}  // namespace
+
+const WorldKind& world_kind(WorldType type) {
+  for (const WorldKind& kind : kWorldKinds)
+    if (kind.type == type) return kind;
+  throw std::invalid_argument("world_kind: a WorldType without a kind");
 }
+
+const WorldKind& world_kind(std::string_view word) {
+  std::vector<std::string> words;
+  for (const WorldKind& kind : kWorldKinds) {
+    if (kind.word == word) return kind;
+    words.emplace_back(kind.word);
+  }
+  throw InputError(fmt::format("world type '{}' is not one of: {}", word, fmt::join(words, ", ")));
+}
+
+const char* to_string(WorldType type) { return world_kind(type).word; }
+
+bool WorldConfig::recorded_data() const { return world_kind(type).recorded_data; }
 
 int CampaignConfig::total_trials() const {
   int per_arm = 0;
@@ -104,7 +120,7 @@ nlohmann::json CampaignConfig::identity(const FileText& file_text) const {
     j["arms"].push_back(std::move(a));
   }
   j["world"] = {{"type", to_string(world.type)}, {"problem_sha", content_hash(world.problem)}};
-  if (world.type == WorldType::dataset) {
+  if (world.recorded_data()) {
     j["world"]["data_sha"] = fmt::format("{:016x}", folder_hash(world.data));
     j["world"]["hold_out"] = perception::hold_out_name(world.hold_out);
     j["world"]["groups_sha"] = content_hash(world.groups);
@@ -148,7 +164,7 @@ std::string read_strategy(const YamlReader& f, const YAML::Node& n) {
 }
 
 CampaignArm read_arm(const YamlReader& f, const YAML::Node& a, const std::string& source,
-                     WorldType world) {
+                     bool recorded_data) {
   f.expect_map(a, "an arm");
   f.only_keys(a, {"name", "problem", "calibrate", "strategy"}, "an arm");
   CampaignArm arm;
@@ -156,7 +172,7 @@ CampaignArm read_arm(const YamlReader& f, const YAML::Node& a, const std::string
   if (!is_label(arm.name))
     f.fail(a, "arm name '" + arm.name + "' may hold only letters, digits, '_' and '-'");
   if (auto n = f.optional(a, "strategy", "an arm")) arm.strategy = read_strategy(f, n);
-  if (world == WorldType::dataset) {
+  if (recorded_data) {
     // Every arm of a dataset world decides with the fold's problem, calibrated on the fold.
     for (const char* key : {"problem", "calibrate"})
       if (auto n = f.optional(a, key, "an arm"))
@@ -171,12 +187,12 @@ CampaignArm read_arm(const YamlReader& f, const YAML::Node& a, const std::string
 }
 
 std::vector<CampaignArm> read_arms(const YamlReader& f, const YAML::Node& root,
-                                   const std::string& source, WorldType world) {
+                                   const std::string& source, bool recorded_data) {
   const YAML::Node arms = f.require(root, "arms", "the campaign");
   if (!arms.IsSequence() || arms.size() == 0) f.fail(arms, "arms must be a non-empty list");
   std::vector<CampaignArm> read;
   for (const YAML::Node& a : arms) {
-    CampaignArm arm = read_arm(f, a, source, world);
+    CampaignArm arm = read_arm(f, a, source, recorded_data);
     for (const CampaignArm& other : read)
       if (other.name == arm.name) f.fail(a, "two arms are named '" + arm.name + "'");
     read.push_back(std::move(arm));
@@ -185,10 +201,12 @@ std::vector<CampaignArm> read_arms(const YamlReader& f, const YAML::Node& root,
 }
 
 WorldType read_world_type(const YamlReader& f, const YAML::Node& world) {
-  const std::string type = f.name(f.require(world, "type", "world"), "world type");
-  for (WorldType t : {WorldType::model, WorldType::simulated, WorldType::dataset})
-    if (type == to_string(t)) return t;
-  f.fail(world, "world type '" + type + "' is not one of: model, simulated, dataset");
+  const YAML::Node type = f.require(world, "type", "world");
+  try {
+    return world_kind(f.name(type, "world type")).type;
+  } catch (const InputError& e) {
+    f.fail(type, e.problem());
+  }
 }
 
 // A dataset world: where the data is, what a trial holds out, what the objects are sorted by.
@@ -228,7 +246,7 @@ WorldConfig read_world(const YamlReader& f, const YAML::Node& root, const std::s
   f.expect_map(world, "world");
   WorldConfig w;
   w.type = read_world_type(f, world);
-  if (w.type == WorldType::dataset) {
+  if (w.recorded_data()) {
     read_dataset_world(f, world, source, w);
     return w;
   }
@@ -383,10 +401,10 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
     }
   }
   c.world = read_world(f, root, source);
-  c.arms = read_arms(f, root, source, c.world.type);
+  c.arms = read_arms(f, root, source, c.world.recorded_data());
   if (auto t = f.optional(root, "training_set", "campaign"))
     c.training = read_training_set(f, t, source);
-  if (c.world.type == WorldType::dataset) {
+  if (c.world.recorded_data()) {
     read_dataset_sections(f, root, c);
   } else {
     c.groups = read_trial_groups(f, root);
@@ -416,7 +434,7 @@ nlohmann::json to_json(const CampaignConfig& c) {
     j["arms"].push_back(std::move(a));
   }
   j["world"] = {{"type", to_string(c.world.type)}, {"problem", c.world.problem}};
-  if (c.world.type == WorldType::dataset) {
+  if (c.world.recorded_data()) {
     j["world"]["data"] = c.world.data;
     j["world"]["hold_out"] = perception::hold_out_name(c.world.hold_out);
     j["world"]["groups"] = c.world.groups;
@@ -470,17 +488,13 @@ WorldConfig world_from_json(const nlohmann::json& j, const jf::JsonSource& sourc
   const nlohmann::json& w = jf::member(j, "world", "", source);
   WorldConfig world;
   const std::string type = jf::string(jf::member(w, "type", "world", source), "world.type", source);
-  bool known = false;
-  for (WorldType t : {WorldType::model, WorldType::simulated, WorldType::dataset})
-    if (type == to_string(t)) {
-      world.type = t;
-      known = true;
-    }
-  if (!known)
-    throw InputError(source.file, source.line,
-                     "world.type: '" + type + "' is not one of: model, simulated, dataset");
+  try {
+    world.type = world_kind(type).type;
+  } catch (const InputError& e) {
+    throw InputError(source.file, source.line, "world.type: " + e.problem());
+  }
   world.problem = jf::string(jf::member(w, "problem", "world", source), "world.problem", source);
-  if (world.type == WorldType::dataset) {
+  if (world.recorded_data()) {
     const auto text = [&](const char* key) {
       return jf::string(jf::member(w, key, "world", source), jf::child("world", key), source);
     };

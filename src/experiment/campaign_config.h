@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "experiment/reference_results.h"
@@ -62,7 +63,18 @@ enum class WorldType {
   dataset,
 };
 
-// "model", "simulated", "dataset": the words of the campaign file.
+// The kinds of world, declared once: the campaign file's word for each, and whether it replays
+// recorded data (its configuration then names data instead of problem files and trial groups).
+struct WorldKind {
+  WorldType type;
+  const char* word;  // "model", "simulated", "dataset"
+  bool recorded_data;
+};
+const WorldKind& world_kind(WorldType type);
+// The kind whose word is `word`; InputError listing the words for another.
+const WorldKind& world_kind(std::string_view word);
+
+// world_kind(type).word.
 const char* to_string(WorldType type);
 
 struct WorldConfig {
@@ -76,6 +88,9 @@ struct WorldConfig {
   // A frozen observation model file (`echoplan train --out`): no folds, every session replayed
   // with it (a model trained one day, judged on data recorded another). Empty: fit per fold.
   std::string model;
+
+  // The world replays recorded data (world_kind(type).recorded_data).
+  bool recorded_data() const;
 };
 
 // The training set synthesised before the trials (`echoplan synth-recordings`'s library code).
