@@ -35,59 +35,6 @@ int ConfusionMatrix::total() const {
   return sum;
 }
 
-std::vector<std::vector<double>> dirichlet_smoothed(const ConfusionMatrix& confusion,
-                                                    double alpha) {
-  std::vector<std::vector<double>> counts;
-  for (const auto& row : confusion.counts) counts.emplace_back(row.begin(), row.end());
-  return dirichlet_smoothed(counts, confusion.objects, alpha);
-}
-
-std::vector<std::vector<double>> dirichlet_smoothed(const std::vector<std::vector<double>>& counts,
-                                                    const std::vector<std::string>& objects,
-                                                    double alpha) {
-  if (!(alpha >= 0.0)) throw std::invalid_argument("Dirichlet pseudo-count alpha must be >= 0");
-  std::vector<std::vector<double>> table;
-  for (std::size_t k = 0; k < counts.size(); ++k) {
-    const auto& row = counts[k];
-    const double n = std::accumulate(row.begin(), row.end(), 0.0);
-    const double denominator = n + alpha * static_cast<double>(row.size());
-    if (!(denominator > 0.0))
-      throw std::invalid_argument("confusion row '" + (k < objects.size() ? objects[k] : "?") +
-                                  "' has no counts and alpha is 0");
-    std::vector<double> p(row.size());
-    for (std::size_t o = 0; o < row.size(); ++o) p[o] = (row[o] + alpha) / denominator;
-    table.push_back(std::move(p));
-  }
-  return table;
-}
-
-std::vector<std::vector<double>> soft_confusion(std::span<const std::vector<double>> log_scores,
-                                                std::span<const int> labels,
-                                                const std::vector<bool>& rejected, int num_classes,
-                                                int num_symbols, double temperature) {
-  if (num_classes < 1 || (num_symbols != num_classes && num_symbols != num_classes + 1))
-    throw std::invalid_argument("soft_confusion: num_symbols must be num_classes or one more");
-  if (log_scores.size() != labels.size() || (!rejected.empty() && rejected.size() != labels.size()))
-    throw std::invalid_argument("soft_confusion: one label (and reject flag) per clip");
-  const auto classes = static_cast<std::size_t>(num_classes);
-  std::vector<std::vector<double>> counts(
-      classes, std::vector<double>(static_cast<std::size_t>(num_symbols)));
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    if (labels[i] < 0 || labels[i] >= num_classes || log_scores[i].size() != classes)
-      throw std::invalid_argument("soft_confusion: a label or a score row out of range");
-    auto& row = counts[static_cast<std::size_t>(labels[i])];
-    if (!rejected.empty() && rejected[i]) {
-      if (num_symbols == num_classes)
-        throw std::invalid_argument("soft_confusion: a rejected clip needs the unknown symbol");
-      row[classes] += 1.0;
-      continue;
-    }
-    const std::vector<double> p = softmax(log_scores[i], temperature);
-    for (std::size_t c = 0; c < classes; ++c) row[c] += p[c];
-  }
-  return counts;
-}
-
 std::vector<double> softmax(std::span<const double> log_scores, double temperature) {
   std::vector<double> p(log_scores.size());
   if (p.empty()) return p;

@@ -1,11 +1,7 @@
-// From what a classifier really does to the planner's observation model P(o | object, action).
-//
-// Cross-validation gives, per action, a confusion matrix of counts (object x reported symbol). A
-// row with few recordings estimates its probabilities poorly and may hold zeros that would let one
-// observation rule an object out for good, so each row is smoothed with a symmetric Dirichlet prior
-// (add alpha to every count). Temperature scaling turns classifier log-scores into calibrated
-// probabilities: one number T per action, chosen to minimise the cross-validated negative
-// log-likelihood of the true classes.
+// Calibrating a classifier's scores: the confusion of its held-out decisions (object x reported
+// symbol, what the table estimator of observation_table.h starts from), and temperature scaling,
+// which turns log-scores into calibrated probabilities: one number T per action, chosen to
+// minimise the cross-validated negative log-likelihood of the true classes.
 #pragma once
 
 #include <span>
@@ -27,27 +23,6 @@ struct ConfusionMatrix {
   double accuracy() const;
   int total() const;
 };
-
-// P(symbol | object): (counts[k][o] + alpha) / (sum_o counts[k][o] + alpha * symbols). alpha >= 0;
-// a row with no counts and alpha == 0 is an error (std::invalid_argument). alpha = 1 is Laplace's
-// rule.
-std::vector<std::vector<double>> dirichlet_smoothed(const ConfusionMatrix& confusion, double alpha);
-// The same rule on real-valued counts (e.g. soft_confusion's); `objects` names the rows in errors.
-std::vector<std::vector<double>> dirichlet_smoothed(const std::vector<std::vector<double>>& counts,
-                                                    const std::vector<std::string>& objects,
-                                                    double alpha);
-
-// The expected confusion under the calibrated classifier ("soft counts"): row labels[i] receives
-// softmax(log_scores[i] / temperature) over the first num_classes symbols instead of a one-hot
-// count of the argmax; a clip with rejected[i] (farther than the reject threshold: reported
-// `unknown` whatever its probabilities) puts its whole unit in symbol num_classes. Each clip adds 1
-// to its row, so rows sum to what the hard counts' rows sum to. num_symbols is num_classes, or
-// num_classes + 1 with the `unknown` symbol; `rejected` is empty or one flag per clip (a flag needs
-// the unknown symbol). Throws std::invalid_argument for mismatched sizes or labels out of range.
-std::vector<std::vector<double>> soft_confusion(std::span<const std::vector<double>> log_scores,
-                                                std::span<const int> labels,
-                                                const std::vector<bool>& rejected, int num_classes,
-                                                int num_symbols, double temperature);
 
 // softmax(log_scores / temperature) (temperature > 0), computed stably.
 std::vector<double> softmax(std::span<const double> log_scores, double temperature);

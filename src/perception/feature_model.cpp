@@ -11,7 +11,7 @@
 #include "perception/calibration.h"
 #include "perception/dataset_folds.h"
 #include "perception/modality_fusion.h"
-#include "perception/shrunk_table.h"
+#include "perception/observation_table.h"
 
 namespace echoplan::perception {
 namespace {
@@ -93,9 +93,8 @@ void measure(ActionFit& fit, const ModalityScores& scores, const std::vector<int
 // [fold] the table shrunk with `strength` from the decisions of every other inner fold: the
 // table each fold's sequences are scored with when the tempering is fitted.
 std::vector<Table> cross_fitted_tables(const TrainingRows& t, const std::vector<int>& decisions,
-                                       std::span<const int> bin_of_class, int num_folds,
-                                       double strength) {
-  const std::size_t classes = bin_of_class.size();
+                                       const DatasetTask& task, int num_folds, double strength) {
+  const std::size_t classes = task.classes.size();
   std::vector<Table> tables;
   for (int f = 0; f < num_folds; ++f) {
     std::vector<std::vector<double>> counts(classes, std::vector<double>(classes, 0.0));
@@ -103,7 +102,9 @@ std::vector<Table> cross_fitted_tables(const TrainingRows& t, const std::vector<
       if (t.fold[i] != f)
         counts[static_cast<std::size_t>(t.labels[i])][static_cast<std::size_t>(decisions[i])] +=
             1.0;
-    tables.push_back(shrink_counts(counts, bin_of_class, strength));
+    tables.push_back(estimate_table(counts, task.classes,
+                                    {TableEstimate::shrunk, 0.0, task.bin_of_class, strength})
+                         .table);
   }
   return tables;
 }
@@ -196,11 +197,11 @@ struct FeatureModelFitter {
     ActionFit fit;
     measure(fit, scores, t.labels, decisions);
     fit.fused_nll = fusion.mean_nll;
-    const ShrunkTable shrunk = shrink_counts(counts, task.bin_of_class);
+    const EstimatedTable shrunk =
+        estimate_table(counts, task.classes, {TableEstimate::shrunk, 0.0, task.bin_of_class, {}});
     fit.shrinkage_strength = shrunk.strength;
-    fit.temper =
-        fit_temper(cross_fitted_tables(t, decisions, task.bin_of_class, num_folds, shrunk.strength),
-                   sequences_of(action, t, decisions));
+    fit.temper = fit_temper(cross_fitted_tables(t, decisions, task, num_folds, shrunk.strength),
+                            sequences_of(action, t, decisions));
     ActionModel model;
     model.weights = fusion.weights;
     model.calibration.action = action.name;

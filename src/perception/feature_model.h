@@ -16,7 +16,8 @@
 //     softmax(fused), started from the best single modality with its temperature, so the fused
 //     model is never worse on the inner folds than the best modality alone (and a pure-noise
 //     modality gets a weight near 0, where equal weights would let it blur the informative one).
-//  4. The table (shrunk_table.h, TableEstimate::shrunk): the counts of (true class, fused held-out
+//  4. The table (observation_table.h, TableEstimate::shrunk): the counts of (true class, fused
+//  held-out
 //     decision), shrunk by empirical Bayes towards a pooled structure (P(right), P(wrong, same
 //     bin), P(other bin), estimated over all classes of the action); then tempered for repeated
 //     performances: rows p^beta renormalised, beta in (0, 1] per action minimising the NLL of the

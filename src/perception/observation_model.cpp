@@ -11,31 +11,6 @@
 
 namespace echoplan::perception {
 
-const char* table_estimate_name(TableEstimate estimate) {
-  switch (estimate) {
-    case TableEstimate::soft:
-      return "soft";
-    case TableEstimate::shrunk:
-      return "shrunk";
-    case TableEstimate::counts:
-      break;
-  }
-  return "counts";
-}
-
-const std::vector<std::string>& table_estimate_names() {
-  static const std::vector<std::string> names{"counts", "soft", "shrunk"};
-  return names;
-}
-
-TableEstimate parse_table_estimate(const std::string& name) {
-  if (name == "counts") return TableEstimate::counts;
-  if (name == "soft") return TableEstimate::soft;
-  if (name == "shrunk") return TableEstimate::shrunk;
-  throw InputError(fmt::format("table estimate '{}' is not one of: {}", name,
-                               fmt::join(table_estimate_names(), ", ")));
-}
-
 std::vector<std::string> observation_symbols(const ModelDescription& description) {
   std::vector<std::string> symbols = description.classes;
   if (description.reject) symbols.emplace_back(kUnknownSymbol);

@@ -24,25 +24,12 @@
 #include "perception/calibration.h"
 #include "perception/classifier.h"
 #include "perception/clip_analysis.h"
+#include "perception/observation_table.h"
 #include "perception/prediction.h"
 
 namespace echoplan::perception {
 
 inline constexpr const char* kUnknownSymbol = "unknown";
-
-// How the cross-validated decisions become the observation table (before Dirichlet smoothing).
-//   counts: each held-out clip adds one to (its object, the symbol it was reported as).
-//   soft:   each held-out clip adds its calibrated probabilities softmax(log_scores / T) to its
-//           object's row (a rejected clip still adds its whole unit to `unknown`): the expected
-//           confusion under the calibrated classifier, so an action that wins by narrow margins
-//           gets a softer row than one that wins by wide margins.
-//   shrunk: the sessions recipe's: counts of fused decisions shrunk by empirical Bayes towards a
-//           pooled structure, then tempered for repeats (shrunk_table.h).
-enum class TableEstimate { counts, soft, shrunk };
-const char* table_estimate_name(TableEstimate estimate);
-const std::vector<std::string>& table_estimate_names();
-// Throws InputError("table estimate '<name>' is not one of: counts, soft, shrunk").
-TableEstimate parse_table_estimate(const std::string& name);
 
 // What every action of a model shares: how clips are analysed, which classifier, what it reports.
 struct ModelDescription {

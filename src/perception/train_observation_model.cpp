@@ -165,12 +165,13 @@ ActionCalibration calibrate(const HeldOut& held, std::span<const int> labels,
     ++c.confusion.counts[static_cast<std::size_t>(
         labels[i])][rejected[i] ? model.classes.size() : static_cast<std::size_t>(held.best[i])];
   }
-  c.table =
-      options.table == TableEstimate::soft
-          ? dirichlet_smoothed(soft_confusion(held.log_scores, labels, rejected, num_classes,
-                                              static_cast<int>(symbols.size()), c.temperature),
-                               model.classes, options.dirichlet_alpha)
-          : dirichlet_smoothed(c.confusion, options.dirichlet_alpha);
+  std::vector<std::vector<double>> counts;
+  if (options.table == TableEstimate::soft)
+    counts = soft_confusion(held.log_scores, labels, rejected, num_classes,
+                            static_cast<int>(symbols.size()), c.temperature);
+  else
+    for (const auto& row : c.confusion.counts) counts.emplace_back(row.begin(), row.end());
+  c.table = estimate_table(counts, model.classes, {options.table, options.dirichlet_alpha}).table;
   return c;
 }
 

@@ -7,6 +7,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "perception/observation_table.h"
+
 namespace echoplan::perception {
 namespace {
 

@@ -7,7 +7,7 @@
 
 #include "common/error.h"
 #include "perception/dataset_folds.h"
-#include "perception/shrunk_table.h"
+#include "perception/observation_table.h"
 #include "synthetic_feature_set.h"
 
 namespace echoplan::perception {

@@ -1,4 +1,4 @@
-#include "perception/shrunk_table.h"
+#include "perception/observation_table.h"
 
 #include <gtest/gtest.h>
 
