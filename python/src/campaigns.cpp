@@ -35,7 +35,8 @@ std::string run_campaign(const std::string& config_path, const std::string& out,
     const auto jobs = experiment::remaining_jobs(campaign, shard);
     experiment::TrialJournal journal(campaign.directory / "journal.jsonl");
     options.stop = &stop;
-    if (!jobs.empty()) experiment::run_campaign_trials(campaign.config, campaign.loops, jobs, journal, options);
+    if (!jobs.empty())
+      experiment::run_campaign_trials(campaign.config, campaign.loops, jobs, journal, options);
     return experiment::rebuild_report(campaign, figures);
   });
 }

@@ -35,7 +35,8 @@ int action_index(const pomdp::Model& model, py::handle action) {
 }
 
 pomdp::Observation to_observation(const pomdp::Model& model, py::handle observation) {
-  if (py::isinstance<pomdp::Observation>(observation)) return observation.cast<pomdp::Observation>();
+  if (py::isinstance<pomdp::Observation>(observation))
+    return observation.cast<pomdp::Observation>();
   pomdp::Observation o;
   if (py::isinstance<py::str>(observation)) {
     const std::string name = observation.cast<std::string>();

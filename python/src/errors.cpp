@@ -12,7 +12,8 @@ namespace echoplan::python {
 void bind_errors(py::module_& m) {
   // A subclass of ValueError: bad input is a bad value, and `except ValueError` catches it. The
   // type lives as long as the interpreter (the translator below needs it at any time).
-  static py::handle input_error = py::exception<InputError>(m, "InputError", PyExc_ValueError).release();
+  static py::handle input_error =
+      py::exception<InputError>(m, "InputError", PyExc_ValueError).release();
   input_error.attr("__doc__") =
       "Bad input: a file, a value, a recording. str(e) is 'file:line: problem'; e.file (may be "
       "empty), e.line (1-based, 0 when the problem is about a whole file or has no line) and "

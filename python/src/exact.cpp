@@ -29,7 +29,8 @@ struct ExactSolver {
     if (auto why = solvers::identification_shape_problem(*tables))
       throw InputError(problem->source_path, 0,
                        "the exact solver needs an identification problem (the state stays fixed "
-                       "until an action ends the episode), and this one is not: " + *why);
+                       "until an action ends the episode), and this one is not: " +
+                           *why);
     solver = std::make_unique<solvers::IdentificationSolver>(
         solvers::read_identification_tables(*tables, solvers::UseLimits(*problem->model)));
   }
@@ -54,41 +55,50 @@ void bind_exact_solver(py::module_& m) {
       "b0, child(node, action, observation) the belief after one more.")
       .def(py::init<ProblemPtr>(), py::arg("problem"))
       .def_property_readonly("root", [](const ExactSolver& s) { return s.solver->root(); })
-      .def("child",
-           [](ExactSolver& s, Node node, py::handle a, py::handle o) {
-             const pomdp::Model& model = *s.problem->model;
-             return s.solver->child(node, action_index(model, a), to_observation(model, o).index);
-           },
-           py::arg("node"), py::arg("action"), py::arg("observation"),
-           "The node after sensing `action` heard `observation` (-1: the episode ended).")
-      .def("value", [](const ExactSolver& s, Node node) { return bounds(s.solver->value(node)); },
-           py::arg("node"), "(lower, upper) bounds on V* at the node.")
-      .def("action_value",
-           [](const ExactSolver& s, Node node, py::handle a) {
-             return bounds(s.solver->action_value(node, action_index(*s.problem->model, a)));
-           },
-           py::arg("node"), py::arg("action"), "(lower, upper) bounds on Q*(node, action).")
-      .def("belief", [](const ExactSolver& s, Node node) { return to_array(s.solver->belief(node)); },
-           py::arg("node"))
-      .def("refine",
-           [](ExactSolver& s, Node node, double gap, double seconds, long expansions) {
-             py::gil_scoped_release release;
-             return s.solver->refine(node, limits(gap, seconds, expansions));
-           },
-           py::arg("node"), py::kw_only(), py::arg("target_gap") = 1e-4, py::arg("seconds") = 0.0,
-           py::arg("expansions") = 0,
-           "Tightens V* at the node to `target_gap` or until a limit (seconds, node expansions; "
-           "0: none). True when the target was reached; the bounds are valid either way.")
-      .def("refine_action",
-           [](ExactSolver& s, Node node, py::handle a, double gap, double seconds, long expansions) {
-             const int action = action_index(*s.problem->model, a);
-             py::gil_scoped_release release;
-             return s.solver->refine_action(node, action, limits(gap, seconds, expansions));
-           },
-           py::arg("node"), py::arg("action"), py::kw_only(), py::arg("target_gap") = 1e-4,
-           py::arg("seconds") = 0.0, py::arg("expansions") = 0)
-      .def_property_readonly("expansions", [](const ExactSolver& s) { return s.solver->expansions(); })
-      .def_property_readonly("num_nodes", [](const ExactSolver& s) { return s.solver->num_nodes(); });
+      .def(
+          "child",
+          [](ExactSolver& s, Node node, py::handle a, py::handle o) {
+            const pomdp::Model& model = *s.problem->model;
+            return s.solver->child(node, action_index(model, a), to_observation(model, o).index);
+          },
+          py::arg("node"), py::arg("action"), py::arg("observation"),
+          "The node after sensing `action` heard `observation` (-1: the episode ended).")
+      .def(
+          "value", [](const ExactSolver& s, Node node) { return bounds(s.solver->value(node)); },
+          py::arg("node"), "(lower, upper) bounds on V* at the node.")
+      .def(
+          "action_value",
+          [](const ExactSolver& s, Node node, py::handle a) {
+            return bounds(s.solver->action_value(node, action_index(*s.problem->model, a)));
+          },
+          py::arg("node"), py::arg("action"), "(lower, upper) bounds on Q*(node, action).")
+      .def(
+          "belief",
+          [](const ExactSolver& s, Node node) { return to_array(s.solver->belief(node)); },
+          py::arg("node"))
+      .def(
+          "refine",
+          [](ExactSolver& s, Node node, double gap, double seconds, long expansions) {
+            py::gil_scoped_release release;
+            return s.solver->refine(node, limits(gap, seconds, expansions));
+          },
+          py::arg("node"), py::kw_only(), py::arg("target_gap") = 1e-4, py::arg("seconds") = 0.0,
+          py::arg("expansions") = 0,
+          "Tightens V* at the node to `target_gap` or until a limit (seconds, node expansions; "
+          "0: none). True when the target was reached; the bounds are valid either way.")
+      .def(
+          "refine_action",
+          [](ExactSolver& s, Node node, py::handle a, double gap, double seconds, long expansions) {
+            const int action = action_index(*s.problem->model, a);
+            py::gil_scoped_release release;
+            return s.solver->refine_action(node, action, limits(gap, seconds, expansions));
+          },
+          py::arg("node"), py::arg("action"), py::kw_only(), py::arg("target_gap") = 1e-4,
+          py::arg("seconds") = 0.0, py::arg("expansions") = 0)
+      .def_property_readonly("expansions",
+                             [](const ExactSolver& s) { return s.solver->expansions(); })
+      .def_property_readonly("num_nodes",
+                             [](const ExactSolver& s) { return s.solver->num_nodes(); });
 }
 
 // Trials held in Python (from run_trials or a loop) as the logged history certify reads.
@@ -98,8 +108,8 @@ std::vector<experiment::LoggedTrial> logged(const std::vector<loop::Trial>& tria
     experiment::LoggedTrial& l = out.emplace_back();
     l.trial = t.record.trial;
     for (const loop::Step& s : t.steps)
-      l.steps.push_back({s.record.step, s.record.action, s.record.observation.index, s.record.reward,
-                         0});
+      l.steps.push_back(
+          {s.record.step, s.record.action, s.record.observation.index, s.record.reward, 0});
   }
   return out;
 }
@@ -168,7 +178,8 @@ void bind_exact(py::module_& m) {
   bind_exact_solver(m);
   const experiment::CertifyOptions defaults;
   m.def("certify", &certify, py::arg("problem"), py::arg("steps"), py::kw_only(),
-        py::arg("gap") = defaults.decision_gap, py::arg("expansions") = defaults.expansions_per_belief,
+        py::arg("gap") = defaults.decision_gap,
+        py::arg("expansions") = defaults.expansions_per_belief,
         py::arg("root_expansions") = defaults.root_expansions, py::arg("worst") = 5,
         "The regret certificate of logged decisions, as `echoplan certify --json` computes it: "
         "`steps` is a steps.csv path or a list of Trial (run_trials, Loop.run). Returns a dict "

@@ -38,12 +38,14 @@ loop::WorldSpec world_of(const py::object& robot, const py::object& recorder, py
   if (!robot.is_none()) {
     if (recorder.is_none()) throw py::value_error("a robot needs a recorder too");
     if (service.is_none()) {
-      if (!model) throw py::value_error("a robot needs an observation service (or a model to classify with)");
+      if (!model)
+        throw py::value_error("a robot needs an observation service (or a model to classify with)");
       service = py::module_::import("echoplan._echoplan").attr("ClassifierService")(model);
     }
     return parts_world(robot, recorder, service, description);
   }
-  if (!recorder.is_none() || !service.is_none()) throw py::value_error("a recorder or service needs a robot");
+  if (!recorder.is_none() || !service.is_none())
+    throw py::value_error("a recorder or service needs a robot");
   if (!recordings.empty()) return loop::ReplayWorldSpec{recordings};
   return loop::TableWorldSpec{};
 }
@@ -107,8 +109,8 @@ void bind_loop(py::module_& m) {
            "index 0 and seed stream_seed(S, 'run_trial'). on_step(step) sees each Step as it "
            "happens. Ctrl-C stops after the step in progress (KeyboardInterrupt).")
       .def("describe", [](const PythonLoop& l) { return l.loop->planner().describe(); })
-      .def_property_readonly("settings",
-                             [](const PythonLoop& l) { return to_python(l.loop->planner().to_json()); });
+      .def_property_readonly(
+          "settings", [](const PythonLoop& l) { return to_python(l.loop->planner().to_json()); });
 }
 
 }  // namespace echoplan::python

@@ -4,6 +4,7 @@
 // set's sessions (the sessions recipe), classifying a clip or a feature row, saved and loaded.
 #include <pybind11/stl.h>
 
+#include <nlohmann/json.hpp>
 #include <numeric>
 #include <optional>
 
@@ -29,7 +30,8 @@ using ModelPtr = std::shared_ptr<ObservationModel>;
 py::array_t<float> take(audio::FeatureMatrix&& matrix) {
   auto* owned = new audio::FeatureMatrix(std::move(matrix));
   py::capsule free_it(owned, [](void* p) { delete static_cast<audio::FeatureMatrix*>(p); });
-  return py::array_t<float>({owned->rows, owned->cols}, owned->values.data(), free_it);
+  return py::array_t<float>({py::ssize_t(owned->rows), py::ssize_t(owned->cols)},
+                            owned->values.data(), free_it);
 }
 
 void bind_clip(py::module_& m) {
@@ -41,24 +43,26 @@ void bind_clip(py::module_& m) {
            py::arg("samples"), py::arg("sample_rate") = 44100)
       .def_readonly("sample_rate", &audio::AudioClip::sample_rate)
       .def_readonly("channels", &audio::AudioClip::channels)
-      .def_property_readonly("samples",
-                             [](py::object self) {
-                               const auto& c = self.cast<const audio::AudioClip&>();
-                               const py::ssize_t ch = c.channels, frames = c.frames();
-                               py::array_t<float> view({frames, ch}, c.samples.data(), self);
-                               view.attr("setflags")(py::arg("write") = false);
-                               return view;
-                             },
-                             "The samples, (frames, channels), a read-only view without a copy.")
+      .def_property_readonly(
+          "samples",
+          [](py::object self) {
+            const auto& c = self.cast<const audio::AudioClip&>();
+            const py::ssize_t ch = c.channels, frames = c.frames();
+            py::array_t<float> view({frames, ch}, c.samples.data(), self);
+            view.attr("setflags")(py::arg("write") = false);
+            return view;
+          },
+          "The samples, (frames, channels), a read-only view without a copy.")
       .def_property_readonly("duration", &audio::AudioClip::duration_seconds, "seconds");
-  m.def("read_audio",
-        [](const std::string& path, int rate) {
-          audio::ReadOptions options;
-          options.target_sample_rate = rate;
-          return audio::read_audio(path, options);
-        },
-        py::arg("path"), py::arg("resample") = 0,
-        "Reads WAV, FLAC or AIFF (libsndfile) as an AudioClip, resampled when `resample` > 0.");
+  m.def(
+      "read_audio",
+      [](const std::string& path, int rate) {
+        audio::ReadOptions options;
+        options.target_sample_rate = rate;
+        return audio::read_audio(path, options);
+      },
+      py::arg("path"), py::arg("resample") = 0,
+      "Reads WAV, FLAC or AIFF (libsndfile) as an AudioClip, resampled when `resample` > 0.");
 }
 
 py::dict features(py::handle samples, int rate, const std::string& preset, py::object channel) {
@@ -97,14 +101,13 @@ void bind_prediction(py::module_& m) {
       .def_readonly("label", &Prediction::label, "A class name or 'unknown'.")
       .def_readonly("unknown", &Prediction::unknown)
       .def_readonly("best_class", &Prediction::best_class)
-      .def_property_readonly("probabilities",
-                             [](const Prediction& p) { return to_array(p.probabilities); },
-                             "Calibrated P(class), in the model's class order.")
+      .def_property_readonly(
+          "probabilities", [](const Prediction& p) { return to_array(p.probabilities); },
+          "Calibrated P(class), in the model's class order.")
       .def_readonly("distance", &Prediction::distance)
       .def_readonly("reject_threshold", &Prediction::reject_threshold)
-      .def("__repr__", [](const Prediction& p) {
-        return "Prediction(" + p.action + ": " + p.label + ")";
-      });
+      .def("__repr__",
+           [](const Prediction& p) { return "Prediction(" + p.action + ": " + p.label + ")"; });
 }
 
 perception::Prediction classify_clip(const ObservationModel& model, py::handle clip,
@@ -131,7 +134,8 @@ perception::Prediction classify_rows(const ObservationModel& model, const std::s
         throw InputError("no row for modality '" + modality.name + "' of action '" + action + "'");
       values.push_back(d[py::str(modality.name)].cast<std::vector<double>>());
     }
-  } else if (modalities.size() == 1 && py::array_t<double>::ensure(rows).ndim() == 1) {
+  } else if (const auto one = py::array_t<double>::ensure(rows);
+             modalities.size() == 1 && one && one.ndim() == 1) {
     values.push_back(rows.cast<std::vector<double>>());
   } else {
     values = rows.cast<std::vector<std::vector<double>>>();
@@ -152,25 +156,30 @@ void bind_model(py::module_& m) {
       .def_property_readonly("observation_symbols", &ObservationModel::observation_symbols)
       .def_property_readonly("classifier_name", &ObservationModel::classifier_name)
       .def_property_readonly("reject", &ObservationModel::reject)
-      .def("modalities",
-           [](const ObservationModel& x, const std::string& action) {
-             std::vector<std::string> names;
-             for (const auto& modality : x.modalities(action)) names.push_back(modality.name);
-             return names;
-           },
-           py::arg("action"))
-      .def("weights", [](const ObservationModel& x, const std::string& a) { return to_array(x.weights(a)); },
-           py::arg("action"), "The fusion weight of each modality.")
-      .def("table",
-           [](const ObservationModel& x, const std::string& action) {
-             const auto& t = x.observation_table(action);
-             py::array_t<double> out({t.size(), t.empty() ? 0 : t[0].size()});
-             auto o = out.mutable_unchecked<2>();
-             for (std::size_t k = 0; k < t.size(); ++k)
-               for (std::size_t s = 0; s < t[k].size(); ++s) o(k, s) = t[k][s];
-             return out;
-           },
-           py::arg("action"), "P(symbol | class) for `action`: classes x observation symbols.")
+      .def(
+          "modalities",
+          [](const ObservationModel& x, const std::string& action) {
+            std::vector<std::string> names;
+            for (const auto& modality : x.modalities(action)) names.push_back(modality.name);
+            return names;
+          },
+          py::arg("action"))
+      .def(
+          "weights",
+          [](const ObservationModel& x, const std::string& a) { return to_array(x.weights(a)); },
+          py::arg("action"), "The fusion weight of each modality.")
+      .def(
+          "table",
+          [](const ObservationModel& x, const std::string& action) {
+            const auto& t = x.observation_table(action);
+            py::array_t<double> out(
+                {py::ssize_t(t.size()), py::ssize_t(t.empty() ? 0 : t[0].size())});
+            auto o = out.mutable_unchecked<2>();
+            for (std::size_t k = 0; k < t.size(); ++k)
+              for (std::size_t s = 0; s < t[k].size(); ++s) o(k, s) = t[k][s];
+            return out;
+          },
+          py::arg("action"), "P(symbol | class) for `action`: classes x observation symbols.")
       .def("classify", &classify_clip, py::arg("clip"), py::arg("action"),
            py::arg("sample_rate") = 44100,
            "Classifies a clip (AudioClip, or a numpy array with its sample_rate) recorded with "
@@ -178,15 +187,24 @@ void bind_model(py::module_& m) {
       .def("classify_rows", &classify_rows, py::arg("action"), py::arg("rows"),
            "Classifies one performance given as feature rows: a dict {modality: row}, a list in "
            "modalities(action) order, or one row for a single modality.")
-      .def("save", [](const ObservationModel& x, const std::string& path) {
-             perception::save_observation_model(x, path);
-           },
-           py::arg("path"), "Writes the model file (JSON), atomically.")
-      .def("to_json", [](const ObservationModel& x) { return to_python(perception::observation_model_to_json(x)); },
-           "The model file's content as Python objects.");
-  m.def("load_observation_model",
-        [](const std::string& path) { return std::make_shared<ObservationModel>(perception::load_observation_model(path)); },
-        py::arg("path"), "Reads a model file; InputError naming the file and field of a mistake.");
+      .def(
+          "save",
+          [](const ObservationModel& x, const std::string& path) {
+            perception::save_observation_model(x, path);
+          },
+          py::arg("path"), "Writes the model file (JSON), atomically.")
+      .def(
+          "to_json",
+          [](const ObservationModel& x) {
+            return to_python(perception::observation_model_to_json(x));
+          },
+          "The model file's content as Python objects.");
+  m.def(
+      "load_observation_model",
+      [](const std::string& path) {
+        return std::make_shared<ObservationModel>(perception::load_observation_model(path));
+      },
+      py::arg("path"), "Reads a model file; InputError naming the file and field of a mistake.");
 }
 
 }  // namespace

@@ -31,8 +31,8 @@ solvers::PlannerOverrides planner_overrides(const py::kwargs& settings) {
     if (it == setters.end()) {
       std::string known;
       for (const auto& [k, unused] : setters) known += (known.empty() ? "" : ", ") + k;
-      throw py::type_error("unexpected keyword argument '" + name + "' (planner settings: " +
-                           known + ")");
+      throw py::type_error("unexpected keyword argument '" + name +
+                           "' (planner settings: " + known + ")");
     }
     if (!value.is_none()) it->second(value);  // None: keep the problem file's
   }

@@ -63,48 +63,54 @@ void bind_planner(py::module_& m) {
            }),
            py::arg("problem"), py::kw_only(), py::arg("seed") = 1, planner_settings_doc())
       .def_property_readonly("name", [](const PythonPlanner& p) { return p.planner.name; })
-      .def_property_readonly("rng", [](PythonPlanner& p) -> Rng& { return p.rng; },
-                             py::return_value_policy::reference_internal,
-                             "The planner's own random stream (used when a call gets no rng).")
+      .def_property_readonly(
+          "rng", [](PythonPlanner& p) -> Rng& { return p.rng; },
+          py::return_value_policy::reference_internal,
+          "The planner's own random stream (used when a call gets no rng).")
       .def("describe", [](const PythonPlanner& p) { return p.planner.describe(); })
-      .def_property_readonly("settings",
-                             [](const PythonPlanner& p) { return to_python(p.planner.to_json()); },
-                             "Solver, budget per step and search options, as summary.json says.")
-      .def("reset",
-           [](PythonPlanner& p, const BeliefHandle& belief, Rng* rng) {
-             p.planner.solver->reset(*belief.belief, rng_or_own(p, rng));
-           },
-           py::arg("belief"), py::arg("rng") = py::none(),
-           "Discards any tree and roots a new one at `belief`.")
-      .def("improve",
-           [](PythonPlanner& p, std::optional<std::int64_t> episodes, std::optional<std::int64_t> ms,
-              Rng* rng) {
-             const solvers::Budget budget = budget_of(p, episodes, ms);
-             Rng& r = rng_or_own(p, rng);
-             py::gil_scoped_release release;  // bounded by its budget: no stop flag needed
-             p.planner.solver->improve(budget, r);
-           },
-           py::kw_only(), py::arg("episodes") = py::none(), py::arg("ms") = py::none(),
-           py::arg("rng") = py::none(),
-           "Searches from the root: `episodes` episodes (the same every run) or `ms` milliseconds "
-           "of wall time; neither: the planner's budget per step.")
-      .def("best_action", [](const PythonPlanner& p) { return p.planner.solver->best_action(); },
-           "The root action with the highest estimated value (after at least one improve()).")
-      .def("action_values",
-           [](const PythonPlanner& p) { return to_array(p.planner.solver->root_action_values()); },
-           "The root's estimated value of each action (NaN for actions never tried).")
-      .def("update",
-           [](PythonPlanner& p, py::handle action, py::handle observation,
-              const BeliefHandle& belief_after, Rng* rng) {
-             const pomdp::Model& model = *p.problem->model;
-             p.planner.solver->update(action_index(model, action),
-                                      to_observation(model, observation), *belief_after.belief,
-                                      rng_or_own(p, rng));
-           },
-           py::arg("action"), py::arg("observation"), py::arg("belief_after"),
-           py::arg("rng") = py::none(),
-           "After acting and hearing: the child for (action, observation) becomes the root; "
-           "`belief_after` (already updated) tops it up when it holds too few particles.")
+      .def_property_readonly(
+          "settings", [](const PythonPlanner& p) { return to_python(p.planner.to_json()); },
+          "Solver, budget per step and search options, as summary.json says.")
+      .def(
+          "reset",
+          [](PythonPlanner& p, const BeliefHandle& belief, Rng* rng) {
+            p.planner.solver->reset(*belief.belief, rng_or_own(p, rng));
+          },
+          py::arg("belief"), py::arg("rng") = py::none(),
+          "Discards any tree and roots a new one at `belief`.")
+      .def(
+          "improve",
+          [](PythonPlanner& p, std::optional<std::int64_t> episodes, std::optional<std::int64_t> ms,
+             Rng* rng) {
+            const solvers::Budget budget = budget_of(p, episodes, ms);
+            Rng& r = rng_or_own(p, rng);
+            py::gil_scoped_release release;  // bounded by its budget: no stop flag needed
+            p.planner.solver->improve(budget, r);
+          },
+          py::kw_only(), py::arg("episodes") = py::none(), py::arg("ms") = py::none(),
+          py::arg("rng") = py::none(),
+          "Searches from the root: `episodes` episodes (the same every run) or `ms` milliseconds "
+          "of wall time; neither: the planner's budget per step.")
+      .def(
+          "best_action", [](const PythonPlanner& p) { return p.planner.solver->best_action(); },
+          "The root action with the highest estimated value (after at least one improve()).")
+      .def(
+          "action_values",
+          [](const PythonPlanner& p) { return to_array(p.planner.solver->root_action_values()); },
+          "The root's estimated value of each action (NaN for actions never tried).")
+      .def(
+          "update",
+          [](PythonPlanner& p, py::handle action, py::handle observation,
+             const BeliefHandle& belief_after, Rng* rng) {
+            const pomdp::Model& model = *p.problem->model;
+            p.planner.solver->update(action_index(model, action),
+                                     to_observation(model, observation), *belief_after.belief,
+                                     rng_or_own(p, rng));
+          },
+          py::arg("action"), py::arg("observation"), py::arg("belief_after"),
+          py::arg("rng") = py::none(),
+          "After acting and hearing: the child for (action, observation) becomes the root; "
+          "`belief_after` (already updated) tops it up when it holds too few particles.")
       .def("stats", [](const PythonPlanner& p) { return stats_of(p.planner.solver->stats()); });
 }
 
@@ -114,8 +120,9 @@ void bind_records(py::module_& m) {
       .def_readonly("step", &loop::StepRecord::step)
       .def_readonly("action", &loop::StepRecord::action)
       .def_readonly("observation", &loop::StepRecord::observation)
-      .def_property_readonly("belief", [](const loop::StepRecord& r) { return to_array(r.belief); },
-                             "The belief the action was chosen from (over the objects).")
+      .def_property_readonly(
+          "belief", [](const loop::StepRecord& r) { return to_array(r.belief); },
+          "The belief the action was chosen from (over the objects).")
       .def_readonly("reward", &loop::StepRecord::reward)
       .def_readonly("episodes", &loop::StepRecord::episodes)
       .def_readonly("heard_probability", &loop::StepRecord::heard_probability);
@@ -128,17 +135,20 @@ void bind_records(py::module_& m) {
       .def_readonly("discounted_reward", &loop::TrialRecord::discounted_reward)
       .def_readonly("collision", &loop::TrialRecord::collision)
       .def_readonly("capped", &loop::TrialRecord::capped);
-  py::class_<loop::Step>(m, "Step", "One real step: the decision, the belief after, the robot's part.")
+  py::class_<loop::Step>(m, "Step",
+                         "One real step: the decision, the belief after, the robot's part.")
       .def_readonly("record", &loop::Step::record)
       .def_property_readonly("action", [](const loop::Step& s) { return s.record.action; })
-      .def_property_readonly("observation", [](const loop::Step& s) { return s.record.observation; })
+      .def_property_readonly("observation",
+                             [](const loop::Step& s) { return s.record.observation; })
       .def_property_readonly("reward", [](const loop::Step& s) { return s.record.reward; })
       .def_property_readonly("belief_after",
                              [](const loop::Step& s) -> py::object {
                                if (!s.belief_after) return py::none();
                                return to_array(*s.belief_after);
                              })
-      .def_readonly("robot", &loop::Step::robot, "In a world with a robot: its report, clip, heard.")
+      .def_readonly("robot", &loop::Step::robot,
+                    "In a world with a robot: its report, clip, heard.")
       .def_readonly("terminal", &loop::Step::terminal);
   py::class_<loop::Trial>(m, "Trial", "A finished trial: its record and its steps.")
       .def_readonly("record", &loop::Trial::record)
@@ -186,15 +196,16 @@ void bind_planners(py::module_& m) {
                      "Returns a list of Trial. Ctrl-C stops after the step in progress.\n") +
          planner_settings_doc())
             .c_str());
-  m.def("stream_seed",
-        [](std::uint64_t seed, const std::string& stream) {
-          if (stream == "run_trial") return loop::stream_seed(seed, loop::Stream::run_trial);
-          if (stream == "run_training") return loop::stream_seed(seed, loop::Stream::run_training);
-          throw py::value_error("stream '" + stream + "' is not one of run_trial, run_training");
-        },
-        py::arg("seed"), py::arg("stream"),
-        "The seed `echoplan run --seed S` gives a stream (loop/streams.h): stream_seed(S, "
-        "'run_trial') is its trial's seed.");
+  m.def(
+      "stream_seed",
+      [](std::uint64_t seed, const std::string& stream) {
+        if (stream == "run_trial") return loop::stream_seed(seed, loop::Stream::run_trial);
+        if (stream == "run_training") return loop::stream_seed(seed, loop::Stream::run_training);
+        throw py::value_error("stream '" + stream + "' is not one of run_trial, run_training");
+      },
+      py::arg("seed"), py::arg("stream"),
+      "The seed `echoplan run --seed S` gives a stream (loop/streams.h): stream_seed(S, "
+      "'run_trial') is its trial's seed.");
 }
 
 }  // namespace echoplan::python

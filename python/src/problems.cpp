@@ -20,12 +20,18 @@ namespace {
 // few lengths Python callers need are spelled out here so the one implementation is used.
 std::uint64_t derive_seed_of(std::uint64_t seed, const std::vector<std::uint64_t>& s) {
   switch (s.size()) {
-    case 0: return derive_seed(seed, {});
-    case 1: return derive_seed(seed, {s[0]});
-    case 2: return derive_seed(seed, {s[0], s[1]});
-    case 3: return derive_seed(seed, {s[0], s[1], s[2]});
-    case 4: return derive_seed(seed, {s[0], s[1], s[2], s[3]});
-    default: throw py::value_error("derive_seed takes at most 4 stream numbers");
+    case 0:
+      return derive_seed(seed, {});
+    case 1:
+      return derive_seed(seed, {s[0]});
+    case 2:
+      return derive_seed(seed, {s[0], s[1]});
+    case 3:
+      return derive_seed(seed, {s[0], s[1], s[2]});
+    case 4:
+      return derive_seed(seed, {s[0], s[1], s[2], s[3]});
+    default:
+      throw py::value_error("derive_seed takes at most 4 stream numbers");
   }
 }
 
@@ -34,10 +40,13 @@ void bind_rng(py::module_& m) {
                   "echoplan's random engine (64-bit Mersenne Twister). Every random choice of a "
                   "call comes from the Rng passed in, so the same seed replays it.")
       .def(py::init<std::uint64_t>(), py::arg("seed") = 1)
-      .def("random", [](Rng& rng) { return uniform01(rng); },
-           "A uniform number in [0, 1), the same on every platform.")
-      .def("next", [](Rng& rng) { return rng(); }, "The engine's next 64-bit output.")
-      .def("copy", [](const Rng& rng) { return rng; }, "An independent copy in the same state.")
+      .def(
+          "random", [](Rng& rng) { return uniform01(rng); },
+          "A uniform number in [0, 1), the same on every platform.")
+      .def(
+          "next", [](Rng& rng) { return rng(); }, "The engine's next 64-bit output.")
+      .def(
+          "copy", [](const Rng& rng) { return rng; }, "An independent copy in the same state.")
       .def("__eq__", [](const Rng& a, const Rng& b) { return a == b; });
   m.def("derive_seed", &derive_seed_of, py::arg("seed"), py::arg("streams"),
         "The seed of an independent stream: derive_seed(seed, [t, 4]) is the planner's stream of "
@@ -64,15 +73,22 @@ void bind_state(py::module_& m) {
                                  "An observation: a discrete symbol `index`, or a continuous "
                                  "vector `values` (index -1). Calls also take a symbol's index or "
                                  "name.")
-      .def(py::init([](int index) { return pomdp::Observation{index, {}}; }), py::arg("index"))
-      .def(py::init([](std::vector<double> values) { return pomdp::Observation{-1, values}; }),
+      .def(py::init([](int index) {
+             return pomdp::Observation{index, {}};
+           }),
+           py::arg("index"))
+      .def(py::init([](std::vector<double> values) {
+             return pomdp::Observation{-1, values};
+           }),
            py::arg("values"))
       .def_readonly("index", &pomdp::Observation::index)
       .def_readonly("values", &pomdp::Observation::values)
-      .def("__eq__", [](const pomdp::Observation& a, const pomdp::Observation& b) { return a == b; })
+      .def("__eq__",
+           [](const pomdp::Observation& a, const pomdp::Observation& b) { return a == b; })
       .def("__repr__", [](const pomdp::Observation& o) {
-        return o.index >= 0 ? "Observation(" + std::to_string(o.index) + ")"
-                            : "Observation(" + py::repr(py::cast(o.values)).cast<std::string>() + ")";
+        return o.index >= 0
+                   ? "Observation(" + std::to_string(o.index) + ")"
+                   : "Observation(" + py::repr(py::cast(o.values)).cast<std::string>() + ")";
       });
   py::class_<pomdp::StepResult>(m, "StepResult", "What one step of the model produced.")
       .def_readonly("next", &pomdp::StepResult::next)
@@ -121,38 +137,44 @@ void bind_model(py::module_& m) {
                              [](const Model& x) { return x.spec().observation.names; })
       .def_property_readonly("discrete_observations",
                              [](const Model& x) { return x.spec().observation.discrete; })
-      .def_property_readonly("objects",
-                             [](const Model& x) {
-                               const auto& v = x.spec().state.discrete_value_names;
-                               return v.empty() ? std::vector<std::string>{} : v[0];
-                             },
-                             "The values of discrete state variable 0 (the objects).")
+      .def_property_readonly(
+          "objects",
+          [](const Model& x) {
+            const auto& v = x.spec().state.discrete_value_names;
+            return v.empty() ? std::vector<std::string>{} : v[0];
+          },
+          "The values of discrete state variable 0 (the objects).")
       .def_property_readonly("discount", [](const Model& x) { return x.spec().discount; })
       .def_property_readonly("num_actions", &Model::num_actions)
-      .def("action_index", [](const Model& x, py::handle a) { return action_index(x, a); },
-           py::arg("action"))
+      .def(
+          "action_index", [](const Model& x, py::handle a) { return action_index(x, a); },
+          py::arg("action"))
       .def("sample_initial_state", &Model::sample_initial_state, py::arg("rng"))
-      .def("step",
-           [](const Model& x, const pomdp::State& s, py::handle a, Rng& rng) {
-             return x.step(s, action_index(x, a), rng);
-           },
-           py::arg("state"), py::arg("action"), py::arg("rng"),
-           "Next state, observation, reward and termination of `action` in `state`.")
-      .def("observation_likelihood",
-           [](const Model& x, const pomdp::State& next, py::handle a, py::handle o) {
-             return x.observation_likelihood(next, action_index(x, a), to_observation(x, o));
-           },
-           py::arg("next_state"), py::arg("action"), py::arg("observation"),
-           "P(observation | next_state, action) (a density for continuous observations).")
+      .def(
+          "step",
+          [](const Model& x, const pomdp::State& s, py::handle a, Rng& rng) {
+            return x.step(s, action_index(x, a), rng);
+          },
+          py::arg("state"), py::arg("action"), py::arg("rng"),
+          "Next state, observation, reward and termination of `action` in `state`.")
+      .def(
+          "observation_likelihood",
+          [](const Model& x, const pomdp::State& next, py::handle a, py::handle o) {
+            return x.observation_likelihood(next, action_index(x, a), to_observation(x, o));
+          },
+          py::arg("next_state"), py::arg("action"), py::arg("observation"),
+          "P(observation | next_state, action) (a density for continuous observations).")
       .def("heuristic_value", &Model::heuristic_value, py::arg("state"))
-      .def("max_uses", [](const Model& x, py::handle a) { return x.max_uses(action_index(x, a)); },
-           py::arg("action"), "How often `action` may be taken in one episode (0: no limit).")
-      .def("tables",
-           [](const Model& x) -> py::object {
-             return x.tabular() ? py::object(tables_of(*x.tabular())) : py::object(py::none());
-           },
-           "The model as tables (dict of arrays: transition[s, a, s'], observation[a, s', o], "
-           "reward[s, a], terminal[s], initial_belief[s], discount), or None when it has none.");
+      .def(
+          "max_uses", [](const Model& x, py::handle a) { return x.max_uses(action_index(x, a)); },
+          py::arg("action"), "How often `action` may be taken in one episode (0: no limit).")
+      .def(
+          "tables",
+          [](const Model& x) -> py::object {
+            return x.tabular() ? py::object(tables_of(*x.tabular())) : py::object(py::none());
+          },
+          "The model as tables (dict of arrays: transition[s, a, s'], observation[a, s', o], "
+          "reward[s, a], terminal[s], initial_belief[s], discount), or None when it has none.");
 }
 
 const pomdp::ParticleBelief& particles_of(const BeliefHandle& b) {
@@ -171,8 +193,8 @@ void bind_problem(py::module_& m) {
       m, "Problem",
       "A problem as its file says: the model, how to track the belief and the planner's defaults. "
       "load_problem(path), parse_problem(text, name) or Problem.from_dict(d).")
-      .def_property_readonly("model",
-                             [](const Problem& p) { return std::const_pointer_cast<pomdp::Model>(p.model); })
+      .def_property_readonly(
+          "model", [](const Problem& p) { return std::const_pointer_cast<pomdp::Model>(p.model); })
       .def_property_readonly("source_path", [](const Problem& p) { return p.source_path; })
       .def_property_readonly("belief_type", &belief_type, "'particle' or 'exact'")
       .def_property_readonly("particles", [](const Problem& p) { return p.belief.particles; })
@@ -186,33 +208,41 @@ void bind_problem(py::module_& m) {
                                d["exploration"] = p.planner.exploration;
                                return d;
                              })
-      .def("check", [](const Problem& p) { return pomdp::check_problem(p); },
-           "What looks like a mistake in the problem, one sentence each (`echoplan check`); "
-           "empty when nothing was found.")
-      .def("make_belief",
-           [](const Problem& p, Rng& rng) { return BeliefHandle{pomdp::make_belief(p, rng), p.model}; },
-           py::arg("rng"), "The belief the problem asks for: particles or exact.")
-      .def("to_yaml",
-           [](const Problem& p) {
-             const auto* object = p.model->object_identification();
-             if (!object) throw py::value_error("only object-identification problems are written as YAML");
-             std::ostringstream out;
-             pomdp::write_problem_yaml(out, object->data(), p.belief, p.planner);
-             return out.str();
-           },
-           "The problem as YAML text that parse_problem reads back to the same problem.");
-  m.def("load_problem",
-        [](const std::string& path) { return std::make_shared<Problem>(pomdp::load_problem(path)); },
-        py::arg("path"),
-        "Reads a problem file: *.pomdp as Cassandra's format, anything else as YAML. Raises "
-        "InputError naming the file and line of a mistake.");
-  m.def("parse_problem",
-        [](const std::string& text, const std::string& name) {
-          return std::make_shared<Problem>(pomdp::parse_problem(text, name));
-        },
-        py::arg("text"), py::arg("name") = "<text>.yaml",
-        "A problem from its text; `name` names it in errors and chooses the format (*.pomdp: "
-        "Cassandra's, else YAML).");
+      .def(
+          "check", [](const Problem& p) { return pomdp::check_problem(p); },
+          "What looks like a mistake in the problem, one sentence each (`echoplan check`); "
+          "empty when nothing was found.")
+      .def(
+          "make_belief",
+          [](const Problem& p, Rng& rng) {
+            return BeliefHandle{pomdp::make_belief(p, rng), p.model};
+          },
+          py::arg("rng"), "The belief the problem asks for: particles or exact.")
+      .def(
+          "to_yaml",
+          [](const Problem& p) {
+            const auto* object = p.model->object_identification();
+            if (!object)
+              throw py::value_error("only object-identification problems are written as YAML");
+            std::ostringstream out;
+            pomdp::write_problem_yaml(out, object->data(), p.belief, p.planner);
+            return out.str();
+          },
+          "The problem as YAML text that parse_problem reads back to the same problem.");
+  m.def(
+      "load_problem",
+      [](const std::string& path) { return std::make_shared<Problem>(pomdp::load_problem(path)); },
+      py::arg("path"),
+      "Reads a problem file: *.pomdp as Cassandra's format, anything else as YAML. Raises "
+      "InputError naming the file and line of a mistake.");
+  m.def(
+      "parse_problem",
+      [](const std::string& text, const std::string& name) {
+        return std::make_shared<Problem>(pomdp::parse_problem(text, name));
+      },
+      py::arg("text"), py::arg("name") = "<text>.yaml",
+      "A problem from its text; `name` names it in errors and chooses the format (*.pomdp: "
+      "Cassandra's, else YAML).");
 }
 
 // Particle states as arrays: discrete (N x variables) and continuous (N x variables).
@@ -241,21 +271,24 @@ void bind_beliefs(py::module_& m) {
                              [](const BeliefHandle& b) {
                                return b.belief->exact_probabilities() ? "exact" : "particle";
                              })
-      .def("sample", [](const BeliefHandle& b, Rng& rng) { return b.belief->sample(rng); },
-           py::arg("rng"))
-      .def("update",
-           [](BeliefHandle& b, py::handle a, py::handle o, Rng& rng) {
-             return b.belief->update(action_index(*b.model, a), to_observation(*b.model, o), rng);
-           },
-           py::arg("action"), py::arg("observation"), py::arg("rng"),
-           "Conditions the belief on having taken `action` and heard `observation`. False when "
-           "nothing explained the observation and the belief had to recover.")
-      .def("marginal",
-           [](const BeliefHandle& b, int variable) {
-             return to_array(b.belief->discrete_marginal(variable));
-           },
-           py::arg("variable") = 0,
-           "P(each value of discrete state variable `variable`) (variable 0: the objects).")
+      .def(
+          "sample", [](const BeliefHandle& b, Rng& rng) { return b.belief->sample(rng); },
+          py::arg("rng"))
+      .def(
+          "update",
+          [](BeliefHandle& b, py::handle a, py::handle o, Rng& rng) {
+            return b.belief->update(action_index(*b.model, a), to_observation(*b.model, o), rng);
+          },
+          py::arg("action"), py::arg("observation"), py::arg("rng"),
+          "Conditions the belief on having taken `action` and heard `observation`. False when "
+          "nothing explained the observation and the belief had to recover.")
+      .def(
+          "marginal",
+          [](const BeliefHandle& b, int variable) {
+            return to_array(b.belief->discrete_marginal(variable));
+          },
+          py::arg("variable") = 0,
+          "P(each value of discrete state variable `variable`) (variable 0: the objects).")
       .def_property_readonly(
           "probabilities",
           [](py::object self) -> py::object {
@@ -264,30 +297,35 @@ void bind_beliefs(py::module_& m) {
           },
           "Exact beliefs: P(each tabular state), a read-only array over the belief's own data "
           "(it follows updates); None for particles.")
-      .def("particle_counts",
-           [](const BeliefHandle& b, int variable) {
-             return particles_of(b).particle_counts(variable);
-           },
-           py::arg("variable") = 0, "Particles: how many hold each value of `variable`.")
+      .def(
+          "particle_counts",
+          [](const BeliefHandle& b, int variable) {
+            return particles_of(b).particle_counts(variable);
+          },
+          py::arg("variable") = 0, "Particles: how many hold each value of `variable`.")
       .def_property_readonly(
           "particles", [](const BeliefHandle& b) { return particle_arrays(particles_of(b)); },
           "Particles: (discrete, continuous), arrays of N x variables.")
-      .def("copy", [](const BeliefHandle& b) { return BeliefHandle{b.belief->clone(), b.model}; });
-  m.def("ExactBelief",
-        [](const ProblemPtr& p) {
-          return BeliefHandle{std::make_unique<pomdp::ExactBelief>(p->model), p->model};
-        },
-        py::arg("problem"), "The exact belief at the problem's start (needs tables).");
-  m.def("ParticleBelief",
-        [](const ProblemPtr& p, std::optional<int> particles, Rng& rng, double fresh_share) {
-          return BeliefHandle{std::make_unique<pomdp::ParticleBelief>(
-                                  p->model, particles.value_or(p->belief.particles), rng,
-                                  fresh_share),
-                              p->model};
-        },
-        py::arg("problem"), py::arg("particles") = py::none(), py::arg("rng"),
-        py::arg("fresh_share") = pomdp::ParticleBelief::kDefaultFreshShare,
-        "A particle filter at the problem's start (default size: the problem's).");
+      .def("copy", [](const BeliefHandle& b) {
+        return BeliefHandle{b.belief->clone(), b.model};
+      });
+  m.def(
+      "ExactBelief",
+      [](const ProblemPtr& p) {
+        return BeliefHandle{std::make_unique<pomdp::ExactBelief>(p->model), p->model};
+      },
+      py::arg("problem"), "The exact belief at the problem's start (needs tables).");
+  m.def(
+      "ParticleBelief",
+      [](const ProblemPtr& p, std::optional<int> particles, Rng& rng, double fresh_share) {
+        return BeliefHandle{
+            std::make_unique<pomdp::ParticleBelief>(
+                p->model, particles.value_or(p->belief.particles), rng, fresh_share),
+            p->model};
+      },
+      py::arg("problem"), py::arg("particles") = py::none(), py::arg("rng"),
+      py::arg("fresh_share") = pomdp::ParticleBelief::kDefaultFreshShare,
+      "A particle filter at the problem's start (default size: the problem's).");
 }
 
 }  // namespace

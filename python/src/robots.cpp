@@ -24,13 +24,16 @@ using robot::HeardObservation;
 // What a Python method returned, as the C++ value, accepting Python's shorter spellings too.
 ActionReport report_of(py::handle r, const std::string& action) {
   ActionReport report;
-  if (py::isinstance<ActionReport>(r)) report = r.cast<ActionReport>();
-  else if (py::isinstance<py::str>(r)) report = py::module_::import("echoplan._echoplan")
-                                                    .attr("ActionReport")(action, r)
-                                                    .cast<ActionReport>();
+  if (py::isinstance<ActionReport>(r))
+    report = r.cast<ActionReport>();
+  else if (py::isinstance<py::str>(r))
+    report = py::module_::import("echoplan._echoplan")
+                 .attr("ActionReport")(action, r)
+                 .cast<ActionReport>();
   else if (!r.is_none())
-    throw py::type_error("Robot.execute returned " + py::repr(r).cast<std::string>() +
-                         "; return an ActionReport, a status ('done', 'collision', 'failed') or None (done)");
+    throw py::type_error(
+        "Robot.execute returned " + py::repr(r).cast<std::string>() +
+        "; return an ActionReport, a status ('done', 'collision', 'failed') or None (done)");
   if (report.action.empty()) report.action = action;
   return report;
 }
@@ -60,7 +63,8 @@ HeardObservation heard_of(py::handle r) {
 template <class Base>
 py::function method(const Base* self, const char* type, const char* name) {
   py::function f = py::get_override(self, name);
-  if (!f) throw py::type_error(std::string(type) + "." + name + " is not implemented by the subclass");
+  if (!f)
+    throw py::type_error(std::string(type) + "." + name + " is not implemented by the subclass");
   return f;
 }
 
@@ -97,17 +101,20 @@ class PythonService : public robot::ObservationService {
  public:
   std::optional<robot::ServiceVocabulary> vocabulary() const override {
     py::gil_scoped_acquire gil;
-    py::function f = py::get_override(static_cast<const robot::ObservationService*>(this), "vocabulary");
+    py::function f =
+        py::get_override(static_cast<const robot::ObservationService*>(this), "vocabulary");
     if (!f) return std::nullopt;
     py::object v = f();
     if (v.is_none()) return std::nullopt;
     if (py::isinstance<py::dict>(v))
-      return robot::ServiceVocabulary{v.cast<std::map<std::string, std::vector<std::string>>>(), false};
+      return robot::ServiceVocabulary{v.cast<std::map<std::string, std::vector<std::string>>>(),
+                                      false};
     return v.cast<robot::ServiceVocabulary>();
   }
   HeardObservation observe(const audio::AudioClip& clip, const std::string& action) override {
     py::gil_scoped_acquire gil;
-    return heard_of(method<robot::ObservationService>(this, "ObservationService", "observe")(clip, action));
+    return heard_of(
+        method<robot::ObservationService>(this, "ObservationService", "observe")(clip, action));
   }
 };
 
@@ -149,7 +156,9 @@ class HeldRecorder final : public robot::Recorder {
 class HeldService final : public robot::ObservationService {
  public:
   explicit HeldService(py::object o) : held_(std::move(o)) {}
-  std::optional<robot::ServiceVocabulary> vocabulary() const override { return held_.part->vocabulary(); }
+  std::optional<robot::ServiceVocabulary> vocabulary() const override {
+    return held_.part->vocabulary();
+  }
   HeardObservation observe(const audio::AudioClip& c, const std::string& a) override {
     return held_.part->observe(c, a);
   }
@@ -170,16 +179,20 @@ void bind_values(py::module_& m) {
       .def(py::init([](const std::string& action, const std::string& status,
                        const std::string& reason, double duration) {
              ActionReport r{action, sim::ActionStatus::done, reason, duration};
-             if (status == "collision") r.status = sim::ActionStatus::collision;
-             else if (status == "failed") r.status = sim::ActionStatus::failed;
+             if (status == "collision")
+               r.status = sim::ActionStatus::collision;
+             else if (status == "failed")
+               r.status = sim::ActionStatus::failed;
              else if (status != "done")
-               throw py::value_error("status '" + status + "' is not one of done, collision, failed");
+               throw py::value_error("status '" + status +
+                                     "' is not one of done, collision, failed");
              return r;
            }),
            py::arg("action") = "", py::arg("status") = "done", py::arg("reason") = "",
            py::arg("duration_s") = 0.0)
       .def_readonly("action", &ActionReport::action)
-      .def_property_readonly("status", [](const ActionReport& r) { return std::string(sim::to_string(r.status)); })
+      .def_property_readonly(
+          "status", [](const ActionReport& r) { return std::string(sim::to_string(r.status)); })
       .def_readonly("reason", &ActionReport::reason)
       .def_readonly("duration_s", &ActionReport::duration_s);
   py::class_<HeardObservation>(m, "HeardObservation",
@@ -261,18 +274,20 @@ void bind_robots(py::module_& m) {
   bind_values(m);
   bind_parts(m);
   bind_loop(m);
-  m.def("calibrate_problem",
-        [](const ProblemPtr& base, const perception::ObservationModel& model) {
-          return std::const_pointer_cast<pomdp::Problem>(loop::calibrate_problem(*base, model));
-        },
-        py::arg("problem"), py::arg("model"),
-        "The problem with its observation table replaced by the model's calibrated one (what "
-        "`echoplan run` plans on without --problem).");
+  m.def(
+      "calibrate_problem",
+      [](const ProblemPtr& base, const perception::ObservationModel& model) {
+        return std::const_pointer_cast<pomdp::Problem>(loop::calibrate_problem(*base, model));
+      },
+      py::arg("problem"), py::arg("model"),
+      "The problem with its observation table replaced by the model's calibrated one (what "
+      "`echoplan run` plans on without --problem).");
 }
 
 // Parts for PartsWorldSpec, each kept alive by the loop that owns it.
 loop::RobotParts held_parts(py::object robot, py::object recorder, py::object service) {
-  return {std::make_unique<HeldRobot>(std::move(robot)), std::make_unique<HeldRecorder>(std::move(recorder)),
+  return {std::make_unique<HeldRobot>(std::move(robot)),
+          std::make_unique<HeldRecorder>(std::move(recorder)),
           std::make_unique<HeldService>(std::move(service))};
 }
 
