@@ -36,12 +36,14 @@ def test_a_campaign_from_python_is_the_commands(tmp_path):
 
 
 def test_a_bad_campaign_file_raises_the_commands_error(tmp_path):
-    config = tmp_path / "bad.yaml"
-    config.write_text("seed: 1\nplanner: {solver: abt, episodez: 10}\n")
+    config = small_lab_campaign(tmp_path)
+    text = config.read_text().replace("episodes: 300", "episodez: 300")
+    config.write_text(text)
+    line = next(n for n, l in enumerate(text.splitlines(), 1) if "episodez" in l)
     try:
         echoplan.run_campaign(config, tmp_path / "out")
         raise AssertionError("expected an InputError")
     except echoplan.InputError as error:
-        assert error.file == str(config) and error.line == 2
+        assert error.file == str(config) and error.line == line and "episodez" in str(error)
         done = echoplan_command("experiment", "--config", config, "--out", tmp_path / "out2", check=False)
         assert done.returncode == 2 and str(error) in done.stderr
