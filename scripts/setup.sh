@@ -84,7 +84,7 @@ install_python() {  # install_python DIR
   fi
   local sudo=()
   [ "$(id -u)" -eq 0 ] || sudo=(sudo)
-  "${sudo[@]}" cmake --install "$dir" --component python --prefix "${PYTHON_PREFIX:-/usr/local}" >/dev/null
+  "${sudo[@]}" cmake --install "$dir" --component python --strip --prefix "${PYTHON_PREFIX:-/usr/local}" >/dev/null
   echo "setup: installed the Python module echoplan under ${PYTHON_PREFIX:-/usr/local} (python3 -c 'import echoplan')"
 }
 
