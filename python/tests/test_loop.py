@@ -15,8 +15,8 @@ from conftest import REPORT_PROBLEM, echoplan_command
 def command_run(tmp_path_factory):
     """`echoplan run` replaying recordings of the mug with a model trained on other recordings."""
     root = tmp_path_factory.mktemp("loop")
-    echoplan_command("dataset", "--per-pair", 3, "--seed", 2, "-o", root / "train")
-    echoplan_command("dataset", "--per-pair", 4, "--seed", 9, "-o", root / "replay")
+    echoplan_command("synth-recordings", "--per-pair", 3, "--seed", 2, "-o", root / "train")
+    echoplan_command("synth-recordings", "--per-pair", 4, "--seed", 9, "-o", root / "replay")
     echoplan_command("train", "--data", root / "train", "--out", root / "model.json")
     echoplan_command("run", "--object", "coffee_mug", "--model", root / "model.json", "--recordings",
                      root / "replay", "--episodes", 300, "--seed", 3, "--out", root / "run")

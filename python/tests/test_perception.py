@@ -98,7 +98,7 @@ def test_a_bad_feature_file_raises_the_commands_error(tmp_path):
 
 def test_classify_a_clip_as_the_command_does(tmp_path, strike):
     recordings = tmp_path / "recordings"
-    echoplan_command("dataset", "--per-pair", 3, "--seed", 2, "-o", recordings)
+    echoplan_command("synth-recordings", "--per-pair", 3, "--seed", 2, "-o", recordings)
     echoplan_command("train", "--data", recordings, "--out", tmp_path / "model.json")
     mine = echoplan.train_observation_model(str(recordings))
     mine.save(str(tmp_path / "mine.json"))
