@@ -84,8 +84,24 @@ install_python() {  # install_python DIR
   fi
   local sudo=()
   [ "$(id -u)" -eq 0 ] || sudo=(sudo)
-  "${sudo[@]}" cmake --install "$dir" --component python --strip --prefix "${PYTHON_PREFIX:-/usr/local}" >/dev/null
-  echo "setup: installed the Python module echoplan under ${PYTHON_PREFIX:-/usr/local} (python3 -c 'import echoplan')"
+  local prefix=${PYTHON_PREFIX:-/usr/local}
+  "${sudo[@]}" cmake --install "$dir" --component python --strip --prefix "$prefix" >/dev/null
+  echo "setup: installed the Python module echoplan under $prefix (python3 -c 'import echoplan')"
+  # A python3 of the same version earlier on PATH (pyenv, a venv) does not look in Debian's
+  # dist-packages: give it a copy too, so the README's `python3 -c "import echoplan"` works there.
+  local other debian_version package
+  other=$(command -v python3 || true)
+  debian_version=$(/usr/bin/python3 -c 'import sys; print(sys.version_info[:2])')
+  if [ -n "$other" ] && [ "$(readlink -f "$other")" != "$(readlink -f /usr/bin/python3)" ] &&
+     [ "$("$other" -c 'import sys; print(sys.version_info[:2])' 2>/dev/null)" = "$debian_version" ]; then
+    package=$(find "$prefix/lib" -path "*/dist-packages/echoplan" -type d | head -n 1)
+    local site
+    site=$("$other" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')
+    if [ -n "$package" ] && [ -n "$site" ] && [ "$(readlink -f "$site")" != "$(readlink -f "$(dirname "$package")")" ]; then
+      "${sudo[@]}" rm -rf "$site/echoplan" && "${sudo[@]}" cp -r "$package" "$site/echoplan"
+      echo "setup: and a copy for $other (another Python $debian_version on PATH) in $site"
+    fi
+  fi
 }
 
 case "$mode" in

@@ -1,8 +1,6 @@
 """Problems from Python dicts, and the shipped files."""
 import os
 
-import yaml
-
 from . import _echoplan
 
 
@@ -22,6 +20,8 @@ def problem_from_dict(problem, name="<dict>"):
     yaml.safe_load(open('problems/audio_objects.yaml')) edited in Python. The dict is written as
     YAML and read by the same reader as a file, with the same checks; an InputError then names
     `name`, the line of that YAML and, in its message, the line's text."""
+    import yaml  # Debian's python3-yaml; imported here so `import echoplan` does not need it
+
     text = yaml.safe_dump(problem, sort_keys=False, default_flow_style=None)
     try:
         return _echoplan.parse_problem(text, name + ".yaml")
