@@ -27,7 +27,7 @@ fi
 if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
   mapfile -t files < <(git ls-files -- '*.cpp' '*.h' '*.hpp' '*.cc')
 else
-  mapfile -t files < <(find apps bench fuzz src tests \( -name '*.cpp' -o -name '*.h' \) | sort)
+  mapfile -t files < <(find apps bench fuzz python src tests \( -name '*.cpp' -o -name '*.h' \) | sort)
 fi
 
 mapfile -t unformatted < <(

@@ -39,4 +39,18 @@ mv "$prefix/usr" "$prefix/moved"
 (cd "$prefix" && "$prefix/moved/bin/echoplan" synth --object coffee_mug --action strike --seed 1 \
   -o "$prefix/strike.wav" >/dev/null)
 [ -s "$prefix/strike.wav" ] || { echo "check-install: FAIL: the installed binary wrote no recording" >&2; exit 1; }
+
+# The Python module (when the build has one) imports from the moved prefix with Debian's python3
+# and finds the shipped data in its own package, not through the build or source tree.
+package=$(find "$prefix/moved" -path "*/dist-packages/echoplan/__init__.py" 2>/dev/null | head -n 1)
+if [ -n "$package" ]; then
+  echo "check-install: importing the installed Python module"
+  (cd "$prefix" && env -u ECHOPLAN_DATA_DIR PYTHONPATH="$(dirname "$(dirname "$package")")" /usr/bin/python3 -c '
+import echoplan
+problem = echoplan.load_problem(echoplan.shipped_file("problems/audio_objects.yaml"))
+trials = echoplan.run_trials(problem, trials=2, episodes=100, seed=1)
+assert len(trials) == 2 and echoplan.__file__.startswith("'"$prefix/moved"'"), echoplan.__file__
+print("check-install: echoplan", echoplan.__version__, "planned 2 trials from", echoplan.__file__)
+') || { echo "check-install: FAIL: the installed Python module does not work" >&2; exit 1; }
+fi
 echo "check-install: all checks passed"

@@ -1,16 +1,20 @@
 #!/usr/bin/env bash
 # echoplan setup: installs every dependency from Debian 12 packages, builds, and optionally runs.
 #
-#   scripts/setup.sh          install dependencies and build (build/)
+#   scripts/setup.sh          install dependencies, build (build/) and install the Python module
+#                             `echoplan` where Debian's python3 finds it (docs/python.md)
 #   scripts/setup.sh run      install dependencies, build the `echoplan` command only, and run the
 #                             main job with its default configuration
-#   scripts/setup.sh test     ... then run all tests: the normal build, an install into a temporary prefix
-#                             with a project built on it (scripts/check-install.sh), an ASan+UBSan build
+#   scripts/setup.sh test     install dependencies, build, and run all tests: the normal build (with
+#                             the Python module's), an install into a temporary prefix with a project
+#                             built on it (scripts/check-install.sh), an ASan+UBSan build
 #   scripts/setup.sh deps     only install dependencies
 #
 # Environment: JOBS (parallel build jobs, default: number of cores), BUILD_DIR (default: build),
 # SAN_BUILD_DIR (default: build-san), ECHOPLAN_CHECK_FORMAT (1: `test` first checks the layout of every
-# C++ file with scripts/check-format.sh; default 1; 0 skips it).
+# C++ file with scripts/check-format.sh; default 1; 0 skips it), ECHOPLAN_INSTALL_PYTHON (1: after
+# building, `cmake --install BUILD_DIR --component python` puts the module under PYTHON_PREFIX,
+# default /usr/local, on Debian python3's path; default 1; 0 skips it).
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -33,6 +37,7 @@ packages=(
   clang libclang-rt-14-dev   # scripts/fuzz.sh (libFuzzer)
   clang-format-14            # scripts/check-format.sh
   python3-numpy python3-scipy python3-soundfile python3-yaml  # bench/*.py (with /usr/bin/python3)
+  pybind11-dev python3-dev python3-pytest  # the Python module (python/) and its tests
   portaudio19-dev            # live capture: echoplan devices/record, the ROS listener
   # ROS 1 from Debian (docs/real-robot.md): nodes, their services, a master and roslaunch for the ros_* tests
   libroscpp-dev catkin ros-message-generation libstd-msgs-dev
@@ -68,9 +73,40 @@ build_command() {  # build DIR: only the `echoplan` command, all the main job ru
   cmake --build "$dir" -j"$jobs" --target echoplan
 }
 
+# The Python module of the normal build, installed where Debian's python3 imports it from, so
+# `python3 -c "import echoplan"` works after setup (the sanitizer build has no module).
+install_python() {  # install_python DIR
+  local dir=$1
+  [ "${ECHOPLAN_INSTALL_PYTHON:-1}" = 1 ] || return 0
+  if [ ! -d "$dir/python/echoplan" ]; then
+    echo "setup: no Python module in $dir (pybind11 not found at configure time)"
+    return 0
+  fi
+  local sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  local prefix=${PYTHON_PREFIX:-/usr/local}
+  "${sudo[@]}" cmake --install "$dir" --component python --strip --prefix "$prefix" >/dev/null
+  echo "setup: installed the Python module echoplan under $prefix (python3 -c 'import echoplan')"
+  # A python3 of the same version earlier on PATH (pyenv, a venv) does not look in Debian's
+  # dist-packages: give it a copy too, so the README's `python3 -c "import echoplan"` works there.
+  local other debian_version package
+  other=$(command -v python3 || true)
+  debian_version=$(/usr/bin/python3 -c 'import sys; print(sys.version_info[:2])')
+  if [ -n "$other" ] && [ "$(readlink -f "$other")" != "$(readlink -f /usr/bin/python3)" ] &&
+     [ "$("$other" -c 'import sys; print(sys.version_info[:2])' 2>/dev/null)" = "$debian_version" ]; then
+    package=$(find "$prefix/lib" -path "*/dist-packages/echoplan" -type d | head -n 1)
+    local site
+    site=$("$other" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')
+    if [ -n "$package" ] && [ -n "$site" ] && [ "$(readlink -f "$site")" != "$(readlink -f "$(dirname "$package")")" ]; then
+      "${sudo[@]}" rm -rf "$site/echoplan" && "${sudo[@]}" cp -r "$package" "$site/echoplan"
+      echo "setup: and a copy for $other (another Python $debian_version on PATH) in $site"
+    fi
+  fi
+}
+
 case "$mode" in
   deps) install_deps ;;
-  build) install_deps; build "$build_dir" ;;
+  build) install_deps; build "$build_dir"; install_python "$build_dir" ;;
   run)
     # Only the command: the tests and benchmarks the main job never runs wait for `test`.
     install_deps; build_command "$build_dir"
@@ -85,11 +121,14 @@ case "$mode" in
     build "$build_dir"
     ctest --test-dir "$build_dir" -j"$jobs" --output-on-failure
     scripts/check-install.sh "$build_dir"
-    echo "setup: sanitizer build (ASan + UBSan)"
+    install_python "$build_dir"
+    # The sanitizer build leaves the Python module out: an ASan extension only loads into a python3
+    # started with libasan preloaded (cmake/EchoplanPython.cmake).
+    echo "setup: sanitizer build (ASan + UBSan; without the Python module)"
     build "$san_build_dir" -DECHOPLAN_SANITIZE=ON -DECHOPLAN_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
       ctest --test-dir "$san_build_dir" -j"$jobs" --output-on-failure
     ;;
-  -h|--help|help) sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//' ;;
+  -h|--help|help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//' ;;
   *) echo "setup: unknown mode '$mode' (try: build, run, test, deps)" >&2; exit 2 ;;
 esac
