@@ -7,6 +7,7 @@
 #include "common/error.h"
 #include "common/json_fields.h"
 #include "perception/ledoit_wolf.h"
+#include "perception/row_matrix.h"
 
 namespace echoplan::perception {
 namespace {
@@ -26,19 +27,6 @@ std::vector<double> to_vector(const Eigen::MatrixXd& m) {
 Eigen::MatrixXd from_vector(const std::vector<double>& v, Eigen::Index rows, Eigen::Index cols) {
   return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
       v.data(), rows, cols);
-}
-
-// Rows as an n x D matrix; InputError for ragged rows or a label per row missing.
-Eigen::MatrixXd to_matrix(std::span<const std::vector<double>> rows, std::size_t labels) {
-  if (labels != rows.size()) throw InputError("one label per feature row is needed");
-  const auto d = rows.empty() ? Eigen::Index{0} : static_cast<Eigen::Index>(rows[0].size());
-  Eigen::MatrixXd x(static_cast<Eigen::Index>(rows.size()), d);
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (static_cast<Eigen::Index>(rows[i].size()) != d)
-      throw InputError(fmt::format("feature rows have {} values, got {}", d, rows[i].size()));
-    x.row(static_cast<Eigen::Index>(i)) = Eigen::Map<const Eigen::RowVectorXd>(rows[i].data(), d);
-  }
-  return x;
 }
 
 // Sums the rows of `x` per class and divides by each class's count (InputError for an empty
@@ -104,7 +92,7 @@ void LdaClassifier::fit_scaling(const Eigen::MatrixXd& x, std::span<const int> l
 
 void LdaClassifier::fit(std::span<const std::vector<double>> rows, std::span<const int> labels,
                         int num_classes) {
-  const Eigen::MatrixXd x = to_matrix(rows, labels.size());
+  const Eigen::MatrixXd x = rows_to_matrix(rows, labels.size());
   const auto d = x.cols();
   // Degrees of freedom of the pooled covariance: one mean per class is spent (at least 1 left).
   const double dof = std::max<double>(1.0, static_cast<double>(x.rows() - num_classes));

@@ -7,28 +7,18 @@
 
 #include "common/error.h"
 #include "common/json_fields.h"
+#include "perception/row_matrix.h"
 
 namespace echoplan::perception {
 namespace {
 
 namespace jf = json_fields;
 
-Eigen::MatrixXd to_matrix(std::span<const std::vector<double>> rows) {
-  const auto d = rows.empty() ? Eigen::Index{0} : static_cast<Eigen::Index>(rows[0].size());
-  Eigen::MatrixXd x(static_cast<Eigen::Index>(rows.size()), d);
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (static_cast<Eigen::Index>(rows[i].size()) != d)
-      throw InputError(fmt::format("feature rows have {} values, got {}", d, rows[i].size()));
-    x.row(static_cast<Eigen::Index>(i)) = Eigen::Map<const Eigen::RowVectorXd>(rows[i].data(), d);
-  }
-  return x;
-}
-
 }  // namespace
 
 void NearestNeighbourClassifier::fit(std::span<const std::vector<double>> rows,
                                      std::span<const int> labels, int num_classes) {
-  if (labels.size() != rows.size()) throw InputError("one label per feature row is needed");
+  const Eigen::MatrixXd x = rows_to_matrix(rows, labels.size());
   std::vector<int> counts(static_cast<std::size_t>(num_classes), 0);
   for (int label : labels) {
     if (label < 0 || label >= num_classes)
@@ -38,7 +28,6 @@ void NearestNeighbourClassifier::fit(std::span<const std::vector<double>> rows,
   for (int c = 0; c < num_classes; ++c)
     if (counts[static_cast<std::size_t>(c)] == 0)
       throw InputError(fmt::format("class {} has no training rows", c));
-  const Eigen::MatrixXd x = to_matrix(rows);
   mean_ = x.colwise().mean();
   const auto n = static_cast<double>(std::max<Eigen::Index>(1, x.rows() - 1));
   scale_ = ((x.rowwise() - mean_).colwise().squaredNorm() / n).cwiseSqrt();
