@@ -1,6 +1,7 @@
 #include "loop/dataset_world.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <stdexcept>
 
@@ -53,6 +54,14 @@ DatasetWorld::DatasetWorld(const pomdp::ObjectIdentificationModel& problem, Data
     : problem_(problem), spec_(std::move(spec)) {
   if (!spec_.data || !spec_.model)
     throw std::invalid_argument("DatasetWorld: the data and the fitted model are needed");
+  // The model's symbols are the planner's observations by index.
+  if (spec_.model->observation_symbols() != problem_.data().observation_symbols)
+    throw InputError(
+        spec_.data->root, 0,
+        fmt::format("the model hears [{}] but the problem's observations are [{}]: train the "
+                    "model for the problem's classes (the same groups and hold-out, no reject)",
+                    fmt::join(spec_.model->observation_symbols(), ", "),
+                    fmt::join(problem_.data().observation_symbols, ", ")));
   for (const pomdp::SensingAction& act : problem_.data().sensing) {
     const int data_action = data_action_index(*spec_.data, act.name);
     readers_.emplace_back(*spec_.model, act.name, *spec_.data);

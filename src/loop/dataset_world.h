@@ -28,7 +28,8 @@ struct DatasetWorldSpec {
 class DatasetWorld final : public World {
  public:
   // Throws InputError when a sensing action of `problem` is not an action of the data or the
-  // model, or the data lacks a modality the model needs.
+  // model, the data lacks a modality the model needs, or the model's symbols are not the
+  // problem's observations.
   DatasetWorld(const pomdp::ObjectIdentificationModel& problem, DatasetWorldSpec spec);
 
   void reset(const pomdp::State& true_state, Rng& rng) override;
