@@ -104,13 +104,21 @@ TEST(LdaClassScaled, ClassifiesHeldOutRecordingsAndSavesItsFit) {
   }
 }
 
-TEST(LdaClassScaled, LoadRejectsMalformedFits) {
+// The summary-lda preset's LDA fitted on two recordings of each synthetic object (`x`: the rows).
+struct ClassScaledFit {
   std::vector<std::vector<double>> x;
   std::vector<int> y;
-  examples(2, 1, x, y);
+  LdaClassifier lda{LdaClassifier::Scaling::class_scaled, LdaClassifier::Covariance::ledoit_wolf};
+  ClassScaledFit() {
+    examples(2, 1, x, y);
+    lda.fit(x, y, 3);
+  }
+};
+
+TEST(LdaClassScaled, LoadRejectsMalformedFits) {
+  const ClassScaledFit fit;
   using Lda = LdaClassifier;
-  Lda c(Lda::Scaling::class_scaled, Lda::Covariance::ledoit_wolf);
-  c.fit(x, y, 3);
+  const Lda& c = fit.lda;
   const nlohmann::json good = c.save();
   Lda back(Lda::Scaling::class_scaled, Lda::Covariance::ledoit_wolf);
   nlohmann::json bad = good;
@@ -133,12 +141,10 @@ TEST(LdaClassScaled, LoadRejectsMalformedFits) {
 
 // A fit as model format 1 wrote it (summary_size, no mean) scores exactly as the fit it came from.
 TEST(LdaClassScaled, LoadsTheFormatOneFit) {
-  std::vector<std::vector<double>> x;
-  std::vector<int> y;
-  examples(2, 1, x, y);
+  const ClassScaledFit fit;
   using Lda = LdaClassifier;
-  Lda c(Lda::Scaling::class_scaled, Lda::Covariance::ledoit_wolf);
-  c.fit(x, y, 3);
+  const Lda& c = fit.lda;
+  const auto& x = fit.x;
   nlohmann::json old = c.save();
   for (double m : old["mean"].get<std::vector<double>>()) ASSERT_EQ(m, 0.0);
   old["summary_size"] = old["features"];
