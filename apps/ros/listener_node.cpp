@@ -18,6 +18,10 @@
 //   ~first_chunk_wait_s  topic: how long a recording that heard nothing yet waits at its end for
 //                  a first chunk (0.25)
 //   ~max_seconds   a recording stops growing after this long (30)
+//   ~min_seconds   microphone: a recording lasts at least this long (0): when the record parameter
+//                  falls earlier, capture goes on until the device has delivered it (the ring of a
+//                  strike after the arm answered; a file-backed test device: recordings of exactly
+//                  ~max_seconds whatever the timing)
 //   ~save_dir      when set, each clip is also written to ~save_dir/NNNN_<action>.wav
 //   ~poll_hz       how often the record parameter is read (200)
 //   ~cached_param  false (default): each read asks the master (one XML-RPC call on loopback,
@@ -118,6 +122,7 @@ Source microphone_source(ros::NodeHandle& priv, double max_seconds) {
   config.sample_rate = private_param<int>(priv, "rate", 44100);
   config.channels = private_param<int>(priv, "channels", 2);
   config.max_seconds = max_seconds;
+  config.min_seconds = private_param<double>(priv, "min_seconds", 0.0);
   auto microphone = std::make_unique<echoplan::robot::PortAudioRecorder>(config);
   ROS_INFO("listening on [%d] %s (%d channels, %d Hz)", microphone->device().index,
            microphone->device().name.c_str(), config.channels, config.sample_rate);

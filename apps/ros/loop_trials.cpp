@@ -68,11 +68,13 @@ class TimedRecorder final : public robot::Recorder {
 loop::LoopSettings loop_settings(const LoopTrialSettings& settings, loop::RobotParts parts,
                                  TimedRobot*& robot_clock, TimedRecorder*& recorder_clock) {
   auto timed_robot = std::make_unique<TimedRobot>(std::move(parts.robot));
-  auto timed_recorder = std::make_unique<TimedRecorder>(std::move(parts.recorder));
   robot_clock = timed_robot.get();
-  recorder_clock = timed_recorder.get();
   parts.robot = std::move(timed_robot);
-  parts.recorder = std::move(timed_recorder);
+  if (parts.recorder) {  // none: a robot without a microphone
+    auto timed_recorder = std::make_unique<TimedRecorder>(std::move(parts.recorder));
+    recorder_clock = timed_recorder.get();
+    parts.recorder = std::move(timed_recorder);
+  }
   // The parts exist once: the one loop built from these settings takes them.
   auto shared = std::make_shared<loop::RobotParts>(std::move(parts));
   loop::LoopSettings s;
@@ -125,13 +127,15 @@ std::vector<loop::TrialRecord> run_loop_trials(const LoopTrialSettings& settings
     say(fmt::format("trial {}: {}", t, loop::trial_text(*trial, problem.model->spec())));
     records.push_back(trial->record);
   }
-  timings.capture_start_ms = recorder_clock->start_ms;
+  if (recorder_clock) timings.capture_start_ms = recorder_clock->start_ms;
   if (!timings.observe_ms.empty())
-    say(
-        fmt::format("latency, median of {} sensing steps: end of action -> belief updated {:.2f} "
-                    "ms, of which the observation service call {:.2f} ms; recorder start {:.2f} ms",
-                    timings.observe_ms.size(), median(timings.action_end_to_belief_ms),
-                    median(timings.observe_ms), median(timings.capture_start_ms)));
+    say(fmt::format(
+        "latency, median of {} sensing steps: end of action -> belief updated {:.2f} ms, of which "
+        "the observation service call {:.2f} ms{}",
+        timings.observe_ms.size(), median(timings.action_end_to_belief_ms),
+        median(timings.observe_ms),
+        recorder_clock ? fmt::format("; recorder start {:.2f} ms", median(timings.capture_start_ms))
+                       : std::string()));
   if (timings_out) *timings_out = std::move(timings);
   return records;
 }

@@ -1,11 +1,12 @@
 // echoplan_planner: the original system's planner process. Runs trials of the closed loop (plan,
 // execute, listen, classify, update the belief) with the arm, the listener and the observation
 // service behind ROS:
-//   robot     -> /echoplan/begin_trial and /echoplan/execute_action (a real arm's driver or
-//   echoplan_sim_robot) recorder  -> the parameter /echoplan/record around each sensing action
-//   (echoplan_listener) service   -> /echoplan/observe (echoplan_observation)
-// The loop itself is the in-process one (loop::Loop, see
-// loop_trials.h), so a ROS run and `echoplan run` plan, log and score the same way.
+// - robot: /echoplan/begin_trial and /echoplan/execute_action (a real arm's driver or
+//   echoplan_sim_robot)
+// - recorder: the parameter /echoplan/record around each sensing action (echoplan_listener)
+// - service: /echoplan/observe (echoplan_observation)
+// The loop itself is the in-process one (loop::Loop, see loop_trials.h), so a ROS run and
+// `echoplan run` plan, log and score the same way.
 //
 // Private parameters:
 //   ~problem      problem YAML to plan on (required; its observation table should be the model's,
@@ -15,8 +16,13 @@
 //   ~object       the true object (placed by the operator; built by the simulated robot); empty:
 //                 drawn per trial from the problem's initial belief. With it, trial 0 logs exactly
 //                 what `echoplan run --object` logs with the same seed, problem, model and budget
-//   ~solver, ~episodes, ~step_ms   the planner and its budget per step (default: the problem
-//   file's) ~wait_timeout_s  how long to wait for a node to appear or answer before failing (10)
+//   ~solver, ~episodes, ~step_ms   the planner and its budget per step (default: the
+//                 problem file's)
+//   ~wait_timeout_s  how long to wait for a node to appear or answer before failing (10)
+//   ~listen       true (default): record each sensing action with echoplan_listener; false: the
+//                 robot has no microphone, so no listener is run, the record parameter is left
+//                 alone and echoplan_observation observes each performance from the robot's
+//                 feature topic alone (a model trained on sensor rows, docs/real-robot.md)
 //
 // Exits 0 when every trial finished, 2 for bad parameters or files, 1 when a node failed (died,
 // never answered), with the reason logged.
@@ -80,7 +86,10 @@ int main(int argc, char** argv) {
         echoplan::loop::RobotParts parts;
         parts.robot = std::make_unique<echoplan::robot::RosRobot>(node, wait_timeout_s,
                                                                   /*begin_trial_required=*/false);
-        parts.recorder = std::make_unique<echoplan::robot::RosRecorder>(node, wait_timeout_s);
+        bool listen = true;
+        priv.param("listen", listen, true);
+        if (listen)
+          parts.recorder = std::make_unique<echoplan::robot::RosRecorder>(node, wait_timeout_s);
         parts.service =
             std::make_unique<echoplan::robot::RosObservationService>(node, wait_timeout_s);
         const auto trials = echoplan::ros_app::run_loop_trials(

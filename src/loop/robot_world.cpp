@@ -25,9 +25,8 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
 RobotWorld::RobotWorld(pomdp::ModelPtr model, RobotParts parts,
                        std::map<std::string, std::string> world_objects)
     : model_(std::move(model)), parts_(std::move(parts)), world_objects_(std::move(world_objects)) {
-  if (!model_ || !parts_.robot || !parts_.recorder || !parts_.service)
-    throw std::invalid_argument(
-        "RobotWorld: a model, a robot, a recorder and a service are all needed");
+  if (!model_ || !parts_.robot || !parts_.service)
+    throw std::invalid_argument("RobotWorld: a model, a robot and a service are all needed");
   problem_ = &object_problem(*model_);
   const pomdp::ObjectProblemData& data = problem_->data();
   for (std::size_t i = 0; i < data.observation_symbols.size(); ++i)
@@ -89,7 +88,7 @@ void RobotWorld::reset(const pomdp::State& true_state, Rng& rng) {
   context.object = world_object_;
   context.seed = rng();
   parts_.robot->begin_trial(context);
-  parts_.recorder->begin_trial(context);
+  if (parts_.recorder) parts_.recorder->begin_trial(context);
   ended_ = false;
 }
 
@@ -125,10 +124,14 @@ WorldStep RobotWorld::execute(int action, Rng& /*rng*/) {
     outcome.reward = data.sorting_reward[action - problem_->num_sensing()][object];
     outcome.terminal = true;
   } else {
-    parts_.recorder->start(name);
-    acted.report = parts_.robot->execute(name);
-    acted.clip = parts_.recorder->stop();
-    acted.recorded = true;
+    if (parts_.recorder) {
+      parts_.recorder->start(name);
+      acted.report = parts_.robot->execute(name);
+      acted.clip = parts_.recorder->stop();
+      acted.recorded = true;
+    } else {
+      acted.report = parts_.robot->execute(name);  // no microphone: no clip for the service
+    }
     if (acted.report.status == robot::ActionStatus::done) {
       hear(acted, name, outcome);
       outcome.reward = data.sensing[action].reward;

@@ -5,6 +5,9 @@
 //
 // Per action:
 //   sensing: recorder.start -> robot.execute -> recorder.stop -> service.observe -> symbol
+//            (a robot without a microphone has no recorder: the service gets an empty clip and
+//            observes the performance through the robot's other sensors, e.g. the ROS
+//            observation node's feature topic)
 //            (a collision or failure ends the trial: observation "none", the collision flag and the
 //            problem's collision reward, as ObjectIdentificationModel reports a collision);
 //   sorting: robot.execute -> observation "none", the problem's sorting reward for the true object,
@@ -35,7 +38,7 @@ namespace echoplan::loop {
 // The three parts of a world, owned by the RobotWorld.
 struct RobotParts {
   std::unique_ptr<robot::Robot> robot;
-  std::unique_ptr<robot::Recorder> recorder;
+  std::unique_ptr<robot::Recorder> recorder;  // null: the robot has no microphone
   std::unique_ptr<robot::ObservationService> service;
 };
 

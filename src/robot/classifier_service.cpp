@@ -1,8 +1,13 @@
 #include "robot/classifier_service.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "common/error.h"
 
 namespace echoplan::robot {
 
@@ -24,16 +29,62 @@ HeardObservation ClassifierService::observe(const audio::AudioClip& clip,
       action);  // an action the model was not trained for: InputError listing its actions
   analyzer_.analyse(clip, "the recording of " + action, analysis_);
   const perception::Prediction p = model_->classify(analysis_, action);
-  HeardObservation heard;
-  heard.label = p.label;
-  heard.unknown = p.unknown;
-  heard.probability = p.probabilities.at(static_cast<std::size_t>(p.best_class));
+  HeardObservation h = heard(p);
+  h.features = clip_summary(analysis_, analyzer_.settings().sample_rate);
+  return h;
+}
+
+HeardObservation ClassifierService::heard(const perception::Prediction& p) const {
+  HeardObservation h;
+  h.label = p.label;
+  h.unknown = p.unknown;
+  h.probability = p.probabilities.at(static_cast<std::size_t>(p.best_class));
   const auto& classes = model_->classes();
   for (std::size_t k = 0; k < classes.size(); ++k)
-    heard.probabilities.emplace_back(classes[k], p.probabilities[k]);
-  heard.distance = p.distance;
-  heard.features = clip_summary(analysis_, analyzer_.settings().sample_rate);
-  return heard;
+    h.probabilities.emplace_back(classes[k], p.probabilities[k]);
+  h.distance = p.distance;
+  return h;
+}
+
+std::vector<std::string> ClassifierService::sensor_modalities(const std::string& action) const {
+  std::vector<std::string> names;
+  if (model_->action_index(action) < 0) return names;
+  for (const perception::ModalityModel& m : model_->modalities(action))
+    if (m.classifier->extractor() == nullptr) names.push_back(m.name);
+  return names;
+}
+
+HeardObservation ClassifierService::observe_performance(
+    const std::string& action, std::span<const std::vector<double>> sensor_rows,
+    const audio::AudioClip* clip) {
+  const auto& modalities = model_->modalities(action);  // InputError for an unknown action
+  const std::vector<std::string> sensors = sensor_modalities(action);
+  if (sensor_rows.size() != sensors.size())
+    throw InputError(fmt::format("'{}' needs {} sensor row(s) ({}), got {}", action, sensors.size(),
+                                 fmt::join(sensors, ", "), sensor_rows.size()));
+  // The model's rows in its modality order: a sensor's as given, a clip's computed from it.
+  std::vector<std::vector<double>> computed;
+  computed.reserve(modalities.size());
+  std::vector<std::span<const double>> rows;
+  std::size_t next_sensor = 0;
+  bool analysed = false;
+  for (const perception::ModalityModel& m : modalities) {
+    if (m.classifier->extractor() == nullptr) {
+      rows.emplace_back(sensor_rows[next_sensor++]);
+      continue;
+    }
+    if (clip == nullptr || clip->samples.empty())
+      throw InputError(fmt::format(
+          "'{}' needs the clip of the performance for its '{}' modality, and none was recorded",
+          action, m.name));
+    if (!analysed) analyzer_.analyse(*clip, "the recording of " + action, analysis_);
+    analysed = true;
+    computed.push_back(m.classifier->embed(analysis_));
+    rows.emplace_back(computed.back());
+  }
+  HeardObservation h = heard(model_->classify_rows(model_->action_index(action), rows));
+  if (analysed) h.features = clip_summary(analysis_, analyzer_.settings().sample_rate);
+  return h;
 }
 
 std::vector<std::pair<std::string, double>> clip_summary(const perception::ClipAnalysis& a,

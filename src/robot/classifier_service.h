@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,9 +29,23 @@ class ClassifierService final : public ObservationService {
   // action it was not trained for, and for a clip too short to analyse.
   HeardObservation observe(const audio::AudioClip& clip, const std::string& action) override;
 
+  // The modalities of `action` whose rows another sensor gives (no clip extractor: a feature set's
+  // haptic.csv, a robot's feature topic), in the model's order; empty for an action heard from
+  // its clip alone and for an action the model does not know.
+  std::vector<std::string> sensor_modalities(const std::string& action) const;
+  // Classifies one performance of `action` from its sensors' rows (one per sensor_modalities(), in
+  // that order) and, when the action also has modalities computed from clips, its clip (analysed
+  // as observe() does; `features` then summarises it). InputError for an unknown action, a row
+  // count that does not match, a row of the wrong length, and a clip needed but not given (null).
+  HeardObservation observe_performance(const std::string& action,
+                                       std::span<const std::vector<double>> sensor_rows,
+                                       const audio::AudioClip* clip);
+
   const perception::ObservationModel& model() const { return *model_; }
 
  private:
+  HeardObservation heard(const perception::Prediction& p) const;
+
   std::shared_ptr<const perception::ObservationModel> model_;
   perception::ClipAnalyzer analyzer_;
   perception::ClipAnalysis analysis_;  // reused from clip to clip

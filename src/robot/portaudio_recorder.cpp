@@ -101,6 +101,10 @@ void CaptureConfig::validate() const {
                      fmt::format("frames per buffer must be >= 1, got {}", frames_per_buffer));
   if (!(max_seconds > 0))
     throw InputError("", 0, fmt::format("max seconds must be > 0, got {}", max_seconds));
+  if (!(min_seconds >= 0 && min_seconds <= max_seconds))
+    throw InputError("", 0,
+                     fmt::format("min seconds must be between 0 and max seconds ({}), got {}",
+                                 max_seconds, min_seconds));
 }
 
 std::vector<InputDevice> list_input_devices() {
@@ -116,6 +120,8 @@ struct PortAudioRecorder::Stream {
   PaStream* pa = nullptr;
   int channels = 2;
   std::size_t max_frames = 0;
+  std::size_t min_frames = 0;  // stop() waits for these (CaptureConfig::min_seconds)
+  std::chrono::steady_clock::time_point started;
 
   std::vector<float> ring;
   std::atomic<std::size_t> head{0};
@@ -234,15 +240,30 @@ namespace {
 // empty, which no one can classify, so stop() waits for the first buffer of a healthy stream:
 // at most kFirstBufferWait, a few device periods.
 constexpr std::chrono::milliseconds kFirstBufferWait{250};
+// How late a device may be with min_seconds before stop() gives up waiting: a live device delivers
+// it within a few periods of min_seconds after start; one that reads a file delivers it at once
+// unless the process is starved of CPU. Longer than either, short enough for a stalled device.
+constexpr std::chrono::seconds kMinimumSlack{1};
 
 }  // namespace
 
-void PortAudioRecorder::wait_for_first_buffer(const Stream& s) {
-  const auto until = std::chrono::steady_clock::now() + kFirstBufferWait;
-  while (s.frames_delivered.load(std::memory_order_acquire) == 0 &&
+void PortAudioRecorder::wait_for_minimum(const Stream& s) const {
+  using Clock = std::chrono::steady_clock;
+  const std::size_t wanted = std::max<std::size_t>(s.min_frames, 1);
+  const auto until =
+      std::max(Clock::now() + kFirstBufferWait,
+               s.started + std::chrono::duration_cast<Clock::duration>(
+                               std::chrono::duration<double>(config_.min_seconds) + kMinimumSlack));
+  while (s.frames_delivered.load(std::memory_order_acquire) < wanted &&
          !s.stream_ended.load(std::memory_order_acquire) && Pa_IsStreamActive(s.pa) == 1 &&
-         std::chrono::steady_clock::now() < until)
+         Clock::now() < until)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  const std::size_t delivered = s.frames_delivered.load(std::memory_order_acquire);
+  if (s.min_frames > 0 && delivered < s.min_frames)
+    spdlog::warn(
+        "capture: [{}] '{}' delivered {} of the {} frames a recording must hold (min {} s); "
+        "keeping what arrived",
+        device_.index, device_.name, delivered, s.min_frames, config_.min_seconds);
 }
 
 void PortAudioRecorder::start(const std::string& action) {
@@ -252,6 +273,9 @@ void PortAudioRecorder::start(const std::string& action) {
   s->channels = config_.channels;
   s->max_frames = static_cast<std::size_t>(std::llround(config_.max_seconds * config_.sample_rate));
   s->max_frames = std::max<std::size_t>(s->max_frames, 1);
+  s->min_frames =
+      std::min(s->max_frames,
+               static_cast<std::size_t>(std::llround(config_.min_seconds * config_.sample_rate)));
   // Room for 4 s (or the whole recording, when shorter): the drain thread empties it every 5 ms, so
   // only a stalled process drops frames.
   const std::size_t ring_frames =
@@ -271,6 +295,7 @@ void PortAudioRecorder::start(const std::string& action) {
                                          Pa_GetErrorText(err)));
   Pa_SetStreamFinishedCallback(s->pa, &Stream::on_finished);
   s->drainer = std::thread([raw = s.get()] { raw->drain_loop(); });
+  s->started = std::chrono::steady_clock::now();
   err = Pa_StartStream(s->pa);
   if (err != paNoError) {
     {
@@ -310,7 +335,7 @@ audio::AudioClip PortAudioRecorder::stop() {
         fmt::format("the input stream of [{}] '{}' ended by itself (device disconnected or failed)",
                     device_.index, device_.name);
   }
-  wait_for_first_buffer(*s);
+  wait_for_minimum(*s);
   // Pa_StopStream waits for the last callback to return, so after it the ring is complete.
   const PaError stop_err = Pa_StopStream(s->pa);
   if (stop_err != paNoError && stream_error.empty()) {

@@ -19,7 +19,10 @@
 //   - the clip reaches CaptureConfig::max_seconds: capture stops there (a recording left running
 //     cannot exhaust memory) and stop() returns exactly that many frames;
 //   - stop() before the device delivered its first buffer (an action shorter than a device period):
-//     stop() waits up to 250 ms for that buffer, so the clip is not empty.
+//     stop() waits up to 250 ms for that buffer, so the clip is not empty;
+//   - CaptureConfig::min_seconds: stop() waits until the device has delivered that much (at most
+//     1 s longer than it should take), so every recording is at least that long whenever stop()
+//     comes; a device that falls short is logged as a warning and the clip keeps what arrived.
 #pragma once
 
 #include <atomic>
@@ -43,6 +46,11 @@ struct CaptureConfig {
   int channels = 2;             // >= 1
   int frames_per_buffer = 512;  // frames per audio callback (latency vs. callback rate)
   double max_seconds = 600.0;   // a recording stops growing after this long; > 0
+  // A recording lasts at least this long (0 <= min_seconds <= max_seconds): stop() waits for the
+  // device to deliver it. For a live microphone, the ring of a strike after the arm answered; for
+  // a device that reads faster than real time (a file), recordings whose length does not depend on
+  // when stop() is called (min_seconds == max_seconds: exactly max_seconds).
+  double min_seconds = 0.0;
 
   // Throws InputError naming the bad field.
   void validate() const;
@@ -100,9 +108,9 @@ class PortAudioRecorder final : public Recorder {
   struct Stream;  // the running stream's shared state (callback, ring, drain thread)
 
  private:
-  // Waits (briefly) until the device has delivered audio, so an instant action is not heard as
-  // nothing.
-  static void wait_for_first_buffer(const Stream& s);
+  // Waits until the device has delivered what every recording must hold: its first buffer, so an
+  // instant action is not heard as nothing, and min_seconds.
+  void wait_for_minimum(const Stream& s) const;
   CaptureConfig config_;
   InputDevice device_;
   CaptureReport report_;

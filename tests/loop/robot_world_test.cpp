@@ -203,5 +203,48 @@ TEST(RobotWorld, ACollisionIsHeardAsNothingAndEndsTheTrial) {
   fs::remove_all(dir);
 }
 
+// An observation service that sees what the world gave it and answers a fixed class, as the ROS
+// observation node answers from a robot's other sensors.
+class SensorService final : public robot::ObservationService {
+ public:
+  robot::HeardObservation observe(const audio::AudioClip& clip,
+                                  const std::string& action) override {
+    calls.push_back({action, clip.frames()});
+    robot::HeardObservation heard;
+    heard.label = "plastic_cup";
+    heard.probability = 0.75;
+    heard.probabilities = {{"coffee_mug", 0.25}, {"plastic_cup", 0.75}};
+    return heard;
+  }
+  std::vector<std::pair<std::string, std::size_t>> calls;  // action, clip frames
+};
+
+TEST(RobotWorld, ARobotWithoutMicrophoneIsObservedWithoutAClip) {
+  const auto problem = calibrated(mug_or_cup());
+  RobotParts parts;
+  parts.robot = std::make_unique<CollidingRobot>();  // a slide is done
+  auto service = std::make_unique<SensorService>();
+  const SensorService& seen = *service;
+  parts.service = std::move(service);
+  RobotWorld world(problem->model, std::move(parts));  // no recorder
+  Rng rng(4);
+  world.reset(problem->model->sample_initial_state(rng), rng);
+  const WorldStep slide = world.execute(0, rng);
+  ASSERT_TRUE(slide.robot.has_value());
+  EXPECT_FALSE(slide.robot->recorded);
+  EXPECT_TRUE(slide.robot->classified);
+  EXPECT_EQ(slide.robot->clip.frames(), 0u);
+  ASSERT_EQ(seen.calls.size(), 1u);
+  EXPECT_EQ(seen.calls[0], (std::pair<std::string, std::size_t>{"slide", 0}));
+  const auto& m = world.model();
+  EXPECT_EQ(m.spec().observation.names[slide.outcome.observation.index], "plastic_cup");
+  EXPECT_EQ(slide.outcome.heard_probability, 0.75);
+  // A collision without a microphone ends the trial as with one, and nothing is observed.
+  const WorldStep strike = world.execute(1, rng);
+  EXPECT_TRUE(strike.outcome.terminal);
+  EXPECT_FALSE(strike.robot->classified);
+  EXPECT_EQ(seen.calls.size(), 1u);
+}
+
 }  // namespace
 }  // namespace echoplan::loop

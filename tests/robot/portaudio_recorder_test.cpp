@@ -118,6 +118,37 @@ TEST_F(PortAudioRecorderTest, StopBeforeTheLimitKeepsEverythingCapturedSoFar) {
                          clip.samples.begin() + static_cast<std::ptrdiff_t>(n), stereo().begin()));
 }
 
+// The file device delivers faster than real time, so without min_seconds a stop() right after
+// start() returns whatever the capture thread got to before it (anything from one buffer to the
+// whole recording, depending on scheduling: what made ros_mic flaky). With it, every recording is
+// exactly the file's first max_seconds however early stop() comes.
+TEST_F(PortAudioRecorderTest, MinSecondsMakesAnEarlyStopWaitForTheWholeRecording) {
+  CaptureConfig config;
+  config.max_seconds = 0.5;
+  config.min_seconds = 0.5;
+  PortAudioRecorder recorder(config);
+  const std::vector<float> expected(stereo().begin(), stereo().begin() + 44100);
+  // Repeated: an early stop cut the clip in about 1 of 5 recordings on an idle machine.
+  for (int i = 0; i < 25; ++i) {
+    recorder.start("strike");
+    const audio::AudioClip clip = recorder.stop();
+    ASSERT_EQ(clip.frames(), 22050u) << "recording " << i;
+    ASSERT_EQ(clip.samples, expected) << "recording " << i;
+    EXPECT_TRUE(recorder.last_report().limit_reached);
+  }
+}
+
+TEST_F(PortAudioRecorderTest, MinSecondsBelowMaxSecondsIsALowerBoundOnly) {
+  CaptureConfig config;  // max_seconds 600: stop() ends the recording, after at least 0.25 s
+  config.min_seconds = 0.25;
+  PortAudioRecorder recorder(config);
+  recorder.start("slide");
+  const audio::AudioClip clip = recorder.stop();
+  EXPECT_GE(clip.frames(), 11025u);
+  EXPECT_FALSE(recorder.last_report().limit_reached);
+  EXPECT_TRUE(std::equal(clip.samples.begin(), clip.samples.begin() + 22050, stereo().begin()));
+}
+
 TEST_F(PortAudioRecorderTest, EachRecordingReopensTheDevice) {
   CaptureConfig config;
   config.max_seconds = 0.1;
@@ -164,7 +195,11 @@ TEST_F(PortAudioRecorderTest, BadConfigurationIsAnInputErrorNamingTheField) {
   for (auto change :
        {+[](CaptureConfig& c) { c.sample_rate = 0; }, +[](CaptureConfig& c) { c.channels = 0; },
         +[](CaptureConfig& c) { c.frames_per_buffer = 0; },
-        +[](CaptureConfig& c) { c.max_seconds = 0; }}) {
+        +[](CaptureConfig& c) { c.max_seconds = 0; }, +[](CaptureConfig& c) { c.min_seconds = -1; },
+        +[](CaptureConfig& c) {
+          c.max_seconds = 1;
+          c.min_seconds = 2;
+        }}) {
     CaptureConfig config;
     change(config);
     EXPECT_THROW(config.validate(), InputError);

@@ -81,5 +81,6 @@ struct VectorSerializer<std::string, std::allocator<std::string>, void> {
 #include <echoplan_ros/BeginTrial.h>
 #include <echoplan_ros/Clip.h>
 #include <echoplan_ros/ExecuteAction.h>
+#include <echoplan_ros/FeatureRow.h>
 #include <echoplan_ros/Observe.h>
 #include <echoplan_ros/RecordingState.h>

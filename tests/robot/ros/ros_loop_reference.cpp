@@ -4,9 +4,9 @@
 //       shipped problem with that model's calibrated table (DIR/problem.yaml);
 //   ros_loop_reference run DIR OUT sim|mic SEED EPISODES TRIALS [MAX_SECONDS]
 //       runs the loop in process - the simulated arm, the simulated microphone (sim) or PortAudio
-//       on the default capture device (mic, recording MAX_SECONDS per action), the classifier -
-//       through the same run_loop_trials as echoplan_planner, writing OUT/loop_steps.csv: the log
-//       the ROS run must reproduce.
+//       on the default capture device (mic, recording exactly MAX_SECONDS per action), the
+//       classifier - through the same run_loop_trials as echoplan_planner, writing
+//       OUT/loop_steps.csv: the log the ROS run must reproduce.
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -57,6 +57,10 @@ int run(int argc, char** argv) {
   if (source == "mic") {
     robot::CaptureConfig capture;
     capture.max_seconds = argc > 8 ? std::stod(argv[8]) : 1.0;
+    // The tests' device reads a file faster than real time: only a recording that runs to its
+    // limit has a length that does not depend on when the arm answered (the listener is run
+    // with the same ~min_seconds).
+    capture.min_seconds = capture.max_seconds;
     parts.recorder = std::make_unique<robot::PortAudioRecorder>(capture);
   } else {
     parts.recorder = std::make_unique<robot::SimulatedMicrophone>(world);
