@@ -42,7 +42,7 @@ void check_writable(const fs::path& directory) {
 void claim_folder(Campaign& c, InputFiles& files) {
   check_writable(c.directory);
   const fs::path described = c.directory / kDescription;
-  c.results.identity = c.config.identity([&](const std::string& path) { return files.text(path); });
+  c.results.identity = c.config.identity(files);
   const nlohmann::json mine = {{"config", to_json(c.config)}, {"identity", c.results.identity}};
   if (fs::exists(described)) {
     const nlohmann::json theirs = nlohmann::json::parse(

@@ -3,17 +3,19 @@
 //
 // Read from YAML (format and defaults: experiments/chapter5.yaml, docs/experiment.md). Relative
 // paths in the file are relative to the file's folder. Everything is checked at load time, so a
-// campaign never fails halfway through because of its configuration.
+// campaign never fails halfway through because of its configuration. The file's sections are
+// described once (campaign_config.cpp, with config_fields.h): the YAML reading, campaign.json and
+// the identity all follow that description.
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "experiment/input_files.h"
 #include "experiment/reference_results.h"
 #include "loop/dataset_problem.h"
 #include "perception/dataset_task.h"
@@ -131,12 +133,11 @@ struct CampaignConfig {
 
   int total_trials() const;  // arms x sum of the groups' trials
 
-  // Everything that decides the results, as JSON with paths replaced by the files' contents'
-  // hashes, so a resumed or merged run can check it continues the same campaign.
+  // Everything that decides the results, as JSON with files and data folders replaced by their
+  // fingerprints, so a resumed or merged run can check it continues the same campaign.
   nlohmann::json identity() const;
-  // The same with the files' texts from `file_text(path)` (a caller that has read them already).
-  using FileText = std::function<std::string(const std::string& path)>;
-  nlohmann::json identity(const FileText& file_text) const;
+  // The same from the files and data `files` has read (a caller that has read them already).
+  nlohmann::json identity(InputFiles& files) const;
 };
 
 // Reads a campaign file; throws InputError naming the file, the line and the problem.

@@ -289,9 +289,8 @@ class RecordedDataWorld final : public CampaignWorld {
   std::shared_ptr<DatasetTrials> trials_;
 };
 
-void RecordedDataWorld::open(CampaignConfig& config, CampaignResults& results,
-                             InputFiles& /*files*/) {
-  trials_ = std::make_shared<DatasetTrials>(open_dataset(config));
+void RecordedDataWorld::open(CampaignConfig& config, CampaignResults& results, InputFiles& files) {
+  trials_ = std::make_shared<DatasetTrials>(open_dataset(config, files));
   config.groups = dataset_groups(*trials_);
   // Every arm's strategy is checked against the names problem now, not in a worker.
   for (const CampaignArm& arm : config.arms)

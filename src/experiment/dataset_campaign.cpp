@@ -58,9 +58,9 @@ void check_enough_for_folds(const perception::FeatureSet& data, const perception
 
 // A frozen model: one "fold" holding every session, its model the file's (checked against the
 // task's classes and the data's actions and modalities before any trial).
-void open_frozen_model(DatasetTrials& t, const std::string& path) {
+void open_frozen_model(DatasetTrials& t, const std::string& path, InputFiles& files) {
   auto model = std::make_shared<const perception::ObservationModel>(
-      perception::load_observation_model(path));
+      perception::parse_observation_model(files.text(path), path));
   if (model->classes() != t.task.classes)
     throw InputError(
         path, 0,
@@ -82,16 +82,17 @@ void open_frozen_model(DatasetTrials& t, const std::string& path) {
 
 }  // namespace
 
-DatasetTrials open_dataset(const CampaignConfig& config, const ProgressFn& progress) {
+DatasetTrials open_dataset(const CampaignConfig& config, InputFiles& files,
+                           const ProgressFn& progress) {
   DatasetTrials t;
-  t.data = std::make_shared<const perception::FeatureSet>(
-      perception::load_data(config.world.data, progress));
+  t.data = files.data(config.world.data, progress);
   std::optional<perception::ObjectGroups> groups;
-  if (!config.world.groups.empty()) groups = perception::load_groups(config.world.groups);
+  if (!config.world.groups.empty())
+    groups = perception::parse_groups(files.text(config.world.groups), config.world.groups);
   t.task = perception::make_dataset_task(*t.data, groups ? &*groups : nullptr,
                                          config.world.hold_out, config.world.groups);
   if (!config.world.model.empty()) {
-    open_frozen_model(t, config.world.model);
+    open_frozen_model(t, config.world.model, files);
   } else {
     check_enough_for_folds(*t.data, t.task, config.world.data);
     t.folds = perception::make_folds(*t.data, t.task);

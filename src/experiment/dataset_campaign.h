@@ -17,6 +17,7 @@
 #include "common/progress.h"
 #include "experiment/campaign_config.h"
 #include "experiment/campaign_runner.h"
+#include "experiment/input_files.h"
 #include "perception/dataset_folds.h"
 #include "perception/dataset_task.h"
 #include "perception/feature_model.h"
@@ -36,9 +37,11 @@ struct DatasetTrials {
   std::shared_ptr<const pomdp::Problem> names;
 };
 
-// Loads and checks the world's data and groups (InputError naming the file and line) and deals
-// the folds. A recordings tree's audio is analysed now (`progress` hears "analyse").
-DatasetTrials open_dataset(const CampaignConfig& config, const ProgressFn& progress = {});
+// Loads (through `files`, each input read once) and checks the world's data, groups and frozen
+// model (InputError naming the file and line) and deals the folds. A recordings tree's audio is
+// analysed now (`progress` hears "analyse").
+DatasetTrials open_dataset(const CampaignConfig& config, InputFiles& files,
+                           const ProgressFn& progress = {});
 
 // The trial groups of the data: one per object, in the data's order, a trial per session.
 std::vector<ObjectGroup> dataset_groups(const DatasetTrials& trials);

@@ -188,7 +188,11 @@ const std::string* ObjectGroups::group_of(const std::string& object) const {
 }
 
 ObjectGroups load_groups(const std::string& file) {
-  CsvReader csv(read_text_file(file, "groups file"), file);
+  return parse_groups(read_text_file(file, "groups file"), file);
+}
+
+ObjectGroups parse_groups(const std::string& text, const std::string& file) {
+  CsvReader csv(text, file);
   std::vector<std::string> cells;
   if (!csv.next(cells) || csv.line() != 1 || cells != std::vector<std::string>{"object", "group"})
     throw InputError(file, 1, "the header must be object,group");

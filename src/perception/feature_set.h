@@ -88,5 +88,7 @@ struct ObjectGroups {
 // line, problem) for a missing file, another header, a ragged row, an empty object or group, or an
 // object listed twice.
 ObjectGroups load_groups(const std::string& file);
+// The same from the file's text; `source` names it in messages.
+ObjectGroups parse_groups(const std::string& text, const std::string& source);
 
 }  // namespace echoplan::perception

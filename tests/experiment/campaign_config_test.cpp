@@ -84,7 +84,8 @@ TEST(CampaignConfig, RejectsBadValues) {
             std::string::npos);
   EXPECT_NE(error_of(replaced("trials: 3", "trials: 0")).find("trials must be >= 1"),
             std::string::npos);
-  EXPECT_NE(error_of(replaced("name: a", "name: a b")).find("arm name 'a b'"), std::string::npos);
+  EXPECT_NE(error_of(replaced("name: a", "name: a b")).find("name 'a b' may hold only"),
+            std::string::npos);
   EXPECT_NE(error_of(replaced("{episodes: 100}", "{episodes: 100, solver: greedy}"))
                 .find("solver 'greedy'"),
             std::string::npos);
@@ -262,14 +263,17 @@ TEST_F(DatasetCampaignConfig, MistakesNameTheLineAndTheProblem) {
             std::string::npos);
 }
 
+// The identity fingerprints the data as loaded: a changed value changes it, a file the loader skips
+// (a README beside the action folders) does not.
 TEST_F(DatasetCampaignConfig, IdentityCoversTheDataItself) {
   const CampaignConfig c = parse_campaign_config(text_, source());
+  std::filesystem::create_directories(dir_ / "data" / "shake");
+  std::ofstream(dir_ / "data" / "shake" / "audio.csv") << "object,session,f\nmug,1,0.5\n";
   const auto before = c.identity();
-  std::ofstream(dir_ / "data" / "x.csv") << "object,session,f\nmug,1,0.5\n";
-  const auto with_file = c.identity();
-  EXPECT_NE(before, with_file);
-  std::ofstream(dir_ / "data" / "x.csv") << "object,session,f\nmug,1,0.6\n";
-  EXPECT_NE(c.identity(), with_file);
+  std::ofstream(dir_ / "data" / "README.md") << "notes\n";
+  EXPECT_EQ(c.identity(), before);
+  std::ofstream(dir_ / "data" / "shake" / "audio.csv") << "object,session,f\nmug,1,0.6\n";
+  EXPECT_NE(c.identity(), before);
 }
 
 }  // namespace echoplan::experiment
