@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -180,6 +181,43 @@ Drawing tradeoff_drawing(const CampaignResults& results, int sensing, const fs::
   return d;
 }
 
+// Reliability: per arm and confidence bin, the share sorted right against the mean belief at the
+// sort (sort_confidence.h); an honest planner's points lie on the diagonal.
+Drawing reliability_drawing(const CampaignResults& results, const fs::path& data_dir) {
+  Drawing d;
+  d.figure.stem = "reliability";
+  d.figure.title = "How sure each arm was when it sorted, against how often it was right";
+  d.figure.caption =
+      "Each point is one arm's sorts whose belief in the chosen bin (at the decision that sorted) "
+      "fell in one bin of confidence: the share of them sorted right against their mean belief; "
+      "the point's size grows with the number of sorts. Points below the diagonal are sorts surer "
+      "than they were right.";
+  d.width = 700;
+  d.height = 500;
+  std::string data;
+  std::string plot = "plot x title 'belief = share right' with lines lc rgb '#888888'";
+  int index = 0;
+  for (const ArmConfidence& c : arm_confidence(results)) {
+    if (c.sorts == 0) continue;
+    // One data block per arm (blank-line separated), so each has its colour and key entry.
+    for (const ReliabilityBin& b : c.bins)
+      if (b.sorts > 0)
+        data += fmt::format("{} {} {}\n", b.mean_belief, b.share_right,
+                            0.8 + 2.0 * std::sqrt(static_cast<double>(b.sorts) / c.sorts));
+    data += "\n\n";
+    plot += fmt::format(
+        ", 'reliability.dat' index {} using 1:2:3 with points pt 7 ps variable "
+        "title {}",
+        index++, gnuplot_text(c.arm));
+  }
+  std::ofstream(data_dir / "reliability.dat") << data;
+  d.commands =
+      "set xlabel 'mean belief in the chosen bin at the sort'\nset ylabel 'sorted right'\n"
+      "set xrange [0:1.02]\nset yrange [0:1.05]\nset grid\nset key bottom right noenhanced\n" +
+      plot + "\n";
+  return d;
+}
+
 // How often each arm chose each sensing action: mean uses per trial.
 Drawing action_use_drawing(const CampaignResults& results, int sensing, const fs::path& data_dir) {
   Drawing d;
@@ -349,6 +387,7 @@ std::vector<Figure> draw_figures(const fs::path& directory, const CampaignResult
     Drawing confusion = confusion_drawing(results, arm.name, work.path());
     if (!confusion.commands.empty()) drawings.push_back(std::move(confusion));
   }
+  drawings.push_back(reliability_drawing(results, work.path()));
 
   std::vector<Figure> drawn;
   for (const char* format : {"png", "svg"}) {

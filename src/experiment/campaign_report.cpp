@@ -171,6 +171,36 @@ void write_tables(const fs::path& directory, const CampaignResults& results) {
   }
 }
 
+std::vector<ArmConfidence> arm_confidence(const CampaignResults& results) {
+  std::vector<std::string> arms;
+  for (const CampaignArm& arm : results.config.arms) arms.push_back(arm.name);
+  return arm_confidence(arms, results.entries, results.right_action);
+}
+
+namespace {
+
+// Per arm: the belief at the sort beside the share sorted right, overall and per confidence bin.
+nlohmann::json sort_confidence_json(const CampaignResults& results) {
+  nlohmann::json all = nlohmann::json::array();
+  for (const ArmConfidence& c : arm_confidence(results)) {
+    nlohmann::json bins = nlohmann::json::array();
+    for (const ReliabilityBin& b : c.bins)
+      bins.push_back({{"low", b.low},
+                      {"high", b.high},
+                      {"sorts", b.sorts},
+                      {"mean_belief", b.mean_belief},
+                      {"share_right", b.share_right}});
+    all.push_back({{"arm", c.arm},
+                   {"sorts", c.sorts},
+                   {"mean_belief", c.mean_belief},
+                   {"share_right", c.share_right},
+                   {"reliability", std::move(bins)}});
+  }
+  return all;
+}
+
+}  // namespace
+
 nlohmann::json summary_json(const CampaignResults& results) {
   nlohmann::json j;
   j["campaign"] = results.identity;
@@ -211,6 +241,7 @@ nlohmann::json summary_json(const CampaignResults& results) {
                          {"heard", c.columns},
                          {"counts", c.counts}});
   j["confusion"] = std::move(confusion);
+  j["sort_confidence"] = sort_confidence_json(results);
   const std::optional<ReferenceResults>& reference = results.config.reference;
   if (!results.heard.empty() && reference && reference->heard) {
     nlohmann::json heard = {{"classifier", reference->heard->classifier},
@@ -286,6 +317,12 @@ std::string summary_text(const CampaignResults& results) {
                        arms[k].name, arms[0].name, results.world.pairing, d.mean_discounted_reward,
                        d.ci95, d.trials);
   }
+  out += "\nhow sure each arm was when it sorted (belief in its choice at the sort):\n";
+  for (const ArmConfidence& c : arm_confidence(results))
+    if (c.sorts > 0)
+      out += fmt::format("  {:<24} belief {:.3f}, sorted right {:.3f} ({:+.1f} points, {} sorts)\n",
+                         c.arm, c.mean_belief, c.share_right,
+                         100.0 * (c.mean_belief - c.share_right), c.sorts);
   return out;
 }
 

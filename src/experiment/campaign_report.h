@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "experiment/campaign_config.h"
+#include "experiment/sort_confidence.h"
 #include "experiment/trial_journal.h"
 #include "experiment/trial_summary.h"
 #include "pomdp/model.h"
@@ -92,6 +93,9 @@ struct ConfusionCounts {
   std::vector<std::vector<int>> counts;
 };
 std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results);
+
+// How sure each arm was when it sorted (sort_confidence.h), in the configuration's arm order.
+std::vector<ArmConfidence> arm_confidence(const CampaignResults& results);
 
 // Writes trials.csv, steps.csv and arms/<arm>/{trials,steps}.csv into `directory`.
 void write_tables(const std::filesystem::path& directory, const CampaignResults& results);

@@ -293,6 +293,22 @@ std::string heard_section(const CampaignResults& results) {
   return h;
 }
 
+// Per arm, the belief in its choice at the sort beside the share sorted right (sort_confidence.h).
+std::string confidence_table(const CampaignResults& results) {
+  std::string h =
+      "<h2>How sure each arm was when it sorted</h2>\n<table>\n<tr><th class=\"l\">arm</th>"
+      "<th>sorts</th><th>mean belief in its choice</th><th>sorted right</th><th>belief minus "
+      "right (points)</th></tr>\n";
+  for (const ArmConfidence& c : arm_confidence(results))
+    if (c.sorts > 0)
+      h += fmt::format(
+          "<tr><td class=\"l\">{}</td><td>{}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:+.1f}</td>"
+          "</tr>\n",
+          escape(c.arm), c.sorts, c.mean_belief, c.share_right,
+          100.0 * (c.mean_belief - c.share_right));
+  return h + "</table>\n";
+}
+
 }  // namespace
 
 std::string html_report(const fs::path& directory, const CampaignResults& results,
@@ -300,7 +316,7 @@ std::string html_report(const fs::path& directory, const CampaignResults& result
   std::string h = page_opening(results) + results_table(results) + paired_comparison(results);
   const std::optional<ReferenceResults>& reference = results.config.reference;
   if (reference && !reference->note.empty()) h += "<p>" + escape(reference->note) + "</p>\n";
-  h += heard_section(results);
+  h += heard_section(results) + confidence_table(results);
   h += figure_sections(directory, figures) + trials_table(results);
   // A dataset's decisions (a belief over every class at each) would make a page of megabytes.
   h += results.world.per_object

@@ -53,9 +53,9 @@ TEST(CampaignFigures, DrawsEachFigureAsPngAndSvgInPageOrder) {
   const std::vector<Figure> figures = draw_figures(dir, small_campaign(), {});
   std::vector<std::string> stems;
   for (const Figure& f : figures) stems.push_back(f.stem);
-  EXPECT_EQ(stems,
-            (std::vector<std::string>{"belief_one_a", "belief_one_b_heavy", "confusion_one",
-                                      "belief_two_a", "belief_two_b_heavy", "confusion_two"}));
+  EXPECT_EQ(stems, (std::vector<std::string>{"belief_one_a", "belief_one_b_heavy", "confusion_one",
+                                             "belief_two_a", "belief_two_b_heavy", "confusion_two",
+                                             "reliability"}));
   EXPECT_EQ(figures[0].title, "Belief at each decision: a in the world, arm one");
   EXPECT_NE(figures[0].caption.find("1 = listen, 2 = pick_a, 3 = pick_b"), std::string::npos)
       << figures[0].caption;
