@@ -84,7 +84,10 @@ WorldStep DatasetWorld::execute(int action, Rng& /*rng*/) {
           fmt::format("dataset world: '{}' used more often than the session recorded it ({} times)",
                       data.sensing[action].name, rows_[action].size()));
     const int row = rows_[action][next_[action]++];
-    outcome.observation.index = readers_[action].classify(row).symbol;
+    const perception::Prediction heard = readers_[action].classify(row);
+    outcome.observation.index = heard.symbol;
+    // As a robot world logs it: the calibrated probability of the heard (or nearest) class.
+    outcome.heard_probability = heard.probabilities.at(static_cast<std::size_t>(heard.best_class));
     outcome.reward = data.sensing[action].reward;
     return {outcome, {}};
   }

@@ -81,13 +81,19 @@ TEST(DatasetWorld, EachSensingActionHearsTheSessionsNextPerformance) {
     EXPECT_EQ(step.outcome.reward, -1.0);
     EXPECT_FALSE(step.outcome.terminal);
     EXPECT_FALSE(step.robot.has_value());
+    // The model's calibrated probability of the class it heard: at least chance among the classes.
+    ASSERT_TRUE(step.outcome.heard_probability.has_value());
+    EXPECT_GE(*step.outcome.heard_probability, 1.0 / r.task.classes.size());
+    EXPECT_LE(*step.outcome.heard_probability, 1.0);
   }
   EXPECT_THROW(world.execute(1, rng), std::logic_error);  // a third strike was never recorded
   const WorldStep press = world.execute(0, rng);
   EXPECT_EQ(press.outcome.observation.index,
             perception::classify_row(*r.model, 0, *r.set, rows_of(*r.set, 0, session)[0]));
   // obj1 is in group0: sorting into group0 (action 2) is right, into group1 wrong.
-  EXPECT_EQ(world.execute(2, rng).outcome.reward, 10.0);
+  const WorldStep sort = world.execute(2, rng);
+  EXPECT_EQ(sort.outcome.reward, 10.0);
+  EXPECT_FALSE(sort.outcome.heard_probability.has_value());  // sorting hears nothing
   world.reset(pomdp::State{{}, {r.task.class_of_object[object]}}, rng);
   const WorldStep wrong = world.execute(3, rng);
   EXPECT_EQ(wrong.outcome.reward, -100.0);
