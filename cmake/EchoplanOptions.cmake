@@ -6,6 +6,13 @@ if(ECHOPLAN_SANITIZE)
                                                     -fno-sanitize-recover=undefined)
   target_link_options(echoplan_options INTERFACE -fsanitize=address,undefined)
 endif()
+if(ECHOPLAN_TSAN)
+  if(ECHOPLAN_SANITIZE)
+    message(FATAL_ERROR "ECHOPLAN_TSAN and ECHOPLAN_SANITIZE cannot be combined: build them apart")
+  endif()
+  target_compile_options(echoplan_options INTERFACE -fsanitize=thread -fno-omit-frame-pointer)
+  target_link_options(echoplan_options INTERFACE -fsanitize=thread)
+endif()
 
 # echoplan_module(NAME SOURCES... DEPS ...): one static library per module, with src/ on the include
 # path so headers are included as "module/header.h". Installed (cmake/EchoplanInstall.cmake) as

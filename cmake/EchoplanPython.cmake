@@ -9,7 +9,7 @@
 # module is installed where Debian's Python finds it and its tests need Debian's python3-numpy and
 # python3-pytest. Pass -DPython3_EXECUTABLE=... to build for another interpreter.
 set(ECHOPLAN_PYTHON_MODULE OFF)
-if(ECHOPLAN_BUILD_PYTHON AND ECHOPLAN_SANITIZE)
+if(ECHOPLAN_BUILD_PYTHON AND (ECHOPLAN_SANITIZE OR ECHOPLAN_TSAN))
   message(STATUS "Python module not built in the sanitizer build (it would need libasan preloaded)")
 elseif(ECHOPLAN_BUILD_PYTHON)
   if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)

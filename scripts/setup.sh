@@ -7,11 +7,12 @@
 #                             main job with its default configuration
 #   scripts/setup.sh test     install dependencies, build, and run all tests: the normal build (with
 #                             the Python module's), an install into a temporary prefix with a project
-#                             built on it (scripts/check-install.sh), an ASan+UBSan build
+#                             built on it (scripts/check-install.sh), an ASan+UBSan build, and a
+#                             ThreadSanitizer build of the tests that start threads
 #   scripts/setup.sh deps     only install dependencies
 #
 # Environment: JOBS (parallel build jobs, default: number of cores), BUILD_DIR (default: build),
-# SAN_BUILD_DIR (default: build-san), ECHOPLAN_CHECK_FORMAT (1: `test` first checks the layout of every
+# SAN_BUILD_DIR (default: build-san), TSAN_BUILD_DIR (default: build-tsan), ECHOPLAN_CHECK_FORMAT (1: `test` first checks the layout of every
 # C++ file with scripts/check-format.sh; default 1; 0 skips it), ECHOPLAN_INSTALL_PYTHON (1: after
 # building, `cmake --install BUILD_DIR --component python` puts the module under PYTHON_PREFIX,
 # default /usr/local, on Debian python3's path; default 1; 0 skips it).
@@ -23,6 +24,12 @@ mode=${1:-build}
 jobs=${JOBS:-$(nproc)}
 build_dir=${BUILD_DIR:-build}
 san_build_dir=${SAN_BUILD_DIR:-build-san}
+tsan_build_dir=${TSAN_BUILD_DIR:-build-tsan}
+# The tests that start threads (the campaign's parallel workers, parallel synthesis, the capture
+# callback of live recording), their binaries and a ctest pattern for them: the ThreadSanitizer build
+# runs these only (the rest of the suite is single-threaded, and the ASan build runs all of it).
+tsan_targets=(campaign_tests sim_tests portaudio_recorder_tests)
+tsan_tests='^campaign_tests\.Campaign\.|^sim_tests\.Dataset\.|^portaudio_recorder_tests\.'
 
 # Keep this list in one place: docs/getting-started.md points here.
 packages=(
@@ -65,6 +72,13 @@ build() {  # build DIR [extra cmake args...]: every target (tests, benchmarks, R
   local dir=$1; shift
   cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
   cmake --build "$dir" -j"$jobs"
+}
+
+build_targets() {  # build_targets DIR "TARGET..." [extra cmake args...]: only those targets
+  local dir=$1 targets=$2; shift 2
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+  # shellcheck disable=SC2086  # the targets are words
+  cmake --build "$dir" -j"$jobs" --target $targets
 }
 
 build_command() {  # build DIR: only the `echoplan` command, all the main job runs
@@ -128,7 +142,12 @@ case "$mode" in
     build "$san_build_dir" -DECHOPLAN_SANITIZE=ON -DECHOPLAN_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
       ctest --test-dir "$san_build_dir" -j"$jobs" --output-on-failure
+    echo "setup: thread sanitizer build (${tsan_targets[*]}: the tests that start threads)"
+    build_targets "$tsan_build_dir" "${tsan_targets[*]}" -DECHOPLAN_TSAN=ON -DECHOPLAN_BUILD_BENCH=OFF \
+      -DECHOPLAN_BUILD_PYTHON=OFF
+    TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
+      ctest --test-dir "$tsan_build_dir" -j"$jobs" -R "$tsan_tests" --output-on-failure
     ;;
-  -h|--help|help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//' ;;
+  -h|--help|help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//' ;;
   *) echo "setup: unknown mode '$mode' (try: build, run, test, deps)" >&2; exit 2 ;;
 esac
