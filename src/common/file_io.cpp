@@ -20,6 +20,11 @@ std::string read_text_file(const std::string& path, const std::string& what) {
   std::error_code ec;
   if (fs::exists(path, ec) && !fs::is_regular_file(path, ec))
     throw InputError(path, 0, "not a regular file; expected the " + what);
+  if (const std::uintmax_t size = fs::file_size(path, ec); !ec && size > kMaxInputFileBytes)
+    throw InputError(path, 0,
+                     "the " + what + " is " + std::to_string(size >> 20) +
+                         " MiB; echoplan reads input files of at most " +
+                         std::to_string(kMaxInputFileBytes >> 20) + " MiB");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot open the " + what);
   std::ostringstream text;

@@ -2,6 +2,7 @@
 // finished file in place so that a reader (or a run interrupted half-way) never sees half of it.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -9,8 +10,13 @@
 
 namespace echoplan {
 
+// The largest input file echoplan reads whole: a file from someone else cannot exhaust memory.
+// Far above any problem, model, campaign or feature file a robot produces (the largest shipped
+// input is under 1 MiB).
+inline constexpr std::uintmax_t kMaxInputFileBytes = 512ull << 20;
+
 // The whole text of the file at `path`; InputError(path, 0, "cannot open the <what>") if it cannot
-// be read (also for a directory).
+// be read (also for a directory), and one saying so for a file over kMaxInputFileBytes.
 std::string read_text_file(const std::string& path, const std::string& what);
 
 // The entries of folder `dir` that are not hidden (no leading '.'), sorted by name, so every

@@ -1,11 +1,15 @@
 #include "common/yaml_reader.h"
 
+#include <yaml-cpp/eventhandler.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include "common/error.h"
 #include "common/file_io.h"
@@ -21,10 +25,74 @@ std::string bound_text(double x) {
   return s.str();
 }
 
+// Counts the nodes a YAML stream stands for with every alias expanded, from the parser's events
+// (aliases are not expanded to count them, so counting is as cheap as parsing), and throws
+// YAML::ParserException at the first event past the limit.
+class ExpandedNodeCounter final : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override { leaf(mark, anchor, 1); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
+    const auto it = size_.find(anchor);
+    leaf(mark, 0, it == size_.end() ? 1 : it->second);
+  }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                const std::string&) override {
+    leaf(mark, anchor, 1);
+  }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                       YAML::EmitterStyle::value) override {
+    open(mark, anchor);
+  }
+  void OnSequenceEnd() override { close(); }
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                  YAML::EmitterStyle::value) override {
+    open(mark, anchor);
+  }
+  void OnMapEnd() override { close(); }
+
+ private:
+  struct Open {
+    YAML::anchor_t anchor;
+    long long total_before;
+  };
+  void leaf(const YAML::Mark& mark, YAML::anchor_t anchor, long long size) {
+    total_ += size;
+    if (anchor) size_[anchor] = size;
+    check(mark);
+  }
+  void open(const YAML::Mark& mark, YAML::anchor_t anchor) {
+    open_.push_back({anchor, total_});
+    total_ += 1;
+    check(mark);
+  }
+  void close() {
+    const Open o = open_.back();
+    open_.pop_back();
+    if (o.anchor) size_[o.anchor] = total_ - o.total_before;
+  }
+  void check(const YAML::Mark& mark) const {
+    if (total_ > kMaxYamlExpandedNodes)
+      throw YAML::ParserException(mark, "the document stands for more than " +
+                                            std::to_string(kMaxYamlExpandedNodes) +
+                                            " nodes with its aliases expanded");
+  }
+
+  long long total_ = 0;
+  std::vector<Open> open_;
+  std::map<YAML::anchor_t, long long> size_;
+};
+
 }  // namespace
 
 YAML::Node parse_yaml(const std::string& text, const std::string& source) {
   try {
+    std::istringstream stream(text);
+    YAML::Parser parser(stream);
+    ExpandedNodeCounter counter;
+    while (parser.HandleNextDocument(counter)) {
+    }
     return YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw InputError(source, std::max(0, e.mark.line + 1), "not valid YAML: " + e.msg);

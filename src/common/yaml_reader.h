@@ -28,8 +28,14 @@
 
 namespace echoplan {
 
+// The most nodes a YAML input may stand for with its aliases expanded: a file from someone else
+// cannot make a reader walk a billion nodes from a few lines of anchors and aliases ("billion
+// laughs"). yaml-cpp itself refuses nesting deeper than its depth guard (DeepRecursion).
+inline constexpr long long kMaxYamlExpandedNodes = 2'000'000;
+
 // Parses YAML `text` read from `source`; a syntax error throws InputError(source, line, "not valid
-// YAML: ..."). An empty text gives a null node.
+// YAML: ..."), and so does a text standing for more than kMaxYamlExpandedNodes nodes. An empty text
+// gives a null node.
 YAML::Node parse_yaml(const std::string& text, const std::string& source);
 
 // read_text_file + parse_yaml.

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "common/file_io.h"
 
 namespace echoplan {
 namespace {
@@ -141,6 +142,44 @@ TEST(YamlReader, FilesThatCannotBeReadAreNamed) {
   const std::string path = testing::TempDir() + "/echoplan_yaml_reader_test.yaml";
   std::ofstream(path) << "x: 1\n";
   EXPECT_EQ(load_yaml_file(path, "test file")["x"].as<int>(), 1);
+  std::remove(path.c_str());
+}
+
+// "Billion laughs": ten levels of ten aliases each stand for 10^10 nodes from a dozen lines; the
+// reader refuses the document at the line where the count passes the limit, without expanding it.
+TEST(YamlReader, AliasesThatExpandPastTheLimitAreRefused) {
+  std::string text = "l0: &l0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int level = 1; level <= 9; ++level) {
+    const std::string below = "*l" + std::to_string(level - 1);
+    text += "l" + std::to_string(level) + ": &l" + std::to_string(level) + " [";
+    for (int k = 0; k < 10; ++k) text += (k ? ", " : "") + below;
+    text += "]\n";
+  }
+  const InputError e = error_of([&] { parse_yaml(text, "laughs.yaml"); });
+  EXPECT_EQ(e.file(), "laughs.yaml");
+  // Level 6 stands for 10^7 nodes: its aliases pass 2,000,000 on line 7.
+  EXPECT_EQ(e.line(), 7);
+  EXPECT_TRUE(has(e, "aliases expanded")) << e.what();
+
+  // Anchors and aliases within the limit are ordinary YAML: three levels stand for about 1,100.
+  const std::size_t third = [&] {
+    std::size_t at = 0;
+    for (int line = 0; line < 3; ++line) at = text.find('\n', at) + 1;
+    return at;
+  }();
+  const YAML::Node root = parse_yaml(text.substr(0, third), "small.yaml");
+  EXPECT_EQ(root["l2"].size(), 10u);
+  EXPECT_EQ(root["l2"][3][4][5].as<std::string>(), "x");
+}
+
+// A file over kMaxInputFileBytes is refused before it is read (a sparse file: no disk is used).
+TEST(YamlReader, AFileOverTheSizeLimitIsRefusedUnread) {
+  const std::string path = testing::TempDir() + "/echoplan_huge_input.yaml";
+  std::ofstream(path) << "x: 1\n";
+  std::filesystem::resize_file(path, kMaxInputFileBytes + 1);
+  const InputError e = error_of([&] { load_yaml_file(path, "problem file"); });
+  EXPECT_EQ(e.file(), path);
+  EXPECT_TRUE(has(e, "at most 512 MiB")) << e.what();
   std::remove(path.c_str());
 }
 
