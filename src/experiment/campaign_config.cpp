@@ -8,6 +8,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "common/data_dir.h"
@@ -127,6 +128,8 @@ nlohmann::json CampaignConfig::identity(const FileText& file_text) const {
     // Only when frozen: fold campaigns written before frozen models existed keep their identity.
     if (!world.model.empty()) j["world"]["model_sha"] = content_hash(world.model);
     j["rewards"] = {{"right", rewards.right}, {"wrong", rewards.wrong}, {"sense", rewards.sense}};
+    // Only when priced: campaigns written before costs existed keep their identity.
+    if (!rewards.costs.empty()) j["rewards"]["costs"] = rewards.costs;
   }
   j["training_set"] = {{"recordings_per_pair", training.recordings_per_pair},
                        {"objects", training.objects},
@@ -255,12 +258,30 @@ WorldConfig read_world(const YamlReader& f, const YAML::Node& root, const std::s
   return w;
 }
 
-// `task: {rewards: {right, wrong, sense}}`, a dataset world's rewards.
+// `task: {costs: {BEHAVIOUR: C, ...}}`: a cost (>= 0) per priced behaviour. Which behaviours the
+// data has is known only once it is read (loop::dataset_problem checks the names then).
+std::map<std::string, double> read_costs(const YamlReader& f, const YAML::Node& costs) {
+  f.expect_map(costs, "task.costs");
+  std::map<std::string, double> priced;
+  for (auto it = costs.begin(); it != costs.end(); ++it) {
+    const std::string behaviour = f.name(it->first, "task.costs behaviour");
+    priced[behaviour] = f.number(it->second, "task.costs." + behaviour, NumberRange::at_least(0.0));
+  }
+  return priced;
+}
+
+// `task: {rewards: {right, wrong, sense}, costs: {...}}`, a dataset world's rewards (one of the two
+// at least; the other keeps its defaults).
 loop::TaskRewards read_task(const YamlReader& f, const YAML::Node& task) {
   f.expect_map(task, "task");
-  f.only_keys(task, {"rewards"}, "task");
+  f.only_keys(task, {"rewards", "costs"}, "task");
   loop::TaskRewards rewards;
-  const YAML::Node r = f.require(task, "rewards", "task");
+  if (auto c = f.optional(task, "costs", "task")) rewards.costs = read_costs(f, c);
+  const YAML::Node r = f.optional(task, "rewards", "task");
+  if (!r) {
+    if (rewards.costs.empty()) f.fail(task, "task: give rewards, costs or both");
+    return rewards;
+  }
   f.expect_map(r, "task.rewards");
   f.only_keys(r, {"right", "wrong", "sense"}, "task.rewards");
   if (auto n = f.optional(r, "right", "task.rewards")) rewards.right = f.number(n, "right");
@@ -441,6 +462,7 @@ nlohmann::json to_json(const CampaignConfig& c) {
     if (!c.world.model.empty()) j["world"]["model"] = c.world.model;
     j["rewards"] = {
         {"right", c.rewards.right}, {"wrong", c.rewards.wrong}, {"sense", c.rewards.sense}};
+    if (!c.rewards.costs.empty()) j["rewards"]["costs"] = c.rewards.costs;
   }
   j["training_set"] = {{"recordings_per_pair", c.training.recordings_per_pair},
                        {"objects", c.training.objects},
@@ -578,7 +600,12 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
     const auto reward = [&](const char* key) {
       return jf::number(jf::member(*r, key, "rewards", from), jf::child("rewards", key), from);
     };
-    c.rewards = {reward("right"), reward("wrong"), reward("sense")};
+    c.rewards = {reward("right"), reward("wrong"), reward("sense"), {}};
+    // Absent when unpriced, and in folders written before costs existed.
+    if (const auto* costs = jf::optional_member(*r, "costs", "rewards", from))
+      for (const auto& [behaviour, cost] : costs->items())
+        c.rewards.costs[behaviour] =
+            jf::number(cost, jf::child(jf::child("rewards", "costs"), behaviour), from);
   }
   // Absent when the campaign names no reference, and in folders written before the key existed.
   if (j.contains("reference")) c.reference = reference_results_from_json(j["reference"], source);
