@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "common/error.h"
+#include "common/file_io.h"
 #include "solvers/identification_solver.h"
 
 namespace echoplan::experiment {
@@ -34,14 +35,27 @@ Certificate certify_steps(const pomdp::Problem& problem, const std::string& prob
 
 namespace {
 
-// The sub-folders of `directory`, numbers in numeric order ("2" before "10"), then the rest.
-std::vector<std::string> folders_in(const fs::path& directory) {
+// The fold folders under `folds`, in numeric order ("2" before "10").
+std::vector<std::string> fold_names(const fs::path& folds) {
   std::vector<std::string> names;
-  for (const fs::directory_entry& e : fs::directory_iterator(directory))
+  for (const fs::directory_entry& e : fs::directory_iterator(folds))
     if (e.is_directory()) names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end(), [](const std::string& a, const std::string& b) {
     return a.size() != b.size() ? a.size() < b.size() : a < b;
   });
+  return names;
+}
+
+// The campaign's arms in its own order (campaign.json), the planner usually first.
+std::vector<std::string> arm_names(const fs::path& directory) {
+  const fs::path described = directory / "campaign.json";
+  const nlohmann::json j = nlohmann::json::parse(
+      read_text_file(described.string(), "campaign description"), nullptr, false);
+  if (j.is_discarded() || !j.contains("config") || !j["config"].contains("arms"))
+    throw InputError(described.string(), 0, "is not a campaign description");
+  std::vector<std::string> names;
+  for (const nlohmann::json& arm : j["config"]["arms"])
+    names.push_back(arm.value("name", std::string()));
   return names;
 }
 
@@ -54,21 +68,23 @@ std::vector<ArmCertificate> certify_campaign(const fs::path& directory,
     throw InputError(directory.string(), 0,
                      "has no folds/ folder: certify --campaign takes a dataset campaign's folder "
                      "(each fold's problem beside its trials)");
+  const std::vector<std::string> arms = arm_names(directory);
   std::vector<ArmCertificate> certificates;
-  for (const std::string& fold : folders_in(folds)) {
+  for (const std::string& fold : fold_names(folds)) {
     const fs::path problem_path = folds / fold / "problem.yaml";
     if (!fs::is_regular_file(problem_path))
       throw InputError(
           problem_path.string(), 0,
           "missing: the campaign writes each fold's problem once its folds are fitted");
     const pomdp::Problem problem = pomdp::load_problem(problem_path.string());
-    const fs::path arms = folds / fold / "arms";
-    if (!fs::is_directory(arms))
-      throw InputError(arms.string(), 0, "missing: the fold has no finished trials");
-    for (const std::string& arm : folders_in(arms))
+    for (const std::string& arm : arms) {
+      const fs::path steps = folds / fold / "arms" / arm / "steps.csv";
+      if (!fs::is_regular_file(steps))
+        throw InputError(steps.string(), 0,
+                         "missing: the campaign has not written this fold's trials");
       certificates.push_back(
-          {fold, arm,
-           certify_steps(problem, problem_path.string(), arms / arm / "steps.csv", options)});
+          {fold, arm, certify_steps(problem, problem_path.string(), steps, options)});
+    }
   }
   if (certificates.empty()) throw InputError(folds.string(), 0, "holds no folds");
   return certificates;

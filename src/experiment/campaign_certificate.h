@@ -26,9 +26,9 @@ struct ArmCertificate {
   Certificate certificate;
 };
 
-// Every fold (in numeric order) and arm (in name order) of the campaign folder `directory`.
-// Throws InputError when it has no folds/<fold>/problem.yaml (not a dataset campaign, or written
-// before folds were), or a fold has no arms' steps.
+// Every fold (in numeric order) and arm (in the campaign's order, from its campaign.json) of the
+// campaign folder `directory`. Throws InputError when it has no folds/ (not a dataset campaign, or
+// written before folds were), a fold has no problem.yaml, or an arm's steps.csv is missing.
 std::vector<ArmCertificate> certify_campaign(const std::filesystem::path& directory,
                                              const CertifyOptions& options);
 
