@@ -113,18 +113,9 @@ nlohmann::ordered_json campaign_certificate_json(const std::vector<ArmCertificat
   nlohmann::ordered_json folds = nlohmann::ordered_json::array();
   for (const ArmCertificate& a : certificates) {
     const Certificate& c = a.certificate;
-    nlohmann::ordered_json j;
-    j["fold"] = a.fold;
-    j["arm"] = a.arm;
-    j["problem"] = "folds/" + a.fold + "/problem.yaml";
-    j["trials"] = c.regret.n;
-    j["decisions"] = c.decisions;
-    j["vstar_lower"] = c.vstar.lower;
-    j["vstar_upper"] = c.vstar.upper;
-    j["regret_mean"] = c.regret.mean;
-    j["regret_ci95"] = c.regret.half_width;
-    j["regret_lower_mean"] = c.regret_lower_mean;
-    j["bound_gap_mean"] = c.bound_gap_mean;
+    nlohmann::ordered_json j = {
+        {"fold", a.fold}, {"arm", a.arm}, {"problem", "folds/" + a.fold + "/problem.yaml"}};
+    j.update(to_json(c));  // share_of_vstar is replaced below: stated only where tight
     j["looseness_share"] = looseness_share(c);
     j["tight"] = tight(c);
     if (tight(c)) {

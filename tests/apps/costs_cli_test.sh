@@ -135,19 +135,15 @@ printf 'behaviour,cost\nsqueeze,4.5\ntap,0.5\n' >"$work/costs.csv"
 [ "$(sensing_reward squeeze "$work/trained.yaml")" = -4.5 ] || fail "train --costs: squeeze is not at -4.5"
 [ "$(sensing_reward tap "$work/trained.yaml")" = -0.5 ] || fail "train --costs: tap is not at -0.5"
 [ "$(sensing_reward press "$work/trained.yaml")" = -1 ] || fail "train --costs: press is not at --reward-sense"
-printf 'behaviour,cost\nsqueeze,4.5\nsquish,1\n' >"$work/unknown.csv"
-expect_input_error "train --costs, unknown behaviour" "unknown.csv:3: 'squish' is not a behaviour of the data" \
-  train --data "$data" --costs "$work/unknown.csv" --problem-out "$work/x.yaml"
-printf 'behaviour,cost\nsqueeze,lots\n' >"$work/nan.csv"
-expect_input_error "train --costs, not a number" "nan.csv:2: the cost of 'squeeze' is 'lots', not a number" \
-  train --data "$data" --costs "$work/nan.csv" --problem-out "$work/x.yaml"
-printf 'behaviour,cost\ntap,-1\n' >"$work/neg.csv"
-expect_input_error "train --costs, negative" "neg.csv:2: the cost of 'tap' is '-1'" \
-  train --data "$data" --costs "$work/neg.csv" --problem-out "$work/x.yaml"
-printf 'action,price\ntap,1\n' >"$work/header.csv"
-expect_input_error "train --costs, header" "header.csv:1: the header must be 'behaviour,cost'" \
-  train --data "$data" --costs "$work/header.csv" --problem-out "$work/x.yaml"
-printf 'behaviour,cost\ntap,1\ntap,2\n' >"$work/twice.csv"
-expect_input_error "train --costs, twice" "twice.csv:3: 'tap' is priced twice" \
-  train --data "$data" --costs "$work/twice.csv" --problem-out "$work/x.yaml"
+refused_costs() {  # NAME CONTENT MESSAGE: train --costs with a file NAME.csv holding CONTENT fails
+  printf "$2" >"$work/$1.csv"
+  expect_input_error "train --costs, $1" "$1.csv:$3" \
+    train --data "$data" --costs "$work/$1.csv" --problem-out "$work/x.yaml"
+}
+refused_costs unknown 'behaviour,cost\nsqueeze,4.5\nsquish,1\n' "3: 'squish' is not a behaviour of the data"
+refused_costs nan 'behaviour,cost\nsqueeze,lots\n' "2: the cost of 'squeeze' is 'lots', not a number"
+refused_costs negative 'behaviour,cost\ntap,-1\n' "2: the cost of 'tap' is '-1'"
+refused_costs header 'action,price\ntap,1\n' "1: the header must be 'behaviour,cost'"
+refused_costs twice 'behaviour,cost\ntap,1\ntap,2\n' "3: 'tap' is priced twice"
+refused_costs ragged 'behaviour,cost\ntap,1,2\n' "2: 3 cells"
 finish "costs and certified-campaign"

@@ -80,18 +80,7 @@ void run_certify(const CertifyArgs& args) {
   const double vstar = 0.5 * (c.vstar.lower + c.vstar.upper);
 
   if (args.json) {
-    nlohmann::ordered_json out;
-    out["vstar_lower"] = c.vstar.lower;
-    out["vstar_upper"] = c.vstar.upper;
-    out["regret_mean"] = c.regret.mean;
-    out["regret_ci95"] = c.regret.half_width;
-    out["trials"] = c.regret.n;
-    out["regret_lower_mean"] = c.regret_lower_mean;
-    out["bound_gap_mean"] = c.bound_gap_mean;
-    out["share_of_vstar"] = c.share_of_vstar();
-    out["decisions"] = c.decisions;
-    out["unconverged_beliefs"] = c.unconverged_beliefs;
-    fmt::print("{}\n", out.dump());
+    fmt::print("{}\n", experiment::to_json(c).dump());
     return;
   }
   fmt::print("Certificate of {} on {}\n", args.steps, args.problem);
