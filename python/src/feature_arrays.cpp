@@ -264,7 +264,7 @@ ProblemPtr dataset_problem(const SetPtr& set, const perception::ObservationModel
                            double wrong, double sense) {
   const perception::DatasetTask task = task_of(*set, groups, hold_out);
   const auto data =
-      loop::dataset_problem(task, model, {right, wrong, sense}, loop::default_uses(*set));
+      loop::dataset_problem(task, model, {right, wrong, sense, {}}, loop::default_uses(*set));
   std::ostringstream text;
   pomdp::BeliefSettings belief;
   belief.type = pomdp::BeliefSettings::Type::exact;

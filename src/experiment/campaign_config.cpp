@@ -105,6 +105,16 @@ const std::vector<Field<WorldConfig>>& world_fields() {
   return fields;
 }
 
+// The task's own keys besides `rewards`: a cost (>= 0) per priced behaviour. Which behaviours the
+// data has is known only once it is read (loop::dataset_problem checks the names then). Left out of
+// the identity when none is priced: campaigns written before costs existed keep theirs.
+const std::vector<Field<loop::TaskRewards>>& task_fields() {
+  static const std::vector<Field<loop::TaskRewards>> fields{
+      {.key = "costs", .member = &loop::TaskRewards::costs, .identity = Identity::unless_default},
+  };
+  return fields;
+}
+
 const std::vector<Field<loop::TaskRewards>>& reward_fields() {
   static const std::vector<Field<loop::TaskRewards>> fields{
       {.key = "right", .member = &loop::TaskRewards::right},
@@ -232,7 +242,10 @@ nlohmann::json campaign_json(const CampaignConfig& c, Write&& write) {
   for (const CampaignArm& arm : c.arms) j["arms"].push_back(write(arm_fields(), arm));
   j["world"] = write(world_fields(), c.world);
   j["world"]["type"] = to_string(c.world.type);
-  if (recorded) j["task"]["rewards"] = write(reward_fields(), c.rewards);
+  if (recorded) {
+    j["task"] = write(task_fields(), c.rewards);
+    j["task"]["rewards"] = write(reward_fields(), c.rewards);
+  }
   j["training_set"] = write(training_fields(), c.training);
   j["trials"] = nlohmann::json::array();  // a dataset world's file has none (the data has them)
   for (const ObjectGroup& g : c.groups) j["trials"].push_back(write(group_fields(), g));
@@ -303,13 +316,17 @@ WorldConfig read_world(const YamlReader& f, const YAML::Node& root, const std::s
   return w;
 }
 
-// `task: {rewards: {right, wrong, sense}}`, a dataset world's rewards.
+// `task: {rewards: {right, wrong, sense}, costs: {BEHAVIOUR: C}}`, a dataset world's rewards (one
+// of the two at least; the other keeps its defaults).
 loop::TaskRewards read_task(const YamlReader& f, const YAML::Node& task,
                             const config_fields::Place& at) {
-  f.expect_map(task, "task");
-  f.only_keys(task, {"rewards"}, "task");
   loop::TaskRewards rewards;
-  const YAML::Node r = f.require(task, "rewards", "task");
+  config_fields::read_yaml(f, task, task_fields(), {at.source, "task", true}, rewards, {"rewards"});
+  const YAML::Node r = f.optional(task, "rewards", "task");
+  if (!r) {
+    if (rewards.costs.empty()) f.fail(task, "task: give rewards, costs or both");
+    return rewards;
+  }
   config_fields::read_yaml(f, r, reward_fields(), {at.source, "task.rewards", true}, rewards);
   if (!(rewards.right > rewards.wrong)) f.fail(r, "task.rewards: right must be greater than wrong");
   return rewards;
@@ -466,9 +483,11 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
   config_fields::read_json(j, top_fields(), "", from, recorded, c);
   c.arms = list_from_json(j, "arms", arm_fields(), from, recorded);
   config_fields::read_json(section("world"), world_fields(), "world", from, recorded, c.world);
-  if (const nlohmann::json* task = jf::optional_member(j, "task", "", from))
+  if (const nlohmann::json* task = jf::optional_member(j, "task", "", from)) {
+    config_fields::read_json(*task, task_fields(), "task", from, recorded, c.rewards);
     config_fields::read_json(jf::member(*task, "rewards", "task", from), reward_fields(),
                              "task.rewards", from, recorded, c.rewards);
+  }
   config_fields::read_json(section("training_set"), training_fields(), "training_set", from,
                            recorded, c.training);
   c.groups = list_from_json(j, "trials", group_fields(), from, recorded);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "audio/features.h"
@@ -151,33 +152,41 @@ Drawing confusion_drawing(const CampaignResults& results, const std::string& arm
 
 // Each arm's accuracy against its mean number of sensing actions per trial: where a strategy sits
 // between deciding early and performing every behaviour.
-Drawing tradeoff_drawing(const CampaignResults& results, int sensing, const fs::path& data_dir) {
+// One point per arm over all its trials: the share sorted right against `x` of the arm's "all" row
+// (sensing actions, or cost, per trial). `name` is the figure's stem and data file.
+struct TradeoffAxis {
+  std::string name;
+  std::string title;
+  std::string caption;
+  std::string xlabel;
+  std::function<double(const TrialSummary&)> x;
+};
+
+Drawing tradeoff_drawing(const CampaignResults& results, const TradeoffAxis& axis,
+                         const fs::path& data_dir) {
   Drawing d;
-  d.figure.stem = "accuracy_vs_actions";
-  d.figure.title = "Accuracy against sensing actions per trial, per arm";
-  d.figure.caption =
-      "Each point is an arm over all its trials: the share sorted right against the mean number of "
-      "sensing actions it performed before sorting.";
+  d.figure.stem = axis.name;
+  d.figure.title = axis.title;
+  d.figure.caption = axis.caption;
   d.width = 700;
   d.height = 500;
   std::string data;
   std::string plot;
   int index = 0;
+  const std::string file = axis.name + ".dat";
   for (const SummaryRow& row : summary_rows(results)) {
     if (row.scope != RowScope::all) continue;
-    double actions = 0.0;
-    for (int a = 0; a < sensing; ++a) actions += row.summary.mean_action_counts.at(a);
-    data += fmt::format("{} {}\n", actions, row.summary.accuracy);
+    data += fmt::format("{} {}\n", axis.x(row.summary), row.summary.accuracy);
     // One series per arm, so each has its own colour and a key entry (labels would overlap).
-    plot += fmt::format("{}'tradeoff.dat' every ::{}::{} using 1:2 with points pt 7 ps 2 title {}",
-                        index ? ", " : "plot ", index, index, gnuplot_text(row.arm));
+    plot += fmt::format("{}'{}' every ::{}::{} using 1:2 with points pt 7 ps 2 title {}",
+                        index ? ", " : "plot ", file, index, index, gnuplot_text(row.arm));
     ++index;
   }
-  std::ofstream(data_dir / "tradeoff.dat") << data;
-  d.commands =
-      "set xlabel 'mean sensing actions per trial'\nset ylabel 'sorted right'\n"
-      "set yrange [0:1.05]\nset xrange [0:*]\nset grid\nset key bottom right noenhanced\n" +
-      plot + "\n";
+  std::ofstream(data_dir / file) << data;
+  d.commands = fmt::format(
+      "set xlabel '{}'\nset ylabel 'sorted right'\n"
+      "set yrange [0:1.05]\nset xrange [0:*]\nset grid\nset key bottom right noenhanced\n{}\n",
+      axis.xlabel, plot);
   return d;
 }
 
@@ -216,6 +225,33 @@ Drawing reliability_drawing(const CampaignResults& results, const fs::path& data
       "set xrange [0:1.02]\nset yrange [0:1.05]\nset grid\nset key bottom right noenhanced\n" +
       plot + "\n";
   return d;
+}
+
+// Accuracy against the sensing actions performed, and, when actions have costs, against the cost.
+std::vector<Drawing> tradeoff_drawings(const CampaignResults& results, const fs::path& data_dir) {
+  const int sensing = results.sensing_actions;
+  std::vector<Drawing> drawings{tradeoff_drawing(
+      results,
+      {"accuracy_vs_actions", "Accuracy against sensing actions per trial, per arm",
+       "Each point is an arm over all its trials: the share sorted right against the mean number "
+       "of sensing actions it performed before sorting.",
+       "mean sensing actions per trial",
+       [sensing](const TrialSummary& s) {
+         double actions = 0.0;
+         for (int a = 0; a < sensing; ++a) actions += s.mean_action_counts.at(a);
+         return actions;
+       }},
+      data_dir)};
+  if (!results.action_costs.empty())
+    drawings.push_back(tradeoff_drawing(
+        results,
+        {"accuracy_vs_cost", "Accuracy against cost per trial, per arm",
+         "Each point is an arm over all its trials: the share sorted right against the mean cost "
+         "of the sensing actions it performed before sorting (task.costs; the others at "
+         "-task.rewards.sense).",
+         "mean cost per trial", [](const TrialSummary& s) { return s.mean_cost; }},
+        data_dir));
+  return drawings;
 }
 
 // How often each arm chose each sensing action: mean uses per trial.
@@ -373,7 +409,7 @@ std::vector<Figure> draw_figures(const fs::path& directory, const CampaignResult
   if (!results.world.per_object) {
     // A belief panel per trial and a confusion matrix per object would be hundreds of figures: a
     // page of recorded data compares the arms instead.
-    drawings.push_back(tradeoff_drawing(results, results.sensing_actions, work.path()));
+    for (Drawing& d : tradeoff_drawings(results, work.path())) drawings.push_back(std::move(d));
     drawings.push_back(action_use_drawing(results, results.sensing_actions, work.path()));
   }
   for (const CampaignArm& arm : results.config.arms) {

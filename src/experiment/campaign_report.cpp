@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <set>
 
 #include "experiment/campaign_runner.h"
 #include "experiment/trial_log.h"
+#include "pomdp/object_identification_model.h"
 
 namespace echoplan::experiment {
 
@@ -95,7 +97,8 @@ std::vector<SummaryRow> summary_rows(const CampaignResults& results) {
       std::vector<std::string> covered;
       for (const ObjectGroup& g : groups)
         if (keep(g)) covered.push_back(g.object);
-      rows.push_back({arm.name, scope, label, summarize(records, num_actions, results.right_action),
+      rows.push_back({arm.name, scope, label,
+                      summarize(records, num_actions, results.right_action, results.action_costs),
                       reference_for(results.config.reference, scope, covered)});
     };
     for (const ObjectGroup& g : groups)
@@ -155,20 +158,47 @@ std::string trial_seed(const CampaignConfig& config, const std::string& object) 
   return {};
 }
 
+namespace {
+
+// arms/<arm>/{trials,steps}.csv under `directory`, of the entries `keep` accepts.
+void write_arm_tables(const fs::path& directory, const CampaignResults& results,
+                      const std::function<bool(const JournalEntry&)>& keep) {
+  for (const CampaignArm& arm : results.config.arms) {
+    TrialLog per_arm(directory / "arms" / arm.name, results.spec, results.belief_particles,
+                     {"object", "session"}, {"seed"});
+    for (const JournalEntry& e : results.entries)
+      if (e.arm == arm.name && keep(e))
+        per_arm.write_trial(e.result.record, e.result.steps, {e.object, e.session},
+                            {trial_seed(results.config, e.object)});
+  }
+}
+
+}  // namespace
+
 void write_tables(const fs::path& directory, const CampaignResults& results) {
   TrialLog all(directory, results.spec, results.belief_particles, {"arm", "object", "session"},
                {"seed"});
   for (const JournalEntry& e : results.entries)
     all.write_trial(e.result.record, e.result.steps, {e.arm, e.object, e.session},
                     {trial_seed(results.config, e.object)});
-  for (const CampaignArm& arm : results.config.arms) {
-    TrialLog per_arm(directory / "arms" / arm.name, results.spec, results.belief_particles,
-                     {"object", "session"}, {"seed"});
-    for (const JournalEntry& e : results.entries)
-      if (e.arm == arm.name)
-        per_arm.write_trial(e.result.record, e.result.steps, {e.object, e.session},
-                            {trial_seed(results.config, e.object)});
-  }
+  write_arm_tables(directory, results, [](const JournalEntry&) { return true; });
+  std::set<std::string> folds;
+  for (const auto& [session, fold] : results.fold_of_session) folds.insert(fold);
+  // Each fold's trials beside its problem: `certify --campaign` judges them with that problem.
+  for (const std::string& fold : folds)
+    write_arm_tables(directory / "folds" / fold, results, [&](const JournalEntry& e) {
+      const auto it = results.fold_of_session.find({e.object, e.session});
+      return it != results.fold_of_session.end() && it->second == fold;
+    });
+}
+
+std::vector<double> action_costs(const pomdp::Model& model) {
+  const pomdp::ObjectIdentificationModel* problem = model.object_identification();
+  if (problem == nullptr) return {};
+  std::vector<double> costs(model.num_actions(), 0.0);
+  for (std::size_t a = 0; a < problem->data().sensing.size(); ++a)
+    costs[a] = -problem->data().sensing[a].reward;
+  return costs;
 }
 
 std::vector<ArmConfidence> arm_confidence(const CampaignResults& results) {
@@ -212,6 +242,7 @@ nlohmann::json summary_json(const CampaignResults& results) {
     nlohmann::json r = summary_json(row.summary, results.spec);
     r["arm"] = row.arm;
     r["objects"] = row.label;
+    if (!results.action_costs.empty()) r["mean_cost"] = row.summary.mean_cost;
     // Under "report" whatever the reference's label: the key readers of summary.json know.
     if (row.reference)
       r["report"] = {
@@ -279,6 +310,7 @@ std::string summary_text(const CampaignResults& results) {
       results.spec.action_names.begin(),
       results.spec.action_names.begin() + shown_actions(results));
   const std::optional<ReferenceResults>& reference = results.config.reference;
+  const bool costed = !results.action_costs.empty();  // a mean cost per trial beside the steps
   out += fmt::format("{} of {} trials; planner {} with {}\n", results.entries.size(),
                      results.planned_trials, results.config.planner.solver,
                      results.config.planner.episodes > 0
@@ -292,6 +324,7 @@ std::string summary_text(const CampaignResults& results) {
         if (a.name == row.arm) out += fmt::format("\narm {} ({})\n", row.arm, arm_text(results, a));
       out += fmt::format("  {:<24}{:>7}{:>10}{:>22}{:>7}", "objects", "trials", "accuracy",
                          "reward (95% CI)", "steps");
+      if (costed) out += fmt::format("{:>8}", "cost");
       for (const auto& a : actions) out += fmt::format("{:>10}", a.substr(0, 9));
       if (reference)
         out += fmt::format("   | {}: {:>7}{:>8}", reference->label, "correct", "reward");
@@ -301,6 +334,7 @@ std::string summary_text(const CampaignResults& results) {
     out +=
         fmt::format("  {:<24}{:>7}{:>10}{:>22}{:>7.2f}", row.label, s.trials, percent(s.accuracy),
                     fmt::format("{:.2f} ± {:.2f}", s.mean_discounted_reward, s.ci95), s.mean_steps);
+    if (costed) out += fmt::format("{:>8.2f}", s.mean_cost);
     for (std::size_t a = 0; a < actions.size(); ++a)
       out += fmt::format("{:>10.2f}", s.mean_action_counts[a]);
     if (row.reference)

@@ -8,9 +8,11 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "experiment/campaign_config.h"
@@ -49,11 +51,23 @@ struct CampaignResults {
   // other worlds, whose accuracy is the final belief's mode.
   std::vector<int> right_action;
   int sensing_actions = 0;  // a dataset world's sensing actions (the first actions), for figures
+  // What one use of each action costs (action_costs()): the summaries' mean cost per trial; empty
+  // when the world's problem is not an object-identification problem (no costs reported).
+  std::vector<double> action_costs;
+  // A dataset world's fold of each trial, (object, session) -> fold name ("1", "2", ...):
+  // write_tables() writes each fold's trials beside the fold's problem (folds/<fold>/), for
+  // `echoplan certify --campaign`. Empty in other worlds.
+  std::map<std::pair<std::string, std::string>, std::string> fold_of_session;
   // A simulated world's training set heard by the reference's classifier (leave-one-out, per
   // action; perception::heard_confusion), shown beside the reference's `heard` counts; empty when
   // the world is not simulated or the reference has no such counts.
   std::vector<HeardCounts> heard;
 };
+
+// What one use of each of the model's actions costs: minus a sensing action's reward (its
+// collisions aside), 0 for a sorting action; empty when `model` is not an object-identification
+// problem.
+std::vector<double> action_costs(const pomdp::Model& model);
 
 // How many of the spec's actions (the first ones) the results tables give a column: all of them,
 // or only the sensing actions when the world does not present objects one by one (recorded data:
@@ -97,7 +111,8 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results);
 // How sure each arm was when it sorted (sort_confidence.h), in the configuration's arm order.
 std::vector<ArmConfidence> arm_confidence(const CampaignResults& results);
 
-// Writes trials.csv, steps.csv and arms/<arm>/{trials,steps}.csv into `directory`.
+// Writes trials.csv, steps.csv and arms/<arm>/{trials,steps}.csv into `directory`; with
+// fold_of_session, also each fold's folds/<fold>/arms/<arm>/{trials,steps}.csv.
 void write_tables(const std::filesystem::path& directory, const CampaignResults& results);
 
 // The content of summary.json.

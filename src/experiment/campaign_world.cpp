@@ -92,6 +92,7 @@ void ProblemFileWorld::load_problems(const CampaignConfig& config, CampaignResul
     if (arm.calibrate) loop::object_problem(*arm_problems_.back()->model);
   }
   results.spec = spec;
+  results.action_costs = action_costs(*world_problem_->model);
   const auto particles = [](const pomdp::Problem& p) {
     return p.belief.type == pomdp::BeliefSettings::Type::particle ? p.belief.particles : 0;
   };
@@ -278,14 +279,17 @@ std::vector<HeardCounts> ProblemFileWorld::heard(const CampaignConfig& config) c
 // Recorded data: the data and its folds instead of problem files, the simulator and trial groups.
 class RecordedDataWorld final : public CampaignWorld {
  public:
+  explicit RecordedDataWorld(fs::path directory) : directory_(std::move(directory)) {}
   void open(CampaignConfig& config, CampaignResults& results, InputFiles& files) override;
   std::optional<ArmLoops> prepare(const CampaignConfig& config, const ProgressFn& progress,
                                   const std::atomic<bool>& stop) override {
     if (!fit_dataset_folds(*trials_, config, progress, stop)) return std::nullopt;
+    write_fold_problems(directory_, config, *trials_);
     return dataset_loops(config, *trials_);
   }
 
  private:
+  fs::path directory_;  // the campaign's folder: each fold's problem goes to folds/<fold>/
   std::shared_ptr<DatasetTrials> trials_;
 };
 
@@ -298,6 +302,12 @@ void RecordedDataWorld::open(CampaignConfig& config, CampaignResults& results, I
   results.spec = trials_->names->model->spec();
   results.right_action = right_actions(*trials_);
   results.sensing_actions = static_cast<int>(trials_->data->actions.size());
+  results.action_costs = action_costs(*trials_->names->model);
+  for (std::size_t s = 0; s < trials_->data->sessions.size(); ++s) {
+    const perception::Session& session = trials_->data->sessions[s];
+    results.fold_of_session[{trials_->data->objects.at(session.object), session.name}] =
+        std::to_string(trials_->fold_of_session.at(s) + 1);
+  }
   results.world.title = title_of(config);
   results.world.note = config.world.model.empty()
                            ? "The world here is recorded data replayed: each trial is one "
@@ -323,7 +333,7 @@ std::unique_ptr<CampaignWorld> make_campaign_world(const CampaignConfig& config,
     case WorldType::dataset:
       break;
   }
-  return std::make_unique<RecordedDataWorld>();
+  return std::make_unique<RecordedDataWorld>(directory);
 }
 
 }  // namespace echoplan::experiment

@@ -60,9 +60,9 @@ struct Field {
   Member<T> member;
   Identity identity = Identity::value;
   Worlds worlds = Worlds::any;
-  Text text = Text::word;   // text fields
-  bool required = false;    // the YAML must give it (where its world applies)
-  int min = 0;              // whole numbers: the least allowed
+  Text text = Text::word;  // text fields
+  bool required = false;   // the YAML must give it (where its world applies)
+  int min = 0;             // whole numbers, and a map's values: the least allowed
   std::vector<std::string> (*choices)() = nullptr;  // words: the allowed ones
   const char* elsewhere = "";  // why the key is refused in the worlds it does not belong to
 };
@@ -140,8 +140,11 @@ void read_yaml_field(const YamlReader& f, const YAML::Node& map, const Field<T>&
         } else {
           f.expect_map(n, field.key);
           value.clear();
-          for (const auto& entry : n)
-            value[f.name(entry.first, field.key)] = f.number(entry.second, field.key);
+          for (const auto& entry : n) {
+            const std::string name = f.name(entry.first, field.key);
+            value[name] = f.number(entry.second, std::string(field.key) + "." + name,
+                                   NumberRange::at_least(field.min));
+          }
         }
       },
       field.member);
@@ -181,8 +184,9 @@ nlohmann::json write_json(const std::vector<Field<T>>& fields, const T& from, bo
 // Reads what write_json wrote; a field absent from `j` keeps its value in `into` (folders written
 // before the field existed). `path` names the section in messages ("world", "arms[0]").
 template <class T>
-void read_json(const nlohmann::json& j, const std::vector<Field<T>>& fields, const std::string& path,
-               const json_fields::JsonSource& source, bool recorded_data, T& into) {
+void read_json(const nlohmann::json& j, const std::vector<Field<T>>& fields,
+               const std::string& path, const json_fields::JsonSource& source, bool recorded_data,
+               T& into) {
   namespace jf = json_fields;
   for (const Field<T>& field : fields) {
     const nlohmann::json* n = jf::optional_member(j, field.key, path, source);
@@ -236,8 +240,10 @@ nlohmann::json write_identity(const std::vector<Field<T>>& fields, const T& from
           using V = std::remove_cvref_t<decltype(value)>;
           if constexpr (std::is_same_v<V, std::string>) {
             const std::string sha = std::string(field.key) + "_sha";
-            if (field.identity == Identity::file_hash) return void(j[sha] = fingerprints.file(value));
-            if (field.identity == Identity::data_hash) return void(j[sha] = fingerprints.data(value));
+            if (field.identity == Identity::file_hash)
+              return void(j[sha] = fingerprints.file(value));
+            if (field.identity == Identity::data_hash)
+              return void(j[sha] = fingerprints.data(value));
           }
           if (field.identity == Identity::unless_default && value == defaults.*member) return;
           j[field.key] = json_value(value);

@@ -4,8 +4,10 @@
 #include <fmt/ranges.h>
 
 #include <map>
+#include <sstream>
 
 #include "common/error.h"
+#include "common/file_io.h"
 #include "loop/dataset_problem.h"
 #include "loop/dataset_world.h"
 #include "loop/loop.h"
@@ -100,8 +102,13 @@ DatasetTrials open_dataset(const CampaignConfig& config, InputFiles& files,
     for (std::size_t f = 0; f < t.folds.size(); ++f)
       for (int s : t.folds[f].test_sessions) t.fold_of_session.at(s) = static_cast<int>(f);
   }
-  t.names = std::make_shared<const pomdp::Problem>(dataset_problem_file(
-      loop::dataset_problem_shape(t.task, *t.data, config.rewards), config.world.data));
+  try {
+    t.names = std::make_shared<const pomdp::Problem>(dataset_problem_file(
+        loop::dataset_problem_shape(t.task, *t.data, config.rewards), config.world.data));
+  } catch (const InputError& e) {
+    // Only the task can be wrong here (a cost for a behaviour the data does not have).
+    throw InputError(config.source, 0, "task." + e.problem());
+  }
   return t;
 }
 
@@ -140,6 +147,28 @@ bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
   }
   if (progress) progress("fit folds", folds, folds);
   return true;
+}
+
+void write_fold_problems(const std::filesystem::path& directory, const CampaignConfig& config,
+                         const DatasetTrials& trials) {
+  pomdp::BeliefSettings belief;
+  belief.type = pomdp::BeliefSettings::Type::exact;  // as the campaign's trials track it
+  const std::vector<int> uses = loop::default_uses(*trials.data);
+  for (std::size_t f = 0; f < trials.models.size(); ++f) {
+    const std::filesystem::path folder = directory / "folds" / std::to_string(f + 1);
+    std::filesystem::create_directories(folder);
+    std::ostringstream text;
+    text << fmt::format(
+        "# Fold {} of the campaign {}\n# (data {}): the problem its trials planned with, each "
+        "behaviour limited to the most\n# performances any session recorded (a trial's own "
+        "limits may be lower).\n# `echoplan certify --campaign` judges folds/{}/arms/*/steps.csv "
+        "with it.\n",
+        f + 1, config.source, config.world.data, f + 1);
+    pomdp::write_problem_yaml(
+        text, loop::dataset_problem(trials.task, *trials.models[f], config.rewards, uses), belief,
+        pomdp::PlannerDefaults{});
+    write_file_atomically(folder / "problem.yaml", text.str());
+  }
 }
 
 ArmLoops dataset_loops(const CampaignConfig& config, const DatasetTrials& trials) {

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <atomic>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -52,6 +53,13 @@ std::vector<int> right_actions(const DatasetTrials& trials);
 // Fits every fold's model (`progress` hears "fit folds"). Returns false when stopped.
 bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
                        const ProgressFn& progress, const std::atomic<bool>& stop);
+
+// Writes each fold's problem, `directory`/folds/<fold>/problem.yaml (folds numbered from 1): the
+// fold's fitted table, the task's rewards and costs, each behaviour limited to the most
+// performances any session recorded (default_uses). `echoplan certify --campaign` judges the
+// fold's trials with it. Needs the fitted folds.
+void write_fold_problems(const std::filesystem::path& directory, const CampaignConfig& config,
+                         const DatasetTrials& trials);
 
 // The loop of every arm and trial: loops[arm][object][session] (campaign_runner.h). Needs the
 // fitted folds.

@@ -119,6 +119,8 @@ std::string results_table(const CampaignResults& results) {
   h += "<table>\n<tr><th class=\"l\">arm</th><th class=\"l\">objects</th>"
        "<th>trials</th><th>accuracy</th><th>mean discounted reward (95% CI)</th><th>mean "
        "steps</th>";
+  const bool costed = !results.action_costs.empty();  // the mean cost beside the steps
+  if (costed) h += "<th>mean cost</th>";
   const int shown = shown_actions(results);
   for (int a = 0; a < shown; ++a) h += "<th>mean " + escape(results.spec.action_names[a]) + "</th>";
   if (reference)
@@ -132,6 +134,7 @@ std::string results_table(const CampaignResults& results) {
         row.scope != RowScope::object ? " class=\"total\"" : "", escape(row.arm), escape(row.label),
         s.trials, s.accuracy >= 0.999 ? "good" : (s.accuracy < 0.8 ? "bad" : ""),
         100.0 * s.accuracy, s.mean_discounted_reward, s.ci95, s.mean_steps);
+    if (costed) h += fmt::format("<td>{:.2f}</td>", s.mean_cost);
     for (int a = 0; a < shown; ++a) h += fmt::format("<td>{:.2f}</td>", s.mean_action_counts[a]);
     if (row.reference)
       h += fmt::format("<td>{}/{}</td><td>{:.2f}</td>", row.reference->correct,

@@ -168,4 +168,19 @@ Certificate certify_trials(solvers::IdentificationSolver& solver,
   return c;
 }
 
+nlohmann::ordered_json to_json(const Certificate& c) {
+  nlohmann::ordered_json out;
+  out["vstar_lower"] = c.vstar.lower;
+  out["vstar_upper"] = c.vstar.upper;
+  out["regret_mean"] = c.regret.mean;
+  out["regret_ci95"] = c.regret.half_width;
+  out["trials"] = c.regret.n;
+  out["regret_lower_mean"] = c.regret_lower_mean;
+  out["bound_gap_mean"] = c.bound_gap_mean;
+  out["share_of_vstar"] = c.share_of_vstar();
+  out["decisions"] = c.decisions;
+  out["unconverged_beliefs"] = c.unconverged_beliefs;
+  return out;
+}
+
 }  // namespace echoplan::experiment

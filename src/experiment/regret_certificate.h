@@ -16,6 +16,7 @@
 // its bounds' gap).
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "common/statistics.h"
@@ -79,5 +80,10 @@ struct Certificate {
 Certificate certify_trials(solvers::IdentificationSolver& solver,
                            const std::vector<LoggedTrial>& trials, const CertifyOptions& options,
                            const std::string& steps_file);
+
+// The certificate's figures as `echoplan certify --json` prints them: vstar_lower, vstar_upper,
+// regret_mean, regret_ci95, trials, regret_lower_mean, bound_gap_mean, share_of_vstar, decisions,
+// unconverged_beliefs (the worst decisions are left out).
+nlohmann::ordered_json to_json(const Certificate& certificate);
 
 }  // namespace echoplan::experiment

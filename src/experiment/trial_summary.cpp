@@ -14,7 +14,8 @@ bool right(const TrialRecord& t, const std::vector<int>& right_action) {
 }  // namespace
 
 TrialSummary summarize(const std::vector<TrialRecord>& trials, int num_actions,
-                       const std::vector<int>& right_action) {
+                       const std::vector<int>& right_action,
+                       const std::vector<double>& action_costs) {
   TrialSummary s;
   s.trials = static_cast<int>(trials.size());
   s.mean_action_counts.assign(num_actions, 0.0);
@@ -25,6 +26,8 @@ TrialSummary summarize(const std::vector<TrialRecord>& trials, int num_actions,
     s.mean_discounted_reward += t.discounted_reward / n;
     s.mean_steps += t.steps / n;
     for (int a = 0; a < num_actions; ++a) s.mean_action_counts[a] += t.action_counts[a] / n;
+    for (std::size_t a = 0; a < action_costs.size(); ++a)
+      s.mean_cost += t.action_counts.at(a) * action_costs[a] / n;
     s.collisions += t.collision;
     s.capped += t.capped;
   }

@@ -18,13 +18,18 @@ struct TrialSummary {
   double ci95 = 0.0;                  // half-width of the 95% CI of the mean (Student's t)
   double mean_steps = 0.0;
   std::vector<double> mean_action_counts;  // per action
+  // What the trials' actions cost on average (summarize()'s `action_costs`); 0 without costs.
+  double mean_cost = 0.0;
   int collisions = 0;
   int capped = 0;  // trials stopped by --max-steps
 };
 
 // `right_action[s]`, when given, is the action that sorts true state s right (a dataset world sorts
 // objects by group, so knowing the group is enough): a trial is right when it took that action.
+// `action_costs[a]`, when given (one per action), is what one use of action a costs: mean_cost is
+// the mean over trials of Σ_a uses × cost.
 TrialSummary summarize(const std::vector<TrialRecord>& trials, int num_actions,
-                       const std::vector<int>& right_action = {});
+                       const std::vector<int>& right_action = {},
+                       const std::vector<double>& action_costs = {});
 
 }  // namespace echoplan::experiment

@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <utility>
 
@@ -15,12 +16,25 @@ namespace {
 
 using Table = std::vector<std::vector<std::vector<double>>>;
 
+// A cost for a behaviour the data does not have is a typing mistake, not a price to ignore.
+void check_costs(const TaskRewards& rewards, const std::vector<std::string>& actions) {
+  for (const auto& [behaviour, cost] : rewards.costs) {
+    if (std::find(actions.begin(), actions.end(), behaviour) == actions.end())
+      throw InputError(fmt::format("costs: '{}' is not a behaviour of the data (it has: {})",
+                                   behaviour, fmt::join(actions, ", ")));
+    if (!(cost >= 0.0) || !std::isfinite(cost))
+      throw InputError(fmt::format("costs: the cost of '{}' is {}; a cost is a finite number >= 0",
+                                   behaviour, cost));
+  }
+}
+
 pomdp::ObjectProblemData problem_of(const perception::DatasetTask& task,
                                     const std::vector<std::string>& actions, const Table& table,
                                     const TaskRewards& rewards, std::vector<int> uses) {
   if (uses.size() != actions.size())
     throw InputError(fmt::format("{} use limits for {} actions; expected one per action",
                                  uses.size(), actions.size()));
+  check_costs(rewards, actions);
   pomdp::ObjectProblemData data;
   data.name = "dataset";
   data.discount = 0.99;
@@ -31,7 +45,7 @@ pomdp::ObjectProblemData problem_of(const perception::DatasetTask& task,
       throw InputError(fmt::format("action '{}': use limit {} is negative", actions[a], uses[a]));
     pomdp::SensingAction sensing;
     sensing.name = actions[a];
-    sensing.reward = rewards.sense;
+    sensing.reward = rewards.sensing_reward(actions[a]);
     sensing.uses = uses[a];
     data.sensing.push_back(std::move(sensing));
   }
@@ -49,6 +63,11 @@ pomdp::ObjectProblemData problem_of(const perception::DatasetTask& task,
 }
 
 }  // namespace
+
+double TaskRewards::sensing_reward(const std::string& behaviour) const {
+  const auto priced = costs.find(behaviour);
+  return priced == costs.end() ? sense : -priced->second;
+}
 
 pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
                                          const perception::ObservationModel& model,

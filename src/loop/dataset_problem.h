@@ -3,6 +3,8 @@
 // into a bin (docs/feature-sets.md, "The problem of a feature set").
 #pragma once
 
+#include <map>
+#include <string>
 #include <vector>
 
 #include "perception/dataset_task.h"
@@ -14,10 +16,17 @@ namespace echoplan::loop {
 
 // What sorting recorded data earns (a campaign's `task: rewards`, `train --reward-*`): by default
 // the report's +10 for the right bin, -100 for a wrong one, and -1 per behaviour performed.
+// `costs` (a campaign's `task: costs`, `train --costs`) prices behaviours one by one, since on a
+// real robot a look takes half a second and a push or a shake several: a behaviour with cost C
+// earns -C per performance; the others earn `sense`.
 struct TaskRewards {
   double right = 10.0;
   double wrong = -100.0;
   double sense = -1.0;
+  std::map<std::string, double> costs;  // behaviour -> cost (>= 0)
+
+  // The reward of one performance of `behaviour`: -cost when it is priced, else `sense`.
+  double sensing_reward(const std::string& behaviour) const;
 };
 
 // The problem: objects = the task's classes with a uniform prior (the datasets are balanced, and a
@@ -25,8 +34,10 @@ struct TaskRewards {
 // action (same order, reward `sense`, no motion, no collision, `uses[a]` its use limit, 0: none);
 // one sorting action per bin, rewarding `right` when the class is in that bin and `wrong`
 // otherwise; observation symbols = the classes; the table = the model's observation tables;
-// discount 0.99 (the report's problems). Throws InputError when `uses` is not one entry per
-// action, or negative, or the model's classes are not the task's (or it rejects).
+// discount 0.99 (the report's problems). Each sensing action's reward is
+// rewards.sensing_reward(its name). Throws InputError when `uses` is not one entry per action, or
+// negative, when `rewards.costs` prices a behaviour the model does not have, or when the model's
+// classes are not the task's (or it rejects).
 pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
                                          const perception::ObservationModel& model,
                                          const TaskRewards& rewards, std::vector<int> uses);

@@ -31,10 +31,14 @@ class BestSingle final : public FixedStrategy {
  public:
   explicit BestSingle(pomdp::ModelPtr model)
       : FixedStrategy("best_single", std::move(model)), lookahead_(problem()) {
-    double best = -1.0;
+    // By value, cost included; equal values (equal costs and accuracy) go to the more accurate,
+    // so that with one cost for every action the choice is the most accurate one.
+    double best_value = -std::numeric_limits<double>::infinity(), best_accuracy = -1.0;
     for (int a = 0; a < problem().num_sensing(); ++a) {
+      const double value = single_action_value(problem().data(), a);
       const double accuracy = held_out_accuracy(problem().data(), a);
-      if (accuracy > best) best = accuracy, action_ = a;
+      if (value > best_value || (value == best_value && accuracy > best_accuracy))
+        best_value = value, best_accuracy = accuracy, action_ = a;
     }
   }
 

@@ -4,8 +4,10 @@
 // and ends by sorting to the bin most likely right (most_likely_right_sort()):
 //   all_actions       every sensing action once, in the problem's order, skipping any whose uses
 //                     have run out; then sort.
-//   best_single       the sensing action with the best held-out accuracy (held_out_accuracy(); the
-//                     first on ties), repeated while its uses last; then sort. An action with no
+//   best_single       the sensing action of the best value, cost included (single_action_value():
+//                     one performance, then sorting right as often as its held-out accuracy says;
+//                     with equal costs, the most accurate; the first on ties), repeated while its
+//                     uses last; then sort. An action with no
 //                     use limit is repeated while one more performance is worth its cost by
 //                     information_gain's rule (sense_then_commit_value() above commit_value()),
 //                     since repeating it forever never sorts.

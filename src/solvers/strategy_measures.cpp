@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace echoplan::solvers {
 
@@ -44,6 +45,22 @@ double held_out_accuracy(const pomdp::ObjectProblemData& data, int a) {
     accuracy += best;
   }
   return accuracy;
+}
+
+double single_action_value(const pomdp::ObjectProblemData& data, int a) {
+  double right = 0.0, wrong = 0.0;
+  for (std::size_t k = 0; k < data.objects.size(); ++k) {
+    double best = -std::numeric_limits<double>::infinity();
+    double worst = std::numeric_limits<double>::infinity();
+    for (const std::vector<double>& bin : data.sorting_reward)
+      best = std::max(best, bin[k]), worst = std::min(worst, bin[k]);
+    right += data.prior[k] * best;
+    wrong += data.prior[k] * worst;
+  }
+  const double accuracy = held_out_accuracy(data, a);
+  // wrong + accuracy (right − wrong), not accuracy right + (1 − accuracy) wrong: each operation is
+  // then monotone in the accuracy even when rounded, so equal costs order exactly as accuracy does.
+  return data.sensing.at(a).reward + data.discount * (wrong + accuracy * (right - wrong));
 }
 
 OneStepLookahead::OneStepLookahead(const pomdp::ObjectIdentificationModel& model)

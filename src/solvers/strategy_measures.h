@@ -18,6 +18,16 @@ namespace echoplan::solvers {
 // of one symbol would get right by Bayes' rule instead: Σ_o max_k prior_k P(o | k, a).
 double held_out_accuracy(const pomdp::ObjectProblemData& data, int a);
 
+// What one performance of sensing action `a` is worth before anything is heard, cost included:
+// sense once (reward r_a, the action's reward per use) and sort by what was heard, right as often
+// as held_out_accuracy() says:
+//   value_a = r_a + γ (accuracy_a R_right + (1 − accuracy_a) R_wrong),
+// R_right = Σ_k prior_k max_j sorting_reward[j][k] (the right bin), R_wrong the same with min_j (a
+// wrong bin; a mistake that lands in the right bin anyway is counted as wrong, so the value is a
+// lower bound). With equal costs it orders actions as their accuracy does (best_single's choice
+// before costs existed); a costly action must be that much more accurate to be worth it.
+double single_action_value(const pomdp::ObjectProblemData& data, int a);
+
 // One-step lookahead at a belief b over the objects (b(k), k < K), by the problem's tables: the
 // same Bayes rule and rewards as ABT's default sensing policy (sensing_policy.h), so a sensing
 // action's reward counts its collisions, (1-p) r_a + p r_collision, and a collision ends the

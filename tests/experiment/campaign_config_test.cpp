@@ -224,6 +224,33 @@ TEST_F(DatasetCampaignConfig, ReadsTheDataHoldOutGroupsRewardsAndStrategies) {
   EXPECT_EQ(to_json(back), to_json(c));
 }
 
+TEST_F(DatasetCampaignConfig, CostsPriceBehavioursAndEnterTheIdentityOnlyWhenGiven) {
+  std::string text = text_;
+  const std::string rewards = "task: {rewards: {right: 5, wrong: -50, sense: -2}}";
+  text.replace(
+      text.find(rewards), rewards.size(),
+      "task: {rewards: {right: 5, wrong: -50, sense: -2}, costs: {shake: 4.5, look: 0.5}}");
+  const CampaignConfig priced = parse_campaign_config(text, source());
+  EXPECT_EQ(priced.rewards.costs, (std::map<std::string, double>{{"look", 0.5}, {"shake", 4.5}}));
+  EXPECT_EQ(priced.rewards.sense, -2);
+  const CampaignConfig back = campaign_config_from_json(to_json(priced), "campaign.json");
+  EXPECT_EQ(back.rewards.costs, priced.rewards.costs);
+  std::filesystem::create_directories(dir_ / "data" / "shake");
+  std::ofstream(dir_ / "data" / "shake" / "audio.csv") << "object,session,f\nmug,1,0.5\n";
+  EXPECT_EQ(priced.identity()["task"]["costs"]["shake"], 4.5);
+  // Unpriced campaigns keep the identity they had before costs existed.
+  const CampaignConfig plain = parse_campaign_config(text_, source());
+  EXPECT_FALSE(plain.identity()["task"].contains("costs"));
+  EXPECT_TRUE(to_json(plain)["task"]["costs"].empty());
+  // Costs alone keep the default rewards.
+  const CampaignConfig only = parse_campaign_config(
+      "world: {type: dataset, data: data}\ntask: {costs: {tap: 3}}\narms: [{name: plan}]\n"
+      "planner: {episodes: 10}\n",
+      source());
+  EXPECT_EQ(only.rewards.sense, -1);
+  EXPECT_EQ(only.rewards.costs.at("tap"), 3);
+}
+
 TEST_F(DatasetCampaignConfig, DefaultsAreTheReportsRewardsAndSessions) {
   const CampaignConfig c = parse_campaign_config(
       "world: {type: dataset, data: data}\narms: [{name: plan}]\nplanner: {episodes: 10}\n",

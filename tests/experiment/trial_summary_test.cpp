@@ -41,6 +41,16 @@ TEST(TrialSummary, ThreeTrialsByHand) {
   EXPECT_EQ(s.capped, 1);
 }
 
+TEST(TrialSummary, MeanCostIsEachTrialsUsesTimesTheirCosts) {
+  // Costs: action 0 at 0.5, action 1 at 4, action 2 (a sort) at 0. Trial costs: 1·0.5 + 1·4 = 4.5,
+  // 2·0.5 + 1·4 = 5, 0 + 2·4 = 8; mean 17.5 / 3.
+  const std::vector<TrialRecord> trials = {trial(0, 0, 2, {1, 1, 0}, 1.0),
+                                           trial(1, 0, 4, {2, 1, 1}, 2.0),
+                                           trial(2, 2, 3, {0, 2, 1}, 6.0)};
+  EXPECT_DOUBLE_EQ(summarize(trials, 3, {}, {0.5, 4.0, 0.0}).mean_cost, 17.5 / 3.0);
+  EXPECT_EQ(summarize(trials, 3).mean_cost, 0.0);  // without costs: none reported
+}
+
 TEST(TrialSummary, OneTrialHasNoInterval) {
   const TrialSummary s = summarize({trial(1, 1, 5, {3, 2}, -4.5)}, 2);
   EXPECT_EQ(s.trials, 1);

@@ -67,7 +67,7 @@ TEST(DatasetProblem, ObjectsAreClassesSortingIsByBinAndTheTableIsTheModels) {
 
 TEST(DatasetProblem, RewardsAndUsesAreTheCallers) {
   const Fitted f = fitted();
-  const auto p = dataset_problem(f.task, f.model, {1.0, -5.0, -0.5}, {0, 3});
+  const auto p = dataset_problem(f.task, f.model, {1.0, -5.0, -0.5, {}}, {0, 3});
   EXPECT_EQ(p.sensing[0].uses, 0);
   EXPECT_EQ(p.sensing[1].uses, 3);
   EXPECT_EQ(p.sensing[1].reward, -0.5);
@@ -75,6 +75,28 @@ TEST(DatasetProblem, RewardsAndUsesAreTheCallers) {
   EXPECT_EQ(p.sorting_reward[1][0], -5.0);
   EXPECT_THROW(dataset_problem(f.task, f.model, {}, {1}), InputError);
   EXPECT_THROW(dataset_problem(f.task, f.model, {}, {1, -1}), InputError);
+}
+
+TEST(DatasetProblem, CostsPriceBehavioursOneByOneAndTheOthersStayAtSense) {
+  const Fitted f = fitted();
+  TaskRewards rewards;
+  rewards.sense = -0.5;
+  rewards.costs = {{"strike", 4.5}};
+  const auto p = dataset_problem(f.task, f.model, rewards, {1, 2});
+  EXPECT_EQ(p.sensing[0].reward, -0.5);  // press: unpriced
+  EXPECT_EQ(p.sensing[1].reward, -4.5);  // strike
+  rewards.costs = {{"strike", 0.0}};
+  EXPECT_EQ(dataset_problem(f.task, f.model, rewards, {1, 2}).sensing[1].reward, 0.0);
+  // A price for a behaviour the data does not have is a mistake, said with the behaviours it has.
+  rewards.costs = {{"shake", 1.0}};
+  try {
+    dataset_problem(f.task, f.model, rewards, {1, 2});
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.problem(), "costs: 'shake' is not a behaviour of the data (it has: press, strike)");
+  }
+  rewards.costs = {{"press", -1.0}};
+  EXPECT_THROW(dataset_problem(f.task, f.model, rewards, {1, 2}), InputError);
 }
 
 }  // namespace

@@ -100,6 +100,21 @@ TEST(BestSingle, FollowsTheAccuracyNotTheOrder) {
   EXPECT_EQ(run.decide(), kToB);
 }
 
+TEST(BestSingle, WeighsTheCostAgainstTheAccuracy) {
+  // Value of one performance then sorting by it: r_a + 0.99 (-100 + 110 accuracy) (strategy
+  // measures). Shake (0.70) at cost 1: -23.77. Press (0.85) at cost c: -c - 6.435, worth it while
+  // c < 17.335: at 16 press (-22.435) still wins, at 20 (-26.435) shake does.
+  pomdp::ObjectProblemData d = testing::two_objects();
+  for (auto& a : d.sensing) a.uses = 1;
+  d.sensing[kPress].reward = -16.0;
+  EXPECT_EQ(StrategyRun("best_single", d, {0.5, 0.5}).decide(), kPress);
+  d.sensing[kPress].reward = -20.0;
+  StrategyRun run("best_single", d, {0.5, 0.5});
+  EXPECT_EQ(run.decide(), kShake);
+  run.heard(kShake, {0.3, 0.7});
+  EXPECT_EQ(run.decide(), kToB);  // shake spent: the cheap single action, not the accurate one
+}
+
 TEST(BestSingle, WithoutALimitRepeatsWhileOneMoreLookIsWorthIt) {
   {
     // Uniform: pressing once more then committing is worth -1 + 0.99·(-6.5) = -7.435 against
@@ -144,6 +159,20 @@ TEST(InformationGain, SensesWithTheMostInformativeActionPerUnitCost) {
   StrategyRun run("information_gain", d, {0.5, 0.5});
   EXPECT_EQ(run.decide(), kShake);
   EXPECT_NEAR(run.strategy->root_action_values()[kPress], -4 + 0.99 * -6.5, 1e-12);
+}
+
+TEST(InformationGain, TheCheapBehaviourWinsExactlyWhenItsGainPerCostIsHigher) {
+  // Press tells 0.275396 nats, shake 0.082283 (at cost 1): press stays the choice while its cost is
+  // below 0.275396 / 0.082283 = 3.347, then shake is.
+  pomdp::ObjectProblemData d = testing::two_objects();
+  d.sensing[kPress].reward = -3.3;
+  EXPECT_EQ(StrategyRun("information_gain", d, {0.5, 0.5}).decide(), kPress);
+  d.sensing[kPress].reward = -3.4;
+  EXPECT_EQ(StrategyRun("information_gain", d, {0.5, 0.5}).decide(), kShake);
+  // Shake cheaper still (0.5): 0.082283 / 0.5 = 0.164566 beats press at 2, 0.137698.
+  d.sensing[kPress].reward = -2.0;
+  d.sensing[kShake].reward = -0.5;
+  EXPECT_EQ(StrategyRun("information_gain", d, {0.5, 0.5}).decide(), kShake);
 }
 
 TEST(InformationGain, SortsWhenEverySensingActionIsSpent) {

@@ -32,6 +32,16 @@ TEST(HeldOutAccuracy, SymbolsNotNamedLikeObjectsAreReadByBayesRule) {
   EXPECT_NEAR(held_out_accuracy(d, kTap), 0.85, 1e-12);
 }
 
+TEST(SingleActionValue, IsTheCostPlusTheSortItsAccuracyEarns) {
+  // Right bin 10, wrong bin -100 for both objects: value = r_a + 0.99 (-100 + 110 accuracy).
+  pomdp::ObjectProblemData d = testing::two_objects();
+  EXPECT_NEAR(single_action_value(d, kTap), -1 + 0.99 * (-100 + 110 * 0.60), 1e-12);  // -34.66
+  EXPECT_NEAR(single_action_value(d, kPress), -1 + 0.99 * -6.5, 1e-12);               // -7.435
+  EXPECT_NEAR(single_action_value(d, kShake), -1 + 0.99 * -23, 1e-12);                // -23.77
+  d.sensing[kPress].reward = -20.0;
+  EXPECT_NEAR(single_action_value(d, kPress), -20 + 0.99 * -6.5, 1e-12);  // -26.435
+}
+
 TEST(OneStepLookahead, CommitValueIsTheBestSortingActionsExpectedReward) {
   const auto model = testing::model_of(testing::two_objects());
   const OneStepLookahead look(*model->object_identification());

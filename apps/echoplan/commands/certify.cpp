@@ -6,14 +6,16 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "commands/commands.h"
 #include "common/error.h"
+#include "common/file_io.h"
+#include "experiment/campaign_certificate.h"
 #include "experiment/regret_certificate.h"
 #include "experiment/trial_log.h"
 #include "pomdp/problem.h"
-#include "solvers/identification_solver.h"
 
 namespace echoplan::cli {
 
@@ -22,6 +24,7 @@ namespace {
 struct CertifyArgs {
   std::string problem;
   std::string steps;
+  std::string campaign;
   bool json = false;
   double gap = experiment::CertifyOptions{}.decision_gap;
   long expansions = experiment::CertifyOptions{}.expansions_per_belief;
@@ -29,52 +32,55 @@ struct CertifyArgs {
   int worst = 5;
 };
 
-void run_certify(const CertifyArgs& args) {
+experiment::CertifyOptions certify_options(const CertifyArgs& args) {
   if (!(args.gap > 0.0)) throw InputError("--gap must be > 0");
   if (args.worst < 0) throw InputError("--worst must be >= 0");
   if (args.expansions < 1) throw InputError("--expansions must be >= 1");
-  const pomdp::Problem problem = pomdp::load_problem(args.problem);
-  const pomdp::TabularModel* tables = problem.model->tabular();
-  if (tables == nullptr)
-    throw InputError(args.problem, 0, "certify needs a discrete problem with tables");
-  if (auto why = solvers::identification_shape_problem(*tables))
-    throw InputError(args.problem, 0,
-                     "certify needs an identification problem (the state stays fixed until an "
-                     "action ends the episode), and this one is not: " +
-                         *why);
-  const pomdp::ModelSpec& spec = problem.model->spec();
-  const auto trials = experiment::read_steps_csv(args.steps, spec);
-  if (trials.empty()) throw InputError(args.steps, 0, "no trials in the steps file");
-
-  const auto start = std::chrono::steady_clock::now();
-  // With the problem's use limits: each decision is judged with the uses its trial had made so far
-  // (the solver's node after the trial's earlier steps counts them).
-  solvers::IdentificationSolver solver(
-      solvers::read_identification_tables(*tables, solvers::UseLimits(*problem.model)));
-  spdlog::info("certifying {} trials of {} against {}", trials.size(), args.steps, args.problem);
   experiment::CertifyOptions options;
   options.decision_gap = args.gap;
   options.worst = args.worst;
   options.expansions_per_belief = args.expansions;
   options.root_expansions = args.root_expansions;
-  const experiment::Certificate c = experiment::certify_trials(solver, trials, options, args.steps);
+  return options;
+}
+
+// A dataset campaign's folder: every fold's arms, each with its fold's problem; the summary printed
+// and saved as DIR/certified/summary.json and summary.txt.
+void certify_campaign(const CertifyArgs& args) {
+  if (!args.problem.empty() || !args.steps.empty())
+    throw InputError("--campaign certifies each fold with its own problem: drop --problem/--steps");
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<experiment::ArmCertificate> certificates =
+      experiment::certify_campaign(args.campaign, certify_options(args));
+  const std::filesystem::path out = std::filesystem::path(args.campaign) / "certified";
+  std::filesystem::create_directories(out);
+  const std::string text = experiment::campaign_certificate_text(certificates);
+  const nlohmann::ordered_json json = experiment::campaign_certificate_json(certificates);
+  write_file_atomically(out / "summary.json", json.dump(2) + "\n");
+  write_file_atomically(out / "summary.txt", text);
+  fmt::print("{}", args.json ? json.dump() + "\n" : text);
+  spdlog::info("certified {} folds x arms in {:.2f} s; {}", certificates.size(),
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+               (out / "summary.json").string());
+}
+
+void run_certify(const CertifyArgs& args) {
+  if (!args.campaign.empty()) return certify_campaign(args);
+  if (args.problem.empty() || args.steps.empty())
+    throw InputError("give --problem and --steps (a run's log), or --campaign DIR");
+  const experiment::CertifyOptions options = certify_options(args);
+  const pomdp::Problem problem = pomdp::load_problem(args.problem);
+  const pomdp::ModelSpec& spec = problem.model->spec();
+  const auto start = std::chrono::steady_clock::now();
+  spdlog::info("certifying {} against {}", args.steps, args.problem);
+  const experiment::Certificate c =
+      experiment::certify_steps(problem, args.problem, args.steps, options);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double vstar = 0.5 * (c.vstar.lower + c.vstar.upper);
 
   if (args.json) {
-    nlohmann::ordered_json out;
-    out["vstar_lower"] = c.vstar.lower;
-    out["vstar_upper"] = c.vstar.upper;
-    out["regret_mean"] = c.regret.mean;
-    out["regret_ci95"] = c.regret.half_width;
-    out["trials"] = c.regret.n;
-    out["regret_lower_mean"] = c.regret_lower_mean;
-    out["bound_gap_mean"] = c.bound_gap_mean;
-    out["share_of_vstar"] = c.share_of_vstar();
-    out["decisions"] = c.decisions;
-    out["unconverged_beliefs"] = c.unconverged_beliefs;
-    fmt::print("{}\n", out.dump());
+    fmt::print("{}\n", experiment::to_json(c).dump());
     return;
   }
   fmt::print("Certificate of {} on {}\n", args.steps, args.problem);
@@ -114,7 +120,7 @@ void run_certify(const CertifyArgs& args) {
                d.trial, d.step, d.line, spec.action_names[d.action],
                spec.action_names[d.best_action], belief);
   }
-  spdlog::info("certified in {:.2f} s ({} belief nodes)", seconds, solver.num_nodes());
+  spdlog::info("certified in {:.2f} s", seconds);
 }
 
 }  // namespace
@@ -128,10 +134,12 @@ void add_certify_command(CLI::App& app) {
       "the\n"
       "logged actions and observations; the discounted sum per trial estimates V*(b0) minus the\n"
       "planner's value, with its 95% CI and the share of V* it implies.");
-  cmd->add_option("--problem", args->problem, "The problem the run used (YAML or .pomdp)")
-      ->required();
-  cmd->add_option("--steps", args->steps, "steps.csv written by `echoplan trials --out DIR`")
-      ->required();
+  cmd->add_option("--problem", args->problem, "The problem the run used (YAML or .pomdp)");
+  cmd->add_option("--steps", args->steps, "steps.csv written by `echoplan trials --out DIR`");
+  cmd->add_option("--campaign", args->campaign,
+                  "A dataset campaign's folder instead of --problem and --steps: each fold's "
+                  "trials (DIR/folds/<fold>/arms/<arm>/steps.csv) with that fold's problem "
+                  "(DIR/folds/<fold>/problem.yaml); writes DIR/certified/summary.json");
   cmd->add_flag("--json", args->json,
                 "Print {\"vstar_lower\", \"vstar_upper\", \"regret_mean\", \"regret_ci95\", "
                 "\"trials\", ...} instead of text");

@@ -79,8 +79,8 @@ const std::vector<std::string>& clips_only() {
 }
 const std::vector<std::string>& sessions_only() {
   static const std::vector<std::string> names{
-      "--groups",       "--hold-out",     "--feature-classifier",
-      "--reward-right", "--reward-wrong", "--reward-sense"};
+      "--groups",       "--hold-out", "--feature-classifier", "--reward-right", "--reward-wrong",
+      "--reward-sense", "--costs"};
   return names;
 }
 

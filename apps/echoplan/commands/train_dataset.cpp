@@ -10,6 +10,7 @@
 
 #include "common/error.h"
 #include "common/file_io.h"
+#include "loop/behaviour_costs.h"
 #include "perception/dataset_task.h"
 #include "perception/feature_model.h"
 #include "perception/observation_model_json.h"
@@ -45,11 +46,12 @@ void write_problem(const DatasetTrainFlags& f, const pomdp::ObjectProblemData& d
                    const perception::DatasetTask& task) {
   std::ostringstream text;
   text << fmt::format(
-      "# Written by: echoplan train --data {}{} --hold-out {} --feature-classifier {}\n"
+      "# Written by: echoplan train --data {}{}{} --hold-out {} --feature-classifier {}\n"
       "# {} classes, {} bins; observation table: fused, calibrated held-out decisions "
       "(docs/feature-sets.md).\n",
-      f.data, f.groups.empty() ? "" : " --groups " + f.groups, hold_out_name(task.hold_out),
-      f.classifier, task.classes.size(), task.bins.size());
+      f.data, f.groups.empty() ? "" : " --groups " + f.groups,
+      f.costs.empty() ? "" : " --costs " + f.costs, hold_out_name(task.hold_out), f.classifier,
+      task.classes.size(), task.bins.size());
   pomdp::BeliefSettings belief;
   belief.type = pomdp::BeliefSettings::Type::exact;  // a few classes: exact beliefs are cheap
   pomdp::write_problem_yaml(text, data, belief, pomdp::PlannerDefaults{});
@@ -73,11 +75,15 @@ void add_dataset_train_options(CLI::App& cmd, DatasetTrainFlags& flags) {
       ->capture_default_str();
   cmd.add_option("--reward-wrong", flags.rewards.wrong, "Sessions: reward of a wrong bin")
       ->capture_default_str();
-  cmd.add_option("--reward-sense", flags.rewards.sense, "Sessions: reward of each behaviour")
+  cmd.add_option("--reward-sense", flags.rewards.sense,
+                 "Sessions: reward of each behaviour not priced by --costs")
       ->capture_default_str();
+  cmd.add_option("--costs", flags.costs,
+                 "Sessions: CSV file 'behaviour,cost', a row per priced behaviour: each "
+                 "performance of it earns -cost (the others --reward-sense)");
 }
 
-void train_dataset(const DatasetTrainFlags& f) {
+void train_dataset(DatasetTrainFlags f) {
   if (f.problem_out.empty() && f.out.empty())
     throw InputError("give --out (the model file) or --problem-out (the problem), or both");
   const perception::HoldOut hold_out =
@@ -86,6 +92,11 @@ void train_dataset(const DatasetTrainFlags& f) {
   std::optional<perception::ObjectGroups> groups;
   if (!f.groups.empty()) groups = perception::load_groups(f.groups);
   const perception::FeatureSet set = load_data(f.data);
+  if (!f.costs.empty()) {
+    std::vector<std::string> behaviours;
+    for (const perception::ActionData& action : set.actions) behaviours.push_back(action.name);
+    f.rewards.costs = loop::load_behaviour_costs(f.costs, behaviours);
+  }
   const perception::DatasetTask task =
       perception::make_dataset_task(set, groups ? &*groups : nullptr, hold_out, f.groups);
   spdlog::info("{}: {} objects, {} sessions, {} behaviours; {} classes, {} bins", f.data,

@@ -18,15 +18,16 @@ struct DatasetTrainFlags {
   std::string groups;       // optional groups file
   std::string hold_out;     // "session" (default) or "object"
   std::string classifier = "lda";
+  std::string costs;  // optional costs file (behaviour,cost): rewards.costs once the data is read
   loop::TaskRewards rewards;
 };
 
-// Adds --groups, --hold-out, --feature-classifier and the --reward-* options to `cmd`.
+// Adds --groups, --hold-out, --feature-classifier, the --reward-* options and --costs to `cmd`.
 void add_dataset_train_options(CLI::App& cmd, DatasetTrainFlags& flags);
 
 // Loads, fits, prints the held-out accuracies and writes the model and the problem. InputError for
 // bad input (neither --out nor --problem-out, a DIR that is neither kind of data, a groups file
-// that misses an object, too few sessions or objects for the hold-out).
-void train_dataset(const DatasetTrainFlags& flags);
+// that misses an object, too few sessions or objects for the hold-out, a bad costs file).
+void train_dataset(DatasetTrainFlags flags);
 
 }  // namespace echoplan::cli
