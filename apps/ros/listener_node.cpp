@@ -214,8 +214,8 @@ int run(ros::NodeHandle& node, ros::NodeHandle& priv) {
       try {
         const AudioClip clip = source.recorder->stop();
         echoplan::robot::fill_message(clip, message);
-        if (source.microphone && !source.microphone->last_report().stream_error.empty())
-          message.error = source.microphone->last_report().stream_error;
+        if (source.microphone && !source.microphone->capture_report().stream_error.empty())
+          message.error = source.microphone->capture_report().stream_error;
         if (!save_dir.empty()) {
           message.path =
               (std::filesystem::path(save_dir) / fmt::format("{:04d}_{}.wav", sequence, action))
