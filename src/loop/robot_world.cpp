@@ -161,7 +161,11 @@ WorldStep RobotWorld::execute(int action, Rng& /*rng*/) {
 
 void RobotWorld::perform(RobotStep& acted, const std::string& action, bool record) {
   for (acted.attempts = 1;; ++acted.attempts) {
+    // Only the last attempt's recording is kept.
     acted.fault.reset();
+    acted.recorded = false;
+    acted.clip = {};
+    acted.capture = {};
     std::optional<std::string> lost;
     if (record) lost = transient_failure([&] { parts_.recorder->start(action); });
     acted.report = parts_.robot->execute(action);
