@@ -11,23 +11,8 @@
 # Usage: faults_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
 . "$(dirname "$0")/cli_test_lib.sh"
 
-# A small campaign on the model's own table (no audio): 12 trials.
 config=$work/campaign.yaml
-cat >"$config" <<YAML
-seed: 4
-arms:
-  - {name: hand_tuned, problem: $src/problems/audio_objects.yaml}
-world: {type: model, problem: $src/problems/audio_objects.yaml}
-training_set: {recordings_per_pair: 1}
-trials:
-  - {object: pringles_can, trials: 4}
-  - {object: plastic_cup, trials: 4}
-  - {object: coffee_mug, trials: 4}
-planner: {solver: abt, episodes: 1000, max_steps: 30}
-YAML
-same_files() {
-  diff -r "$1" "$2" >"$work/diff" 2>&1 || { fail "$3: folders differ"; head -5 "$work/diff"; }
-}
+small_campaign "$config"
 # whole_lines FILE: the file is empty or ends with a newline (no torn last line).
 whole_lines() {
   [ ! -s "$1" ] || [ "$(tail -c 1 "$1" | wc -l)" -eq 1 ]

@@ -370,23 +370,30 @@ nlohmann::json read_json(const fs::path& path) {
   return nlohmann::json::parse(in);
 }
 
+// Runs trial 0 (the mug) with `faults`, logged as `echoplan run` logs it into `dir`; the trial and
+// each step's JSON line.
+std::pair<Trial, std::vector<nlohmann::json>> logged_trial(const Faults& faults,
+                                                          const fs::path& dir) {
+  Loop loop = faulty_loop(faults);
+  LoopLog log(dir, identification());
+  std::vector<nlohmann::json> lines;
+  auto trial = loop.run({0, 0, 3}, [&](const Step& s) { lines.push_back(log.write_step(s)); });
+  if (!trial) throw std::logic_error("the trial was not run");
+  log.write_trial({}, trial);
+  return {std::move(*trial), std::move(lines)};
+}
+
 TEST(LoopFaults, OverrunsAndDroppedFramesAreCountedInTheStepLogAndTrialJson) {
   RecordingFault overrun;
   overrun.capture.overflow_callbacks = 2;
   overrun.capture.dropped_frames = 512;
   Faults faults;
   faults.microphone = first_call(overrun);
-  Loop loop = faulty_loop(faults);
   const fs::path dir = testing::unique_temp_dir("capture_log");
-  LoopLog log(dir, identification());
-  std::vector<nlohmann::json> lines;
-  const auto trial =
-      loop.run({0, 0, 3}, [&](const Step& s) { lines.push_back(log.write_step(s)); });
-  ASSERT_TRUE(trial);
-  log.write_trial({}, trial);
+  const auto [trial, lines] = logged_trial(faults, dir);
   ASSERT_GE(lines.size(), 2u);
   // The clip with a gap is still heard (the rest of the sound is there), and marked.
-  EXPECT_TRUE(trial->steps[0].robot->classified);
+  EXPECT_TRUE(trial.steps[0].robot->classified);
   EXPECT_EQ(lines[0]["capture"]["overflow_callbacks"], 2);
   EXPECT_EQ(lines[0]["capture"]["dropped_frames"], 512);
   EXPECT_EQ(lines[0]["capture"]["dropout"], true);
@@ -407,14 +414,9 @@ TEST(LoopFaults, TheStepLogAndTrialJsonNameEachFault) {
   Faults faults;
   faults.checks = live();
   faults.microphone = first_call(silence());
-  Loop loop = faulty_loop(faults);
   const fs::path dir = testing::unique_temp_dir("fault_log");
-  LoopLog log(dir, identification());
-  std::vector<nlohmann::json> lines;
-  const auto trial =
-      loop.run({0, 0, 3}, [&](const Step& s) { lines.push_back(log.write_step(s)); });
-  ASSERT_TRUE(trial);
-  log.write_trial({}, trial);
+  const auto [trial, lines] = logged_trial(faults, dir);
+  ASSERT_GE(lines.size(), 2u);
   EXPECT_EQ(lines[0]["fault"]["kind"], "recording silent");
   EXPECT_EQ(lines[0]["fault"]["observation_skipped"], true);
   EXPECT_EQ(lines[1]["fault"], nullptr);
