@@ -109,8 +109,10 @@ TEST_F(LoopLogTest, CsvRowsClipsAndJsonOfATrial) {
   EXPECT_EQ(rows[0], strike);
   EXPECT_EQ(rows[1], sort);
 
-  EXPECT_EQ(strike["report"],
-            nlohmann::json({{"status", "done"}, {"reason", ""}, {"duration_s", 0.5}}));
+  EXPECT_EQ(
+      strike["report"],
+      nlohmann::json({{"status", "done"}, {"reason", ""}, {"duration_s", 0.5}, {"attempts", 1}}));
+  EXPECT_EQ(strike["fault"], nullptr);
   EXPECT_EQ(strike["belief_before"]["coffee_mug"], 0.25);
   EXPECT_EQ(strike["belief_after"]["plastic_cup"], 0.3125);
   EXPECT_EQ(strike["clip"], "clips/002_00_strike.wav");
