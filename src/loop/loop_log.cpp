@@ -80,6 +80,8 @@ nlohmann::json LoopLog::write_step(const Step& s) {
     try {
       audio::write_audio((directory_ / clip).string(), step.clip);
     } catch (const InputError& e) {
+      std::error_code ignored;
+      fs::remove(directory_ / clip, ignored);  // no part-written clip is left behind
       throw InputError(e.file(), 0,
                        fmt::format("trial {}, step {}: the clip could not be saved "
                                    "({}); is the disk full? {} step(s) are logged",

@@ -9,8 +9,9 @@
 #   wait_for_lines FILE LINES
 #                  wait (up to 60 s) until FILE holds at least LINES lines, e.g. before interrupting a
 #                  background run that has finished some work;
-#   small_campaign FILE
-#                  write a small campaign on the model's own table (no audio, 12 trials) to FILE;
+#   small_campaign FILE [RECORDINGS_PER_PAIR]
+#                  write a small campaign on the model's own table (12 trials) to FILE, its training set
+#                  RECORDINGS_PER_PAIR (1; 0: none) simulated recordings of each object and action;
 #   same_files A B WHAT
 #                  check every file of folder A is in B with the same bytes, and no more.
 set -u
@@ -49,7 +50,7 @@ seed: 4
 arms:
   - {name: hand_tuned, problem: $src/problems/audio_objects.yaml}
 world: {type: model, problem: $src/problems/audio_objects.yaml}
-training_set: {recordings_per_pair: 1}
+training_set: {recordings_per_pair: ${2:-1}}
 trials:
   - {object: pringles_can, trials: 4}
   - {object: plastic_cup, trials: 4}

@@ -11,8 +11,9 @@
 # Usage: faults_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
 . "$(dirname "$0")/cli_test_lib.sh"
 
+# No training set: the journal is the first file to outgrow the limit below.
 config=$work/campaign.yaml
-small_campaign "$config"
+small_campaign "$config" 0
 # whole_lines FILE: the file is empty or ends with a newline (no torn last line).
 whole_lines() {
   [ ! -s "$1" ] || [ "$(tail -c 1 "$1" | wc -l)" -eq 1 ]
@@ -69,6 +70,7 @@ status=$?
 grep -q "clips/000_00_.*\.wav: trial 0, step 1: the clip could not be saved (.*); is the disk full?" \
   "$work/clipfull.err" || { fail "the message does not name the clip, the trial and the step:"; cat "$work/clipfull.err"; }
 whole_lines "$work/clipfull/loop_steps.csv" || fail "loop_steps.csv was left with a torn line"
+[ -z "$(ls "$work/clipfull/clips")" ] || fail "a part-written clip was left in clips/"
 
 # SIGTERM mid-step of `echoplan run` (each step plans for 1.5 s): exit 130, trial.json says the trial
 # was interrupted, and every logged step is whole in both logs with its clip.

@@ -142,6 +142,25 @@ TEST_F(LoopLogTest, ACollisionIsLoggedWithItsReason) {
   EXPECT_EQ(text.substr(text.find('\n') + 1), "2,1,slide,collision,,,none,,,,,-200,\n");
 }
 
+// A full disk under the step log (loop_steps.jsonl is /dev/full, where every write fails with
+// ENOSPC): the step is an InputError naming the trial and the step, not rows silently lost.
+TEST_F(LoopLogTest, AStepLogThatCannotBeWrittenIsAnInputErrorNamingTheTrialAndStep) {
+  fs::create_directories(dir_);
+  fs::create_symlink("/dev/full", dir_ / "loop_steps.jsonl");
+  LoopLog log(dir_, report_model());
+  Step s = sort_step();
+  try {
+    log.write_step(s);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.problem().find("trial 2, step 2: loop_steps.csv or loop_steps.jsonl could not be "
+                               "written; is the disk full? 0 step(s) were logged before"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(log.steps_written(), 0);
+}
+
 TEST_F(LoopLogTest, AFolderThatCannotBeCreatedIsAnInputError) {
   std::ofstream(dir_ / "a_file") << "";
   EXPECT_THROW(LoopLog(dir_ / "a_file" / "out", report_model()), InputError);
