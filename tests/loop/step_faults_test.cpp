@@ -12,6 +12,10 @@
 #include "loop/loop.h"
 #include "loop/loop_log.h"
 #include "loop/robot_world.h"
+#include "loop/trial_runner.h"
+#include "pomdp/particle_belief.h"
+#include "solvers/abt_solver.h"
+#include "solvers/planner_overrides.h"
 
 namespace echoplan::loop {
 namespace {
@@ -270,30 +274,86 @@ RecordingFault silence() {
 }
 
 // The user is told the fault, the trial and the step; the belief after the faulty step is the one
-// before it, and the trial goes on from there.
+// before it (which the first, heard, step had moved from the prior), and the trial goes on from
+// there.
 TEST(LoopFaults, ASkippedObservationLeavesTheBeliefAndIsReportedWithTrialAndStep) {
   Faults faults;
   faults.checks = live();
   faults.microphone = [](Call c) {
-    return c.trial == 1 && c.call == 0 ? std::optional(silence()) : std::nullopt;
+    return c.trial == 1 && c.call == 1 ? std::optional(silence()) : std::nullopt;
   };
   Loop loop = faulty_loop(faults);
   ASSERT_TRUE(loop.run({0, 0, 3}));
   const CapturedLog log;
   const auto trial = loop.run({1, 1, 3});
   ASSERT_TRUE(trial);
-  ASSERT_GE(trial->steps.size(), 2u);
-  const Step& faulty = trial->steps[0];
+  ASSERT_GE(trial->steps.size(), 3u);
+  const Step& faulty = trial->steps[1];
   ASSERT_TRUE(faulty.robot->observation_skipped());
+  ASSERT_NE(faulty.record.belief, trial->steps[0].record.belief) << "the first step was heard";
   ASSERT_TRUE(faulty.belief_after.has_value());
   EXPECT_EQ(*faulty.belief_after, faulty.record.belief);
-  EXPECT_EQ(trial->steps[1].record.belief, faulty.record.belief);
+  EXPECT_EQ(trial->steps[2].record.belief, faulty.record.belief);
   const std::string action = identification().spec().action_names[faulty.record.action];
-  EXPECT_NE(log.text().find("trial 1, step 1 (" + action + "): recording silent"),
+  EXPECT_NE(log.text().find("trial 1, step 2 (" + action + "): recording silent"),
             std::string::npos)
       << log.text();
   EXPECT_NE(log.text().find("the observation is skipped and the planner re-plans"),
             std::string::npos);
+}
+
+// A belief that remembers what it was told.
+class TellingBelief final : public pomdp::Belief {
+ public:
+  TellingBelief(std::unique_ptr<pomdp::Belief> inner, std::shared_ptr<std::vector<int>> told)
+      : inner_(std::move(inner)), told_(std::move(told)) {}
+  pomdp::State sample(Rng& rng) const override { return inner_->sample(rng); }
+  bool update(int action, const pomdp::Observation& observation, Rng& rng) override {
+    told_->push_back(observation.index);
+    return inner_->update(action, observation, rng);
+  }
+  std::vector<double> discrete_marginal(int variable) const override {
+    return inner_->discrete_marginal(variable);
+  }
+  std::unique_ptr<pomdp::Belief> clone() const override {
+    return std::make_unique<TellingBelief>(inner_->clone(), told_);
+  }
+
+ private:
+  std::unique_ptr<pomdp::Belief> inner_;
+  std::shared_ptr<std::vector<int>> told_;
+};
+
+// The trial runner tells the belief only what was heard: a skipped observation is not passed on as
+// `none` (the beliefs would keep their prediction then too, but a particle belief would keep the
+// impossible `none` in the history it draws fresh particles against, and never draw one again).
+TEST(LoopFaults, TheBeliefIsNeverToldAnObservationTheLoopDidNotGet) {
+  Faults faults;
+  faults.checks = live();
+  faults.microphone = [](Call c) { return c.call == 1 ? std::optional(silence()) : std::nullopt; };
+  RobotWorld world(problem()->model, faulty_parts(identification(), faults));
+  solvers::AbtSolver solver(problem()->model, solvers::search_options({}, *problem()));
+  auto told = std::make_shared<std::vector<int>>();
+  TrialParts parts;
+  parts.model = problem()->model.get();
+  parts.world = &world;
+  parts.solver = &solver;
+  parts.make_belief = [told](Rng& rng) {
+    return std::make_unique<TellingBelief>(
+        std::make_unique<pomdp::ParticleBelief>(problem()->model, 300, rng), told);
+  };
+  TrialOptions options;
+  options.budget = solvers::Budget::episodes(300);
+  const auto trial = run_trial(parts, options, 0, 0);
+  ASSERT_TRUE(trial);
+  int heard = 0, skipped = 0;
+  for (const Step& s : trial->steps) {
+    heard += s.robot->classified && !s.terminal;
+    skipped += s.robot->observation_skipped();
+  }
+  ASSERT_EQ(skipped, 1);
+  EXPECT_EQ(static_cast<int>(told->size()), heard);
+  for (const int o : *told) EXPECT_NE(o, identification().none_symbol());
 }
 
 // A microphone that hears nothing all trial teaches the planner nothing: the belief stays the
