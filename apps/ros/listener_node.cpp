@@ -214,8 +214,13 @@ int run(ros::NodeHandle& node, ros::NodeHandle& priv) {
       try {
         const AudioClip clip = source.recorder->stop();
         echoplan::robot::fill_message(clip, message);
-        if (source.microphone && !source.microphone->last_report().stream_error.empty())
-          message.error = source.microphone->last_report().stream_error;
+        if (source.microphone) {
+          // What the sound card lost goes with the clip, so the planner's step log counts it.
+          const echoplan::robot::CaptureReport lost = source.microphone->capture_report();
+          message.overflow_callbacks = lost.overflow_callbacks;
+          message.dropped_frames = lost.dropped_frames;
+          if (!lost.stream_error.empty()) message.error = lost.stream_error;
+        }
         if (!save_dir.empty()) {
           message.path =
               (std::filesystem::path(save_dir) / fmt::format("{:04d}_{}.wav", sequence, action))

@@ -288,7 +288,7 @@ void bind_robots(py::module_& m) {
 loop::RobotParts held_parts(py::object robot, py::object recorder, py::object service) {
   return {std::make_unique<HeldRobot>(std::move(robot)),
           std::make_unique<HeldRecorder>(std::move(recorder)),
-          std::make_unique<HeldService>(std::move(service))};
+          std::make_unique<HeldService>(std::move(service)), loop::RecordingChecks{}};
 }
 
 }  // namespace echoplan::python

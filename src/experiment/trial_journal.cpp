@@ -1,6 +1,7 @@
 #include "experiment/trial_journal.h"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -171,9 +172,22 @@ TrialJournal::~TrialJournal() {
 void TrialJournal::append(const JournalEntry& entry) {
   const std::string line = to_json(entry).dump() + '\n';
   std::lock_guard<std::mutex> lock(mutex_);
-  write_all(fd_, line, path_);
-  if (::fsync(fd_) != 0)
-    throw InputError(path_.string(), 0, std::string("fsync failed: ") + std::strerror(errno));
+  // A full disk (or a file-size limit) lets a write stop partway: cut the part back off, so the
+  // journal holds whole lines only, for this run's other workers and for the next run.
+  const off_t whole = ::lseek(fd_, 0, SEEK_END);
+  try {
+    write_all(fd_, line, path_);
+    if (::fsync(fd_) != 0)
+      throw InputError(path_.string(), 0, std::string("fsync failed: ") + std::strerror(errno));
+  } catch (const InputError& e) {
+    const bool cut = whole >= 0 && ::ftruncate(fd_, whole) == 0;
+    throw InputError(path_.string(), 0,
+                     fmt::format("trial {} ({}, {}) could not be journalled: {}; {}; free space "
+                                 "and run the same command again to finish the campaign",
+                                 entry.id, entry.arm, entry.object, e.problem(),
+                                 cut ? "the trials journalled before it are kept whole"
+                                     : "its torn line is cut off when the journal is next opened"));
+  }
 }
 
 }  // namespace echoplan::experiment

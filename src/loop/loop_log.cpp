@@ -18,6 +18,32 @@ std::ofstream open_for_writing(const fs::path& path) {
   return out;
 }
 
+// What the recording lost on its way in; `dropout` marks a clip with a gap in it.
+nlohmann::json capture_json(const robot::CaptureReport& c) {
+  return {{"overflow_callbacks", c.overflow_callbacks},
+          {"dropped_frames", c.dropped_frames},
+          {"stream_error", c.stream_error},
+          {"dropout", c.dropout()}};
+}
+
+// A trial's losses, summed over its recordings, and its faults in the order they happened.
+void add_capture_and_faults(nlohmann::json& settings, const Trial& trial) {
+  int overflows = 0, dropouts = 0;
+  std::size_t dropped = 0;
+  nlohmann::json faults = nlohmann::json::array();
+  for (const Step& s : trial.steps) {
+    if (!s.robot) continue;
+    overflows += s.robot->capture.overflow_callbacks;
+    dropped += s.robot->capture.dropped_frames;
+    if (s.robot->capture.dropout()) ++dropouts;
+    if (s.robot->fault) faults.push_back({{"step", s.record.step}, {"kind", s.robot->fault->kind}});
+  }
+  settings["capture"] = {{"overflow_callbacks", overflows},
+                         {"dropped_frames", dropped},
+                         {"recordings_with_dropout", dropouts}};
+  settings["faults"] = faults;
+}
+
 nlohmann::json named_values(const std::vector<std::string>& names,
                             const std::vector<double>& values) {
   nlohmann::json j = nlohmann::json::object();
@@ -51,7 +77,16 @@ nlohmann::json LoopLog::write_step(const Step& s) {
   std::string clip;
   if (step.recorded) {
     clip = fmt::format("clips/{:03d}_{:02d}_{}.wav", r.trial, r.step, action);
-    audio::write_audio((directory_ / clip).string(), step.clip);
+    try {
+      audio::write_audio((directory_ / clip).string(), step.clip);
+    } catch (const InputError& e) {
+      std::error_code ignored;
+      fs::remove(directory_ / clip, ignored);  // no part-written clip is left behind
+      throw InputError(e.file(), 0,
+                       fmt::format("trial {}, step {}: the clip could not be saved "
+                                   "({}); is the disk full? {} step(s) are logged",
+                                   r.trial, r.step + 1, e.problem(), steps_written_));
+    }
   }
   const std::string heard =
       step.classified ? (step.heard.unknown ? "unknown" : step.heard.label) : "";
@@ -79,6 +114,14 @@ nlohmann::json LoopLog::write_step(const Step& s) {
        belief_after ? named_values(objects_, *belief_after) : nlohmann::json(nullptr)},
       {"clip", clip.empty() ? nlohmann::json(nullptr) : nlohmann::json(clip)},
   };
+  if (s.robot) {
+    j["report"]["attempts"] = step.attempts;
+    if (step.recorded) j["capture"] = capture_json(step.capture);
+    j["fault"] = step.fault ? nlohmann::json{{"kind", step.fault->kind},
+                                             {"detail", step.fault->detail},
+                                             {"observation_skipped", step.observation_skipped()}}
+                            : nlohmann::json(nullptr);
+  }
   if (step.classified) {
     nlohmann::json probabilities = nlohmann::json::object(), features = nlohmann::json::object();
     for (const auto& [name, p] : step.heard.probabilities) probabilities[name] = p;
@@ -92,6 +135,12 @@ nlohmann::json LoopLog::write_step(const Step& s) {
     j["features"] = features;
   }
   jsonl_ << j.dump() << '\n' << std::flush;
+  // A stream that failed (a full disk) would drop every later row without a word.
+  if (!csv_ || !jsonl_)
+    throw InputError(directory_.string(), 0,
+                     fmt::format("trial {}, step {}: loop_steps.csv or loop_steps.jsonl could not "
+                                 "be written; is the disk full? {} step(s) were logged before",
+                                 r.trial, r.step + 1, steps_written_));
   ++steps_written_;
   return j;
 }
@@ -107,6 +156,7 @@ void LoopLog::write_trial(nlohmann::json settings, const std::optional<Trial>& t
          {"collision", r.collision},
          {"capped", r.capped},
          {"final_action", model_.spec().action_names[trial->steps.back().record.action]}});
+    add_capture_and_faults(settings, *trial);
   }
   write_file_atomically(directory_ / "trial.json", settings.dump(2) + "\n");
 }

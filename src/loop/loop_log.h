@@ -9,7 +9,12 @@
 //   loop_steps.jsonl           one JSON object per step with everything above plus the robot's
 //                              reason and duration, every class probability, the classifier's
 //                              distance and time to answer (observe_ms), the clip's features and
-//                              the belief before the step
+//                              the belief before the step; the action's attempts, what the
+//                              recording lost (`capture`: overflow callbacks, dropped frames, a
+//                              stream error; `dropout` marks a clip with a gap) and the step's
+//                              fault (loop/step_fault.h), null when none
+//   trial.json                 the run's settings and result, with the trial's capture losses
+//                              summed and its faults listed (step, kind)
 #pragma once
 
 #include <filesystem>

@@ -9,6 +9,7 @@
 
 #include "common/error.h"
 #include "loop/object_problem.h"
+#include "robot/transient_error.h"
 
 namespace echoplan::loop {
 
@@ -18,6 +19,18 @@ constexpr const char* kUnknownSymbol = "unknown";
 
 bool contains(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// Runs `part` and returns the message of a failure of this call alone (robot/transient_error.h: a
+// device gone, a service timed out); none when it succeeded. Anything else goes on up.
+template <typename Part>
+std::optional<std::string> transient_failure(Part&& part) {
+  try {
+    part();
+  } catch (const robot::TransientError& e) {
+    return std::string(e.what());
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -92,16 +105,11 @@ void RobotWorld::reset(const pomdp::State& true_state, Rng& rng) {
   ended_ = false;
 }
 
-pomdp::Observation RobotWorld::symbol_for(const robot::HeardObservation& heard,
-                                          const std::string& action) const {
+std::optional<pomdp::Observation> RobotWorld::symbol_for(
+    const robot::HeardObservation& heard) const {
   const std::string& label = heard.unknown ? std::string(kUnknownSymbol) : heard.label;
   const auto it = symbol_index_.find(label);
-  if (it == symbol_index_.end())
-    throw InputError(fmt::format(
-        "the observation service heard '{}' for '{}', which is not an observation symbol "
-        "of problem '{}' (symbols: {})",
-        label, action, problem_->data().name,
-        fmt::join(problem_->data().observation_symbols, ", ")));
+  if (it == symbol_index_.end()) return std::nullopt;
   pomdp::Observation o;
   o.index = it->second;
   return o;
@@ -120,18 +128,12 @@ WorldStep RobotWorld::execute(int action, Rng& /*rng*/) {
   RobotStep& acted = step.robot.emplace();
   outcome.observation.index = problem_->none_symbol();
   if (!problem_->is_sensing(action)) {
-    acted.report = parts_.robot->execute(name);
+    perform(acted, name, false);
     outcome.reward = data.sorting_reward[action - problem_->num_sensing()][object];
     outcome.terminal = true;
   } else {
-    if (parts_.recorder) {
-      parts_.recorder->start(name);
-      acted.report = parts_.robot->execute(name);
-      acted.clip = parts_.recorder->stop();
-      acted.recorded = true;
-    } else {
-      acted.report = parts_.robot->execute(name);  // no microphone: no clip for the service
-    }
+    // No microphone: no clip for the service, which observes through the robot's other sensors.
+    perform(acted, name, parts_.recorder != nullptr);
     if (acted.report.status == robot::ActionStatus::done) {
       hear(acted, name, outcome);
       outcome.reward = data.sensing[action].reward;
@@ -145,6 +147,11 @@ WorldStep RobotWorld::execute(int action, Rng& /*rng*/) {
       // A collision or a failed action ends the trial as the model's collision does.
       outcome.reward = data.collision_reward;
       outcome.terminal = true;
+      if (acted.report.status == robot::ActionStatus::failed)
+        acted.fault = StepFault{"action failed",
+                                fmt::format("{} ({} attempt{})", acted.report.reason,
+                                            acted.attempts, acted.attempts == 1 ? "" : "s"),
+                                FaultEffect::trial_failed};
     }
   }
   outcome.collision = acted.report.status != robot::ActionStatus::done;
@@ -152,11 +159,55 @@ WorldStep RobotWorld::execute(int action, Rng& /*rng*/) {
   return step;
 }
 
+void RobotWorld::perform(RobotStep& acted, const std::string& action, bool record) {
+  for (acted.attempts = 1;; ++acted.attempts) {
+    // Only the last attempt's recording is kept.
+    acted.fault.reset();
+    acted.recorded = false;
+    acted.clip = {};
+    acted.capture = {};
+    std::optional<std::string> lost;
+    if (record) lost = transient_failure([&] { parts_.recorder->start(action); });
+    acted.report = parts_.robot->execute(action);
+    if (record && !lost) {
+      lost = transient_failure([&] { acted.clip = parts_.recorder->stop(); });
+      acted.capture = parts_.recorder->capture_report();
+      acted.recorded = !lost;
+    }
+    // A recorder that failed leaves the action done but unheard; the next step starts it anew
+    // (a device that came back records again).
+    if (lost) acted.fault = StepFault{"recorder failed", *lost, FaultEffect::observation_skipped};
+    const bool again = acted.report.status == robot::ActionStatus::failed &&
+                       acted.report.retry_safe && acted.attempts < kMaxAttempts;
+    if (!again) return;
+  }
+}
+
 void RobotWorld::hear(RobotStep& acted, const std::string& action, pomdp::Outcome& outcome) {
+  if (acted.recorded && !acted.fault)
+    acted.fault = check_recording(acted.clip, acted.report, acted.capture, parts_.checks);
+  if (acted.fault) return;
   // What the latency target measures: from the clip in hand to the planner's observation.
   const auto heard_from = std::chrono::steady_clock::now();
-  acted.heard = parts_.service->observe(acted.clip, action);
-  outcome.observation = symbol_for(acted.heard, action);
+  if (auto failed =
+          transient_failure([&] { acted.heard = parts_.service->observe(acted.clip, action); })) {
+    acted.fault =
+        StepFault{"observation service failed", *failed, FaultEffect::observation_skipped};
+    return;
+  }
+  const auto symbol = symbol_for(acted.heard);
+  if (!symbol) {
+    const auto& data = problem_->data();
+    acted.fault = StepFault{
+        "class unknown to the problem",
+        fmt::format("the service heard '{}', not an observation symbol of problem '{}' (symbols: "
+                    "{})",
+                    acted.heard.unknown ? kUnknownSymbol : acted.heard.label, data.name,
+                    fmt::join(data.observation_symbols, ", ")),
+        FaultEffect::observation_skipped};
+    return;
+  }
+  outcome.observation = *symbol;
   acted.observe_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - heard_from)
           .count();

@@ -4,7 +4,8 @@
 // section 4.4, Figure 4.2) exactly as it drives the model's own table with TableWorld.
 //
 // Per action:
-//   sensing: recorder.start -> robot.execute -> recorder.stop -> service.observe -> symbol
+//   sensing: recorder.start -> robot.execute -> recorder.stop -> check the recording
+//            -> service.observe -> symbol
 //            (a robot without a microphone has no recorder: the service gets an empty clip and
 //            observes the performance through the robot's other sensors, e.g. the ROS
 //            observation node's feature topic)
@@ -12,6 +13,11 @@
 //            problem's collision reward, as ObjectIdentificationModel reports a collision);
 //   sorting: robot.execute -> observation "none", the problem's sorting reward for the true object,
 //            the trial ends.
+// Faults (loop/step_fault.h) are marked on the step rather than thrown: an action that failed
+// and that the arm calls safe to repeat (ActionReport::retry_safe) is performed again, recording
+// and all, up to kMaxAttempts times; any other failure ends the trial as failed. A recording that
+// fails its checks (loop/recording_check.h), a recorder or service whose call failed
+// (robot::TransientError), or a class the problem does not know skips the step's observation.
 // Rewards come from the problem and the true object (the trial runner draws it and passes it to
 // reset()), so a real robot's trials are scored as the model would score them.
 //
@@ -24,9 +30,11 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "loop/recording_check.h"
 #include "loop/world.h"
 #include "pomdp/object_identification_model.h"
 #include "robot/observation_service.h"
@@ -40,10 +48,14 @@ struct RobotParts {
   std::unique_ptr<robot::Robot> robot;
   std::unique_ptr<robot::Recorder> recorder;  // null: the robot has no microphone
   std::unique_ptr<robot::ObservationService> service;
+  RecordingChecks checks;  // what every recording must pass before it is heard
 };
 
 class RobotWorld final : public World {
  public:
+  // Performances of one action when every one fails and the arm says repeating is safe.
+  static constexpr int kMaxAttempts = 3;
+
   // `model` is the problem the planner plans on (an ObjectIdentificationModel). `world_objects`
   // maps a problem object to the object the world holds when it is the truth (e.g. coffee_mug ->
   // coffee_mug_weighted); objects not in the map are themselves. Throws InputError as described
@@ -66,10 +78,13 @@ class RobotWorld final : public World {
   const pomdp::ObjectIdentificationModel& model() const { return *problem_; }
 
  private:
-  // Classifies the clip of a finished sensing action into `robot` and the planner's observation.
+  // Executes `action` (recording around it when `record`), again while it fails and the arm says
+  // repeating is safe.
+  void perform(RobotStep& acted, const std::string& action, bool record);
+  // Classifies the clip of a finished sensing action into `robot` and the planner's observation,
+  // or marks the step's fault.
   void hear(RobotStep& acted, const std::string& action, pomdp::Outcome& outcome);
-  pomdp::Observation symbol_for(const robot::HeardObservation& heard,
-                                const std::string& action) const;
+  std::optional<pomdp::Observation> symbol_for(const robot::HeardObservation& heard) const;
 
   pomdp::ModelPtr model_;
   const pomdp::ObjectIdentificationModel* problem_ = nullptr;

@@ -18,6 +18,7 @@ std::string bar(double p, int width = 24) {
 
 // What the robot's part of a step says: how the action went and what was heard.
 std::string robot_text(const RobotStep& r) {
+  if (r.fault) return fmt::format(" -> {}: {}", r.fault->kind, r.fault->detail);
   if (r.report.status != robot::ActionStatus::done)
     return fmt::format(" -> {}: {}", robot::to_string(r.report.status), r.report.reason);
   if (!r.classified) return "";

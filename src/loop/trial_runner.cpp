@@ -1,5 +1,7 @@
 #include "loop/trial_runner.h"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -109,12 +111,18 @@ std::optional<Trial> run_trial(const TrialParts& parts, const TrialOptions& opti
     s.robot = std::move(happened.robot);
     s.terminal = outcome.terminal || outcome.collision;
     count_step(record, r, weight, gamma);
+    if (s.robot && s.robot->fault)
+      spdlog::warn(fault_text(t, step, model.spec().action_names[r.action], *s.robot->fault));
     if (s.terminal) {
       record.collision = outcome.collision;
       if (on_step) on_step(s);
       break;
     }
-    belief->update(r.action, outcome.observation, belief_rng);
+    // A step whose observation was skipped (a fault, loop/step_fault.h) teaches the belief nothing:
+    // it stays as it was, and the planner re-roots on it below (its tree never saw "none" after a
+    // sensing action, so it plans afresh from the belief).
+    if (!(s.robot && s.robot->observation_skipped()))
+      belief->update(r.action, outcome.observation, belief_rng);
     s.belief_after = belief->discrete_marginal(0);
     if (on_step) on_step(s);
     if (record.steps >= options.max_steps) {

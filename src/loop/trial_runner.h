@@ -3,7 +3,9 @@
 // A trial draws the hidden true state (from the model's initial belief, or with the object fixed),
 // resets the world, the belief and the solver, then loops
 //   plan (solver.improve(budget)) -> act (world.execute) -> belief.update -> solver.update
-// until a terminal step, a collision or the step cap. Every random stream of trial t is derived
+// until a terminal step, a collision or the step cap. A step with a fault (loop/step_fault.h) is
+// logged as a warning naming the trial and the step; when its observation was skipped, the
+// belief is not updated. Every random stream of trial t is derived
 // from (seed, t), so a trial's outcome does not depend on the trials before it and an episode
 // budget replays bit for bit.
 //

@@ -13,21 +13,31 @@
 
 #include "audio/clip.h"
 #include "common/rng.h"
+#include "loop/step_fault.h"
 #include "pomdp/environment.h"
 #include "pomdp/model.h"
 #include "robot/observation_service.h"
+#include "robot/recorder.h"
 #include "robot/robot.h"
 
 namespace echoplan::loop {
 
 // What one action produced in a world with a robot in it.
 struct RobotStep {
-  robot::ActionReport report;  // how the robot said it went
+  robot::ActionReport report;  // how the robot said it went (its last attempt)
+  int attempts = 1;            // executions: more than one after failures the arm called safe
   bool recorded = false;       // a sensing action: the recorder ran and `clip` holds what it heard
   audio::AudioClip clip;
+  robot::CaptureReport capture;  // what the recording lost on the way in (live capture)
   bool classified = false;  // the sensing action was done and `heard` holds the service's answer
   robot::HeardObservation heard;
-  double observe_ms = 0;  // wall time from the end of the recording to the observation
+  double observe_ms = 0;           // wall time from the end of the recording to the observation
+  std::optional<StepFault> fault;  // what went wrong in this step, if anything (loop/step_fault.h)
+
+  // The planner may learn from this step: nothing went wrong that skips its observation.
+  bool observation_skipped() const {
+    return fault && fault->effect == FaultEffect::observation_skipped;
+  }
 };
 
 // One action's result: what the planner is told, and the robot's part when there is one.

@@ -102,7 +102,8 @@ WorldFactory make_world_factory(WorldInputs in) {
       auto world = std::make_shared<robot::SimulatedWorld>(*spec.catalogue, *spec.config, sorting);
       return RobotParts{std::make_unique<robot::SimulatedArm>(world),
                         std::make_unique<robot::SimulatedMicrophone>(world),
-                        std::make_unique<robot::ClassifierService>(classifier)};
+                        std::make_unique<robot::ClassifierService>(classifier),
+                        RecordingChecks{}};  // exact recordings: no level or length checks
     };
   } else {
     // The folder is indexed once; every world deals its own files from a copy of the index.
@@ -114,7 +115,8 @@ WorldFactory make_world_factory(WorldInputs in) {
     make_parts = [replay, actions, classifier] {
       return RobotParts{std::make_unique<robot::ReplayRobot>(actions),
                         std::make_unique<robot::ReplayRecorder>(*replay),
-                        std::make_unique<robot::ClassifierService>(classifier)};
+                        std::make_unique<robot::ClassifierService>(classifier),
+                        RecordingChecks{}};  // recorded files: heard as they are
     };
   }
   WorldFactory factory = robot_world_factory(in, std::move(make_parts));

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "common/error.h"
+#include "robot/transient_error.h"
 
 namespace echoplan::robot {
 namespace {
@@ -290,9 +291,8 @@ void PortAudioRecorder::start(const std::string& action) {
                               static_cast<unsigned long>(config_.frames_per_buffer), paNoFlag,
                               &Stream::on_audio, s.get());
   if (err != paNoError)
-    throw std::runtime_error(fmt::format("cannot open input device [{}] '{}' for '{}': {}",
-                                         device_.index, device_.name, action,
-                                         Pa_GetErrorText(err)));
+    throw TransientError(fmt::format("cannot open input device [{}] '{}' for '{}': {}",
+                                     device_.index, device_.name, action, Pa_GetErrorText(err)));
   Pa_SetStreamFinishedCallback(s->pa, &Stream::on_finished);
   s->drainer = std::thread([raw = s.get()] { raw->drain_loop(); });
   s->started = std::chrono::steady_clock::now();
@@ -305,9 +305,8 @@ void PortAudioRecorder::start(const std::string& action) {
     s->wake.notify_all();
     s->drainer.join();
     Pa_CloseStream(s->pa);
-    throw std::runtime_error(fmt::format("cannot start input device [{}] '{}' for '{}': {}",
-                                         device_.index, device_.name, action,
-                                         Pa_GetErrorText(err)));
+    throw TransientError(fmt::format("cannot start input device [{}] '{}' for '{}': {}",
+                                     device_.index, device_.name, action, Pa_GetErrorText(err)));
   }
   spdlog::debug("capture: recording '{}' from [{}] '{}'", action, device_.index, device_.name);
   stream_ = std::move(s);
@@ -372,7 +371,7 @@ audio::AudioClip PortAudioRecorder::stop() {
     spdlog::info("capture: the recording reached its limit of {} s and stopped growing",
                  config_.max_seconds);
   if (!stream_error.empty()) {
-    if (clip.samples.empty()) throw std::runtime_error(stream_error + "; nothing was recorded");
+    if (clip.samples.empty()) throw TransientError(stream_error + "; nothing was recorded");
     spdlog::error("capture: {}; keeping the {:.3f} s recorded before", stream_error,
                   clip.duration_seconds());
   }

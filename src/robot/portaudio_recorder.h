@@ -15,7 +15,8 @@
 //     and reported in a warning at stop();
 //   - the stream ends by itself (the device disappeared or failed): stop() logs an error and
 //   returns
-//     what was captured before; if nothing was, it throws std::runtime_error saying so;
+//     what was captured before (CaptureReport::stream_error says why); if nothing was, it throws
+//     TransientError (robot/transient_error.h) saying so;
 //   - the clip reaches CaptureConfig::max_seconds: capture stops there (a recording left running
 //     cannot exhaust memory) and stop() returns exactly that many frames;
 //   - stop() before the device delivered its first buffer (an action shorter than a device period):
@@ -70,15 +71,6 @@ struct InputDevice {
 // start.
 std::vector<InputDevice> list_input_devices();
 
-// What went wrong or was lost in the last recording (reset by start()).
-struct CaptureReport {
-  std::size_t frames = 0;          // frames in the clip stop() returned
-  int overflow_callbacks = 0;      // callbacks flagged paInputOverflow by the host
-  std::size_t dropped_frames = 0;  // frames lost because the ring was full
-  bool limit_reached = false;      // capture stopped at max_seconds
-  std::string stream_error;        // non-empty when the stream ended by itself (device gone)
-};
-
 class PortAudioRecorder final : public Recorder {
  public:
   // Starts PortAudio, resolves `config.device` and checks that it can record `config.channels`
@@ -88,8 +80,9 @@ class PortAudioRecorder final : public Recorder {
   PortAudioRecorder(const PortAudioRecorder&) = delete;
   PortAudioRecorder& operator=(const PortAudioRecorder&) = delete;
 
-  // Opens and starts the input stream. Throws std::runtime_error when the device cannot be opened
-  // (gone since construction, busy) and logic_error when a recording is already running.
+  // Opens and starts the input stream. Throws TransientError when the device cannot be opened
+  // (gone since construction, busy: it may be back for the next recording) and logic_error when a
+  // recording is already running.
   void start(const std::string& action) override;
   // Stops the stream and returns every frame captured since start() (see the defined outcomes
   // above).
@@ -100,7 +93,7 @@ class PortAudioRecorder final : public Recorder {
   // True once the running recording cannot grow any more: max_seconds reached or the stream ended.
   bool finished() const;
   // What happened in the last finished recording.
-  const CaptureReport& last_report() const { return report_; }
+  CaptureReport capture_report() const override { return report_; }
   // The device actually used.
   const InputDevice& device() const { return device_; }
   const CaptureConfig& config() const { return config_; }

@@ -32,6 +32,10 @@ struct ActionReport {
   ActionStatus status = ActionStatus::done;
   std::string reason;     // for collision and failed: what happened, in words, for the log
   double duration_s = 0;  // from the command to the end of the action (simulated or wall time)
+  // For `failed`: the arm stopped before it changed anything (nothing touched, the object where it
+  // was), so the same action may be repeated. The loop then retries it (loop/robot_world.h); a
+  // failure the arm does not call safe ends the trial.
+  bool retry_safe = false;
 };
 
 class Robot {

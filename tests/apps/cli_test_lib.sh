@@ -8,7 +8,12 @@
 #                  MESSAGE (a grep pattern) on stderr. Its output is left in $work/out and $work/err;
 #   wait_for_lines FILE LINES
 #                  wait (up to 60 s) until FILE holds at least LINES lines, e.g. before interrupting a
-#                  background run that has finished some work.
+#                  background run that has finished some work;
+#   small_campaign FILE [RECORDINGS_PER_PAIR]
+#                  write a small campaign on the model's own table (12 trials) to FILE, its training set
+#                  RECORDINGS_PER_PAIR (1; 0: none) simulated recordings of each object and action;
+#   same_files A B WHAT
+#                  check every file of folder A is in B with the same bytes, and no more.
 set -u
 bin=$1
 src=$2
@@ -38,4 +43,21 @@ wait_for_lines() {
     sleep 0.02
     waited=$((waited + 1))
   done
+}
+small_campaign() {
+  cat >"$1" <<YAML
+seed: 4
+arms:
+  - {name: hand_tuned, problem: $src/problems/audio_objects.yaml}
+world: {type: model, problem: $src/problems/audio_objects.yaml}
+training_set: {recordings_per_pair: ${2:-1}}
+trials:
+  - {object: pringles_can, trials: 4}
+  - {object: plastic_cup, trials: 4}
+  - {object: coffee_mug_weighted, plays: coffee_mug, trials: 4}
+planner: {solver: abt, episodes: 1000, max_steps: 30}
+YAML
+}
+same_files() {
+  diff -r "$1" "$2" >"$work/diff" 2>&1 || { fail "$3: folders differ"; head -5 "$work/diff"; }
 }

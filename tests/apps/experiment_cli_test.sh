@@ -5,28 +5,8 @@
 # bad input exits 2 with a message before any work. Usage: experiment_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
 . "$(dirname "$0")/cli_test_lib.sh"
 
-# campaign FILE [EXTRA YAML LINES]: a small campaign, 12 trials, one recording per pair.
-campaign() {
-  cat >"$1" <<YAML
-seed: 4
-arms:
-  - {name: hand_tuned, problem: $src/problems/audio_objects.yaml}
-world: {type: model, problem: $src/problems/audio_objects.yaml}
-training_set: {recordings_per_pair: 1}
-trials:
-  - {object: pringles_can, trials: 4}
-  - {object: plastic_cup, trials: 4}
-  - {object: coffee_mug_weighted, plays: coffee_mug, trials: 4}
-planner: {solver: abt, episodes: 1000, max_steps: 30}
-YAML
-}
 config=$work/campaign.yaml
-campaign "$config"
-
-# same_files A B WHAT: every file of A is in B with the same bytes, and no more.
-same_files() {
-  diff -r "$1" "$2" >"$work/diff" 2>&1 || { fail "$3: folders differ"; head -5 "$work/diff"; }
-}
+small_campaign "$config"
 
 # A whole run on all cores, and one on one core.
 "$bin" experiment --config "$config" --out "$work/whole" >"$work/whole.out" 2>"$work/whole.err" \

@@ -109,8 +109,10 @@ TEST_F(LoopLogTest, CsvRowsClipsAndJsonOfATrial) {
   EXPECT_EQ(rows[0], strike);
   EXPECT_EQ(rows[1], sort);
 
-  EXPECT_EQ(strike["report"],
-            nlohmann::json({{"status", "done"}, {"reason", ""}, {"duration_s", 0.5}}));
+  EXPECT_EQ(
+      strike["report"],
+      nlohmann::json({{"status", "done"}, {"reason", ""}, {"duration_s", 0.5}, {"attempts", 1}}));
+  EXPECT_EQ(strike["fault"], nullptr);
   EXPECT_EQ(strike["belief_before"]["coffee_mug"], 0.25);
   EXPECT_EQ(strike["belief_after"]["plastic_cup"], 0.3125);
   EXPECT_EQ(strike["clip"], "clips/002_00_strike.wav");
@@ -138,6 +140,25 @@ TEST_F(LoopLogTest, ACollisionIsLoggedWithItsReason) {
   }
   const std::string text = slurp(dir_ / "loop_steps.csv");
   EXPECT_EQ(text.substr(text.find('\n') + 1), "2,1,slide,collision,,,none,,,,,-200,\n");
+}
+
+// A full disk under the step log (loop_steps.jsonl is /dev/full, where every write fails with
+// ENOSPC): the step is an InputError naming the trial and the step, not rows silently lost.
+TEST_F(LoopLogTest, AStepLogThatCannotBeWrittenIsAnInputErrorNamingTheTrialAndStep) {
+  fs::create_directories(dir_);
+  fs::create_symlink("/dev/full", dir_ / "loop_steps.jsonl");
+  LoopLog log(dir_, report_model());
+  Step s = sort_step();
+  try {
+    log.write_step(s);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.problem().find("trial 2, step 2: loop_steps.csv or loop_steps.jsonl could not be "
+                               "written; is the disk full? 0 step(s) were logged before"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(log.steps_written(), 0);
 }
 
 TEST_F(LoopLogTest, AFolderThatCannotBeCreatedIsAnInputError) {

@@ -33,7 +33,7 @@ RobotParts simulated_parts(const pomdp::ObjectIdentificationModel& problem) {
                                                        sim::SimConfig{}, problem.data().sorting);
   return {std::make_unique<robot::SimulatedArm>(world),
           std::make_unique<robot::SimulatedMicrophone>(world),
-          std::make_unique<robot::ClassifierService>(model())};
+          std::make_unique<robot::ClassifierService>(model()), RecordingChecks{}};
 }
 
 // Runs one trial per object (trial k holds object k) through a Loop in `world`.

@@ -50,6 +50,13 @@ TEST(StepText, SaysHowAFailedActionWentAndWhatATableWorldObserved) {
   EXPECT_EQ(step_text(table, spec()), "step 1: slide -> observed plastic_cup, reward -1");
 }
 
+TEST(StepText, SaysAStepsFaultInsteadOfWhatWasHeard) {
+  Step s = heard("coffee_mug", false);
+  s.robot->classified = false;
+  s.robot->fault = StepFault{"recording silent", "peak 0", FaultEffect::observation_skipped};
+  EXPECT_EQ(step_text(s, spec()), "step 2: strike -> recording silent: peak 0, reward -1");
+}
+
 TEST(StepText, SaysHowATrialEnded) {
   pomdp::ModelSpec s = spec();
   s.state.discrete_value_names = {{"coffee_mug", "plastic_cup"}};

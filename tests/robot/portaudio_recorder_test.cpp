@@ -4,12 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <thread>
 
 #include "common/error.h"
 #include "file_capture_device.h"
+#include "robot/transient_error.h"
 
 namespace echoplan::robot {
 namespace {
@@ -69,9 +71,9 @@ TEST_F(PortAudioRecorderTest, DefaultsCaptureTheDefaultDeviceAsStereoAt44100Hz) 
   // Exactly the file's first 0.5 s, sample for sample.
   const std::vector<float> expected(stereo().begin(), stereo().begin() + 44100);
   EXPECT_EQ(clip.samples, expected);
-  EXPECT_TRUE(recorder.last_report().limit_reached);
-  EXPECT_EQ(recorder.last_report().dropped_frames, 0u);
-  EXPECT_EQ(recorder.last_report().overflow_callbacks, 0);
+  EXPECT_TRUE(recorder.capture_report().limit_reached);
+  EXPECT_EQ(recorder.capture_report().dropped_frames, 0u);
+  EXPECT_EQ(recorder.capture_report().overflow_callbacks, 0);
 }
 
 TEST_F(PortAudioRecorderTest, RateChannelsAndDeviceAreConfigurable) {
@@ -110,8 +112,8 @@ TEST_F(PortAudioRecorderTest, StopBeforeTheLimitKeepsEverythingCapturedSoFar) {
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   const audio::AudioClip clip = recorder.stop();
   ASSERT_GE(clip.frames(), 4096u);
-  EXPECT_FALSE(recorder.last_report().limit_reached);
-  EXPECT_TRUE(recorder.last_report().stream_error.empty());
+  EXPECT_FALSE(recorder.capture_report().limit_reached);
+  EXPECT_TRUE(recorder.capture_report().stream_error.empty());
   // It begins with the file (what the file plugin returns past the file's end is its own business).
   const std::size_t n = std::min(clip.samples.size(), stereo().size());
   EXPECT_TRUE(std::equal(clip.samples.begin(),
@@ -134,7 +136,7 @@ TEST_F(PortAudioRecorderTest, MinSecondsMakesAnEarlyStopWaitForTheWholeRecording
     const audio::AudioClip clip = recorder.stop();
     ASSERT_EQ(clip.frames(), 22050u) << "recording " << i;
     ASSERT_EQ(clip.samples, expected) << "recording " << i;
-    EXPECT_TRUE(recorder.last_report().limit_reached);
+    EXPECT_TRUE(recorder.capture_report().limit_reached);
   }
 }
 
@@ -145,7 +147,7 @@ TEST_F(PortAudioRecorderTest, MinSecondsBelowMaxSecondsIsALowerBoundOnly) {
   recorder.start("slide");
   const audio::AudioClip clip = recorder.stop();
   EXPECT_GE(clip.frames(), 11025u);
-  EXPECT_FALSE(recorder.last_report().limit_reached);
+  EXPECT_FALSE(recorder.capture_report().limit_reached);
   EXPECT_TRUE(std::equal(clip.samples.begin(), clip.samples.begin() + 22050, stereo().begin()));
 }
 
@@ -216,7 +218,7 @@ TEST_F(PortAudioRecorderTest, StartTwiceAndStopWithoutStartAreLogicErrors) {
   EXPECT_NO_THROW(recorder.stop());
 }
 
-TEST_F(PortAudioRecorderTest, ADeviceGoneBeforeStartIsARuntimeErrorNamingIt) {
+TEST_F(PortAudioRecorderTest, ADeviceGoneIsATransientErrorNamingItAndItRecordsAgainWhenBack) {
   // The device's file disappears between construction and start(): the stream cannot open.
   const fs::path raw = dir() / "vanishing.raw";
   testing::write_raw_float(raw, mono());
@@ -227,15 +229,26 @@ TEST_F(PortAudioRecorderTest, ADeviceGoneBeforeStartIsARuntimeErrorNamingIt) {
   CaptureConfig config;
   config.device = "vanishing";
   config.channels = 1;
+  config.sample_rate = 16000;
+  config.max_seconds = config.min_seconds = 0.5;
   PortAudioRecorder recorder(config);
   fs::remove(raw);
+  // TransientError: the loop skips this step's observation and records again at the next step
+  // (loop/robot_world.h), rather than ending the run.
   try {
     recorder.start("strike");
     recorder.stop();
-    FAIL() << "expected runtime_error";
-  } catch (const std::runtime_error& e) {
+    FAIL() << "expected TransientError";
+  } catch (const TransientError& e) {
     EXPECT_NE(std::string(e.what()).find("'vanishing'"), std::string::npos) << e.what();
   }
+  // Plugged back in: the next recording opens it anew and hears it.
+  testing::write_raw_float(raw, mono());
+  recorder.start("strike");
+  const audio::AudioClip clip = recorder.stop();
+  ASSERT_EQ(clip.frames(), 8000u);
+  EXPECT_TRUE(std::equal(clip.samples.begin(), clip.samples.end(), mono().begin()));
+  EXPECT_FALSE(recorder.capture_report().dropout());
 }
 
 }  // namespace

@@ -66,6 +66,7 @@ void RosRecorder::start(const std::string& action) {
 audio::AudioClip RosRecorder::stop() {
   if (!recording_) throw std::logic_error("RosRecorder::stop: no recording is running");
   recording_ = false;
+  capture_ = CaptureReport{};
   std::unique_lock lock(mutex_);
   const std::uint64_t clips_before = clips_received_;
   ros::param::set(ros_names::kRecordParam, false);
@@ -78,6 +79,9 @@ audio::AudioClip RosRecorder::stop() {
                     action_, ros_names::kClipTopic, wait_timeout_s_, ros_names::kRecordParam));
   const echoplan_ros::Clip::ConstPtr clip = last_clip_;
   lock.unlock();
+  capture_.overflow_callbacks = clip->overflow_callbacks;
+  capture_.dropped_frames = clip->dropped_frames;
+  capture_.stream_error = clip->error;  // the listener's device went away: only part was captured
   if (!clip->error.empty()) {
     if (clip->samples.empty())
       throw std::runtime_error(

@@ -30,6 +30,8 @@ class RosRecorder final : public Recorder {
 
   void start(const std::string& action) override;
   audio::AudioClip stop() override;
+  // What the listener said the last recording lost (its Clip message's counts and error).
+  CaptureReport capture_report() const override { return capture_; }
 
   // Seconds from setting the parameter to true until the listener reported capture started, for the
   // last start() (the capture start latency of docs/BENCHMARKS.md).
@@ -51,6 +53,7 @@ class RosRecorder final : public Recorder {
   std::string action_;
   bool recording_ = false;
   double last_start_latency_s_ = 0;
+  CaptureReport capture_;
 };
 
 }  // namespace echoplan::robot
