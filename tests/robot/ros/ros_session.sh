@@ -10,8 +10,19 @@
 pgids=()
 ros_session_end() {
   for g in "${pgids[@]}"; do kill -TERM -- "-$g" 2>/dev/null || true; done
-  sleep 0.3
+  # roscore stops its rosmaster on TERM, which takes more than a moment on a loaded machine: wait
+  # (up to 5 s) for the groups to go before killing what is left.
+  local _ g alive
+  for _ in $(seq 50); do
+    alive=0
+    for g in "${pgids[@]}"; do kill -0 -- "-$g" 2>/dev/null && alive=1; done
+    [ "$alive" = 0 ] && break
+    sleep 0.1
+  done
   for g in "${pgids[@]}"; do kill -KILL -- "-$g" 2>/dev/null || true; done
+  # roslaunch starts rosmaster and rosout in process groups of their own, which outlive a roscore
+  # killed mid-shutdown: whatever still logs under $work is this session's.
+  pkill -KILL -f -- "__log:=$work/" 2>/dev/null || true
   wait 2>/dev/null || true
   [ -n "${KEEP_WORK:-}" ] || rm -rf "$work"
 }
