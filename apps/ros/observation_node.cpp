@@ -86,6 +86,7 @@ class ObservationNode {
       response.label = heard.label;
       response.unknown = heard.unknown;
       response.probability = heard.probability;
+      response.grade = heard.grade;
       response.distance = heard.distance;
       for (const auto& [name, p] : heard.probabilities) {
         response.classes.push_back(name);

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "common/error.h"
 #include "common/file_io.h"
+#include "experiment/dataset_campaign.h"
 #include "solvers/identification_solver.h"
 
 namespace echoplan::experiment {
@@ -46,17 +48,31 @@ std::vector<std::string> fold_names(const fs::path& folds) {
   return names;
 }
 
-// The campaign's arms in its own order (campaign.json), the planner usually first.
-std::vector<std::string> arm_names(const fs::path& directory) {
+struct ArmEntry {
+  std::string name;
+  perception::ObservationKind observations = perception::ObservationKind::labels;
+};
+
+// The campaign's arms in its own order (campaign.json), the planner usually first, with what each
+// heard (its fold problems differ: problem.yaml or problem-graded.yaml).
+std::vector<ArmEntry> arm_entries(const fs::path& directory) {
   const fs::path described = directory / "campaign.json";
   const nlohmann::json j = nlohmann::json::parse(
       read_text_file(described.string(), "campaign description"), nullptr, false);
   if (j.is_discarded() || !j.contains("config") || !j["config"].contains("arms"))
     throw InputError(described.string(), 0, "is not a campaign description");
-  std::vector<std::string> names;
-  for (const nlohmann::json& arm : j["config"]["arms"])
-    names.push_back(arm.value("name", std::string()));
-  return names;
+  std::vector<ArmEntry> arms;
+  try {
+    for (const nlohmann::json& arm : j["config"]["arms"])
+      arms.push_back(
+          {arm.value("name", std::string()),
+           perception::parse_observation_kind(arm.value("observations", std::string("labels")))});
+  } catch (const InputError& e) {
+    throw InputError(described.string(), 0, e.problem());
+  } catch (const nlohmann::json::exception&) {
+    throw InputError(described.string(), 0, "an arm's name or observations is not text");
+  }
+  return arms;
 }
 
 }  // namespace
@@ -68,22 +84,27 @@ std::vector<ArmCertificate> certify_campaign(const fs::path& directory,
     throw InputError(directory.string(), 0,
                      "has no folds/ folder: certify --campaign takes a dataset campaign's folder "
                      "(each fold's problem beside its trials)");
-  const std::vector<std::string> arms = arm_names(directory);
+  const std::vector<ArmEntry> arms = arm_entries(directory);
   std::vector<ArmCertificate> certificates;
   for (const std::string& fold : fold_names(folds)) {
-    const fs::path problem_path = folds / fold / "problem.yaml";
-    if (!fs::is_regular_file(problem_path))
-      throw InputError(
-          problem_path.string(), 0,
-          "missing: the campaign writes each fold's problem once its folds are fitted");
-    const pomdp::Problem problem = pomdp::load_problem(problem_path.string());
-    for (const std::string& arm : arms) {
-      const fs::path steps = folds / fold / "arms" / arm / "steps.csv";
+    std::map<perception::ObservationKind, pomdp::Problem> problems;  // loaded once per fold
+    for (const ArmEntry& arm : arms) {
+      const std::string problem_file = "folds/" + fold + "/" + fold_problem_name(arm.observations);
+      const fs::path problem_path = directory / problem_file;
+      if (!problems.contains(arm.observations)) {
+        if (!fs::is_regular_file(problem_path))
+          throw InputError(
+              problem_path.string(), 0,
+              "missing: the campaign writes each fold's problem once its folds are fitted");
+        problems.emplace(arm.observations, pomdp::load_problem(problem_path.string()));
+      }
+      const fs::path steps = folds / fold / "arms" / arm.name / "steps.csv";
       if (!fs::is_regular_file(steps))
         throw InputError(steps.string(), 0,
                          "missing: the campaign has not written this fold's trials");
       certificates.push_back(
-          {fold, arm, certify_steps(problem, problem_path.string(), steps, options)});
+          {fold, arm.name, problem_file,
+           certify_steps(problems.at(arm.observations), problem_path.string(), steps, options)});
     }
   }
   if (certificates.empty()) throw InputError(folds.string(), 0, "holds no folds");
@@ -113,8 +134,7 @@ nlohmann::ordered_json campaign_certificate_json(const std::vector<ArmCertificat
   nlohmann::ordered_json folds = nlohmann::ordered_json::array();
   for (const ArmCertificate& a : certificates) {
     const Certificate& c = a.certificate;
-    nlohmann::ordered_json j = {
-        {"fold", a.fold}, {"arm", a.arm}, {"problem", "folds/" + a.fold + "/problem.yaml"}};
+    nlohmann::ordered_json j = {{"fold", a.fold}, {"arm", a.arm}, {"problem", a.problem}};
     j.update(to_json(c));  // share_of_vstar is replaced below: stated only where tight
     j["looseness_share"] = looseness_share(c);
     j["tight"] = tight(c);

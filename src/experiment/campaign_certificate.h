@@ -23,6 +23,7 @@ Certificate certify_steps(const pomdp::Problem& problem, const std::string& prob
 struct ArmCertificate {
   std::string fold;  // the folder name under folds/ ("1", "2", ...)
   std::string arm;
+  std::string problem;  // the fold's problem the arm planned with, relative to the campaign folder
   Certificate certificate;
 };
 

@@ -35,6 +35,8 @@ constexpr std::array<WorldKind, 3> kWorldKinds{{{WorldType::model, "model", fals
 // The campaign file, described once (config_fields.h): what each section holds, in which worlds,
 // and how each field enters the identity.
 
+std::vector<std::string> observation_choices() { return perception::observation_kind_names(); }
+
 std::vector<std::string> strategy_choices() {
   std::vector<std::string> choices{kPlanStrategy};
   for (const std::string& name : solvers::strategy_names()) choices.push_back(name);
@@ -65,6 +67,11 @@ const std::vector<Field<CampaignArm>>& arm_fields() {
        .member = &CampaignArm::strategy,
        .identity = Identity::unless_default,
        .choices = strategy_choices},
+      // Left out of the identity at its default: campaigns written before grades existed.
+      {.key = "observations",
+       .member = &CampaignArm::observations,
+       .identity = Identity::unless_default,
+       .choices = observation_choices},
   };
   return fields;
 }
@@ -224,6 +231,10 @@ const char* to_string(WorldType type) { return world_kind(type).word; }
 
 bool WorldConfig::recorded_data() const { return world_kind(type).recorded_data; }
 
+perception::ObservationKind CampaignArm::observation_kind() const {
+  return perception::parse_observation_kind(observations);
+}
+
 int CampaignConfig::total_trials() const {
   int per_arm = 0;
   for (const ObjectGroup& g : groups) per_arm += g.trials;
@@ -292,6 +303,11 @@ std::vector<CampaignArm> read_arms(const YamlReader& f, const YAML::Node& root,
   for (const YAML::Node& a : arms) {
     CampaignArm arm;
     config_fields::read_yaml(f, a, arm_fields(), at, arm);
+    if (arm.observation_kind() == perception::ObservationKind::graded && !at.recorded_data &&
+        !arm.calibrate)
+      f.fail(a,
+             "observations: graded needs calibrate: true (grades come from the trained "
+             "classifier; a problem file's own table has none)");
     for (const CampaignArm& other : read)
       if (other.name == arm.name) f.fail(a, "two arms are named '" + arm.name + "'");
     read.push_back(std::move(arm));

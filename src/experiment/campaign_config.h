@@ -19,6 +19,7 @@
 #include "experiment/reference_results.h"
 #include "loop/dataset_problem.h"
 #include "perception/dataset_task.h"
+#include "perception/observation_grades.h"
 
 namespace echoplan::experiment {
 
@@ -39,6 +40,11 @@ struct CampaignArm {
   // best_single, information_gain, random: solvers/solver_factory.h), the baselines a planner is
   // measured against.
   std::string strategy = kPlanStrategy;
+  // What the arm hears (perception/observation_grades.h): "labels", the class a performance was
+  // heard as; or "graded", the class and how sure the classifier was (a calibrating arm of a
+  // simulated world, or any arm of a dataset world).
+  std::string observations = "labels";
+  perception::ObservationKind observation_kind() const;
 };
 
 // A group of trials with one object in the world. `object` is what the world holds (a catalogue

@@ -90,6 +90,13 @@ void ProblemFileWorld::load_problems(const CampaignConfig& config, CampaignResul
     // Every solver can be built (unknown names and bad settings fail now, not in a worker).
     loop::check_planner(arm_planner(config, arm), *arm_problems_.back());
     if (arm.calibrate) loop::object_problem(*arm_problems_.back()->model);
+    // A model world draws observations from its problem's own table, which has no grades.
+    if (!simulates_ && arm.observation_kind() == perception::ObservationKind::graded)
+      throw InputError(config.source, 0,
+                       fmt::format("arm '{}': observations: graded needs a world that hears (a "
+                                   "simulated or dataset world); a model world draws labels from "
+                                   "its problem's table",
+                                   arm.name));
   }
   results.spec = spec;
   results.action_costs = action_costs(*world_problem_->model);
@@ -145,7 +152,8 @@ void ProblemFileWorld::load_given_model(const CampaignConfig& config, InputFiles
   model_ = std::make_shared<const perception::ObservationModel>(perception::parse_observation_model(
       files.text(config.training.model), config.training.model));
   for (std::size_t a = 0; a < config.arms.size(); ++a)
-    if (config.arms[a].calibrate) loop::calibrate_problem(*arm_problems_[a], *model_);
+    if (config.arms[a].calibrate)
+      loop::calibrate_problem(*arm_problems_[a], *model_, "", config.arms[a].observation_kind());
   make_loops(config);
 }
 
@@ -235,7 +243,8 @@ std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
     for (std::size_t a = 0; a < config.arms.size(); ++a) {
       if (!config.arms[a].calibrate) continue;
       const std::string file = (training_ / (config.arms[a].name + ".problem.yaml")).string();
-      arm_problems_[a] = loop::calibrate_problem(*arm_problems_[a], *model_, file);
+      arm_problems_[a] = loop::calibrate_problem(*arm_problems_[a], *model_, file,
+                                                 config.arms[a].observation_kind());
       loop::save_problem(*arm_problems_[a], file);
     }
   }
@@ -245,11 +254,20 @@ std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
 // The checked loop of every arm and group; InputError when a part does not fit.
 ArmLoops ProblemFileWorld::make_loops(const CampaignConfig& config) const {
   ArmLoops loops(config.arms.size());
+  // A graded arm's world hears graded symbols: the world's problem with the model's graded table
+  // (its rewards and kinematics as they are; the simulator, not the table, makes observations).
+  std::shared_ptr<const pomdp::Problem> graded_world;
+  for (std::size_t a = 0; a < config.arms.size(); ++a)
+    if (config.arms[a].observation_kind() == perception::ObservationKind::graded && !graded_world)
+      graded_world = loop::calibrate_problem(*world_problem_, *model_, world_problem_->source_path,
+                                             perception::ObservationKind::graded);
   for (std::size_t a = 0; a < config.arms.size(); ++a)
     for (const ObjectGroup& group : config.groups) {
       loop::LoopSettings s;
       s.problem = arm_problems_[a];
-      s.world_problem = world_problem_;
+      s.world_problem =
+          config.arms[a].observation_kind() == perception::ObservationKind::graded ? graded_world
+                                                                                    : world_problem_;
       if (simulates_) {
         s.world = loop::SimulatedWorldSpec{catalogue_, sim_config_};
         s.classifier = model_;

@@ -4,7 +4,9 @@
 #include <fmt/ranges.h>
 
 #include <map>
+#include <set>
 #include <sstream>
+#include <tuple>
 
 #include "common/error.h"
 #include "common/file_io.h"
@@ -149,37 +151,47 @@ bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
   return true;
 }
 
+const char* fold_problem_name(perception::ObservationKind kind) {
+  return kind == perception::ObservationKind::graded ? "problem-graded.yaml" : "problem.yaml";
+}
+
 void write_fold_problems(const std::filesystem::path& directory, const CampaignConfig& config,
                          const DatasetTrials& trials) {
   pomdp::BeliefSettings belief;
   belief.type = pomdp::BeliefSettings::Type::exact;  // as the campaign's trials track it
   const std::vector<int> uses = loop::default_uses(*trials.data);
+  std::set<perception::ObservationKind> kinds;
+  for (const CampaignArm& arm : config.arms) kinds.insert(arm.observation_kind());
   for (std::size_t f = 0; f < trials.models.size(); ++f) {
     const std::filesystem::path folder = directory / "folds" / std::to_string(f + 1);
     std::filesystem::create_directories(folder);
-    std::ostringstream text;
-    text << fmt::format(
-        "# Fold {} of the campaign {}\n# (data {}): the problem its trials planned with, each "
-        "behaviour limited to the most\n# performances any session recorded (a trial's own "
-        "limits may be lower).\n# `echoplan certify --campaign` judges folds/{}/arms/*/steps.csv "
-        "with it.\n",
-        f + 1, config.source, config.world.data, f + 1);
-    pomdp::write_problem_yaml(
-        text, loop::dataset_problem(trials.task, *trials.models[f], config.rewards, uses), belief,
-        pomdp::PlannerDefaults{});
-    write_file_atomically(folder / "problem.yaml", text.str());
+    for (const perception::ObservationKind kind : kinds) {
+      std::ostringstream text;
+      text << fmt::format(
+          "# Fold {} of the campaign {}\n# (data {}): the problem its arms that hear {} planned "
+          "with, each behaviour limited to the most\n# performances any session recorded (a "
+          "trial's own limits may be lower).\n# `echoplan certify --campaign` judges "
+          "folds/{}/arms/*/steps.csv with it.\n",
+          f + 1, config.source, config.world.data, perception::observation_kind_name(kind), f + 1);
+      pomdp::write_problem_yaml(
+          text, loop::dataset_problem(trials.task, *trials.models[f], config.rewards, uses, kind),
+          belief, pomdp::PlannerDefaults{});
+      write_file_atomically(folder / fold_problem_name(kind), text.str());
+    }
   }
 }
 
 ArmLoops dataset_loops(const CampaignConfig& config, const DatasetTrials& trials) {
   // One problem per fold and use limits, shared by every arm and trial that needs it.
-  std::map<std::pair<int, std::vector<int>>, std::shared_ptr<const pomdp::Problem>> problems;
+  using Key = std::tuple<int, std::vector<int>, perception::ObservationKind>;
+  std::map<Key, std::shared_ptr<const pomdp::Problem>> problems;
   const auto& names = trials.names->model->object_identification()->data();
-  const auto problem_for = [&](int fold, const std::vector<int>& uses) {
-    auto& p = problems[{fold, uses}];
+  const auto problem_for = [&](int fold, const std::vector<int>& uses,
+                               perception::ObservationKind kind) {
+    auto& p = problems[{fold, uses, kind}];
     if (!p)
       p = std::make_shared<const pomdp::Problem>(dataset_problem_file(
-          loop::dataset_problem(trials.task, *trials.models.at(fold), config.rewards, uses),
+          loop::dataset_problem(trials.task, *trials.models.at(fold), config.rewards, uses, kind),
           fmt::format("{} (fold {})", config.world.data, fold + 1)));
     return p;
   };
@@ -190,7 +202,8 @@ ArmLoops dataset_loops(const CampaignConfig& config, const DatasetTrials& trials
       for (int session : sessions_of(*trials.data, static_cast<int>(o))) {
         const int fold = trials.fold_of_session.at(session);
         loop::LoopSettings s;
-        s.problem = problem_for(fold, loop::session_uses(names, *trials.data, session));
+        s.problem = problem_for(fold, loop::session_uses(names, *trials.data, session),
+                                config.arms[a].observation_kind());
         s.world = loop::DatasetWorldSpec{trials.data, trials.models.at(fold), session};
         s.planner = arm_planner(config, config.arms[a]);
         s.max_steps = config.planner.max_steps;

@@ -58,6 +58,9 @@ bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
 // fold's fitted table, the task's rewards and costs, each behaviour limited to the most
 // performances any session recorded (default_uses). `echoplan certify --campaign` judges the
 // fold's trials with it. Needs the fitted folds.
+// The file name of a fold's problem for arms that hear `kind`: problem.yaml (labels) or
+// problem-graded.yaml.
+const char* fold_problem_name(perception::ObservationKind kind);
 void write_fold_problems(const std::filesystem::path& directory, const CampaignConfig& config,
                          const DatasetTrials& trials);
 

@@ -12,11 +12,12 @@
 namespace echoplan::loop {
 
 pomdp::ObjectProblemData calibrated_problem(const pomdp::ObjectProblemData& base,
-                                            const perception::ObservationModel& model) {
+                                            const perception::ObservationModel& model,
+                                            perception::ObservationKind kind) {
   const std::vector<std::string>& classes = model.classes();
   const std::vector<std::string>& actions = model.actions();
   pomdp::ObjectProblemData out = base;
-  out.observation_symbols = model.observation_symbols();
+  out.observation_symbols = model.observation_symbols(kind);
   out.observation_table.clear();
   for (const pomdp::SensingAction& act : base.sensing) {
     if (std::find(actions.begin(), actions.end(), act.name) == actions.end())
@@ -24,7 +25,7 @@ pomdp::ObjectProblemData calibrated_problem(const pomdp::ObjectProblemData& base
           fmt::format("problem '{}' has sensing action '{}', but the observation model was "
                       "trained for {} only",
                       base.name, act.name, fmt::join(actions, ", ")));
-    const auto& table = model.observation_table(act.name);
+    const auto& table = model.observation_table(act.name, kind);
     auto& block = out.observation_table.emplace_back();
     for (const std::string& object : base.objects) {
       const auto k = std::find(classes.begin(), classes.end(), object) - classes.begin();
@@ -42,11 +43,12 @@ pomdp::ObjectProblemData calibrated_problem(const pomdp::ObjectProblemData& base
 
 std::shared_ptr<const pomdp::Problem> calibrate_problem(const pomdp::Problem& base,
                                                         const perception::ObservationModel& model,
-                                                        const std::string& source_path) {
+                                                        const std::string& source_path,
+                                                        perception::ObservationKind kind) {
   auto calibrated = std::make_shared<pomdp::Problem>(base);
   try {
     calibrated->model = std::make_shared<pomdp::ObjectIdentificationModel>(
-        calibrated_problem(object_problem(*base.model).data(), model));
+        calibrated_problem(object_problem(*base.model).data(), model, kind));
   } catch (const InputError& e) {
     throw InputError(base.source_path, 0, e.problem());
   }

@@ -29,7 +29,8 @@ void check_costs(const TaskRewards& rewards, const std::vector<std::string>& act
 }
 
 pomdp::ObjectProblemData problem_of(const perception::DatasetTask& task,
-                                    const std::vector<std::string>& actions, const Table& table,
+                                    const std::vector<std::string>& actions,
+                                    std::vector<std::string> symbols, const Table& table,
                                     const TaskRewards& rewards, std::vector<int> uses) {
   if (uses.size() != actions.size())
     throw InputError(fmt::format("{} use limits for {} actions; expected one per action",
@@ -56,7 +57,7 @@ pomdp::ObjectProblemData problem_of(const perception::DatasetTask& task,
       row.push_back(bin == static_cast<int>(j) ? rewards.right : rewards.wrong);
     data.sorting_reward.push_back(std::move(row));
   }
-  data.observation_symbols = task.classes;
+  data.observation_symbols = std::move(symbols);
   data.observation_table = table;
   pomdp::validate_object_problem(data);
   return data;
@@ -71,7 +72,8 @@ double TaskRewards::sensing_reward(const std::string& behaviour) const {
 
 pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
                                          const perception::ObservationModel& model,
-                                         const TaskRewards& rewards, std::vector<int> uses) {
+                                         const TaskRewards& rewards, std::vector<int> uses,
+                                         perception::ObservationKind kind) {
   if (model.classes() != task.classes || model.reject())
     throw InputError(fmt::format(
         "the model's classes ({}{}) are not the task's ({}): a dataset problem needs a model "
@@ -80,8 +82,9 @@ pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
         fmt::join(task.classes, ", ")));
   Table table;
   for (const std::string& action : model.actions())
-    table.push_back(model.observation_table(action));
-  return problem_of(task, model.actions(), table, rewards, std::move(uses));
+    table.push_back(model.observation_table(action, kind));
+  return problem_of(task, model.actions(), model.observation_symbols(kind), table, rewards,
+                    std::move(uses));
 }
 
 pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& task,
@@ -92,7 +95,7 @@ pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& ta
   const std::size_t classes = task.classes.size();
   const Table uniform(actions.size(), std::vector<std::vector<double>>(
                                           classes, std::vector<double>(classes, 1.0 / classes)));
-  return problem_of(task, actions, uniform, rewards, default_uses(set));
+  return problem_of(task, actions, task.classes, uniform, rewards, default_uses(set));
 }
 
 std::vector<int> default_uses(const perception::FeatureSet& set) {

@@ -33,14 +33,16 @@ struct TaskRewards {
 // prior from the trials' own frequencies would leak the test split); one sensing action per model
 // action (same order, reward `sense`, no motion, no collision, `uses[a]` its use limit, 0: none);
 // one sorting action per bin, rewarding `right` when the class is in that bin and `wrong`
-// otherwise; observation symbols = the classes; the table = the model's observation tables;
+// otherwise; observation symbols = the model's of `kind` (the classes, or the graded symbols); the
+// table = the model's observation tables of that kind;
 // discount 0.99 (the report's problems). Each sensing action's reward is
 // rewards.sensing_reward(its name). Throws InputError when `uses` is not one entry per action, or
 // negative, when `rewards.costs` prices a behaviour the model does not have, or when the model's
-// classes are not the task's (or it rejects).
-pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
-                                         const perception::ObservationModel& model,
-                                         const TaskRewards& rewards, std::vector<int> uses);
+// classes are not the task's (or it rejects), or `kind` is graded and the model has no grades.
+pomdp::ObjectProblemData dataset_problem(
+    const perception::DatasetTask& task, const perception::ObservationModel& model,
+    const TaskRewards& rewards, std::vector<int> uses,
+    perception::ObservationKind kind = perception::ObservationKind::labels);
 
 // The same problem's shape, with every observation row uniform and default_uses(set): its names
 // (classes, actions, bins, symbols) before any model is fitted, e.g. for a campaign's report.

@@ -54,8 +54,13 @@ DatasetWorld::DatasetWorld(const pomdp::ObjectIdentificationModel& problem, Data
     : problem_(problem), spec_(std::move(spec)) {
   if (!spec_.data || !spec_.model)
     throw std::invalid_argument("DatasetWorld: the data and the fitted model are needed");
-  // The model's symbols are the planner's observations by index.
-  if (spec_.model->observation_symbols() != problem_.data().observation_symbols)
+  // The model's symbols are the planner's observations by index: its labels, or its graded
+  // symbols when the problem plans with grades.
+  const std::vector<std::string>& symbols = problem_.data().observation_symbols;
+  if (spec_.model->graded() &&
+      symbols == spec_.model->observation_symbols(perception::ObservationKind::graded))
+    kind_ = perception::ObservationKind::graded;
+  else if (spec_.model->observation_symbols() != symbols)
     throw InputError(
         spec_.data->root, 0,
         fmt::format("the model hears [{}] but the problem's observations are [{}]: train the "
@@ -85,7 +90,7 @@ WorldStep DatasetWorld::execute(int action, Rng& /*rng*/) {
                       data.sensing[action].name, rows_[action].size()));
     const int row = rows_[action][next_[action]++];
     const perception::Prediction heard = readers_[action].classify(row);
-    outcome.observation.index = heard.symbol;
+    outcome.observation.index = spec_.model->symbol(heard, kind_);
     // As a robot world logs it: the calibrated probability of the heard (or nearest) class.
     outcome.heard_probability = heard.probabilities.at(static_cast<std::size_t>(heard.best_class));
     outcome.reward = data.sensing[action].reward;

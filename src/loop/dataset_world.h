@@ -40,7 +40,8 @@ class DatasetWorld final : public World {
  private:
   const pomdp::ObjectIdentificationModel& problem_;
   DatasetWorldSpec spec_;
-  std::vector<perception::PerformanceReader> readers_;  // [sensing action]
+  perception::ObservationKind kind_ = perception::ObservationKind::labels;  // the problem's
+  std::vector<perception::PerformanceReader> readers_;                      // [sensing action]
   std::vector<std::vector<int>> rows_;  // [sensing action] -> the session's rows, file order
   std::vector<std::size_t> next_;       // [sensing action] -> rows used so far this trial
   int true_class_ = 0;

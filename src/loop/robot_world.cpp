@@ -9,6 +9,7 @@
 
 #include "common/error.h"
 #include "loop/object_problem.h"
+#include "perception/observation_grades.h"
 #include "robot/transient_error.h"
 
 namespace echoplan::loop {
@@ -19,6 +20,17 @@ constexpr const char* kUnknownSymbol = "unknown";
 
 bool contains(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// The class a problem's observation symbol names: `mug@high` (a graded symbol) and `mug` both
+// name `mug`.
+std::string class_of_symbol(const std::string& symbol) {
+  for (int g = 0; g < perception::kGrades; ++g) {
+    const std::string suffix = perception::graded_name("", g);
+    if (symbol.size() > suffix.size() && symbol.ends_with(suffix))
+      return symbol.substr(0, symbol.size() - suffix.size());
+  }
+  return symbol;
 }
 
 // Runs `part` and returns the message of a failure of this call alone (robot/transient_error.h: a
@@ -64,19 +76,26 @@ RobotWorld::RobotWorld(pomdp::ModelPtr model, RobotParts parts,
           "'{}' (it was trained for: {}); train it on recordings of every sensing action",
           act.name, data.name, fmt::join(trained, ", ")));
     for (const std::string& label : it->second)
-      if (!symbol_index_.count(label))
+      if (!symbol_index_.count(label) && !symbol_index_.count(perception::graded_name(label, 0)))
         throw InputError(
             fmt::format("the observation model reports '{}' for '{}', which is not an observation "
                         "symbol of problem '{}' (symbols: {}); the model was trained for other "
                         "objects - plan on the problem `echoplan train --problem-out` wrote for it",
                         label, act.name, data.name, fmt::join(data.observation_symbols, ", ")));
-    for (const std::string& symbol : data.observation_symbols)
-      if (symbol != kUnknownSymbol && !contains(it->second, symbol))
+    for (const std::string& symbol : data.observation_symbols) {
+      if (symbol != kUnknownSymbol && !contains(it->second, class_of_symbol(symbol)))
         throw InputError(fmt::format(
             "problem '{}' expects to hear '{}' after '{}', but the observation model was "
             "not trained for it (its classes: {}); train it on recordings of the "
             "problem's objects",
             data.name, symbol, act.name, fmt::join(it->second, ", ")));
+      if (symbol != class_of_symbol(symbol) && !vocabulary->grades)
+        throw InputError(fmt::format(
+            "problem '{}' plans with graded observations ('{}'), but the observation model does "
+            "not grade what it hears (trained before grades existed): train it again, or plan "
+            "with `observations: labels`",
+            data.name, symbol));
+    }
   }
   if (vocabulary->may_report_unknown && !symbol_index_.count(kUnknownSymbol))
     throw InputError(fmt::format(
@@ -107,8 +126,12 @@ void RobotWorld::reset(const pomdp::State& true_state, Rng& rng) {
 
 std::optional<pomdp::Observation> RobotWorld::symbol_for(
     const robot::HeardObservation& heard) const {
-  const std::string& label = heard.unknown ? std::string(kUnknownSymbol) : heard.label;
-  const auto it = symbol_index_.find(label);
+  const std::string label = heard.unknown ? std::string(kUnknownSymbol) : heard.label;
+  // A graded problem hears `<label>@<grade>`; a problem of labels the label alone.
+  auto it = symbol_index_.end();
+  if (!heard.unknown && heard.grade >= 0 && heard.grade < perception::kGrades)
+    it = symbol_index_.find(perception::graded_name(label, heard.grade));
+  if (it == symbol_index_.end()) it = symbol_index_.find(label);
   if (it == symbol_index_.end()) return std::nullopt;
   pomdp::Observation o;
   o.index = it->second;

@@ -11,6 +11,7 @@
 #include "perception/calibration.h"
 #include "perception/dataset_folds.h"
 #include "perception/modality_fusion.h"
+#include "perception/observation_grades.h"
 #include "perception/observation_table.h"
 
 namespace echoplan::perception {
@@ -124,6 +125,41 @@ std::vector<Sequence> sequences_of(const ActionData& action, const TrainingRows&
   return sequences;
 }
 
+// One action's fused held-out decisions: the class each training row was heard as, the calibrated
+// probability of that class, and whether it was the row's own.
+struct Decisions {
+  std::vector<int> heard;
+  std::vector<double> confidence;
+  std::vector<bool> right;
+};
+
+// The grades and the graded table (observation_grades.h), tempered for repeats as the label table
+// is: each inner fold's graded sequences scored with the table of the other folds' decisions.
+void grade(ActionCalibration& calibration, ActionFit& fit, const ActionData& action,
+           const TrainingRows& t, const Decisions& d, const Table& shrunk,
+           const std::vector<Table>& cross_fitted) {
+  const int classes = static_cast<int>(shrunk.size());
+  calibration.grades = fit_grades(d.confidence, d.right);
+  const GradeCalibration& grades = *calibration.grades;
+  std::vector<Table> graded_cross_fitted;
+  for (std::size_t f = 0; f < cross_fitted.size(); ++f) {
+    std::vector<double> confidence;
+    std::vector<bool> right;
+    for (std::size_t i = 0; i < t.rows.size(); ++i)
+      if (t.fold[i] != static_cast<int>(f)) {
+        confidence.push_back(d.confidence[i]);
+        right.push_back(d.right[i]);
+      }
+    graded_cross_fitted.push_back(
+        graded_table(cross_fitted[f], fit_grades(confidence, right, grades.edges), classes));
+  }
+  std::vector<int> graded(t.rows.size());
+  for (std::size_t i = 0; i < t.rows.size(); ++i)
+    graded[i] = graded_symbol(d.heard[i], grade_of(grades, d.confidence[i]), classes);
+  fit.graded_temper = fit_temper(graded_cross_fitted, sequences_of(action, t, graded));
+  calibration.graded_table = temper(graded_table(shrunk, grades, classes), fit.graded_temper);
+}
+
 // [session] -> its inner fold, or -1 for sessions outside training.
 std::vector<int> inner_folds(const FeatureSet& set, const DatasetTask& task,
                              std::span<const int> training, int& num_folds) {
@@ -185,29 +221,35 @@ struct FeatureModelFitter {
     const ModalityScores scores =
         held_out_scores(classifier_name, action, t, num_classes, num_folds);
     const Fusion fusion = fit_fusion(scores, t.labels);
-    std::vector<int> decisions(t.rows.size());
+    Decisions d;
     std::vector<std::vector<double>> counts(task.classes.size(),
                                             std::vector<double>(task.classes.size(), 0.0));
     for (std::size_t i = 0; i < t.rows.size(); ++i) {
       std::vector<std::vector<double>> example(scores.size());
       for (std::size_t m = 0; m < scores.size(); ++m) example[m] = scores[m][i];
-      decisions[i] = best_of(fuse(example, fusion.weights));
-      counts[static_cast<std::size_t>(t.labels[i])][static_cast<std::size_t>(decisions[i])] += 1.0;
+      const std::vector<double> fused = fuse(example, fusion.weights);
+      d.heard.push_back(best_of(fused));
+      d.confidence.push_back(softmax(fused, 1.0)[static_cast<std::size_t>(d.heard.back())]);
+      d.right.push_back(d.heard.back() == t.labels[i]);
+      counts[static_cast<std::size_t>(t.labels[i])][static_cast<std::size_t>(d.heard.back())] +=
+          1.0;
     }
     ActionFit fit;
-    measure(fit, scores, t.labels, decisions);
+    measure(fit, scores, t.labels, d.heard);
     fit.fused_nll = fusion.mean_nll;
     const EstimatedTable shrunk =
         estimate_table(counts, task.classes, {TableEstimate::shrunk, 0.0, task.bin_of_class, {}});
     fit.shrinkage_strength = shrunk.strength;
-    fit.temper = fit_temper(cross_fitted_tables(t, decisions, task, num_folds, shrunk.strength),
-                            sequences_of(action, t, decisions));
+    const std::vector<Table> cross_fitted =
+        cross_fitted_tables(t, d.heard, task, num_folds, shrunk.strength);
+    fit.temper = fit_temper(cross_fitted, sequences_of(action, t, d.heard));
     ActionModel model;
     model.weights = fusion.weights;
     model.calibration.action = action.name;
     model.calibration.reject_threshold = std::numeric_limits<double>::infinity();
     model.calibration.confusion = confusion_of(task, counts);
     model.calibration.table = temper(shrunk.table, fit.temper);
+    grade(model.calibration, fit, action, t, d, shrunk.table, cross_fitted);
     model.calibration.fit = std::move(fit);
     for (const Modality& m : action.modalities)
       model.modalities.push_back({m.name, fit_on(classifier_name, m, t, num_classes, -1)});

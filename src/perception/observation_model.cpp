@@ -41,6 +41,41 @@ std::vector<std::string> ObservationModel::observation_symbols() const {
   return perception::observation_symbols(description_);
 }
 
+bool ObservationModel::graded() const {
+  return std::all_of(per_action_.begin(), per_action_.end(),
+                     [](const ActionModel& a) { return a.calibration.grades.has_value(); });
+}
+
+namespace {
+
+void require_grades(const ObservationModel& model) {
+  if (!model.graded())
+    throw InputError(
+        "the observation model has no graded observations (it was trained before they existed): "
+        "train it again, or plan with `observations: labels`");
+}
+
+}  // namespace
+
+std::vector<std::string> ObservationModel::observation_symbols(ObservationKind kind) const {
+  if (kind == ObservationKind::labels) return observation_symbols();
+  require_grades(*this);
+  return graded_symbols(classes(), reject());
+}
+
+int ObservationModel::symbol(const Prediction& heard, ObservationKind kind) const {
+  if (kind == ObservationKind::labels) return heard.symbol;
+  require_grades(*this);
+  return graded_symbol(heard.symbol, heard.grade, static_cast<int>(classes().size()));
+}
+
+const std::vector<std::vector<double>>& ObservationModel::observation_table(
+    const std::string& action, ObservationKind kind) const {
+  if (kind == ObservationKind::labels) return observation_table(action);
+  require_grades(*this);
+  return calibration(action).graded_table;
+}
+
 int ObservationModel::action_index(const std::string& action) const {
   const auto& actions = description_.actions;
   const auto it = std::find(actions.begin(), actions.end(), action);
@@ -91,6 +126,9 @@ Prediction ObservationModel::predict(int action, const std::vector<ClassScores>&
   p.unknown = description_.reject && p.distance > a.calibration.reject_threshold;
   p.symbol = p.unknown ? static_cast<int>(classes().size()) : p.best_class;
   p.label = p.unknown ? kUnknownSymbol : classes()[static_cast<std::size_t>(p.best_class)];
+  if (a.calibration.grades)
+    p.grade =
+        grade_of(*a.calibration.grades, p.probabilities[static_cast<std::size_t>(p.best_class)]);
   return p;
 }
 

@@ -24,6 +24,7 @@
 #include "perception/calibration.h"
 #include "perception/classifier.h"
 #include "perception/clip_analysis.h"
+#include "perception/observation_grades.h"
 #include "perception/observation_table.h"
 #include "perception/prediction.h"
 
@@ -53,6 +54,7 @@ struct ActionFit {
   double fused_nll = 0.0;                 // held-out mean NLL of the fused probabilities
   double shrinkage_strength = 0.0;        // empirical-Bayes prior count per table row
   double temper = 1.0;                    // beta: table rows are p^beta renormalised
+  double graded_temper = 1.0;             // the graded table's beta, fitted the same way
 };
 
 // Per action: what cross-validation measured and what the planner gets.
@@ -63,6 +65,10 @@ struct ActionCalibration {
   ConfusionMatrix confusion;               // cross-validated counts, objects x symbols
   std::vector<std::vector<double>> table;  // P(symbol | object), the model's table_estimate()
   std::optional<ActionFit> fit;            // models fitted on sessions
+  // Graded observations (observation_grades.h): the grades and P(graded symbol | object). Absent in
+  // a model file written before grades existed: such a model serves labels only.
+  std::optional<GradeCalibration> grades;
+  std::vector<std::vector<double>> graded_table;
 };
 
 // One sensor's part of an action: its name ("audio", "haptic", ...) and its fitted classifier.
@@ -100,6 +106,13 @@ class ObservationModel {
   TableEstimate table_estimate() const { return description_.table_estimate; }
   // classes() followed by "unknown" when reject() is on.
   std::vector<std::string> observation_symbols() const;
+  // Every action has graded observations (a model trained since they exist).
+  bool graded() const;
+  // The symbols of `kind`: observation_symbols(), or graded_symbols(). InputError for graded when
+  // the model has no grades.
+  std::vector<std::string> observation_symbols(ObservationKind kind) const;
+  // The index of what `heard` says among observation_symbols(kind).
+  int symbol(const Prediction& heard, ObservationKind kind) const;
   // Calibration of `action`; throws InputError listing the actions for an unknown one.
   const ActionCalibration& calibration(const std::string& action) const;
   // The modalities of `action` (InputError for an unknown one, as calibration()).
@@ -112,6 +125,9 @@ class ObservationModel {
   int action_index(const std::string& action) const;
   // P(symbol | object, action): classes().size() x observation_symbols().size().
   const std::vector<std::vector<double>>& observation_table(const std::string& action) const;
+  // The same for `kind` (InputError for graded when the model has no grades).
+  const std::vector<std::vector<double>>& observation_table(const std::string& action,
+                                                            ObservationKind kind) const;
 
   // Classifies a clip recorded with `action`, already analysed with analysis() (a ClipAnalyzer
   // per thread; the model itself is read-only, so threads may share it). InputError when a

@@ -39,9 +39,13 @@ nlohmann::json analysis_json(const AnalysisSettings& analysis) {
 }  // namespace
 
 nlohmann::json fit_json(const ActionFit& fit) {
-  return {{"modality_accuracy", fit.modality_accuracy},   {"modality_nll", fit.modality_nll},
-          {"fused_accuracy", fit.fused_accuracy},         {"fused_nll", fit.fused_nll},
-          {"shrinkage_strength", fit.shrinkage_strength}, {"temper", fit.temper}};
+  return {{"modality_accuracy", fit.modality_accuracy},
+          {"modality_nll", fit.modality_nll},
+          {"fused_accuracy", fit.fused_accuracy},
+          {"fused_nll", fit.fused_nll},
+          {"shrinkage_strength", fit.shrinkage_strength},
+          {"temper", fit.temper},
+          {"graded_temper", fit.graded_temper}};
 }
 
 nlohmann::json modalities_json(const std::vector<ModalityModel>& modalities) {
@@ -70,6 +74,11 @@ nlohmann::json observation_model_to_json(const ObservationModel& model) {
         {"table", c.table},
     };
     if (c.fit) per_action[action]["fit"] = fit_json(*c.fit);
+    if (c.grades)
+      per_action[action]["grades"] = {{"edges", c.grades->edges},
+                                      {"given_right", c.grades->given_right},
+                                      {"given_wrong", c.grades->given_wrong},
+                                      {"table", c.graded_table}};
   }
   return {{"format", kFormatName},
           {"version", kModelFormatVersion},
@@ -273,6 +282,8 @@ std::optional<ActionFit> read_fit_report(const ActionEntry& e, std::size_t modal
   fit.fused_nll = number("fused_nll");
   fit.shrinkage_strength = number("shrinkage_strength");
   fit.temper = number("temper");
+  // Absent in files written before graded observations.
+  if (j.contains("graded_temper")) fit.graded_temper = number("graded_temper");
   return fit;
 }
 
@@ -303,7 +314,7 @@ ConfusionMatrix read_confusion(const ActionEntry& e, const ModelDescription& d,
   return confusion;
 }
 
-// The observation table: one probability row per class, each summing to 1.
+// The observation table `e.json`.table: one probability row per class, each summing to 1.
 std::vector<std::vector<double>> read_table(const ActionEntry& e, std::size_t rows,
                                             std::size_t cols) {
   const auto table =
@@ -327,6 +338,38 @@ std::vector<std::vector<double>> read_table(const ActionEntry& e, std::size_t ro
     out.push_back(std::move(row));
   }
   return out;
+}
+
+// A probability distribution over the grades at `where`.
+std::vector<double> read_grade_distribution(const ActionEntry& e, const char* key) {
+  const std::string where = e.where + "." + key;
+  std::vector<double> p =
+      jf::numbers(jf::member(e.json, key, e.where, e.source), kGrades, where, e.source);
+  double sum = 0.0;
+  for (double x : p) {
+    if (!(x >= 0.0 && x <= 1.0))
+      throw InputError(e.source, 0, where + ": probabilities must be in [0, 1]");
+    sum += x;
+  }
+  if (std::abs(sum - 1.0) > 1e-6)
+    throw InputError(e.source, 0, fmt::format("{}: probabilities sum to {}, not 1", where, sum));
+  return p;
+}
+
+// The optional `grades` entry (observation_grades.h): absent in files written before them.
+void read_grades(const ActionEntry& action, const ModelDescription& d, ActionCalibration& c) {
+  if (!action.json.contains("grades")) return;
+  const std::string where = action.where + ".grades";
+  const ActionEntry e{action.json["grades"], where, action.source};
+  GradeCalibration grades;
+  grades.edges = jf::numbers(jf::member(e.json, "edges", where, e.source), kGrades - 1,
+                             where + ".edges", e.source);
+  if (!std::is_sorted(grades.edges.begin(), grades.edges.end()))
+    throw InputError(e.source, 0, where + ".edges: must be ascending");
+  grades.given_right = read_grade_distribution(e, "given_right");
+  grades.given_wrong = read_grade_distribution(e, "given_wrong");
+  c.graded_table = read_table(e, d.classes.size(), graded_symbols(d.classes, d.reject).size());
+  c.grades = std::move(grades);
 }
 
 ActionModel read_action(const ActionEntry& e, const std::string& action, const ModelDescription& d,
@@ -353,6 +396,7 @@ ActionModel read_action(const ActionEntry& e, const std::string& action, const M
   a.calibration.confusion = read_confusion(e, d, symbols);
   a.calibration.table = read_table(e, d.classes.size(), symbols.size());
   a.calibration.fit = read_fit_report(e, a.modalities.size());
+  read_grades(e, d, a.calibration);
   return a;
 }
 

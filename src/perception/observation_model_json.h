@@ -11,7 +11,10 @@
 //         "weights": [one per modality], "temperature", "reject_threshold" (null without reject),
 //         "symbols": [...], "confusion": [[counts]], "table": [[P(o|k)]],
 //         "fit": {modality_accuracy, modality_nll, fused_accuracy, fused_nll,
-//                 shrinkage_strength, temper} (models fitted on sessions only) } } }
+//                 shrinkage_strength, temper, graded_temper} (models fitted on sessions only),
+//         "grades": {"edges": [2 ascending confidences], "given_right": [3], "given_wrong": [3],
+//                    "table": [[P(graded symbol|k)]]} (observation_grades.h) } } }
+// A file without "grades" (written before graded observations existed) loads and serves labels.
 // Version 1 files (one audio classifier per action: per_action.<action>.classifier, no modalities
 // or weights; table_estimate absent before it existed: counts) still load, as one "audio" modality
 // of weight 1.

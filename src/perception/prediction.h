@@ -14,6 +14,9 @@ struct Prediction {
   std::string label;     // the symbol's name: a class name or "unknown"
   bool unknown = false;  // the clip is further from every class than the reject threshold
   int best_class = 0;    // index of the most probable class, even when the clip is rejected
+  // The confidence grade of the heard class (observation_grades.h: 0 = low), or -1 when the model
+  // has no grades.
+  int grade = -1;
   // Calibrated P(class | clip) over the model's classes (classes() order, sums to 1), assuming the
   // clip is one of them and all were equally likely before it was heard. Soft observations use
   // these.

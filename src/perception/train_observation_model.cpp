@@ -144,6 +144,22 @@ double reject_threshold(const HeldOut& held, std::span<const int> labels,
   return options.reject_margin * (largest_correct > 0.0 ? largest_correct : largest);
 }
 
+// The action's grades from its held-out decisions that were not rejected: the calibrated
+// probability of the class each was heard as, and whether it was right; then the graded table.
+void grade(ActionCalibration& c, const HeldOut& held, std::span<const int> labels,
+           const std::vector<bool>& rejected, int num_classes) {
+  std::vector<double> confidence;
+  std::vector<bool> right;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (rejected[i]) continue;
+    const auto best = static_cast<std::size_t>(held.best[i]);
+    confidence.push_back(softmax(held.log_scores[i], c.temperature)[best]);
+    right.push_back(held.best[i] == labels[i]);
+  }
+  c.grades = fit_grades(confidence, right);
+  c.graded_table = graded_table(c.table, *c.grades, num_classes);
+}
+
 // Temperature, reject threshold, confusion and table of one action from its held-out scores.
 ActionCalibration calibrate(const HeldOut& held, std::span<const int> labels,
                             const ModelDescription& model, const TrainOptions& options,
@@ -172,6 +188,7 @@ ActionCalibration calibrate(const HeldOut& held, std::span<const int> labels,
   else
     for (const auto& row : c.confusion.counts) counts.emplace_back(row.begin(), row.end());
   c.table = estimate_table(counts, model.classes, {options.table, options.dirichlet_alpha}).table;
+  grade(c, held, labels, rejected, num_classes);
   return c;
 }
 

@@ -20,6 +20,7 @@ std::optional<ServiceVocabulary> ClassifierService::vocabulary() const {
   ServiceVocabulary v;
   for (const std::string& action : model_->actions()) v.labels[action] = model_->classes();
   v.may_report_unknown = model_->reject();
+  v.grades = model_->graded();
   return v;
 }
 
@@ -39,6 +40,7 @@ HeardObservation ClassifierService::heard(const perception::Prediction& p) const
   h.label = p.label;
   h.unknown = p.unknown;
   h.probability = p.probabilities.at(static_cast<std::size_t>(p.best_class));
+  h.grade = p.grade;
   const auto& classes = model_->classes();
   for (std::size_t k = 0; k < classes.size(); ++k)
     h.probabilities.emplace_back(classes[k], p.probabilities[k]);

@@ -17,6 +17,9 @@ struct HeardObservation {
   std::string label;
   bool unknown = false;
   double probability = 0;  // calibrated probability of `label` (when unknown: of the nearest class)
+  // The confidence grade of `label` (perception/observation_grades.h: 0 = low), or -1 when the
+  // service does not grade: what a graded problem's symbol `<label>@<grade>` is made of.
+  int grade = -1;
   std::vector<std::pair<std::string, double>> probabilities;  // per class, calibrated, sums to 1
   double distance = 0;  // the classifier's distance to the chosen class (for the reject option)
   // A few named numbers that describe the clip as the service analysed it (onset, level, ...), for
@@ -30,6 +33,7 @@ struct ServiceVocabulary {
   // Per action it has a model for: the class names it reports.
   std::map<std::string, std::vector<std::string>> labels;
   bool may_report_unknown = false;  // the reject option is on
+  bool grades = false;              // it grades what it hears (HeardObservation::grade)
 };
 
 class ObservationService {

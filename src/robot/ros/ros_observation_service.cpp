@@ -51,6 +51,7 @@ HeardObservation RosObservationService::observe(const audio::AudioClip& clip,
   heard.label = r.label;
   heard.unknown = r.unknown;
   heard.probability = r.probability;
+  heard.grade = r.grade;
   heard.distance = r.distance;
   for (std::size_t i = 0; i < r.classes.size(); ++i)
     heard.probabilities.emplace_back(r.classes[i], r.probabilities[i]);

@@ -1,0 +1,121 @@
+#include "perception/observation_grades.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "common/error.h"
+
+namespace echoplan::perception {
+
+const char* observation_kind_name(ObservationKind kind) {
+  return kind == ObservationKind::graded ? "graded" : "labels";
+}
+
+const std::vector<std::string>& observation_kind_names() {
+  static const std::vector<std::string> names{"labels", "graded"};
+  return names;
+}
+
+ObservationKind parse_observation_kind(const std::string& name) {
+  if (name == "labels") return ObservationKind::labels;
+  if (name == "graded") return ObservationKind::graded;
+  throw InputError(fmt::format("observations '{}' is not one of: {}", name,
+                               fmt::join(observation_kind_names(), ", ")));
+}
+
+int grade_of(const GradeCalibration& grades, double confidence) {
+  int grade = 0;
+  while (grade < static_cast<int>(grades.edges.size()) &&
+         confidence >= grades.edges[static_cast<std::size_t>(grade)])
+    ++grade;
+  return grade;
+}
+
+namespace {
+
+// The terciles of the confidences (kGrades - 1 edges), so each grade holds about a third of the
+// decisions; 1/3 and 2/3 without decisions.
+std::vector<double> quantile_edges(std::span<const double> confidence) {
+  std::vector<double> edges;
+  std::vector<double> sorted(confidence.begin(), confidence.end());
+  std::sort(sorted.begin(), sorted.end());
+  for (int g = 1; g < kGrades; ++g) {
+    if (sorted.empty()) {
+      edges.push_back(static_cast<double>(g) / kGrades);
+      continue;
+    }
+    const auto at = static_cast<std::size_t>(g) * sorted.size() / kGrades;
+    edges.push_back(sorted[std::min(at, sorted.size() - 1)]);
+  }
+  return edges;
+}
+
+// (counts + 1) / (n + kGrades): one pseudo-count per grade, so no grade rules a class out.
+std::vector<double> smoothed(const std::vector<double>& counts) {
+  double total = 0.0;
+  for (double c : counts) total += c;
+  std::vector<double> p;
+  for (double c : counts) p.push_back((c + 1.0) / (total + kGrades));
+  return p;
+}
+
+}  // namespace
+
+GradeCalibration fit_grades(std::span<const double> confidence, const std::vector<bool>& right) {
+  return fit_grades(confidence, right, quantile_edges(confidence));
+}
+
+GradeCalibration fit_grades(std::span<const double> confidence, const std::vector<bool>& right,
+                            std::vector<double> edges) {
+  if (confidence.size() != right.size())
+    throw std::invalid_argument("fit_grades: one rightness flag per confidence");
+  GradeCalibration grades;
+  grades.edges = std::move(edges);
+  std::vector<double> right_counts(kGrades, 0.0), wrong_counts(kGrades, 0.0);
+  for (std::size_t i = 0; i < confidence.size(); ++i)
+    (right[i] ? right_counts
+              : wrong_counts)[static_cast<std::size_t>(grade_of(grades, confidence[i]))] += 1.0;
+  grades.given_right = smoothed(right_counts);
+  grades.given_wrong = smoothed(wrong_counts);
+  return grades;
+}
+
+std::vector<std::vector<double>> graded_table(const std::vector<std::vector<double>>& labels,
+                                              const GradeCalibration& grades, int num_classes) {
+  std::vector<std::vector<double>> table;
+  for (std::size_t c = 0; c < labels.size(); ++c) {
+    std::vector<double> row;
+    for (int h = 0; h < num_classes; ++h) {
+      const std::vector<double>& given =
+          static_cast<std::size_t>(h) == c ? grades.given_right : grades.given_wrong;
+      for (int g = 0; g < kGrades; ++g)
+        row.push_back(labels[c][static_cast<std::size_t>(h)] * given[static_cast<std::size_t>(g)]);
+    }
+    // `unknown`, when the model rejects, stays one symbol.
+    for (std::size_t s = static_cast<std::size_t>(num_classes); s < labels[c].size(); ++s)
+      row.push_back(labels[c][s]);
+    table.push_back(std::move(row));
+  }
+  return table;
+}
+
+std::vector<std::string> graded_symbols(const std::vector<std::string>& classes, bool reject) {
+  std::vector<std::string> symbols;
+  for (const std::string& c : classes)
+    for (int g = 0; g < kGrades; ++g) symbols.push_back(graded_name(c, g));
+  if (reject) symbols.emplace_back("unknown");
+  return symbols;
+}
+
+int graded_symbol(int symbol, int grade, int num_classes) {
+  return symbol >= num_classes ? num_classes * kGrades : symbol * kGrades + grade;
+}
+
+std::string graded_name(const std::string& label, int grade) {
+  return label + "@" + kGradeNames.at(static_cast<std::size_t>(grade));
+}
+
+}  // namespace echoplan::perception
