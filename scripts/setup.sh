@@ -139,7 +139,9 @@ case "$mode" in
     # The sanitizer build leaves the Python module out: an ASan extension only loads into a python3
     # started with libasan preloaded (cmake/EchoplanPython.cmake).
     echo "setup: sanitizer build (ASan + UBSan; without the Python module)"
-    build "$san_build_dir" -DECHOPLAN_SANITIZE=ON -DECHOPLAN_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug
+    # -O1: ASan's documented setting for speed (the suite ran 10x slower at -O0); Debug keeps asserts.
+    build "$san_build_dir" -DECHOPLAN_SANITIZE=ON -DECHOPLAN_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug \
+      -DCMAKE_CXX_FLAGS_DEBUG="-g -O1"
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
       ctest --test-dir "$san_build_dir" -j"$jobs" --output-on-failure
     echo "setup: thread sanitizer build (${tsan_targets[*]}: the tests that start threads)"

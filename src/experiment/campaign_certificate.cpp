@@ -155,11 +155,13 @@ nlohmann::ordered_json campaign_certificate_json(const std::vector<ArmCertificat
 }
 
 std::string campaign_certificate_text(const std::vector<ArmCertificate>& certificates) {
-  std::string out = fmt::format("{:>6}  {:<20}{:>8}{:>22}{:>24}  {}\n", "fold", "arm", "trials",
-                                "V*(b0)", "regret (95% CI)", "certified share of V*");
+  std::size_t width = 20;  // the arm column fits the longest name
+  for (const ArmCertificate& a : certificates) width = std::max(width, a.arm.size() + 2);
+  std::string out = fmt::format("{:>6}  {:<{}}{:>8}{:>22}{:>24}  {}\n", "fold", "arm", width,
+                                "trials", "V*(b0)", "regret (95% CI)", "certified share of V*");
   for (const ArmCertificate& a : certificates) {
     const Certificate& c = a.certificate;
-    out += fmt::format("{:>6}  {:<20}{:>8}{:>22}{:>24}  ", a.fold, a.arm, c.regret.n,
+    out += fmt::format("{:>6}  {:<{}}{:>8}{:>22}{:>24}  ", a.fold, a.arm, width, c.regret.n,
                        fmt::format("[{:.4f}, {:.4f}]", c.vstar.lower, c.vstar.upper),
                        fmt::format("{:.4f} ± {:.4f}", c.regret.mean, c.regret.half_width));
     out += tight(c) ? fmt::format("{:.2f}% ({:.2f}% to {:.2f}%)\n", 100.0 * share(c, c.regret.mean),

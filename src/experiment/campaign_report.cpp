@@ -9,6 +9,7 @@
 
 #include "experiment/campaign_runner.h"
 #include "experiment/trial_log.h"
+#include "perception/observation_model.h"
 #include "pomdp/object_identification_model.h"
 
 namespace echoplan::experiment {
@@ -114,6 +115,25 @@ std::vector<SummaryRow> summary_rows(const CampaignResults& results) {
   return rows;
 }
 
+std::vector<std::string> observation_names(const CampaignResults& results, const std::string& arm) {
+  const std::vector<std::string>& names = results.spec.observation.names;
+  const auto it = std::find_if(results.config.arms.begin(), results.config.arms.end(),
+                               [&](const CampaignArm& a) { return a.name == arm; });
+  if (it == results.config.arms.end() ||
+      it->observation_kind() != perception::ObservationKind::graded)
+    return names;
+  std::vector<std::string> graded;
+  for (const std::string& name : names) {
+    if (name == "none" || name == perception::kUnknownSymbol) {
+      graded.push_back(name);
+      continue;
+    }
+    for (int g = 0; g < perception::kGrades; ++g)
+      graded.push_back(perception::graded_name(name, g));
+  }
+  return graded;
+}
+
 std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
   const auto& symbols = results.spec.observation.names;
   std::vector<std::string> classes;
@@ -121,6 +141,9 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
     if (s != "none") classes.push_back(s);
   std::vector<ConfusionCounts> all;
   for (const CampaignArm& arm : results.config.arms) {
+    // A graded arm's symbol o is class o / kGrades (its grades are counted together).
+    const int per_class =
+        arm.observation_kind() == perception::ObservationKind::graded ? perception::kGrades : 1;
     // Sensing actions: those that were ever followed by a heard class in this campaign, in action
     // order.
     for (std::size_t a = 0; a < results.spec.action_names.size(); ++a) {
@@ -136,7 +159,7 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
         const std::size_t row = std::find(c.rows.begin(), c.rows.end(), e.object) - c.rows.begin();
         if (row >= c.rows.size()) continue;
         for (const StepRecord& s : e.result.steps) {
-          const int o = s.observation.index;
+          const int o = s.observation.index / per_class;
           if (s.action != static_cast<int>(a) || o < 0 || o >= static_cast<int>(classes.size()))
             continue;
           ++c.counts[row][o];
@@ -164,7 +187,9 @@ namespace {
 void write_arm_tables(const fs::path& directory, const CampaignResults& results,
                       const std::function<bool(const JournalEntry&)>& keep) {
   for (const CampaignArm& arm : results.config.arms) {
-    TrialLog per_arm(directory / "arms" / arm.name, results.spec, results.belief_particles,
+    pomdp::ModelSpec spec = results.spec;
+    spec.observation.names = observation_names(results, arm.name);
+    TrialLog per_arm(directory / "arms" / arm.name, spec, results.belief_particles,
                      {"object", "session"}, {"seed"});
     for (const JournalEntry& e : results.entries)
       if (e.arm == arm.name && keep(e))
@@ -178,9 +203,12 @@ void write_arm_tables(const fs::path& directory, const CampaignResults& results,
 void write_tables(const fs::path& directory, const CampaignResults& results) {
   TrialLog all(directory, results.spec, results.belief_particles, {"arm", "object", "session"},
                {"seed"});
+  std::map<std::string, std::vector<std::string>> names;  // per arm
+  for (const CampaignArm& arm : results.config.arms)
+    names[arm.name] = observation_names(results, arm.name);
   for (const JournalEntry& e : results.entries)
     all.write_trial(e.result.record, e.result.steps, {e.arm, e.object, e.session},
-                    {trial_seed(results.config, e.object)});
+                    {trial_seed(results.config, e.object)}, &names.at(e.arm));
   write_arm_tables(directory, results, [](const JournalEntry&) { return true; });
   std::set<std::string> folds;
   for (const auto& [session, fold] : results.fold_of_session) folds.insert(fold);
@@ -288,11 +316,13 @@ namespace {
 
 // How an arm decides, for the summary's heading.
 std::string arm_text(const CampaignResults& results, const CampaignArm& arm) {
-  const std::string problem =
+  std::string problem =
       !results.world.arm_problem.empty()
           ? results.world.arm_problem
           : (arm.calibrate ? arm.problem + ", its observation table calibrated on the training set"
                            : arm.problem);
+  if (arm.observation_kind() == perception::ObservationKind::graded)
+    problem += ", hearing graded observations (the class and how sure the classifier was)";
   if (arm.strategy == kPlanStrategy) return "plans with " + problem;
   return fmt::format("fixed strategy {} with {}", arm.strategy, problem);
 }

@@ -108,6 +108,11 @@ struct ConfusionCounts {
 };
 std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results);
 
+// The names of the observations the steps of arm `arm` hold: the world's (results.spec), or for an
+// arm that hears graded observations each class's graded symbols in its place ("mug" becomes
+// "mug@low", "mug@mid", "mug@high"; `unknown` and `none` stay), in the problems' order.
+std::vector<std::string> observation_names(const CampaignResults& results, const std::string& arm);
+
 // How sure each arm was when it sorted (sort_confidence.h), in the configuration's arm order.
 std::vector<ArmConfidence> arm_confidence(const CampaignResults& results);
 

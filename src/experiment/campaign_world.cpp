@@ -265,9 +265,9 @@ ArmLoops ProblemFileWorld::make_loops(const CampaignConfig& config) const {
     for (const ObjectGroup& group : config.groups) {
       loop::LoopSettings s;
       s.problem = arm_problems_[a];
-      s.world_problem =
-          config.arms[a].observation_kind() == perception::ObservationKind::graded ? graded_world
-                                                                                    : world_problem_;
+      s.world_problem = config.arms[a].observation_kind() == perception::ObservationKind::graded
+                            ? graded_world
+                            : world_problem_;
       if (simulates_) {
         s.world = loop::SimulatedWorldSpec{catalogue_, sim_config_};
         s.classifier = model_;

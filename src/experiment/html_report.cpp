@@ -211,7 +211,8 @@ std::string trials_table(const CampaignResults& results) {
 
 // One decision's row: the belief before it (particles or probabilities), the action, what was
 // heard and its probability.
-std::string step_row(const CampaignResults& results, int trial, const StepRecord& s) {
+std::string step_row(const CampaignResults& results, const std::vector<std::string>& observations,
+                     int trial, const StepRecord& s) {
   const auto& spec = results.spec;
   std::string h = fmt::format("<tr><td>{}</td><td>{}</td>", trial, s.step);
   for (double p : s.belief)
@@ -219,9 +220,8 @@ std::string step_row(const CampaignResults& results, int trial, const StepRecord
              ? fmt::format("<td>{}</td>", std::llround(p * results.belief_particles))
              : fmt::format("<td>{:.3f}</td>", p);
   const std::string heard =
-      s.observation.index >= 0 &&
-              s.observation.index < static_cast<int>(spec.observation.names.size())
-          ? spec.observation.names[s.observation.index]
+      s.observation.index >= 0 && s.observation.index < static_cast<int>(observations.size())
+          ? observations[static_cast<std::size_t>(s.observation.index)]
           : std::string();
   return h + fmt::format(
                  "<td class=\"l\">{}</td><td class=\"l\">{}</td><td>{}</td></tr>\n",
@@ -238,8 +238,10 @@ std::string steps_table(const CampaignResults& results) {
   for (const auto& o : results.spec.state.discrete_value_names.at(0))
     h += "<th>" + escape(o) + (particles ? " particles" : " p") + "</th>";
   h += "<th class=\"l\">action</th><th class=\"l\">heard</th><th>heard p</th></tr>\n";
-  for (const JournalEntry& e : results.entries)
-    for (const StepRecord& s : e.result.steps) h += step_row(results, e.id, s);
+  for (const JournalEntry& e : results.entries) {
+    const std::vector<std::string> observations = observation_names(results, e.arm);
+    for (const StepRecord& s : e.result.steps) h += step_row(results, observations, e.id, s);
+  }
   return h + "</table>\n</details>\n";
 }
 

@@ -157,9 +157,9 @@ std::string TrialLog::state_name(int value) const {
   return std::to_string(value);
 }
 
-std::string TrialLog::observation_text(const pomdp::Observation& observation) const {
+std::string TrialLog::observation_text(const pomdp::Observation& observation,
+                                       const std::vector<std::string>& names) const {
   if (observation.index >= 0) {
-    const auto& names = spec_.observation.names;
     if (observation.index < static_cast<int>(names.size()))
       return csv_field(names[observation.index]);
     return std::to_string(observation.index);
@@ -177,7 +177,8 @@ void TrialLog::trial_finished(const TrialRecord& trial, const std::vector<StepRe
 
 void TrialLog::write_trial(const TrialRecord& trial, const std::vector<StepRecord>& steps,
                            const std::vector<std::string>& extra_values,
-                           const std::vector<std::string>& trial_values) {
+                           const std::vector<std::string>& trial_values,
+                           const std::vector<std::string>* observation_names) {
   if (extra_values.size() != extra_columns_.size() || trial_values.size() != trial_columns_.size())
     throw std::invalid_argument("TrialLog::write_trial: one value per extra column expected");
   std::string extras, trial_extras;
@@ -185,7 +186,8 @@ void TrialLog::write_trial(const TrialRecord& trial, const std::vector<StepRecor
   for (const auto& value : trial_values) trial_extras += ',' + csv_field(value);
   for (const StepRecord& s : steps) {
     steps_ << s.trial << ',' << s.step << ',' << csv_field(spec_.action_names[s.action]) << ','
-           << observation_text(s.observation);
+           << observation_text(s.observation,
+                               observation_names ? *observation_names : spec_.observation.names);
     for (double p : s.belief) {
       if (belief_particles_ > 0)
         steps_ << ',' << std::llround(p * belief_particles_);

@@ -43,9 +43,12 @@ class TrialLog final {
   void trial_finished(const TrialRecord& trial, const std::vector<StepRecord>& steps);
   // As trial_finished, with one value per extra column, repeated on the trial's row and each
   // step's, and one per trial column, on the trial's row.
+  // `observation_names`, when given, names the trial's observations instead of the spec's (a
+  // campaign arm that hears other symbols than the others, e.g. graded ones).
   void write_trial(const TrialRecord& trial, const std::vector<StepRecord>& steps,
                    const std::vector<std::string>& extra_values,
-                   const std::vector<std::string>& trial_values = {});
+                   const std::vector<std::string>& trial_values = {},
+                   const std::vector<std::string>* observation_names = nullptr);
 
   // Writes summary.json: the summary's fields plus everything in `run` (problem, solver, seed,
   // ...).
@@ -53,7 +56,8 @@ class TrialLog final {
 
  private:
   std::string state_name(int value) const;
-  std::string observation_text(const pomdp::Observation& observation) const;
+  std::string observation_text(const pomdp::Observation& observation,
+                               const std::vector<std::string>& names) const;
 
   std::filesystem::path directory_;
   pomdp::ModelSpec spec_;
