@@ -29,9 +29,9 @@ TEST(CampaignCertificate, StatesTheShareOnlyWhereTheBoundsAreTight) {
   // share 1 - 0.5 / 10 = 0.95, CI 1 - 0.7 / 10 to 1 - 0.3 / 10.
   // Fold 2: V* in [9, 11]: a gap of 2 is 20% of V*, too loose; the share lies between the bounds'
   // ends, 1 - 0.5 / 10 and 1 - 0.1 / 10.
-  const nlohmann::ordered_json j =
-      campaign_certificate_json({{"1", "plan", certificate(9.99, 10.01, 0.5, 0.45, 0.05)},
-                                 {"2", "plan", certificate(9.0, 11.0, 0.5, 0.1, 0.4)}});
+  const nlohmann::ordered_json j = campaign_certificate_json(
+      {{"1", "plan", "folds/1/problem.yaml", certificate(9.99, 10.01, 0.5, 0.45, 0.05)},
+       {"2", "plan", "folds/2/problem.yaml", certificate(9.0, 11.0, 0.5, 0.1, 0.4)}});
   EXPECT_EQ(j["tight_within"], 0.01);
   ASSERT_EQ(j["folds"].size(), 2u);
   const auto& tight = j["folds"][0];
@@ -51,9 +51,9 @@ TEST(CampaignCertificate, StatesTheShareOnlyWhereTheBoundsAreTight) {
   EXPECT_NEAR(loose["share_range"][0].get<double>(), 0.95, 1e-12);
   EXPECT_NEAR(loose["share_range"][1].get<double>(), 0.99, 1e-12);
   // The text says the same.
-  const std::string text =
-      campaign_certificate_text({{"1", "plan", certificate(9.99, 10.01, 0.5, 0.45, 0.05)},
-                                 {"2", "plan", certificate(9.0, 11.0, 0.5, 0.1, 0.4)}});
+  const std::string text = campaign_certificate_text(
+      {{"1", "plan", "folds/1/problem.yaml", certificate(9.99, 10.01, 0.5, 0.45, 0.05)},
+       {"2", "plan", "folds/2/problem.yaml", certificate(9.0, 11.0, 0.5, 0.1, 0.4)}});
   EXPECT_NE(text.find("95.00% (93.00% to 97.00%)"), std::string::npos) << text;
   EXPECT_NE(text.find("bounds too loose to say (20.00% of V*): 95.00% to 99.00%"),
             std::string::npos)
