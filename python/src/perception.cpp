@@ -101,6 +101,9 @@ void bind_prediction(py::module_& m) {
       .def_readonly("label", &Prediction::label, "A class name or 'unknown'.")
       .def_readonly("unknown", &Prediction::unknown)
       .def_readonly("best_class", &Prediction::best_class)
+      .def_readonly("grade", &Prediction::grade,
+                    "The confidence grade of the heard class (0 low, 1 mid, 2 high), -1 without "
+                    "grades.")
       .def_property_readonly(
           "probabilities", [](const Prediction& p) { return to_array(p.probabilities); },
           "Calibrated P(class), in the model's class order.")
@@ -153,7 +156,16 @@ void bind_model(py::module_& m) {
       "set); load_observation_model(path); save(path).")
       .def_property_readonly("classes", &ObservationModel::classes)
       .def_property_readonly("actions", &ObservationModel::actions)
-      .def_property_readonly("observation_symbols", &ObservationModel::observation_symbols)
+      .def_property_readonly("observation_symbols",
+                             [](const ObservationModel& x) { return x.observation_symbols(); })
+      .def_property_readonly("graded", &ObservationModel::graded,
+                             "Every action has graded observations (class@low/mid/high).")
+      .def_property_readonly(
+          "graded_symbols",
+          [](const ObservationModel& x) {
+            return x.observation_symbols(perception::ObservationKind::graded);
+          },
+          "The graded observation symbols ('mug@low', ...), the alphabet of a graded problem.")
       .def_property_readonly("classifier_name", &ObservationModel::classifier_name)
       .def_property_readonly("reject", &ObservationModel::reject)
       .def(
@@ -170,8 +182,10 @@ void bind_model(py::module_& m) {
           py::arg("action"), "The fusion weight of each modality.")
       .def(
           "table",
-          [](const ObservationModel& x, const std::string& action) {
-            const auto& t = x.observation_table(action);
+          [](const ObservationModel& x, const std::string& action, bool graded) {
+            const auto& t =
+                x.observation_table(action, graded ? perception::ObservationKind::graded
+                                                   : perception::ObservationKind::labels);
             py::array_t<double> out(
                 {py::ssize_t(t.size()), py::ssize_t(t.empty() ? 0 : t[0].size())});
             auto o = out.mutable_unchecked<2>();
@@ -179,7 +193,9 @@ void bind_model(py::module_& m) {
               for (std::size_t s = 0; s < t[k].size(); ++s) o(k, s) = t[k][s];
             return out;
           },
-          py::arg("action"), "P(symbol | class) for `action`: classes x observation symbols.")
+          py::arg("action"), py::arg("graded") = false,
+          "P(symbol | class) for `action`: classes x observation symbols (graded: x graded "
+          "symbols).")
       .def("classify", &classify_clip, py::arg("clip"), py::arg("action"),
            py::arg("sample_rate") = 44100,
            "Classifies a clip (AudioClip, or a numpy array with its sample_rate) recorded with "

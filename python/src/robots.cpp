@@ -108,7 +108,7 @@ class PythonService : public robot::ObservationService {
     if (v.is_none()) return std::nullopt;
     if (py::isinstance<py::dict>(v))
       return robot::ServiceVocabulary{v.cast<std::map<std::string, std::vector<std::string>>>(),
-                                      false};
+                                      false, false};
     return v.cast<robot::ServiceVocabulary>();
   }
   HeardObservation observe(const audio::AudioClip& clip, const std::string& action) override {
@@ -199,31 +199,36 @@ void bind_values(py::module_& m) {
                                "What a service heard: a class label (or 'unknown'), its "
                                "calibrated probability, the probability of every class.")
       .def(py::init([](const std::string& label, double p,
-                       std::vector<std::pair<std::string, double>> probabilities, bool unknown) {
+                       std::vector<std::pair<std::string, double>> probabilities, bool unknown,
+                       int grade) {
              HeardObservation h;
              h.label = label;
              h.probability = p;
              h.probabilities = std::move(probabilities);
              h.unknown = unknown;
+             h.grade = grade;
              return h;
            }),
            py::arg("label"), py::arg("probability") = 1.0,
            py::arg("probabilities") = std::vector<std::pair<std::string, double>>{},
-           py::arg("unknown") = false)
+           py::arg("unknown") = false, py::arg("grade") = -1)
       .def_readonly("label", &HeardObservation::label)
       .def_readonly("unknown", &HeardObservation::unknown)
       .def_readonly("probability", &HeardObservation::probability)
+      .def_readonly("grade", &HeardObservation::grade)
       .def_readonly("probabilities", &HeardObservation::probabilities)
       .def_readonly("distance", &HeardObservation::distance)
       .def_readonly("features", &HeardObservation::features);
   py::class_<robot::ServiceVocabulary>(m, "ServiceVocabulary",
                                        "What a service can report: per action its labels.")
-      .def(py::init([](std::map<std::string, std::vector<std::string>> labels, bool unknown) {
-             return robot::ServiceVocabulary{std::move(labels), unknown};
+      .def(py::init([](std::map<std::string, std::vector<std::string>> labels, bool unknown,
+                       bool grades) {
+             return robot::ServiceVocabulary{std::move(labels), unknown, grades};
            }),
-           py::arg("labels"), py::arg("may_report_unknown") = false)
+           py::arg("labels"), py::arg("may_report_unknown") = false, py::arg("grades") = false)
       .def_readonly("labels", &robot::ServiceVocabulary::labels)
-      .def_readonly("may_report_unknown", &robot::ServiceVocabulary::may_report_unknown);
+      .def_readonly("may_report_unknown", &robot::ServiceVocabulary::may_report_unknown)
+      .def_readonly("grades", &robot::ServiceVocabulary::grades);
   py::class_<loop::RobotStep>(m, "RobotStep", "A robot's part of a step.")
       .def_readonly("report", &loop::RobotStep::report)
       .def_readonly("recorded", &loop::RobotStep::recorded)

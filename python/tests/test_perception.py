@@ -64,6 +64,21 @@ def test_a_model_fitted_on_numpy_arrays_is_the_commands(tmp_path):
                                   loaded.classify_rows("tap", rows).probabilities)
 
 
+def test_a_graded_model_hears_a_class_and_its_grade():
+    model = echoplan.fit_feature_model(echoplan.load_feature_set(FEATURE_SET))
+    assert model.graded
+    grades = ["low", "mid", "high"]
+    assert model.graded_symbols == [f"{c}@{g}" for c in model.classes for g in grades]
+    for action in model.actions:
+        labels, graded = model.table(action), model.table(action, graded=True)
+        assert graded.shape == (len(model.classes), 3 * len(model.classes))
+        np.testing.assert_allclose(graded.sum(axis=1), 1.0, atol=1e-9)
+    feature_set = echoplan.load_feature_set(FEATURE_SET)
+    rows = {m: feature_set.rows("tap", m)[5] for m in feature_set.modalities("tap")}
+    heard = model.classify_rows("tap", rows)
+    assert heard.grade in (0, 1, 2)
+
+
 def test_the_problem_of_a_feature_set_is_the_commands(tmp_path):
     groups = str(Path(FEATURE_SET) / "groups.csv")
     echoplan_command("train", "--data", FEATURE_SET, "--groups", groups, "--problem-out",
