@@ -70,7 +70,7 @@ def test_a_graded_model_hears_a_class_and_its_grade():
     grades = ["low", "mid", "high"]
     assert model.graded_symbols == [f"{c}@{g}" for c in model.classes for g in grades]
     for action in model.actions:
-        labels, graded = model.table(action), model.table(action, graded=True)
+        graded = model.table(action, graded=True)
         assert graded.shape == (len(model.classes), 3 * len(model.classes))
         np.testing.assert_allclose(graded.sum(axis=1), 1.0, atol=1e-9)
     feature_set = echoplan.load_feature_set(FEATURE_SET)
