@@ -8,6 +8,7 @@
 #include "robot/ros/clip_message.h"
 #include "robot/ros/ros_messages.h"
 #include "robot/ros/ros_protocol.h"
+#include "robot/transient_error.h"
 
 namespace echoplan::robot {
 
@@ -18,18 +19,17 @@ HeardObservation RosObservationService::observe(const audio::AudioClip& clip,
                                                 const std::string& action) {
   const char* name = ros_names::kObserveService;
   if (!client_ || !client_.isValid()) {
-    // A persistent connection that closed means the node went away: fail now unless it is back,
-    // rather than wait the whole timeout for a service that is gone.
-    if (connected_before_ && !ros::service::exists(name, false))
-      throw std::runtime_error(
-          fmt::format("the observation service {} went away (its connection closed; did "
-                      "echoplan_observation die?)",
-                      name));
+    // Not connected yet, or the node died (a failed call closed the connection): wait for it, a
+    // node restarted by its launch file or an operator comes back within the wait.
     if (!ros::service::waitForService(name, ros::Duration(wait_timeout_s_)))
       throw std::runtime_error(
-          fmt::format("the observation service {} is not available (waited {:g} s; is "
-                      "echoplan_observation running?)",
-                      name, wait_timeout_s_));
+          connected_before_
+              ? fmt::format("the observation service {} went away and did not come back within "
+                            "{:g} s (did echoplan_observation die?)",
+                            name, wait_timeout_s_)
+              : fmt::format("the observation service {} is not available (waited {:g} s; is "
+                            "echoplan_observation running?)",
+                            name, wait_timeout_s_));
     client_ = node_.serviceClient<echoplan_ros::Observe>(name, true);
     connected_before_ = true;
   }
@@ -37,8 +37,9 @@ HeardObservation RosObservationService::observe(const audio::AudioClip& clip,
   call.request.action = action;
   fill_request(clip, call.request);
   if (!client_.call(call)) {
+    // This performance goes unheard; the next call waits for the node to come back.
     client_.shutdown();
-    throw std::runtime_error(fmt::format(
+    throw TransientError(fmt::format(
         "the call to the observation service {} for '{}' failed (the node died or refused it)",
         name, action));
   }

@@ -1,10 +1,12 @@
 // An ObservationService behind ROS: each clip goes, with its samples, to the Observe service of
 // echoplan_observation, which classifies it with its trained model.
 //
-// A service that is not there is waited for up to `wait_timeout_s`; a service node that dies during
-// a call closes the connection, so the call fails at once. Both throw std::runtime_error naming the
-// service. An error the service reports for the request (no model for the action, bad clip) is an
-// InputError, as the interface promises.
+// A service node that dies during a call closes the connection, so the call fails at once: a
+// TransientError naming the service (the loop skips that performance's observation and re-plans).
+// The next call waits up to `wait_timeout_s` for the service (a restarted node comes back); one
+// that is not there by then is a std::runtime_error naming the service, which ends the run. An
+// error the service reports for the request (no model for the action, bad clip) is an InputError,
+// as the interface promises.
 #pragma once
 
 #include <ros/ros.h>
@@ -26,7 +28,7 @@ class RosObservationService final : public ObservationService {
   ros::NodeHandle& node_;
   double wait_timeout_s_;
   ros::ServiceClient client_;
-  bool connected_before_ = false;  // a connection was made once: losing it means the node died
+  bool connected_before_ = false;  // a connection was made once: its errors say the node went away
 };
 
 }  // namespace echoplan::robot

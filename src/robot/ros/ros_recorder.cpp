@@ -7,6 +7,7 @@
 
 #include "robot/ros/clip_message.h"
 #include "robot/ros/ros_protocol.h"
+#include "robot/transient_error.h"
 
 namespace echoplan::robot {
 
@@ -72,8 +73,10 @@ audio::AudioClip RosRecorder::stop() {
   ros::param::set(ros_names::kRecordParam, false);
   const bool answered = changed_.wait_for(lock, std::chrono::duration<double>(wait_timeout_s_),
                                           [&] { return clips_received_ > clips_before; });
+  // The listener died mid-recording, or its device vanished: this performance goes unheard, and
+  // the next start() waits for a listener (restarted) to report recording.
   if (!answered)
-    throw std::runtime_error(
+    throw TransientError(
         fmt::format("recording '{}': no clip on {} within {:g} s after {} fell (is "
                     "echoplan_listener running?)",
                     action_, ros_names::kClipTopic, wait_timeout_s_, ros_names::kRecordParam));
@@ -84,7 +87,7 @@ audio::AudioClip RosRecorder::stop() {
   capture_.stream_error = clip->error;  // the listener's device went away: only part was captured
   if (!clip->error.empty()) {
     if (clip->samples.empty())
-      throw std::runtime_error(
+      throw TransientError(
           fmt::format("recording '{}': the listener recorded nothing: {}", action_, clip->error));
     ROS_ERROR("recording '%s': %s (keeping the %zu samples captured)", action_.c_str(),
               clip->error.c_str(), clip->samples.size());

@@ -5,7 +5,10 @@
 // Two handshakes make the protocol safe to run fast: start() returns only once the listener reports
 // (topic /echoplan/recording) that capture has started, so the arm never moves before the
 // microphone listens; stop() returns the clip the listener publishes after the parameter fell.
-// Either wait ends after `wait_timeout_s` with std::runtime_error saying which node did not answer.
+// Either wait ends after `wait_timeout_s` saying which node did not answer: in start() a
+// std::runtime_error (no listener to record with, which ends the run); in stop() a TransientError
+// (the listener died mid-recording or its device vanished: the loop skips that performance's
+// observation, and the next start() waits for a restarted listener).
 //
 // Needs a spinner serving the node's callbacks on another thread (ros::AsyncSpinner), because
 // start() and stop() block while the answers arrive.

@@ -15,8 +15,18 @@
 #   run               the all-simulated layout with the planner told the true object: its log equals
 #                     `echoplan run --object` (the in-process loop's command), byte for byte
 #   launch            the all-simulated layout started by simulated_layout.launch: same comparison
-#   kill_observation  the observation node is killed mid-trial: the planner stops within seconds with a
-#                     logged failure naming the service, exit status 1, the finished steps kept
+#   kill_observation  the observation node is killed mid-trial and not restarted: the performance it
+#                     was hearing goes unheard, and the planner stops once the service has not come
+#                     back within its wait (10 s) with a logged failure naming the service, exit
+#                     status 1, the finished steps kept
+#   restart_observation
+#                     the observation node dies during its first call (a stand-in that exits on the
+#                     request) and the real one is started a second later: that performance goes
+#                     unheard (one fault in loop_steps.jsonl), the planner waits for the service,
+#                     re-plans, and every trial ends in a sorting action
+#   restart_listener  the listener is killed after the first step and started again a second later:
+#                     the run goes on (a recording it was making goes unheard; a kill between
+#                     recordings costs only the wait), every trial ends in a sorting action
 set -u
 case_name=$1
 build=$2
@@ -36,7 +46,7 @@ if [ "$case_name" = mic ]; then
   listener_params=(_min_seconds:=0.5)
   file_microphone "$build/echoplan" || { fail "making the file-backed microphone"; exit 1; }
 fi
-[ "$case_name" = kill_observation ] && trials=3
+case "$case_name" in kill_observation | restart_*) trials=3 ;; esac
 object_param=()
 if [ "$case_name" = run ]; then
   trials=1
@@ -53,7 +63,14 @@ if [ "$case_name" = launch ]; then
 else
   start sim_robot "$build/echoplan_sim_robot"
   start listener "$build/echoplan_listener" _source:=$source _max_seconds:=0.5 "${listener_params[@]}"
-  start observation "$build/echoplan_observation" _model:="$work/model.json"
+  listener_pid=$started
+  if [ "$case_name" = restart_observation ]; then
+    # An observation node that dies during its first call (dying_observation_stand_in.py).
+    PYTHONPATH=$build/ros/python${PYTHONPATH:+:$PYTHONPATH} \
+      start observation /usr/bin/python3 "$(dirname "$0")/dying_observation_stand_in.py"
+  else
+    start observation "$build/echoplan_observation" _model:="$work/model.json"
+  fi
   observation_pid=$started
   start planner timeout 120 "$build/echoplan_planner" _problem:="$work/problem.yaml" _out:="$work/ros_run" \
     _seed:=$seed _episodes:=$episodes _trials:=$trials _wait_timeout_s:=10 "${object_param[@]}"
@@ -64,6 +81,19 @@ if [ "$case_name" = kill_observation ]; then
   for _ in $(seq 300); do grep -q "heard" "$work/observation.log" && break; sleep 0.05; done
   { kill -KILL "$observation_pid"; wait "$observation_pid"; } 2>/dev/null
   killed_at=$(date +%s.%N)
+fi
+if [ "$case_name" = restart_observation ]; then
+  # Once the stand-in has died mid-call, the real node comes up a second later.
+  wait "$observation_pid" 2>/dev/null
+  sleep 1
+  start observation_again "$build/echoplan_observation" _model:="$work/model.json"
+fi
+if [ "$case_name" = restart_listener ]; then
+  # Once a step is logged, kill the listener (its whole process group) and start it a second later.
+  for _ in $(seq 600); do [ "$(cat "$work/ros_run/loop_steps.csv" 2>/dev/null | wc -l)" -ge 2 ] && break; sleep 0.05; done
+  { kill -KILL -- "-$listener_pid"; wait "$listener_pid"; } 2>/dev/null
+  sleep 1
+  start listener_again "$build/echoplan_listener" _source:=$source _max_seconds:=0.5
 fi
 wait "$planner_pid"
 status=$?
@@ -109,9 +139,28 @@ case "$case_name" in
     [ "$status" -eq 1 ] || fail "echoplan_planner exited $status, expected 1"
     grep -q "trial stopped: .*/echoplan/observe" "$work/planner.log" \
       || { fail "the planner's log does not name the failed service"; cat "$work/planner.log"; }
-    /usr/bin/python3 -c "import sys; sys.exit(0 if $took < 15 else 1)" || fail "the planner took $took s to give up"
+    /usr/bin/python3 -c "import sys; sys.exit(0 if $took < 30 else 1)" || fail "the planner took $took s to give up"
+    grep -q "went away and did not come back within 10 s" "$work/planner.log" \
+      || fail "the planner's log does not say the service did not come back"
     [ "$(wc -l <"$work/ros_run/loop_steps.csv")" -ge 2 ] || fail "the steps finished before the kill were not kept"
     echo "planner stopped $took s after the kill: $(grep -o 'trial stopped: .*' "$work/planner.log")"
+    ;;
+  restart_observation | restart_listener)
+    [ "$status" -eq 0 ] || { fail "echoplan_planner exited $status after the restart"; cat "$work/planner.log"; }
+    ended=$(awk -F, 'NR > 1 && $3 ~ /^move_to_/ {n++} END {print n + 0}' "$work/ros_run/loop_steps.csv")
+    [ "$ended" -eq "$trials" ] || fail "$ended of $trials trials ended in a sorting action"
+    # The stand-in dies during its call: that step's fault is in the log, and the restarted node serves
+    # the rest. A listener killed during a recording leaves a fault too; one killed between
+    # recordings costs nothing but the wait.
+    if [ "$case_name" = restart_observation ]; then
+      fault="observation service failed"
+      [ "$(grep -c "$fault" "$work/ros_run/loop_steps.jsonl")" -eq 1 ] \
+        || fail "expected one step with the fault '$fault'"
+      grep -q "heard" "$work/observation_again.log" || fail "the restarted observation node served nothing"
+    else
+      fault="recorder failed"
+    fi
+    echo "$(grep -c "$fault" "$work/ros_run/loop_steps.jsonl") step(s) with '$fault'; $ended trials sorted"
     ;;
   *) fail "unknown case $case_name" ;;
 esac
