@@ -174,6 +174,9 @@ TEST(ObservationModelJson, EveryBrokenModelFileIsAClearError) {
   expect_error(with([](auto& d) { d["table_estimate"] = "hard"; }),
                "table_estimate: table estimate 'hard' is not one of: counts, soft, shrunk");
   expect_error(with([](auto& d) { d["table_estimate"] = 3; }), "table_estimate");
+  // 100,000 nested arrays (200 KB) used to overflow the stack in nlohmann's parser and crash.
+  expect_error(R"({"per_action": )" + std::string(100'000, '[') + std::string(100'000, ']') + "}",
+               "nested deeper than");
   try {
     load_observation_model((trained().dir / "missing.json").string());
     ADD_FAILURE();

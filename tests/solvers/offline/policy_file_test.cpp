@@ -151,6 +151,13 @@ TEST(PolicyFile, TruncatedFileNamesTheLineWhereItEnds) {
   expect_rejected("", 1, "not valid JSON");
 }
 
+// 100,000 nested arrays (200 KB) used to overflow the stack in nlohmann's parser and crash.
+TEST(PolicyFile, RejectsDeepNesting) {
+  expect_rejected(
+      kTigerHead + R"("vectors": )" + std::string(100'000, '[') + std::string(100'000, ']') + "}",
+      0, "nested deeper than");
+}
+
 TEST(PolicyFile, UnwritablePathIsAnInputErrorNamingIt) {
   const auto solver = solved_tiger();
   const std::string path = "/nonexistent-echoplan-dir/policy.json";
