@@ -91,8 +91,12 @@ YAML::Node parse_yaml(const std::string& text, const std::string& source) {
     std::istringstream stream(text);
     YAML::Parser parser(stream);
     ExpandedNodeCounter counter;
-    while (parser.HandleNextDocument(counter)) {
-    }
+    // One document per file (YAML::Load reads the first). Not reading on to the end also matters:
+    // yaml-cpp 0.7 never ends some broken streams (a lone ',' yields empty documents forever,
+    // found by fuzz/experiment_files_fuzz).
+    if (parser.HandleNextDocument(counter) && parser.HandleNextDocument(counter))
+      throw YAML::ParserException(YAML::Mark::null_mark(),
+                                  "more than one document (echoplan reads one per file)");
     return YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw InputError(source, std::max(0, e.mark.line + 1), "not valid YAML: " + e.msg);

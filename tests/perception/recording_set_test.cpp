@@ -136,9 +136,8 @@ TEST_F(RecordingSetTest, ManifestProblemsNameTheLine) {
 TEST_F(RecordingSetTest, ManifestRowsCannotLeaveTheSet) {
   const std::string sibling = dir_.filename().string() + "_outside";
   std::string manifest = "file,object,action\n";
-  for (const char* object : {"mug", "cup", nullptr})
+  for (const std::string folder : {std::string("mug"), std::string("cup"), "../" + sibling})
     for (const char* action : {"strike", "slide"}) {
-      const std::string folder = object ? std::string(object) : "../" + sibling;
       write_clip(dir_ / folder / action / "a.wav");
       manifest += folder + "/" + action + "/a.wav," + folder + "," + action + "\n";
     }
