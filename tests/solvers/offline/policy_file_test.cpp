@@ -151,7 +151,8 @@ TEST(PolicyFile, TruncatedFileNamesTheLineWhereItEnds) {
   expect_rejected("", 1, "not valid JSON");
 }
 
-// 100,000 nested arrays (200 KB) used to overflow the stack in nlohmann's parser and crash.
+// 100,000 nested arrays (200 KB): refused at the parse (common/json_parse.h), before the reader
+// sees a value that would overflow the stack if it were copied.
 TEST(PolicyFile, RejectsDeepNesting) {
   expect_rejected(
       kTigerHead + R"("vectors": )" + std::string(100'000, '[') + std::string(100'000, ']') + "}",
