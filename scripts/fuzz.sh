@@ -10,6 +10,7 @@
 #   --no-build     run what build-fuzz/ holds (another fuzz.sh is building or running in it)
 #   --summary FILE where the table goes (default build-fuzz/summary.md); it is printed too
 #   JOBS           (environment) parallel build jobs, default 2
+#   FUZZ_BUILD_DIR (environment) the build folder, default build-fuzz (below: build-fuzz/)
 #
 # Targets (each reads the bytes as one kind of file or message; docs/fuzzing.md has the measured runs):
 #   audio_decode_fuzz      WAV, AIFF and FLAC decoding (libsndfile) and every feature extractor
@@ -30,7 +31,7 @@
 set -euo pipefail
 
 root="$(cd "$(dirname "$0")/.." && pwd)"
-build="$root/build-fuzz"
+build="$(cd "$root" && mkdir -p "${FUZZ_BUILD_DIR:-build-fuzz}" && cd "${FUZZ_BUILD_DIR:-build-fuzz}" && pwd)"
 all_targets=(audio_decode_fuzz problem_file_fuzz sim_files_fuzz perception_model_fuzz policy_file_fuzz
              experiment_files_fuzz oppt_log_fuzz feature_set_fuzz recording_set_fuzz ros_audio_fuzz)
 
@@ -116,15 +117,16 @@ for target in "${targets[@]}"; do
   fi
   runs=$(stat number_of_executed_units "$log")
   rate=$(stat average_exec_per_sec "$log")
-  rows+=("| $target | $elapsed | ${runs:-?} | ${rate:-?} | $(status cov "$log") | $(status ft "$log") | \
-$(find "$corpus" -type f | wc -l) | $found |")
+  seed_cov=$(grep -m 1 INITED "$log" | grep -o 'cov: [0-9]*' | sed 's/.*: //')
+  rows+=("| $target | $elapsed | ${runs:-?} | ${rate:-?} | ${seed_cov:-?} | $(status cov "$log") | \
+$(status ft "$log") | $(find "$corpus" -type f | wc -l) | $found |")
 done
 
 {
   echo "Fuzzing run of $(date -u '+%Y-%m-%d %H:%M UTC'), $seconds s per target, commit $(git -C "$root" rev-parse --short HEAD)"
   echo
-  echo "| target | seconds | executions | exec/s | cov (edges) | ft (features) | corpus | findings |"
-  echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+  echo "| target | seconds | executions | exec/s | cov at start | cov (edges) | ft (features) | corpus | findings |"
+  echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
   printf '%s\n' "${rows[@]}"
 } | tee "$summary"
 if [ ${#failed[@]} -gt 0 ]; then
