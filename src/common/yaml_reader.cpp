@@ -34,6 +34,11 @@ class ExpandedNodeCounter final : public YAML::EventHandler {
   void OnDocumentEnd() override {}
   void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override { leaf(mark, anchor, 1); }
   void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
+    // An alias inside the node its anchor names makes yaml-cpp build a cycle, which any walk of
+    // the document follows forever (a stack overflow found by fuzz/experiment_files_fuzz).
+    for (const Open& o : open_)
+      if (o.anchor == anchor)
+        throw YAML::ParserException(mark, "an alias inside the node it refers to (a cycle)");
     const auto it = size_.find(anchor);
     leaf(mark, 0, it == size_.end() ? 1 : it->second);
   }
