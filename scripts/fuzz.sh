@@ -75,7 +75,9 @@ if [ "$build_first" = 1 ]; then
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DECHOPLAN_BUILD_TESTS=OFF -DECHOPLAN_BUILD_BENCH=OFF \
     -DECHOPLAN_BUILD_PYTHON=OFF >/dev/null
   # ros_audio_fuzz exists only where roscpp was found: --all goes on without it, naming it fails.
-  if ! cmake --build "$build" --target help | grep -qw ros_audio_fuzz; then
+  # (The list is read whole first: grep -q closing the pipe early would fail make under pipefail.)
+  known=$(cmake --build "$build" --target help)
+  if ! grep -qw ros_audio_fuzz <<<"$known"; then
     [[ " ${positional[*]} " != *" ros_audio_fuzz "* ]] || die "ros_audio_fuzz needs roscpp (scripts/setup.sh deps)"
     echo "fuzz.sh: roscpp not found, so no ros_audio_fuzz" >&2
     targets=("${targets[@]/ros_audio_fuzz/}")

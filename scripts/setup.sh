@@ -17,7 +17,7 @@
 # C++ file with scripts/check-format.sh; default 1; 0 skips it), ECHOPLAN_INSTALL_PYTHON (1: after
 # building, `cmake --install BUILD_DIR --component python` puts the module under PYTHON_PREFIX,
 # default /usr/local, on Debian python3's path; default 1; 0 skips it), FUZZ_SECONDS (how long `test`
-# runs each fuzz target; default 10).
+# runs each fuzz target; default 5).
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -151,8 +151,8 @@ case "$mode" in
       ctest --test-dir "$tsan_build_dir" -j"$jobs" -R "$tsan_tests" --output-on-failure
     # A smoke run on the committed corpus (docs/fuzzing.md has the long runs): a crash, hang or
     # sanitizer report in any target fails here.
-    echo "setup: fuzz targets (clang, libFuzzer), ${FUZZ_SECONDS:-10} s each"
-    JOBS=$jobs scripts/fuzz.sh --all --seconds "${FUZZ_SECONDS:-10}"
+    echo "setup: fuzz targets (clang, libFuzzer), ${FUZZ_SECONDS:-5} s each"
+    JOBS=$jobs scripts/fuzz.sh --all --seconds "${FUZZ_SECONDS:-5}"
     ;;
   -h|--help|help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//' ;;
   *) echo "setup: unknown mode '$mode' (try: build, run, test, deps)" >&2; exit 2 ;;
