@@ -59,7 +59,6 @@ done
 if [ ${#positional[@]} -gt 0 ] && [[ ${positional[0]} =~ ^[0-9]+$ ]]; then
   seconds=${positional[0]}
   positional=("${positional[@]:1}")
-  [ ${#positional[@]} -gt 0 ] || [ ${#targets[@]} -gt 0 ] || positional=(audio_decode_fuzz)
 fi
 targets+=("${positional[@]}")
 [ ${#targets[@]} -gt 0 ] || targets=(audio_decode_fuzz)
