@@ -7,15 +7,17 @@
 #                             main job with its default configuration
 #   scripts/setup.sh test     install dependencies, build, and run all tests: the normal build (with
 #                             the Python module's), an install into a temporary prefix with a project
-#                             built on it (scripts/check-install.sh), an ASan+UBSan build, and a
-#                             ThreadSanitizer build of the tests that start threads
+#                             built on it (scripts/check-install.sh), an ASan+UBSan build, a
+#                             ThreadSanitizer build of the tests that start threads, and every
+#                             libFuzzer target built with clang and run briefly (scripts/fuzz.sh)
 #   scripts/setup.sh deps     only install dependencies
 #
 # Environment: JOBS (parallel build jobs, default: number of cores), BUILD_DIR (default: build),
 # SAN_BUILD_DIR (default: build-san), TSAN_BUILD_DIR (default: build-tsan), ECHOPLAN_CHECK_FORMAT (1: `test` first checks the layout of every
 # C++ file with scripts/check-format.sh; default 1; 0 skips it), ECHOPLAN_INSTALL_PYTHON (1: after
 # building, `cmake --install BUILD_DIR --component python` puts the module under PYTHON_PREFIX,
-# default /usr/local, on Debian python3's path; default 1; 0 skips it).
+# default /usr/local, on Debian python3's path; default 1; 0 skips it), FUZZ_SECONDS (how long `test`
+# runs each fuzz target; default 5).
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -149,7 +151,11 @@ case "$mode" in
       -DECHOPLAN_BUILD_PYTHON=OFF
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
       ctest --test-dir "$tsan_build_dir" -j"$jobs" -R "$tsan_tests" --output-on-failure
+    # A smoke run on the committed corpus (docs/fuzzing.md has the long runs): a crash, hang or
+    # sanitizer report in any target fails here.
+    echo "setup: fuzz targets (clang, libFuzzer), ${FUZZ_SECONDS:-5} s each"
+    JOBS=$jobs scripts/fuzz.sh --all --seconds "${FUZZ_SECONDS:-5}"
     ;;
-  -h|--help|help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//' ;;
+  -h|--help|help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//' ;;
   *) echo "setup: unknown mode '$mode' (try: build, run, test, deps)" >&2; exit 2 ;;
 esac

@@ -34,6 +34,11 @@ class ExpandedNodeCounter final : public YAML::EventHandler {
   void OnDocumentEnd() override {}
   void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override { leaf(mark, anchor, 1); }
   void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
+    // An alias inside the node its anchor names makes yaml-cpp build a cycle, which any walk of
+    // the document follows forever (a stack overflow found by fuzz/experiment_files_fuzz).
+    for (const Open& o : open_)
+      if (o.anchor == anchor)
+        throw YAML::ParserException(mark, "an alias inside the node it refers to (a cycle)");
     const auto it = size_.find(anchor);
     leaf(mark, 0, it == size_.end() ? 1 : it->second);
   }
@@ -91,8 +96,12 @@ YAML::Node parse_yaml(const std::string& text, const std::string& source) {
     std::istringstream stream(text);
     YAML::Parser parser(stream);
     ExpandedNodeCounter counter;
-    while (parser.HandleNextDocument(counter)) {
-    }
+    // One document per file (YAML::Load reads the first). Not reading on to the end also matters:
+    // yaml-cpp 0.7 never ends some broken streams (a lone ',' yields empty documents forever,
+    // found by fuzz/experiment_files_fuzz).
+    if (parser.HandleNextDocument(counter) && parser.HandleNextDocument(counter))
+      throw YAML::ParserException(YAML::Mark::null_mark(),
+                                  "more than one document (echoplan reads one per file)");
     return YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw InputError(source, std::max(0, e.mark.line + 1), "not valid YAML: " + e.msg);

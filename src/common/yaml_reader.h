@@ -34,8 +34,9 @@ namespace echoplan {
 inline constexpr long long kMaxYamlExpandedNodes = 2'000'000;
 
 // Parses YAML `text` read from `source`; a syntax error throws InputError(source, line, "not valid
-// YAML: ..."), and so does a text standing for more than kMaxYamlExpandedNodes nodes. An empty text
-// gives a null node.
+// YAML: ..."), and so do a text standing for more than kMaxYamlExpandedNodes nodes, a second
+// document ("---" after the first) and an alias inside the node its anchor names (a cycle). An
+// empty text gives a null node.
 YAML::Node parse_yaml(const std::string& text, const std::string& source);
 
 // read_text_file + parse_yaml.

@@ -13,6 +13,7 @@
 #include "common/error.h"
 #include "common/file_io.h"
 #include "common/json_fields.h"
+#include "common/json_parse.h"
 
 namespace echoplan::perception {
 
@@ -429,7 +430,7 @@ ObservationModel load_observation_model(const std::string& path) {
 ObservationModel parse_observation_model(const std::string& text, const std::string& source) {
   nlohmann::json doc;
   try {
-    doc = nlohmann::json::parse(text);
+    doc = parse_json(text, source);
   } catch (const nlohmann::json::exception& e) {
     // parse_error for broken syntax, out_of_range for a number beyond double: both a corrupt file.
     throw InputError(

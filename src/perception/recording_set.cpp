@@ -82,6 +82,15 @@ Layout read_manifest(const fs::path& root, const fs::path& manifest_path, Record
     const std::string& file = cells[file_col];
     const std::string& object = cells[object_col];
     const std::string& action = cells[action_col];
+    // One folder each, so that the file lies inside DIR: "..", "/" or an empty name would let a
+    // row reach any file on the machine (found reading the code behind fuzz/recording_set_fuzz).
+    for (const std::string* folder : {&object, &action})
+      if (folder->empty() || *folder == "." || *folder == ".." ||
+          folder->find('/') != std::string::npos)
+        throw InputError(name, line_no,
+                         fmt::format("'{}' is not a folder name: an object and an action each name "
+                                     "one folder inside the set (not empty, no '/', not . or ..)",
+                                     *folder));
     const std::string expected_prefix = object + "/" + action + "/";
     if (!file.starts_with(expected_prefix) ||
         file.find('/', expected_prefix.size()) != std::string::npos)

@@ -236,9 +236,16 @@ void Parser::read_start(const Token& keyword) {
   std::vector<Token> values = rest_of_statement();
   if (values.empty()) fail(keyword.line, "'start:' needs a distribution, 'uniform' or a state");
   start_.assign(n, 0.0);
+  // resolve() reads '*' as every state (-1), which no form of 'start:' means (found by
+  // fuzz/problem_file_fuzz: it indexed state -1).
+  auto state = [&](const Token& t) {
+    const int s = resolve(t, states_, "state");
+    if (s < 0) fail(t.line, "'start:' names states, not '*' (use 'start: uniform')");
+    return s;
+  };
   if (!form.empty()) {
     std::vector<bool> listed(n, false);
-    for (const auto& v : values) listed[resolve(v, states_, "state")] = true;
+    for (const auto& v : values) listed[state(v)] = true;
     int count = 0;
     for (int s = 0; s < n; ++s) count += (listed[s] == (form == "include")) ? 1 : 0;
     if (count == 0) fail(keyword.line, "'start " + form + ":' leaves no state to start in");
@@ -251,7 +258,7 @@ void Parser::read_start(const Token& keyword) {
   }
   double dummy = 0.0;
   if (values.size() == 1 && (n > 1 || !parse_number(values[0].text, dummy))) {
-    start_[resolve(values[0], states_, "state")] = 1.0;
+    start_[state(values[0])] = 1.0;
     return;
   }
   start_ = numbers(values, n, keyword);

@@ -174,6 +174,10 @@ TEST(ObservationModelJson, EveryBrokenModelFileIsAClearError) {
   expect_error(with([](auto& d) { d["table_estimate"] = "hard"; }),
                "table_estimate: table estimate 'hard' is not one of: counts, soft, shrunk");
   expect_error(with([](auto& d) { d["table_estimate"] = 3; }), "table_estimate");
+  // 100,000 nested arrays (200 KB): refused at the parse (common/json_parse.h), before the reader
+  // sees a value that would overflow the stack if it were copied.
+  expect_error(R"({"per_action": )" + std::string(100'000, '[') + std::string(100'000, ']') + "}",
+               "nested deeper than");
   try {
     load_observation_model((trained().dir / "missing.json").string());
     ADD_FAILURE();

@@ -131,6 +131,28 @@ TEST_F(RecordingSetTest, ManifestProblemsNameTheLine) {
   expect_error(dir_, {"not listed in manifest.csv"});
 }
 
+// A manifest row could name a file outside the set through an object or action of "..", "" or
+// with a '/' in it: the recordings here, plus a sibling folder's under object "../<sibling>".
+TEST_F(RecordingSetTest, ManifestRowsCannotLeaveTheSet) {
+  const std::string sibling = dir_.filename().string() + "_outside";
+  std::string manifest = "file,object,action\n";
+  for (const std::string folder : {std::string("mug"), std::string("cup"), "../" + sibling})
+    for (const char* action : {"strike", "slide"}) {
+      write_clip(dir_ / folder / action / "a.wav");
+      manifest += folder + "/" + action + "/a.wav," + folder + "," + action + "\n";
+    }
+  for (const char* object : {"mug", "cup"})
+    for (const char* action : {"strike", "slide"})
+      manifest += std::string(object) + "/" + action + "/b.wav," + object + "," + action + "\n";
+  write_text(dir_ / "manifest.csv", manifest);
+  expect_error(dir_, {"manifest.csv:6", "'../" + sibling + "' is not a folder name"});
+  fs::remove_all(dir_.parent_path() / sibling);
+  write_text(dir_ / "manifest.csv", "file,object,action\n/tmp/a.wav,,tmp\n");
+  expect_error(dir_, {"manifest.csv:2", "'' is not a folder name"});
+  write_text(dir_ / "manifest.csv", "file,object,action\n./strike/a.wav,.,strike\n");
+  expect_error(dir_, {"manifest.csv:2", "'.' is not a folder name"});
+}
+
 TEST(ReadRecording, MixesChannelsAndResamples) {
   const auto dir = test_sounds::fresh_dir("read");
   audio::AudioClip stereo;

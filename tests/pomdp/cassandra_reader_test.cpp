@@ -194,6 +194,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadPomdp{"bad_values", HEAD "values: money\n", 5, "'reward' or 'cost'"},
         BadPomdp{"missing_colon", "discount 0.9\n", 1, "expected ':'"},
         BadPomdp{"start_sum", HEAD "start: 0.5 0.4\n", 5, "sums to"},
+        // Found by fuzz/problem_file_fuzz: '*' indexed state -1 (a heap overflow).
+        BadPomdp{"start_wildcard", HEAD "start: *\n", 5, "not '*'"},
+        BadPomdp{"start_include_wildcard", HEAD "start include: a\n*: x\n", 6, "not '*'"},
         BadPomdp{"duplicate_state", "discount: 0.9\nstates: a a\n", 2, "duplicate name 'a'"},
         BadPomdp{"reward_needs_state", HEAD "R: x 5\n", 5, "at least"},
         BadPomdp{"too_large", "discount: 0.9\nstates: 100000\nactions: 10\nobservations: 2\n", 4,

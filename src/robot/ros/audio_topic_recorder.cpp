@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "common/error.h"
+#include "robot/ros/s16le_chunk.h"
 
 namespace echoplan::robot {
 
@@ -28,21 +29,10 @@ void TopicCaptureConfig::validate() const {
                      fmt::format("first chunk wait must be >= 0 s, got {}", first_chunk_wait_s));
 }
 
-void append_s16le(const std::uint8_t* bytes, std::size_t count, std::vector<float>& samples) {
-  samples.reserve(samples.size() + count);
-  for (std::size_t i = 0; i < count; ++i) {
-    // Assembled byte by byte, so the stream's byte order holds whatever the host's is.
-    const auto value = static_cast<std::int16_t>(
-        static_cast<std::uint16_t>(bytes[2 * i] | static_cast<unsigned>(bytes[2 * i + 1]) << 8));
-    samples.push_back(static_cast<float>(value) / 32768.0f);
-  }
-}
-
 AudioTopicRecorder::AudioTopicRecorder(const ros::NodeHandle& node,
                                        const TopicCaptureConfig& config)
     : config_(config), node_(node) {
   config_.validate();
-  frame_bytes_ = 2 * static_cast<std::size_t>(config_.channels);
   max_frames_ = std::max<std::size_t>(
       static_cast<std::size_t>(std::llround(config_.max_seconds * config_.sample_rate)), 1);
   // Our own queue and thread: stop() can then wait for a chunk while its caller's thread (the
@@ -85,14 +75,10 @@ void AudioTopicRecorder::on_chunk(const audio_common_msgs::AudioData::ConstPtr& 
   std::lock_guard lock(mutex_);
   if (!started_ || running_.limit_reached) return;
   ++running_.chunks;
-  if (chunk->data.size() % frame_bytes_ != 0) {
-    ++running_.misaligned_chunks;
-  } else {
-    const std::size_t have = samples_.size() / static_cast<std::size_t>(config_.channels);
-    const std::size_t frames = std::min(chunk->data.size() / frame_bytes_, max_frames_ - have);
-    append_s16le(chunk->data.data(), frames * static_cast<std::size_t>(config_.channels), samples_);
-    if (have + frames >= max_frames_) running_.limit_reached = true;
-  }
+  const ChunkOutcome outcome =
+      append_s16le_chunk(chunk->data, config_.channels, max_frames_, samples_);
+  if (outcome.misaligned) ++running_.misaligned_chunks;
+  if (outcome.limit_reached) running_.limit_reached = true;
   chunk_arrived_.notify_all();
 }
 

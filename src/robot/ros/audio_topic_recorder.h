@@ -62,10 +62,6 @@ struct TopicCaptureReport {
   bool limit_reached = false;         // the clip stopped growing at max_seconds
 };
 
-// Appends the `count` S16LE samples at `bytes` (2 x count bytes) to `samples` as floats (value /
-// 32768, as PortAudio and the WAV reader scale them, so every 16-bit value is kept exactly).
-void append_s16le(const std::uint8_t* bytes, std::size_t count, std::vector<float>& samples);
-
 class AudioTopicRecorder final : public Recorder {
  public:
   // Validates `config` (InputError) and subscribes to its topic through `node`'s master.
@@ -91,7 +87,6 @@ class AudioTopicRecorder final : public Recorder {
   std::string nothing_heard_reason() const;
 
   TopicCaptureConfig config_;
-  std::size_t frame_bytes_;  // 2 bytes per sample x channels
   std::size_t max_frames_;
   ros::CallbackQueue queue_;  // declared before the node, subscriber and spinner that use it
   ros::NodeHandle node_;

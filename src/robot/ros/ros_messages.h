@@ -33,6 +33,10 @@ struct SimpleVectorSerializer {
   static void read(Stream& stream, VecType& v) {
     uint32_t len = 0;
     stream.next(len);
+    // The length is the sender's word: checked against the bytes left before anything is
+    // allocated, so that a bad one can neither ask for gigabytes nor wrap len * sizeof(T) around
+    // 32 bits (which made advance() accept a short buffer that memcpy then overran).
+    if (len > stream.getLength() / sizeof(T)) throwStreamOverrun();
     v.resize(len);
     if (len > 0)
       std::memcpy(v.data(), stream.advance(len * static_cast<uint32_t>(sizeof(T))),
@@ -64,6 +68,9 @@ struct VectorSerializer<std::string, std::allocator<std::string>, void> {
   static void read(Stream& stream, VecType& v) {
     uint32_t len = 0;
     stream.next(len);
+    // Each string takes at least its 4-byte length: a count the bytes left cannot hold is refused
+    // before it is allocated.
+    if (len > stream.getLength() / 4) throwStreamOverrun();
     v.resize(len);
     for (auto& s : v) stream.next(s);
   }

@@ -5,11 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
+#include "common/file_io.h"
+#include "common/json_parse.h"
 
 namespace echoplan::solvers::offline {
 
@@ -65,17 +66,14 @@ void save_policy(const PointBasedSolver& solver, const std::string& path) {
 }
 
 AlphaVectorSet load_policy(const std::string& path, const FlatPomdp& pomdp) {
-  std::ifstream file(path);
-  if (!file) throw InputError(path, 0, "cannot open the policy file");
-  const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-  return parse_policy(text, path, pomdp);
+  return parse_policy(read_text_file(path, "policy file"), path, pomdp);
 }
 
 AlphaVectorSet parse_policy(const std::string& text, const std::string& path,
                             const FlatPomdp& pomdp) {
   nlohmann::json root;
   try {
-    root = nlohmann::json::parse(text);
+    root = parse_json(text, path);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(path, line_of(text, e.byte), "not valid JSON");
   } catch (const nlohmann::json::exception&) {

@@ -221,15 +221,6 @@ TEST(TopicCaptureConfig, OnlyS16leAndPositiveRatesAndChannels) {
   EXPECT_THROW(AudioTopicRecorder(ros::NodeHandle(), config), InputError);
 }
 
-TEST(AppendS16le, ReadsLittleEndianSignedSamplesOver32768) {
-  const std::uint8_t bytes[] = {0x00, 0x80, 0xff, 0x7f, 0x01, 0x00, 0xff, 0xff, 0x00, 0x00};
-  std::vector<float> samples{0.5f};
-  append_s16le(bytes, 5, samples);
-  const std::vector<float> expected{0.5f,         -1.0f,         32767.0f / 32768,
-                                    1.0f / 32768, -1.0f / 32768, 0.0f};
-  EXPECT_EQ(samples, expected);
-}
-
 // The listener node (started by the script with ~source:=topic on the stand-in's topic) publishes
 // the same exact frames on /echoplan/clip, through the report's record protocol.
 TEST(ListenerNode, PublishesTheTopicsFramesBetweenTheRecordParametersRiseAndFall) {

@@ -151,6 +151,14 @@ TEST(PolicyFile, TruncatedFileNamesTheLineWhereItEnds) {
   expect_rejected("", 1, "not valid JSON");
 }
 
+// 100,000 nested arrays (200 KB): refused at the parse (common/json_parse.h), before the reader
+// sees a value that would overflow the stack if it were copied.
+TEST(PolicyFile, RejectsDeepNesting) {
+  expect_rejected(
+      kTigerHead + R"("vectors": )" + std::string(100'000, '[') + std::string(100'000, ']') + "}",
+      0, "nested deeper than");
+}
+
 TEST(PolicyFile, UnwritablePathIsAnInputErrorNamingIt) {
   const auto solver = solved_tiger();
   const std::string path = "/nonexistent-echoplan-dir/policy.json";
