@@ -134,6 +134,13 @@ std::vector<std::string> observation_names(const CampaignResults& results, const
   return graded;
 }
 
+std::map<std::string, std::vector<std::string>> observation_names(const CampaignResults& results) {
+  std::map<std::string, std::vector<std::string>> names;
+  for (const CampaignArm& arm : results.config.arms)
+    names[arm.name] = observation_names(results, arm.name);
+  return names;
+}
+
 std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
   const auto& symbols = results.spec.observation.names;
   std::vector<std::string> classes;
@@ -203,9 +210,7 @@ void write_arm_tables(const fs::path& directory, const CampaignResults& results,
 void write_tables(const fs::path& directory, const CampaignResults& results) {
   TrialLog all(directory, results.spec, results.belief_particles, {"arm", "object", "session"},
                {"seed"});
-  std::map<std::string, std::vector<std::string>> names;  // per arm
-  for (const CampaignArm& arm : results.config.arms)
-    names[arm.name] = observation_names(results, arm.name);
+  const auto names = observation_names(results);
   for (const JournalEntry& e : results.entries)
     all.write_trial(e.result.record, e.result.steps, {e.arm, e.object, e.session},
                     {trial_seed(results.config, e.object)}, &names.at(e.arm));

@@ -112,6 +112,8 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results);
 // arm that hears graded observations each class's graded symbols in its place ("mug" becomes
 // "mug@low", "mug@mid", "mug@high"; `unknown` and `none` stay), in the problems' order.
 std::vector<std::string> observation_names(const CampaignResults& results, const std::string& arm);
+// The same for every arm of the campaign: arm -> names.
+std::map<std::string, std::vector<std::string>> observation_names(const CampaignResults& results);
 
 // How sure each arm was when it sorted (sort_confidence.h), in the configuration's arm order.
 std::vector<ArmConfidence> arm_confidence(const CampaignResults& results);

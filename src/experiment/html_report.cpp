@@ -238,10 +238,10 @@ std::string steps_table(const CampaignResults& results) {
   for (const auto& o : results.spec.state.discrete_value_names.at(0))
     h += "<th>" + escape(o) + (particles ? " particles" : " p") + "</th>";
   h += "<th class=\"l\">action</th><th class=\"l\">heard</th><th>heard p</th></tr>\n";
-  for (const JournalEntry& e : results.entries) {
-    const std::vector<std::string> observations = observation_names(results, e.arm);
-    for (const StepRecord& s : e.result.steps) h += step_row(results, observations, e.id, s);
-  }
+  const auto observations = observation_names(results);
+  for (const JournalEntry& e : results.entries)
+    for (const StepRecord& s : e.result.steps)
+      h += step_row(results, observations.at(e.arm), e.id, s);
   return h + "</table>\n</details>\n";
 }
 

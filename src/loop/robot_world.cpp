@@ -22,17 +22,6 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// The class a problem's observation symbol names: `mug@high` (a graded symbol) and `mug` both
-// name `mug`.
-std::string class_of_symbol(const std::string& symbol) {
-  for (int g = 0; g < perception::kGrades; ++g) {
-    const std::string suffix = perception::graded_name("", g);
-    if (symbol.size() > suffix.size() && symbol.ends_with(suffix))
-      return symbol.substr(0, symbol.size() - suffix.size());
-  }
-  return symbol;
-}
-
 // Runs `part` and returns the message of a failure of this call alone (robot/transient_error.h: a
 // device gone, a service timed out); none when it succeeded. Anything else goes on up.
 template <typename Part>
@@ -83,13 +72,13 @@ RobotWorld::RobotWorld(pomdp::ModelPtr model, RobotParts parts,
                         "objects - plan on the problem `echoplan train --problem-out` wrote for it",
                         label, act.name, data.name, fmt::join(data.observation_symbols, ", ")));
     for (const std::string& symbol : data.observation_symbols) {
-      if (symbol != kUnknownSymbol && !contains(it->second, class_of_symbol(symbol)))
+      if (symbol != kUnknownSymbol && !contains(it->second, perception::class_of_symbol(symbol)))
         throw InputError(fmt::format(
             "problem '{}' expects to hear '{}' after '{}', but the observation model was "
             "not trained for it (its classes: {}); train it on recordings of the "
             "problem's objects",
             data.name, symbol, act.name, fmt::join(it->second, ", ")));
-      if (symbol != class_of_symbol(symbol) && !vocabulary->grades)
+      if (symbol != perception::class_of_symbol(symbol) && !vocabulary->grades)
         throw InputError(fmt::format(
             "problem '{}' plans with graded observations ('{}'), but the observation model does "
             "not grade what it hears (trained before grades existed): train it again, or plan "

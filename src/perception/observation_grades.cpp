@@ -118,4 +118,13 @@ std::string graded_name(const std::string& label, int grade) {
   return label + "@" + kGradeNames.at(static_cast<std::size_t>(grade));
 }
 
+std::string class_of_symbol(const std::string& symbol) {
+  for (int g = 0; g < kGrades; ++g) {
+    const std::string suffix = graded_name("", g);
+    if (symbol.size() > suffix.size() && symbol.ends_with(suffix))
+      return symbol.substr(0, symbol.size() - suffix.size());
+  }
+  return symbol;
+}
+
 }  // namespace echoplan::perception

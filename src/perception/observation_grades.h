@@ -68,5 +68,7 @@ std::vector<std::string> graded_symbols(const std::vector<std::string>& classes,
 int graded_symbol(int symbol, int grade, int num_classes);
 // "<label>@<grade name>".
 std::string graded_name(const std::string& label, int grade);
+// The class a symbol names: "mug@high" and "mug" both name "mug".
+std::string class_of_symbol(const std::string& symbol);
 
 }  // namespace echoplan::perception
