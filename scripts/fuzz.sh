@@ -71,7 +71,8 @@ done
 if [ "$build_first" = 1 ]; then
   command -v clang++ >/dev/null || die "clang++ not found (Debian package clang)"
   cmake -S "$root" -B "$build" -DECHOPLAN_BUILD_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ \
-    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DECHOPLAN_BUILD_TESTS=OFF -DECHOPLAN_BUILD_BENCH=OFF \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -gline-tables-only -DNDEBUG" \
+    -DECHOPLAN_BUILD_TESTS=OFF -DECHOPLAN_BUILD_BENCH=OFF \
     -DECHOPLAN_BUILD_PYTHON=OFF >/dev/null
   # ros_audio_fuzz exists only where roscpp was found: --all goes on without it, naming it fails.
   # (The list is read whole first: grep -q closing the pipe early would fail make under pipefail.)
