@@ -26,6 +26,16 @@ void check_spec(const SyntheticSpec& spec) {
     if (m.features < 1 || m.name.empty())
       throw InputError("every synthetic modality needs a name and at least one feature");
   if (spec.group_size < 0) throw InputError("the group size cannot be negative");
+  if (!(spec.atypical_share >= 0 && spec.atypical_share <= 1) ||
+      !(spec.atypical_pull >= 0 && spec.atypical_pull <= 1))
+    throw InputError(fmt::format("the atypical share ({}) and pull ({}) must lie in [0, 1]",
+                                 spec.atypical_share, spec.atypical_pull));
+  if (spec.atypical_share > 0 && (spec.group_size < 1 || spec.objects <= spec.group_size))
+    throw InputError("atypical objects look like another group: they need at least two groups");
+}
+
+int group_count(const SyntheticSpec& spec) {
+  return spec.group_size > 0 ? (spec.objects + spec.group_size - 1) / spec.group_size : 1;
 }
 
 void write_groups(const fs::path& dir, const SyntheticSpec& spec) {
@@ -40,14 +50,31 @@ void write_groups(const fs::path& dir, const SyntheticSpec& spec) {
 std::string synthetic_object_name(int o) { return "obj" + std::to_string(o); }
 std::string synthetic_group_name(int g) { return "group" + std::to_string(g); }
 
+std::vector<int> synthetic_lookalikes(const SyntheticSpec& spec) {
+  check_spec(spec);
+  std::vector<int> lookalike(static_cast<std::size_t>(spec.objects));
+  for (int o = 0; o < spec.objects; ++o)
+    lookalike[static_cast<std::size_t>(o)] = spec.group_size > 0 ? o / spec.group_size : 0;
+  if (spec.atypical_share <= 0) return lookalike;
+  std::mt19937_64 rng(spec.seed + 1);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::uniform_int_distribution<int> other(1, group_count(spec) - 1);
+  for (int& group : lookalike) {
+    const bool atypical = uniform(rng) < spec.atypical_share;
+    const int shift = other(rng);  // drawn for every object, so the draws keep one order
+    if (atypical) group = (group + shift) % group_count(spec);
+  }
+  return lookalike;
+}
+
 void write_synthetic_feature_set(const fs::path& dir, const SyntheticSpec& spec) {
   check_spec(spec);
   // The draws keep one order (per action and modality: group means, object means, then each
   // session's offset and its repeats' noise), so a spec always makes the same numbers.
+  const std::vector<int> lookalike = synthetic_lookalikes(spec);
   std::mt19937_64 rng(spec.seed);
   std::normal_distribution<double> normal(0.0, 1.0);
-  const int groups =
-      spec.group_size > 0 ? (spec.objects + spec.group_size - 1) / spec.group_size : 1;
+  const int groups = group_count(spec);
   for (std::size_t a = 0; a < spec.actions.size(); ++a) {
     const std::string& action = spec.actions[a];
     const double scale = spec.action_scales.empty() ? 1.0 : spec.action_scales[a];
@@ -71,12 +98,16 @@ void write_synthetic_feature_set(const fs::path& dir, const SyntheticSpec& spec)
         for (int s = 0; s < spec.sessions; ++s) {
           const auto session = draw(1)[0];
           const int g = spec.group_size > 0 ? o / spec.group_size : 0;
+          const int h = lookalike[static_cast<std::size_t>(o)];
+          const double pull = h == g ? 0.0 : spec.atypical_pull;
           for (int r = 0; r < spec.repeats; ++r) {
             out << synthetic_object_name(o) << ",s" << s;
             for (int j = 0; j < m.features; ++j)
               out << ","
-                  << spec.group_separation * group_means[g][j] + separation * object_means[o][j] +
-                         spec.session_sd * session[j] + normal(rng);
+                  << spec.group_separation *
+                             ((1 - pull) * group_means[g][j] + pull * group_means[h][j]) +
+                         separation * object_means[o][j] + spec.session_sd * session[j] +
+                         normal(rng);
             out << "\n";
           }
         }

@@ -187,7 +187,8 @@ ActionCalibration calibrate(const HeldOut& held, std::span<const int> labels,
                             static_cast<int>(symbols.size()), c.temperature);
   else
     for (const auto& row : c.confusion.counts) counts.emplace_back(row.begin(), row.end());
-  c.table = estimate_table(counts, model.classes, {options.table, options.dirichlet_alpha}).table;
+  c.table =
+      estimate_table(counts, model.classes, {options.table, options.dirichlet_alpha, {}, {}}).table;
   grade(c, held, labels, rejected, num_classes);
   return c;
 }

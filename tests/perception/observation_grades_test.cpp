@@ -92,8 +92,9 @@ TEST(ObservationGrades, TheClipModelGradesAndItsFileKeepsTheGrades) {
   const Prediction p = model.classify(clip, "strike");
   ASSERT_GE(p.grade, 0);
   const int symbol = model.symbol(p, ObservationKind::graded);
-  if (!p.unknown)
+  if (!p.unknown) {
     EXPECT_EQ(symbols[static_cast<std::size_t>(symbol)], graded_name(p.label, p.grade));
+  }
   EXPECT_EQ(model.symbol(p, ObservationKind::labels), p.symbol);
 
   nlohmann::json file = observation_model_to_json(model);

@@ -93,6 +93,60 @@ TEST(SyntheticFeatureSet, RepeatsShareTheirSessionOffset) {
   EXPECT_NEAR(across / static_cast<double>(pairs - 1), 52.0, 8.0);
 }
 
+// Per object, the mean of each feature over its rows of one action's only modality.
+std::vector<std::vector<double>> object_means(const FeatureSet& set, const ActionData& action) {
+  std::vector<std::vector<double>> sum(set.objects.size());
+  std::vector<int> count(set.objects.size(), 0);
+  const Modality& m = action.modalities[0];
+  for (std::size_t i = 0; i < m.rows.size(); ++i) {
+    const auto o = static_cast<std::size_t>(action.rows[i].object);
+    sum[o].resize(m.rows[i].size(), 0.0);
+    for (std::size_t j = 0; j < m.rows[i].size(); ++j) sum[o][j] += m.rows[i][j];
+    ++count[o];
+  }
+  for (std::size_t o = 0; o < sum.size(); ++o)
+    for (double& x : sum[o]) x /= count[o];
+  return sum;
+}
+
+// With a pull of 1 and no object terms, an atypical object sits on its lookalike group's mean in
+// every action: two objects are at one place (up to noise) exactly when they look alike, whatever
+// their own groups.
+TEST(SyntheticFeatureSet, AnAtypicalObjectLooksLikeTheSameOtherGroupInEveryAction) {
+  const auto dir = test_features::fresh_folder("synthetic_atypical");
+  SyntheticSpec spec;
+  spec.objects = 12;
+  spec.group_size = 3;
+  spec.sessions = 100;
+  spec.actions = {"press", "shake"};
+  spec.modalities = {{"audio", 3, 0.0}};
+  spec.group_separation = 4.0;
+  spec.atypical_share = 0.5;
+  spec.atypical_pull = 1.0;
+  write_synthetic_feature_set(dir, spec);
+  const std::vector<int> lookalike = synthetic_lookalikes(spec);
+  int atypical = 0;
+  for (int o = 0; o < spec.objects; ++o) atypical += lookalike[o] != o / spec.group_size;
+  ASSERT_GT(atypical, 0);
+  ASSERT_LT(atypical, spec.objects);
+  const FeatureSet set = load_feature_set(dir.string());
+  ASSERT_EQ(set.objects.size(), 12u);
+  auto object_of = [&](std::size_t index) { return std::stoi(set.objects[index].substr(3)); };
+  for (const ActionData& action : set.actions) {
+    const auto means = object_means(set, action);
+    for (std::size_t a = 0; a < means.size(); ++a)
+      for (std::size_t b = a + 1; b < means.size(); ++b) {
+        double distance2 = 0;
+        for (std::size_t j = 0; j < 3; ++j) distance2 += std::pow(means[a][j] - means[b][j], 2);
+        // Alike: noise only, 3 x 2 / 100 = 0.06 expected; apart: 3 x 2 x 16 = 96 expected.
+        if (lookalike[object_of(a)] == lookalike[object_of(b)])
+          EXPECT_LT(distance2, 0.5) << action.name << " " << set.objects[a] << set.objects[b];
+        else
+          EXPECT_GT(distance2, 2.0) << action.name << " " << set.objects[a] << set.objects[b];
+      }
+  }
+}
+
 TEST(SyntheticFeatureSet, RefusesASpecThatCannotMakeAFeatureSet) {
   const auto dir = test_features::fresh_folder("synthetic_bad");
   SyntheticSpec spec;
@@ -101,6 +155,12 @@ TEST(SyntheticFeatureSet, RefusesASpecThatCannotMakeAFeatureSet) {
   EXPECT_THROW(write_synthetic_feature_set(dir, spec), InputError);
   spec.action_scales.clear();
   spec.objects = 0;
+  EXPECT_THROW(write_synthetic_feature_set(dir, spec), InputError);
+  spec.objects = 4;
+  spec.atypical_share = 0.5;  // without groups an object has no other group to look like
+  EXPECT_THROW(write_synthetic_feature_set(dir, spec), InputError);
+  spec.group_size = 2;
+  spec.atypical_pull = 1.5;
   EXPECT_THROW(write_synthetic_feature_set(dir, spec), InputError);
 }
 

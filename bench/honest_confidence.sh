@@ -1,0 +1,33 @@
+#!/bin/sh
+# Honest confidence on novel objects (docs/BENCHMARKS.md, "Honest confidence: objects unlike their
+# class"): a synthetic stand-in where a quarter of the objects look like another group in every
+# behaviour at once (bench/make_feature_set --atypical-share 0.25 --atypical-pull 0.6; 40 objects
+# in 8 groups of 5, 5 sessions, 4 behaviours, audio and haptic), sorted by group with whole objects
+# held out, four arms at EPISODES episodes. Prints each arm's row, the paired differences and how
+# sure each arm was at the sort against how often it was right.
+# Usage: bench/honest_confidence.sh BUILD_DIR [EPISODES] [OUT]
+set -eu
+build=$1
+episodes=${2:-20000}
+dir=$(mktemp -d)
+out=${3:-$dir/campaign}
+trap 'rm -rf "$dir"' EXIT
+"$build/bench/make_feature_set" -o "$dir/fs" --objects 40 --group-size 5 --sessions 5 \
+  --actions press,shake,tap,squeeze --action-scales 0.3,0.6,0.9,1.2 --modality audio:6:1.5 \
+  --modality haptic:3:1.0 --group-separation 1.5 --session-sd 0.3 --atypical-share 0.25 \
+  --atypical-pull 0.6 --seed 1
+cat >"$dir/campaign.yaml" <<YAML
+seed: 1
+world: {type: dataset, data: $dir/fs, hold_out: object, groups: $dir/fs/groups.csv}
+task:
+  rewards: {right: 10, wrong: -100, sense: -1}
+arms:
+  - {name: plan, strategy: plan}
+  - {name: all_actions, strategy: all_actions}
+  - {name: best_single, strategy: best_single}
+  - {name: information_gain, strategy: information_gain}
+planner: {solver: abt, episodes: $episodes, max_steps: 100}
+YAML
+"$build/echoplan" experiment --config "$dir/campaign.yaml" --out "$out" --workers 2 >/dev/null 2>&1
+grep -E "^arm|^  all +[0-9]|minus" "$out/summary.txt"
+sed -n '/^how sure/,$p' "$out/summary.txt"
