@@ -108,6 +108,12 @@ const std::vector<Field<WorldConfig>>& world_fields() {
        .worlds = Worlds::recorded_data,
        .text = Text::file,
        .elsewhere = kRecordedOnly},
+      // Left out of the identity at its default: campaigns written before it existed.
+      {.key = "atypical",
+       .member = &WorldConfig::atypical,
+       .identity = Identity::unless_default,
+       .worlds = Worlds::recorded_data,
+       .elsewhere = kRecordedOnly},
   };
   return fields;
 }

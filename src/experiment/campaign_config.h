@@ -96,6 +96,9 @@ struct WorldConfig {
   // A frozen observation model file (`echoplan train --out`): no folds, every session replayed
   // with it (a model trained one day, judged on data recorded another). Empty: fit per fold.
   std::string model;
+  // Dataset worlds: objects unlike their class are hidden states too (loop/dataset_problem.h,
+  // perception/typicality.h), with the share each fold's model fitted on held-out data.
+  bool atypical = false;
 
   // The world replays recorded data (world_kind(type).recorded_data).
   bool recorded_data() const;

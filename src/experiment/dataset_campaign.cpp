@@ -106,7 +106,8 @@ DatasetTrials open_dataset(const CampaignConfig& config, InputFiles& files,
   }
   try {
     t.names = std::make_shared<const pomdp::Problem>(dataset_problem_file(
-        loop::dataset_problem_shape(t.task, *t.data, config.rewards), config.world.data));
+        loop::dataset_problem_shape(t.task, *t.data, config.rewards, config.world.atypical),
+        config.world.data));
   } catch (const InputError& e) {
     // Only the task can be wrong here (a cost for a behaviour the data does not have).
     throw InputError(config.source, 0, "task." + e.problem());
@@ -128,6 +129,9 @@ std::vector<int> right_actions(const DatasetTrials& trials) {
   const int sensing = static_cast<int>(trials.data->actions.size());
   std::vector<int> right;
   for (int bin : trials.task.bin_of_class) right.push_back(sensing + bin);
+  // An atypical copy of a class (loop::dataset_problem) is sorted as its class.
+  const std::size_t classes = right.size();
+  for (std::size_t k = 0; k < classes; ++k) right.push_back(right[k]);
   return right;
 }
 
@@ -174,7 +178,9 @@ void write_fold_problems(const std::filesystem::path& directory, const CampaignC
           "folds/{}/arms/*/steps.csv with it.\n",
           f + 1, config.source, config.world.data, perception::observation_kind_name(kind), f + 1);
       pomdp::write_problem_yaml(
-          text, loop::dataset_problem(trials.task, *trials.models[f], config.rewards, uses, kind),
+          text,
+          loop::dataset_problem(trials.task, *trials.models[f], config.rewards, uses, kind,
+                                config.world.atypical),
           belief, pomdp::PlannerDefaults{});
       write_file_atomically(folder / fold_problem_name(kind), text.str());
     }
@@ -191,7 +197,8 @@ ArmLoops dataset_loops(const CampaignConfig& config, const DatasetTrials& trials
     auto& p = problems[{fold, uses, kind}];
     if (!p)
       p = std::make_shared<const pomdp::Problem>(dataset_problem_file(
-          loop::dataset_problem(trials.task, *trials.models.at(fold), config.rewards, uses, kind),
+          loop::dataset_problem(trials.task, *trials.models.at(fold), config.rewards, uses, kind,
+                                config.world.atypical),
           fmt::format("{} (fold {})", config.world.data, fold + 1)));
     return p;
   };

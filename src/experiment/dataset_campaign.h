@@ -47,7 +47,8 @@ DatasetTrials open_dataset(const CampaignConfig& config, InputFiles& files,
 // The trial groups of the data: one per object, in the data's order, a trial per session.
 std::vector<ObjectGroup> dataset_groups(const DatasetTrials& trials);
 
-// The action that sorts each state right, for the report's accuracy (CampaignResults).
+// The action that sorts each state right, for the report's accuracy (CampaignResults): per class,
+// then per atypical copy of a class (a world with `atypical`; extra entries are never read without).
 std::vector<int> right_actions(const DatasetTrials& trials);
 
 // Fits every fold's model (`progress` hears "fit folds"). Returns false when stopped.

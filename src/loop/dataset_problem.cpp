@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "common/error.h"
+#include "perception/typicality.h"
 
 namespace echoplan::loop {
 
@@ -63,7 +64,30 @@ pomdp::ObjectProblemData problem_of(const perception::DatasetTask& task,
   return data;
 }
 
+// Appends the atypical copy of every class (dataset_problem.h) with share `rho`.
+void add_atypical_copies(pomdp::ObjectProblemData& data, double rho) {
+  const std::size_t classes = data.objects.size();
+  for (std::size_t k = 0; k < classes; ++k) {
+    const std::string name = atypical_name(data.objects[k]);
+    if (std::find(data.objects.begin(), data.objects.end(), name) != data.objects.end())
+      throw InputError(
+          fmt::format("class '{}' is also the name of class '{}' unlike its class: rename it", name,
+                      data.objects[k]));
+    data.objects.push_back(name);
+    data.prior.push_back(data.prior[k] * rho);
+    data.prior[k] *= 1.0 - rho;
+  }
+  for (auto& row : data.sorting_reward) row.insert(row.end(), row.begin(), row.end());
+  for (auto& table : data.observation_table) {
+    const std::vector<double> blind = perception::class_blind_row(table);
+    table.insert(table.end(), classes, blind);
+  }
+  pomdp::validate_object_problem(data);
+}
+
 }  // namespace
+
+std::string atypical_name(const std::string& name) { return name + "~atypical"; }
 
 double TaskRewards::sensing_reward(const std::string& behaviour) const {
   const auto priced = costs.find(behaviour);
@@ -73,7 +97,7 @@ double TaskRewards::sensing_reward(const std::string& behaviour) const {
 pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
                                          const perception::ObservationModel& model,
                                          const TaskRewards& rewards, std::vector<int> uses,
-                                         perception::ObservationKind kind) {
+                                         perception::ObservationKind kind, bool atypical) {
   if (model.classes() != task.classes || model.reject())
     throw InputError(fmt::format(
         "the model's classes ({}{}) are not the task's ({}): a dataset problem needs a model "
@@ -83,19 +107,24 @@ pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
   Table table;
   for (const std::string& action : model.actions())
     table.push_back(model.observation_table(action, kind));
-  return problem_of(task, model.actions(), model.observation_symbols(kind), table, rewards,
-                    std::move(uses));
+  pomdp::ObjectProblemData data = problem_of(task, model.actions(), model.observation_symbols(kind),
+                                             table, rewards, std::move(uses));
+  if (atypical) add_atypical_copies(data, model.atypical_share(kind));
+  return data;
 }
 
 pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& task,
                                                const perception::FeatureSet& set,
-                                               const TaskRewards& rewards) {
+                                               const TaskRewards& rewards, bool atypical) {
   std::vector<std::string> actions;
   for (const perception::ActionData& action : set.actions) actions.push_back(action.name);
   const std::size_t classes = task.classes.size();
   const Table uniform(actions.size(), std::vector<std::vector<double>>(
                                           classes, std::vector<double>(classes, 1.0 / classes)));
-  return problem_of(task, actions, task.classes, uniform, rewards, default_uses(set));
+  pomdp::ObjectProblemData data =
+      problem_of(task, actions, task.classes, uniform, rewards, default_uses(set));
+  if (atypical) add_atypical_copies(data, 0.5);
+  return data;
 }
 
 std::vector<int> default_uses(const perception::FeatureSet& set) {

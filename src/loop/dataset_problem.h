@@ -39,16 +39,26 @@ struct TaskRewards {
 // rewards.sensing_reward(its name). Throws InputError when `uses` is not one entry per action, or
 // negative, when `rewards.costs` prices a behaviour the model does not have, or when the model's
 // classes are not the task's (or it rejects), or `kind` is graded and the model has no grades.
+//
+// With `atypical`, objects unlike their class are hidden states too (perception/typicality.h):
+// after the classes come their atypical copies, named atypical_name(class), with the prior
+// (1 - rho) / K for each class and rho / K for each copy (rho: the model's atypical_share of
+// `kind`, which may be 0), the same sorting rewards as their class, and as observation rows the
+// action's class-blind row (the mean of its class rows).
 pomdp::ObjectProblemData dataset_problem(
     const perception::DatasetTask& task, const perception::ObservationModel& model,
     const TaskRewards& rewards, std::vector<int> uses,
-    perception::ObservationKind kind = perception::ObservationKind::labels);
+    perception::ObservationKind kind = perception::ObservationKind::labels, bool atypical = false);
 
 // The same problem's shape, with every observation row uniform and default_uses(set): its names
-// (classes, actions, bins, symbols) before any model is fitted, e.g. for a campaign's report.
+// (classes and their atypical copies with `atypical`, actions, bins, symbols) before any model is
+// fitted, e.g. for a campaign's report.
 pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& task,
                                                const perception::FeatureSet& set,
-                                               const TaskRewards& rewards);
+                                               const TaskRewards& rewards, bool atypical = false);
+
+// The hidden state of an object of class `name` unlike its class: "<name>~atypical".
+std::string atypical_name(const std::string& name);
 // Per action of `set`: the most performances of that action in any one session (a trial can
 // perform it at most that often).
 std::vector<int> default_uses(const perception::FeatureSet& set);

@@ -13,6 +13,7 @@
 #include "perception/modality_fusion.h"
 #include "perception/observation_grades.h"
 #include "perception/observation_table.h"
+#include "perception/typicality.h"
 
 namespace echoplan::perception {
 namespace {
@@ -133,11 +134,23 @@ struct Decisions {
   std::vector<bool> right;
 };
 
+// One action's inner-held-out performances as symbols (typicality.h): `cross_fitted` are the
+// tables of the other inner folds' decisions, tempered here with the action's own beta.
+HeldOutPerformances held_out(const ActionData& action, const TrainingRows& t,
+                             const std::vector<int>& symbols,
+                             const std::vector<Table>& cross_fitted, double beta) {
+  HeldOutPerformances held{{}, t.fold, t.labels, symbols, {}};
+  for (int row : t.rows) held.session.push_back(action.rows[static_cast<std::size_t>(row)].session);
+  for (const Table& table : cross_fitted) held.cross_fitted.push_back(temper(table, beta));
+  return held;
+}
+
 // The grades and the graded table (observation_grades.h), tempered for repeats as the label table
 // is: each inner fold's graded sequences scored with the table of the other folds' decisions.
-void grade(ActionCalibration& calibration, ActionFit& fit, const ActionData& action,
-           const TrainingRows& t, const Decisions& d, const Table& shrunk,
-           const std::vector<Table>& cross_fitted) {
+// Returns the graded held-out performances, for the share of objects unlike their class.
+HeldOutPerformances grade(ActionCalibration& calibration, ActionFit& fit, const ActionData& action,
+                          const TrainingRows& t, const Decisions& d, const Table& shrunk,
+                          const std::vector<Table>& cross_fitted) {
   const int classes = static_cast<int>(shrunk.size());
   calibration.grades = fit_grades(d.confidence, d.right);
   const GradeCalibration& grades = *calibration.grades;
@@ -158,6 +171,7 @@ void grade(ActionCalibration& calibration, ActionFit& fit, const ActionData& act
     graded[i] = graded_symbol(d.heard[i], grade_of(grades, d.confidence[i]), classes);
   fit.graded_temper = fit_temper(graded_cross_fitted, sequences_of(action, t, graded));
   calibration.graded_table = temper(graded_table(shrunk, grades, classes), fit.graded_temper);
+  return held_out(action, t, graded, graded_cross_fitted, fit.graded_temper);
 }
 
 // [session] -> its inner fold, or -1 for sessions outside training.
@@ -205,17 +219,22 @@ struct FeatureModelFitter {
     description.dirichlet_alpha = 0.0;
     description.table_estimate = TableEstimate::shrunk;
     std::vector<ActionModel> per_action;
+    std::vector<HeldOutPerformances> labels, graded;
     const int total = static_cast<int>(set.actions.size());
     for (int a = 0; a < total; ++a) {
       description.actions.push_back(set.actions[static_cast<std::size_t>(a)].name);
-      per_action.push_back(fit_action(set.actions[static_cast<std::size_t>(a)]));
+      per_action.push_back(fit_action(set.actions[static_cast<std::size_t>(a)], labels, graded));
       if (progress) progress("fit", a + 1, total);
     }
+    description.atypical_share = fit_atypical_share(labels);
+    description.graded_atypical_share = fit_atypical_share(graded);
     return ObservationModel(std::move(description), std::move(per_action));
   }
 
-  // Fits one action: its fusion, table and final classifiers.
-  ActionModel fit_action(const ActionData& action) const {
+  // Fits one action: its fusion, table and final classifiers. Appends its held-out performances,
+  // as labels and as graded symbols, for the share of objects unlike their class.
+  ActionModel fit_action(const ActionData& action, std::vector<HeldOutPerformances>& labels,
+                         std::vector<HeldOutPerformances>& graded) const {
     const int num_classes = static_cast<int>(task.classes.size());
     const TrainingRows t = training_rows(task, action, fold_of_session);
     const ModalityScores scores =
@@ -249,7 +268,8 @@ struct FeatureModelFitter {
     model.calibration.reject_threshold = std::numeric_limits<double>::infinity();
     model.calibration.confusion = confusion_of(task, counts);
     model.calibration.table = temper(shrunk.table, fit.temper);
-    grade(model.calibration, fit, action, t, d, shrunk.table, cross_fitted);
+    labels.push_back(held_out(action, t, d.heard, cross_fitted, fit.temper));
+    graded.push_back(grade(model.calibration, fit, action, t, d, shrunk.table, cross_fitted));
     model.calibration.fit = std::move(fit);
     for (const Modality& m : action.modalities)
       model.modalities.push_back({m.name, fit_on(classifier_name, m, t, num_classes, -1)});

@@ -43,6 +43,11 @@ struct ModelDescription {
   bool reject = true;  // the `unknown` symbol and a reject threshold per action
   double dirichlet_alpha = 1.0;
   TableEstimate table_estimate = TableEstimate::counts;
+  // The share of objects unlike their class (typicality.h), per observation kind: what a dataset
+  // problem's atypical copies of the classes start with. 0 (none) for the clips recipe and in
+  // files without it.
+  double atypical_share = 0.0;
+  double graded_atypical_share = 0.0;
 };
 
 // What session-grouped (inner) cross-validation measured about one action of a model fitted on
@@ -104,6 +109,11 @@ class ObservationModel {
   bool reject() const { return description_.reject; }
   double dirichlet_alpha() const { return description_.dirichlet_alpha; }
   TableEstimate table_estimate() const { return description_.table_estimate; }
+  // The share of objects unlike their class for observations of `kind` (ModelDescription).
+  double atypical_share(ObservationKind kind) const {
+    return kind == ObservationKind::graded ? description_.graded_atypical_share
+                                           : description_.atypical_share;
+  }
   // classes() followed by "unknown" when reject() is on.
   std::vector<std::string> observation_symbols() const;
   // Every action has graded observations (a model trained since they exist).

@@ -14,6 +14,7 @@
 #include "common/file_io.h"
 #include "common/json_fields.h"
 #include "common/json_parse.h"
+#include "perception/typicality.h"
 
 namespace echoplan::perception {
 
@@ -90,6 +91,9 @@ nlohmann::json observation_model_to_json(const ObservationModel& model) {
           {"reject", model.reject()},
           {"dirichlet_alpha", model.dirichlet_alpha()},
           {"table_estimate", table_estimate_name(model.table_estimate())},
+          {"atypical_share",
+           {{"labels", model.atypical_share(ObservationKind::labels)},
+            {"graded", model.atypical_share(ObservationKind::graded)}}},
           {"per_action", per_action}};
 }
 
@@ -153,6 +157,24 @@ bool is_audio_preset(const std::string& name) {
 
 // Everything but the per-action entries; the classifier name is checked against the registry,
 // and an old name (classifier_aliases()) becomes the current one.
+// Absent in files written before objects unlike their class were modelled: none.
+void read_atypical_share(ModelDescription& d, const nlohmann::json& doc,
+                         const std::string& source) {
+  if (!doc.contains("atypical_share")) return;
+  const auto& shares = doc["atypical_share"];
+  const auto share = [&](const char* kind) {
+    const std::string where = std::string("atypical_share.") + kind;
+    const double rho =
+        jf::number(jf::member(shares, kind, "atypical_share", source), where, source);
+    if (!(rho >= 0.0 && rho <= kMostAtypical))
+      throw InputError(source, 0,
+                       fmt::format("{}: {} is not in [0, {}]", where, rho, kMostAtypical));
+    return rho;
+  };
+  d.atypical_share = share("labels");
+  d.graded_atypical_share = share("graded");
+}
+
 ModelDescription read_description(const nlohmann::json& doc, const std::string& source) {
   ModelDescription d;
   d.analysis = read_analysis(doc, source);
@@ -168,6 +190,7 @@ ModelDescription read_description(const nlohmann::json& doc, const std::string& 
                                  classifier, fmt::join(classifier_names(), ", "),
                                  fmt::join(row_classifier_names(), ", ")));
   }
+  read_atypical_share(d, doc, source);
   d.classes = jf::names(jf::member(doc, "classes", "", source), -1, "classes", source);
   if (d.classes.size() < 2)
     throw InputError(source, 0, "classes: a model needs at least two classes");

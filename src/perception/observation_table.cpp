@@ -105,11 +105,13 @@ double sequence_nll(std::span<const Table> tables, double beta,
   double total = 0.0;
   std::vector<double> log_posterior(tables.front().size());
   for (const Sequence& sequence : sequences) {
-    const Table& table = tempered.at(static_cast<std::size_t>(sequence.table));
     std::fill(log_posterior.begin(), log_posterior.end(), 0.0);
-    for (int symbol : sequence.symbols)
+    for (std::size_t i = 0; i < sequence.symbols.size(); ++i) {
+      const int which = sequence.tables.empty() ? sequence.table : sequence.tables.at(i);
+      const Table& table = tempered.at(static_cast<std::size_t>(which));
       for (std::size_t c = 0; c < table.size(); ++c)
-        log_posterior[c] += std::log(table[c][static_cast<std::size_t>(symbol)]);
+        log_posterior[c] += std::log(table[c][static_cast<std::size_t>(sequence.symbols[i])]);
+    }
     const double top = *std::max_element(log_posterior.begin(), log_posterior.end());
     double sum = 0.0;
     for (double l : log_posterior) sum += std::exp(l - top);

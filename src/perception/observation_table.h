@@ -122,6 +122,9 @@ struct Sequence {
   int true_class = 0;
   std::vector<int> symbols;
   int table = 0;  // which of the tables it is scored with (the multi-table functions)
+  // Per symbol, which table scores it, for a sequence of several actions (each heard through its
+  // own table); empty: every symbol is scored with `table`.
+  std::vector<int> tables{};
 };
 
 // Rows p^beta, renormalised.

@@ -99,5 +99,42 @@ TEST(DatasetProblem, CostsPriceBehavioursOneByOneAndTheOthersStayAtSense) {
   EXPECT_THROW(dataset_problem(f.task, f.model, rewards, {1, 2}), InputError);
 }
 
+// Objects unlike their class: an atypical copy of every class after the classes, with the model's
+// share of the prior, its class's sorting rewards and the action's class-blind observation row.
+TEST(DatasetProblem, AtypicalCopiesOfTheClassesCarryTheModelsShare) {
+  Fitted f = fitted();
+  perception::ModelDescription d = f.model.description();
+  d.atypical_share = 0.2;
+  std::vector<perception::ActionModel> actions;
+  for (const std::string& a : f.model.actions()) {
+    perception::ActionModel m{f.model.modalities(a), f.model.weights(a), f.model.calibration(a)};
+    actions.push_back(std::move(m));
+  }
+  const perception::ObservationModel model(d, std::move(actions));
+  const pomdp::ObjectProblemData p = dataset_problem(f.task, model, {}, default_uses(f.set),
+                                                     perception::ObservationKind::labels, true);
+  ASSERT_EQ(p.objects.size(), 12u);
+  EXPECT_EQ(p.objects[0], "obj0");
+  EXPECT_EQ(p.objects[6], "obj0~atypical");
+  EXPECT_EQ(p.objects[11], "obj5~atypical");
+  for (std::size_t k = 0; k < 6; ++k) {
+    EXPECT_DOUBLE_EQ(p.prior[k], 0.8 / 6);
+    EXPECT_DOUBLE_EQ(p.prior[k + 6], 0.2 / 6);
+    for (std::size_t j = 0; j < p.sorting.size(); ++j)
+      EXPECT_EQ(p.sorting_reward[j][k + 6], p.sorting_reward[j][k]);
+  }
+  const auto& press = model.observation_table("press");
+  for (std::size_t o = 0; o < p.observation_symbols.size(); ++o) {
+    double mean = 0.0;
+    for (const auto& row : press) mean += row[o] / 6.0;
+    for (std::size_t k = 6; k < 12; ++k) EXPECT_NEAR(p.observation_table[0][k][o], mean, 1e-12);
+    EXPECT_EQ(p.observation_table[0][2][o], press[2][o]);
+  }
+  // Without: the classes alone.
+  EXPECT_EQ(dataset_problem(f.task, model, {}, default_uses(f.set)).objects.size(), 6u);
+  // The shape names the copies too, for a campaign's report.
+  EXPECT_EQ(dataset_problem_shape(f.task, f.set, {}, true).objects, p.objects);
+}
+
 }  // namespace
 }  // namespace echoplan::loop

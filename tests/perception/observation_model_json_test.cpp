@@ -50,6 +50,19 @@ TEST(ObservationModelJson, RecordsTheTableEstimateAndReadsOldFilesAsCounts) {
   EXPECT_EQ(observation_model_from_json(old, "old.json").table_estimate(), TableEstimate::counts);
 }
 
+// The share of objects unlike their class round-trips; a file written before it has none.
+TEST(ObservationModelJson, KeepsTheAtypicalShareAndReadsOldFilesAsNone) {
+  nlohmann::json doc = observation_model_to_json(trained().model);
+  doc["atypical_share"] = {{"labels", 0.125}, {"graded", 0.25}};
+  const ObservationModel model = observation_model_from_json(doc, "shares.json");
+  EXPECT_EQ(model.atypical_share(ObservationKind::labels), 0.125);
+  EXPECT_EQ(model.atypical_share(ObservationKind::graded), 0.25);
+  EXPECT_EQ(observation_model_to_json(model), doc);
+  doc.erase("atypical_share");
+  EXPECT_EQ(observation_model_from_json(doc, "old.json").atypical_share(ObservationKind::labels),
+            0.0);
+}
+
 // tests/data/perception/seed_gaussian_model.json was written when report-gaussian was called
 // seed-gaussian: it loads under the current name, and saves with it.
 TEST(ObservationModelJson, ReadsAnOldClassifierNameAsTheCurrentOne) {
@@ -134,6 +147,10 @@ TEST(ObservationModelJson, EveryBrokenModelFileIsAClearError) {
   expect_error(with([](auto& d) { d["version"] = 0; }), "version 0 is not supported");
   expect_error(with([](auto& d) { d["format"] = "other"; }), "not an observation model");
   expect_error(with([](auto& d) { d.erase("classes"); }), "classes: missing");
+  expect_error(with([](auto& d) { d["atypical_share"]["graded"] = 0.9; }),
+               "atypical_share.graded: 0.9 is not in [0, 0.5]");
+  expect_error(with([](auto& d) { d["atypical_share"].erase("labels"); }),
+               "atypical_share.labels: missing");
   expect_error(with([](auto& d) { d["classifier"] = "magic"; }),
                "classifier: 'magic' is neither an audio preset");
   expect_error(with([](auto& d) { d["analysis"]["sample_rate"] = 5; }), "analysis.sample_rate");

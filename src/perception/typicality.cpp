@@ -1,0 +1,124 @@
+#include "perception/typicality.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "common/golden_section.h"
+
+namespace echoplan::perception {
+
+namespace {
+
+// The first performance of an action in a session: its fold, class and symbol.
+struct FirstPerformance {
+  int fold = 0;
+  int label = 0;
+  int symbol = 0;
+};
+
+// log(exp(a) + exp(b)), stably.
+double log_add(double a, double b) {
+  const double top = std::max(a, b);
+  if (top == -INFINITY) return top;
+  return top + std::log(std::exp(a - top) + std::exp(b - top));
+}
+
+// A sequence's log-likelihoods that do not depend on rho: per class, log prod_i P_ai(o_i | k);
+// and the class-blind log prod_i m_ai(o_i).
+struct ScoredSequence {
+  std::vector<double> log_typical;
+  double log_blind = 0.0;
+  int true_class = 0;
+};
+
+std::vector<ScoredSequence> score(std::span<const Table> tables,
+                                  std::span<const Sequence> sequences) {
+  std::vector<std::vector<double>> blind;
+  for (const Table& table : tables) blind.push_back(class_blind_row(table));
+  const std::size_t classes = tables.front().size();
+  std::vector<ScoredSequence> scored;
+  for (const Sequence& sequence : sequences) {
+    ScoredSequence s{std::vector<double>(classes, 0.0), 0.0, sequence.true_class};
+    for (std::size_t i = 0; i < sequence.symbols.size(); ++i) {
+      const auto t = static_cast<std::size_t>(sequence.tables.at(i));
+      const auto o = static_cast<std::size_t>(sequence.symbols[i]);
+      for (std::size_t c = 0; c < classes; ++c) s.log_typical[c] += std::log(tables[t][c][o]);
+      s.log_blind += std::log(blind[t][o]);
+    }
+    scored.push_back(std::move(s));
+  }
+  return scored;
+}
+
+// Sum of -log P(true class | sequence) under the mixture with share rho, uniform class prior.
+double mixture_nll(const std::vector<ScoredSequence>& scored, double rho) {
+  const double log_typical = std::log1p(-rho);
+  const double log_atypical = rho > 0 ? std::log(rho) : -INFINITY;
+  double total = 0.0;
+  for (const ScoredSequence& s : scored) {
+    const double blind = log_atypical + s.log_blind;
+    double log_evidence = -INFINITY;
+    for (double l : s.log_typical)
+      log_evidence = log_add(log_evidence, log_add(log_typical + l, blind));
+    total += log_evidence -
+             log_add(log_typical + s.log_typical[static_cast<std::size_t>(s.true_class)], blind);
+  }
+  return total;
+}
+
+}  // namespace
+
+std::vector<Sequence> cross_behaviour_sequences(std::span<const HeldOutPerformances> actions) {
+  if (actions.empty()) return {};
+  const auto folds = static_cast<int>(actions.front().cross_fitted.size());
+  // [session][action] -> its first performance; actions in index order.
+  std::map<int, std::map<int, FirstPerformance>> sessions;
+  for (std::size_t a = 0; a < actions.size(); ++a) {
+    const HeldOutPerformances& held = actions[a];
+    for (std::size_t i = 0; i < held.session.size(); ++i)
+      sessions[held.session[i]].try_emplace(
+          static_cast<int>(a), FirstPerformance{held.fold[i], held.label[i], held.symbol[i]});
+  }
+  std::vector<Sequence> sequences;
+  for (const auto& [session, performed] : sessions) {
+    const std::vector<std::pair<int, FirstPerformance>> order(performed.begin(), performed.end());
+    const std::size_t n = order.size();
+    Sequence sequence;
+    sequence.true_class = order.front().second.label;
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto& [action, first] = order[(static_cast<std::size_t>(session) + k) % n];
+      sequence.symbols.push_back(first.symbol);
+      sequence.tables.push_back(action * folds + first.fold);
+      sequences.push_back(sequence);
+    }
+  }
+  return sequences;
+}
+
+std::vector<double> class_blind_row(const Table& table) {
+  std::vector<double> row(table.front().size(), 0.0);
+  for (const auto& r : table)
+    for (std::size_t o = 0; o < row.size(); ++o) row[o] += r[o] / static_cast<double>(table.size());
+  return row;
+}
+
+double typicality_nll(std::span<const Table> tables, double rho,
+                      std::span<const Sequence> sequences) {
+  return mixture_nll(score(tables, sequences), rho);
+}
+
+double fit_atypical_share(std::span<const HeldOutPerformances> actions) {
+  const std::vector<Sequence> sequences = cross_behaviour_sequences(actions);
+  if (sequences.empty()) return 0.0;
+  std::vector<Table> tables;
+  for (const HeldOutPerformances& held : actions)
+    tables.insert(tables.end(), held.cross_fitted.begin(), held.cross_fitted.end());
+  const std::vector<ScoredSequence> scored = score(tables, sequences);
+  const auto nll = [&](double rho) { return mixture_nll(scored, rho); };
+  const double rho = golden_section_minimum(nll, 0.0, kMostAtypical);
+  // The search never evaluates the end points; keep 0 (the tables as they are) unless rho helps.
+  return nll(rho) < nll(0.0) ? rho : 0.0;
+}
+
+}  // namespace echoplan::perception
