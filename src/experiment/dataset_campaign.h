@@ -48,7 +48,8 @@ DatasetTrials open_dataset(const CampaignConfig& config, InputFiles& files,
 std::vector<ObjectGroup> dataset_groups(const DatasetTrials& trials);
 
 // The action that sorts each state right, for the report's accuracy (CampaignResults): per class,
-// then per atypical copy of a class (a world with `atypical`; extra entries are never read without).
+// then per atypical copy of a class (a world with `atypical`; extra entries are never read
+// without).
 std::vector<int> right_actions(const DatasetTrials& trials);
 
 // Fits every fold's model (`progress` hears "fit folds"). Returns false when stopped.
