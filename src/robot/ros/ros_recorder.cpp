@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "robot/ros/clip_message.h"
+#include "robot/ros/master_watch.h"
 #include "robot/ros/ros_protocol.h"
 #include "robot/transient_error.h"
 
@@ -54,8 +55,8 @@ void RosRecorder::start(const std::string& action) {
         answered ? "the listener could not start recording: " + last_state_.error
                  : fmt::format(
                        "the listener did not report recording within {:g} s after {} was "
-                       "set (is echoplan_listener running?)",
-                       wait_timeout_s_, ros_names::kRecordParam);
+                       "set (is echoplan_listener running?){}",
+                       wait_timeout_s_, ros_names::kRecordParam, master_unreachable_note());
     ros::param::set(ros_names::kRecordParam, false);
     recording_ = false;
     throw std::runtime_error(fmt::format("recording '{}': {}", action, why));
@@ -78,8 +79,9 @@ audio::AudioClip RosRecorder::stop() {
   if (!answered)
     throw TransientError(
         fmt::format("recording '{}': no clip on {} within {:g} s after {} fell (is "
-                    "echoplan_listener running?)",
-                    action_, ros_names::kClipTopic, wait_timeout_s_, ros_names::kRecordParam));
+                    "echoplan_listener running?){}",
+                    action_, ros_names::kClipTopic, wait_timeout_s_, ros_names::kRecordParam,
+                    master_unreachable_note()));
   const echoplan_ros::Clip::ConstPtr clip = last_clip_;
   lock.unlock();
   capture_.overflow_callbacks = clip->overflow_callbacks;

@@ -27,6 +27,15 @@
 #   restart_listener  the listener is killed after the first step and started again a second later:
 #                     the run goes on (a recording it was making goes unheard; a kill between
 #                     recordings costs only the wait), every trial ends in a sorting action
+#   restart_master    the ROS master (roscore) is killed with SIGKILL after the first step and
+#                     started again on the same port a second later: every node registers with the
+#                     new master again (it lists each one's services and topics), the run goes on
+#                     and every trial ends in a sorting action (a performance heard across the
+#                     outage may go unheard: at most one skipped observation)
+#   retry_safe        the arm's first sorting action fails with retry_safe (flaky_arm_stand_in.py
+#                     in front of the simulated robot): the loop repeats it (attempts 2 in
+#                     loop_steps.jsonl) and every trial ends in a sorting action
+#   fail_unsafe       the same failure without retry_safe: that trial ends as failed, the others sort
 set -u
 case_name=$1
 build=$2
@@ -46,7 +55,7 @@ if [ "$case_name" = mic ]; then
   listener_params=(_min_seconds:=0.5)
   file_microphone "$build/echoplan" || { fail "making the file-backed microphone"; exit 1; }
 fi
-case "$case_name" in kill_observation | restart_*) trials=3 ;; esac
+case "$case_name" in kill_observation | restart_* | retry_safe | fail_unsafe) trials=3 ;; esac
 object_param=()
 if [ "$case_name" = run ]; then
   trials=1
@@ -61,7 +70,16 @@ if [ "$case_name" = launch ]; then
   planner_pid=$!
   pgids+=("$planner_pid")
 else
-  start sim_robot "$build/echoplan_sim_robot"
+  if [ "$case_name" = retry_safe ] || [ "$case_name" = fail_unsafe ]; then
+    # The stand-in serves ExecuteAction and passes it on to the simulated robot under another name.
+    start sim_robot "$build/echoplan_sim_robot" /echoplan/execute_action:=/sim/execute_action
+    retry_safe=false
+    [ "$case_name" = retry_safe ] && retry_safe=true
+    PYTHONPATH=$build/ros/python${PYTHONPATH:+:$PYTHONPATH} \
+      start flaky_arm /usr/bin/python3 "$(dirname "$0")/flaky_arm_stand_in.py" $retry_safe
+  else
+    start sim_robot "$build/echoplan_sim_robot"
+  fi
   start listener "$build/echoplan_listener" _source:=$source _max_seconds:=0.5 "${listener_params[@]}"
   listener_pid=$started
   if [ "$case_name" = restart_observation ]; then
@@ -94,6 +112,16 @@ if [ "$case_name" = restart_listener ]; then
   { kill -KILL -- "-$listener_pid"; wait "$listener_pid"; } 2>/dev/null
   sleep 1
   start listener_again "$build/echoplan_listener" _source:=$source _max_seconds:=0.5
+fi
+if [ "$case_name" = restart_master ]; then
+  # Once a step is logged, kill the master (roscore's whole process group: rosmaster, rosout) and
+  # start it again on the same port a second later.
+  for _ in $(seq 600); do [ "$(cat "$work/ros_run/loop_steps.csv" 2>/dev/null | wc -l)" -ge 2 ] && break; sleep 0.05; done
+  { kill -KILL -- "-$roscore_pid"; wait "$roscore_pid"; } 2>/dev/null
+  echo "killed the master (roscore, process group $roscore_pid) after step 1"
+  sleep 1
+  start roscore_again roscore -p "${ROS_MASTER_URI##*:}"
+  echo "started the master again on ${ROS_MASTER_URI}"
 fi
 wait "$planner_pid"
 status=$?
@@ -161,6 +189,54 @@ case "$case_name" in
       fault="recorder failed"
     fi
     echo "$(grep -c "$fault" "$work/ros_run/loop_steps.jsonl") step(s) with '$fault'; $ended trials sorted"
+    ;;
+  restart_master)
+    [ "$status" -eq 0 ] || { fail "echoplan_planner exited $status after the master restarted"; cat "$work/planner.log"; }
+    ended=$(awk -F, 'NR > 1 && $3 ~ /^move_to_/ {n++} END {print n + 0}' "$work/ros_run/loop_steps.csv")
+    [ "$ended" -eq "$trials" ] || fail "$ended of $trials trials ended in a sorting action"
+    skipped=$(grep -c '"observation_skipped":true' "$work/ros_run/loop_steps.jsonl")
+    [ "$skipped" -le 1 ] || fail "$skipped observations skipped; the outage can cost one at most"
+    # The new master knows every node's services and topics again: what a node started now looks up.
+    /usr/bin/python3 - >"$work/registrations.log" 2>&1 <<'PY' || { fail "the new master lacks registrations"; cat "$work/registrations.log"; }
+import sys
+import rosgraph
+publishers, subscribers, services = rosgraph.Master("/ros_loop_test").getSystemState()
+known = {("pub", t, n) for t, ns in publishers for n in ns} | {("sub", t, n) for t, ns in subscribers for n in ns} \
+    | {("srv", t, n) for t, ns in services for n in ns}
+wanted = [("srv", "/echoplan/execute_action", "/echoplan_sim_robot"), ("srv", "/echoplan/begin_trial", "/echoplan_sim_robot"),
+          ("pub", "/echoplan/sim_clip", "/echoplan_sim_robot"), ("srv", "/echoplan/observe", "/echoplan_observation"),
+          ("sub", "/echoplan/sim_clip", "/echoplan_listener"), ("pub", "/echoplan/clip", "/echoplan_listener"),
+          ("pub", "/echoplan/recording", "/echoplan_listener"), ("sub", "/echoplan/clip", "/echoplan_planner"),
+          ("sub", "/echoplan/recording", "/echoplan_planner")]
+missing = [w for w in wanted if w not in known]
+for kind, name, node in missing:
+    print("the restarted master does not know %s's %s %s" % (node, {"pub": "publisher of", "sub": "subscriber to", "srv": "service"}[kind], name))
+sys.exit(1 if missing else 0)
+PY
+    for node in sim_robot listener observation planner; do
+      grep -q "restarted; registered" "$work/$node.log" || fail "echoplan_$node did not say it registered again"
+    done
+    echo "the master was killed after step 1 and restarted; $(grep -h -o 'registered [0-9]* topic.*' "$work"/{sim_robot,listener,observation,planner}.log | sort | uniq -c | tr -s ' ' | paste -sd';')"
+    echo "$skipped observation(s) skipped; $ended trials sorted"
+    ;;
+  retry_safe | fail_unsafe)
+    [ "$status" -eq 0 ] || { fail "echoplan_planner exited $status"; cat "$work/planner.log"; }
+    # The sorting step the stand-in failed: its attempts and its status.
+    read -r attempts sort_status < <(/usr/bin/python3 -c '
+import json, sys
+steps = [json.loads(line) for line in open(sys.argv[1])]
+first = next(s for s in steps if s["action"].startswith("move_to_"))
+print(first["report"]["attempts"], first["report"]["status"])' "$work/ros_run/loop_steps.jsonl")
+    ended=$(awk -F, 'NR > 1 && $3 ~ /^move_to_/ && $4 == "done" {n++} END {print n + 0}' "$work/ros_run/loop_steps.csv")
+    if [ "$case_name" = retry_safe ]; then
+      [ "$attempts $sort_status" = "2 done" ] || fail "the first sorting action took $attempts attempt(s), $sort_status; expected 2, done"
+      [ "$ended" -eq "$trials" ] || fail "$ended of $trials trials sorted"
+    else
+      [ "$attempts $sort_status" = "1 failed" ] || fail "the first sorting action took $attempts attempt(s), $sort_status; expected 1, failed"
+      [ "$ended" -eq $((trials - 1)) ] || fail "$ended of $trials trials sorted; expected all but the failed one"
+      grep -q -- "-> failed: the gripper missed" "$work/planner.log" || fail "the planner's log does not say the action failed"
+    fi
+    echo "first sorting action: $attempts attempt(s), $sort_status; $ended of $trials trials sorted"
     ;;
   *) fail "unknown case $case_name" ;;
 esac
