@@ -31,7 +31,8 @@
 #                     started again on the same port a second later: every node registers with the
 #                     new master again (it lists each one's services and topics), the run goes on
 #                     and every trial ends in a sorting action (a performance heard across the
-#                     outage may go unheard: at most one skipped observation)
+#                     outage may go unheard: at most one skipped observation); a planner started
+#                     after it finds every node through the new master
 #   retry_safe        the arm's first sorting action fails with retry_safe (flaky_arm_stand_in.py
 #                     in front of the simulated robot): the loop repeats it (attempts 2 in
 #                     loop_steps.jsonl) and every trial ends in a sorting action
@@ -78,7 +79,10 @@ else
     PYTHONPATH=$build/ros/python${PYTHONPATH:+:$PYTHONPATH} \
       start flaky_arm /usr/bin/python3 "$(dirname "$0")/flaky_arm_stand_in.py" $retry_safe
   else
-    start sim_robot "$build/echoplan_sim_robot"
+    # restart_master: actions that take a while, so the run outlasts the master's restart.
+    sim_params=()
+    [ "$case_name" = restart_master ] && sim_params=(_min_duration_s:=0.4)
+    start sim_robot "$build/echoplan_sim_robot" "${sim_params[@]}"
   fi
   start listener "$build/echoplan_listener" _source:=$source _max_seconds:=0.5 "${listener_params[@]}"
   listener_pid=$started
@@ -113,15 +117,49 @@ if [ "$case_name" = restart_listener ]; then
   sleep 1
   start listener_again "$build/echoplan_listener" _source:=$source _max_seconds:=0.5
 fi
+# Whether the master knows every echoplan node's services and topics (what a node started now would
+# look up); prints what it lacks.
+check_registrations() {
+  /usr/bin/python3 - <<'PY'
+import sys
+import rosgraph
+publishers, subscribers, services = rosgraph.Master("/ros_loop_test").getSystemState()
+known = {("pub", t, n) for t, ns in publishers for n in ns} | {("sub", t, n) for t, ns in subscribers for n in ns} \
+    | {("srv", t, n) for t, ns in services for n in ns}
+wanted = [("srv", "/echoplan/execute_action", "/echoplan_sim_robot"), ("srv", "/echoplan/begin_trial", "/echoplan_sim_robot"),
+          ("pub", "/echoplan/sim_clip", "/echoplan_sim_robot"), ("srv", "/echoplan/observe", "/echoplan_observation"),
+          ("sub", "/echoplan/sim_clip", "/echoplan_listener"), ("pub", "/echoplan/clip", "/echoplan_listener"),
+          ("pub", "/echoplan/recording", "/echoplan_listener"), ("sub", "/echoplan/clip", "/echoplan_planner"),
+          ("sub", "/echoplan/recording", "/echoplan_planner")]
+missing = [w for w in wanted if w not in known]
+for kind, name, node in missing:
+    print("the restarted master does not know %s's %s %s" % (node, {"pub": "publisher of", "sub": "subscriber to", "srv": "service"}[kind], name))
+sys.exit(1 if missing else 0)
+PY
+}
+
 if [ "$case_name" = restart_master ]; then
-  # Once a step is logged, kill the master (roscore's whole process group: rosmaster, rosout) and
-  # start it again on the same port a second later.
+  # Once a step is logged, kill the master and start it again on the same port a second later:
+  # roscore's roslaunch and the rosmaster and rosout it started (in process groups of their own, so
+  # by the pids it logged).
   for _ in $(seq 600); do [ "$(cat "$work/ros_run/loop_steps.csv" 2>/dev/null | wc -l)" -ge 2 ] && break; sleep 0.05; done
-  { kill -KILL -- "-$roscore_pid"; wait "$roscore_pid"; } 2>/dev/null
-  echo "killed the master (roscore, process group $roscore_pid) after step 1"
+  core_pids=$(grep -o 'process\[\(master\|rosout-1\)\]: started with pid \[[0-9]*\]' "$work/roscore.log" | grep -o '[0-9]*\]$' | tr -d ']')
+  { kill -KILL -- "-$roscore_pid" $core_pids; wait "$roscore_pid"; } 2>/dev/null
+  echo "killed the master (roscore $roscore_pid, rosmaster and rosout:" $core_pids") after step 1"
   sleep 1
   start roscore_again roscore -p "${ROS_MASTER_URI##*:}"
   echo "started the master again on ${ROS_MASTER_URI}"
+  # Each node notices within a second or so and registers again; asked while the planner still runs
+  # (it unregisters when it exits).
+  for _ in $(seq 100); do
+    [ "$(cat "$work"/{sim_robot,listener,observation,planner}.log | grep -c 'restarted; registered')" -ge 4 ] && break
+    sleep 0.1
+  done
+  for node in sim_robot listener observation planner; do
+    grep -q "restarted; registered" "$work/$node.log" || fail "echoplan_$node did not say it registered again"
+  done
+  check_registrations >"$work/registrations.log" 2>&1 || { fail "the new master lacks registrations"; cat "$work/registrations.log"; }
+  kill -0 "$planner_pid" 2>/dev/null || fail "the planner ended before the registrations were checked (the run is too short)"
 fi
 wait "$planner_pid"
 status=$?
@@ -196,27 +234,18 @@ case "$case_name" in
     [ "$ended" -eq "$trials" ] || fail "$ended of $trials trials ended in a sorting action"
     skipped=$(grep -c '"observation_skipped":true' "$work/ros_run/loop_steps.jsonl")
     [ "$skipped" -le 1 ] || fail "$skipped observations skipped; the outage can cost one at most"
-    # The new master knows every node's services and topics again: what a node started now looks up.
-    /usr/bin/python3 - >"$work/registrations.log" 2>&1 <<'PY' || { fail "the new master lacks registrations"; cat "$work/registrations.log"; }
-import sys
-import rosgraph
-publishers, subscribers, services = rosgraph.Master("/ros_loop_test").getSystemState()
-known = {("pub", t, n) for t, ns in publishers for n in ns} | {("sub", t, n) for t, ns in subscribers for n in ns} \
-    | {("srv", t, n) for t, ns in services for n in ns}
-wanted = [("srv", "/echoplan/execute_action", "/echoplan_sim_robot"), ("srv", "/echoplan/begin_trial", "/echoplan_sim_robot"),
-          ("pub", "/echoplan/sim_clip", "/echoplan_sim_robot"), ("srv", "/echoplan/observe", "/echoplan_observation"),
-          ("sub", "/echoplan/sim_clip", "/echoplan_listener"), ("pub", "/echoplan/clip", "/echoplan_listener"),
-          ("pub", "/echoplan/recording", "/echoplan_listener"), ("sub", "/echoplan/clip", "/echoplan_planner"),
-          ("sub", "/echoplan/recording", "/echoplan_planner")]
-missing = [w for w in wanted if w not in known]
-for kind, name, node in missing:
-    print("the restarted master does not know %s's %s %s" % (node, {"pub": "publisher of", "sub": "subscriber to", "srv": "service"}[kind], name))
-sys.exit(1 if missing else 0)
-PY
+    # A planner started now looks every node up through the new master.
+    start planner_after timeout 60 "$build/echoplan_planner" _problem:="$work/problem.yaml" _out:="$work/ros_run_after" \
+      _seed:=$seed _episodes:=$episodes _trials:=1 _wait_timeout_s:=10
+    wait "$started"
+    after=$?
+    [ "$after" -eq 0 ] || { fail "a planner started after the restart exited $after"; tail -5 "$work/planner_after.log"; }
+    grep -q 'move_to_' "$work/ros_run_after/loop_steps.csv" 2>/dev/null \
+      || fail "the trial of a planner started after the restart did not end in a sorting action"
+    echo "the master was killed after step 1 and restarted; each node registered again:"
     for node in sim_robot listener observation planner; do
-      grep -q "restarted; registered" "$work/$node.log" || fail "echoplan_$node did not say it registered again"
+      echo "  echoplan_$node: $(grep -o 'registered [0-9]* topic.*again' "$work/$node.log" | head -1)"
     done
-    echo "the master was killed after step 1 and restarted; $(grep -h -o 'registered [0-9]* topic.*' "$work"/{sim_robot,listener,observation,planner}.log | sort | uniq -c | tr -s ' ' | paste -sd';')"
     echo "$skipped observation(s) skipped; $ended trials sorted"
     ;;
   retry_safe | fail_unsafe)
