@@ -101,6 +101,15 @@ bool MasterWatch::register_again() {
   return true;
 }
 
+bool wait_for_master(double timeout_s) {
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(timeout_s);
+  while (!ros::master::check()) {
+    if (ros::WallTime::now() >= deadline || !ros::ok()) return false;
+    ros::WallDuration(0.1).sleep();
+  }
+  return true;
+}
+
 std::string master_unreachable_note() {
   return ros::master::check()
              ? ""

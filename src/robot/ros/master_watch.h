@@ -57,6 +57,10 @@ class MasterWatch {
   ros::AsyncSpinner spinner_;
 };
 
+// Waits up to `timeout_s` for the master to answer (a restart takes a second or two); false when it
+// did not. For a client about to call the master, which must neither hang nor fail at once.
+bool wait_for_master(double timeout_s);
+
 // " (the ROS master at URI does not answer)" when it does not, else "": for the messages of a
 // call or a wait that failed, so that a user whose master died is told so rather than sent after
 // the node.

@@ -35,8 +35,18 @@ void RosRecorder::on_clip(const echoplan_ros::Clip::ConstPtr& clip) {
   changed_.notify_all();
 }
 
+// The record parameters live on the master: one restarting is waited for, one gone ends the run
+// (no recording can start or stop without it), never a silent failure of ros::param::set.
+void RosRecorder::require_master(const std::string& action) const {
+  if (!wait_for_master(wait_timeout_s_))
+    throw std::runtime_error(fmt::format(
+        "recording '{}': the ROS master at {} does not answer (waited {:g} s), so {} cannot be set",
+        action, ros::master::getURI(), wait_timeout_s_, ros_names::kRecordParam));
+}
+
 void RosRecorder::start(const std::string& action) {
   if (recording_) throw std::logic_error("RosRecorder::start: a recording is already running");
+  require_master(action);
   std::unique_lock lock(mutex_);
   const std::uint64_t states_before = states_received_;
   const auto t0 = std::chrono::steady_clock::now();
@@ -69,6 +79,7 @@ audio::AudioClip RosRecorder::stop() {
   if (!recording_) throw std::logic_error("RosRecorder::stop: no recording is running");
   recording_ = false;
   capture_ = CaptureReport{};
+  require_master(action_);
   std::unique_lock lock(mutex_);
   const std::uint64_t clips_before = clips_received_;
   ros::param::set(ros_names::kRecordParam, false);

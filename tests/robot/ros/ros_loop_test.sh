@@ -33,6 +33,8 @@
 #                     and every trial ends in a sorting action (a performance heard across the
 #                     outage may go unheard: at most one skipped observation); a planner started
 #                     after it finds every node through the new master
+#   kill_master       the master is killed after the first step and not started again: the planner
+#                     stops with exit status 1 and a logged failure naming the master
 #   retry_safe        the arm's first sorting action fails with retry_safe (flaky_arm_stand_in.py
 #                     in front of the simulated robot): the loop repeats it (attempts 2 in
 #                     loop_steps.jsonl) and every trial ends in a sorting action
@@ -56,7 +58,7 @@ if [ "$case_name" = mic ]; then
   listener_params=(_min_seconds:=0.5)
   file_microphone "$build/echoplan" || { fail "making the file-backed microphone"; exit 1; }
 fi
-case "$case_name" in kill_observation | restart_* | retry_safe | fail_unsafe) trials=3 ;; esac
+case "$case_name" in kill_* | restart_* | retry_safe | fail_unsafe) trials=3 ;; esac
 object_param=()
 if [ "$case_name" = run ]; then
   trials=1
@@ -81,7 +83,7 @@ else
   else
     # restart_master: actions that take a while, so the run outlasts the master's restart.
     sim_params=()
-    [ "$case_name" = restart_master ] && sim_params=(_min_duration_s:=0.4)
+    case "$case_name" in *_master) sim_params=(_min_duration_s:=0.4) ;; esac
     start sim_robot "$build/echoplan_sim_robot" "${sim_params[@]}"
   fi
   start listener "$build/echoplan_listener" _source:=$source _max_seconds:=0.5 "${listener_params[@]}"
@@ -138,7 +140,7 @@ sys.exit(1 if missing else 0)
 PY
 }
 
-if [ "$case_name" = restart_master ]; then
+if [ "$case_name" = restart_master ] || [ "$case_name" = kill_master ]; then
   # Once a step is logged, kill the master and start it again on the same port a second later:
   # roscore's roslaunch and the rosmaster and rosout it started (in process groups of their own, so
   # by the pids it logged).
@@ -146,6 +148,9 @@ if [ "$case_name" = restart_master ]; then
   core_pids=$(grep -o 'process\[\(master\|rosout-1\)\]: started with pid \[[0-9]*\]' "$work/roscore.log" | grep -o '[0-9]*\]$' | tr -d ']')
   { kill -KILL -- "-$roscore_pid" $core_pids; wait "$roscore_pid"; } 2>/dev/null
   echo "killed the master (roscore $roscore_pid, rosmaster and rosout:" $core_pids") after step 1"
+  killed_at=$(date +%s.%N)
+fi
+if [ "$case_name" = restart_master ]; then
   sleep 1
   start roscore_again roscore -p "${ROS_MASTER_URI##*:}"
   echo "started the master again on ${ROS_MASTER_URI}"
@@ -199,6 +204,13 @@ case "$case_name" in
     done
     named=$(awk -F, 'NR > 1 && $NF != "" {n++} END {print n + 0}' "$work/ros_run/loop_steps.csv")
     [ "$clips" -eq "$named" ] || fail "the in-process loop saved $clips clips; the ROS run's log names $named"
+    ;;
+  kill_master)
+    took=$(/usr/bin/python3 -c "import time; print(round(time.time() - $killed_at, 1))")
+    [ "$status" -eq 1 ] || fail "echoplan_planner exited $status, expected 1"
+    grep -q "trial stopped: .*the ROS master at $ROS_MASTER_URI does not answer" "$work/planner.log" \
+      || { fail "the planner's log does not name the master"; tail -5 "$work/planner.log"; }
+    echo "planner stopped $took s after the kill: $(grep -o 'trial stopped: .*' "$work/planner.log")"
     ;;
   kill_observation)
     took=$(/usr/bin/python3 -c "import time; print(round(time.time() - $killed_at, 1))")
