@@ -48,6 +48,7 @@
 #include "robot/recorder.h"
 #include "robot/ros/audio_topic_recorder.h"
 #include "robot/ros/clip_message.h"
+#include "robot/ros/master_watch.h"
 #include "robot/ros/ros_messages.h"
 #include "robot/ros/ros_protocol.h"
 
@@ -181,6 +182,7 @@ int run(ros::NodeHandle& node, ros::NodeHandle& priv) {
     states.publish(state);
   };
   publish_state(false, "", "");
+  const echoplan::robot::MasterWatch watch;  // no services; its topics are found by themselves
 
   bool recording = false;
   std::string action;
@@ -188,7 +190,9 @@ int run(ros::NodeHandle& node, ros::NodeHandle& priv) {
   ros::WallRate rate(poll_hz);
   while (ros::ok()) {
     ros::spinOnce();
-    bool wanted = false;
+    // A parameter that cannot be read (the master restarting, which forgets it) keeps its last
+    // value: a recording running goes on until the planner lowers the parameter on the new master.
+    bool wanted = recording;
     read_param(names::kRecordParam, wanted);
     if (wanted && !recording) {
       action.clear();

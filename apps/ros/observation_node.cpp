@@ -38,6 +38,7 @@
 #include "robot/classifier_service.h"
 #include "robot/performance_rows.h"
 #include "robot/ros/clip_message.h"
+#include "robot/ros/master_watch.h"
 #include "robot/ros/ros_messages.h"
 #include "robot/ros/ros_protocol.h"
 
@@ -74,6 +75,7 @@ class ObservationNode {
       feature_spinner_->start();
     }
     server_ = node.advertiseService(names::kObserveService, &ObservationNode::observe, this);
+    watch_.emplace(std::vector<std::string>{server_.getService()});
   }
 
  private:
@@ -145,6 +147,7 @@ class ObservationNode {
   ros::Subscriber feature_sub_;
   std::optional<ros::AsyncSpinner> feature_spinner_;
   ros::ServiceServer server_;
+  std::optional<echoplan::robot::MasterWatch> watch_;  // after the server it registers again
 };
 
 }  // namespace

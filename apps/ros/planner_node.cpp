@@ -34,6 +34,7 @@
 #include "common/error.h"
 #include "loop_trials.h"
 #include "node_main.h"
+#include "robot/ros/master_watch.h"
 #include "robot/ros/ros_observation_service.h"
 #include "robot/ros/ros_recorder.h"
 #include "robot/ros/ros_robot.h"
@@ -83,6 +84,9 @@ int main(int argc, char** argv) {
         settings.episodes = episodes;
         settings.step_ms = step_ms;
 
+        // A call that needs the master (setting the record parameter) waits for it no longer
+        // than for a node, so a master that does not come back stops the run instead of hanging.
+        ros::master::setRetryTimeout(ros::WallDuration(wait_timeout_s));
         echoplan::loop::RobotParts parts;
         parts.robot = std::make_unique<echoplan::robot::RosRobot>(node, wait_timeout_s,
                                                                   /*begin_trial_required=*/false);
@@ -92,6 +96,7 @@ int main(int argc, char** argv) {
           parts.recorder = std::make_unique<echoplan::robot::RosRecorder>(node, wait_timeout_s);
         parts.service =
             std::make_unique<echoplan::robot::RosObservationService>(node, wait_timeout_s);
+        const echoplan::robot::MasterWatch watch;  // its subscriptions: the recorder's
         const auto trials = echoplan::ros_app::run_loop_trials(
             settings, std::move(parts),
             [](const std::string& line) { ROS_INFO("%s", line.c_str()); });

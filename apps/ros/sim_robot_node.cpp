@@ -18,11 +18,13 @@
 #include <ros/ros.h>
 
 #include <chrono>
+#include <optional>
 #include <sstream>
 
 #include "common/error.h"
 #include "node_main.h"
 #include "robot/ros/clip_message.h"
+#include "robot/ros/master_watch.h"
 #include "robot/ros/ros_messages.h"
 #include "robot/ros/ros_protocol.h"
 #include "robot/simulated_world.h"
@@ -51,6 +53,7 @@ class SimRobotNode {
     // reset by hand.
     begin_ = node.advertiseService(names::kBeginTrialService, &SimRobotNode::begin_trial, this);
     execute_ = node.advertiseService(names::kExecuteActionService, &SimRobotNode::execute, this);
+    watch_.emplace(std::vector<std::string>{begin_.getService(), execute_.getService()});
   }
 
  private:
@@ -118,6 +121,7 @@ class SimRobotNode {
                                                                    : Response::FAILED;
       response.reason = report.reason;
       response.duration_s = report.duration_s;
+      response.retry_safe = report.retry_safe;
     } catch (const std::exception& e) {
       response.status = Response::FAILED;
       response.reason = e.what();
@@ -142,6 +146,7 @@ class SimRobotNode {
   ros::Publisher clips_;
   ros::ServiceServer execute_;
   ros::ServiceServer begin_;
+  std::optional<echoplan::robot::MasterWatch> watch_;  // after the servers it registers again
   std::uint32_t sequence_ = 0;
   bool in_trial_ = false;
   bool waited_for_listener_ = false;

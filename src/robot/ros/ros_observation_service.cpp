@@ -6,6 +6,7 @@
 
 #include "common/error.h"
 #include "robot/ros/clip_message.h"
+#include "robot/ros/master_watch.h"
 #include "robot/ros/ros_messages.h"
 #include "robot/ros/ros_protocol.h"
 #include "robot/transient_error.h"
@@ -25,11 +26,11 @@ HeardObservation RosObservationService::observe(const audio::AudioClip& clip,
       throw std::runtime_error(
           connected_before_
               ? fmt::format("the observation service {} went away and did not come back within "
-                            "{:g} s (did echoplan_observation die?)",
-                            name, wait_timeout_s_)
+                            "{:g} s (did echoplan_observation die?){}",
+                            name, wait_timeout_s_, master_unreachable_note())
               : fmt::format("the observation service {} is not available (waited {:g} s; is "
-                            "echoplan_observation running?)",
-                            name, wait_timeout_s_));
+                            "echoplan_observation running?){}",
+                            name, wait_timeout_s_, master_unreachable_note()));
     client_ = node_.serviceClient<echoplan_ros::Observe>(name, true);
     connected_before_ = true;
   }

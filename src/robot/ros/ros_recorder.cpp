@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "robot/ros/clip_message.h"
+#include "robot/ros/master_watch.h"
 #include "robot/ros/ros_protocol.h"
 #include "robot/transient_error.h"
 
@@ -34,8 +35,18 @@ void RosRecorder::on_clip(const echoplan_ros::Clip::ConstPtr& clip) {
   changed_.notify_all();
 }
 
+// The record parameters live on the master: one restarting is waited for, one gone ends the run
+// (no recording can start or stop without it), never a silent failure of ros::param::set.
+void RosRecorder::require_master(const std::string& action) const {
+  if (!wait_for_master(wait_timeout_s_))
+    throw std::runtime_error(fmt::format(
+        "recording '{}': the ROS master at {} does not answer (waited {:g} s), so {} cannot be set",
+        action, ros::master::getURI(), wait_timeout_s_, ros_names::kRecordParam));
+}
+
 void RosRecorder::start(const std::string& action) {
   if (recording_) throw std::logic_error("RosRecorder::start: a recording is already running");
+  require_master(action);
   std::unique_lock lock(mutex_);
   const std::uint64_t states_before = states_received_;
   const auto t0 = std::chrono::steady_clock::now();
@@ -54,8 +65,8 @@ void RosRecorder::start(const std::string& action) {
         answered ? "the listener could not start recording: " + last_state_.error
                  : fmt::format(
                        "the listener did not report recording within {:g} s after {} was "
-                       "set (is echoplan_listener running?)",
-                       wait_timeout_s_, ros_names::kRecordParam);
+                       "set (is echoplan_listener running?){}",
+                       wait_timeout_s_, ros_names::kRecordParam, master_unreachable_note());
     ros::param::set(ros_names::kRecordParam, false);
     recording_ = false;
     throw std::runtime_error(fmt::format("recording '{}': {}", action, why));
@@ -68,6 +79,7 @@ audio::AudioClip RosRecorder::stop() {
   if (!recording_) throw std::logic_error("RosRecorder::stop: no recording is running");
   recording_ = false;
   capture_ = CaptureReport{};
+  require_master(action_);
   std::unique_lock lock(mutex_);
   const std::uint64_t clips_before = clips_received_;
   ros::param::set(ros_names::kRecordParam, false);
@@ -78,8 +90,9 @@ audio::AudioClip RosRecorder::stop() {
   if (!answered)
     throw TransientError(
         fmt::format("recording '{}': no clip on {} within {:g} s after {} fell (is "
-                    "echoplan_listener running?)",
-                    action_, ros_names::kClipTopic, wait_timeout_s_, ros_names::kRecordParam));
+                    "echoplan_listener running?){}",
+                    action_, ros_names::kClipTopic, wait_timeout_s_, ros_names::kRecordParam,
+                    master_unreachable_note()));
   const echoplan_ros::Clip::ConstPtr clip = last_clip_;
   lock.unlock();
   capture_.overflow_callbacks = clip->overflow_callbacks;

@@ -41,6 +41,7 @@ class RosRecorder final : public Recorder {
   double last_start_latency_s() const { return last_start_latency_s_; }
 
  private:
+  void require_master(const std::string& action) const;
   void on_state(const echoplan_ros::RecordingState::ConstPtr& state);
   void on_clip(const echoplan_ros::Clip::ConstPtr& clip);
 

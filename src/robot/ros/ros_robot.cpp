@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "common/error.h"
+#include "robot/ros/master_watch.h"
 #include "robot/ros/ros_messages.h"
 #include "robot/ros/ros_protocol.h"
 
@@ -18,12 +19,14 @@ RosRobot::RosRobot(ros::NodeHandle& node, double wait_timeout_s, bool begin_tria
 ros::ServiceClient& RosRobot::connected(ros::ServiceClient& client, const char* name) {
   if (client && client.isValid()) return client;
   // A persistent connection that closed means the driver went away: fail now unless it is back.
-  if (connected_.count(name) > 0 && !ros::service::exists(name, false))
+  // Only the master can tell, so while it does not answer (restarting) the service is waited for.
+  if (connected_.count(name) > 0 && ros::master::check() && !ros::service::exists(name, false))
     throw std::runtime_error(fmt::format(
         "the robot's service {} went away (its connection closed; did the driver die?)", name));
   if (!ros::service::waitForService(name, ros::Duration(wait_timeout_s_)))
-    throw std::runtime_error(fmt::format("the robot's service {} is not available (waited {:g} s)",
-                                         name, wait_timeout_s_));
+    throw std::runtime_error(
+        fmt::format("the robot's service {} is not available (waited {:g} s){}", name,
+                    wait_timeout_s_, master_unreachable_note()));
   if (std::string(name) == ros_names::kExecuteActionService)
     client = node_.serviceClient<echoplan_ros::ExecuteAction>(name, true);
   else
@@ -36,7 +39,11 @@ void RosRobot::begin_trial(const TrialContext& context) {
   // Wait for the driver itself first: a driver serves BeginTrial, if at all, from the moment it
   // serves ExecuteAction (echoplan_sim_robot advertises BeginTrial first).
   connected(execute_, ros_names::kExecuteActionService);
-  if (!begin_trial_required_ && !ros::service::exists(ros_names::kBeginTrialService, false)) {
+  // A driver already connected to needs no lookup: the master may be restarting meanwhile, and a
+  // lookup that fails then must not be taken for a driver without BeginTrial.
+  const bool connected_before = begin_trial_ && begin_trial_.isValid();
+  if (!begin_trial_required_ && !connected_before &&
+      !ros::service::exists(ros_names::kBeginTrialService, false)) {
     ROS_INFO("trial %d: no %s service; the arm is expected at its initial configuration",
              context.trial, ros_names::kBeginTrialService);
     return;
@@ -70,6 +77,7 @@ ActionReport RosRobot::execute(const std::string& action) {
   report.action = action;
   report.reason = r.reason;
   report.duration_s = r.duration_s;
+  report.retry_safe = r.retry_safe;
   switch (r.status) {
     case echoplan_ros::ExecuteAction::Response::DONE:
       report.status = ActionStatus::done;

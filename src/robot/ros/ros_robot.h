@@ -4,7 +4,10 @@
 // Calls block until the driver answers. A driver that is not there (yet) is waited for up to
 // `wait_timeout_s`; a driver that dies during a call closes its connection, so the call fails at
 // once. Both are std::runtime_error naming the service, never a hang or a silent outcome. Physical
-// outcomes (collision, failure) come back as ActionReports, as the Robot interface promises.
+// outcomes (collision, failure, and whether a failure is safe to repeat: the reply's retry_safe)
+// come back as ActionReports, as the Robot interface promises. The connections are persistent, so
+// a restarting ROS master does not interrupt them; a connection lost while the master does not
+// answer is waited for (up to `wait_timeout_s`) rather than taken for a dead driver.
 #pragma once
 
 #include <ros/ros.h>

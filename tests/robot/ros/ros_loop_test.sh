@@ -27,6 +27,18 @@
 #   restart_listener  the listener is killed after the first step and started again a second later:
 #                     the run goes on (a recording it was making goes unheard; a kill between
 #                     recordings costs only the wait), every trial ends in a sorting action
+#   restart_master    the ROS master (roscore) is killed with SIGKILL after the first step and
+#                     started again on the same port a second later: every node registers with the
+#                     new master again (it lists each one's services and topics), the run goes on
+#                     and every trial ends in a sorting action (a performance heard across the
+#                     outage may go unheard: at most one skipped observation); a planner started
+#                     after it finds every node through the new master
+#   kill_master       the master is killed after the first step and not started again: the planner
+#                     stops with exit status 1 and a logged failure naming the master
+#   retry_safe        the arm's first sorting action fails with retry_safe (flaky_arm_stand_in.py
+#                     in front of the simulated robot): the loop repeats it (attempts 2 in
+#                     loop_steps.jsonl) and every trial ends in a sorting action
+#   fail_unsafe       the same failure without retry_safe: that trial ends as failed, the others sort
 set -u
 case_name=$1
 build=$2
@@ -46,7 +58,7 @@ if [ "$case_name" = mic ]; then
   listener_params=(_min_seconds:=0.5)
   file_microphone "$build/echoplan" || { fail "making the file-backed microphone"; exit 1; }
 fi
-case "$case_name" in kill_observation | restart_*) trials=3 ;; esac
+case "$case_name" in kill_* | restart_* | retry_safe | fail_unsafe) trials=3 ;; esac
 object_param=()
 if [ "$case_name" = run ]; then
   trials=1
@@ -61,7 +73,19 @@ if [ "$case_name" = launch ]; then
   planner_pid=$!
   pgids+=("$planner_pid")
 else
-  start sim_robot "$build/echoplan_sim_robot"
+  if [ "$case_name" = retry_safe ] || [ "$case_name" = fail_unsafe ]; then
+    # The stand-in serves ExecuteAction and passes it on to the simulated robot under another name.
+    start sim_robot "$build/echoplan_sim_robot" /echoplan/execute_action:=/sim/execute_action
+    retry_safe=false
+    [ "$case_name" = retry_safe ] && retry_safe=true
+    PYTHONPATH=$build/ros/python${PYTHONPATH:+:$PYTHONPATH} \
+      start flaky_arm /usr/bin/python3 "$(dirname "$0")/flaky_arm_stand_in.py" $retry_safe
+  else
+    # restart_master: actions that take a while, so the run outlasts the master's restart.
+    sim_params=()
+    case "$case_name" in *_master) sim_params=(_min_duration_s:=0.4) ;; esac
+    start sim_robot "$build/echoplan_sim_robot" "${sim_params[@]}"
+  fi
   start listener "$build/echoplan_listener" _source:=$source _max_seconds:=0.5 "${listener_params[@]}"
   listener_pid=$started
   if [ "$case_name" = restart_observation ]; then
@@ -94,6 +118,53 @@ if [ "$case_name" = restart_listener ]; then
   { kill -KILL -- "-$listener_pid"; wait "$listener_pid"; } 2>/dev/null
   sleep 1
   start listener_again "$build/echoplan_listener" _source:=$source _max_seconds:=0.5
+fi
+# Whether the master knows every echoplan node's services and topics (what a node started now would
+# look up); prints what it lacks.
+check_registrations() {
+  /usr/bin/python3 - <<'PY'
+import sys
+import rosgraph
+publishers, subscribers, services = rosgraph.Master("/ros_loop_test").getSystemState()
+known = {("pub", t, n) for t, ns in publishers for n in ns} | {("sub", t, n) for t, ns in subscribers for n in ns} \
+    | {("srv", t, n) for t, ns in services for n in ns}
+wanted = [("srv", "/echoplan/execute_action", "/echoplan_sim_robot"), ("srv", "/echoplan/begin_trial", "/echoplan_sim_robot"),
+          ("pub", "/echoplan/sim_clip", "/echoplan_sim_robot"), ("srv", "/echoplan/observe", "/echoplan_observation"),
+          ("sub", "/echoplan/sim_clip", "/echoplan_listener"), ("pub", "/echoplan/clip", "/echoplan_listener"),
+          ("pub", "/echoplan/recording", "/echoplan_listener"), ("sub", "/echoplan/clip", "/echoplan_planner"),
+          ("sub", "/echoplan/recording", "/echoplan_planner")]
+missing = [w for w in wanted if w not in known]
+for kind, name, node in missing:
+    print("the restarted master does not know %s's %s %s" % (node, {"pub": "publisher of", "sub": "subscriber to", "srv": "service"}[kind], name))
+sys.exit(1 if missing else 0)
+PY
+}
+
+if [ "$case_name" = restart_master ] || [ "$case_name" = kill_master ]; then
+  # Once a step is logged, kill the master and start it again on the same port a second later:
+  # roscore's roslaunch and the rosmaster and rosout it started (in process groups of their own, so
+  # by the pids it logged).
+  for _ in $(seq 600); do [ "$(cat "$work/ros_run/loop_steps.csv" 2>/dev/null | wc -l)" -ge 2 ] && break; sleep 0.05; done
+  core_pids=$(grep -o 'process\[\(master\|rosout-1\)\]: started with pid \[[0-9]*\]' "$work/roscore.log" | grep -o '[0-9]*\]$' | tr -d ']')
+  { kill -KILL -- "-$roscore_pid" $core_pids; wait "$roscore_pid"; } 2>/dev/null
+  echo "killed the master (roscore $roscore_pid, rosmaster and rosout:" $core_pids") after step 1"
+  killed_at=$(date +%s.%N)
+fi
+if [ "$case_name" = restart_master ]; then
+  sleep 1
+  start roscore_again roscore -p "${ROS_MASTER_URI##*:}"
+  echo "started the master again on ${ROS_MASTER_URI}"
+  # Each node notices within a second or so and registers again; asked while the planner still runs
+  # (it unregisters when it exits).
+  for _ in $(seq 100); do
+    [ "$(cat "$work"/{sim_robot,listener,observation,planner}.log | grep -c 'restarted; registered')" -ge 4 ] && break
+    sleep 0.1
+  done
+  for node in sim_robot listener observation planner; do
+    grep -q "restarted; registered" "$work/$node.log" || fail "echoplan_$node did not say it registered again"
+  done
+  check_registrations >"$work/registrations.log" 2>&1 || { fail "the new master lacks registrations"; cat "$work/registrations.log"; }
+  kill -0 "$planner_pid" 2>/dev/null || fail "the planner ended before the registrations were checked (the run is too short)"
 fi
 wait "$planner_pid"
 status=$?
@@ -134,6 +205,13 @@ case "$case_name" in
     named=$(awk -F, 'NR > 1 && $NF != "" {n++} END {print n + 0}' "$work/ros_run/loop_steps.csv")
     [ "$clips" -eq "$named" ] || fail "the in-process loop saved $clips clips; the ROS run's log names $named"
     ;;
+  kill_master)
+    took=$(/usr/bin/python3 -c "import time; print(round(time.time() - $killed_at, 1))")
+    [ "$status" -eq 1 ] || fail "echoplan_planner exited $status, expected 1"
+    grep -q "trial stopped: .*the ROS master at $ROS_MASTER_URI does not answer" "$work/planner.log" \
+      || { fail "the planner's log does not name the master"; tail -5 "$work/planner.log"; }
+    echo "planner stopped $took s after the kill: $(grep -o 'trial stopped: .*' "$work/planner.log")"
+    ;;
   kill_observation)
     took=$(/usr/bin/python3 -c "import time; print(round(time.time() - $killed_at, 1))")
     [ "$status" -eq 1 ] || fail "echoplan_planner exited $status, expected 1"
@@ -161,6 +239,45 @@ case "$case_name" in
       fault="recorder failed"
     fi
     echo "$(grep -c "$fault" "$work/ros_run/loop_steps.jsonl") step(s) with '$fault'; $ended trials sorted"
+    ;;
+  restart_master)
+    [ "$status" -eq 0 ] || { fail "echoplan_planner exited $status after the master restarted"; cat "$work/planner.log"; }
+    ended=$(awk -F, 'NR > 1 && $3 ~ /^move_to_/ {n++} END {print n + 0}' "$work/ros_run/loop_steps.csv")
+    [ "$ended" -eq "$trials" ] || fail "$ended of $trials trials ended in a sorting action"
+    skipped=$(grep -c '"observation_skipped":true' "$work/ros_run/loop_steps.jsonl")
+    [ "$skipped" -le 1 ] || fail "$skipped observations skipped; the outage can cost one at most"
+    # A planner started now looks every node up through the new master.
+    start planner_after timeout 60 "$build/echoplan_planner" _problem:="$work/problem.yaml" _out:="$work/ros_run_after" \
+      _seed:=$seed _episodes:=$episodes _trials:=1 _wait_timeout_s:=10
+    wait "$started"
+    after=$?
+    [ "$after" -eq 0 ] || { fail "a planner started after the restart exited $after"; tail -5 "$work/planner_after.log"; }
+    grep -q 'move_to_' "$work/ros_run_after/loop_steps.csv" 2>/dev/null \
+      || fail "the trial of a planner started after the restart did not end in a sorting action"
+    echo "the master was killed after step 1 and restarted; each node registered again:"
+    for node in sim_robot listener observation planner; do
+      echo "  echoplan_$node: $(grep -o 'registered [0-9]* topic.*again' "$work/$node.log" | head -1)"
+    done
+    echo "$skipped observation(s) skipped; $ended trials sorted"
+    ;;
+  retry_safe | fail_unsafe)
+    [ "$status" -eq 0 ] || { fail "echoplan_planner exited $status"; cat "$work/planner.log"; }
+    # The sorting step the stand-in failed: its attempts and its status.
+    read -r attempts sort_status < <(/usr/bin/python3 -c '
+import json, sys
+steps = [json.loads(line) for line in open(sys.argv[1])]
+first = next(s for s in steps if s["action"].startswith("move_to_"))
+print(first["report"]["attempts"], first["report"]["status"])' "$work/ros_run/loop_steps.jsonl")
+    ended=$(awk -F, 'NR > 1 && $3 ~ /^move_to_/ && $4 == "done" {n++} END {print n + 0}' "$work/ros_run/loop_steps.csv")
+    if [ "$case_name" = retry_safe ]; then
+      [ "$attempts $sort_status" = "2 done" ] || fail "the first sorting action took $attempts attempt(s), $sort_status; expected 2, done"
+      [ "$ended" -eq "$trials" ] || fail "$ended of $trials trials sorted"
+    else
+      [ "$attempts $sort_status" = "1 failed" ] || fail "the first sorting action took $attempts attempt(s), $sort_status; expected 1, failed"
+      [ "$ended" -eq $((trials - 1)) ] || fail "$ended of $trials trials sorted; expected all but the failed one"
+      grep -q -- "-> failed: the gripper missed" "$work/planner.log" || fail "the planner's log does not say the action failed"
+    fi
+    echo "first sorting action: $attempts attempt(s), $sort_status; $ended of $trials trials sorted"
     ;;
   *) fail "unknown case $case_name" ;;
 esac

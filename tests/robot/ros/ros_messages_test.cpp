@@ -44,6 +44,27 @@ TEST(RosMessages, RoundTripAClip) {
   EXPECT_EQ(read.action, "strike");
 }
 
+// retry_safe is the reply's last field: a driver built against the definition before it (one byte
+// shorter) fails the md5sum check rather than being read as never safe to repeat.
+TEST(RosMessages, AnExecuteActionReplyCarriesRetrySafeAfterTheDuration) {
+  echoplan_ros::ExecuteAction::Response reply;
+  reply.status = echoplan_ros::ExecuteAction::Response::FAILED;
+  reply.reason = "slip";
+  reply.duration_s = 0.5;
+  reply.retry_safe = true;
+  std::vector<std::uint8_t> body = serialize(reply);
+  // status (1), reason (4 + 4), duration_s (8), retry_safe (1).
+  ASSERT_EQ(body.size(), 18u);
+  EXPECT_EQ(body[17], 1);
+  echoplan_ros::ExecuteAction::Response read;
+  deserialize(body, read);
+  EXPECT_TRUE(read.retry_safe);
+  EXPECT_EQ(read.duration_s, 0.5);
+  // The md5sum of the definition without retry_safe.
+  EXPECT_STRNE(ros::service_traits::md5sum<echoplan_ros::ExecuteAction>(),
+               "7a9ee279c31d57056068c8a4b1577a80");
+}
+
 // A float32[] count whose byte count wraps around 32 bits (0x40000001 x 4 = 4) used to pass the
 // stream's bounds check, and memcpy then read 4 GiB past the body.
 TEST(RosMessages, ArrayLengthWhoseByteCountWrapsIsAnOverrun) {

@@ -1,6 +1,7 @@
 # Sourced by the ros_* tests and bench/ros_latency.sh: a private ROS session in a temporary folder.
 #   ros_session_begin        makes $work, starts roscore on a free 127.0.0.1 port (exported
-#                            ROS_MASTER_URI), stops everything started with `start` at exit
+#                            ROS_MASTER_URI; its process group $roscore_pid), stops everything
+#                            started with `start` at exit
 #   start NAME COMMAND...    runs COMMAND in the background in its own process group, output in
 #                            $work/NAME.log; sets $started to its pid
 #   file_microphone ECHOPLAN makes the default capture device read a synthesized coffee-mug strike
@@ -45,6 +46,7 @@ ros_session_begin() {
   port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
   export ROS_MASTER_URI=http://127.0.0.1:$port
   start roscore roscore -p "$port"
+  roscore_pid=$started
   for _ in $(seq 100); do rosparam list >/dev/null 2>&1 && return 0; sleep 0.1; done
   echo "roscore on port $port did not come up:"
   cat "$work/roscore.log"
