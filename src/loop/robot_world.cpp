@@ -139,32 +139,33 @@ WorldStep RobotWorld::execute(int action, Rng& /*rng*/) {
   pomdp::Outcome& outcome = step.outcome;
   RobotStep& acted = step.robot.emplace();
   outcome.observation.index = problem_->none_symbol();
-  if (!problem_->is_sensing(action)) {
-    perform(acted, name, false);
+  // No microphone: no clip for the service, which observes through the robot's other sensors.
+  const bool sensing = problem_->is_sensing(action);
+  perform(acted, name, sensing && parts_.recorder != nullptr);
+  const bool failed = acted.report.status == robot::ActionStatus::failed;
+  if (failed || (sensing && acted.report.status == robot::ActionStatus::collision)) {
+    // A collision while sensing or a failed action ends the trial as the model's collision does:
+    // an object the arm did not put in its bin is not sorted. (A sort that touched something on
+    // its way still put the object in the bin, as the model's sorting actions have it.)
+    outcome.reward = data.collision_reward;
+    outcome.terminal = true;
+    if (failed)
+      acted.fault = StepFault{"action failed",
+                              fmt::format("{} ({} attempt{})", acted.report.reason, acted.attempts,
+                                          acted.attempts == 1 ? "" : "s"),
+                              FaultEffect::trial_failed};
+  } else if (!sensing) {
     outcome.reward = data.sorting_reward[action - problem_->num_sensing()][object];
     outcome.terminal = true;
   } else {
-    // No microphone: no clip for the service, which observes through the robot's other sensors.
-    perform(acted, name, parts_.recorder != nullptr);
-    if (acted.report.status == robot::ActionStatus::done) {
-      hear(acted, name, outcome);
-      outcome.reward = data.sensing[action].reward;
-      // The model's kinematic transition, so the true state follows the world (a slide moves the
-      // object).
-      const auto& change = data.sensing[action].offset_change;
-      if (state_.continuous.size() == pomdp::ObjectIdentificationModel::kNumContinuous)
-        for (int i = 0; i < 3; ++i)
-          state_.continuous[pomdp::ObjectIdentificationModel::kOffsetX + i] += change[i];
-    } else {
-      // A collision or a failed action ends the trial as the model's collision does.
-      outcome.reward = data.collision_reward;
-      outcome.terminal = true;
-      if (acted.report.status == robot::ActionStatus::failed)
-        acted.fault = StepFault{"action failed",
-                                fmt::format("{} ({} attempt{})", acted.report.reason,
-                                            acted.attempts, acted.attempts == 1 ? "" : "s"),
-                                FaultEffect::trial_failed};
-    }
+    hear(acted, name, outcome);
+    outcome.reward = data.sensing[action].reward;
+    // The model's kinematic transition, so the true state follows the world (a slide moves the
+    // object).
+    const auto& change = data.sensing[action].offset_change;
+    if (state_.continuous.size() == pomdp::ObjectIdentificationModel::kNumContinuous)
+      for (int i = 0; i < 3; ++i)
+        state_.continuous[pomdp::ObjectIdentificationModel::kOffsetX + i] += change[i];
   }
   outcome.collision = acted.report.status != robot::ActionStatus::done;
   ended_ = outcome.terminal;

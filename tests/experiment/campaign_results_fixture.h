@@ -61,7 +61,8 @@ inline CampaignResults small_campaign() {
   // summary.json's campaign identity hashes the problem file: a real one.
   const std::string problem = std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml";
   c.arms = {{"one", problem, false}, {"two", problem, true}};
-  c.world = {WorldType::model, problem};
+  c.world.type = WorldType::model;
+  c.world.problem = problem;
   c.groups = {{"a", "a", 2}, {"b_heavy", "b", 1}};
   c.planner.episodes = 100;
   pomdp::ModelSpec& spec = results.spec;

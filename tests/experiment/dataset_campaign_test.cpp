@@ -100,10 +100,12 @@ TEST(DatasetCampaign, EverySessionIsATrialOfEveryArmPairedAndSortedRightIsCounte
   // Sensing actions are 0..2 (press, shake, tap), sorting 3..4.
   for (const JournalEntry& e : results.entries) {
     const std::vector<int>& n = e.result.record.action_counts;
-    if (e.arm == "all_actions")
+    if (e.arm == "all_actions") {
       EXPECT_EQ((std::vector<int>{n[0], n[1], n[2]}), (std::vector<int>{1, 1, 1}));
-    if (e.arm == "best_single")
+    }
+    if (e.arm == "best_single") {
       EXPECT_EQ((std::vector<int>{n[0], n[1], n[2]}), (std::vector<int>{0, 0, 1}));
+    }
     for (int a = 0; a < 3; ++a) EXPECT_LE(n[a], 1) << e.arm;  // each behaviour recorded once
   }
   // Accuracy is the share sorted right: the trials whose last reward is the task's +10.

@@ -254,6 +254,24 @@ TEST(ActionFaults, AFailureNotSafeToRepeatATimeoutOrRepeatedFailuresEndTheTrialA
   }
 }
 
+// A sort the arm could not finish put the object nowhere: the trial ends failed with the
+// collision reward, never the bin's reward (the report's problem: action 2 is the first sort).
+TEST(ActionFaults, AFailedSortIsNotASortAndEndsTheTrialAsFailed) {
+  Faults faults;
+  faults.arm = [](Call, const std::string& action) {
+    return std::optional(failed(action, "the gripper opened too early", false));
+  };
+  World w(faults);
+  const int sort = identification().num_sensing();
+  const WorldStep step = w.execute(sort);
+  ASSERT_TRUE(step.robot->fault.has_value());
+  EXPECT_EQ(step.robot->fault->kind, "action failed");
+  EXPECT_EQ(step.robot->fault->effect, FaultEffect::trial_failed);
+  EXPECT_TRUE(step.outcome.terminal);
+  EXPECT_EQ(step.outcome.reward, identification().data().collision_reward);
+  EXPECT_NE(step.outcome.reward, identification().data().sorting_reward[0][0]);
+}
+
 // ---- the whole loop --------------------------------------------------------------------------
 
 Loop faulty_loop(Faults faults, int max_steps = 30) {

@@ -263,11 +263,12 @@ case "$case_name" in
   retry_safe | fail_unsafe)
     [ "$status" -eq 0 ] || { fail "echoplan_planner exited $status"; cat "$work/planner.log"; }
     # The sorting step the stand-in failed: its attempts and its status.
-    read -r attempts sort_status < <(/usr/bin/python3 -c '
+    read -r attempts sort_status sort_fault < <(/usr/bin/python3 -c '
 import json, sys
 steps = [json.loads(line) for line in open(sys.argv[1])]
 first = next(s for s in steps if s["action"].startswith("move_to_"))
-print(first["report"]["attempts"], first["report"]["status"])' "$work/ros_run/loop_steps.jsonl")
+fault = (first.get("fault") or {}).get("kind", "none").replace(" ", "_")
+print(first["report"]["attempts"], first["report"]["status"], fault)' "$work/ros_run/loop_steps.jsonl")
     ended=$(awk -F, 'NR > 1 && $3 ~ /^move_to_/ && $4 == "done" {n++} END {print n + 0}' "$work/ros_run/loop_steps.csv")
     if [ "$case_name" = retry_safe ]; then
       [ "$attempts $sort_status" = "2 done" ] || fail "the first sorting action took $attempts attempt(s), $sort_status; expected 2, done"
@@ -275,7 +276,9 @@ print(first["report"]["attempts"], first["report"]["status"])' "$work/ros_run/lo
     else
       [ "$attempts $sort_status" = "1 failed" ] || fail "the first sorting action took $attempts attempt(s), $sort_status; expected 1, failed"
       [ "$ended" -eq $((trials - 1)) ] || fail "$ended of $trials trials sorted; expected all but the failed one"
-      grep -q -- "-> failed: the gripper missed" "$work/planner.log" || fail "the planner's log does not say the action failed"
+      grep -q -- "-> action failed: the gripper missed" "$work/planner.log" || fail "the planner's log does not say the action failed"
+      # A sort that failed put the object nowhere: a fault that ends the trial, not a sorted object.
+      [ "$sort_fault" = action_failed ] || fail "the failed sort's fault is '$sort_fault', not 'action failed'"
     fi
     echo "first sorting action: $attempts attempt(s), $sort_status; $ended of $trials trials sorted"
     ;;
