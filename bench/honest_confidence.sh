@@ -3,8 +3,9 @@
 # class"): a synthetic stand-in where a quarter of the objects look like another group in every
 # behaviour at once (bench/make_feature_set --atypical-share 0.25 --atypical-pull 0.6; 40 objects
 # in 8 groups of 5, 5 sessions, 4 behaviours, audio and haptic), sorted by group with whole objects
-# held out, four arms at EPISODES episodes. Prints each arm's row, the paired differences and how
-# sure each arm was at the sort against how often it was right.
+# held out, at EPISODES episodes: the planner and the greedy rule each without and with atypical
+# objects among the hidden states (`atypical: true`), and two fixed baselines. Prints each arm's
+# row, the paired differences and how sure each arm was at the sort against how often it was right.
 # Usage: bench/honest_confidence.sh BUILD_DIR [EPISODES] [OUT]
 set -eu
 build=$1
@@ -22,10 +23,12 @@ world: {type: dataset, data: $dir/fs, hold_out: object, groups: $dir/fs/groups.c
 task:
   rewards: {right: 10, wrong: -100, sense: -1}
 arms:
+  - {name: plan_atypical, strategy: plan, atypical: true}
   - {name: plan, strategy: plan}
   - {name: all_actions, strategy: all_actions}
   - {name: best_single, strategy: best_single}
   - {name: information_gain, strategy: information_gain}
+  - {name: information_gain_atypical, strategy: information_gain, atypical: true}
 planner: {solver: abt, episodes: $episodes, max_steps: 100}
 YAML
 "$build/echoplan" experiment --config "$dir/campaign.yaml" --out "$out" --workers 2 >/dev/null 2>&1

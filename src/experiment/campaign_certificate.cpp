@@ -51,6 +51,7 @@ std::vector<std::string> fold_names(const fs::path& folds) {
 struct ArmEntry {
   std::string name;
   perception::ObservationKind observations = perception::ObservationKind::labels;
+  bool atypical = false;
 };
 
 // The campaign's arms in its own order (campaign.json), the planner usually first, with what each
@@ -66,11 +67,13 @@ std::vector<ArmEntry> arm_entries(const fs::path& directory) {
     for (const nlohmann::json& arm : j["config"]["arms"])
       arms.push_back(
           {arm.value("name", std::string()),
-           perception::parse_observation_kind(arm.value("observations", std::string("labels")))});
+           perception::parse_observation_kind(arm.value("observations", std::string("labels"))),
+           arm.value("atypical", false)});
   } catch (const InputError& e) {
     throw InputError(described.string(), 0, e.problem());
   } catch (const nlohmann::json::exception&) {
-    throw InputError(described.string(), 0, "an arm's name or observations is not text");
+    throw InputError(described.string(), 0,
+                     "an arm's name, observations or atypical is not of its type");
   }
   return arms;
 }
@@ -87,16 +90,17 @@ std::vector<ArmCertificate> certify_campaign(const fs::path& directory,
   const std::vector<ArmEntry> arms = arm_entries(directory);
   std::vector<ArmCertificate> certificates;
   for (const std::string& fold : fold_names(folds)) {
-    std::map<perception::ObservationKind, pomdp::Problem> problems;  // loaded once per fold
+    std::map<std::string, pomdp::Problem> problems;  // loaded once per fold
     for (const ArmEntry& arm : arms) {
-      const std::string problem_file = "folds/" + fold + "/" + fold_problem_name(arm.observations);
+      const std::string name = fold_problem_name(arm.observations, arm.atypical);
+      const std::string problem_file = "folds/" + fold + "/" + name;
       const fs::path problem_path = directory / problem_file;
-      if (!problems.contains(arm.observations)) {
+      if (!problems.contains(name)) {
         if (!fs::is_regular_file(problem_path))
           throw InputError(
               problem_path.string(), 0,
               "missing: the campaign writes each fold's problem once its folds are fitted");
-        problems.emplace(arm.observations, pomdp::load_problem(problem_path.string()));
+        problems.emplace(name, pomdp::load_problem(problem_path.string()));
       }
       const fs::path steps = folds / fold / "arms" / arm.name / "steps.csv";
       if (!fs::is_regular_file(steps))
@@ -104,7 +108,7 @@ std::vector<ArmCertificate> certify_campaign(const fs::path& directory,
                          "missing: the campaign has not written this fold's trials");
       certificates.push_back(
           {fold, arm.name, problem_file,
-           certify_steps(problems.at(arm.observations), problem_path.string(), steps, options)});
+           certify_steps(problems.at(name), problem_path.string(), steps, options)});
     }
   }
   if (certificates.empty()) throw InputError(folds.string(), 0, "holds no folds");

@@ -72,6 +72,13 @@ const std::vector<Field<CampaignArm>>& arm_fields() {
        .member = &CampaignArm::observations,
        .identity = Identity::unless_default,
        .choices = observation_choices},
+      // Left out of the identity at its default: campaigns written before it existed.
+      {.key = "atypical",
+       .member = &CampaignArm::atypical,
+       .identity = Identity::unless_default,
+       .worlds = Worlds::recorded_data,
+       .elsewhere = "only for a dataset world: its folds' models fit the share of objects "
+                    "unlike their class"},
   };
   return fields;
 }
@@ -107,12 +114,6 @@ const std::vector<Field<WorldConfig>>& world_fields() {
        .identity = Identity::file_hash,
        .worlds = Worlds::recorded_data,
        .text = Text::file,
-       .elsewhere = kRecordedOnly},
-      // Left out of the identity at its default: campaigns written before it existed.
-      {.key = "atypical",
-       .member = &WorldConfig::atypical,
-       .identity = Identity::unless_default,
-       .worlds = Worlds::recorded_data,
        .elsewhere = kRecordedOnly},
   };
   return fields;

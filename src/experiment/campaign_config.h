@@ -45,6 +45,12 @@ struct CampaignArm {
   // simulated world, or any arm of a dataset world).
   std::string observations = "labels";
   perception::ObservationKind observation_kind() const;
+  // A dataset world's arm that plans knowing some objects are unlike their class
+  // (perception/typicality.h): each class has an atypical copy with the share its fold's model
+  // fitted on held-out data (loop/dataset_problem.h). When one arm does, every arm's problem has
+  // the copies (with a share of 0 for the others, which then plan exactly as without them), so
+  // all arms' beliefs name the same states.
+  bool atypical = false;
 };
 
 // A group of trials with one object in the world. `object` is what the world holds (a catalogue
@@ -96,10 +102,6 @@ struct WorldConfig {
   // A frozen observation model file (`echoplan train --out`): no folds, every session replayed
   // with it (a model trained one day, judged on data recorded another). Empty: fit per fold.
   std::string model;
-  // Dataset worlds: objects unlike their class are hidden states too (loop/dataset_problem.h,
-  // perception/typicality.h), with the share each fold's model fitted on held-out data.
-  bool atypical = false;
-
   // The world replays recorded data (world_kind(type).recorded_data).
   bool recorded_data() const;
 };

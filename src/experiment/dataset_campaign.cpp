@@ -106,7 +106,7 @@ DatasetTrials open_dataset(const CampaignConfig& config, InputFiles& files,
   }
   try {
     t.names = std::make_shared<const pomdp::Problem>(dataset_problem_file(
-        loop::dataset_problem_shape(t.task, *t.data, config.rewards, config.world.atypical),
+        loop::dataset_problem_shape(t.task, *t.data, config.rewards, any_atypical(config)),
         config.world.data));
   } catch (const InputError& e) {
     // Only the task can be wrong here (a cost for a behaviour the data does not have).
@@ -155,50 +155,68 @@ bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
   return true;
 }
 
-const char* fold_problem_name(perception::ObservationKind kind) {
-  return kind == perception::ObservationKind::graded ? "problem-graded.yaml" : "problem.yaml";
+bool any_atypical(const CampaignConfig& config) {
+  return std::any_of(config.arms.begin(), config.arms.end(),
+                     [](const CampaignArm& arm) { return arm.atypical; });
 }
+
+std::string fold_problem_name(perception::ObservationKind kind, bool atypical) {
+  return fmt::format("problem{}{}.yaml",
+                     kind == perception::ObservationKind::graded ? "-graded" : "",
+                     atypical ? "-atypical" : "");
+}
+
+namespace {
+
+// The fold's problem for arms that hear `kind` and do (or do not) plan with atypical objects.
+pomdp::ObjectProblemData fold_problem(const CampaignConfig& config, const DatasetTrials& trials,
+                                      int fold, const std::vector<int>& uses,
+                                      perception::ObservationKind kind, bool atypical) {
+  const perception::ObservationModel& model = *trials.models.at(fold);
+  std::optional<double> share;
+  if (any_atypical(config)) share = atypical ? model.atypical_share(kind) : 0.0;
+  return loop::dataset_problem(trials.task, model, config.rewards, uses, kind, share);
+}
+
+}  // namespace
 
 void write_fold_problems(const std::filesystem::path& directory, const CampaignConfig& config,
                          const DatasetTrials& trials) {
   pomdp::BeliefSettings belief;
   belief.type = pomdp::BeliefSettings::Type::exact;  // as the campaign's trials track it
   const std::vector<int> uses = loop::default_uses(*trials.data);
-  std::set<perception::ObservationKind> kinds;
-  for (const CampaignArm& arm : config.arms) kinds.insert(arm.observation_kind());
+  std::set<std::pair<perception::ObservationKind, bool>> kinds;
+  for (const CampaignArm& arm : config.arms) kinds.insert({arm.observation_kind(), arm.atypical});
   for (std::size_t f = 0; f < trials.models.size(); ++f) {
     const std::filesystem::path folder = directory / "folds" / std::to_string(f + 1);
     std::filesystem::create_directories(folder);
-    for (const perception::ObservationKind kind : kinds) {
+    for (const auto& [kind, atypical] : kinds) {
       std::ostringstream text;
       text << fmt::format(
-          "# Fold {} of the campaign {}\n# (data {}): the problem its arms that hear {} planned "
+          "# Fold {} of the campaign {}\n# (data {}): the problem its arms that hear {}{} planned "
           "with, each behaviour limited to the most\n# performances any session recorded (a "
           "trial's own limits may be lower).\n# `echoplan certify --campaign` judges "
           "folds/{}/arms/*/steps.csv with it.\n",
-          f + 1, config.source, config.world.data, perception::observation_kind_name(kind), f + 1);
+          f + 1, config.source, config.world.data, perception::observation_kind_name(kind),
+          atypical ? " and plan with atypical objects" : "", f + 1);
       pomdp::write_problem_yaml(
-          text,
-          loop::dataset_problem(trials.task, *trials.models[f], config.rewards, uses, kind,
-                                config.world.atypical),
-          belief, pomdp::PlannerDefaults{});
-      write_file_atomically(folder / fold_problem_name(kind), text.str());
+          text, fold_problem(config, trials, static_cast<int>(f), uses, kind, atypical), belief,
+          pomdp::PlannerDefaults{});
+      write_file_atomically(folder / fold_problem_name(kind, atypical), text.str());
     }
   }
 }
 
 ArmLoops dataset_loops(const CampaignConfig& config, const DatasetTrials& trials) {
   // One problem per fold and use limits, shared by every arm and trial that needs it.
-  using Key = std::tuple<int, std::vector<int>, perception::ObservationKind>;
+  using Key = std::tuple<int, std::vector<int>, perception::ObservationKind, bool>;
   std::map<Key, std::shared_ptr<const pomdp::Problem>> problems;
   const auto& names = trials.names->model->object_identification()->data();
-  const auto problem_for = [&](int fold, const std::vector<int>& uses,
-                               perception::ObservationKind kind) {
-    auto& p = problems[{fold, uses, kind}];
+  const auto problem_for = [&](int fold, const std::vector<int>& uses, const CampaignArm& arm) {
+    auto& p = problems[{fold, uses, arm.observation_kind(), arm.atypical}];
     if (!p)
       p = std::make_shared<const pomdp::Problem>(dataset_problem_file(
-          loop::dataset_problem(trials.task, *trials.models.at(fold), config.rewards, uses, kind,
-                                config.world.atypical),
+          fold_problem(config, trials, fold, uses, arm.observation_kind(), arm.atypical),
           fmt::format("{} (fold {})", config.world.data, fold + 1)));
     return p;
   };
@@ -209,8 +227,8 @@ ArmLoops dataset_loops(const CampaignConfig& config, const DatasetTrials& trials
       for (int session : sessions_of(*trials.data, static_cast<int>(o))) {
         const int fold = trials.fold_of_session.at(session);
         loop::LoopSettings s;
-        s.problem = problem_for(fold, loop::session_uses(names, *trials.data, session),
-                                config.arms[a].observation_kind());
+        s.problem =
+            problem_for(fold, loop::session_uses(names, *trials.data, session), config.arms[a]);
         s.world = loop::DatasetWorldSpec{trials.data, trials.models.at(fold), session};
         s.planner = arm_planner(config, config.arms[a]);
         s.max_steps = config.planner.max_steps;

@@ -56,13 +56,17 @@ std::vector<int> right_actions(const DatasetTrials& trials);
 bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
                        const ProgressFn& progress, const std::atomic<bool>& stop);
 
-// Writes each fold's problem, `directory`/folds/<fold>/problem.yaml (folds numbered from 1): the
-// fold's fitted table, the task's rewards and costs, each behaviour limited to the most
-// performances any session recorded (default_uses). `echoplan certify --campaign` judges the
-// fold's trials with it. Needs the fitted folds.
-// The file name of a fold's problem for arms that hear `kind`: problem.yaml (labels) or
-// problem-graded.yaml.
-const char* fold_problem_name(perception::ObservationKind kind);
+// The file name of a fold's problem for arms that hear `kind` and do or do not plan with
+// atypical objects: problem.yaml, problem-graded.yaml, problem-atypical.yaml or
+// problem-graded-atypical.yaml.
+std::string fold_problem_name(perception::ObservationKind kind, bool atypical);
+// Some arm plans with atypical objects (CampaignArm::atypical): every arm's problem has the copies.
+bool any_atypical(const CampaignConfig& config);
+
+// Writes each fold's problems, `directory`/folds/<fold>/<fold_problem_name> (folds numbered from
+// 1), one per kind of arm: the fold's fitted table, the task's rewards and costs, each behaviour
+// limited to the most performances any session recorded (default_uses). `echoplan certify
+// --campaign` judges the fold's trials with it. Needs the fitted folds.
 void write_fold_problems(const std::filesystem::path& directory, const CampaignConfig& config,
                          const DatasetTrials& trials);
 

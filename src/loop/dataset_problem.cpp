@@ -97,7 +97,8 @@ double TaskRewards::sensing_reward(const std::string& behaviour) const {
 pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
                                          const perception::ObservationModel& model,
                                          const TaskRewards& rewards, std::vector<int> uses,
-                                         perception::ObservationKind kind, bool atypical) {
+                                         perception::ObservationKind kind,
+                                         std::optional<double> atypical_share) {
   if (model.classes() != task.classes || model.reject())
     throw InputError(fmt::format(
         "the model's classes ({}{}) are not the task's ({}): a dataset problem needs a model "
@@ -109,7 +110,7 @@ pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
     table.push_back(model.observation_table(action, kind));
   pomdp::ObjectProblemData data = problem_of(task, model.actions(), model.observation_symbols(kind),
                                              table, rewards, std::move(uses));
-  if (atypical) add_atypical_copies(data, model.atypical_share(kind));
+  if (atypical_share) add_atypical_copies(data, *atypical_share);
   return data;
 }
 

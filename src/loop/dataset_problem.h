@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,15 +41,17 @@ struct TaskRewards {
 // negative, when `rewards.costs` prices a behaviour the model does not have, or when the model's
 // classes are not the task's (or it rejects), or `kind` is graded and the model has no grades.
 //
-// With `atypical`, objects unlike their class are hidden states too (perception/typicality.h):
-// after the classes come their atypical copies, named atypical_name(class), with the prior
-// (1 - rho) / K for each class and rho / K for each copy (rho: the model's atypical_share of
-// `kind`, which may be 0), the same sorting rewards as their class, and as observation rows the
-// action's class-blind row (the mean of its class rows).
+// With `atypical_share` rho, objects unlike their class are hidden states too
+// (perception/typicality.h): after the classes come their atypical copies, named
+// atypical_name(class), with the prior (1 - rho) / K for each class and rho / K for each copy
+// (usually the model's atypical_share(kind); 0 plans exactly as without copies), the same sorting
+// rewards as their class, and as observation rows the action's class-blind row (the mean of its
+// class rows).
 pomdp::ObjectProblemData dataset_problem(
     const perception::DatasetTask& task, const perception::ObservationModel& model,
     const TaskRewards& rewards, std::vector<int> uses,
-    perception::ObservationKind kind = perception::ObservationKind::labels, bool atypical = false);
+    perception::ObservationKind kind = perception::ObservationKind::labels,
+    std::optional<double> atypical_share = std::nullopt);
 
 // The same problem's shape, with every observation row uniform and default_uses(set): its names
 // (classes and their atypical copies with `atypical`, actions, bins, symbols) before any model is

@@ -162,6 +162,40 @@ TEST(DatasetCampaign, HoldingOutObjectsSortsNovelObjectsByGroup) {
   }
 }
 
+// One arm planning with objects unlike their class: every arm's problem names the atypical copies
+// (so all beliefs name the same states), the other arms' copies have no prior and they decide
+// exactly as in a campaign without that arm, and each kind of arm has its fold problem.
+TEST(DatasetCampaign, AnArmWithAtypicalObjectsLeavesTheOtherArmsAsTheyWere) {
+  const fs::path data = separable_data("dataset_atypical");
+  auto config = [&](bool with_atypical) {
+    std::string text = "seed: 3\nworld: {type: dataset, data: " + data.string() +
+                       ", hold_out: object, groups: " + (data / "groups.csv").string() +
+                       "}\narms:\n  - {name: plan, strategy: plan}\n";
+    if (with_atypical) text += "  - {name: plan_atypical, strategy: plan, atypical: true}\n";
+    text += "planner: {solver: abt, episodes: 300, max_steps: 20}\n";
+    return parse_campaign_config(text, (data.parent_path() / "campaign.yaml").string());
+  };
+  const fs::path with_dir = data.parent_path() / "with";
+  const CampaignResults with = run(config(true), with_dir);
+  const CampaignResults without = run(config(false), data.parent_path() / "without");
+  EXPECT_EQ(with.spec.state.discrete_value_names.at(0),
+            (std::vector<std::string>{"group0", "group1", "group0~atypical", "group1~atypical"}));
+  EXPECT_EQ(without.spec.state.discrete_value_names.at(0).size(), 2u);
+  std::map<std::string, TrialResult> plan_without;
+  for (const JournalEntry& e : without.entries) plan_without[e.object + "/" + e.session] = e.result;
+  int compared = 0;
+  for (const JournalEntry& e : with.entries) {
+    if (e.arm != "plan") continue;
+    const TrialResult& alone = plan_without.at(e.object + "/" + e.session);
+    EXPECT_EQ(e.result.record.action_counts, alone.record.action_counts) << e.object << e.session;
+    EXPECT_EQ(e.result.record.discounted_reward, alone.record.discounted_reward);
+    ++compared;
+  }
+  EXPECT_EQ(compared, 18);
+  EXPECT_TRUE(fs::is_regular_file(with_dir / "folds/1/problem.yaml"));
+  EXPECT_TRUE(fs::is_regular_file(with_dir / "folds/1/problem-atypical.yaml"));
+}
+
 TEST(DatasetCampaign, TooFewSessionsOrObjectsToCalibrateOnAreRefusedBeforeAnyWork) {
   const fs::path data = perception::test_features::fresh_folder("dataset_few") / "data";
   SyntheticSpec spec;

@@ -111,8 +111,9 @@ TEST(DatasetProblem, AtypicalCopiesOfTheClassesCarryTheModelsShare) {
     actions.push_back(std::move(m));
   }
   const perception::ObservationModel model(d, std::move(actions));
-  const pomdp::ObjectProblemData p = dataset_problem(f.task, model, {}, default_uses(f.set),
-                                                     perception::ObservationKind::labels, true);
+  const pomdp::ObjectProblemData p =
+      dataset_problem(f.task, model, {}, default_uses(f.set), perception::ObservationKind::labels,
+                      model.atypical_share(perception::ObservationKind::labels));
   ASSERT_EQ(p.objects.size(), 12u);
   EXPECT_EQ(p.objects[0], "obj0");
   EXPECT_EQ(p.objects[6], "obj0~atypical");
