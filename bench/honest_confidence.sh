@@ -4,8 +4,9 @@
 # behaviour at once (bench/make_feature_set --atypical-share 0.25 --atypical-pull 0.6; 40 objects
 # in 8 groups of 5, 5 sessions, 4 behaviours, audio and haptic), sorted by group with whole objects
 # held out, at EPISODES episodes: the planner and the greedy rule each without and with atypical
-# objects among the hidden states (`atypical: true`), and two fixed baselines. Prints each arm's
-# row, the paired differences and how sure each arm was at the sort against how often it was right.
+# objects among the hidden states (`atypical: true`), the planner with the exact leaf, and two fixed
+# baselines. Prints each arm's row, the paired differences, how sure each arm was at the sort
+# against how often it was right, and each fold's certified regret per trial.
 # Usage: bench/honest_confidence.sh BUILD_DIR [EPISODES] [OUT]
 set -eu
 build=$1
@@ -25,6 +26,7 @@ task:
 arms:
   - {name: plan_atypical, strategy: plan, atypical: true}
   - {name: plan, strategy: plan}
+  - {name: plan_exact, strategy: plan, leaf: exact}
   - {name: all_actions, strategy: all_actions}
   - {name: best_single, strategy: best_single}
   - {name: information_gain, strategy: information_gain}
@@ -34,3 +36,5 @@ YAML
 "$build/echoplan" experiment --config "$dir/campaign.yaml" --out "$out" --workers 2 >/dev/null 2>&1
 grep -E "^arm|^  all +[0-9]|minus" "$out/summary.txt"
 sed -n '/^how sure/,$p' "$out/summary.txt"
+# Each decision against the exact solver's bounds (the model's optimum): regret per trial by fold.
+"$build/echoplan" certify --campaign "$out" 2>/dev/null | grep -E "^ +fold|plan|information_gain "

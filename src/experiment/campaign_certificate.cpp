@@ -127,10 +127,7 @@ double looseness_share(const Certificate& c) {
 
 bool tight(const Certificate& c) { return looseness_share(c) <= kTightShare; }
 
-// 1 − regret / V*, at V*'s midpoint.
-double share(const Certificate& c, double regret) {
-  return 1.0 - regret / (0.5 * (c.vstar.lower + c.vstar.upper));
-}
+double share(const Certificate& c, double regret) { return share_of_vstar(c.vstar, regret); }
 
 }  // namespace
 

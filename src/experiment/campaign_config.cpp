@@ -37,6 +37,8 @@ constexpr std::array<WorldKind, 3> kWorldKinds{{{WorldType::model, "model", fals
 
 std::vector<std::string> observation_choices() { return perception::observation_kind_names(); }
 
+std::vector<std::string> leaf_choices() { return solvers::leaf_mode_names(); }
+
 std::vector<std::string> strategy_choices() {
   std::vector<std::string> choices{kPlanStrategy};
   for (const std::string& name : solvers::strategy_names()) choices.push_back(name);
@@ -79,6 +81,11 @@ const std::vector<Field<CampaignArm>>& arm_fields() {
        .worlds = Worlds::recorded_data,
        .elsewhere = "only for a dataset world: its folds' models fit the share of objects "
                     "unlike their class"},
+      // Left out of the identity at its default: campaigns written before it existed.
+      {.key = "leaf",
+       .member = &CampaignArm::leaf,
+       .identity = Identity::unless_default,
+       .choices = leaf_choices},
   };
   return fields;
 }
@@ -315,6 +322,9 @@ std::vector<CampaignArm> read_arms(const YamlReader& f, const YAML::Node& root,
       f.fail(a,
              "observations: graded needs calibrate: true (grades come from the trained "
              "classifier; a problem file's own table has none)");
+    if (!arm.leaf.empty() && arm.strategy != kPlanStrategy)
+      f.fail(a, "leaf: only an arm that plans (strategy: plan) has a leaf value; '" + arm.strategy +
+                    "' is a fixed strategy");
     for (const CampaignArm& other : read)
       if (other.name == arm.name) f.fail(a, "two arms are named '" + arm.name + "'");
     read.push_back(std::move(arm));

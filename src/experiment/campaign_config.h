@@ -51,6 +51,9 @@ struct CampaignArm {
   // the copies (with a share of 0 for the others, which then plan exactly as without them), so
   // all arms' beliefs name the same states.
   bool atypical = false;
+  // An arm of strategy `plan`: the planner's leaf value (solvers/leaf_value.h: policy, exact, ...);
+  // empty: the solver's default for the problem.
+  std::string leaf{};
 };
 
 // A group of trials with one object in the world. `object` is what the world holds (a catalogue

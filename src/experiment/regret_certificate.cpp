@@ -10,9 +10,13 @@
 
 namespace echoplan::experiment {
 
-double Certificate::share_of_vstar() const {
+double share_of_vstar(const solvers::Bounds& vstar, double regret) {
   const double v = 0.5 * (vstar.lower + vstar.upper);
-  return v != 0.0 ? 1.0 - regret.mean / v : 0.0;
+  return v != 0.0 ? 1.0 - regret / std::abs(v) : 0.0;
+}
+
+double Certificate::share_of_vstar() const {
+  return experiment::share_of_vstar(vstar, regret.mean);
 }
 
 namespace {

@@ -67,9 +67,14 @@ struct Certificate {
   int decisions = 0;
   int unconverged_beliefs = 0;      // beliefs whose bounds missed decision_gap (still valid)
   std::vector<DecisionLoss> worst;  // largest losses first
-  // Share of V*(b0) the planner is certified to reach: 1 − regret.mean / V*, at the midpoint of V*.
+  // Share of V*(b0) the planner is certified to reach: share_of_vstar(vstar, regret.mean).
   double share_of_vstar() const;
 };
+
+// 1 − regret / |V*|, V* at the midpoint of its bounds (0 when V* is 0): the share of V* an arm with
+// that regret reaches, below 1 by the regret's share of V*'s size whatever V*'s sign (a task that
+// costs more than it earns has V* < 0, and 1 − regret / V* would exceed 1).
+double share_of_vstar(const solvers::Bounds& vstar, double regret);
 
 // Certifies `trials` (read from steps.csv) against the exact solver's bounds. With use limits in
 // the solver's tables, each decision is bounded at the node the trial's earlier steps reach, whose

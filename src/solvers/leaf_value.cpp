@@ -1,6 +1,10 @@
 #include "solvers/leaf_value.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -11,15 +15,22 @@
 
 namespace echoplan::solvers {
 
+namespace {
+constexpr std::array kLeafModes{LeafMode::policy,    LeafMode::exact,     LeafMode::exact_offline,
+                                LeafMode::lookahead, LeafMode::heuristic, LeafMode::rollout};
+}  // namespace
+
 LeafMode parse_leaf_mode(const std::string& text) {
-  if (text == "policy") return LeafMode::policy;
-  if (text == "exact") return LeafMode::exact;
-  if (text == "exact-offline") return LeafMode::exact_offline;
-  if (text == "lookahead") return LeafMode::lookahead;
-  if (text == "heuristic") return LeafMode::heuristic;
-  if (text == "rollout") return LeafMode::rollout;
-  throw InputError("leaf value '" + text +
-                   "' is not one of policy, exact, exact-offline, lookahead, heuristic, rollout");
+  for (LeafMode mode : kLeafModes)
+    if (text == leaf_mode_name(mode)) return mode;
+  throw InputError("leaf value '" + text + "' is not one of " +
+                   fmt::format("{}", fmt::join(leaf_mode_names(), ", ")));
+}
+
+std::vector<std::string> leaf_mode_names() {
+  std::vector<std::string> names;
+  for (LeafMode mode : kLeafModes) names.emplace_back(leaf_mode_name(mode));
+  return names;
 }
 
 const char* leaf_mode_name(LeafMode mode) {

@@ -54,6 +54,8 @@ enum class LeafMode { policy, exact, exact_offline, lookahead, heuristic, rollou
 // InputError naming the flag otherwise.
 LeafMode parse_leaf_mode(const std::string& text);
 const char* leaf_mode_name(LeafMode mode);
+// Every mode's name, in the order above.
+std::vector<std::string> leaf_mode_names();
 
 // The leaf value a solver uses unless told otherwise: `policy` for ABT on a tabular identification
 // problem, `lookahead` everywhere else. (`exact` measured better there, docs/BENCHMARKS.md

@@ -99,7 +99,7 @@ for e in entries:
     if e["trials"] != 12 or e["tight"] != (loose <= 0.01):
         print("entry", e); bad += 1
     if e["tight"]:
-        share = 1 - e["regret_mean"] / vstar
+        share = 1 - e["regret_mean"] / abs(vstar)  # below 1 by the regret's share of abs(V*)
         if e["share_of_vstar"] is None or abs(e["share_of_vstar"] - share) > 1e-9:
             print("tight entry without its share", e); bad += 1
     elif e["share_of_vstar"] is not None or "share_range" not in e:

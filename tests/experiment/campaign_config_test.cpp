@@ -94,6 +94,28 @@ TEST(CampaignConfig, RejectsBadValues) {
   EXPECT_EQ(line.substr(0, 2), "6:") << line;
 }
 
+// An arm that plans may choose its planner's leaf value; a fixed strategy has none to choose.
+TEST(CampaignConfig, APlanningArmChoosesItsLeafValue) {
+  auto with_arm = [](const std::string& arm) {
+    std::string text = kMinimal;
+    const std::string from = "{name: a, problem: p.yaml}";
+    return text.replace(text.find(from), from.size(), arm);
+  };
+  const CampaignConfig c =
+      parse_campaign_config(with_arm("{name: a, problem: p.yaml, leaf: exact}"), "/dir/c.yaml");
+  EXPECT_EQ(c.arms[0].leaf, "exact");
+  EXPECT_EQ(to_json(c)["arms"][0]["leaf"], "exact");
+  EXPECT_EQ(to_json(campaign_config_from_json(to_json(c), "campaign.json")), to_json(c));
+  const std::string unknown = error_of(with_arm("{name: a, problem: p.yaml, leaf: magic}"));
+  EXPECT_EQ(unknown.substr(0, 2), "3:") << unknown;
+  EXPECT_NE(unknown.find("policy, exact, exact-offline, lookahead, heuristic, rollout"),
+            std::string::npos)
+      << unknown;
+  const std::string fixed =
+      error_of(with_arm("{name: a, problem: p.yaml, strategy: all_actions, leaf: exact}"));
+  EXPECT_NE(fixed.find("leaf: only an arm that plans"), std::string::npos) << fixed;
+}
+
 TEST(CampaignConfig, TrainingTableEstimate) {
   EXPECT_EQ(parse_campaign_config(kMinimal, "/dir/c.yaml").training.table, "");  // the default
   const CampaignConfig soft =

@@ -244,5 +244,14 @@ TEST(RegretCertificate, AStepPastItsUseLimitNamesTheLine) {
   fs::remove(steps);
 }
 
+// The share of V* falls below 100% by the regret's share of V*'s size, whatever V*'s sign: a task
+// whose best policy loses 10 and an arm that loses 11 reach 90%, not 110%.
+TEST(RegretCertificate, TheShareOfVStarIsBelowOneForARegretWhateverTheSignOfVStar) {
+  EXPECT_DOUBLE_EQ(share_of_vstar({9.0, 11.0}, 1.0), 0.9);
+  EXPECT_DOUBLE_EQ(share_of_vstar({-11.0, -9.0}, 1.0), 0.9);
+  EXPECT_DOUBLE_EQ(share_of_vstar({-10.0, -10.0}, 0.0), 1.0);
+  EXPECT_DOUBLE_EQ(share_of_vstar({0.0, 0.0}, 1.0), 0.0);
+}
+
 }  // namespace
 }  // namespace echoplan::experiment
