@@ -166,6 +166,16 @@ void bind_model(py::module_& m) {
             return x.observation_symbols(perception::ObservationKind::graded);
           },
           "The graded observation symbols ('mug@low', ...), the alphabet of a graded problem.")
+      .def(
+          "atypical_share",
+          [](const ObservationModel& x, bool graded) {
+            return x.atypical_share(graded ? perception::ObservationKind::graded
+                                           : perception::ObservationKind::labels);
+          },
+          py::arg("graded") = false,
+          "The share of objects unlike their class the model fitted on held-out sessions (0 for a "
+          "model trained on recordings): the prior of the atypical copies of dataset_problem(..., "
+          "atypical=True).")
       .def_property_readonly("classifier_name", &ObservationModel::classifier_name)
       .def_property_readonly("reject", &ObservationModel::reject)
       .def(

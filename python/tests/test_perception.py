@@ -91,6 +91,19 @@ def test_the_problem_of_a_feature_set_is_the_commands(tmp_path):
         np.testing.assert_array_equal(problem.model.tables()[key], value)
 
 
+def test_objects_unlike_their_class_are_an_atypical_copy_of_each_class():
+    groups = str(Path(FEATURE_SET) / "groups.csv")
+    feature_set = echoplan.load_feature_set(FEATURE_SET)
+    model = echoplan.fit_feature_model(feature_set, groups=groups, hold_out="object")
+    share = model.atypical_share()
+    assert 0.0 <= share <= 0.5 and 0.0 <= model.atypical_share(graded=True) <= 0.5
+    plain = echoplan.dataset_problem(feature_set, model, groups=groups, hold_out="object")
+    problem = echoplan.dataset_problem(feature_set, model, groups=groups, hold_out="object",
+                                       atypical=True)
+    classes = plain.model.objects
+    assert problem.model.objects == classes + [f"{c}~atypical" for c in classes]
+
+
 def test_bad_arrays_raise_input_error_naming_action_modality_and_row():
     arrays = read_feature_set(FEATURE_SET)
     arrays["tap"]["modalities"]["haptic"][4, 1] = np.nan

@@ -136,7 +136,7 @@ TEST_F(RecordingSetTest, ManifestProblemsNameTheLine) {
 TEST_F(RecordingSetTest, ManifestRowsCannotLeaveTheSet) {
   const std::string sibling = dir_.filename().string() + "_outside";
   std::string manifest = "file,object,action\n";
-  for (const std::string folder : {std::string("mug"), std::string("cup"), "../" + sibling})
+  for (const std::string& folder : {std::string("mug"), std::string("cup"), "../" + sibling})
     for (const char* action : {"strike", "slide"}) {
       write_clip(dir_ / folder / action / "a.wav");
       manifest += folder + "/" + action + "/a.wav," + folder + "," + action + "\n";

@@ -225,8 +225,9 @@ TEST_P(UseLimitsSearch, NeverRepeatsAOnceOnlyActionAndReachesVStar) {
   // No planner beats V* in expectation; a good one is within its 95% CI (plus a little: a
   // handful of close decisions can go either way).
   EXPECT_LE(r.mean - r.half_width, vstar) << GetParam().label;
-  if (GetParam().reaches_vstar)
+  if (GetParam().reaches_vstar) {
     EXPECT_GE(r.mean + r.half_width + 0.5, vstar) << GetParam().label << ": " << r.mean;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -236,7 +237,7 @@ INSTANTIATE_TEST_SUITE_P(
                       SolverCase{"abt_lookahead", true, LeafMode::lookahead},
                       SolverCase{"pomcp_lookahead", false, LeafMode::lookahead},
                       SolverCase{"pomcp_rollout", false, LeafMode::rollout, false}),
-    [](const auto& info) { return std::string(info.param.label); });
+    [](const auto& test) { return std::string(test.param.label); });
 
 }  // namespace
 }  // namespace echoplan::solvers
