@@ -5,7 +5,9 @@
 # five arms (plan, all_actions, best_single, information_gain, random), ABT at EPISODES episodes,
 # HOLD_OUT session or object, on WORKERS workers. Prints the wall and CPU time, peak memory and
 # summary.txt's arm rows and paired differences.
-# Usage: bench/dataset_campaign.sh BUILD_DIR [EPISODES] [HOLD_OUT] [WORKERS] [OUT]
+# With ARMS=exact (environment): three arms instead, the planner with the exact leaf (plan_exact,
+# listed first so the differences are against it), the default planner and information_gain.
+# Usage: [ARMS=exact] bench/dataset_campaign.sh BUILD_DIR [EPISODES] [HOLD_OUT] [WORKERS] [OUT]
 set -eu
 build=$1
 episodes=${2:-20000}
@@ -18,17 +20,24 @@ trap 'rm -rf "$dir"' EXIT
   --actions press,grasp,lift,drop,poke,push,shake,tap,squeeze \
   --action-scales 0.3,0.4,0.5,0.6,0.7,0.8,0.9,1.0,1.2 --modality audio:8:1.5 \
   --modality haptic:4:1.0 --group-separation 1.0 --session-sd 0.3 --seed 1
+if [ "${ARMS:-}" = exact ]; then
+  arms='  - {name: plan_exact, strategy: plan, leaf: exact}
+  - {name: plan, strategy: plan}
+  - {name: information_gain, strategy: information_gain}'
+else
+  arms='  - {name: plan, strategy: plan}
+  - {name: all_actions, strategy: all_actions}
+  - {name: best_single, strategy: best_single}
+  - {name: information_gain, strategy: information_gain}
+  - {name: random, strategy: random}'
+fi
 cat >"$dir/campaign.yaml" <<YAML
 seed: 1
 world: {type: dataset, data: $dir/fs100, hold_out: $hold_out, groups: $dir/fs100/groups.csv}
 task:
   rewards: {right: 10, wrong: -100, sense: -1}
 arms:
-  - {name: plan, strategy: plan}
-  - {name: all_actions, strategy: all_actions}
-  - {name: best_single, strategy: best_single}
-  - {name: information_gain, strategy: information_gain}
-  - {name: random, strategy: random}
+$arms
 planner: {solver: abt, episodes: $episodes, max_steps: 100}
 YAML
 /usr/bin/time -f "%e s wall, %U s user, %M KB peak" -o "$dir/time" "$build/echoplan" experiment \

@@ -77,7 +77,10 @@ void add_atypical_copies(pomdp::ObjectProblemData& data, double rho) {
     data.prior.push_back(data.prior[k] * rho);
     data.prior[k] *= 1.0 - rho;
   }
-  for (auto& row : data.sorting_reward) row.insert(row.end(), row.begin(), row.end());
+  for (auto& row : data.sorting_reward) {
+    const std::vector<double> of_classes = row;  // vector::insert may not read from itself
+    row.insert(row.end(), of_classes.begin(), of_classes.end());
+  }
   for (auto& table : data.observation_table) {
     const std::vector<double> blind = perception::class_blind_row(table);
     table.insert(table.end(), classes, blind);
