@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../common/test_folder.h"
 #include "common/error.h"
 
 namespace echoplan::experiment {
@@ -196,16 +197,13 @@ TEST(CampaignConfig, ReferenceIsRelativeToTheFileAndChecked) {
 
 // A dataset world: the data folder must exist, so the tests make one (its contents are read by the
 // campaign, not by the file's reader).
-class DatasetCampaignConfig : public ::testing::Test {
+class DatasetCampaignConfig : public TestFolder {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("echoplan_dataset_config_" +
-            std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    TestFolder::SetUp();
     std::filesystem::create_directories(dir_ / "data");
     std::ofstream(dir_ / "groups.csv") << "object,group\nmug,ceramic\n";
   }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
 
   std::string source() const { return (dir_ / "c.yaml").string(); }
   std::string error(const std::string& text) const {
@@ -217,7 +215,6 @@ class DatasetCampaignConfig : public ::testing::Test {
     return "no error";
   }
 
-  std::filesystem::path dir_;
   const std::string text_ = R"(
 world: {type: dataset, data: data, hold_out: object, groups: groups.csv}
 task: {rewards: {right: 5, wrong: -50, sense: -2}}
