@@ -38,6 +38,18 @@ ShellParts split_shell_mass(const ObjectSpec& o) {
 
 }  // namespace
 
+double AddedMass::share_at(double frequency_hz) const {
+  if (mount_hz <= 0) return 1.0;
+  const double r = frequency_hz / mount_hz;
+  return 1.0 / (1.0 + r * r);
+}
+
+double ObjectSpec::mass_at(double frequency_hz) const {
+  double m = shell_mass;
+  for (const auto& a : added_masses) m += a.mass * a.share_at(frequency_hz);
+  return m;
+}
+
 double ObjectSpec::total_mass() const {
   double m = shell_mass;
   for (const auto& a : added_masses) m += a.mass;
@@ -75,6 +87,24 @@ std::array<double, 3> ObjectSpec::inertia_diagonal() const {
            parts.base_mass * radius * radius / 2.0, {0.0, 0.0, base_thickness / 2.0});
   for (const auto& a : added_masses) add_body(a.mass, 0.0, 0.0, a.position);
   return inertia;
+}
+
+ObjectSpec ObjectSpec::moving_at(double frequency_hz) const {
+  ObjectSpec moving = *this;
+  for (auto& a : moving.added_masses) {
+    a.mass *= a.share_at(frequency_hz);
+    a.mount_hz = 0;  // what is left of it moves with the object
+  }
+  return moving;
+}
+
+double ObjectSpec::rim_effective_mass(double azimuth_rad) const {
+  const auto com = centre_of_mass();
+  const auto inertia = inertia_diagonal();
+  // r x n with n = z: (r_y, -r_x, 0).
+  const double rx = radius * std::cos(azimuth_rad) - com[0];
+  const double ry = radius * std::sin(azimuth_rad) - com[1];
+  return 1.0 / (1.0 / total_mass() + ry * ry / inertia[0] + rx * rx / inertia[1]);
 }
 
 const ObjectSpec& Catalogue::object(const std::string& name) const {
@@ -166,12 +196,13 @@ ObjectSpec read_modified(const Catalogue& c, const std::string& name, const Yaml
   o.name = name;
   o.base_object = base;
   const YamlMapping added(r.reader(), r.entry() + ".added_mass", r.required("added_mass"));
-  added.only_keys({"mass", "position", "loss_factor"});
+  added.only_keys({"mass", "position", "loss_factor", "mount_hz"});
   AddedMass a;
   a.mass = added.number("mass", NumberRange::above(0));
   const std::vector<double> position = added.numbers("position", 3);  // [x, y, z] in metres
   std::copy(position.begin(), position.end(), a.position.begin());
   a.loss_factor = added.number_or("loss_factor", 0.0, NumberRange::at_least(0).below(1.0));
+  a.mount_hz = added.number_or("mount_hz", 0.0, NumberRange::at_least(0));
   o.added_masses.push_back(a);
   return o;
 }

@@ -40,6 +40,14 @@ struct AddedMass {
   double mass = 0;                   // kg, > 0
   std::array<double, 3> position{};  // m
   double loss_factor = 0;  // damping it adds to the object's modes (putty, glued coins), >= 0
+  // Hz; 0 fixes it rigidly. The natural frequency of the mass on its fixing (tape, a rubber band):
+  // the arm carries its weight, but far above this frequency (an impact, a mode) it stays still.
+  double mount_hz = 0;
+
+  // The share of the mass that moves with the object at `frequency_hz`: 1 when rigid, else a
+  // heavily damped mount's transmissibility 1 / (1 + (f / mount_hz)^2) (critical damping: tape and
+  // putty).
+  double share_at(double frequency_hz) const;
 };
 
 // A rigid object the robot can slide or strike: a thin-walled cylinder with a base.
@@ -65,8 +73,17 @@ struct ObjectSpec {
   // Rigid-body properties including added masses: total mass (kg), centre of mass (m, object frame)
   // and the diagonal of the inertia tensor about the centre of mass (kg m^2, object axes).
   double total_mass() const;
+  // The mass a force at `frequency_hz` moves: the shell and each added mass's share at it.
+  double mass_at(double frequency_hz) const;
   std::array<double, 3> centre_of_mass() const;
   std::array<double, 3> inertia_diagonal() const;
+
+  // What a force at `frequency_hz` moves, as a rigid body: this object with each added mass cut to
+  // the share of it that follows (AddedMass::share_at).
+  ObjectSpec moving_at(double frequency_hz) const;
+  // The effective mass (kg) of this object, free, pushed up along its axis at the rim of its base
+  // at `azimuth_rad`: 1 / (1/m + (r x n)^T I^-1 (r x n)), r from the centre of mass to that point.
+  double rim_effective_mass(double azimuth_rad) const;
 };
 
 // The table's top as a plate whose modes above a few hundred hertz are too dense to list: `count`

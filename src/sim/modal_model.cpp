@@ -28,30 +28,33 @@ constexpr double kClampedFreeBeta = 1.8751;
 // not in the sim config (docs/simulator.md, "Tuned constants").
 constexpr double kWallCoupling = 0.6;
 
-// How added masses load the wall and the base: mass on the base (within a quarter of the height)
-// loads the base's modes, mass higher up the wall's. What every wall mode shares, listed one by one
-// (object_modes) or pooled (dense_wall_band).
-struct WallLoading {
+// How added masses load a mode at `frequency_hz` (its unloaded frequency): mass on the base (within
+// a quarter of the height) loads the base's modes, mass higher up the wall's, each with the share
+// of it that follows the object at that frequency (AddedMass::share_at).
+struct Loading {
   double wall_mass = 0, base_mass = 0, on_wall = 0, on_base = 0;
-  double frequency_factor = 1;  // sqrt(m / (m + added)): the wall's modes fall so
-  double modal_mass = 0;  // a quarter of the loaded wall (cos n theta around, clamped-free along)
-  double mid_radius = 0;  // m, the wall's mid-surface, where the shell formula takes its radius
-  double held_decay = 0;  // 1/s: the finger pads' damping on the wall's modal mass, c / (2 m)
+  double wall_factor = 1;  // sqrt(m / (m + added)): the wall's modes fall so
+  double base_factor = 1;  // and the base's
+  double modal_mass = 0;   // a quarter of the loaded wall (cos n theta around, clamped-free along)
+  double held_decay = 0;   // 1/s: the finger pads' damping on the wall's modal mass, c / (2 m)
 };
 
-WallLoading wall_loading(const ObjectSpec& o, double pad_damping) {
-  WallLoading w;
+Loading loading_at(const ObjectSpec& o, double pad_damping, double frequency_hz) {
+  Loading w;
   w.wall_mass = o.shell_mass * o.wall_thickness * 2.0 * o.height /
                 (o.wall_thickness * 2.0 * o.height + o.radius * o.base_thickness);
   w.base_mass = o.shell_mass - w.wall_mass;
   for (const auto& a : o.added_masses)
-    (a.position[2] <= 0.25 * o.height ? w.on_base : w.on_wall) += a.mass;
-  w.frequency_factor = std::sqrt(w.wall_mass / (w.wall_mass + w.on_wall));
+    (a.position[2] <= 0.25 * o.height ? w.on_base : w.on_wall) += a.mass * a.share_at(frequency_hz);
+  w.wall_factor = std::sqrt(w.wall_mass / (w.wall_mass + w.on_wall));
+  w.base_factor = std::sqrt(w.base_mass / (w.base_mass + w.on_base));
   w.modal_mass = (w.wall_mass + w.on_wall) / 4.0;
-  w.mid_radius = o.radius - o.wall_thickness / 2.0;
   w.held_decay = pad_damping / (2.0 * w.modal_mass);
   return w;
 }
+
+// m, the wall's mid-surface, where the shell formula takes its radius.
+double mid_radius(const ObjectSpec& o) { return o.radius - o.wall_thickness / 2.0; }
 
 // The loss factor every mode gets besides its material's: pressed on the table, and from each
 // added mass's fixing.
@@ -93,15 +96,13 @@ std::vector<Mode> object_modes(const ObjectSpec& o, double max_frequency_hz,
     for (const auto& l : o.listed_modes) keep(l.frequency, decay_of(l, o.material), l.gain, 0);
     return modes;
   }
-  const WallLoading wall = wall_loading(o, pad_damping);
-  const double wall_factor = wall.frequency_factor;
-  const double base_factor = std::sqrt(wall.base_mass / (wall.base_mass + wall.on_base));
   // The wall's shell modes, clamped by the base at the bottom and free at the rim. Struck through
   // its base, the wall rings less than the base; higher orders carry less of the energy.
   for (int n = 2; n <= o.ring_modes; ++n) {
-    const double f =
-        wall_factor * shell_mode_frequency(o.material, wall.mid_radius, o.wall_thickness, n,
-                                           kClampedFreeBeta / o.height);
+    const double unloaded = shell_mode_frequency(o.material, mid_radius(o), o.wall_thickness, n,
+                                                 kClampedFreeBeta / o.height);
+    const Loading wall = loading_at(o, pad_damping, unloaded);
+    const double f = wall.wall_factor * unloaded;
     keep(f, o.material.decay_rate(f) + wall.held_decay, kWallCoupling / (n - 1), n);
   }
   // The base: a clamped disc's first three modes, struck near its edge.
@@ -109,8 +110,9 @@ std::vector<Mode> object_modes(const ObjectSpec& o, double max_frequency_hz,
       {{10.2158, 1.0}, {21.260, 0.4}, {39.771, 0.3}}};
   for (const auto& [lambda2, gain] : kBaseModes) {
     const double base_radius = o.base_radius > 0 ? o.base_radius : o.radius;
-    const double f =
-        base_factor * clamped_plate_frequency(o.material, base_radius, o.base_thickness, lambda2);
+    const double unloaded =
+        clamped_plate_frequency(o.material, base_radius, o.base_thickness, lambda2);
+    const double f = loading_at(o, pad_damping, unloaded).base_factor * unloaded;
     keep(f, o.material.decay_rate(f), gain, lambda2 == 21.260 ? 1 : 0);
   }
   // A closed tube's air column (both ends closed): its first longitudinal resonance c / 2L, which
@@ -127,7 +129,6 @@ std::vector<Mode> dense_wall_band(const ObjectSpec& o, double max_frequency_hz,
   std::vector<Mode> bands;
   if (!o.listed_modes.empty()) return bands;
   const double loss = added_loss_factor(o, contact_loss_factor);
-  const WallLoading wall = wall_loading(o, pad_damping);
   // Third-octave bands centred on 1000 * 2^(k/3) Hz: per band, how many modes and the sum of
   // gain^2 / decay that pooling must keep.
   constexpr int kBandsPerOctave = 3;
@@ -145,9 +146,10 @@ std::vector<Mode> dense_wall_band(const ObjectSpec& o, double max_frequency_hz,
     bool any_below = false;
     double previous = 0;
     for (int n = 0;; ++n) {
-      const double f =
-          wall.frequency_factor *
-          shell_mode_frequency(o.material, wall.mid_radius, o.wall_thickness, n, beta / o.height);
+      const double unloaded =
+          shell_mode_frequency(o.material, mid_radius(o), o.wall_thickness, n, beta / o.height);
+      const Loading wall = loading_at(o, pad_damping, unloaded);
+      const double f = wall.wall_factor * unloaded;
       // Over n the frequency falls (the membrane term) then rises (bending, as n^4): once rising
       // and above the limit, every higher n is too.
       const bool rising = n > 0 && f > previous;

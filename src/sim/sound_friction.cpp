@@ -90,7 +90,8 @@ std::vector<float> friction_excitation(const ContactTrace& trace, int rate, std:
   return e;
 }
 
-void set_friction_drives(double object_mass, double table_impedance, double table_coincidence_hz,
+void set_friction_drives(const std::function<double(double)>& object_mass_at,
+                         double table_impedance, double table_coincidence_hz,
                          double wall_coincidence_hz, const std::vector<Mode>& object_modes,
                          const std::vector<Mode>& table_modes, const std::vector<Mode>& dense_modes,
                          std::vector<ModeDrive>& object_drives,
@@ -109,7 +110,7 @@ void set_friction_drives(double object_mass, double table_impedance, double tabl
   // velocity times the square root of its radiation efficiency (plate_radiation), with no dipole
   // factor.
   auto object_share = [&](double f) {
-    const double x = kTwoPi * f * object_mass / table_impedance;
+    const double x = kTwoPi * f * object_mass_at(f) / table_impedance;
     return 1.0 / std::sqrt(1.0 + x * x);
   };
   for (std::size_t k = 0; k < object_modes.size(); ++k) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "sim/contact_trace.h"
@@ -31,9 +32,11 @@ std::vector<float> friction_excitation(const ContactTrace& trace, int rate, std:
 
 // Sets the continuous (friction) gains of the object's, the table's and the wall's dense-band
 // drives. Roughness noise is a velocity source between two bodies, so the imposed velocity splits
-// between the object (a mass `object_mass` on the contact) and the table top (its point impedance
-// `table_impedance`, N s/m) like a source across two impedances in series (Cremer & Heckl).
-void set_friction_drives(double object_mass, double table_impedance, double table_coincidence_hz,
+// between the object (a mass `object_mass_at(f)` on the contact at frequency f) and the table top
+// (its point impedance `table_impedance`, N s/m) like a source across two impedances in series
+// (Cremer & Heckl).
+void set_friction_drives(const std::function<double(double)>& object_mass_at,
+                         double table_impedance, double table_coincidence_hz,
                          double wall_coincidence_hz, const std::vector<Mode>& object_modes,
                          const std::vector<Mode>& table_modes, const std::vector<Mode>& dense_modes,
                          std::vector<ModeDrive>& object_drives,

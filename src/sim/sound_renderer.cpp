@@ -28,8 +28,7 @@ SoundRenderer::SoundRenderer(const ObjectSpec& object, const TableSpec& table,
       wall_coincidence_hz_(object.wall_thickness > 0
                                ? coincidence_frequency(object.material, object.wall_thickness)
                                : 0),
-      table_impedance_(plate_point_impedance(table.material, table.thickness)),
-      object_mode_scale_(kReferenceModalMass / object.total_mass()) {
+      table_impedance_(plate_point_impedance(table.material, table.thickness)) {
   std::erase_if(table_modes_, [&](const Mode& m) {
     return m.frequency_hz >= 0.45 * config.recording.sample_rate;
   });
@@ -60,11 +59,23 @@ std::vector<float> SoundRenderer::dry_sound(const ContactTrace& trace, std::size
   const int rate = rec.sample_rate;
   std::vector<ModeDrive> object_drives(object_modes_.size()), table_drives(table_modes_.size());
   std::vector<float> dry(frames, 0.0f);
-  for (const Impact& impact : trace.impacts) {
-    const auto at = static_cast<std::size_t>(std::lround(impact.time_s * rate));
+  for (const Impact& struck : trace.impacts) {
+    const auto at = static_cast<std::size_t>(std::lround(struck.time_s * rate));
     if (at >= frames) continue;
+    // A mass on a loose mount (AddedMass::mount_hz) stays still during a contact far shorter than
+    // its mount's period: the impact moves, and its sound feels, only what follows. The contact's
+    // frequency is taken with every mass rigid (a following mass would lengthen it); the physics'
+    // effective mass is scaled by the rigid-body ratio of what moves to the whole.
+    const ObjectSpec moving = object_.moving_at(0.5 / contact_time(struck));
+    const double azimuth = struck.contacts.empty() ? 0.0 : struck.contacts.front().azimuth_rad;
+    const double moved_mass = moving.total_mass();
+    Impact impact = struck;
+    impact.effective_mass *=
+        moving.rim_effective_mass(azimuth) / object_.rim_effective_mass(azimuth);
     const double tau = contact_time(impact);
-    add_impact_impulses(impact, at, tau, rec, object_modes_, object_mode_scale_, table_modes_,
+    // The object's modes respond to an impulse inversely to the mass it moves.
+    const double object_mode_scale = kReferenceModalMass / moved_mass;
+    add_impact_impulses(impact, at, tau, rec, object_modes_, object_mode_scale, table_modes_,
                         table_coincidence_hz_, object_drives, table_drives);
     add_contact_ring(rec.contact_ring_gain, impact.effective_mass * impact.normal_speed, tau,
                      contact_ring_decay(impact), at, rate, dry);
@@ -73,9 +84,9 @@ std::vector<float> SoundRenderer::dry_sound(const ContactTrace& trace, std::size
       trace, rate, frames, rec.friction_gain,
       {object_.friction, rec.friction_load_exponent, rec.friction_reference_force_n}, noise);
   std::vector<ModeDrive> dense_drives(dense_modes_.size());
-  set_friction_drives(object_.total_mass(), table_impedance_, table_coincidence_hz_,
-                      wall_coincidence_hz_, object_modes_, table_modes_, dense_modes_,
-                      object_drives, table_drives, dense_drives);
+  set_friction_drives([this](double f) { return object_.mass_at(f); }, table_impedance_,
+                      table_coincidence_hz_, wall_coincidence_hz_, object_modes_, table_modes_,
+                      dense_modes_, object_drives, table_drives, dense_drives);
   render_mode_banks({{&object_modes_, &object_drives},
                      {&table_modes_, &table_drives},
                      {&dense_modes_, &dense_drives}},

@@ -73,8 +73,6 @@ class SoundRenderer {
   double wall_coincidence_hz_ =
       0;                        // of the object's wall, which radiates its dense band as a plate
   double table_impedance_ = 0;  // N s/m, the top's point impedance (plate_point_impedance)
-  double object_mode_scale_ =
-      1;  // the object's modes' response per unit impulse, relative (1 / mass)
 };
 
 }  // namespace echoplan::sim

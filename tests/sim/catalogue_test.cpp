@@ -78,6 +78,27 @@ TEST(Catalogue, ModifiedObjectIsTheOriginalPlusItsAddedMass) {
   EXPECT_GT(heavy.inertia_diagonal()[0], mug.inertia_diagonal()[0]);
 }
 
+// A mass on a loose mount (tape) is carried by the arm but stays still at audio frequencies: the
+// share that follows is a critically damped mount's transmissibility, 1 / (1 + (f / f_mount)^2).
+TEST(Catalogue, ALooseMountsMassFollowsTheObjectOnlyBelowItsFrequency) {
+  const Catalogue rigid = parse_catalogue(kValid, "test.yaml");
+  EXPECT_EQ(rigid.object("heavy_mug").added_masses.at(0).mount_hz, 0.0);
+  EXPECT_DOUBLE_EQ(rigid.object("heavy_mug").mass_at(5000), 0.5);
+  const Catalogue loose = parse_catalogue(
+      replace(kValid, "position: [0, 0, 0.01]}", "position: [0, 0, 0.01], mount_hz: 50}"),
+      "test.yaml");
+  const ObjectSpec& heavy = loose.object("heavy_mug");
+  EXPECT_EQ(heavy.added_masses.at(0).mount_hz, 50.0);
+  EXPECT_DOUBLE_EQ(heavy.total_mass(), 0.5);  // the arm carries it all
+  EXPECT_DOUBLE_EQ(heavy.mass_at(50), 0.3 + 0.2 / 2);
+  EXPECT_DOUBLE_EQ(heavy.mass_at(500), 0.3 + 0.2 / 101);
+  EXPECT_NEAR(heavy.mass_at(0.001), 0.5, 1e-9);
+  const InputError e = parse_error(
+      replace(kValid, "position: [0, 0, 0.01]}", "position: [0, 0, 0.01], mount_hz: -5}"));
+  EXPECT_EQ(e.line(), 20);
+  EXPECT_NE(e.problem().find("mount_hz"), std::string::npos) << e.problem();
+}
+
 TEST(Catalogue, InertiaOfAThinTubeMatchesTheTextbookFormula) {
   // A tube with a negligible base: I_zz -> m (R^2 + r^2) / 2, I_xx -> m ((R^2 + r^2)/4 + H^2/12).
   ObjectSpec tube;

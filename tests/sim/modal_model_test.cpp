@@ -108,6 +108,40 @@ TEST(ModalModel, HoldingPadsDampTheWallModesNotTheBase) {
               0.02);
 }
 
+// A mass fixed on the base lowers the base's modes by sqrt(m / (m + added)); on a loose mount (a
+// share 1 / (1 + (f / f_mount)^2) of it follows at f) the kilohertz modes hardly feel it.
+TEST(ModalModel, OnlyAMassThatFollowsTheModeLowersIt) {
+  constexpr double kEveryMode = 1e6;  // Hz: no mode is dropped by the limit, loaded or not
+  const auto bare = object_modes(mug(), kEveryMode, 0.0);
+  ObjectSpec rigid = mug();
+  rigid.added_masses.push_back({.mass = 0.2, .position = {0, 0, 0.01}});
+  ObjectSpec loose = rigid;
+  loose.added_masses[0].mount_hz = 50;
+  const auto fixed = object_modes(rigid, kEveryMode, 0.0);
+  const auto mounted = object_modes(loose, kEveryMode, 0.0);
+  ASSERT_EQ(fixed.size(), bare.size());
+  ASSERT_EQ(mounted.size(), bare.size());
+  // The test mug's base weighs 0.3 - 0.241935 = 0.058065 kg (see
+  // HoldingPadsDampTheWallModesNotTheBase).
+  const double base_mass = 0.3 - 0.241935;
+  int base_modes = 0;
+  for (std::size_t i = 0; i < bare.size(); ++i) {
+    const double f = bare[i].frequency_hz;
+    if (bare[i].azimuthal_order >= 2) {  // the wall: no mass on it
+      EXPECT_DOUBLE_EQ(fixed[i].frequency_hz, f);
+      EXPECT_DOUBLE_EQ(mounted[i].frequency_hz, f);
+      continue;
+    }
+    ++base_modes;
+    EXPECT_NEAR(fixed[i].frequency_hz, f * std::sqrt(base_mass / (base_mass + 0.2)), 1e-3 * f);
+    const double following = 0.2 / (1 + (f / 50) * (f / 50));
+    EXPECT_NEAR(mounted[i].frequency_hz, f * std::sqrt(base_mass / (base_mass + following)),
+                1e-3 * f);
+    EXPECT_GT(mounted[i].frequency_hz, 0.999 * f);
+  }
+  EXPECT_EQ(base_modes, 3);
+}
+
 TEST(ModalModel, ClosedTubeRingsAtHalfWavelengthCavity) {
   ObjectSpec can = mug();
   can.height = 0.23;
