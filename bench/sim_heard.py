@@ -42,9 +42,10 @@ ROWS = [
     ("weighted mug's strikes heard as the mug", "strike", ["coffee_mug_weighted"], "coffee_mug", 9, 11),
     ("weighted mug's slides heard as the mug", "slide", ["coffee_mug_weighted"], "coffee_mug", 5, 8),
 ]
-# The done-when rows (the others are printed for context).
+# The rows the simulator must hold inside the lab's intervals (the others are printed for context).
 REQUIRED = {"strikes heard right", "slides heard right", "paper base's slides heard right",
-            "weighted can's slides heard as the can", "weighted mug's strikes heard as the mug"}
+            "weighted can's slides heard as the can", "weighted can's strikes heard as the can",
+            "weighted mug's strikes heard as the mug"}
 
 
 def wilson(k, n, z=1.959964):
