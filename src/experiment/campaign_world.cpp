@@ -282,14 +282,37 @@ ArmLoops ProblemFileWorld::make_loops(const CampaignConfig& config) const {
   return loops;
 }
 
-// A simulated world's training set as the reference's classifier hears it (the page's comparison
-// with the lab's counts); empty for a reference without `heard`, or no training set.
+// A simulated world's training set as the reference's classifier hears it, leave-one-out, and the
+// trials' variants (objects that are no class: the weighted can) heard by that classifier fitted
+// on the whole training set, as the lab heard its modified objects: the page's comparison with the
+// lab's counts. The variants' recordings (as many per pair as the training set's) are synthesised
+// into DIR/training/variants on their own random stream. Empty for a reference without `heard`,
+// or no training set.
 std::vector<HeardCounts> ProblemFileWorld::heard(const CampaignConfig& config) const {
   const std::optional<ReferenceResults>& reference = config.reference;
   if (!simulates_ || !reference || !reference->heard || !fs::is_directory(recordings_)) return {};
+  const perception::RecordingSet training = perception::load_recording_set(recordings_.string());
+  loop::SimulatedTraining variants = simulated_training(config);
+  variants.objects.clear();
+  for (const ObjectGroup& group : config.groups)
+    if (std::find(training.objects.begin(), training.objects.end(), group.object) ==
+            training.objects.end() &&
+        std::find(variants.objects.begin(), variants.objects.end(), group.object) ==
+            variants.objects.end())
+      variants.objects.push_back(group.object);
+  variants.actions = training.actions;
+  variants.seed = loop::stream_seed(config.seed, loop::Stream::campaign_variants);
+  variants.directory = training_ / "variants";
+  const std::atomic<bool> never_stop{false};
+  const bool hear_variants = !variants.objects.empty() && variants.per_pair > 0 &&
+                             loop::synthesise_training_set(variants, {}, never_stop);
+  const std::vector<perception::HeardConfusion> confusions =
+      hear_variants ? perception::heard_confusion(
+                          training, perception::load_recording_set(variants.directory.string()),
+                          reference->heard->classifier)
+                    : perception::heard_confusion(training, reference->heard->classifier);
   std::vector<HeardCounts> heard;
-  for (const perception::HeardConfusion& h : perception::heard_confusion(
-           perception::load_recording_set(recordings_.string()), reference->heard->classifier))
+  for (const perception::HeardConfusion& h : confusions)
     heard.push_back({h.action, h.confusion.objects, h.confusion.symbols, h.confusion.counts});
   return heard;
 }

@@ -275,8 +275,9 @@ std::string heard_section(const CampaignResults& results) {
   const HeardReference& lab = *reference->heard;
   std::string h = fmt::format(
       "<h2>What the classifier hears: the simulated training set and the {}'s runs</h2>\n"
-      "<p>Classifier <code>{}</code>; simulated: leave-one-out over the training set. Each row: "
-      "the object's recordings heard as {}, and the share heard as itself.</p>\n",
+      "<p>Classifier <code>{}</code>; simulated: leave-one-out over the training set, and the "
+      "variants heard by the classifier fitted on all of it. Each row: the object's recordings "
+      "heard as {}, and the share heard as itself.</p>\n",
       escape(reference->label), escape(lab.classifier),
       escape(fmt::format("{}", fmt::join(results.heard.front().columns, ", "))));
   if (!lab.note.empty()) h += "<p>" + escape(lab.note) + "</p>\n";

@@ -28,4 +28,13 @@ std::vector<HeardConfusion> heard_confusion(const RecordingSet& set, const std::
                                             const AnalysisSettings& analysis = {},
                                             const ProgressFn& progress = {});
 
+// The same, with the recordings of `variants` (objects that are no class: a modified object) heard
+// by the classifier fitted on all of `set`, as the report heard its weighted objects with templates
+// made from the originals: their rows follow the set's in each action's confusion. `variants` must
+// have only actions of `set` (InputError naming it otherwise).
+std::vector<HeardConfusion> heard_confusion(const RecordingSet& set, const RecordingSet& variants,
+                                            const std::string& classifier,
+                                            const AnalysisSettings& analysis = {},
+                                            const ProgressFn& progress = {});
+
 }  // namespace echoplan::perception

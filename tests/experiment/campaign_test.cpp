@@ -11,6 +11,7 @@
 
 #include "common/error.h"
 #include "common/file_io.h"
+#include "perception/recording_set.h"
 
 namespace echoplan::experiment {
 namespace {
@@ -200,19 +201,28 @@ TEST(Campaign, ClosedLoopRunsWithACalibratedArmAndGivesTheSameFilesOnAnyNumberOf
         EXPECT_TRUE(s.heard_probability.has_value()) << "trial " << e.id;
       }
   // The training set heard by the reference's classifier, leave-one-out: every recording (the
-  // problem's 4 objects x 2 per action) counted once, beside the lab's counts.
+  // problem's 4 objects x 2 per action) counted once; then the trials' variant, the weighted mug,
+  // synthesised 2 per action and heard by the classifier fitted on the whole training set; beside
+  // the lab's counts.
   const nlohmann::json summary =
       nlohmann::json::parse(read_text_file((one / "summary.json").string(), "summary"));
   EXPECT_EQ(summary["heard"]["classifier"], "report-template");
   ASSERT_EQ(summary["heard"]["simulated"].size(), 2u);
   for (const nlohmann::json& action : summary["heard"]["simulated"]) {
-    EXPECT_EQ(action["objects"].size(), 4u);
-    int total = 0;
-    for (const auto& row : action["counts"])
+    ASSERT_EQ(action["objects"].size(), 5u);
+    EXPECT_EQ(action["objects"][4], "coffee_mug_weighted");
+    EXPECT_EQ(action["heard"].size(), 4u) << action.dump();
+    std::vector<int> per_row;
+    for (const auto& row : action["counts"]) {
+      int total = 0;
       for (const auto& c : row) total += c.get<int>();
-    EXPECT_EQ(total, 8) << action["action"];
+      per_row.push_back(total);
+    }
+    EXPECT_EQ(per_row, (std::vector<int>{2, 2, 2, 2, 2})) << action["action"];
   }
   EXPECT_EQ(summary["heard"]["lab"].size(), 2u);
+  EXPECT_EQ(perception::load_recording_set((one / "training" / "variants").string()).objects,
+            (std::vector<std::string>{"coffee_mug_weighted"}));
 }
 
 // The InputError message of opening `config` in `dir`.
