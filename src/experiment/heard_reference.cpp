@@ -11,9 +11,11 @@
 
 namespace echoplan::experiment {
 
-int HeardCounts::right(std::size_t row) const {
-  const auto column = std::find(columns.begin(), columns.end(), rows[row]);
-  return column == columns.end() ? 0 : counts[row][column - columns.begin()];
+int HeardCounts::right(std::size_t row) const { return heard_as(row, rows[row]); }
+
+int HeardCounts::heard_as(std::size_t row, const std::string& column) const {
+  const auto at = std::find(columns.begin(), columns.end(), column);
+  return at == columns.end() ? 0 : counts[row][at - columns.begin()];
 }
 
 int HeardCounts::total(std::size_t row) const {

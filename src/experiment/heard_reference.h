@@ -28,6 +28,8 @@ struct HeardCounts {
 
   // Recordings of `row` heard as themselves / all of them (0 when the row is not a column).
   int right(std::size_t row) const;
+  // Recordings of `row` heard as `column` (0 when it is not a column).
+  int heard_as(std::size_t row, const std::string& column) const;
   int total(std::size_t row) const;
 };
 

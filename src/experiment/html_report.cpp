@@ -245,20 +245,21 @@ std::string steps_table(const CampaignResults& results) {
   return h + "</table>\n</details>\n";
 }
 
-// One object's counts of one action: "a b c d" (per class heard) and the share heard right.
-std::string heard_cells(const HeardCounts* counts, const std::string& object) {
+// One object's counts of one action: "a b c d" (per class heard) and the share heard as `right`
+// (the object itself, or the original a variant plays).
+std::string heard_cells(const HeardCounts* counts, const std::string& object,
+                        const std::string& right) {
   if (!counts) return "<td>-</td><td>-</td>";
   const auto row = std::find(counts->rows.begin(), counts->rows.end(), object);
   if (row == counts->rows.end()) return "<td>-</td><td>-</td>";
   const auto r = static_cast<std::size_t>(row - counts->rows.begin());
   const int n = counts->total(r);
   const std::string heard = fmt::format("<td>{}</td>", fmt::join(counts->counts[r], " "));
-  // A variant (no class of its own) is never heard right or wrong: only its counts.
   const bool a_class =
-      std::find(counts->columns.begin(), counts->columns.end(), object) != counts->columns.end();
+      std::find(counts->columns.begin(), counts->columns.end(), right) != counts->columns.end();
   if (!a_class || n == 0) return heard + "<td>-</td>";
-  return heard + fmt::format("<td>{}/{} = {:.2f}</td>", counts->right(r), n,
-                             static_cast<double>(counts->right(r)) / n);
+  const int k = counts->heard_as(r, right);
+  return heard + fmt::format("<td>{}/{} = {:.2f}</td>", k, n, static_cast<double>(k) / n);
 }
 
 const HeardCounts* of_action(const std::vector<HeardCounts>& all, const std::string& action) {
@@ -277,10 +278,12 @@ std::string heard_section(const CampaignResults& results) {
       "<h2>What the classifier hears: the simulated training set and the {}'s runs</h2>\n"
       "<p>Classifier <code>{}</code>; simulated: leave-one-out over the training set, and the "
       "variants heard by the classifier fitted on all of it. Each row: the object's recordings "
-      "heard as {}, and the share heard as itself.</p>\n",
+      "heard as {}, and the share heard as itself (a variant: as the object it plays).</p>\n",
       escape(reference->label), escape(lab.classifier),
       escape(fmt::format("{}", fmt::join(results.heard.front().columns, ", "))));
   if (!lab.note.empty()) h += "<p>" + escape(lab.note) + "</p>\n";
+  std::map<std::string, std::string> plays;  // a variant's row is right when heard as its original
+  for (const ObjectGroup& group : results.config.groups) plays[group.object] = group.plays;
   for (const HeardCounts& simulated : results.heard) {
     const HeardCounts* measured = of_action(lab.actions, simulated.action);
     std::vector<std::string> objects = simulated.rows;
@@ -291,9 +294,11 @@ std::string heard_section(const CampaignResults& results) {
         "<h3>{0}</h3>\n<table>\n<tr><th>object</th><th>simulated: heard as</th><th>simulated: "
         "right</th><th>{1}: heard as</th><th>{1}: right</th></tr>\n",
         escape(simulated.action), escape(reference->label));
-    for (const std::string& o : objects)
-      h += "<tr><td>" + escape(o) + "</td>" + heard_cells(&simulated, o) +
-           heard_cells(measured, o) + "</tr>\n";
+    for (const std::string& o : objects) {
+      const std::string right = plays.contains(o) ? plays.at(o) : o;
+      h += "<tr><td>" + escape(o) + "</td>" + heard_cells(&simulated, o, right) +
+           heard_cells(measured, o, right) + "</tr>\n";
+    }
     h += "</table>\n";
   }
   return h;

@@ -117,9 +117,14 @@ TEST_F(HtmlReport, HeardConfusionBesideTheReferencesOnlyWhenBothAreThere) {
   EXPECT_TRUE(has(page,
                   "<tr><td>a</td><td>3 1</td><td>3/4 = 0.75</td><td>5 3</td><td>5/8 = "
                   "0.62</td></tr>"));
-  // "b" was not heard in the lab; "b_heavy" is no class: counts only.
+  // "b" was not heard in the lab; "b_heavy", a variant playing "b", is right when heard as "b".
   EXPECT_TRUE(has(page, "<tr><td>b</td><td>0 4</td><td>4/4 = 1.00</td><td>-</td><td>-</td></tr>"));
-  EXPECT_TRUE(has(page, "<tr><td>b_heavy</td><td>-</td><td>-</td><td>2 6</td><td>-</td></tr>"));
+  EXPECT_TRUE(
+      has(page, "<tr><td>b_heavy</td><td>-</td><td>-</td><td>2 6</td><td>6/8 = 0.75</td></tr>"));
+  // A row that is no class and plays none (not among the trials): counts only.
+  results.config.reference->heard->actions[0].rows[1] = "c_odd";
+  page = html_report(dir_, results, {});
+  EXPECT_TRUE(has(page, "<tr><td>c_odd</td><td>-</td><td>-</td><td>2 6</td><td>-</td></tr>"));
 
   results.heard.clear();  // not a simulated world
   EXPECT_FALSE(has(html_report(dir_, results, {}), "What the classifier hears"));
