@@ -28,6 +28,7 @@ void AbtSolver::reset(const pomdp::Belief& belief, Rng& rng) {
 }
 
 void AbtSolver::improve(const Budget& budget, Rng& rng) {
+  root_values_stale_ = true;
   TreeSearchSolver::improve(leaf_value().episode_budget(budget), rng);
 }
 
@@ -205,12 +206,15 @@ void AbtSolver::backup(const Episode& episode, std::size_t last) {
 }
 
 void AbtSolver::run_episode(Rng& rng) {
-  // The root's particle set changes on update (replenishment), so its Q values are refreshed here.
+  // The root's particle set changes on update (replenishment), so its Q values are refreshed here:
+  // every episode when they are particle means, once per improve() over an exact belief.
   BeliefNode& top = root();
   leaf_value().start_episode();
-  for (std::size_t a = 0; a < top.actions.size(); ++a)
-    if (top.actions[a] && top.actions[a]->visits > 0)
-      top.actions[a]->value = action_value(top, static_cast<int>(a), step_belief(0));
+  if (root_values_stale_ || !step_belief(0))
+    for (std::size_t a = 0; a < top.actions.size(); ++a)
+      if (top.actions[a] && top.actions[a]->visits > 0)
+        top.actions[a]->value = action_value(top, static_cast<int>(a), step_belief(0));
+  root_values_stale_ = false;
 
   path_uses_ = path_uses_at_root();
   if (!options().keep_episodes) {

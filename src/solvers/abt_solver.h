@@ -125,6 +125,9 @@ class AbtSolver final : public TreeSearchSolver {
   std::vector<Episode> episodes_;  // with keep_episodes
   Episode path_;                   // the current episode otherwise (reused)
   UseCounts path_uses_;  // the episode's uses (real steps, then its path) where it stands now
+  // With an exact belief at the root, its Q values change only in backups (which recompute the
+  // action they pass through): they are refreshed at the first episode of each improve() alone.
+  bool root_values_stale_ = true;
   std::vector<pomdp::StepResult> one_step_each_;  // reused between particles
   std::vector<double> rewards_;                   // reused between particles
 };

@@ -1,13 +1,12 @@
 #include "solvers/sensing_policy.h"
 
-#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "common/error.h"
+#include "solvers/entropy_kernels.h"
 #include "solvers/identification_solver.h"
-#include "solvers/sum_x_log_x.h"
 
 namespace echoplan::solvers {
 
@@ -35,8 +34,7 @@ SensingPolicy::SensingPolicy(std::shared_ptr<const IdentificationTables> tables)
   num_observations_ = t.observations;
   discount_ = t.discount;
   const int L = t.live_states, A = num_actions_;
-  for (int a = 0; a < A; ++a)
-    if (!t.terminal[a]) sensing_.push_back(a);
+  for (int a = 0; a < A; ++a) (t.terminal[a] ? terminal_ : sensing_).push_back(a);
   best_commit_.assign(L, 0.0);
   best_terminal_.assign(L, -1);
   double top = -std::numeric_limits<double>::infinity(), bottom = -top;
@@ -49,6 +47,9 @@ SensingPolicy::SensingPolicy(std::shared_ptr<const IdentificationTables> tables)
         best_commit_[l] = r, best_terminal_[l] = a;
     }
   }
+  for (int l = 0; l < L; ++l)
+    for (int a : terminal_) terminal_reward_by_state_.push_back(t.reward[a * L + l]);
+  commit_sums_.resize(terminal_.size());
   // Halving steps from half the reward span: committing with a loss of half the span down to about
   // a thousandth of it (on the report's problem, P(wrong group) from 0.5 to 0.0005).
   const double span = std::max(top - bottom, 1e-9);
@@ -125,17 +126,24 @@ double SensingPolicy::expected_reward(const std::vector<double>& belief, int a) 
 }
 
 double SensingPolicy::commit_value(const std::vector<double>& belief) const {
+  // expected_reward() of every terminal action at once, state by state: each sum adds the same
+  // terms in the same order (a state the belief leaves out adds an exact 0), so bit for bit.
+  const std::vector<int>& states = tables_->model_state;
+  const std::size_t T = terminal_.size();
+  std::fill(commit_sums_.begin(), commit_sums_.end(), 0.0);
+  for (std::size_t l = 0; l < states.size(); ++l)
+    if (const double b = belief[states[l]]; b != 0.0)
+      add_scaled(commit_sums_.data(), b, &terminal_reward_by_state_[l * T], T);
   double best = -std::numeric_limits<double>::infinity();
-  for (int a = 0; a < num_actions_; ++a)
-    if (tables_->terminal[a]) best = std::max(best, expected_reward(belief, a));
+  for (double r : commit_sums_) best = std::max(best, r);
   return best;
 }
 
-double SensingPolicy::loss(const std::vector<double>& belief) const {
+double SensingPolicy::loss(const std::vector<double>& belief, double commit) const {
   const std::vector<int>& states = tables_->model_state;
   double known = 0.0;
   for (std::size_t l = 0; l < states.size(); ++l) known += belief[states[l]] * best_commit_[l];
-  return known - commit_value(belief);
+  return known - commit;
 }
 
 double SensingPolicy::decision_entropy(const std::vector<double>& belief) const {
@@ -195,32 +203,23 @@ double SensingPolicy::expected_entropy_by_outcome(const std::vector<double>& bel
 }
 
 double SensingPolicy::expected_entropy_grouped(int a) const {
-  // With g[k][o] = Σ_{l sorted by k} b(l) e(a, o, l) and T[o] = Σ_l b(l) e(a, o, l), the entropy
-  // after o weighted by P(o) = T[o] is T[o] H(g[.][o] / T[o]) = G[o] log T[o] − Σ_k g[k][o] log
-  // g[k][o] (G[o] = Σ_k g[k][o]): no normalised belief, every log in one vectorised pass, and
-  // the sums run over the outcomes contiguously (emission_by_state_).
+  // With g[k][o] = Σ_{l sorted by k} b(l) e(a, o, l) and T[o] = Σ_k g[k][o] = P(o) (every live
+  // state is sorted by some terminal action, when there is one), the entropy after o weighted by
+  // P(o) is T[o] H(g[.][o] / T[o]) = T[o] log T[o] − Σ_k g[k][o] log g[k][o]: no normalised
+  // belief, every log in a vectorised pass, and the sums run over the outcomes contiguously
+  // (emission_by_state_), each state's into its group's row alone.
   const int L = tables_->live_states, O = num_observations_, K = num_groups_;
   std::fill(grouped_.begin(), grouped_.end(), 0.0);
-  std::fill(totals_.begin(), totals_.end(), 0.0);
-  using Column = Eigen::Map<Eigen::ArrayXd>;
+  const auto group = [&](int k) { return &grouped_[static_cast<std::size_t>(k) * O]; };
   const double* e = &emission_by_state_[static_cast<std::size_t>(sensing_index_[a]) * L * O];
-  Column t(totals_.data(), O);
   for (int l = 0; l < L; ++l, e += O) {
     const double b = live_belief_[l];
-    if (b == 0.0) continue;
-    const Eigen::Map<const Eigen::ArrayXd> row(e, O);
-    t += b * row;
-    if (group_of_live_[l] >= 0)
-      Column(&grouped_[static_cast<std::size_t>(group_of_live_[l]) * O], O) += b * row;
+    if (b != 0.0 && group_of_live_[l] >= 0) add_scaled(group(group_of_live_[l]), b, e, O);
   }
-  double x_log_x = sum_x_log_x(grouped_.data(), static_cast<std::size_t>(K) * O);
-  double result = -x_log_x;
-  for (int o = 0; o < O; ++o) {
-    double sorted = 0.0;
-    for (int k = 0; k < K; ++k) sorted += grouped_[static_cast<std::size_t>(k) * O + o];
-    if (totals_[o] > 0.0) result += sorted * std::log(totals_[o]);
-  }
-  return result;
+  std::fill(totals_.begin(), totals_.end(), 0.0);
+  for (int k = 0; k < K; ++k) add_scaled(totals_.data(), 1.0, group(k), O);
+  return sum_x_log_x(totals_.data(), O) -
+         sum_x_log_x(grouped_.data(), static_cast<std::size_t>(K) * O);
 }
 
 void SensingPolicy::rollout(const std::vector<double>& start, const UseCounts& start_uses,
@@ -246,7 +245,7 @@ void SensingPolicy::rollout(const std::vector<double>& start, const UseCounts& s
     const double commit = commit_value(belief);
     // Past the step cap, or with every sensing action used up, every threshold commits now.
     const bool go_on = step < steps && (!limits.any() || can_sense(uses));
-    const double l = go_on ? loss(belief) : -std::numeric_limits<double>::infinity();
+    const double l = go_on ? loss(belief, commit) : -std::numeric_limits<double>::infinity();
     while (stopped < kThresholds && l <= thresholds_[stopped])
       returns[stopped++] += collected + weight * commit;
     if (stopped == kThresholds) return;

@@ -75,7 +75,8 @@ class SensingPolicy {
   }
 
  private:
-  double loss(const std::vector<double>& belief) const;
+  // Σ_s b(s) best_commit(s) − commit, with commit = commit_value(belief).
+  double loss(const std::vector<double>& belief, double commit) const;
   // True when some sensing action is still available after `uses`.
   bool can_sense(const UseCounts& uses) const;
   double decision_entropy(const std::vector<double>& belief) const;
@@ -95,11 +96,13 @@ class SensingPolicy {
   std::shared_ptr<const IdentificationTables> tables_;           // the problem, over live states
   int num_states_ = 0, num_actions_ = 0, num_observations_ = 0;  // states: the model's, all
   double discount_ = 0.0;
-  std::vector<int> sensing_;         // the non-terminal actions
+  std::vector<int> sensing_, terminal_;  // the non-terminal actions, the terminal ones
+  // [l * terminal_.size() + j]: R(l, terminal_[j]).
+  std::vector<double> terminal_reward_by_state_;
   std::vector<double> best_commit_;  // [l]: max over terminal a of R(l, a)
   std::vector<int> best_terminal_;   // [l]: that action
   std::vector<double> thresholds_;   // kThresholds values, decreasing
-  mutable std::vector<double> scratch_, scratch2_, groups_;
+  mutable std::vector<double> scratch_, scratch2_, groups_, commit_sums_;
 
   // The choices already made, by the exact bits of (belief, uses): a rollout from a leaf the
   // search visits again, or one that hears what an earlier rollout heard, asks the same question,
@@ -113,7 +116,7 @@ class SensingPolicy {
   mutable std::string choice_key_;
   // expected_entropy_grouped()'s tables and scratch (empty below kMemoizeAbove).
   int num_groups_ = 0;              // the terminal actions
-  std::vector<int> group_of_live_;  // [l]: best_terminal_[l]'s group, or -1
+  std::vector<int> group_of_live_;  // [l]: best_terminal_[l]'s group, or -1 (no terminal action)
   std::vector<int> sensing_index_;  // [a]: a's index in sensing_, or -1
   // [(i * L + l) * O + o]: emission(sensing_[i], o)[l].
   std::vector<double> emission_by_state_;
