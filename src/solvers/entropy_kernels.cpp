@@ -4,17 +4,19 @@
 
 namespace echoplan::solvers {
 
-__attribute__((target_clones("avx2", "default"))) double sum_x_log_x(const double* x,
-                                                                     std::size_t n) {
+__attribute__((target_clones("avx512f", "avx2", "default"))) double sum_x_log_x(const double* x,
+                                                                                std::size_t n) {
   double sum = 0.0;
-  // log(x + 1) = 0 at x = 0, so the term is 0 there without a branch.
+  // log 1 = 0, so a term x <= 0 is 0 without a branch.
 #pragma omp simd reduction(+ : sum)
-  for (std::size_t i = 0; i < n; ++i) sum += x[i] * std::log(x[i] + (x[i] == 0.0 ? 1.0 : 0.0));
+  for (std::size_t i = 0; i < n; ++i) sum += x[i] * std::log(x[i] > 0.0 ? x[i] : 1.0);
   return sum;
 }
 
-__attribute__((target_clones("avx2", "default"))) void add_scaled(double* y, double scale,
-                                                                  const double* x, std::size_t n) {
+__attribute__((target_clones("avx512f", "avx2", "default"))) void add_scaled(double* y,
+                                                                             double scale,
+                                                                             const double* x,
+                                                                             std::size_t n) {
 #pragma omp simd
   for (std::size_t i = 0; i < n; ++i) y[i] += scale * x[i];
 }

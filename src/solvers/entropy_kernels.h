@@ -13,7 +13,8 @@
 
 namespace echoplan::solvers {
 
-// Σ_i x[i] log x[i] (0 log 0 = 0), for x[i] >= 0; finite.
+// Σ_i x[i] log x[i] over the x[i] > 0 (0 log 0 = 0; a probability a rounding error below 0 counts
+// 0 too); finite.
 double sum_x_log_x(const double* x, std::size_t n);
 // y[i] += scale * x[i] for i < n.
 void add_scaled(double* y, double scale, const double* x, std::size_t n);

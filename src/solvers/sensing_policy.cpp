@@ -79,6 +79,16 @@ SensingPolicy::SensingPolicy(std::shared_ptr<const IdentificationTables> tables)
       for (int l = 0; l < L; ++l)
         for (int o = 0; o < O; ++o) emission_by_state_.push_back(emission(sensing_[i], o)[l]);
     }
+    // Rows that are mostly one value take the sparse sum (sparse_grouped_entropy.h); a quarter of
+    // the outcomes as exceptions is about where it stops paying.
+    if (num_groups_ > 0) {
+      sparse_ = std::make_unique<SparseGroupedEntropy>(
+          emission_by_state_, static_cast<int>(sensing_.size()), L, O, num_groups_, group_of_live_);
+      if (sparse_->mean_exceptions() > 0.25 * O)
+        sparse_.reset();
+      else
+        emission_by_state_ = {};
+    }
   }
 }
 
@@ -185,8 +195,10 @@ int SensingPolicy::choose_sensing_now(const std::vector<double>& belief,
   }
   for (int a : sensing_) {
     if (!tables_->limits.allows(uses, a)) continue;
-    const double expected =
-        memoize_ ? expected_entropy_grouped(a) : expected_entropy_by_outcome(belief, a);
+    const double expected = !memoize_ ? expected_entropy_by_outcome(belief, a)
+                            : sparse_
+                                ? sparse_->expected_entropy(sensing_index_[a], live_belief_.data())
+                                : expected_entropy_grouped(a);
     if (best < 0 || expected < best_score - 1e-12) best = a, best_score = expected;
   }
   return best;

@@ -30,6 +30,7 @@
 #include "common/rng.h"
 #include "pomdp/model.h"
 #include "solvers/identification_tables.h"
+#include "solvers/sparse_grouped_entropy.h"
 
 namespace echoplan::solvers {
 
@@ -118,8 +119,10 @@ class SensingPolicy {
   int num_groups_ = 0;              // the terminal actions
   std::vector<int> group_of_live_;  // [l]: best_terminal_[l]'s group, or -1 (no terminal action)
   std::vector<int> sensing_index_;  // [a]: a's index in sensing_, or -1
-  // [(i * L + l) * O + o]: emission(sensing_[i], o)[l].
+  // [(i * L + l) * O + o]: emission(sensing_[i], o)[l] (emptied when sparse_ takes over).
   std::vector<double> emission_by_state_;
+  // The same sum on tables whose rows are mostly one value, when they are.
+  std::unique_ptr<const SparseGroupedEntropy> sparse_;
   mutable std::vector<double> live_belief_, grouped_, totals_;
 };
 

@@ -85,23 +85,27 @@ TEST(SensingPolicy, RefusesProblemsThatAreNotIdentification) {
 }
 
 // At 64 objects, 9 sensing actions and 64 outcomes the policy takes its large-problem path (a memo
-// and the expected entropy summed without normalised posteriors). Its choices must be those of the
-// definition, computed here outcome by outcome from Bayes' rule: argmin over the available sensing
-// actions of sum_o P(o | b, a) H(right sorting action | b, a, o), first in action order on ties.
-TEST(SensingPolicyLarge, ChoosesWhatTheDefinitionChoosesAndRemembersIt) {
-  Rng rng(7);
+// and the expected entropy summed without normalised posteriors: dense, or sparse on rows that are
+// mostly one value). Its choices must be those of the definition, computed here outcome by outcome
+// from Bayes' rule: argmin over the available sensing actions of sum_o P(o | b, a) H(right sorting
+// action | b, a, o), first in action order on ties.
+pomdp::ObjectProblemData large_problem(Rng& rng) {
   pomdp::RandomProblemSettings settings;
   settings.objects = 64;
   settings.sensing_actions = 9;
   settings.bins = 8;
-  auto model = std::make_shared<const pomdp::ObjectIdentificationModel>(
-      pomdp::make_random_object_problem(settings, rng));
+  return pomdp::make_random_object_problem(settings, rng);
+}
+
+void expect_choices_of_the_definition(const pomdp::ObjectProblemData& data, Rng& rng) {
+  auto model = std::make_shared<const pomdp::ObjectIdentificationModel>(data);
+  const int objects = static_cast<int>(data.objects.size());
   const SensingPolicy policy(*model->tabular());
   const int states = policy.num_states(), actions = model->num_actions();
   const int outcomes = static_cast<int>(model->spec().observation.names.size());
   // Each live state's right sorting action, from point beliefs.
   std::vector<int> right(states, -1);
-  for (int s = 0; s < settings.objects; ++s) {
+  for (int s = 0; s < objects; ++s) {
     std::vector<double> point(states, 0.0);
     point[s] = 1.0;
     double best = -std::numeric_limits<double>::infinity();
@@ -120,7 +124,7 @@ TEST(SensingPolicyLarge, ChoosesWhatTheDefinitionChoosesAndRemembersIt) {
         const double p = policy.update(b, a, o, after);
         if (p <= 0.0) continue;
         std::vector<double> mass(actions, 0.0);
-        for (int s = 0; s < settings.objects; ++s) mass[right[s]] += after[s];
+        for (int s = 0; s < objects; ++s) mass[right[s]] += after[s];
         double h = 0.0;
         for (double m : mass)
           if (m > 0.0) h -= m * std::log(m);
@@ -133,12 +137,35 @@ TEST(SensingPolicyLarge, ChoosesWhatTheDefinitionChoosesAndRemembersIt) {
   for (int trial = 0; trial < 20; ++trial) {
     std::vector<double> b(states, 0.0);
     double total = 0.0;
-    for (int s = 0; s < settings.objects; ++s) total += b[s] = std::pow(uniform01(rng), 4);
+    for (int s = 0; s < objects; ++s) total += b[s] = std::pow(uniform01(rng), 4);
     for (double& p : b) p /= total;
     const int expected = reference(b, {});
     EXPECT_EQ(policy.choose_sensing(b), expected) << "belief " << trial;
     EXPECT_EQ(policy.choose_sensing(b), expected) << "belief " << trial << ", remembered";
   }
+}
+
+TEST(SensingPolicyLarge, ChoosesWhatTheDefinitionChoosesAndRemembersIt) {
+  Rng rng(7);
+  expect_choices_of_the_definition(large_problem(rng), rng);
+}
+
+// Rows as the sessions recipe writes them (a flat value, the true class and three others above it):
+// the sparse sum.
+TEST(SensingPolicyLarge, ChoosesWhatTheDefinitionChoosesOnRowsOfOneValue) {
+  Rng rng(11);
+  pomdp::ObjectProblemData data = large_problem(rng);
+  for (auto& action : data.observation_table)
+    for (std::size_t k = 0; k < action.size(); ++k) {
+      std::vector<double>& row = action[k];
+      std::fill(row.begin(), row.end(), 1.0);
+      row[k] = 30.0;
+      for (int x = 0; x < 3; ++x) row[static_cast<std::size_t>(uniform01(rng) * 64)] += 5.0;
+      double total = 0.0;
+      for (double p : row) total += p;
+      for (double& p : row) p /= total;
+    }
+  expect_choices_of_the_definition(data, rng);
 }
 
 }  // namespace

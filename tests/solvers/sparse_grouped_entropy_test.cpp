@@ -1,0 +1,90 @@
+// The sparse sum of the policy leaf's expected decision entropy against its definition, computed
+// here outcome by outcome from normalised posteriors.
+#include "solvers/sparse_grouped_entropy.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "common/rng.h"
+
+namespace echoplan::solvers {
+namespace {
+
+constexpr int kActions = 3, kStates = 12, kOutcomes = 20, kGroups = 4;
+
+// Rows of a base value with `exceptions` outcomes of their own (one of them impossible, 0), as
+// the sessions recipe's tables are: [(i * states + l) * outcomes + o].
+std::vector<double> sparse_rows(int exceptions, Rng& rng) {
+  std::vector<double> rows;
+  for (int r = 0; r < kActions * kStates; ++r) {
+    std::vector<double> row(kOutcomes, 1.0);
+    for (int x = 0; x < exceptions; ++x)
+      row[static_cast<int>(uniform01(rng) * kOutcomes)] =
+          x == 0 ? 0.0 : 1.0 + 20.0 * uniform01(rng);
+    double total = 0.0;
+    for (double p : row) total += p;
+    for (double& p : row) rows.push_back(p / total);
+  }
+  return rows;
+}
+
+// Σ_o P(o) H(group | o) at the belief b, the definition.
+double by_definition(const std::vector<double>& rows, const std::vector<int>& group, int i,
+                     const std::vector<double>& b) {
+  double expected = 0.0;
+  for (int o = 0; o < kOutcomes; ++o) {
+    std::vector<double> mass(kGroups, 0.0);
+    double p = 0.0;
+    for (int l = 0; l < kStates; ++l) {
+      const double joint = b[l] * rows[(static_cast<std::size_t>(i) * kStates + l) * kOutcomes + o];
+      mass[group[l]] += joint;
+      p += joint;
+    }
+    if (p <= 0.0) continue;
+    double h = 0.0;
+    for (double m : mass)
+      if (m > 0.0) h -= (m / p) * std::log(m / p);
+    expected += p * h;
+  }
+  return expected;
+}
+
+TEST(SparseGroupedEntropy, EqualsTheDefinitionOnRowsOfOneValueAndAFewExceptions) {
+  Rng rng(3);
+  const std::vector<double> rows = sparse_rows(4, rng);
+  std::vector<int> group(kStates);
+  for (int l = 0; l < kStates; ++l) group[l] = l % kGroups;
+  const SparseGroupedEntropy sparse(rows, kActions, kStates, kOutcomes, kGroups, group);
+  // At most 4 exceptions a row (drawn outcomes may repeat), at least 1 (the impossible one).
+  EXPECT_LE(sparse.mean_exceptions(), 4.0);
+  EXPECT_GE(sparse.mean_exceptions(), 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<double> b(kStates);
+    double total = 0.0;
+    for (double& p : b) p = trial == 0 ? 1.0 : std::pow(uniform01(rng), 3);
+    if (trial == 1) b[5] = 0.0;  // a state the belief rules out
+    for (double p : b) total += p;
+    for (double& p : b) p /= total;
+    for (int i = 0; i < kActions; ++i)
+      EXPECT_NEAR(sparse.expected_entropy(i, b.data()), by_definition(rows, group, i, b), 1e-12)
+          << "belief " << trial << ", action " << i;
+  }
+}
+
+TEST(SparseGroupedEntropy, CountsEveryOutcomeOfADenseRowAsAnException) {
+  Rng rng(5);
+  std::vector<double> rows;
+  for (int r = 0; r < kActions * kStates * kOutcomes; ++r) rows.push_back(0.5 + uniform01(rng));
+  std::vector<int> group(kStates, 0);
+  const SparseGroupedEntropy dense(rows, kActions, kStates, kOutcomes, 1, group);
+  // All values differ: one of them is the base, the other outcomes exceptions.
+  EXPECT_DOUBLE_EQ(dense.mean_exceptions(), kOutcomes - 1);
+  // One group: knowing the outcome never leaves doubt about it.
+  const std::vector<double> b(kStates, 1.0 / kStates);
+  EXPECT_NEAR(dense.expected_entropy(0, b.data()), 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace echoplan::solvers
