@@ -7,7 +7,12 @@
 # summary.txt's arm rows and paired differences.
 # With ARMS=exact (environment): three arms instead, the planner with the exact leaf (plan_exact,
 # listed first so the differences are against it), the default planner and information_gain.
-# Usage: [ARMS=exact] bench/dataset_campaign.sh BUILD_DIR [EPISODES] [HOLD_OUT] [WORKERS] [OUT]
+# With SET=recorded (environment): the recorded-data stand-in instead of the proxy, with what
+# makes real sets harder: two performances per session sharing its offset (session SD 0.6, so the
+# table is tempered), a tenth of the objects like another group in every behaviour, and the
+# planner sensing longer.
+# Usage: [ARMS=exact] [SET=recorded] bench/dataset_campaign.sh BUILD_DIR [EPISODES] [HOLD_OUT]
+#        [WORKERS] [OUT]
 set -eu
 build=$1
 episodes=${2:-20000}
@@ -16,10 +21,15 @@ workers=${4:-2}
 dir=$(mktemp -d)
 out=${5:-$dir/campaign}
 trap 'rm -rf "$dir"' EXIT
+if [ "${SET:-}" = recorded ]; then
+  set_options='--repeats 2 --session-sd 0.6 --atypical-share 0.1'
+else
+  set_options='--session-sd 0.3'
+fi
 "$build/bench/make_feature_set" -o "$dir/fs100" --objects 100 --group-size 5 --sessions 5 \
   --actions press,grasp,lift,drop,poke,push,shake,tap,squeeze \
   --action-scales 0.3,0.4,0.5,0.6,0.7,0.8,0.9,1.0,1.2 --modality audio:8:1.5 \
-  --modality haptic:4:1.0 --group-separation 1.0 --session-sd 0.3 --seed 1
+  --modality haptic:4:1.0 --group-separation 1.0 --seed 1 $set_options
 if [ "${ARMS:-}" = exact ]; then
   arms='  - {name: plan_exact, strategy: plan, leaf: exact}
   - {name: plan, strategy: plan}

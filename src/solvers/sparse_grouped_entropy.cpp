@@ -39,6 +39,7 @@ void SparseGroupedEntropy::add_action(const double* rows) {
   // Each group's union of exceptional outcomes, in outcome order, and the slot of each.
   std::vector<std::map<int, int>> slot_of(K);
   const std::size_t state_begin = base_.size();
+  slot_base_.push_back(slot_outcome_.size());
   for (int l = 0; l < L; ++l) {
     const double* row = rows + static_cast<std::size_t>(l) * O;
     base_.push_back(most_frequent(row, O));
@@ -52,12 +53,13 @@ void SparseGroupedEntropy::add_action(const double* rows) {
   }
   union_begin_.push_back(slot);
   slots_.resize(std::max<std::size_t>(slots_.size(), slot));
+  for (int k = 0; k < K; ++k)
+    for (const auto& [o, s] : slot_of[k]) slot_outcome_.push_back(o), slot_group_.push_back(k);
   for (int l = 0; l < L; ++l) {
     const double* row = rows + static_cast<std::size_t>(l) * O;
     const double base = base_[state_begin + l];
     for (int o = 0; o < O; ++o)
-      if (row[o] != base)
-        exceptions_.push_back({slot_of[group_of_live_[l]].at(o), o, row[o] - base});
+      if (row[o] != base) exceptions_.push_back({slot_of[group_of_live_[l]].at(o), row[o] - base});
     first_.push_back(exceptions_.size());
   }
 }
@@ -80,15 +82,16 @@ double SparseGroupedEntropy::expected_entropy(int i, const double* b) const {
     std::fill(&slots_[begin[k]], &slots_[begin[k + 1]], constant_[k]);
     all += constant_[k];
   }
-  std::fill(totals_.begin(), totals_.end(), all);
   for (int l = 0; l < L; ++l) {
     if (b[l] == 0.0) continue;
-    for (std::size_t x = first[l]; x < first[l + 1]; ++x) {
-      const Exception& e = exceptions_[x];
-      slots_[e.slot] += b[l] * e.delta;
-      totals_[e.outcome] += b[l] * e.delta;
-    }
+    for (std::size_t x = first[l]; x < first[l + 1]; ++x)
+      slots_[exceptions_[x].slot] += b[l] * exceptions_[x].delta;
   }
+  // T[o] = Σ_k g[k][o]: the constants' sum, and what each group's exceptions add at o.
+  std::fill(totals_.begin(), totals_.end(), all);
+  const std::size_t slot_base = slot_base_[i];
+  for (int s = 0; s < begin[K]; ++s)
+    totals_[slot_outcome_[slot_base + s]] += slots_[s] - constant_[slot_group_[slot_base + s]];
   // A probability of 0 can come out a rounding error below it: sum_x_log_x counts it 0.
   double grouped = sum_x_log_x(slots_.data(), static_cast<std::size_t>(begin[K]));
   for (int k = 0; k < K; ++k)

@@ -32,17 +32,18 @@ class SparseGroupedEntropy {
  private:
   struct Exception {
     int slot;      // g[k][o]'s place in the action's buffer of its groups' unions
-    int outcome;   // o
     double delta;  // P(o | s, a) − base(s)
   };
   void add_action(const double* rows);
 
   int outcomes_ = 0, groups_ = 0, live_ = 0;
   std::vector<int> group_of_live_;
-  std::vector<double> base_;           // [i * live + l]: the row's most frequent value
-  std::vector<std::size_t> first_;     // [i * live + l]: its first exception; one more at the end
-  std::vector<Exception> exceptions_;  // by action, then state
-  std::vector<int> union_begin_;       // [i * (groups + 1) + k]: group k's first slot in action i
+  std::vector<double> base_;            // [i * live + l]: the row's most frequent value
+  std::vector<std::size_t> first_;      // [i * live + l]: its first exception; one more at the end
+  std::vector<Exception> exceptions_;   // by action, then state
+  std::vector<int> union_begin_;        // [i * (groups + 1) + k]: group k's first slot in action i
+  std::vector<std::size_t> slot_base_;  // [i]: where action i's slots start in the two below
+  std::vector<int> slot_outcome_, slot_group_;  // [slot_base_[i] + slot]: its o and its k
   mutable std::vector<double> constant_, slots_, totals_;
 };
 
