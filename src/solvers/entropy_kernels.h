@@ -1,12 +1,13 @@
 // The grouped expected entropy's inner loops (sensing_policy.cpp), in a file of their own so that
 // they alone are compiled for speed: vectorised (OpenMP simd) with glibc's vector log (libmvec),
-// which the compiler only calls under -ffast-math, and each built twice, for AVX2 and for any
-// x86-64, the faster picked when the program loads (GCC's target_clones).
+// which the compiler only calls under -ffast-math, and each built for AVX-512, AVX2 and any
+// x86-64, the fastest the machine has picked when the program loads (GCC's target_clones; not under
+// ThreadSanitizer, entropy_kernels.cpp says why).
 //
 // add_scaled() is bit for bit the scalar loop's result on every machine (one multiply and one add
-// per element, no fused multiply-add: the AVX2 build does not enable FMA). sum_x_log_x() is not:
-// the sum's order and the last bits of each log differ from a scalar loop's and between the two
-// builds, so its callers compare its results with a margin (sensing_policy.cpp: 1e-12).
+// per element: the file is compiled with -ffp-contract=off, so no build fuses them). sum_x_log_x()
+// is not: the sum's order and the last bits of each log differ from a scalar loop's and between
+// the builds, so its callers compare its results with a margin (sensing_policy.cpp: 1e-12).
 #pragma once
 
 #include <cstddef>

@@ -55,7 +55,6 @@ SensingPolicy::SensingPolicy(std::shared_ptr<const IdentificationTables> tables)
   const double span = std::max(top - bottom, 1e-9);
   thresholds_.push_back(std::numeric_limits<double>::infinity());
   for (int k = 1; k < kThresholds; ++k) thresholds_.push_back(span * std::ldexp(1.0, -k));
-  scratch_.resize(num_states_);
   scratch2_.resize(num_states_);
   groups_.resize(A);
   // A choice costs a Bayes update and an entropy per sensing action and outcome; below a few

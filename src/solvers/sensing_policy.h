@@ -103,7 +103,7 @@ class SensingPolicy {
   std::vector<double> best_commit_;  // [l]: max over terminal a of R(l, a)
   std::vector<int> best_terminal_;   // [l]: that action
   std::vector<double> thresholds_;   // kThresholds values, decreasing
-  mutable std::vector<double> scratch_, scratch2_, groups_, commit_sums_;
+  mutable std::vector<double> scratch2_, groups_, commit_sums_;
 
   // The choices already made, by the exact bits of (belief, uses): a rollout from a leaf the
   // search visits again, or one that hears what an earlier rollout heard, asks the same question,
