@@ -25,4 +25,27 @@ ECHOPLAN_KERNEL_CLONES void add_scaled(double* y, double scale, const double* x,
   for (std::size_t i = 0; i < n; ++i) y[i] += scale * x[i];
 }
 
+ECHOPLAN_KERNEL_CLONES void sum_scaled_rows(double* y, std::size_t n, double start,
+                                            const double* scales, const double* rows,
+                                            std::size_t count) {
+  // Eight columns at a time, held in registers while the rows are added to them in order.
+  constexpr std::size_t kWidth = 8;
+  std::size_t i = 0;
+  for (; i + kWidth <= n; i += kWidth) {
+    double sum[kWidth];
+    for (double& s : sum) s = start;
+    for (std::size_t r = 0; r < count; ++r) {
+      const double scale = scales[r], *row = rows + r * n + i;
+#pragma omp simd
+      for (std::size_t j = 0; j < kWidth; ++j) sum[j] += scale * row[j];
+    }
+    for (std::size_t j = 0; j < kWidth; ++j) y[i + j] = sum[j];
+  }
+  for (; i < n; ++i) {
+    double sum = start;
+    for (std::size_t r = 0; r < count; ++r) sum += scales[r] * rows[r * n + i];
+    y[i] = sum;
+  }
+}
+
 }  // namespace echoplan::solvers

@@ -86,7 +86,7 @@ SensingPolicy::SensingPolicy(std::shared_ptr<const IdentificationTables> tables)
       if (sparse_->mean_exceptions() > 0.25 * O)
         sparse_.reset();
       else
-        emission_by_state_ = {};
+        emission_by_state_ = {}, grouped_ = {}, totals_ = {};
     }
   }
 }

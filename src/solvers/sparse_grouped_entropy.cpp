@@ -26,72 +26,84 @@ double most_frequent(const double* row, int n) {
 SparseGroupedEntropy::SparseGroupedEntropy(const std::vector<double>& emission_by_state,
                                            int sensing_actions, int live, int outcomes, int groups,
                                            const std::vector<int>& group_of_live)
-    : outcomes_(outcomes), groups_(groups), live_(live), group_of_live_(group_of_live) {
-  first_.push_back(0);
+    : outcomes_(outcomes), groups_(groups), live_(live) {
+  for (int k = 0; k < groups; ++k) {
+    member_begin_.push_back(static_cast<int>(members_.size()));
+    for (int l = 0; l < live; ++l)
+      if (group_of_live[l] == k) members_.push_back(l);
+  }
+  member_begin_.push_back(static_cast<int>(members_.size()));
   for (int i = 0; i < sensing_actions; ++i)
     add_action(&emission_by_state[static_cast<std::size_t>(i) * live * outcomes]);
   constant_.resize(groups);
   totals_.resize(outcomes);
+  member_belief_.resize(members_.size());
 }
 
 void SparseGroupedEntropy::add_action(const double* rows) {
-  const int L = live_, O = outcomes_, K = groups_;
+  const int O = outcomes_, K = groups_;
+  const auto row_of = [&](int r) { return rows + static_cast<std::size_t>(members_[r]) * O; };
   // Each group's union of exceptional outcomes, in outcome order, and the slot of each.
   std::vector<std::map<int, int>> slot_of(K);
-  const std::size_t state_begin = base_.size();
-  slot_base_.push_back(slot_outcome_.size());
-  for (int l = 0; l < L; ++l) {
-    const double* row = rows + static_cast<std::size_t>(l) * O;
-    base_.push_back(most_frequent(row, O));
-    for (int o = 0; o < O; ++o)
-      if (row[o] != base_.back()) slot_of[group_of_live_[l]].emplace(o, 0);
-  }
+  const std::size_t base_begin = base_.size();
+  for (int k = 0; k < K; ++k)
+    for (int r = member_begin_[k]; r < member_begin_[k + 1]; ++r) {
+      base_.push_back(most_frequent(row_of(r), O));
+      for (int o = 0; o < O; ++o)
+        if (row_of(r)[o] != base_.back()) slot_of[k].emplace(o, 0), ++exceptions_;
+    }
   int slot = 0;
+  std::vector<std::vector<int>> slots_at(O);
   for (int k = 0; k < K; ++k) {
     union_begin_.push_back(slot);
-    for (auto& [o, s] : slot_of[k]) s = slot++;
+    for (auto& [o, s] : slot_of[k]) slots_at[o].push_back(s = slot++);
   }
   union_begin_.push_back(slot);
   slots_.resize(std::max<std::size_t>(slots_.size(), slot));
-  for (int k = 0; k < K; ++k)
-    for (const auto& [o, s] : slot_of[k]) slot_outcome_.push_back(o), slot_group_.push_back(k);
-  for (int l = 0; l < L; ++l) {
-    const double* row = rows + static_cast<std::size_t>(l) * O;
-    const double base = base_[state_begin + l];
-    for (int o = 0; o < O; ++o)
-      if (row[o] != base) exceptions_.push_back({slot_of[group_of_live_[l]].at(o), row[o] - base});
-    first_.push_back(exceptions_.size());
+  added_.resize(slots_.size());
+  for (int o = 0; o < O; ++o) {
+    outcome_begin_.push_back(outcome_slots_.size());
+    outcome_slots_.insert(outcome_slots_.end(), slots_at[o].begin(), slots_at[o].end());
+  }
+  outcome_begin_.push_back(outcome_slots_.size());
+  for (int k = 0; k < K; ++k) {
+    block_begin_.push_back(blocks_.size());
+    for (int r = member_begin_[k]; r < member_begin_[k + 1]; ++r)
+      for (const auto& [o, s] : slot_of[k]) blocks_.push_back(row_of(r)[o] - base_[base_begin + r]);
   }
 }
 
 double SparseGroupedEntropy::mean_exceptions() const {
-  return base_.empty()
-             ? 0.0
-             : static_cast<double>(exceptions_.size()) / static_cast<double>(base_.size());
+  return base_.empty() ? 0.0 : static_cast<double>(exceptions_) / static_cast<double>(base_.size());
 }
 
 double SparseGroupedEntropy::expected_entropy(int i, const double* b) const {
   const int L = live_, O = outcomes_, K = groups_;
   const double* base = &base_[static_cast<std::size_t>(i) * L];
-  const std::size_t* first = &first_[static_cast<std::size_t>(i) * L];
   const int* begin = &union_begin_[static_cast<std::size_t>(i) * (K + 1)];
-  std::fill(constant_.begin(), constant_.end(), 0.0);
-  for (int l = 0; l < L; ++l) constant_[group_of_live_[l]] += b[l] * base[l];
+  for (std::size_t r = 0; r < members_.size(); ++r) member_belief_[r] = b[members_[r]];
+  // g[k][o] = C[k] + the group's deltas, each sum in state order.
   double all = 0.0;
   for (int k = 0; k < K; ++k) {
-    std::fill(&slots_[begin[k]], &slots_[begin[k + 1]], constant_[k]);
-    all += constant_[k];
+    double c = 0.0;
+    for (int r = member_begin_[k]; r < member_begin_[k + 1]; ++r) c += member_belief_[r] * base[r];
+    constant_[k] = c;
+    all += c;
+    sum_scaled_rows(&slots_[begin[k]], static_cast<std::size_t>(begin[k + 1] - begin[k]), c,
+                    &member_belief_[member_begin_[k]],
+                    &blocks_[block_begin_[static_cast<std::size_t>(i) * K + k]],
+                    static_cast<std::size_t>(member_begin_[k + 1] - member_begin_[k]));
   }
-  for (int l = 0; l < L; ++l) {
-    if (b[l] == 0.0) continue;
-    for (std::size_t x = first[l]; x < first[l + 1]; ++x)
-      slots_[exceptions_[x].slot] += b[l] * exceptions_[x].delta;
+  // T[o] = Σ_k g[k][o]: the constants' sum, and what each group's deltas add at o, in group order.
+  const std::size_t* at = &outcome_begin_[static_cast<std::size_t>(i) * (O + 1)];
+  for (int k = 0; k < K; ++k)
+    for (int s = begin[k]; s < begin[k + 1]; ++s) added_[s] = slots_[s] - constant_[k];
+  const int* slots_at = outcome_slots_.data();
+  for (int o = 0; o < O; ++o) {
+    double total = all;
+    for (std::size_t x = at[o]; x < at[o + 1]; ++x) total += added_[slots_at[x]];
+    totals_[o] = total;
   }
-  // T[o] = Σ_k g[k][o]: the constants' sum, and what each group's exceptions add at o.
-  std::fill(totals_.begin(), totals_.end(), all);
-  const std::size_t slot_base = slot_base_[i];
-  for (int s = 0; s < begin[K]; ++s)
-    totals_[slot_outcome_[slot_base + s]] += slots_[s] - constant_[slot_group_[slot_base + s]];
   // A probability of 0 can come out a rounding error below it: sum_x_log_x counts it 0.
   double grouped = sum_x_log_x(slots_.data(), static_cast<std::size_t>(begin[K]));
   for (int k = 0; k < K; ++k)

@@ -2,11 +2,13 @@
 // one value: a state's row of P(o | s, a) is a base value on every outcome plus a few exceptions.
 // The sessions recipe's tables are so (docs/feature-sets.md: counts from a few held-out sessions
 // shrunk towards a flat row; about 7 exceptions in 100 outcomes). Then
-//   g[k][o] = Σ_{s in group k} b(s) P(o | s, a) = C[k] + Σ_{s in k, o exceptional for s} b(s) d(s,
-//   o)
-// with C[k] = Σ_{s in k} b(s) base(s) and d = P − base: a group's row is C[k] except on the union
-// of its states' exceptions, so Σ_o g log g needs a log there only. The cost of one action falls
-// from states x outcomes multiply-adds and groups x outcomes logs to states x exceptions
+//   g[k][o] = Σ_{s in group k} b(s) P(o | s, a) = C[k] + Σ_{s in k} b(s) d(s, o)
+// with C[k] = Σ_{s in k} b(s) base(s) and d = P − base, 0 but on the state's exceptions: a group's
+// row is C[k] except on the union of its states' exceptions, so Σ_o g log g needs a log there only.
+// The deltas are kept as one small dense block per group (its states x its union), so the sum is a
+// few vectorised multiply-adds rather than scattered ones; a delta of 0 adds an exact 0, so each
+// g[k][o] is the same sum in the same order as over the exceptions alone. The cost of one action
+// falls from states x outcomes multiply-adds and groups x outcomes logs to the blocks' sizes in
 // multiply-adds and the unions' sizes in logs.
 #pragma once
 
@@ -30,21 +32,23 @@ class SparseGroupedEntropy {
   double expected_entropy(int i, const double* b) const;
 
  private:
-  struct Exception {
-    int slot;      // g[k][o]'s place in the action's buffer of its groups' unions
-    double delta;  // P(o | s, a) − base(s)
-  };
   void add_action(const double* rows);
 
   int outcomes_ = 0, groups_ = 0, live_ = 0;
-  std::vector<int> group_of_live_;
-  std::vector<double> base_;            // [i * live + l]: the row's most frequent value
-  std::vector<std::size_t> first_;      // [i * live + l]: its first exception; one more at the end
-  std::vector<Exception> exceptions_;   // by action, then state
-  std::vector<int> union_begin_;        // [i * (groups + 1) + k]: group k's first slot in action i
-  std::vector<std::size_t> slot_base_;  // [i]: where action i's slots start in the two below
-  std::vector<int> slot_outcome_, slot_group_;  // [slot_base_[i] + slot]: its o and its k
-  mutable std::vector<double> constant_, slots_, totals_;
+  std::vector<int> members_;       // the live states by group, in order within each
+  std::vector<int> member_begin_;  // [k]: group k's first place in members_; one more at the end
+  std::vector<double> base_;       // [i * live + r]: members_[r]'s row's most frequent value
+  std::size_t exceptions_ = 0;     // outcomes off their row's base value, over every row
+  std::vector<int> union_begin_;   // [i * (groups + 1) + k]: group k's first slot in action i
+  // [block_begin_[i * groups + k] + r * width + c]: d(members_[member_begin_[k] + r], the outcome
+  // of slot union_begin + c), width the union's size.
+  std::vector<std::size_t> block_begin_;
+  std::vector<double> blocks_;
+  // [outcome_begin_[i * (outcomes + 1) + o] ...]: action i's slots at outcome o, in slot order.
+  std::vector<std::size_t> outcome_begin_;
+  std::vector<int> outcome_slots_;
+  // g[k][o] by slot, g[k][o] − C[k] by slot, T[o], b by member.
+  mutable std::vector<double> constant_, slots_, added_, totals_, member_belief_;
 };
 
 }  // namespace echoplan::solvers
