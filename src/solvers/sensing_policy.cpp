@@ -87,6 +87,13 @@ SensingPolicy::SensingPolicy(std::shared_ptr<const IdentificationTables> tables)
         sparse_.reset();
       else
         emission_by_state_ = {}, grouped_ = {}, totals_ = {};
+      // The lower bound on the expected entropy holds when P(. | s, a) are distributions: no
+      // sensing action ends the episode.
+      prune_ = std::all_of(sensing_.begin(), sensing_.end(), [&](int a) {
+        return std::all_of(&t.stay[static_cast<std::size_t>(a) * L],
+                           &t.stay[static_cast<std::size_t>(a + 1) * L],
+                           [](double stay) { return stay == 1.0; });
+      });
     }
   }
 }
@@ -186,21 +193,60 @@ int SensingPolicy::choose_sensing(const std::vector<double>& belief, const UseCo
 
 int SensingPolicy::choose_sensing_now(const std::vector<double>& belief,
                                       const UseCounts& uses) const {
-  int best = -1;
-  double best_score = std::numeric_limits<double>::infinity();
+  const std::size_t S = sensing_.size();
+  expected_.assign(S, std::numeric_limits<double>::infinity());
   if (memoize_) {
     const std::vector<int>& states = tables_->model_state;
     for (std::size_t l = 0; l < states.size(); ++l) live_belief_[l] = belief[states[l]];
   }
-  for (int a : sensing_) {
-    if (!tables_->limits.allows(uses, a)) continue;
-    const double expected = !memoize_ ? expected_entropy_by_outcome(belief, a)
-                            : sparse_
-                                ? sparse_->expected_entropy(sensing_index_[a], live_belief_.data())
-                                : expected_entropy_grouped(a);
-    if (best < 0 || expected < best_score - 1e-12) best = a, best_score = expected;
+  if (sparse_) {
+    expect_sparse(uses);
+  } else {
+    for (std::size_t i = 0; i < S; ++i)
+      if (const int a = sensing_[i]; tables_->limits.allows(uses, a))
+        expected_[i] =
+            memoize_ ? expected_entropy_grouped(a) : expected_entropy_by_outcome(belief, a);
   }
-  return best;
+  // The first action, in the problem's order, within the margin of the lowest.
+  const double lowest = *std::min_element(expected_.begin(), expected_.end());
+  if (lowest == std::numeric_limits<double>::infinity()) return -1;  // none allowed
+  for (std::size_t i = 0;; ++i)
+    if (expected_[i] <= lowest + kChoiceMargin) return sensing_[i];
+}
+
+void SensingPolicy::expect_sparse(const UseCounts& uses) const {
+  // The bound: Σ_o P(o) H(decision | o) = H(decision) − I(decision; o) ≥ H(decision) −
+  // I(state; o) (the decision is a function of the state), and I(state; o) needs the outcome
+  // term the expected entropy needs anyway; what the bound saves is the groups' logs. All three
+  // terms scale with the belief's sum, so H(decision) is −Σ_k m_k log m_k on the groups' masses.
+  std::fill(groups_.begin(), groups_.end(), 0.0);
+  for (std::size_t l = 0; l < live_belief_.size(); ++l)
+    groups_[group_of_live_[l]] += live_belief_[l];
+  double decision = 0.0;
+  for (double m : groups_)
+    if (m > 0.0) decision -= m * std::log(m);
+  const double* b = live_belief_.data();
+  order_.clear();
+  for (std::size_t i = 0; i < sensing_.size(); ++i)
+    if (tables_->limits.allows(uses, sensing_[i])) {
+      const double outcome = sparse_->outcome_term(static_cast<int>(i), b);
+      expected_[i] = outcome;  // the group term is subtracted below, where it is needed
+      order_.push_back({prune_ ? decision + outcome - sparse_->state_term(static_cast<int>(i), b)
+                               : -std::numeric_limits<double>::infinity(),
+                        i});
+    }
+  // In the order of the bounds: once a bound is above the lowest entropy found (by more than the
+  // rounding in either), that action cannot be chosen: it counts as not allowed.
+  std::sort(order_.begin(), order_.end());
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const auto& [bound, i] : order_) {
+    if (bound > lowest + kPruneMargin) {
+      expected_[i] = std::numeric_limits<double>::infinity();
+      continue;
+    }
+    expected_[i] -= sparse_->group_term(static_cast<int>(i));
+    lowest = std::min(lowest, expected_[i]);
+  }
 }
 
 double SensingPolicy::expected_entropy_by_outcome(const std::vector<double>& belief, int a) const {

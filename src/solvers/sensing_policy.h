@@ -25,6 +25,7 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "common/rng.h"
@@ -81,8 +82,14 @@ class SensingPolicy {
   // True when some sensing action is still available after `uses`.
   bool can_sense(const UseCounts& uses) const;
   double decision_entropy(const std::vector<double>& belief) const;
-  // choose_sensing() without the memo.
+  // choose_sensing() without the memo: the first sensing action, in the problem's order, whose
+  // expected decision entropy is within kChoiceMargin of the lowest (the sums' last bits depend
+  // on the machine, entropy_kernels.h).
   int choose_sensing_now(const std::vector<double>& belief, const UseCounts& uses) const;
+  // expected_[i] by the sparse sum at live_belief_, left +inf where a lower bound shows the action
+  // cannot be chosen (kPruneMargin keeps the bound's own rounding from pruning a choice).
+  void expect_sparse(const UseCounts& uses) const;
+  static constexpr double kChoiceMargin = 1e-12, kPruneMargin = 1e-9;
   // Σ_o P(o | b, a) H(decision | b, a, o), outcome by outcome from the normalised posterior (the
   // problems below kMemoizeAbove: their results stay bit for bit what they were).
   double expected_entropy_by_outcome(const std::vector<double>& belief, int a) const;
@@ -123,6 +130,9 @@ class SensingPolicy {
   std::vector<double> emission_by_state_;
   // The same sum on tables whose rows are mostly one value, when they are.
   std::unique_ptr<const SparseGroupedEntropy> sparse_;
+  bool prune_ = false;  // expect_sparse may prune (every sensing row a distribution)
+  mutable std::vector<double> expected_;                       // by sensing index
+  mutable std::vector<std::pair<double, std::size_t>> order_;  // (bound, sensing index)
   mutable std::vector<double> live_belief_, grouped_, totals_;
 };
 

@@ -33,15 +33,17 @@ SparseGroupedEntropy::SparseGroupedEntropy(const std::vector<double>& emission_b
       if (group_of_live[l] == k) members_.push_back(l);
   }
   member_begin_.push_back(static_cast<int>(members_.size()));
+  slot_base_.push_back(0);
   for (int i = 0; i < sensing_actions; ++i)
     add_action(&emission_by_state[static_cast<std::size_t>(i) * live * outcomes]);
-  constant_.resize(groups);
+  constant_.resize(static_cast<std::size_t>(sensing_actions) * groups);
+  slots_.resize(slot_base_.back());
   totals_.resize(outcomes);
   member_belief_.resize(members_.size());
 }
 
 void SparseGroupedEntropy::add_action(const double* rows) {
-  const int O = outcomes_, K = groups_;
+  const int L = live_, O = outcomes_, K = groups_;
   const auto row_of = [&](int r) { return rows + static_cast<std::size_t>(members_[r]) * O; };
   // Each group's union of exceptional outcomes, in outcome order, and the slot of each.
   std::vector<std::map<int, int>> slot_of(K);
@@ -59,8 +61,10 @@ void SparseGroupedEntropy::add_action(const double* rows) {
     for (auto& [o, s] : slot_of[k]) slots_at[o].push_back(s = slot++);
   }
   union_begin_.push_back(slot);
-  slots_.resize(std::max<std::size_t>(slots_.size(), slot));
-  added_.resize(slots_.size());
+  slot_base_.push_back(slot_base_.back() + slot);
+  added_.resize(std::max<std::size_t>(added_.size(), slot));
+  for (int l = 0; l < L; ++l)
+    row_x_log_x_.push_back(sum_x_log_x(rows + static_cast<std::size_t>(l) * O, O));
   for (int o = 0; o < O; ++o) {
     outcome_begin_.push_back(outcome_slots_.size());
     outcome_slots_.insert(outcome_slots_.end(), slots_at[o].begin(), slots_at[o].end());
@@ -78,18 +82,31 @@ double SparseGroupedEntropy::mean_exceptions() const {
 }
 
 double SparseGroupedEntropy::expected_entropy(int i, const double* b) const {
+  return outcome_term(i, b) - group_term(i);
+}
+
+double SparseGroupedEntropy::state_term(int i, const double* b) const {
+  const double* row = &row_x_log_x_[static_cast<std::size_t>(i) * live_];
+  double sum = 0.0;
+  for (int l = 0; l < live_; ++l) sum += b[l] * row[l];
+  return sum;
+}
+
+double SparseGroupedEntropy::outcome_term(int i, const double* b) const {
   const int L = live_, O = outcomes_, K = groups_;
   const double* base = &base_[static_cast<std::size_t>(i) * L];
   const int* begin = &union_begin_[static_cast<std::size_t>(i) * (K + 1)];
+  double* slots = slots_.data() + slot_base_[i];
+  double* constant = &constant_[static_cast<std::size_t>(i) * K];
   for (std::size_t r = 0; r < members_.size(); ++r) member_belief_[r] = b[members_[r]];
   // g[k][o] = C[k] + the group's deltas, each sum in state order.
   double all = 0.0;
   for (int k = 0; k < K; ++k) {
     double c = 0.0;
     for (int r = member_begin_[k]; r < member_begin_[k + 1]; ++r) c += member_belief_[r] * base[r];
-    constant_[k] = c;
+    constant[k] = c;
     all += c;
-    sum_scaled_rows(&slots_[begin[k]], static_cast<std::size_t>(begin[k + 1] - begin[k]), c,
+    sum_scaled_rows(&slots[begin[k]], static_cast<std::size_t>(begin[k + 1] - begin[k]), c,
                     &member_belief_[member_begin_[k]],
                     &blocks_[block_begin_[static_cast<std::size_t>(i) * K + k]],
                     static_cast<std::size_t>(member_begin_[k + 1] - member_begin_[k]));
@@ -97,7 +114,7 @@ double SparseGroupedEntropy::expected_entropy(int i, const double* b) const {
   // T[o] = Σ_k g[k][o]: the constants' sum, and what each group's deltas add at o, in group order.
   const std::size_t* at = &outcome_begin_[static_cast<std::size_t>(i) * (O + 1)];
   for (int k = 0; k < K; ++k)
-    for (int s = begin[k]; s < begin[k + 1]; ++s) added_[s] = slots_[s] - constant_[k];
+    for (int s = begin[k]; s < begin[k + 1]; ++s) added_[s] = slots[s] - constant[k];
   const int* slots_at = outcome_slots_.data();
   for (int o = 0; o < O; ++o) {
     double total = all;
@@ -105,11 +122,18 @@ double SparseGroupedEntropy::expected_entropy(int i, const double* b) const {
     totals_[o] = total;
   }
   // A probability of 0 can come out a rounding error below it: sum_x_log_x counts it 0.
-  double grouped = sum_x_log_x(slots_.data(), static_cast<std::size_t>(begin[K]));
+  return sum_x_log_x(totals_.data(), static_cast<std::size_t>(O));
+}
+
+double SparseGroupedEntropy::group_term(int i) const {
+  const int O = outcomes_, K = groups_;
+  const int* begin = &union_begin_[static_cast<std::size_t>(i) * (K + 1)];
+  const double* constant = &constant_[static_cast<std::size_t>(i) * K];
+  double grouped = sum_x_log_x(slots_.data() + slot_base_[i], static_cast<std::size_t>(begin[K]));
   for (int k = 0; k < K; ++k)
-    if (const double c = constant_[k]; c > 0.0)
+    if (const double c = constant[k]; c > 0.0)
       grouped += static_cast<double>(O - (begin[k + 1] - begin[k])) * c * std::log(c);
-  return sum_x_log_x(totals_.data(), static_cast<std::size_t>(O)) - grouped;
+  return grouped;
 }
 
 }  // namespace echoplan::solvers

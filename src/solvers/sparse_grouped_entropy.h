@@ -28,8 +28,16 @@ class SparseGroupedEntropy {
   // not much smaller than the outcomes).
   double mean_exceptions() const;
   // Σ_o P(o) H(group | o) after sensing action i at the live belief b (b[l], summing to at most
-  // 1), as Σ_o T[o] log T[o] − Σ_{k,o} g[k][o] log g[k][o] with T[o] = Σ_k g[k][o].
+  // 1), as Σ_o T[o] log T[o] − Σ_{k,o} g[k][o] log g[k][o] with T[o] = Σ_k g[k][o]:
+  // outcome_term(i, b) − group_term(i).
   double expected_entropy(int i, const double* b) const;
+  // Σ_o T[o] log T[o] for action i at b; keeps action i's g[k][o] for group_term(i).
+  double outcome_term(int i, const double* b) const;
+  // Σ_{k,o} g[k][o] log g[k][o] for action i at the b of the last outcome_term(i, b).
+  double group_term(int i) const;
+  // Σ_l b[l] Σ_o P(o | l, i) log P(o | l, i): with outcome_term, the information about the state,
+  // I(state; o) = state_term − outcome_term (for b summing to 1).
+  double state_term(int i, const double* b) const;
 
  private:
   void add_action(const double* rows);
@@ -40,6 +48,8 @@ class SparseGroupedEntropy {
   std::vector<double> base_;       // [i * live + r]: members_[r]'s row's most frequent value
   std::size_t exceptions_ = 0;     // outcomes off their row's base value, over every row
   std::vector<int> union_begin_;   // [i * (groups + 1) + k]: group k's first slot in action i
+  std::vector<std::size_t> slot_base_;  // [i]: action i's first place in slots_; one more
+  std::vector<double> row_x_log_x_;     // [i * live + l]: Σ_o P log P over the state's row
   // [block_begin_[i * groups + k] + r * width + c]: d(members_[member_begin_[k] + r], the outcome
   // of slot union_begin + c), width the union's size.
   std::vector<std::size_t> block_begin_;
@@ -47,7 +57,8 @@ class SparseGroupedEntropy {
   // [outcome_begin_[i * (outcomes + 1) + o] ...]: action i's slots at outcome o, in slot order.
   std::vector<std::size_t> outcome_begin_;
   std::vector<int> outcome_slots_;
-  // g[k][o] by slot, g[k][o] − C[k] by slot, T[o], b by member.
+  // C[i * groups + k] and g[k][o] by action and slot (slot_base_), kept for group_term; then
+  // g[k][o] − C[k] by slot, T[o] and b by member, for one call.
   mutable std::vector<double> constant_, slots_, added_, totals_, member_belief_;
 };
 

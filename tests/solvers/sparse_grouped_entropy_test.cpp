@@ -86,5 +86,54 @@ TEST(SparseGroupedEntropy, CountsEveryOutcomeOfADenseRowAsAnException) {
   EXPECT_NEAR(dense.expected_entropy(0, b.data()), 0.0, 1e-12);
 }
 
+// The policy's pruning bound, from the class's terms: −Σ_k m_k log m_k + outcome_term − state_term
+// is H(group) − I(state; outcome) (the definition's, for a belief summing to 1), never above the
+// expected entropy, and scales with the belief's sum as the expected entropy does.
+TEST(SparseGroupedEntropy, ItsTermsGiveTheInformationBoundBelowTheExpectedEntropy) {
+  Rng rng(7);
+  const std::vector<double> rows = sparse_rows(5, rng);
+  std::vector<int> group(kStates);
+  for (int l = 0; l < kStates; ++l) group[l] = l % kGroups;
+  const SparseGroupedEntropy sparse(rows, kActions, kStates, kOutcomes, kGroups, group);
+  const auto bound = [&](int i, const std::vector<double>& b) {
+    std::vector<double> mass(kGroups, 0.0);
+    for (int l = 0; l < kStates; ++l) mass[group[l]] += b[l];
+    double h = 0.0;
+    for (double m : mass)
+      if (m > 0.0) h -= m * std::log(m);
+    return h + sparse.outcome_term(i, b.data()) - sparse.state_term(i, b.data());
+  };
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<double> b(kStates);
+    double total = 0.0;
+    for (double& p : b) total += p = std::pow(uniform01(rng), 2);
+    for (double& p : b) p /= total;
+    for (int i = 0; i < kActions; ++i) {
+      // H(group) − I(state; outcome) by the definition.
+      std::vector<double> mass(kGroups, 0.0), outcome(kOutcomes, 0.0);
+      const auto row = [&](int l) {
+        return &rows[(static_cast<std::size_t>(i) * kStates + l) * kOutcomes];
+      };
+      for (int l = 0; l < kStates; ++l) {
+        mass[group[l]] += b[l];
+        for (int o = 0; o < kOutcomes; ++o) outcome[o] += b[l] * row(l)[o];
+      }
+      double reference = 0.0;
+      for (double m : mass)
+        if (m > 0.0) reference -= m * std::log(m);
+      for (int l = 0; l < kStates; ++l)
+        for (int o = 0; o < kOutcomes; ++o)
+          if (row(l)[o] > 0.0) reference -= b[l] * row(l)[o] * std::log(row(l)[o] / outcome[o]);
+      EXPECT_NEAR(bound(i, b), reference, 1e-12) << "belief " << trial << ", action " << i;
+      EXPECT_LE(bound(i, b), by_definition(rows, group, i, b) + 1e-12);
+      std::vector<double> half = b;
+      for (double& p : half) p *= 0.5;
+      EXPECT_NEAR(bound(i, half), 0.5 * bound(i, b), 1e-12);
+      EXPECT_NEAR(sparse.expected_entropy(i, half.data()), 0.5 * by_definition(rows, group, i, b),
+                  1e-12);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace echoplan::solvers
