@@ -30,6 +30,13 @@ std::vector<double> sparse_rows(int exceptions, Rng& rng) {
   return rows;
 }
 
+// State l in group l mod kGroups.
+std::vector<int> four_groups() {
+  std::vector<int> group(kStates);
+  for (int l = 0; l < kStates; ++l) group[l] = l % kGroups;
+  return group;
+}
+
 // Σ_o P(o) H(group | o) at the belief b, the definition.
 double by_definition(const std::vector<double>& rows, const std::vector<int>& group, int i,
                      const std::vector<double>& b) {
@@ -54,8 +61,7 @@ double by_definition(const std::vector<double>& rows, const std::vector<int>& gr
 TEST(SparseGroupedEntropy, EqualsTheDefinitionOnRowsOfOneValueAndAFewExceptions) {
   Rng rng(3);
   const std::vector<double> rows = sparse_rows(4, rng);
-  std::vector<int> group(kStates);
-  for (int l = 0; l < kStates; ++l) group[l] = l % kGroups;
+  const std::vector<int> group = four_groups();
   const SparseGroupedEntropy sparse(rows, kActions, kStates, kOutcomes, kGroups, group);
   // At most 4 exceptions a row (drawn outcomes may repeat), at least 1 (the impossible one).
   EXPECT_LE(sparse.mean_exceptions(), 4.0);
@@ -92,8 +98,7 @@ TEST(SparseGroupedEntropy, CountsEveryOutcomeOfADenseRowAsAnException) {
 TEST(SparseGroupedEntropy, ItsTermsGiveTheInformationBoundBelowTheExpectedEntropy) {
   Rng rng(7);
   const std::vector<double> rows = sparse_rows(5, rng);
-  std::vector<int> group(kStates);
-  for (int l = 0; l < kStates; ++l) group[l] = l % kGroups;
+  const std::vector<int> group = four_groups();
   const SparseGroupedEntropy sparse(rows, kActions, kStates, kOutcomes, kGroups, group);
   const auto bound = [&](int i, const std::vector<double>& b) {
     std::vector<double> mass(kGroups, 0.0);
