@@ -15,7 +15,8 @@
 // latched message would be lost. Registering changes nothing on the connections.
 //
 // What it cannot give back: the parameter server's contents (the planner sets its parameters at
-// every recording, so they come back by themselves) and roscpp's cached-parameter subscriptions
+// every recording, and again each second while no listener has answered, so they come back by
+// themselves) and roscpp's cached-parameter subscriptions
 // (ros::param::getCached then keeps the value it had: echoplan_listener's ~cached_param true does
 // not survive a master restart).
 #pragma once

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -11,6 +12,11 @@
 #include "robot/transient_error.h"
 
 namespace echoplan::robot {
+
+namespace {
+// How often start() sets the record parameters again while no listener has answered.
+constexpr std::chrono::seconds kReassertEvery{1};
+}  // namespace
 
 RosRecorder::RosRecorder(ros::NodeHandle& node, double wait_timeout_s)
     : wait_timeout_s_(wait_timeout_s) {
@@ -55,11 +61,26 @@ void RosRecorder::start(const std::string& action) {
   action_ = action;
   recording_ = true;
   // Wait for a state published after our parameter change that says capture started (or failed).
-  const bool answered =
-      changed_.wait_for(lock, std::chrono::duration<double>(wait_timeout_s_), [&] {
-        return states_received_ > states_before &&
-               (last_state_.recording || !last_state_.error.empty());
-      });
+  const auto reported = [&] {
+    return states_received_ > states_before &&
+           (last_state_.recording || !last_state_.error.empty());
+  };
+  const auto deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                 std::chrono::duration<double>(wait_timeout_s_));
+  bool answered = false;
+  while (!(answered = changed_.wait_until(
+               lock, std::min(deadline, std::chrono::steady_clock::now() + kReassertEvery),
+               reported)) &&
+         std::chrono::steady_clock::now() < deadline) {
+    // A master killed just after the parameters were set took them with it, and its successor
+    // never had them: set them again (the same values, which a listener that saw them ignores).
+    lock.unlock();
+    if (wait_for_master(0.2)) {
+      ros::param::set(ros_names::kRecordActionParam, action);
+      ros::param::set(ros_names::kRecordParam, true);
+    }
+    lock.lock();
+  }
   if (!answered || !last_state_.error.empty()) {
     const std::string why =
         answered ? "the listener could not start recording: " + last_state_.error
