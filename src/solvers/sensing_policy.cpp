@@ -200,7 +200,7 @@ int SensingPolicy::choose_sensing_now(const std::vector<double>& belief,
     for (std::size_t l = 0; l < states.size(); ++l) live_belief_[l] = belief[states[l]];
   }
   if (sparse_) {
-    expect_sparse(uses);
+    expect_sparse(belief, uses);
   } else {
     for (std::size_t i = 0; i < S; ++i)
       if (const int a = sensing_[i]; tables_->limits.allows(uses, a))
@@ -214,24 +214,20 @@ int SensingPolicy::choose_sensing_now(const std::vector<double>& belief,
     if (expected_[i] <= lowest + kChoiceMargin) return sensing_[i];
 }
 
-void SensingPolicy::expect_sparse(const UseCounts& uses) const {
+void SensingPolicy::expect_sparse(const std::vector<double>& belief, const UseCounts& uses) const {
   // The bound: Σ_o P(o) H(decision | o) = H(decision) − I(decision; o) ≥ H(decision) −
   // I(state; o) (the decision is a function of the state), and I(state; o) needs the outcome
   // term the expected entropy needs anyway; what the bound saves is the groups' logs. All three
   // terms scale with the belief's sum, so H(decision) is −Σ_k m_k log m_k on the groups' masses.
-  std::fill(groups_.begin(), groups_.end(), 0.0);
-  for (std::size_t l = 0; l < live_belief_.size(); ++l)
-    groups_[group_of_live_[l]] += live_belief_[l];
-  double decision = 0.0;
-  for (double m : groups_)
-    if (m > 0.0) decision -= m * std::log(m);
-  const double* b = live_belief_.data();
+  const double decision = decision_entropy(belief);
+  sparse_->set_belief(live_belief_.data());
   order_.clear();
   for (std::size_t i = 0; i < sensing_.size(); ++i)
     if (tables_->limits.allows(uses, sensing_[i])) {
-      const double outcome = sparse_->outcome_term(static_cast<int>(i), b);
+      const int index = static_cast<int>(i);
+      const double outcome = sparse_->outcome_term(index);
       expected_[i] = outcome;  // the group term is subtracted below, where it is needed
-      order_.push_back({prune_ ? decision + outcome - sparse_->state_term(static_cast<int>(i), b)
+      order_.push_back({prune_ ? decision + outcome - sparse_->state_term(index)
                                : -std::numeric_limits<double>::infinity(),
                         i});
     }

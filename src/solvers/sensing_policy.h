@@ -86,9 +86,10 @@ class SensingPolicy {
   // expected decision entropy is within kChoiceMargin of the lowest (the sums' last bits depend
   // on the machine, entropy_kernels.h).
   int choose_sensing_now(const std::vector<double>& belief, const UseCounts& uses) const;
-  // expected_[i] by the sparse sum at live_belief_, left +inf where a lower bound shows the action
-  // cannot be chosen (kPruneMargin keeps the bound's own rounding from pruning a choice).
-  void expect_sparse(const UseCounts& uses) const;
+  // expected_[i] by the sparse sum at `belief` (live_belief_ holds its live states), left +inf
+  // where a lower bound shows the action cannot be chosen (kPruneMargin keeps the bound's own
+  // rounding from pruning a choice).
+  void expect_sparse(const std::vector<double>& belief, const UseCounts& uses) const;
   static constexpr double kChoiceMargin = 1e-12, kPruneMargin = 1e-9;
   // Σ_o P(o | b, a) H(decision | b, a, o), outcome by outcome from the normalised posterior (the
   // problems below kMemoizeAbove: their results stay bit for bit what they were).

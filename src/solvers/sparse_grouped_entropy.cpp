@@ -43,7 +43,7 @@ SparseGroupedEntropy::SparseGroupedEntropy(const std::vector<double>& emission_b
 }
 
 void SparseGroupedEntropy::add_action(const double* rows) {
-  const int L = live_, O = outcomes_, K = groups_;
+  const int O = outcomes_, K = groups_;
   const auto row_of = [&](int r) { return rows + static_cast<std::size_t>(members_[r]) * O; };
   // Each group's union of exceptional outcomes, in outcome order, and the slot of each.
   std::vector<std::map<int, int>> slot_of(K);
@@ -63,8 +63,8 @@ void SparseGroupedEntropy::add_action(const double* rows) {
   union_begin_.push_back(slot);
   slot_base_.push_back(slot_base_.back() + slot);
   added_.resize(std::max<std::size_t>(added_.size(), slot));
-  for (int l = 0; l < L; ++l)
-    row_x_log_x_.push_back(sum_x_log_x(rows + static_cast<std::size_t>(l) * O, O));
+  for (std::size_t r = 0; r < members_.size(); ++r)
+    row_x_log_x_.push_back(sum_x_log_x(row_of(static_cast<int>(r)), O));
   for (int o = 0; o < O; ++o) {
     outcome_begin_.push_back(outcome_slots_.size());
     outcome_slots_.insert(outcome_slots_.end(), slots_at[o].begin(), slots_at[o].end());
@@ -82,23 +82,27 @@ double SparseGroupedEntropy::mean_exceptions() const {
 }
 
 double SparseGroupedEntropy::expected_entropy(int i, const double* b) const {
-  return outcome_term(i, b) - group_term(i);
+  set_belief(b);
+  return outcome_term(i) - group_term(i);
 }
 
-double SparseGroupedEntropy::state_term(int i, const double* b) const {
+void SparseGroupedEntropy::set_belief(const double* b) const {
+  for (std::size_t r = 0; r < members_.size(); ++r) member_belief_[r] = b[members_[r]];
+}
+
+double SparseGroupedEntropy::state_term(int i) const {
   const double* row = &row_x_log_x_[static_cast<std::size_t>(i) * live_];
   double sum = 0.0;
-  for (int l = 0; l < live_; ++l) sum += b[l] * row[l];
+  for (int r = 0; r < live_; ++r) sum += member_belief_[r] * row[r];
   return sum;
 }
 
-double SparseGroupedEntropy::outcome_term(int i, const double* b) const {
+double SparseGroupedEntropy::outcome_term(int i) const {
   const int L = live_, O = outcomes_, K = groups_;
   const double* base = &base_[static_cast<std::size_t>(i) * L];
   const int* begin = &union_begin_[static_cast<std::size_t>(i) * (K + 1)];
   double* slots = slots_.data() + slot_base_[i];
   double* constant = &constant_[static_cast<std::size_t>(i) * K];
-  for (std::size_t r = 0; r < members_.size(); ++r) member_belief_[r] = b[members_[r]];
   // g[k][o] = C[k] + the group's deltas, each sum in state order.
   double all = 0.0;
   for (int k = 0; k < K; ++k) {

@@ -29,15 +29,17 @@ class SparseGroupedEntropy {
   double mean_exceptions() const;
   // Σ_o P(o) H(group | o) after sensing action i at the live belief b (b[l], summing to at most
   // 1), as Σ_o T[o] log T[o] − Σ_{k,o} g[k][o] log g[k][o] with T[o] = Σ_k g[k][o]:
-  // outcome_term(i, b) − group_term(i).
+  // set_belief(b), then outcome_term(i) − group_term(i).
   double expected_entropy(int i, const double* b) const;
-  // Σ_o T[o] log T[o] for action i at b; keeps action i's g[k][o] for group_term(i).
-  double outcome_term(int i, const double* b) const;
-  // Σ_{k,o} g[k][o] log g[k][o] for action i at the b of the last outcome_term(i, b).
+  // Takes the live belief b for the terms below (once for every action at that belief).
+  void set_belief(const double* b) const;
+  // Σ_o T[o] log T[o] for action i; keeps action i's g[k][o] for group_term(i).
+  double outcome_term(int i) const;
+  // Σ_{k,o} g[k][o] log g[k][o] for action i, after outcome_term(i) at the same belief.
   double group_term(int i) const;
   // Σ_l b[l] Σ_o P(o | l, i) log P(o | l, i): with outcome_term, the information about the state,
   // I(state; o) = state_term − outcome_term (for b summing to 1).
-  double state_term(int i, const double* b) const;
+  double state_term(int i) const;
 
  private:
   void add_action(const double* rows);
@@ -49,7 +51,7 @@ class SparseGroupedEntropy {
   std::size_t exceptions_ = 0;     // outcomes off their row's base value, over every row
   std::vector<int> union_begin_;   // [i * (groups + 1) + k]: group k's first slot in action i
   std::vector<std::size_t> slot_base_;  // [i]: action i's first place in slots_; one more
-  std::vector<double> row_x_log_x_;     // [i * live + l]: Σ_o P log P over the state's row
+  std::vector<double> row_x_log_x_;     // [i * live + r]: Σ_o P log P over members_[r]'s row
   // [block_begin_[i * groups + k] + r * width + c]: d(members_[member_begin_[k] + r], the outcome
   // of slot union_begin + c), width the union's size.
   std::vector<std::size_t> block_begin_;

@@ -106,7 +106,8 @@ TEST(SparseGroupedEntropy, ItsTermsGiveTheInformationBoundBelowTheExpectedEntrop
     double h = 0.0;
     for (double m : mass)
       if (m > 0.0) h -= m * std::log(m);
-    return h + sparse.outcome_term(i, b.data()) - sparse.state_term(i, b.data());
+    sparse.set_belief(b.data());
+    return h + sparse.outcome_term(i) - sparse.state_term(i);
   };
   for (int trial = 0; trial < 20; ++trial) {
     std::vector<double> b(kStates);
