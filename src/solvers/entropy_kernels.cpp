@@ -27,7 +27,8 @@ ECHOPLAN_KERNEL_CLONES void add_scaled(double* y, double scale, const double* x,
 
 ECHOPLAN_KERNEL_CLONES void sum_scaled_rows(double* y, std::size_t n, double start,
                                             const double* scales, const double* rows,
-                                            std::size_t count) {
+                                            std::size_t count, double* totals,
+                                            const int* total_of) {
   // Eight columns at a time, held in registers while the rows are added to them in order.
   constexpr std::size_t kWidth = 8;
   std::size_t i = 0;
@@ -39,12 +40,16 @@ ECHOPLAN_KERNEL_CLONES void sum_scaled_rows(double* y, std::size_t n, double sta
 #pragma omp simd
       for (std::size_t j = 0; j < kWidth; ++j) sum[j] += scale * row[j];
     }
-    for (std::size_t j = 0; j < kWidth; ++j) y[i + j] = sum[j];
+    for (std::size_t j = 0; j < kWidth; ++j) {
+      y[i + j] = sum[j];
+      totals[total_of[i + j]] += sum[j] - start;
+    }
   }
   for (; i < n; ++i) {
     double sum = start;
     for (std::size_t r = 0; r < count; ++r) sum += scales[r] * rows[r * n + i];
     y[i] = sum;
+    totals[total_of[i]] += sum - start;
   }
 }
 

@@ -6,7 +6,7 @@
 //
 // add_scaled() and sum_scaled_rows() are bit for bit the scalar loops' results on every machine
 // (one multiply and one add per element, rows in order: the file is compiled with
-// -ffp-contract=off, so no build fuses them). sum_x_log_x()
+// -ffp-contract=off and -fno-associative-math, so no build fuses or reorders them). sum_x_log_x()
 // is not: the sum's order and the last bits of each log differ from a scalar loop's and between
 // the builds, so its callers compare its results with a margin (sensing_policy.cpp: 1e-12).
 #pragma once
@@ -21,8 +21,9 @@ double sum_x_log_x(const double* x, std::size_t n);
 // y[i] += scale * x[i] for i < n.
 void add_scaled(double* y, double scale, const double* x, std::size_t n);
 // y[i] = start + scales[0] * rows[i] + scales[1] * rows[n + i] + ... over `count` rows, added in
-// that order: one call for a small block, whose rows are too short for a call each.
+// that order, and totals[total_of[i]] += y[i] − start (the total_of[i] distinct): one call for a
+// small block, whose rows are too short for a call each.
 void sum_scaled_rows(double* y, std::size_t n, double start, const double* scales,
-                     const double* rows, std::size_t count);
+                     const double* rows, std::size_t count, double* totals, const int* total_of);
 
 }  // namespace echoplan::solvers

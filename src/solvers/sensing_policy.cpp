@@ -58,9 +58,9 @@ SensingPolicy::SensingPolicy(std::shared_ptr<const IdentificationTables> tables)
   scratch2_.resize(num_states_);
   groups_.resize(A);
   // A choice costs a Bayes update and an entropy per sensing action and outcome; below a few
-  // thousand of those, looking it up would cost about as much as making it.
-  memoize_ = static_cast<double>(sensing_.size()) * num_observations_ * L >= kMemoizeAbove;
-  if (memoize_) {
+  // thousand of those, the sums rearranged for speed would cost about as much as they save.
+  large_ = static_cast<double>(sensing_.size()) * num_observations_ * L >= kLargeAbove;
+  if (large_) {
     // The decision groups: the terminal actions, in action order.
     std::vector<int> group_of_action(A, -1);
     for (int a = 0; a < A; ++a)
@@ -95,6 +95,7 @@ SensingPolicy::SensingPolicy(std::shared_ptr<const IdentificationTables> tables)
                            [](double stay) { return stay == 1.0; });
       });
     }
+    memoize_ = !sparse_;
   }
 }
 
@@ -195,7 +196,7 @@ int SensingPolicy::choose_sensing_now(const std::vector<double>& belief,
                                       const UseCounts& uses) const {
   const std::size_t S = sensing_.size();
   expected_.assign(S, std::numeric_limits<double>::infinity());
-  if (memoize_) {
+  if (large_) {
     const std::vector<int>& states = tables_->model_state;
     for (std::size_t l = 0; l < states.size(); ++l) live_belief_[l] = belief[states[l]];
   }
@@ -205,7 +206,7 @@ int SensingPolicy::choose_sensing_now(const std::vector<double>& belief,
     for (std::size_t i = 0; i < S; ++i)
       if (const int a = sensing_[i]; tables_->limits.allows(uses, a))
         expected_[i] =
-            memoize_ ? expected_entropy_grouped(a) : expected_entropy_by_outcome(belief, a);
+            large_ ? expected_entropy_grouped(a) : expected_entropy_by_outcome(belief, a);
   }
   // The first action, in the problem's order, within the margin of the lowest.
   const double lowest = *std::min_element(expected_.begin(), expected_.end());
@@ -232,11 +233,15 @@ void SensingPolicy::expect_sparse(const std::vector<double>& belief, const UseCo
                         i});
     }
   // In the order of the bounds: once a bound is above the lowest entropy found (by more than the
-  // rounding in either), that action cannot be chosen: it counts as not allowed.
+  // rounding in either), that action cannot be chosen: it counts as not allowed. Before the whole
+  // group term, the bound is raised by its slack on the group with the most mass (one group's
+  // logs), which settles most of those the bound alone does not.
   std::sort(order_.begin(), order_.end());
   double lowest = std::numeric_limits<double>::infinity();
   for (const auto& [bound, i] : order_) {
-    if (bound > lowest + kPruneMargin) {
+    if (bound > lowest + kPruneMargin ||
+        (prune_ && lowest < std::numeric_limits<double>::infinity() &&
+         bound + sparse_->top_group_slack(static_cast<int>(i)) > lowest + kPruneMargin)) {
       expected_[i] = std::numeric_limits<double>::infinity();
       continue;
     }

@@ -92,7 +92,7 @@ class SensingPolicy {
   void expect_sparse(const std::vector<double>& belief, const UseCounts& uses) const;
   static constexpr double kChoiceMargin = 1e-12, kPruneMargin = 1e-9;
   // Σ_o P(o | b, a) H(decision | b, a, o), outcome by outcome from the normalised posterior (the
-  // problems below kMemoizeAbove: their results stay bit for bit what they were).
+  // problems below kLargeAbove: their results stay bit for bit what they were).
   double expected_entropy_by_outcome(const std::vector<double>& belief, int a) const;
   // The same sum rearranged so no posterior is normalised and every log is taken in one
   // vectorised pass, on live_belief_ (the large problems: equal up to rounding, several times
@@ -113,17 +113,21 @@ class SensingPolicy {
   std::vector<double> thresholds_;   // kThresholds values, decreasing
   mutable std::vector<double> scratch2_, groups_, commit_sums_;
 
+  // The large problems (sensing actions x outcomes x states >= kLargeAbove) take the grouped sum,
+  // or the sparse one below.
+  static constexpr double kLargeAbove = 4096;
+  bool large_ = false;
   // The choices already made, by the exact bits of (belief, uses): a rollout from a leaf the
   // search visits again, or one that hears what an earlier rollout heard, asks the same question,
-  // and the answer is a pure function of it (so the memo never changes a result). Kept for
-  // problems where a choice is costly (sensing actions x outcomes x states >= kMemoizeAbove);
-  // emptied when it reaches kMaxMemoizedChoices (about 1 KB each at 100 states).
-  static constexpr double kMemoizeAbove = 4096;
+  // and the answer is a pure function of it (so the memo never changes a result). Kept where a
+  // choice is costly, the large problems' dense sums (about a tenth of the questions come again;
+  // on the sparse sum, looking up costs more than it saves); emptied when it reaches
+  // kMaxMemoizedChoices (about 1 KB each at 100 states).
   static constexpr std::size_t kMaxMemoizedChoices = 1 << 16;
   bool memoize_ = false;
   mutable std::unordered_map<std::string, int> choices_;
   mutable std::string choice_key_;
-  // expected_entropy_grouped()'s tables and scratch (empty below kMemoizeAbove).
+  // expected_entropy_grouped()'s tables and scratch (empty below kLargeAbove).
   int num_groups_ = 0;              // the terminal actions
   std::vector<int> group_of_live_;  // [l]: best_terminal_[l]'s group, or -1 (no terminal action)
   std::vector<int> sensing_index_;  // [a]: a's index in sensing_, or -1

@@ -55,21 +55,14 @@ void SparseGroupedEntropy::add_action(const double* rows) {
         if (row_of(r)[o] != base_.back()) slot_of[k].emplace(o, 0), ++exceptions_;
     }
   int slot = 0;
-  std::vector<std::vector<int>> slots_at(O);
   for (int k = 0; k < K; ++k) {
     union_begin_.push_back(slot);
-    for (auto& [o, s] : slot_of[k]) slots_at[o].push_back(s = slot++);
+    for (auto& [o, s] : slot_of[k]) slot_outcome_.push_back(o), s = slot++;
   }
   union_begin_.push_back(slot);
   slot_base_.push_back(slot_base_.back() + slot);
-  added_.resize(std::max<std::size_t>(added_.size(), slot));
   for (std::size_t r = 0; r < members_.size(); ++r)
     row_x_log_x_.push_back(sum_x_log_x(row_of(static_cast<int>(r)), O));
-  for (int o = 0; o < O; ++o) {
-    outcome_begin_.push_back(outcome_slots_.size());
-    outcome_slots_.insert(outcome_slots_.end(), slots_at[o].begin(), slots_at[o].end());
-  }
-  outcome_begin_.push_back(outcome_slots_.size());
   for (int k = 0; k < K; ++k) {
     block_begin_.push_back(blocks_.size());
     for (int r = member_begin_[k]; r < member_begin_[k + 1]; ++r)
@@ -88,6 +81,30 @@ double SparseGroupedEntropy::expected_entropy(int i, const double* b) const {
 
 void SparseGroupedEntropy::set_belief(const double* b) const {
   for (std::size_t r = 0; r < members_.size(); ++r) member_belief_[r] = b[members_[r]];
+  top_mass_ = -1.0;
+  for (int k = 0; k < groups_; ++k) {
+    double mass = 0.0;
+    for (int r = member_begin_[k]; r < member_begin_[k + 1]; ++r) mass += member_belief_[r];
+    if (mass > top_mass_) top_mass_ = mass, top_group_ = k;
+  }
+}
+
+double SparseGroupedEntropy::top_group_slack(int i) const {
+  const int k = top_group_;
+  if (top_mass_ <= 0.0) return 0.0;
+  const double* row = &row_x_log_x_[static_cast<std::size_t>(i) * live_];
+  double bound = top_mass_ * std::log(top_mass_);
+  for (int r = member_begin_[k]; r < member_begin_[k + 1]; ++r) bound += member_belief_[r] * row[r];
+  return std::max(0.0, bound - one_group_term(i, k));
+}
+
+double SparseGroupedEntropy::one_group_term(int i, int k) const {
+  const int* begin = &union_begin_[static_cast<std::size_t>(i) * (groups_ + 1)];
+  const double c = constant_[static_cast<std::size_t>(i) * groups_ + k];
+  const int width = begin[k + 1] - begin[k];
+  double term = sum_x_log_x(slots_.data() + slot_base_[i] + begin[k], width);
+  if (c > 0.0) term += static_cast<double>(outcomes_ - width) * c * std::log(c);
+  return term;
 }
 
 double SparseGroupedEntropy::state_term(int i) const {
@@ -103,28 +120,24 @@ double SparseGroupedEntropy::outcome_term(int i) const {
   const int* begin = &union_begin_[static_cast<std::size_t>(i) * (K + 1)];
   double* slots = slots_.data() + slot_base_[i];
   double* constant = &constant_[static_cast<std::size_t>(i) * K];
-  // g[k][o] = C[k] + the group's deltas, each sum in state order.
+  // C[k] = Σ_{s in k} b(s) base(s) and their sum, the part every T[o] = Σ_k g[k][o] has.
   double all = 0.0;
   for (int k = 0; k < K; ++k) {
     double c = 0.0;
     for (int r = member_begin_[k]; r < member_begin_[k + 1]; ++r) c += member_belief_[r] * base[r];
     constant[k] = c;
     all += c;
-    sum_scaled_rows(&slots[begin[k]], static_cast<std::size_t>(begin[k + 1] - begin[k]), c,
-                    &member_belief_[member_begin_[k]],
-                    &blocks_[block_begin_[static_cast<std::size_t>(i) * K + k]],
-                    static_cast<std::size_t>(member_begin_[k + 1] - member_begin_[k]));
   }
-  // T[o] = Σ_k g[k][o]: the constants' sum, and what each group's deltas add at o, in group order.
-  const std::size_t* at = &outcome_begin_[static_cast<std::size_t>(i) * (O + 1)];
+  // g[k][o] = C[k] + the group's deltas, each sum in state order; T[o] adds what they add, group
+  // by group.
+  std::fill(totals_.begin(), totals_.end(), all);
+  const int* outcome_of = &slot_outcome_[slot_base_[i]];
   for (int k = 0; k < K; ++k)
-    for (int s = begin[k]; s < begin[k + 1]; ++s) added_[s] = slots[s] - constant[k];
-  const int* slots_at = outcome_slots_.data();
-  for (int o = 0; o < O; ++o) {
-    double total = all;
-    for (std::size_t x = at[o]; x < at[o + 1]; ++x) total += added_[slots_at[x]];
-    totals_[o] = total;
-  }
+    sum_scaled_rows(&slots[begin[k]], static_cast<std::size_t>(begin[k + 1] - begin[k]),
+                    constant[k], &member_belief_[member_begin_[k]],
+                    &blocks_[block_begin_[static_cast<std::size_t>(i) * K + k]],
+                    static_cast<std::size_t>(member_begin_[k + 1] - member_begin_[k]),
+                    totals_.data(), &outcome_of[begin[k]]);
   // A probability of 0 can come out a rounding error below it: sum_x_log_x counts it 0.
   return sum_x_log_x(totals_.data(), static_cast<std::size_t>(O));
 }

@@ -31,7 +31,8 @@ class SparseGroupedEntropy {
   // 1), as Σ_o T[o] log T[o] − Σ_{k,o} g[k][o] log g[k][o] with T[o] = Σ_k g[k][o]:
   // set_belief(b), then outcome_term(i) − group_term(i).
   double expected_entropy(int i, const double* b) const;
-  // Takes the live belief b for the terms below (once for every action at that belief).
+  // Takes the live belief b for the terms below (once for every action at that belief), and
+  // finds the group it gives the most mass.
   void set_belief(const double* b) const;
   // Σ_o T[o] log T[o] for action i; keeps action i's g[k][o] for group_term(i).
   double outcome_term(int i) const;
@@ -40,9 +41,17 @@ class SparseGroupedEntropy {
   // Σ_l b[l] Σ_o P(o | l, i) log P(o | l, i): with outcome_term, the information about the state,
   // I(state; o) = state_term − outcome_term (for b summing to 1).
   double state_term(int i) const;
+  // What group_term(i) is below its upper bound Σ_k (m_k log m_k + Σ_{l in k} b[l] Σ_o P log P)
+  // (the entropy of a mixture is at least the mixture of the entropies) on the group with the
+  // most mass, where most of the bound's slack usually is: ≥ 0, after outcome_term(i). With it,
+  // the policy's lower bound on the expected entropy rises by that much, at the cost of one
+  // group's logs.
+  double top_group_slack(int i) const;
 
  private:
   void add_action(const double* rows);
+  // Σ_o g[k][o] log g[k][o] of group k for action i, after outcome_term(i).
+  double one_group_term(int i, int k) const;
 
   int outcomes_ = 0, groups_ = 0, live_ = 0;
   std::vector<int> members_;       // the live states by group, in order within each
@@ -56,12 +65,12 @@ class SparseGroupedEntropy {
   // of slot union_begin + c), width the union's size.
   std::vector<std::size_t> block_begin_;
   std::vector<double> blocks_;
-  // [outcome_begin_[i * (outcomes + 1) + o] ...]: action i's slots at outcome o, in slot order.
-  std::vector<std::size_t> outcome_begin_;
-  std::vector<int> outcome_slots_;
-  // C[i * groups + k] and g[k][o] by action and slot (slot_base_), kept for group_term; then
-  // g[k][o] − C[k] by slot, T[o] and b by member, for one call.
-  mutable std::vector<double> constant_, slots_, added_, totals_, member_belief_;
+  std::vector<int> slot_outcome_;  // [slot_base_[i] + s]: the outcome of action i's slot s
+  // C[i * groups + k] and g[k][o] by action and slot (slot_base_), kept for group_term; then T[o]
+  // and b by member, for one call.
+  mutable std::vector<double> constant_, slots_, totals_, member_belief_;
+  mutable int top_group_ = 0;  // the group with the most mass at the belief (the first of those)
+  mutable double top_mass_ = 0.0;
 };
 
 }  // namespace echoplan::solvers

@@ -24,7 +24,7 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
-TEST(EntropyKernels, SumScaledRowsIsTheScalarLoopBitForBit) {
+TEST(EntropyKernels, SumScaledRowsAndWhatTheyAddToTheTotalsAreTheScalarLoopsBitForBit) {
   Rng rng(11);
   // Widths below, at and past a vector's length, and odd ones (a remainder after the vectors).
   for (std::size_t n : {1u, 3u, 8u, 13u, 16u, 37u}) {
@@ -39,8 +39,18 @@ TEST(EntropyKernels, SumScaledRowsIsTheScalarLoopBitForBit) {
           const double product = scales[r] * rows[r * n + i];
           expected[i] = expected[i] + product;
         }
-      sum_scaled_rows(got.data(), n, start, scales.data(), rows.data(), count);
+      // Column i's total is totals[n - 1 - i], which starts at i.
+      std::vector<int> total_of(n);
+      std::vector<double> totals(n), expected_totals(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        total_of[i] = static_cast<int>(n - 1 - i);
+        totals[n - 1 - i] = static_cast<double>(i);
+        expected_totals[n - 1 - i] = static_cast<double>(i) + (expected[i] - start);
+      }
+      sum_scaled_rows(got.data(), n, start, scales.data(), rows.data(), count, totals.data(),
+                      total_of.data());
       EXPECT_TRUE(same_bits(got, expected)) << n << " wide, " << count << " rows";
+      EXPECT_TRUE(same_bits(totals, expected_totals)) << n << " wide, " << count << " rows";
     }
   }
 }

@@ -94,7 +94,8 @@ TEST(SparseGroupedEntropy, CountsEveryOutcomeOfADenseRowAsAnException) {
 
 // The policy's pruning bound, from the class's terms: −Σ_k m_k log m_k + outcome_term − state_term
 // is H(group) − I(state; outcome) (the definition's, for a belief summing to 1), never above the
-// expected entropy, and scales with the belief's sum as the expected entropy does.
+// expected entropy, and scales with the belief's sum as the expected entropy does; with the top
+// group's slack (the definition's) added, still never above it.
 TEST(SparseGroupedEntropy, ItsTermsGiveTheInformationBoundBelowTheExpectedEntropy) {
   Rng rng(7);
   const std::vector<double> rows = sparse_rows(5, rng);
@@ -132,6 +133,27 @@ TEST(SparseGroupedEntropy, ItsTermsGiveTheInformationBoundBelowTheExpectedEntrop
           if (row(l)[o] > 0.0) reference -= b[l] * row(l)[o] * std::log(row(l)[o] / outcome[o]);
       EXPECT_NEAR(bound(i, b), reference, 1e-12) << "belief " << trial << ", action " << i;
       EXPECT_LE(bound(i, b), by_definition(rows, group, i, b) + 1e-12);
+      // The top group's slack: its g log g below m log m + Σ b Σ P log P, by the definition.
+      int top = 0;
+      for (int k = 1; k < kGroups; ++k)
+        if (mass[k] > mass[top]) top = k;
+      double slack = mass[top] * std::log(mass[top]);
+      for (int l = 0; l < kStates; ++l)
+        if (group[l] == top)
+          for (int o = 0; o < kOutcomes; ++o)
+            if (row(l)[o] > 0.0) slack += b[l] * row(l)[o] * std::log(row(l)[o]);
+      for (int o = 0; o < kOutcomes; ++o) {
+        double g = 0.0;
+        for (int l = 0; l < kStates; ++l)
+          if (group[l] == top) g += b[l] * row(l)[o];
+        if (g > 0.0) slack -= g * std::log(g);
+      }
+      sparse.set_belief(b.data());
+      sparse.outcome_term(i);
+      EXPECT_NEAR(sparse.top_group_slack(i), slack, 1e-12)
+          << "belief " << trial << ", action " << i;
+      EXPECT_GE(sparse.top_group_slack(i), 0.0);
+      EXPECT_LE(bound(i, b) + sparse.top_group_slack(i), by_definition(rows, group, i, b) + 1e-12);
       std::vector<double> half = b;
       for (double& p : half) p *= 0.5;
       EXPECT_NEAR(bound(i, half), 0.5 * bound(i, b), 1e-12);
