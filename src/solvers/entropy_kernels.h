@@ -7,8 +7,9 @@
 // add_scaled() and sum_scaled_rows() are bit for bit the scalar loops' results on every machine
 // (one multiply and one add per element, rows in order: the file is compiled with
 // -ffp-contract=off and -fno-associative-math, so no build fuses or reorders them). sum_x_log_x()
-// is not: the sum's order and the last bits of each log differ from a scalar loop's and between
-// the builds, so its callers compare its results with a margin (sensing_policy.cpp: 1e-12).
+// and dot() are not: the sum's order (and the last bits of each log) differ from a scalar loop's
+// and between the builds, so their callers compare results with a margin (sensing_policy.cpp:
+// 1e-12 between entropies, 1e-9 for a bound).
 #pragma once
 
 #include <cstddef>
@@ -18,6 +19,8 @@ namespace echoplan::solvers {
 // Σ_i x[i] log x[i] over the x[i] > 0 (0 log 0 = 0; a probability a rounding error below 0 counts
 // 0 too); finite.
 double sum_x_log_x(const double* x, std::size_t n);
+// Σ_i x[i] y[i], in an order of its own (as sum_x_log_x's).
+double dot(const double* x, const double* y, std::size_t n);
 // y[i] += scale * x[i] for i < n.
 void add_scaled(double* y, double scale, const double* x, std::size_t n);
 // y[i] = start + scales[0] * rows[i] + scales[1] * rows[n + i] + ... over `count` rows, added in

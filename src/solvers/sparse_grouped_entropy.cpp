@@ -108,10 +108,8 @@ double SparseGroupedEntropy::one_group_term(int i, int k) const {
 }
 
 double SparseGroupedEntropy::state_term(int i) const {
-  const double* row = &row_x_log_x_[static_cast<std::size_t>(i) * live_];
-  double sum = 0.0;
-  for (int r = 0; r < live_; ++r) sum += member_belief_[r] * row[r];
-  return sum;
+  return dot(member_belief_.data(), &row_x_log_x_[static_cast<std::size_t>(i) * live_],
+             static_cast<std::size_t>(live_));
 }
 
 double SparseGroupedEntropy::outcome_term(int i) const {

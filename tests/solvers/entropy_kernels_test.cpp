@@ -26,8 +26,9 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
 
 TEST(EntropyKernels, SumScaledRowsAndWhatTheyAddToTheTotalsAreTheScalarLoopsBitForBit) {
   Rng rng(11);
-  // Widths below, at and past a vector's length, and odd ones (a remainder after the vectors).
-  for (std::size_t n : {1u, 3u, 8u, 13u, 16u, 37u}) {
+  // Widths below, at and past a vector's length (eight, then four), and odd ones (a remainder
+  // after the vectors).
+  for (std::size_t n : {1u, 3u, 4u, 8u, 12u, 13u, 16u, 37u}) {
     for (std::size_t count : {1u, 5u, 9u}) {
       const std::vector<double> rows = draws(n * count, rng);
       std::vector<double> scales = draws(count, rng);
@@ -66,6 +67,17 @@ TEST(EntropyKernels, AddScaledIsTheScalarLoopBitForBit) {
     }
     add_scaled(got.data(), 0.37, x.data(), n);
     EXPECT_TRUE(same_bits(got, expected)) << n;
+  }
+}
+
+TEST(EntropyKernels, DotIsTheSumOfProductsToRounding) {
+  Rng rng(13);
+  for (std::size_t n : {0u, 1u, 7u, 100u, 101u}) {
+    const std::vector<double> x = draws(n, rng), y = draws(n, rng);
+    long double expected = 0.0L;
+    for (std::size_t i = 0; i < n; ++i)
+      expected += static_cast<long double>(x[i]) * static_cast<long double>(y[i]);
+    EXPECT_NEAR(dot(x.data(), y.data(), n), static_cast<double>(expected), 1e-13) << n;
   }
 }
 
