@@ -100,11 +100,15 @@ double SparseGroupedEntropy::top_group_slack(int i) const {
 
 double SparseGroupedEntropy::one_group_term(int i, int k) const {
   const int* begin = &union_begin_[static_cast<std::size_t>(i) * (groups_ + 1)];
-  const double c = constant_[static_cast<std::size_t>(i) * groups_ + k];
   const int width = begin[k + 1] - begin[k];
-  double term = sum_x_log_x(slots_.data() + slot_base_[i] + begin[k], width);
-  if (c > 0.0) term += static_cast<double>(outcomes_ - width) * c * std::log(c);
-  return term;
+  return sum_x_log_x(slots_.data() + slot_base_[i] + begin[k], width) + off_union_term(i, k);
+}
+
+double SparseGroupedEntropy::off_union_term(int i, int k) const {
+  const int* begin = &union_begin_[static_cast<std::size_t>(i) * (groups_ + 1)];
+  const double c = constant_[static_cast<std::size_t>(i) * groups_ + k];
+  return c > 0.0 ? static_cast<double>(outcomes_ - (begin[k + 1] - begin[k])) * c * std::log(c)
+                 : 0.0;
 }
 
 double SparseGroupedEntropy::state_term(int i) const {
@@ -141,13 +145,12 @@ double SparseGroupedEntropy::outcome_term(int i) const {
 }
 
 double SparseGroupedEntropy::group_term(int i) const {
-  const int O = outcomes_, K = groups_;
-  const int* begin = &union_begin_[static_cast<std::size_t>(i) * (K + 1)];
-  const double* constant = &constant_[static_cast<std::size_t>(i) * K];
-  double grouped = sum_x_log_x(slots_.data() + slot_base_[i], static_cast<std::size_t>(begin[K]));
-  for (int k = 0; k < K; ++k)
-    if (const double c = constant[k]; c > 0.0)
-      grouped += static_cast<double>(O - (begin[k + 1] - begin[k])) * c * std::log(c);
+  const int K = groups_;
+  const std::size_t width =
+      static_cast<std::size_t>(union_begin_[static_cast<std::size_t>(i) * (K + 1) + K]);
+  // Every group's union in one vectorised pass, then what each group is off it.
+  double grouped = sum_x_log_x(slots_.data() + slot_base_[i], width);
+  for (int k = 0; k < K; ++k) grouped += off_union_term(i, k);
   return grouped;
 }
 

@@ -52,6 +52,8 @@ class SparseGroupedEntropy {
   void add_action(const double* rows);
   // Σ_o g[k][o] log g[k][o] of group k for action i, after outcome_term(i).
   double one_group_term(int i, int k) const;
+  // Its part off the group's union, where g[k][o] = C[k]: (outcomes − union) C log C.
+  double off_union_term(int i, int k) const;
 
   int outcomes_ = 0, groups_ = 0, live_ = 0;
   std::vector<int> members_;       // the live states by group, in order within each
