@@ -7,6 +7,7 @@
 
 #include <fstream>
 
+#include "../common/test_folder.h"
 #include "campaign_results_fixture.h"
 #include "common/error.h"
 
@@ -27,18 +28,15 @@ int count(const std::string& page, const std::string& text) {
   return n;
 }
 
-class HtmlReport : public ::testing::Test {
+class HtmlReport : public TestFolder {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / "echoplan_html_report_test";
-    fs::remove_all(dir_);
+    TestFolder::SetUp();
     fs::create_directories(dir_ / "figures");
     std::ofstream(dir_ / "figures" / "belief_one_a.png", std::ios::binary) << "foo";
     std::ofstream(dir_ / "figures" / "confusion_one.png", std::ios::binary) << "fo";
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
-  fs::path dir_;
   const std::vector<Figure> figures_ = {{"belief_one_a", "Belief <one>", "c & d"},
                                         {"confusion_one", "Heard", "counts"}};
 };
