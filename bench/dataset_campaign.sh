@@ -11,8 +11,13 @@
 # makes real sets harder: two performances per session sharing its offset (session SD 0.6, so the
 # table is tempered), a tenth of the objects like another group in every behaviour, and the
 # planner sensing longer.
-# Usage: [ARMS=exact] [SET=recorded] bench/dataset_campaign.sh BUILD_DIR [EPISODES] [HOLD_OUT]
-#        [WORKERS] [OUT]
+# With ARMS=graded (environment): four arms, plan and information_gain each hearing labels and
+# grades (observations: graded), so grades are measured paired against labels.
+# With COSTS=costed (environment): each behaviour priced (task.costs), from 0.5 for the least
+# informative to 4.5 for the most, as published container studies price theirs: then information
+# must be bought, and the arms are compared in cost-weighted reward.
+# Usage: [ARMS=exact|graded] [SET=recorded] [COSTS=costed] bench/dataset_campaign.sh BUILD_DIR
+#        [EPISODES] [HOLD_OUT] [WORKERS] [OUT]
 set -eu
 build=$1
 episodes=${2:-20000}
@@ -34,6 +39,11 @@ if [ "${ARMS:-}" = exact ]; then
   arms='  - {name: plan_exact, strategy: plan, leaf: exact}
   - {name: plan, strategy: plan}
   - {name: information_gain, strategy: information_gain}'
+elif [ "${ARMS:-}" = graded ]; then
+  arms='  - {name: plan_graded, strategy: plan, observations: graded}
+  - {name: plan, strategy: plan}
+  - {name: information_gain_graded, strategy: information_gain, observations: graded}
+  - {name: information_gain, strategy: information_gain}'
 else
   arms='  - {name: plan, strategy: plan}
   - {name: all_actions, strategy: all_actions}
@@ -41,11 +51,16 @@ else
   - {name: information_gain, strategy: information_gain}
   - {name: random, strategy: random}'
 fi
+costs=
+if [ "${COSTS:-}" = costed ]; then
+  costs='  costs: {press: 0.5, grasp: 1.0, lift: 1.5, drop: 2.0, poke: 2.5, push: 3.0, shake: 3.5, tap: 4.0, squeeze: 4.5}'
+fi
 cat >"$dir/campaign.yaml" <<YAML
 seed: 1
 world: {type: dataset, data: $dir/fs100, hold_out: $hold_out, groups: $dir/fs100/groups.csv}
 task:
   rewards: {right: 10, wrong: -100, sense: -1}
+$costs
 arms:
 $arms
 planner: {solver: abt, episodes: $episodes, max_steps: 100}

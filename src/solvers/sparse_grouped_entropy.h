@@ -10,6 +10,13 @@
 // g[k][o] is the same sum in the same order as over the exceptions alone. The cost of one action
 // falls from states x outcomes multiply-adds and groups x outcomes logs to the blocks' sizes in
 // multiply-adds and the unions' sizes in logs.
+//
+// Graded tables (docs/perception.md) have one base value per grade rather than per row: a class
+// heard wrongly at grade g has P(h | s) P(g | wrong), the same for every wrong class h. So the
+// outcomes of each action are first split into classes whose cells agree in most rows (each at
+// least an eighth of the outcomes; the grades, or all outcomes of a label table), and each row has
+// a base value per class: C[k] becomes C[k][class], and everything above holds class by class. A
+// label table is one class, summed exactly as before classes existed.
 #pragma once
 
 #include <cstddef>
@@ -52,23 +59,37 @@ class SparseGroupedEntropy {
   void add_action(const double* rows);
   // Σ_o g[k][o] log g[k][o] of group k for action i, after outcome_term(i).
   double one_group_term(int i, int k) const;
-  // Its part off the group's union, where g[k][o] = C[k]: (outcomes − union) C log C.
+  // Its part off the group's union, where g[k][o] = C[k][c] for o of class c: the sum over classes
+  // of (c's outcomes off the union) C log C.
   double off_union_term(int i, int k) const;
+  // Where action i's quantities by (group, class) are: [(i * groups + k) * kMaxClasses + c].
+  std::size_t at(int i, int k, int c) const {
+    return (static_cast<std::size_t>(i) * groups_ + k) * kMaxClasses + c;
+  }
+
+  // Outcome classes beyond this many fold into the largest (their cells become exceptions).
+  static constexpr int kMaxClasses = 4;
 
   int outcomes_ = 0, groups_ = 0, live_ = 0;
   std::vector<int> members_;       // the live states by group, in order within each
   std::vector<int> member_begin_;  // [k]: group k's first place in members_; one more at the end
-  std::vector<double> base_;       // [i * live + r]: members_[r]'s row's most frequent value
-  std::size_t exceptions_ = 0;     // outcomes off their row's base value, over every row
-  std::vector<int> union_begin_;   // [i * (groups + 1) + k]: group k's first slot in action i
+  std::vector<int> classes_;       // [i]: action i's outcome classes
+  std::vector<int> class_of_;      // [i * outcomes + o]: outcome o's class in action i
+  // [(i * members + r) * kMaxClasses + c]: members_[r]'s row's most frequent value on class c
+  std::vector<double> base_;
+  std::size_t exceptions_ = 0;    // outcomes off their row's base value, over every row
+  std::vector<int> union_begin_;  // [i * (groups + 1) + k]: group k's first slot in action i
+  // [at(i, k, c)]: the first slot of group k's union on class c (a group's slots are by class, then
+  // outcome), and how many outcomes of class c are off the union.
+  std::vector<int> segment_begin_, off_union_;
   std::vector<std::size_t> slot_base_;  // [i]: action i's first place in slots_; one more
   std::vector<double> row_x_log_x_;     // [i * live + r]: Σ_o P log P over members_[r]'s row
-  // [block_begin_[i * groups + k] + r * width + c]: d(members_[member_begin_[k] + r], the outcome
-  // of slot union_begin + c), width the union's size.
+  // [block_begin_[at(i, k, c)] + r * width + j]: d(members_[member_begin_[k] + r], the outcome of
+  // the class's slot j), width the class's slots in the group's union.
   std::vector<std::size_t> block_begin_;
   std::vector<double> blocks_;
   std::vector<int> slot_outcome_;  // [slot_base_[i] + s]: the outcome of action i's slot s
-  // C[i * groups + k] and g[k][o] by action and slot (slot_base_), kept for group_term; then T[o]
+  // C[at(i, k, c)] and g[k][o] by action and slot (slot_base_), kept for group_term; then T[o]
   // and b by member, for one call.
   mutable std::vector<double> constant_, slots_, totals_, member_belief_;
   mutable int top_group_ = 0;  // the group with the most mass at the belief (the first of those)

@@ -39,13 +39,13 @@ std::vector<int> four_groups() {
 
 // Σ_o P(o) H(group | o) at the belief b, the definition.
 double by_definition(const std::vector<double>& rows, const std::vector<int>& group, int i,
-                     const std::vector<double>& b) {
+                     const std::vector<double>& b, int outcomes = kOutcomes) {
   double expected = 0.0;
-  for (int o = 0; o < kOutcomes; ++o) {
+  for (int o = 0; o < outcomes; ++o) {
     std::vector<double> mass(kGroups, 0.0);
     double p = 0.0;
     for (int l = 0; l < kStates; ++l) {
-      const double joint = b[l] * rows[(static_cast<std::size_t>(i) * kStates + l) * kOutcomes + o];
+      const double joint = b[l] * rows[(static_cast<std::size_t>(i) * kStates + l) * outcomes + o];
       mass[group[l]] += joint;
       p += joint;
     }
@@ -75,6 +75,39 @@ TEST(SparseGroupedEntropy, EqualsTheDefinitionOnRowsOfOneValueAndAFewExceptions)
     for (double& p : b) p /= total;
     for (int i = 0; i < kActions; ++i)
       EXPECT_NEAR(sparse.expected_entropy(i, b.data()), by_definition(rows, group, i, b), 1e-12)
+          << "belief " << trial << ", action " << i;
+  }
+}
+
+// A graded table (docs/perception.md, "Graded observations"): outcome h@g is P(h | s) times
+// P(g | right) when h is the state's own class, P(g | wrong) otherwise, so each grade has a base
+// value of its own in a row: one class per grade, and the exceptions are the label table's (each
+// three times) and the state's own class.
+TEST(SparseGroupedEntropy, GivesEachGradeOfAGradedTableABaseValue) {
+  Rng rng(11);
+  const std::vector<double> labels = sparse_rows(3, rng);
+  constexpr int kGrades = 3, kGraded = kOutcomes * kGrades;
+  const double right[kGrades] = {0.1, 0.3, 0.6}, wrong[kGrades] = {0.5, 0.3, 0.2};
+  std::vector<double> rows;
+  for (int r = 0; r < kActions * kStates; ++r) {
+    const int own = r % kStates % kOutcomes;
+    for (int g = 0; g < kGrades; ++g)
+      for (int h = 0; h < kOutcomes; ++h)
+        rows.push_back(labels[static_cast<std::size_t>(r) * kOutcomes + h] *
+                       (h == own ? right[g] : wrong[g]));
+  }
+  const std::vector<int> group = four_groups();
+  const SparseGroupedEntropy sparse(rows, kActions, kStates, kGraded, kGroups, group);
+  // At most (3 + 1) x 3 a row, where one base value per row would leave two grades' worth.
+  EXPECT_LE(sparse.mean_exceptions(), 12.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<double> b(kStates);
+    double total = 0.0;
+    for (double& p : b) total += p = std::pow(uniform01(rng), 3);
+    for (double& p : b) p /= total;
+    for (int i = 0; i < kActions; ++i)
+      EXPECT_NEAR(sparse.expected_entropy(i, b.data()), by_definition(rows, group, i, b, kGraded),
+                  1e-12)
           << "belief " << trial << ", action " << i;
   }
 }
