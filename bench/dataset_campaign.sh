@@ -13,11 +13,12 @@
 # planner sensing longer.
 # With ARMS=graded (environment): four arms, plan and information_gain each hearing labels and
 # grades (observations: graded), so grades are measured paired against labels.
+# With OBSERVATIONS=graded (environment): the five arms all hear grades.
 # With COSTS=costed (environment): each behaviour priced (task.costs), from 0.5 for the least
 # informative to 4.5 for the most, as published container studies price theirs: then information
 # must be bought, and the arms are compared in cost-weighted reward.
-# Usage: [ARMS=exact|graded] [SET=recorded] [COSTS=costed] bench/dataset_campaign.sh BUILD_DIR
-#        [EPISODES] [HOLD_OUT] [WORKERS] [OUT]
+# Usage: [ARMS=exact|graded] [SET=recorded] [COSTS=costed] [OBSERVATIONS=graded]
+#        bench/dataset_campaign.sh BUILD_DIR [EPISODES] [HOLD_OUT] [WORKERS] [OUT]
 set -eu
 build=$1
 episodes=${2:-20000}
@@ -45,11 +46,13 @@ elif [ "${ARMS:-}" = graded ]; then
   - {name: information_gain_graded, strategy: information_gain, observations: graded}
   - {name: information_gain, strategy: information_gain}'
 else
-  arms='  - {name: plan, strategy: plan}
-  - {name: all_actions, strategy: all_actions}
-  - {name: best_single, strategy: best_single}
-  - {name: information_gain, strategy: information_gain}
-  - {name: random, strategy: random}'
+  heard=
+  [ "${OBSERVATIONS:-}" = graded ] && heard=', observations: graded'
+  arms="  - {name: plan, strategy: plan$heard}
+  - {name: all_actions, strategy: all_actions$heard}
+  - {name: best_single, strategy: best_single$heard}
+  - {name: information_gain, strategy: information_gain$heard}
+  - {name: random, strategy: random$heard}"
 fi
 costs=
 if [ "${COSTS:-}" = costed ]; then
