@@ -175,5 +175,33 @@ TEST(SensingPolicyLarge, ChoosesWhatTheDefinitionChoosesOnRowsOfOneValue) {
   expect_choices_of_the_definition(data, rng);
 }
 
+// The same rows graded (docs/perception.md, "Graded observations"): each class heard at one of
+// three grades, P(h@g | k) = P(h | k) P(g | right) when h = k, P(h | k) P(g | wrong) otherwise, so
+// each grade has a flat value of its own: the sparse sum with a base value per grade.
+TEST(SensingPolicyLarge, ChoosesWhatTheDefinitionChoosesOnGradedRows) {
+  Rng rng(13);
+  pomdp::ObjectProblemData data = large_problem(rng);
+  const std::vector<std::string> labels = data.observation_symbols;
+  const char* grades[] = {"low", "mid", "high"};
+  const double right[] = {0.1, 0.3, 0.6}, wrong[] = {0.6, 0.3, 0.1};
+  data.observation_symbols.clear();
+  for (int g = 0; g < 3; ++g)
+    for (const std::string& label : labels)
+      data.observation_symbols.push_back(label + "@" + grades[g]);
+  for (auto& action : data.observation_table)
+    for (std::size_t k = 0; k < action.size(); ++k) {
+      std::vector<double> row(labels.size(), 1.0);
+      row[k] = 30.0;
+      for (int x = 0; x < 3; ++x) row[static_cast<std::size_t>(uniform01(rng) * 64)] += 5.0;
+      double total = 0.0;
+      for (double p : row) total += p;
+      action[k].clear();
+      for (int g = 0; g < 3; ++g)
+        for (std::size_t h = 0; h < row.size(); ++h)
+          action[k].push_back(row[h] / total * (h == k ? right[g] : wrong[g]));
+    }
+  expect_choices_of_the_definition(data, rng);
+}
+
 }  // namespace
 }  // namespace echoplan::solvers
