@@ -26,16 +26,19 @@ double most_frequent(const double* row, const std::vector<int>& outcomes) {
 
 // The outcomes split into classes whose cells agree in more than half of the `rows` (each
 // `outcomes` long), the largest class 0. First each outcome joins the first class whose first
-// outcome it so agrees with; classes of fewer than an eighth of the outcomes, and any beyond the
-// `most` largest, fold into the largest. Then each outcome moves to the class whose most frequent
-// value per row it equals in the most rows (a first outcome that was itself an exception in many
-// rows splits its class less so); one that matches none in more than half the rows stays.
+// outcome it so agrees with (of at most kCandidates: on a dense table no two outcomes agree, and
+// the search stops costing outcomes squared; the outcomes left over make one more); classes of
+// fewer than an eighth of the outcomes, and any beyond the `most` largest, fold into the largest.
+// Then each outcome moves to the class whose most frequent value per row it equals in the most rows
+// (a first outcome that was itself an exception in many rows splits its class less so); one that
+// matches none in more than half the rows stays.
 std::vector<int> outcome_classes(const double* rows, int count, int outcomes, int most) {
   const auto cell = [&](int r, int o) { return rows[static_cast<std::size_t>(r) * outcomes + o]; };
+  constexpr std::size_t kCandidates = 32;
   std::vector<int> first, class_of(outcomes);
   for (int o = 0; o < outcomes; ++o) {
     std::size_t c = 0;
-    for (; c < first.size(); ++c) {
+    for (; c < first.size() && c < kCandidates; ++c) {
       int equal = 0;
       for (int r = 0; r < count; ++r) equal += cell(r, o) == cell(r, first[c]);
       if (2 * equal > count) break;
