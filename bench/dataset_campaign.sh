@@ -20,6 +20,18 @@
 # Usage: [ARMS=exact|graded] [SET=recorded] [COSTS=costed] [OBSERVATIONS=graded]
 #        bench/dataset_campaign.sh BUILD_DIR [EPISODES] [HOLD_OUT] [WORKERS] [OUT]
 set -eu
+# A misspelt switch would silently run another campaign than the one asked for.
+check() {
+  case " $3 " in *" $2 "*) ;; *)
+    echo "dataset_campaign.sh: $1=$2 is not one of:$3 (or unset)" >&2
+    exit 2
+    ;;
+  esac
+}
+check ARMS "${ARMS:-}" " exact graded"
+check SET "${SET:-}" " recorded"
+check COSTS "${COSTS:-}" " costed"
+check OBSERVATIONS "${OBSERVATIONS:-}" " graded"
 build=$1
 episodes=${2:-20000}
 hold_out=${3:-session}
