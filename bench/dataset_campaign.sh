@@ -13,11 +13,13 @@
 # planner sensing longer.
 # With ARMS=graded (environment): four arms, plan and information_gain each hearing labels and
 # grades (observations: graded), so grades are measured paired against labels.
+# With ARMS=atypical (environment): six arms, the five but random, and plan and information_gain
+# also planning with objects unlike their class (atypical: true; plan_atypical listed first).
 # With OBSERVATIONS=graded (environment): the five arms all hear grades.
 # With COSTS=costed (environment): each behaviour priced (task.costs), from 0.5 for the least
 # informative to 4.5 for the most, as published container studies price theirs: then information
 # must be bought, and the arms are compared in cost-weighted reward.
-# Usage: [ARMS=exact|graded] [SET=recorded] [COSTS=costed] [OBSERVATIONS=graded]
+# Usage: [ARMS=exact|graded|atypical] [SET=recorded] [COSTS=costed] [OBSERVATIONS=graded]
 #        bench/dataset_campaign.sh BUILD_DIR [EPISODES] [HOLD_OUT] [WORKERS] [OUT]
 set -eu
 # A misspelt switch would silently run another campaign than the one asked for.
@@ -28,7 +30,7 @@ check() {
     ;;
   esac
 }
-check ARMS "${ARMS:-}" " exact graded"
+check ARMS "${ARMS:-}" " exact graded atypical"
 check SET "${SET:-}" " recorded"
 check COSTS "${COSTS:-}" " costed"
 check OBSERVATIONS "${OBSERVATIONS:-}" " graded"
@@ -57,6 +59,13 @@ elif [ "${ARMS:-}" = graded ]; then
   - {name: plan, strategy: plan}
   - {name: information_gain_graded, strategy: information_gain, observations: graded}
   - {name: information_gain, strategy: information_gain}'
+elif [ "${ARMS:-}" = atypical ]; then
+  arms='  - {name: plan_atypical, strategy: plan, atypical: true}
+  - {name: plan, strategy: plan}
+  - {name: all_actions, strategy: all_actions}
+  - {name: best_single, strategy: best_single}
+  - {name: information_gain, strategy: information_gain}
+  - {name: information_gain_atypical, strategy: information_gain, atypical: true}'
 else
   heard=
   [ "${OBSERVATIONS:-}" = graded ] && heard=', observations: graded'

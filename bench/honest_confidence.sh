@@ -3,10 +3,11 @@
 # class"): a synthetic stand-in where a quarter of the objects look like another group in every
 # behaviour at once (bench/make_feature_set --atypical-share 0.25 --atypical-pull 0.6; 40 objects
 # in 8 groups of 5, 5 sessions, 4 behaviours, audio and haptic), sorted by group with whole objects
-# held out, at EPISODES episodes: the planner and the greedy rule each without and with atypical
-# objects among the hidden states (`atypical: true`), the planner with the exact leaf, and two fixed
-# baselines. Prints each arm's row, the paired differences, how sure each arm was at the sort
-# against how often it was right, and each fold's certified regret per trial.
+# held out, at EPISODES episodes: the planner (with ABT's default leaf and with the exact leaf) and
+# the greedy rule, each without and with atypical objects among the hidden states
+# (`atypical: true`), and two fixed baselines; the exact planner with atypical objects first, so the
+# paired differences are against it. Prints each arm's row, the paired differences, how sure each
+# arm was at the sort against how often it was right, and each fold's certified regret per trial.
 # Usage: bench/honest_confidence.sh BUILD_DIR [EPISODES] [OUT]
 set -eu
 build=$1
@@ -24,6 +25,7 @@ world: {type: dataset, data: $dir/fs, hold_out: object, groups: $dir/fs/groups.c
 task:
   rewards: {right: 10, wrong: -100, sense: -1}
 arms:
+  - {name: plan_exact_atypical, strategy: plan, leaf: exact, atypical: true}
   - {name: plan_atypical, strategy: plan, atypical: true}
   - {name: plan, strategy: plan}
   - {name: plan_exact, strategy: plan, leaf: exact}
