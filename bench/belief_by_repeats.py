@@ -36,13 +36,31 @@ def belief_in(problem, performances, chosen):
     return weights[objects.index(chosen)] / sum(weights)
 
 
+def fail(problem):
+    print(f"belief_by_repeats.py: {problem}", file=sys.stderr)
+    sys.exit(2)
+
+
+def first_of_each(performances):
+    first, seen = [], set()
+    for action, heard in performances:
+        if action not in seen:
+            first.append((action, heard))
+            seen.add(action)
+    return first
+
+
 def main():
     if len(sys.argv) != 3:
-        sys.exit(__doc__)
+        print(__doc__, file=sys.stderr)
+        sys.exit(2)
     campaign, arm = sys.argv[1], sys.argv[2]
     folds = sorted(glob.glob(os.path.join(campaign, "folds", "*")))
     if not folds:
-        sys.exit(f"belief_by_repeats.py: {campaign} has no folds/ (not a dataset campaign)")
+        fail(f"{campaign} has no folds/ (not a dataset campaign)")
+    missing = [f for f in folds if not os.path.isfile(os.path.join(f, "arms", arm, "steps.csv"))]
+    if missing:
+        fail(f"{missing[0]}/arms/{arm}/steps.csv: no such file (is '{arm}' an arm of the campaign?)")
     sums = collections.defaultdict(lambda: [0.0, 0, 0])  # (counting, length) -> belief, right, n
     for fold in folds:
         problem = yaml.safe_load(open(os.path.join(fold, "problem.yaml")))
@@ -56,7 +74,7 @@ def main():
             right = trials[trial]["true_state"].split("~")[0] == chosen
             every = [(r["action"], r["observation"]) for r in sorted(rows, key=lambda r: int(r["step"]))
                      if r["action"] in sensing]
-            first = [p for i, p in enumerate(every) if p[0] not in [q[0] for q in every[:i]]]
+            first = first_of_each(every)
             length = "fewer than 8" if len(every) < 8 else "8 or more"
             for counting, performances in (("every performance", every), ("first of each", first)):
                 b = belief_in(problem, performances, chosen)
