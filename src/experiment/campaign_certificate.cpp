@@ -50,8 +50,7 @@ std::vector<std::string> fold_names(const fs::path& folds) {
 
 struct ArmEntry {
   std::string name;
-  perception::ObservationKind observations = perception::ObservationKind::labels;
-  bool atypical = false;
+  ArmProblemKind problem;
 };
 
 // The campaign's arms in its own order (campaign.json), the planner usually first, with what each
@@ -67,13 +66,13 @@ std::vector<ArmEntry> arm_entries(const fs::path& directory) {
     for (const nlohmann::json& arm : j["config"]["arms"])
       arms.push_back(
           {arm.value("name", std::string()),
-           perception::parse_observation_kind(arm.value("observations", std::string("labels"))),
-           arm.value("atypical", false)});
+           {perception::parse_observation_kind(arm.value("observations", std::string("labels"))),
+            arm.value("atypical", false), arm.value("lookalike", false)}});
   } catch (const InputError& e) {
     throw InputError(described.string(), 0, e.problem());
   } catch (const nlohmann::json::exception&) {
     throw InputError(described.string(), 0,
-                     "an arm's name, observations or atypical is not of its type");
+                     "an arm's name, observations, atypical or lookalike is not of its type");
   }
   return arms;
 }
@@ -92,7 +91,7 @@ std::vector<ArmCertificate> certify_campaign(const fs::path& directory,
   for (const std::string& fold : fold_names(folds)) {
     std::map<std::string, pomdp::Problem> problems;  // loaded once per fold
     for (const ArmEntry& arm : arms) {
-      const std::string name = fold_problem_name(arm.observations, arm.atypical);
+      const std::string name = fold_problem_name(arm.problem);
       const std::string problem_file = "folds/" + fold + "/" + name;
       const fs::path problem_path = directory / problem_file;
       if (!problems.contains(name)) {

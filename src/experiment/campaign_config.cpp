@@ -82,6 +82,13 @@ const std::vector<Field<CampaignArm>>& arm_fields() {
        .elsewhere = "only for a dataset world: its folds' models fit the share of objects "
                     "unlike their class"},
       // Left out of the identity at its default: campaigns written before it existed.
+      {.key = "lookalike",
+       .member = &CampaignArm::lookalike,
+       .identity = Identity::unless_default,
+       .worlds = Worlds::recorded_data,
+       .elsewhere = "only for a dataset world: its folds' models fit the share of objects that "
+                    "sound like another class"},
+      // Left out of the identity at its default: campaigns written before it existed.
       {.key = "leaf",
        .member = &CampaignArm::leaf,
        .identity = Identity::unless_default,

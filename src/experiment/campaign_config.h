@@ -51,6 +51,10 @@ struct CampaignArm {
   // the copies (with a share of 0 for the others, which then plan exactly as without them), so
   // all arms' beliefs name the same states.
   bool atypical = false;
+  // A dataset world's arm that plans knowing some objects sound like another class
+  // (perception/typicality.h, lookalikes): each class has a lookalike copy with the share its
+  // fold's model fitted; every arm's problem then has the copies, as with `atypical`.
+  bool lookalike = false;
   // An arm of strategy `plan`: the planner's leaf value (solvers/leaf_value.h: policy, exact, ...);
   // empty: the solver's default for the problem.
   std::string leaf{};

@@ -237,7 +237,7 @@ std::vector<double> action_costs(const pomdp::Model& model) {
 std::vector<ArmConfidence> arm_confidence(const CampaignResults& results) {
   std::vector<std::string> arms;
   for (const CampaignArm& arm : results.config.arms) arms.push_back(arm.name);
-  return arm_confidence(arms, results.entries, results.right_action);
+  return arm_confidence(arms, results.entries, results.right_share);
 }
 
 namespace {

@@ -50,6 +50,9 @@ struct CampaignResults {
   // A dataset world's sorting: right_action[s] sorts true state s right (summarize()); empty for
   // other worlds, whose accuracy is the final belief's mode.
   std::vector<int> right_action;
+  // A dataset world's sorts: right_share[s][a], the chance that action a sorts state s right
+  // (right_shares()), what the belief at a sort is measured in; empty for other worlds.
+  std::vector<std::vector<double>> right_share;
   int sensing_actions = 0;  // a dataset world's sensing actions (the first actions), for figures
   // What one use of each action costs (action_costs()): the summaries' mean cost per trial; empty
   // when the world's problem is not an object-identification problem (no costs reported).

@@ -342,6 +342,7 @@ void RecordedDataWorld::open(CampaignConfig& config, CampaignResults& results, I
     loop::check_planner(arm_planner(config, arm), *trials_->names);
   results.spec = trials_->names->model->spec();
   results.right_action = right_actions(*trials_);
+  results.right_share = right_shares(*trials_, config.rewards);
   results.sensing_actions = static_cast<int>(trials_->data->actions.size());
   results.action_costs = action_costs(*trials_->names->model);
   for (std::size_t s = 0; s < trials_->data->sessions.size(); ++s) {

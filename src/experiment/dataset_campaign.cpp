@@ -106,7 +106,8 @@ DatasetTrials open_dataset(const CampaignConfig& config, InputFiles& files,
   }
   try {
     t.names = std::make_shared<const pomdp::Problem>(dataset_problem_file(
-        loop::dataset_problem_shape(t.task, *t.data, config.rewards, any_atypical(config)),
+        loop::dataset_problem_shape(t.task, *t.data, config.rewards, any_atypical(config),
+                                    any_lookalike(config)),
         config.world.data));
   } catch (const InputError& e) {
     // Only the task can be wrong here (a cost for a behaviour the data does not have).
@@ -129,10 +130,22 @@ std::vector<int> right_actions(const DatasetTrials& trials) {
   const int sensing = static_cast<int>(trials.data->actions.size());
   std::vector<int> right;
   for (int bin : trials.task.bin_of_class) right.push_back(sensing + bin);
-  // An atypical copy of a class (loop::dataset_problem) is sorted as its class.
-  const std::size_t classes = right.size();
-  for (std::size_t k = 0; k < classes; ++k) right.push_back(right[k]);
+  const std::size_t states = trials.names->model->object_identification()->data().objects.size();
+  right.resize(states, -1);  // the copies of a class: never a trial's truth
   return right;
+}
+
+std::vector<std::vector<double>> right_shares(const DatasetTrials& trials,
+                                              const loop::TaskRewards& rewards) {
+  const pomdp::ObjectProblemData& names = trials.names->model->object_identification()->data();
+  const std::size_t sensing = names.sensing.size();
+  std::vector<std::vector<double>> shares(names.objects.size(),
+                                          std::vector<double>(sensing + names.sorting.size(), 0.0));
+  for (std::size_t j = 0; j < names.sorting.size(); ++j)
+    for (std::size_t s = 0; s < names.objects.size(); ++s)
+      shares[s][sensing + j] =
+          (names.sorting_reward[j][s] - rewards.wrong) / (rewards.right - rewards.wrong);
+  return shares;
 }
 
 bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
@@ -160,22 +173,43 @@ bool any_atypical(const CampaignConfig& config) {
                      [](const CampaignArm& arm) { return arm.atypical; });
 }
 
-std::string fold_problem_name(perception::ObservationKind kind, bool atypical) {
-  return fmt::format("problem{}{}.yaml",
-                     kind == perception::ObservationKind::graded ? "-graded" : "",
-                     atypical ? "-atypical" : "");
+bool any_lookalike(const CampaignConfig& config) {
+  return std::any_of(config.arms.begin(), config.arms.end(),
+                     [](const CampaignArm& arm) { return arm.lookalike; });
+}
+
+ArmProblemKind arm_problem_kind(const CampaignArm& arm) {
+  return {arm.observation_kind(), arm.atypical, arm.lookalike};
+}
+
+std::string fold_problem_name(const ArmProblemKind& kind) {
+  return fmt::format("problem{}{}{}.yaml",
+                     kind.kind == perception::ObservationKind::graded ? "-graded" : "",
+                     kind.atypical ? "-atypical" : "", kind.lookalike ? "-lookalike" : "");
 }
 
 namespace {
 
-// The fold's problem for arms that hear `kind` and do (or do not) plan with atypical objects.
+// The fold's problem for arms of `kind`. When some arm plans with copies of a class, every arm's
+// problem has them (those that do not plan with them, with a share of 0).
 pomdp::ObjectProblemData fold_problem(const CampaignConfig& config, const DatasetTrials& trials,
                                       int fold, const std::vector<int>& uses,
-                                      perception::ObservationKind kind, bool atypical) {
+                                      const ArmProblemKind& kind) {
   const perception::ObservationModel& model = *trials.models.at(fold);
-  std::optional<double> share;
-  if (any_atypical(config)) share = atypical ? model.atypical_share(kind) : 0.0;
-  return loop::dataset_problem(trials.task, model, config.rewards, uses, kind, share);
+  loop::UnlikeTheirClass unlike;
+  if (any_atypical(config)) unlike.atypical = kind.atypical ? model.atypical_share(kind.kind) : 0.0;
+  if (any_lookalike(config))
+    unlike.lookalike = kind.lookalike ? model.lookalike_share(kind.kind) : 0.0;
+  return loop::dataset_problem(trials.task, model, config.rewards, uses, kind.kind, unlike);
+}
+
+// "hear labels", "hear grades and plan with atypical objects and lookalikes", ...
+std::string kind_description(const ArmProblemKind& kind) {
+  std::vector<std::string> with;
+  if (kind.atypical) with.push_back("atypical objects");
+  if (kind.lookalike) with.push_back("lookalikes");
+  return fmt::format("hear {}{}{}", perception::observation_kind_name(kind.kind),
+                     with.empty() ? "" : " and plan with ", fmt::join(with, " and "));
 }
 
 }  // namespace
@@ -185,39 +219,37 @@ void write_fold_problems(const std::filesystem::path& directory, const CampaignC
   pomdp::BeliefSettings belief;
   belief.type = pomdp::BeliefSettings::Type::exact;  // as the campaign's trials track it
   const std::vector<int> uses = loop::default_uses(*trials.data);
-  std::set<std::pair<perception::ObservationKind, bool>> kinds;
-  for (const CampaignArm& arm : config.arms) kinds.insert({arm.observation_kind(), arm.atypical});
+  std::set<ArmProblemKind> kinds;
+  for (const CampaignArm& arm : config.arms) kinds.insert(arm_problem_kind(arm));
   for (std::size_t f = 0; f < trials.models.size(); ++f) {
     const std::filesystem::path folder = directory / "folds" / std::to_string(f + 1);
     std::filesystem::create_directories(folder);
-    for (const auto& [kind, atypical] : kinds) {
+    for (const ArmProblemKind& kind : kinds) {
       std::ostringstream text;
       text << fmt::format(
-          "# Fold {} of the campaign {}\n# (data {}): the problem its arms that hear {}{} planned "
+          "# Fold {} of the campaign {}\n# (data {}): the problem its arms that {} planned "
           "with, each behaviour limited to the most\n# performances any session recorded (a "
           "trial's own limits may be lower).\n# `echoplan certify --campaign` judges "
           "folds/{}/arms/*/steps.csv with it.\n",
-          f + 1, config.source, config.world.data, perception::observation_kind_name(kind),
-          atypical ? " and plan with atypical objects" : "", f + 1);
-      pomdp::write_problem_yaml(
-          text, fold_problem(config, trials, static_cast<int>(f), uses, kind, atypical), belief,
-          pomdp::PlannerDefaults{});
-      write_file_atomically(folder / fold_problem_name(kind, atypical), text.str());
+          f + 1, config.source, config.world.data, kind_description(kind), f + 1);
+      pomdp::write_problem_yaml(text, fold_problem(config, trials, static_cast<int>(f), uses, kind),
+                                belief, pomdp::PlannerDefaults{});
+      write_file_atomically(folder / fold_problem_name(kind), text.str());
     }
   }
 }
 
 ArmLoops dataset_loops(const CampaignConfig& config, const DatasetTrials& trials) {
   // One problem per fold and use limits, shared by every arm and trial that needs it.
-  using Key = std::tuple<int, std::vector<int>, perception::ObservationKind, bool>;
+  using Key = std::tuple<int, std::vector<int>, ArmProblemKind>;
   std::map<Key, std::shared_ptr<const pomdp::Problem>> problems;
   const auto& names = trials.names->model->object_identification()->data();
   const auto problem_for = [&](int fold, const std::vector<int>& uses, const CampaignArm& arm) {
-    auto& p = problems[{fold, uses, arm.observation_kind(), arm.atypical}];
+    auto& p = problems[{fold, uses, arm_problem_kind(arm)}];
     if (!p)
-      p = std::make_shared<const pomdp::Problem>(dataset_problem_file(
-          fold_problem(config, trials, fold, uses, arm.observation_kind(), arm.atypical),
-          fmt::format("{} (fold {})", config.world.data, fold + 1)));
+      p = std::make_shared<const pomdp::Problem>(
+          dataset_problem_file(fold_problem(config, trials, fold, uses, arm_problem_kind(arm)),
+                               fmt::format("{} (fold {})", config.world.data, fold + 1)));
     return p;
   };
   ArmLoops loops(config.arms.size());

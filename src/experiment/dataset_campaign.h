@@ -47,21 +47,36 @@ DatasetTrials open_dataset(const CampaignConfig& config, InputFiles& files,
 // The trial groups of the data: one per object, in the data's order, a trial per session.
 std::vector<ObjectGroup> dataset_groups(const DatasetTrials& trials);
 
-// The action that sorts each state right, for the report's accuracy (CampaignResults): per class,
-// then per atypical copy of a class (a world with `atypical`; extra entries are never read
-// without).
+// The action that sorts each class right, for the report's accuracy (CampaignResults); the
+// copies of a class (atypical, lookalike) have -1: a trial's truth is always a class.
 std::vector<int> right_actions(const DatasetTrials& trials);
+// Per state of the names problem (classes, then their copies) and action, the chance that the
+// action sorts an object in that state right: (reward - wrong) / (right - wrong) for a sorting
+// action (1 or 0 for a class and its atypical copy, the share of the other classes in the bin for
+// a lookalike), 0 for a sensing action. What the belief at a sort is measured with.
+std::vector<std::vector<double>> right_shares(const DatasetTrials& trials,
+                                              const loop::TaskRewards& rewards);
 
 // Fits every fold's model (`progress` hears "fit folds"). Returns false when stopped.
 bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
                        const ProgressFn& progress, const std::atomic<bool>& stop);
 
-// The file name of a fold's problem for arms that hear `kind` and do or do not plan with
-// atypical objects: problem.yaml, problem-graded.yaml, problem-atypical.yaml or
-// problem-graded-atypical.yaml.
-std::string fold_problem_name(perception::ObservationKind kind, bool atypical);
+// What an arm's fold problem depends on besides the fold: what it hears and which objects unlike
+// their class it plans with (CampaignArm::observations, atypical, lookalike).
+struct ArmProblemKind {
+  perception::ObservationKind kind = perception::ObservationKind::labels;
+  bool atypical = false;
+  bool lookalike = false;
+  friend auto operator<=>(const ArmProblemKind&, const ArmProblemKind&) = default;
+};
+ArmProblemKind arm_problem_kind(const CampaignArm& arm);
+
+// The file name of a fold's problem of that kind: problem[-graded][-atypical][-lookalike].yaml.
+std::string fold_problem_name(const ArmProblemKind& kind);
 // Some arm plans with atypical objects (CampaignArm::atypical): every arm's problem has the copies.
 bool any_atypical(const CampaignConfig& config);
+// Some arm plans with lookalikes (CampaignArm::lookalike): every arm's problem has those copies.
+bool any_lookalike(const CampaignConfig& config);
 
 // Writes each fold's problems, `directory`/folds/<fold>/<fold_problem_name> (folds numbered from
 // 1), one per kind of arm: the fold's fitted table, the task's rewards and costs, each behaviour

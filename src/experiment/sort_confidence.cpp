@@ -5,25 +5,31 @@
 namespace echoplan::experiment {
 
 std::optional<SortConfidence> sort_confidence(const TrialResult& trial,
-                                              const std::vector<int>& right_action) {
+                                              const RightShares& right_share) {
   if (trial.record.capped || trial.steps.empty()) return std::nullopt;
   const StepRecord& last = trial.steps.back();
   const std::vector<double>& belief = last.belief;
-  if (right_action.empty()) {
+  if (right_share.empty()) {
     const int mode = trial.record.believed_state;
     if (mode < 0 || mode >= static_cast<int>(belief.size())) return std::nullopt;
     return SortConfidence{belief[mode], mode == trial.record.true_state};
   }
+  const auto share = [&](std::size_t state) {
+    const std::vector<double>& row = right_share.at(state);
+    return last.action >= 0 && static_cast<std::size_t>(last.action) < row.size()
+               ? row[static_cast<std::size_t>(last.action)]
+               : 0.0;
+  };
   double mass = 0.0;
-  for (std::size_t s = 0; s < belief.size() && s < right_action.size(); ++s)
-    if (right_action[s] == last.action) mass += belief[s];
-  return SortConfidence{std::clamp(mass, 0.0, 1.0),
-                        right_action.at(trial.record.true_state) == last.action};
+  for (std::size_t s = 0; s < belief.size() && s < right_share.size(); ++s)
+    mass += belief[s] * share(s);
+  const auto truth = static_cast<std::size_t>(trial.record.true_state);
+  return SortConfidence{std::clamp(mass, 0.0, 1.0), share(truth) > 0.5};
 }
 
 std::vector<ArmConfidence> arm_confidence(const std::vector<std::string>& arms,
                                           const std::vector<JournalEntry>& entries,
-                                          const std::vector<int>& right_action) {
+                                          const RightShares& right_share) {
   std::vector<ArmConfidence> all;
   const std::size_t bins = kReliabilityEdges.size() - 1;
   for (const std::string& arm : arms) {
@@ -33,7 +39,7 @@ std::vector<ArmConfidence> arm_confidence(const std::vector<std::string>& arms,
       c.bins.push_back({kReliabilityEdges[b], kReliabilityEdges[b + 1]});
     for (const JournalEntry& e : entries) {
       if (e.arm != arm) continue;
-      const std::optional<SortConfidence> sort = sort_confidence(e.result, right_action);
+      const std::optional<SortConfidence> sort = sort_confidence(e.result, right_share);
       if (!sort) continue;
       ++c.sorts;
       c.mean_belief += sort->belief;

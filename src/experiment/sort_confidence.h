@@ -1,8 +1,11 @@
 // How sure each arm was when it sorted, beside how often it sorted right: the planner's belief at
 // the final decision means what it says when the two agree (a reliability measure). A trial's
 // confidence is the belief, at the decision that sorted, in what the decision stood for:
-//   - with `right_action` (a dataset world sorts classes into bins), the belief mass of the classes
-//     the chosen sorting action is right for; the trial is right when that action is the truth's;
+//   - with `right_share` (a dataset world sorts classes into bins; right_share[s][a] is the chance
+//     that action a sorts an object in state s right), the belief's expectation of that chance
+//     for the chosen action: the mass of the classes in the chosen bin, plus the share of each
+//     lookalike copy whose other classes are in it; the trial is right when the chosen action
+//     sorts the truth right;
 //   - otherwise (the report's problems, right when the final belief's mode is the truth), the
 //     belief in that mode.
 // Trials stopped by max_steps never sorted and are left out.
@@ -22,8 +25,9 @@ struct SortConfidence {
 };
 
 // The trial's confidence at its sort; nothing for a capped trial or one without steps.
+using RightShares = std::vector<std::vector<double>>;  // [state][action], in [0, 1]
 std::optional<SortConfidence> sort_confidence(const TrialResult& trial,
-                                              const std::vector<int>& right_action);
+                                              const RightShares& right_share);
 
 // Sorts whose confidence fell in [low, high) (the last bin includes 1).
 struct ReliabilityBin {
@@ -49,6 +53,6 @@ inline const std::vector<double> kReliabilityEdges{0.0, 0.5, 0.6, 0.7, 0.8, 0.9,
 // Per arm of the campaign, in the configuration's order, over every journal entry of that arm.
 std::vector<ArmConfidence> arm_confidence(const std::vector<std::string>& arms,
                                           const std::vector<JournalEntry>& entries,
-                                          const std::vector<int>& right_action);
+                                          const RightShares& right_share);
 
 }  // namespace echoplan::experiment

@@ -88,7 +88,43 @@ void add_atypical_copies(pomdp::ObjectProblemData& data, double rho) {
   pomdp::validate_object_problem(data);
 }
 
+// Appends the lookalike copy of each of the first `classes` objects (dataset_problem.h) with
+// share `rho`: heard through its class's rows, sorted as any other class would be.
+void add_lookalike_copies(pomdp::ObjectProblemData& data, std::size_t classes, double rho) {
+  for (std::size_t j = 0; j < classes; ++j) {
+    const std::string name = lookalike_name(data.objects[j]);
+    if (std::find(data.objects.begin(), data.objects.end(), name) != data.objects.end())
+      throw InputError(
+          fmt::format("class '{}' is also the name of the lookalike of class '{}': rename it", name,
+                      data.objects[j]));
+    data.objects.push_back(name);
+    data.prior.push_back(data.prior[j] * rho);
+    data.prior[j] *= 1.0 - rho;
+  }
+  for (auto& row : data.sorting_reward) {
+    double total = 0.0;
+    for (std::size_t k = 0; k < classes; ++k) total += row[k];
+    for (std::size_t j = 0; j < classes; ++j)
+      row.push_back(classes > 1 ? (total - row[j]) / static_cast<double>(classes - 1) : row[j]);
+  }
+  for (auto& table : data.observation_table) {
+    const std::vector<std::vector<double>> of_classes(table.begin(),
+                                                      table.begin() + static_cast<long>(classes));
+    table.insert(table.end(), of_classes.begin(), of_classes.end());
+  }
+  pomdp::validate_object_problem(data);
+}
+
+// The copies of `unlike` after the classes: atypical ones, then lookalikes.
+void add_copies(pomdp::ObjectProblemData& data, const UnlikeTheirClass& unlike) {
+  const std::size_t classes = data.objects.size();
+  if (unlike.atypical) add_atypical_copies(data, *unlike.atypical);
+  if (unlike.lookalike) add_lookalike_copies(data, classes, *unlike.lookalike);
+}
+
 }  // namespace
+
+std::string lookalike_name(const std::string& name) { return name + "~lookalike"; }
 
 std::string atypical_name(const std::string& name) { return name + "~atypical"; }
 
@@ -101,7 +137,7 @@ pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
                                          const perception::ObservationModel& model,
                                          const TaskRewards& rewards, std::vector<int> uses,
                                          perception::ObservationKind kind,
-                                         std::optional<double> atypical_share) {
+                                         const UnlikeTheirClass& unlike) {
   if (model.classes() != task.classes || model.reject())
     throw InputError(fmt::format(
         "the model's classes ({}{}) are not the task's ({}): a dataset problem needs a model "
@@ -113,13 +149,14 @@ pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
     table.push_back(model.observation_table(action, kind));
   pomdp::ObjectProblemData data = problem_of(task, model.actions(), model.observation_symbols(kind),
                                              table, rewards, std::move(uses));
-  if (atypical_share) add_atypical_copies(data, *atypical_share);
+  add_copies(data, unlike);
   return data;
 }
 
 pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& task,
                                                const perception::FeatureSet& set,
-                                               const TaskRewards& rewards, bool atypical) {
+                                               const TaskRewards& rewards, bool atypical,
+                                               bool lookalike) {
   std::vector<std::string> actions;
   for (const perception::ActionData& action : set.actions) actions.push_back(action.name);
   const std::size_t classes = task.classes.size();
@@ -127,7 +164,10 @@ pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& ta
                                           classes, std::vector<double>(classes, 1.0 / classes)));
   pomdp::ObjectProblemData data =
       problem_of(task, actions, task.classes, uniform, rewards, default_uses(set));
-  if (atypical) add_atypical_copies(data, 0.5);
+  UnlikeTheirClass unlike;
+  if (atypical) unlike.atypical = 0.5;
+  if (lookalike) unlike.lookalike = 0.5;
+  add_copies(data, unlike);
   return data;
 }
 

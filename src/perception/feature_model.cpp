@@ -228,6 +228,8 @@ struct FeatureModelFitter {
     }
     description.atypical_share = fit_atypical_share(labels);
     description.graded_atypical_share = fit_atypical_share(graded);
+    description.lookalike_share = fit_lookalike_share(labels);
+    description.graded_lookalike_share = fit_lookalike_share(graded);
     return ObservationModel(std::move(description), std::move(per_action));
   }
 

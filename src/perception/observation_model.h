@@ -48,6 +48,10 @@ struct ModelDescription {
   // files without it.
   double atypical_share = 0.0;
   double graded_atypical_share = 0.0;
+  // The share of objects that sound like another class (typicality.h, lookalikes), per kind: what
+  // a dataset problem's lookalike copies start with. 0 where atypical_share is.
+  double lookalike_share = 0.0;
+  double graded_lookalike_share = 0.0;
 };
 
 // What session-grouped (inner) cross-validation measured about one action of a model fitted on
@@ -113,6 +117,11 @@ class ObservationModel {
   double atypical_share(ObservationKind kind) const {
     return kind == ObservationKind::graded ? description_.graded_atypical_share
                                            : description_.atypical_share;
+  }
+  // The share of objects that sound like another class, for observations of `kind`.
+  double lookalike_share(ObservationKind kind) const {
+    return kind == ObservationKind::graded ? description_.graded_lookalike_share
+                                           : description_.lookalike_share;
   }
   // classes() followed by "unknown" when reject() is on.
   std::vector<std::string> observation_symbols() const;

@@ -94,6 +94,9 @@ nlohmann::json observation_model_to_json(const ObservationModel& model) {
           {"atypical_share",
            {{"labels", model.atypical_share(ObservationKind::labels)},
             {"graded", model.atypical_share(ObservationKind::graded)}}},
+          {"lookalike_share",
+           {{"labels", model.lookalike_share(ObservationKind::labels)},
+            {"graded", model.lookalike_share(ObservationKind::graded)}}},
           {"per_action", per_action}};
 }
 
@@ -157,22 +160,22 @@ bool is_audio_preset(const std::string& name) {
 
 // Everything but the per-action entries; the classifier name is checked against the registry,
 // and an old name (classifier_aliases()) becomes the current one.
-// Absent in files written before objects unlike their class were modelled: none.
-void read_atypical_share(ModelDescription& d, const nlohmann::json& doc,
-                         const std::string& source) {
-  if (!doc.contains("atypical_share")) return;
-  const auto& shares = doc["atypical_share"];
+// A share of objects `key` (`atypical_share`, `lookalike_share`): {labels, graded}, each in
+// [0, kMostAtypical]. Absent in files written before such objects were modelled: none.
+void read_shares(const nlohmann::json& doc, const char* key, const std::string& source,
+                 double& labels, double& graded) {
+  if (!doc.contains(key)) return;
+  const auto& shares = doc[key];
   const auto share = [&](const char* kind) {
-    const std::string where = std::string("atypical_share.") + kind;
-    const double rho =
-        jf::number(jf::member(shares, kind, "atypical_share", source), where, source);
+    const std::string where = std::string(key) + "." + kind;
+    const double rho = jf::number(jf::member(shares, kind, key, source), where, source);
     if (!(rho >= 0.0 && rho <= kMostAtypical))
       throw InputError(source, 0,
                        fmt::format("{}: {} is not in [0, {}]", where, rho, kMostAtypical));
     return rho;
   };
-  d.atypical_share = share("labels");
-  d.graded_atypical_share = share("graded");
+  labels = share("labels");
+  graded = share("graded");
 }
 
 ModelDescription read_description(const nlohmann::json& doc, const std::string& source) {
@@ -190,7 +193,8 @@ ModelDescription read_description(const nlohmann::json& doc, const std::string& 
                                  classifier, fmt::join(classifier_names(), ", "),
                                  fmt::join(row_classifier_names(), ", ")));
   }
-  read_atypical_share(d, doc, source);
+  read_shares(doc, "atypical_share", source, d.atypical_share, d.graded_atypical_share);
+  read_shares(doc, "lookalike_share", source, d.lookalike_share, d.graded_lookalike_share);
   d.classes = jf::names(jf::member(doc, "classes", "", source), -1, "classes", source);
   if (d.classes.size() < 2)
     throw InputError(source, 0, "classes: a model needs at least two classes");

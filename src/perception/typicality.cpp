@@ -10,8 +10,8 @@ namespace echoplan::perception {
 
 namespace {
 
-// The first performance of an action in a session: its fold, class and symbol.
-struct FirstPerformance {
+// One performance of an action in a session: its fold, class and symbol.
+struct Performance {
   int fold = 0;
   int label = 0;
   int symbol = 0;
@@ -72,26 +72,31 @@ double mixture_nll(const std::vector<ScoredSequence>& scored, double rho) {
 std::vector<Sequence> cross_behaviour_sequences(std::span<const HeldOutPerformances> actions) {
   if (actions.empty()) return {};
   const auto folds = static_cast<int>(actions.front().cross_fitted.size());
-  // [session][action] -> its first performance; actions in index order.
-  std::map<int, std::map<int, FirstPerformance>> sessions;
+  // [session][action] -> its performances in order; actions in index order.
+  std::map<int, std::map<int, std::vector<Performance>>> sessions;
   for (std::size_t a = 0; a < actions.size(); ++a) {
     const HeldOutPerformances& held = actions[a];
     for (std::size_t i = 0; i < held.session.size(); ++i)
-      sessions[held.session[i]].try_emplace(
-          static_cast<int>(a), FirstPerformance{held.fold[i], held.label[i], held.symbol[i]});
+      sessions[held.session[i]][static_cast<int>(a)].push_back(
+          Performance{held.fold[i], held.label[i], held.symbol[i]});
   }
   std::vector<Sequence> sequences;
   for (const auto& [session, performed] : sessions) {
-    const std::vector<std::pair<int, FirstPerformance>> order(performed.begin(), performed.end());
+    const std::vector<std::pair<int, std::vector<Performance>>> order(performed.begin(),
+                                                                      performed.end());
     const std::size_t n = order.size();
+    std::size_t rounds = 0;
+    for (const auto& [action, list] : order) rounds = std::max(rounds, list.size());
     Sequence sequence;
-    sequence.true_class = order.front().second.label;
-    for (std::size_t k = 0; k < n; ++k) {
-      const auto& [action, first] = order[(static_cast<std::size_t>(session) + k) % n];
-      sequence.symbols.push_back(first.symbol);
-      sequence.tables.push_back(action * folds + first.fold);
-      sequences.push_back(sequence);
-    }
+    sequence.true_class = order.front().second.front().label;
+    for (std::size_t r = 0; r < rounds; ++r)
+      for (std::size_t k = 0; k < n; ++k) {
+        const auto& [action, list] = order[(static_cast<std::size_t>(session) + k) % n];
+        if (r >= list.size()) continue;
+        sequence.symbols.push_back(list[r].symbol);
+        sequence.tables.push_back(action * folds + list[r].fold);
+        sequences.push_back(sequence);
+      }
   }
   return sequences;
 }
@@ -108,17 +113,59 @@ double typicality_nll(std::span<const Table> tables, double rho,
   return mixture_nll(score(tables, sequences), rho);
 }
 
-double fit_atypical_share(std::span<const HeldOutPerformances> actions) {
-  const std::vector<Sequence> sequences = cross_behaviour_sequences(actions);
-  if (sequences.empty()) return 0.0;
-  std::vector<Table> tables;
-  for (const HeldOutPerformances& held : actions)
-    tables.insert(tables.end(), held.cross_fitted.begin(), held.cross_fitted.end());
-  const std::vector<ScoredSequence> scored = score(tables, sequences);
-  const auto nll = [&](double rho) { return mixture_nll(scored, rho); };
+namespace {
+
+// Sum of -log P(true class | sequence) when a share rho of the objects sound like another class:
+// P(heard | k) = (1 - rho) L(k) + rho / (K - 1) sum_{j != k} L(j), uniform class prior, so the
+// evidence sum_k P(heard | k) is sum_j L(j) whatever rho.
+double lookalike_nll(const std::vector<ScoredSequence>& scored, double rho) {
+  double total = 0.0;
+  for (const ScoredSequence& s : scored) {
+    const double top = *std::max_element(s.log_typical.begin(), s.log_typical.end());
+    double evidence = 0.0;
+    for (double l : s.log_typical) evidence += std::exp(l - top);
+    const double truth = std::exp(s.log_typical[static_cast<std::size_t>(s.true_class)] - top);
+    const auto others = static_cast<double>(s.log_typical.size() - 1);
+    total -= std::log(((1.0 - rho) * truth + rho * (evidence - truth) / others) / evidence);
+  }
+  return total;
+}
+
+// The share in [0, kMostAtypical] minimising `nll`, or 0 when none lowers it.
+template <class Nll>
+double fit_share(const Nll& nll) {
   const double rho = golden_section_minimum(nll, 0.0, kMostAtypical);
   // The search never evaluates the end points; keep 0 (the tables as they are) unless rho helps.
   return nll(rho) < nll(0.0) ? rho : 0.0;
+}
+
+// The actions' sequences scored with their cross-fitted tables.
+std::vector<ScoredSequence> scored_sequences(std::span<const HeldOutPerformances> actions) {
+  const std::vector<Sequence> sequences = cross_behaviour_sequences(actions);
+  if (sequences.empty()) return {};
+  std::vector<Table> tables;
+  for (const HeldOutPerformances& held : actions)
+    tables.insert(tables.end(), held.cross_fitted.begin(), held.cross_fitted.end());
+  return score(tables, sequences);
+}
+
+}  // namespace
+
+double lookalike_nll(std::span<const Table> tables, double rho,
+                     std::span<const Sequence> sequences) {
+  return lookalike_nll(score(tables, sequences), rho);
+}
+
+double fit_lookalike_share(std::span<const HeldOutPerformances> actions) {
+  const std::vector<ScoredSequence> scored = scored_sequences(actions);
+  if (scored.empty() || scored.front().log_typical.size() < 2) return 0.0;
+  return fit_share([&](double rho) { return lookalike_nll(scored, rho); });
+}
+
+double fit_atypical_share(std::span<const HeldOutPerformances> actions) {
+  const std::vector<ScoredSequence> scored = scored_sequences(actions);
+  if (scored.empty()) return 0.0;
+  return fit_share([&](double rho) { return mixture_nll(scored, rho); });
 }
 
 }  // namespace echoplan::perception

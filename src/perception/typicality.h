@@ -13,10 +13,15 @@
 //
 // Rho is fitted on inner-held-out sessions (held-out objects when the task sorts novel objects,
 // held-out sessions when it sorts known ones): it minimises the negative log-likelihood of the
-// true class after sequences that combine behaviours: per session, the first performance of each
-// of its behaviours, in an order rotated by the session's index (session s starts at behaviour
-// s mod n), and every prefix of them, as the planner uses one, two or all. Each performance is
-// scored with its action's table of the other inner folds, as tempered for repeats.
+// true class after sequences that combine behaviours as a planner does: per session, its
+// performances in rounds, the first of each of its behaviours in an order rotated by the session's
+// index (session s starts at behaviour s mod n), then the second of each behaviour performed twice,
+// and so on; and every prefix of them, as a planner stops after one, two or all. Each performance
+// is scored with its action's table of the other inner folds, as tempered for repeats. Repeats
+// belong in the sequences: an object unlike its class repeats its error when a behaviour is
+// performed again, and a planner repeats behaviours exactly when readings disagree (fitted on the
+// first performances alone, the share was 0.01 on the recorded-data stand-in with novel objects,
+// where the planner's belief was 8 points above its share right; with repeats, 0.05).
 #pragma once
 
 #include <span>
@@ -54,5 +59,23 @@ inline constexpr double kMostAtypical = 0.5;
 // Rho in [0, kMostAtypical] minimising typicality_nll over the actions' sequences; 0 when no
 // share lowers it (or there are no sequences).
 double fit_atypical_share(std::span<const HeldOutPerformances> actions);
+
+// Objects that sound like another class. The class-blind model above says an atypical object's
+// performances carry no class; a lookalike's carry the wrong one: an object of class k that sounds
+// like class j in every behaviour (a weighted can heard as the mug, a novel bottle that behaves as
+// the jars do). With a share rho of lookalikes, the other class uniform among the K - 1,
+//   P(heard | k) = (1 - rho) L(k) + rho / (K - 1) sum_{j != k} L(j),   L(j) = prod_i P_ai(o_i | j).
+// Agreeing behaviours cannot then make the belief surer than about 1 - rho: however clearly an
+// object sounds like j, it is j only if it is not a lookalike. As a POMDP: every class j gets a
+// copy "sounds like j, is another class", heard through j's rows, whose sorting reward is the mean
+// over the other classes (loop/dataset_problem.h).
+//
+// Sum over sequences of -log P(true class | symbols) under that mixture; tables as
+// cross_behaviour_sequences indexes them.
+double lookalike_nll(std::span<const Table> tables, double rho,
+                     std::span<const Sequence> sequences);
+// Rho in [0, kMostAtypical] minimising lookalike_nll over the actions' sequences (those of
+// fit_atypical_share); 0 when no share lowers it, there are no sequences or only one class.
+double fit_lookalike_share(std::span<const HeldOutPerformances> actions);
 
 }  // namespace echoplan::perception

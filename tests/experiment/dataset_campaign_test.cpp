@@ -196,6 +196,29 @@ TEST(DatasetCampaign, AnArmWithAtypicalObjectsLeavesTheOtherArmsAsTheyWere) {
   EXPECT_TRUE(fs::is_regular_file(with_dir / "folds/1/problem-atypical.yaml"));
 }
 
+// An arm planning with lookalikes: every arm's problem names them after the classes, the arm has
+// its own fold problem, and a sort's belief counts a lookalike's chance of being in the bin.
+TEST(DatasetCampaign, AnArmWithLookalikesHasItsCopiesAndItsFoldProblem) {
+  const fs::path data = separable_data("dataset_lookalike");
+  const std::string text = "seed: 3\nworld: {type: dataset, data: " + data.string() +
+                           ", hold_out: object, groups: " + (data / "groups.csv").string() +
+                           "}\narms:\n  - {name: plan, strategy: plan}\n"
+                           "  - {name: plan_lookalike, strategy: plan, lookalike: true}\n"
+                           "planner: {solver: abt, episodes: 300, max_steps: 20}\n";
+  const fs::path dir = data.parent_path() / "out";
+  const CampaignResults results =
+      run(parse_campaign_config(text, (data.parent_path() / "campaign.yaml").string()), dir);
+  EXPECT_EQ(results.spec.state.discrete_value_names.at(0),
+            (std::vector<std::string>{"group0", "group1", "group0~lookalike", "group1~lookalike"}));
+  // Two groups: a lookalike of group0 is group1, right only in group1's bin.
+  ASSERT_EQ(results.right_share.size(), 4u);
+  EXPECT_EQ(results.right_share[2], results.right_share[1]);
+  EXPECT_EQ(results.right_share[3], results.right_share[0]);
+  EXPECT_TRUE(fs::is_regular_file(dir / "folds/1/problem.yaml"));
+  EXPECT_TRUE(fs::is_regular_file(dir / "folds/1/problem-lookalike.yaml"));
+  EXPECT_EQ(results.entries.size(), 36u);
+}
+
 TEST(DatasetCampaign, TooFewSessionsOrObjectsToCalibrateOnAreRefusedBeforeAnyWork) {
   const fs::path data = perception::test_features::fresh_folder("dataset_few") / "data";
   SyntheticSpec spec;

@@ -26,8 +26,13 @@ JournalEntry sorted(const std::string& arm, int truth, int action, std::vector<d
   return e;
 }
 
-// Three classes; classes 0 and 2 go to the bin of action 3, class 1 to that of action 4.
-const std::vector<int> kRightAction{3, 4, 3};
+// Three classes; classes 0 and 2 go to the bin of action 3, class 1 to that of action 4 (actions
+// 0-2 sense).
+const RightShares kRightAction{
+    {0, 0, 0, 1, 0},
+    {0, 0, 0, 0, 1},
+    {0, 0, 0, 1, 0},
+};
 
 TEST(SortConfidence, BinSortsCountTheBeliefOfEveryClassInTheChosenBin) {
   const auto right = sort_confidence(sorted("a", 2, 3, {0.2, 0.5, 0.3}).result, kRightAction);
@@ -38,6 +43,17 @@ TEST(SortConfidence, BinSortsCountTheBeliefOfEveryClassInTheChosenBin) {
   ASSERT_TRUE(wrong);
   EXPECT_DOUBLE_EQ(wrong->belief, 0.9);
   EXPECT_FALSE(wrong->right);
+}
+
+TEST(SortConfidence, ALookalikeCountsTheShareOfItsOtherClassesInTheChosenBin) {
+  // State 3 sounds like class 0 and is class 1 or 2: sorted with action 3 it is right half the
+  // time (class 2 is in action 3's bin, class 1 is not).
+  RightShares shares = kRightAction;
+  shares.push_back({0, 0, 0, 0.5, 0.5});
+  const auto c = sort_confidence(sorted("a", 0, 3, {0.6, 0.0, 0.0, 0.4}).result, shares);
+  ASSERT_TRUE(c);
+  EXPECT_DOUBLE_EQ(c->belief, 0.6 + 0.4 * 0.5);
+  EXPECT_TRUE(c->right);
 }
 
 TEST(SortConfidence, WithoutBinsItIsTheBeliefInTheFinalMode) {

@@ -113,7 +113,8 @@ TEST(DatasetProblem, AtypicalCopiesOfTheClassesCarryTheModelsShare) {
   const perception::ObservationModel model(d, std::move(actions));
   const pomdp::ObjectProblemData p =
       dataset_problem(f.task, model, {}, default_uses(f.set), perception::ObservationKind::labels,
-                      model.atypical_share(perception::ObservationKind::labels));
+                      {.atypical = model.atypical_share(perception::ObservationKind::labels),
+                       .lookalike = std::nullopt});
   ASSERT_EQ(p.objects.size(), 12u);
   EXPECT_EQ(p.objects[0], "obj0");
   EXPECT_EQ(p.objects[6], "obj0~atypical");
@@ -135,6 +136,32 @@ TEST(DatasetProblem, AtypicalCopiesOfTheClassesCarryTheModelsShare) {
   EXPECT_EQ(dataset_problem(f.task, model, {}, default_uses(f.set)).objects.size(), 6u);
   // The shape names the copies too, for a campaign's report.
   EXPECT_EQ(dataset_problem_shape(f.task, f.set, {}, true).objects, p.objects);
+}
+
+TEST(DatasetProblem, LookalikeCopiesSoundLikeTheirClassAndAreAnyOther) {
+  Fitted f = fitted();
+  const double rho = 0.1;
+  const pomdp::ObjectProblemData p =
+      dataset_problem(f.task, f.model, {}, default_uses(f.set), perception::ObservationKind::labels,
+                      {.atypical = 0.2, .lookalike = rho});
+  ASSERT_EQ(p.objects.size(), 18u);  // 6 classes, their atypical copies, then their lookalikes
+  EXPECT_EQ(p.objects[12], "obj0~lookalike");
+  EXPECT_EQ(p.objects[17], "obj5~lookalike");
+  // Groups of 3: a lookalike of obj0 is one of the 5 others, 2 in obj0's bin and 3 in the other.
+  const int bin0 = f.task.bin_of_class[0];
+  for (std::size_t j = 0; j < p.sorting.size(); ++j) {
+    const int in_bin = static_cast<int>(j) == bin0 ? 2 : 3;
+    EXPECT_DOUBLE_EQ(p.sorting_reward[j][12], (in_bin * 10.0 + (5 - in_bin) * -100.0) / 5);
+  }
+  for (std::size_t k = 0; k < 6; ++k) {
+    EXPECT_DOUBLE_EQ(p.prior[k], 0.8 * (1 - rho) / 6);
+    EXPECT_DOUBLE_EQ(p.prior[k + 6], 0.2 / 6);
+    EXPECT_DOUBLE_EQ(p.prior[k + 12], 0.8 * rho / 6);
+    for (std::size_t a = 0; a < p.sensing.size(); ++a)
+      EXPECT_EQ(p.observation_table[a][k + 12], p.observation_table[a][k]);
+  }
+  EXPECT_EQ(dataset_problem_shape(f.task, f.set, {}, true, true).objects, p.objects);
+  EXPECT_EQ(dataset_problem_shape(f.task, f.set, {}, false, true).objects[6], "obj0~lookalike");
 }
 
 }  // namespace

@@ -50,17 +50,23 @@ TEST(ObservationModelJson, RecordsTheTableEstimateAndReadsOldFilesAsCounts) {
   EXPECT_EQ(observation_model_from_json(old, "old.json").table_estimate(), TableEstimate::counts);
 }
 
-// The share of objects unlike their class round-trips; a file written before it has none.
-TEST(ObservationModelJson, KeepsTheAtypicalShareAndReadsOldFilesAsNone) {
+// The shares of objects unlike their class and of lookalikes round-trip; a file written before
+// them has none.
+TEST(ObservationModelJson, KeepsTheAtypicalAndLookalikeSharesAndReadsOldFilesAsNone) {
   nlohmann::json doc = observation_model_to_json(trained().model);
   doc["atypical_share"] = {{"labels", 0.125}, {"graded", 0.25}};
+  doc["lookalike_share"] = {{"labels", 0.0625}, {"graded", 0.375}};
   const ObservationModel model = observation_model_from_json(doc, "shares.json");
   EXPECT_EQ(model.atypical_share(ObservationKind::labels), 0.125);
   EXPECT_EQ(model.atypical_share(ObservationKind::graded), 0.25);
+  EXPECT_EQ(model.lookalike_share(ObservationKind::labels), 0.0625);
+  EXPECT_EQ(model.lookalike_share(ObservationKind::graded), 0.375);
   EXPECT_EQ(observation_model_to_json(model), doc);
   doc.erase("atypical_share");
-  EXPECT_EQ(observation_model_from_json(doc, "old.json").atypical_share(ObservationKind::labels),
-            0.0);
+  doc.erase("lookalike_share");
+  const ObservationModel old = observation_model_from_json(doc, "old.json");
+  EXPECT_EQ(old.atypical_share(ObservationKind::labels), 0.0);
+  EXPECT_EQ(old.lookalike_share(ObservationKind::graded), 0.0);
 }
 
 // tests/data/perception/seed_gaussian_model.json was written when report-gaussian was called
@@ -151,6 +157,8 @@ TEST(ObservationModelJson, EveryBrokenModelFileIsAClearError) {
                "atypical_share.graded: 0.9 is not in [0, 0.5]");
   expect_error(with([](auto& d) { d["atypical_share"].erase("labels"); }),
                "atypical_share.labels: missing");
+  expect_error(with([](auto& d) { d["lookalike_share"]["labels"] = -0.1; }),
+               "lookalike_share.labels: -0.1 is not in [0, 0.5]");
   expect_error(with([](auto& d) { d["classifier"] = "magic"; }),
                "classifier: 'magic' is neither an audio preset");
   expect_error(with([](auto& d) { d["analysis"]["sample_rate"] = 5; }), "analysis.sample_rate");

@@ -13,17 +13,22 @@ const Table kTable{{0.8, 0.2}, {0.2, 0.8}};
 
 // `sessions` sessions of a random class; each action's symbol drawn from kTable, except that a
 // share `blind` of the sessions are atypical: both actions hear a fair coin (the class-blind row
-// of kTable is {0.5, 0.5}), the mixture typicality.h models, so the fit should find rho = blind.
-std::vector<HeldOutPerformances> sessions_of(int sessions, double blind, unsigned seed) {
+// of kTable is {0.5, 0.5}), the mixture typicality.h models, so the fit should find rho = blind;
+// and a share `lookalike` sound like the other class: both actions hear it through the other
+// class's row, so the lookalike fit should find that share.
+std::vector<HeldOutPerformances> sessions_of(int sessions, double blind, unsigned seed,
+                                             double lookalike = 0.0) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<HeldOutPerformances> actions(2);
   for (auto& a : actions) a.cross_fitted = {kTable};
   for (int s = 0; s < sessions; ++s) {
     const int truth = u(rng) < 0.5 ? 0 : 1;
-    const bool atypical = u(rng) < blind;
+    const double kind = u(rng);
+    const bool atypical = kind < blind;
+    const bool sounds_other = !atypical && kind < blind + lookalike;
     for (auto& a : actions) {
-      const double right = atypical ? 0.5 : 0.8;
+      const double right = atypical ? 0.5 : sounds_other ? 0.2 : 0.8;
       a.session.push_back(s);
       a.fold.push_back(0);
       a.label.push_back(truth);
@@ -33,22 +38,26 @@ std::vector<HeldOutPerformances> sessions_of(int sessions, double blind, unsigne
   return actions;
 }
 
-TEST(Typicality, SequencesArePrefixesOfEachSessionsBehavioursInARotatedOrder) {
+TEST(Typicality, SequencesArePrefixesOfEachSessionsPerformancesInRoundsOfItsBehaviours) {
   std::vector<HeldOutPerformances> actions(2);
   for (auto& a : actions) a.cross_fitted = {kTable, kTable};  // two folds
-  // Session 0 (fold 1, class 1): press heard 1 then 0 (only the first counts), strike heard 0.
+  // Session 0 (fold 1, class 1): press heard 1 then 0, strike heard 0. Session 1 (fold 0,
+  // class 0): strike heard 1.
   actions[0] = {{0, 0}, {1, 1}, {1, 1}, {1, 0}, {kTable, kTable}};
   actions[1] = {{0, 1}, {1, 0}, {1, 0}, {0, 1}, {kTable, kTable}};
   const std::vector<Sequence> s = cross_behaviour_sequences(actions);
-  ASSERT_EQ(s.size(), 3u);  // session 0: press, then press+strike; session 1: strike alone
+  // Session 0: press, press+strike, then press's repeat; session 1: strike alone.
+  ASSERT_EQ(s.size(), 4u);
   EXPECT_EQ(s[0].symbols, (std::vector<int>{1}));
   EXPECT_EQ(s[0].tables, (std::vector<int>{1}));  // press (action 0) fold 1
   EXPECT_EQ(s[1].symbols, (std::vector<int>{1, 0}));
   EXPECT_EQ(s[1].tables, (std::vector<int>{1, 3}));  // then strike (action 1) fold 1
   EXPECT_EQ(s[1].true_class, 1);
-  EXPECT_EQ(s[2].symbols, (std::vector<int>{1}));
-  EXPECT_EQ(s[2].tables, (std::vector<int>{2}));  // strike fold 0
-  EXPECT_EQ(s[2].true_class, 0);
+  EXPECT_EQ(s[2].symbols, (std::vector<int>{1, 0, 0}));  // the second round: press again
+  EXPECT_EQ(s[2].tables, (std::vector<int>{1, 3, 1}));
+  EXPECT_EQ(s[3].symbols, (std::vector<int>{1}));
+  EXPECT_EQ(s[3].tables, (std::vector<int>{2}));  // strike fold 0
+  EXPECT_EQ(s[3].true_class, 0);
 }
 
 // The mixture's posterior by hand for one sequence of two agreeing symbols.
@@ -72,6 +81,43 @@ TEST(Typicality, IndependentBehavioursGetNoShareAndClassBlindOnesTheirShare) {
   EXPECT_LT(fit_atypical_share(sessions_of(4000, 0.0, 1)), 0.03);
   EXPECT_NEAR(fit_atypical_share(sessions_of(4000, 0.3, 2)), 0.3, 0.08);
   EXPECT_EQ(fit_atypical_share({}), 0.0);
+}
+
+// A lookalike of class 0 is class 1 (the only other) heard through class 0's row: by hand for two
+// agreeing symbols.
+TEST(Typicality, TheLookalikeNllIsItsMixturesPosteriorOfTheTrueClass) {
+  Sequence s;
+  s.true_class = 0;
+  s.symbols = {0, 0};
+  s.tables = {0, 0};
+  const double rho = 0.2;
+  const double right = (1 - rho) * 0.64 + rho * 0.04;  // P(0, 0 | class 0)
+  const double wrong = (1 - rho) * 0.04 + rho * 0.64;  // P(0, 0 | class 1)
+  const std::vector<Sequence> one{s};
+  EXPECT_NEAR(lookalike_nll(std::vector<Table>{kTable}, rho, one),
+              -std::log(right / (right + wrong)), 1e-12);
+  EXPECT_NEAR(lookalike_nll(std::vector<Table>{kTable}, 0.0, one),
+              typicality_nll(std::vector<Table>{kTable}, 0.0, one), 1e-12);
+}
+
+TEST(Typicality, ObjectsThatSoundLikeTheOtherClassGetTheirShare) {
+  EXPECT_LT(fit_lookalike_share(sessions_of(4000, 0.0, 3)), 0.03);
+  EXPECT_NEAR(fit_lookalike_share(sessions_of(4000, 0.0, 4, 0.15)), 0.15, 0.05);
+  EXPECT_EQ(fit_lookalike_share({}), 0.0);
+}
+
+// Each mixture, at its fitted share, explains its own kind of data better than the other does.
+TEST(Typicality, ClassBlindAndLookalikeObjectsAreToldApartByTheirLikelihood) {
+  const std::vector<Table> tables{kTable, kTable};  // one fold of each of the two actions
+  const auto nlls = [&](const std::vector<HeldOutPerformances>& actions) {
+    const std::vector<Sequence> sequences = cross_behaviour_sequences(actions);
+    return std::pair{typicality_nll(tables, fit_atypical_share(actions), sequences),
+                     lookalike_nll(tables, fit_lookalike_share(actions), sequences)};
+  };
+  const auto [blind_on_blind, lookalike_on_blind] = nlls(sessions_of(4000, 0.3, 5));
+  EXPECT_LT(blind_on_blind, lookalike_on_blind);
+  const auto [blind_on_lookalike, lookalike_on_lookalike] = nlls(sessions_of(4000, 0.0, 6, 0.15));
+  EXPECT_LT(lookalike_on_lookalike, blind_on_lookalike);
 }
 
 TEST(Typicality, TheClassBlindRowIsTheMeanOfTheClassRows) {
