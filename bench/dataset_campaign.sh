@@ -13,13 +13,14 @@
 # planner sensing longer.
 # With ARMS=graded (environment): four arms, plan and information_gain each hearing labels and
 # grades (observations: graded), so grades are measured paired against labels.
-# With ARMS=atypical (environment): six arms, the five but random, and plan and information_gain
-# also planning with objects unlike their class (atypical: true; plan_atypical listed first).
+# With ARMS=unlike (environment): seven arms, the five but random, the planner also planning with
+# lookalikes (lookalike: true; plan_lookalike listed first) and with objects unlike their class
+# (atypical: true), and information_gain also with lookalikes.
 # With OBSERVATIONS=graded (environment): the five arms all hear grades.
 # With COSTS=costed (environment): each behaviour priced (task.costs), from 0.5 for the least
 # informative to 4.5 for the most, as published container studies price theirs: then information
 # must be bought, and the arms are compared in cost-weighted reward.
-# Usage: [ARMS=exact|graded|atypical] [SET=recorded] [COSTS=costed] [OBSERVATIONS=graded]
+# Usage: [ARMS=exact|graded|unlike] [SET=recorded] [COSTS=costed] [OBSERVATIONS=graded]
 #        bench/dataset_campaign.sh BUILD_DIR [EPISODES] [HOLD_OUT] [WORKERS] [OUT]
 set -eu
 # A misspelt switch would silently run another campaign than the one asked for.
@@ -30,7 +31,7 @@ check() {
     ;;
   esac
 }
-check ARMS "${ARMS:-}" " exact graded atypical"
+check ARMS "${ARMS:-}" " exact graded unlike"
 check SET "${SET:-}" " recorded"
 check COSTS "${COSTS:-}" " costed"
 check OBSERVATIONS "${OBSERVATIONS:-}" " graded"
@@ -59,13 +60,14 @@ elif [ "${ARMS:-}" = graded ]; then
   - {name: plan, strategy: plan}
   - {name: information_gain_graded, strategy: information_gain, observations: graded}
   - {name: information_gain, strategy: information_gain}'
-elif [ "${ARMS:-}" = atypical ]; then
-  arms='  - {name: plan_atypical, strategy: plan, atypical: true}
+elif [ "${ARMS:-}" = unlike ]; then
+  arms='  - {name: plan_lookalike, strategy: plan, lookalike: true}
+  - {name: plan_atypical, strategy: plan, atypical: true}
   - {name: plan, strategy: plan}
   - {name: all_actions, strategy: all_actions}
   - {name: best_single, strategy: best_single}
   - {name: information_gain, strategy: information_gain}
-  - {name: information_gain_atypical, strategy: information_gain, atypical: true}'
+  - {name: information_gain_lookalike, strategy: information_gain, lookalike: true}'
 else
   heard=
   [ "${OBSERVATIONS:-}" = graded ] && heard=', observations: graded'

@@ -5,7 +5,8 @@
 # in 8 groups of 5, 5 sessions, 4 behaviours, audio and haptic), sorted by group with whole objects
 # held out, at EPISODES episodes: the planner (with ABT's default leaf and with the exact leaf) and
 # the greedy rule, each without and with atypical objects among the hidden states
-# (`atypical: true`), and two fixed baselines; the exact planner with atypical objects first, so the
+# (`atypical: true`), the planner with lookalikes instead (`lookalike: true`, with either leaf), and
+# two fixed baselines; the exact planner with atypical objects first, so the
 # paired differences are against it. Prints each arm's row, the paired differences, how sure each
 # arm was at the sort against how often it was right, and each fold's certified regret per trial.
 # Usage: bench/honest_confidence.sh BUILD_DIR [EPISODES] [OUT]
@@ -33,6 +34,8 @@ arms:
   - {name: best_single, strategy: best_single}
   - {name: information_gain, strategy: information_gain}
   - {name: information_gain_atypical, strategy: information_gain, atypical: true}
+  - {name: plan_exact_lookalike, strategy: plan, leaf: exact, lookalike: true}
+  - {name: plan_lookalike, strategy: plan, lookalike: true}
 planner: {solver: abt, episodes: $episodes, max_steps: 100}
 YAML
 "$build/echoplan" experiment --config "$dir/campaign.yaml" --out "$out" --workers 2 >/dev/null 2>&1

@@ -261,13 +261,14 @@ std::shared_ptr<perception::ObservationModel> fit(const SetPtr& set, py::handle 
 // it (exact beliefs, default planner settings), read back as a Problem.
 ProblemPtr dataset_problem(const SetPtr& set, const perception::ObservationModel& model,
                            py::handle groups, const std::string& hold_out, double right,
-                           double wrong, double sense, bool atypical) {
+                           double wrong, double sense, bool atypical, bool lookalike) {
   const perception::DatasetTask task = task_of(*set, groups, hold_out);
   const auto kind = perception::ObservationKind::labels;
-  std::optional<double> share;
-  if (atypical) share = model.atypical_share(kind);
+  loop::UnlikeTheirClass unlike;
+  if (atypical) unlike.atypical = model.atypical_share(kind);
+  if (lookalike) unlike.lookalike = model.lookalike_share(kind);
   const auto data = loop::dataset_problem(task, model, {right, wrong, sense, {}},
-                                          loop::default_uses(*set), kind, share);
+                                          loop::default_uses(*set), kind, unlike);
   std::ostringstream text;
   pomdp::BeliefSettings belief;
   belief.type = pomdp::BeliefSettings::Type::exact;
@@ -303,12 +304,14 @@ void bind_feature_sets(py::module_& m) {
   m.def("dataset_problem", &dataset_problem, py::arg("feature_set"), py::arg("model"),
         py::kw_only(), py::arg("groups") = py::none(), py::arg("hold_out") = "session",
         py::arg("right") = 10.0, py::arg("wrong") = -100.0, py::arg("sense") = -1.0,
-        py::arg("atypical") = false,
+        py::arg("atypical") = false, py::arg("lookalike") = false,
         "The problem of a feature set with a model fitted on it, as `echoplan train "
         "--problem-out` writes it: the classes, one sensing action per behaviour with its use "
         "limit, one sorting action per bin, the model's table, exact beliefs. atypical=True adds "
         "an atypical copy of every class ('<class>~atypical') with the model's atypical_share() "
-        "of the prior, as a campaign arm with `atypical: true` plans.");
+        "of the prior, as a campaign arm with `atypical: true` plans; lookalike=True a lookalike "
+        "copy ('<class>~lookalike': sounds like the class, is another) with its "
+        "lookalike_share(), as an arm with `lookalike: true` plans.");
   const perception::TrainOptions d;
   m.def(
       "train_observation_model",

@@ -176,6 +176,16 @@ void bind_model(py::module_& m) {
           "The share of objects unlike their class the model fitted on held-out sessions (0 for a "
           "model trained on recordings): the prior of the atypical copies of dataset_problem(..., "
           "atypical=True).")
+      .def(
+          "lookalike_share",
+          [](const ObservationModel& x, bool graded) {
+            return x.lookalike_share(graded ? perception::ObservationKind::graded
+                                            : perception::ObservationKind::labels);
+          },
+          py::arg("graded") = false,
+          "The share of objects that sound like another class the model fitted on held-out "
+          "sessions (0 for a model trained on recordings): the prior of the lookalike copies of "
+          "dataset_problem(..., lookalike=True).")
       .def_property_readonly("classifier_name", &ObservationModel::classifier_name)
       .def_property_readonly("reject", &ObservationModel::reject)
       .def(

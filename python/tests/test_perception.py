@@ -102,6 +102,10 @@ def test_objects_unlike_their_class_are_an_atypical_copy_of_each_class():
                                        atypical=True)
     classes = plain.model.objects
     assert problem.model.objects == classes + [f"{c}~atypical" for c in classes]
+    assert 0.0 <= model.lookalike_share() <= 0.5
+    both = echoplan.dataset_problem(feature_set, model, groups=groups, hold_out="object",
+                                    atypical=True, lookalike=True)
+    assert both.model.objects == problem.model.objects + [f"{c}~lookalike" for c in classes]
 
 
 def test_bad_arrays_raise_input_error_naming_action_modality_and_row():

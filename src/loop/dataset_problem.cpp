@@ -64,19 +64,26 @@ pomdp::ObjectProblemData problem_of(const perception::DatasetTask& task,
   return data;
 }
 
-// Appends the atypical copy of every class (dataset_problem.h) with share `rho`.
-void add_atypical_copies(pomdp::ObjectProblemData& data, double rho) {
-  const std::size_t classes = data.objects.size();
+// Appends a hidden state for each of the first `classes` objects, named `name_of(class)`, with
+// share `rho` of its class's prior; `what` says what the copy is, for the error when its name is
+// taken.
+void add_copy_states(pomdp::ObjectProblemData& data, std::size_t classes, double rho,
+                     std::string (*name_of)(const std::string&), const char* what) {
   for (std::size_t k = 0; k < classes; ++k) {
-    const std::string name = atypical_name(data.objects[k]);
+    const std::string name = name_of(data.objects[k]);
     if (std::find(data.objects.begin(), data.objects.end(), name) != data.objects.end())
-      throw InputError(
-          fmt::format("class '{}' is also the name of class '{}' unlike its class: rename it", name,
-                      data.objects[k]));
+      throw InputError(fmt::format("class '{}' is also the name of {} class '{}': rename it", name,
+                                   what, data.objects[k]));
     data.objects.push_back(name);
     data.prior.push_back(data.prior[k] * rho);
     data.prior[k] *= 1.0 - rho;
   }
+}
+
+// Appends the atypical copy of every class (dataset_problem.h) with share `rho`.
+void add_atypical_copies(pomdp::ObjectProblemData& data, double rho) {
+  const std::size_t classes = data.objects.size();
+  add_copy_states(data, classes, rho, atypical_name, "the atypical copy of");
   for (auto& row : data.sorting_reward) {
     const std::vector<double> of_classes = row;  // vector::insert may not read from itself
     row.insert(row.end(), of_classes.begin(), of_classes.end());
@@ -91,16 +98,7 @@ void add_atypical_copies(pomdp::ObjectProblemData& data, double rho) {
 // Appends the lookalike copy of each of the first `classes` objects (dataset_problem.h) with
 // share `rho`: heard through its class's rows, sorted as any other class would be.
 void add_lookalike_copies(pomdp::ObjectProblemData& data, std::size_t classes, double rho) {
-  for (std::size_t j = 0; j < classes; ++j) {
-    const std::string name = lookalike_name(data.objects[j]);
-    if (std::find(data.objects.begin(), data.objects.end(), name) != data.objects.end())
-      throw InputError(
-          fmt::format("class '{}' is also the name of the lookalike of class '{}': rename it", name,
-                      data.objects[j]));
-    data.objects.push_back(name);
-    data.prior.push_back(data.prior[j] * rho);
-    data.prior[j] *= 1.0 - rho;
-  }
+  add_copy_states(data, classes, rho, lookalike_name, "the lookalike of");
   for (auto& row : data.sorting_reward) {
     double total = 0.0;
     for (std::size_t k = 0; k < classes; ++k) total += row[k];
