@@ -1,12 +1,13 @@
 #!/bin/sh
-# Objects unlike their class end to end (docs/feature-sets.md, "Objects unlike their class"), on the
+# Objects unlike their class and lookalikes end to end (docs/feature-sets.md, 6 and 7), on the
 # shipped synthetic feature set (experiments/data/synthetic_objects, two of its behaviours), novel
 # objects sorted by group:
-#   - a dataset campaign runs a planner arm without and one with `atypical: true`; each fold has a
-#     problem of each kind beside its trials, both naming the atypical copies of the groups, the
-#     plain arm's with no prior on them and the atypical arm's with its model's share;
+#   - a dataset campaign runs a planner arm without, one with `atypical: true` and one with
+#     `lookalike: true`; each fold has a problem of each kind beside its trials, all naming the
+#     atypical copies then the lookalikes of the groups, each with a prior only on its own kind
+#     (its model's share);
 #   - certify --campaign certifies each arm with its own fold problem;
-#   - `atypical` outside a dataset world is refused at its file and line.
+#   - `atypical` and `lookalike` outside a dataset world are refused at their file and line.
 # Usage: atypical_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
 . "$(dirname "$0")/cli_test_lib.sh"
 data="$work/data"
@@ -20,6 +21,7 @@ world: {type: dataset, data: $data, hold_out: object, groups: $data/groups.csv}
 arms:
   - {name: plain, strategy: plan}
   - {name: atypical, strategy: plan, atypical: true}
+  - {name: lookalike, strategy: plan, lookalike: true}
 planner: {solver: abt, episodes: 500, max_steps: 100}
 YAML
 "$bin" experiment --config "$work/atypical.yaml" --out "$work/atypical" --workers 2 >"$work/atypical.out" 2>&1 \
@@ -32,22 +34,28 @@ bad = 0
 folds = sorted(glob.glob(os.path.join(out, "folds", "*")))
 if len(folds) < 2:
     print(f"{len(folds)} folds"); bad += 1
-shares = []
+groups = ["group0", "group1", "group2"]
+names = groups + [g + "~atypical" for g in groups] + [g + "~lookalike" for g in groups]
+kinds = {"problem.yaml": None, "problem-atypical.yaml": slice(3, 6), "problem-lookalike.yaml": slice(6, 9)}
+shares = {name: [] for name in kinds}
 for fold in folds:
-    plain = yaml.safe_load(open(os.path.join(fold, "problem.yaml")))
-    atypical = yaml.safe_load(open(os.path.join(fold, "problem-atypical.yaml")))
-    for name, p in (("problem.yaml", plain), ("problem-atypical.yaml", atypical)):
-        if p["objects"] != ["group0", "group1", "group2", "group0~atypical", "group1~atypical", "group2~atypical"]:
+    for name, own in kinds.items():
+        p = yaml.safe_load(open(os.path.join(fold, name)))
+        if p["objects"] != names:
             print(f"{fold}/{name}: objects {p['objects']}"); bad += 1
-    prior = lambda p: [p["initial_belief"]["objects"][o] for o in p["objects"]]
-    if any(x != 0 for x in prior(plain)[3:]):
-        print(f"{fold}/problem.yaml: the atypical copies have prior {prior(plain)[3:]}"); bad += 1
-    share = sum(prior(atypical)[3:])
-    shares.append(share)
-    if not 0 <= share <= 0.5:
-        print(f"{fold}/problem-atypical.yaml: atypical share {share}"); bad += 1
-if not any(s > 0 for s in shares):
-    print(f"no fold's model found atypical objects: shares {shares}"); bad += 1
+            continue
+        prior = [p["initial_belief"]["objects"][o] for o in p["objects"]]
+        for copies in (slice(3, 6), slice(6, 9)):
+            if copies != own and any(x != 0 for x in prior[copies]):
+                print(f"{fold}/{name}: copies {names[copies]} have prior {prior[copies]}"); bad += 1
+        if own is not None:
+            share = sum(prior[own])
+            shares[name].append(share)
+            if not 0 <= share <= 0.5:
+                print(f"{fold}/{name}: share {share}"); bad += 1
+for name, found in shares.items():
+    if kinds[name] is not None and not any(s > 0 for s in found):
+        print(f"no fold's model found a share for {name}: {found}"); bad += 1
 sys.exit(bad)
 PY
 
@@ -58,10 +66,10 @@ import json, sys
 entries = json.load(open(sys.argv[1]))["folds"]
 bad = 0
 for e in entries:
-    name = "problem-atypical.yaml" if e["arm"] == "atypical" else "problem.yaml"
+    name = {"atypical": "problem-atypical.yaml", "lookalike": "problem-lookalike.yaml"}.get(e["arm"], "problem.yaml")
     if e["problem"] != f"folds/{e['fold']}/{name}":
         print(f"fold {e['fold']} arm {e['arm']} certified with {e['problem']}"); bad += 1
-if {e["arm"] for e in entries} != {"plain", "atypical"}:
+if {e["arm"] for e in entries} != {"plain", "atypical", "lookalike"}:
     print("arms:", {e["arm"] for e in entries}); bad += 1
 sys.exit(bad)
 PY
@@ -76,6 +84,10 @@ trials:
 planner: {solver: abt, episodes: 100}
 YAML
 expect_input_error "atypical in a simulated world" "only for a dataset world" \
+  experiment --config "$work/simulated.yaml" --out "$work/simulated"
+grep -q "simulated.yaml:2" "$work/err" || fail "the refusal does not name the file and line: $(cat "$work/err")"
+sed -i 's/atypical: true/lookalike: true/' "$work/simulated.yaml"
+expect_input_error "lookalike in a simulated world" "only for a dataset world" \
   experiment --config "$work/simulated.yaml" --out "$work/simulated"
 grep -q "simulated.yaml:2" "$work/err" || fail "the refusal does not name the file and line: $(cat "$work/err")"
 
