@@ -24,8 +24,9 @@ struct SortConfidence {
   bool right = false;
 };
 
-// The trial's confidence at its sort; nothing for a capped trial or one without steps.
 using RightShares = std::vector<std::vector<double>>;  // [state][action], in [0, 1]
+
+// The trial's confidence at its sort; nothing for a capped trial or one without steps.
 std::optional<SortConfidence> sort_confidence(const TrialResult& trial,
                                               const RightShares& right_share);
 

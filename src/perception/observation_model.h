@@ -49,7 +49,8 @@ struct ModelDescription {
   double atypical_share = 0.0;
   double graded_atypical_share = 0.0;
   // The share of objects that sound like another class (typicality.h, lookalikes), per kind: what
-  // a dataset problem's lookalike copies start with. 0 where atypical_share is.
+  // a dataset problem's lookalike copies start with. 0 (none) for the clips recipe and in files
+  // without it.
   double lookalike_share = 0.0;
   double graded_lookalike_share = 0.0;
 };
