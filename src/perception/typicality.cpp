@@ -115,19 +115,34 @@ double typicality_nll(std::span<const Table> tables, double rho,
 
 namespace {
 
-// Sum of -log P(true class | sequence) when a share rho of the objects sound like another class:
-// P(heard | k) = (1 - rho) L(k) + rho / (K - 1) sum_{j != k} L(j), uniform class prior, so the
-// evidence sum_k P(heard | k) is sum_j L(j) whatever rho.
-double lookalike_nll(const std::vector<ScoredSequence>& scored, double rho) {
-  double total = 0.0;
+// Per sequence, the posterior of its true class without lookalikes, L(true) / sum_j L(j) (uniform
+// prior), and its number of classes: all the lookalike mixture needs, whatever rho.
+struct TruthPosterior {
+  double truth = 0.0;
+  double classes = 0.0;
+};
+
+std::vector<TruthPosterior> truth_posteriors(const std::vector<ScoredSequence>& scored) {
+  std::vector<TruthPosterior> posteriors;
   for (const ScoredSequence& s : scored) {
     const double top = *std::max_element(s.log_typical.begin(), s.log_typical.end());
     double evidence = 0.0;
     for (double l : s.log_typical) evidence += std::exp(l - top);
-    const double truth = std::exp(s.log_typical[static_cast<std::size_t>(s.true_class)] - top);
-    const auto others = static_cast<double>(s.log_typical.size() - 1);
-    total -= std::log(((1.0 - rho) * truth + rho * (evidence - truth) / others) / evidence);
+    posteriors.push_back(
+        {std::exp(s.log_typical[static_cast<std::size_t>(s.true_class)] - top) / evidence,
+         static_cast<double>(s.log_typical.size())});
   }
+  return posteriors;
+}
+
+// Sum of -log P(true class | sequence) when a share rho of the objects sound like another class:
+// P(heard | k) = (1 - rho) L(k) + rho / (K - 1) sum_{j != k} L(j), uniform class prior, so the
+// evidence sum_k P(heard | k) is sum_j L(j) whatever rho, and the posterior of the true class is
+// (1 - rho) t + rho (1 - t) / (K - 1) with t its posterior without lookalikes.
+double lookalike_nll(const std::vector<TruthPosterior>& posteriors, double rho) {
+  double total = 0.0;
+  for (const TruthPosterior& p : posteriors)
+    total -= std::log((1.0 - rho) * p.truth + rho * (1.0 - p.truth) / (p.classes - 1.0));
   return total;
 }
 
@@ -153,13 +168,14 @@ std::vector<ScoredSequence> scored_sequences(std::span<const HeldOutPerformances
 
 double lookalike_nll(std::span<const Table> tables, double rho,
                      std::span<const Sequence> sequences) {
-  return lookalike_nll(score(tables, sequences), rho);
+  return lookalike_nll(truth_posteriors(score(tables, sequences)), rho);
 }
 
 double fit_lookalike_share(std::span<const HeldOutPerformances> actions) {
   const std::vector<ScoredSequence> scored = scored_sequences(actions);
   if (scored.empty() || scored.front().log_typical.size() < 2) return 0.0;
-  return fit_share([&](double rho) { return lookalike_nll(scored, rho); });
+  const std::vector<TruthPosterior> posteriors = truth_posteriors(scored);
+  return fit_share([&](double rho) { return lookalike_nll(posteriors, rho); });
 }
 
 double fit_atypical_share(std::span<const HeldOutPerformances> actions) {
