@@ -219,6 +219,11 @@ nlohmann::json summary_json(const TrialSummary& summary, const pomdp::ModelSpec&
   j["mean_steps"] = summary.mean_steps;
   j["collisions"] = summary.collisions;
   j["capped"] = summary.capped;
+  if (summary.expected_reward.n > 0)
+    j["expected_discounted_reward"] = {{"mean", summary.expected_reward.mean},
+                                       {"sd", summary.expected_reward.sd},
+                                       {"ci95", summary.expected_reward.half_width},
+                                       {"trials", summary.expected_reward.n}};
   nlohmann::json counts = nlohmann::json::object();
   for (std::size_t a = 0; a < spec.action_names.size(); ++a)
     counts[spec.action_names[a]] = summary.mean_action_counts[a];
@@ -232,6 +237,14 @@ void TrialLog::write_summary(const TrialSummary& summary, const nlohmann::json& 
   std::ofstream out = open_for_writing(directory_ / "summary.json");
   out << j.dump(2) << '\n';
   if (!out) throw InputError((directory_ / "summary.json").string(), 0, "writing failed");
+}
+
+void TrialLog::write_expected_rewards(const std::vector<double>& values) const {
+  const std::filesystem::path path = directory_ / "expected_rewards.csv";
+  std::ofstream out = open_for_writing(path);
+  out << "trial,expected_reward\n";
+  for (std::size_t t = 0; t < values.size(); ++t) out << t << ',' << number(values[t]) << '\n';
+  if (!out) throw InputError(path.string(), 0, "writing failed");
 }
 
 }  // namespace echoplan::experiment

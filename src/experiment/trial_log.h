@@ -53,6 +53,9 @@ class TrialLog final {
   // Writes summary.json: the summary's fields plus everything in `run` (problem, solver, seed,
   // ...).
   void write_summary(const TrialSummary& summary, const nlohmann::json& run) const;
+  // Writes expected_rewards.csv (`trial,expected_reward`, one row per trial in order): the trials'
+  // rewards in expectation given what they heard (expected_reward.h), for pairing two runs.
+  void write_expected_rewards(const std::vector<double>& values) const;
 
  private:
   std::string state_name(int value) const;

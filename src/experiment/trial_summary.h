@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "common/statistics.h"
 #include "experiment/trial_records.h"
 
 namespace echoplan::experiment {
@@ -22,6 +23,9 @@ struct TrialSummary {
   double mean_cost = 0.0;
   int collisions = 0;
   int capped = 0;  // trials stopped by --max-steps
+  // The model as the world with an exact belief (`echoplan trials`): the trials' reward in
+  // expectation given what they heard (expected_reward.h), its mean and 95% CI; n = 0 elsewhere.
+  MeanInterval expected_reward;
 };
 
 // `right_action[s]`, when given, is the action that sorts true state s right (a dataset world sorts

@@ -36,6 +36,35 @@ for key in vstar_lower vstar_upper regret_mean regret_ci95 '"trials":4' bound_ga
   grep -q -- "$key" "$work/cert" || { echo "FAIL: certify --json lacks $key:"; cat "$work/cert"; failures=$((failures + 1)); }
 done
 
+# The expected reward: with an exact belief, each reward's expectation under the belief it was chosen
+# from has the same mean as the rewards drawn (checked against them: a formula that took another
+# action's rewards lands far outside) with far less spread; with a particle belief it is not reported.
+sed 's/^belief: .*/belief: {type: exact}/' "$problem" >"$work/exact.yaml"
+"$bin" trials --problem "$work/exact.yaml" --solver random --trials 2000 --seed 3 --out "$work/expected" >"$work/expected.txt" 2>/dev/null \
+  || fail "random trials with an exact belief exited $?"
+grep -q "^expected reward  " "$work/expected.txt" || fail "the summary printed no expected reward"
+grep -q expected_discounted_reward "$work/a/summary.json" && fail "a particle belief's summary.json reports an expected reward"
+[ -e "$work/a/expected_rewards.csv" ] && fail "a particle belief's run wrote expected_rewards.csv"
+python3 - "$work/expected" <<'PY' || fail "expected reward: see above"
+import csv, json, os, sys
+s = json.load(open(os.path.join(sys.argv[1], "summary.json")))
+e = s["expected_discounted_reward"]
+rows = list(csv.DictReader(open(os.path.join(sys.argv[1], "expected_rewards.csv"))))
+drawn, ci = s["mean_discounted_reward"], s["ci95"]
+bad = 0
+if e["trials"] != s["trials"]:
+    print(f"expected reward over {e['trials']} trials of {s['trials']}"); bad += 1
+if [int(r["trial"]) for r in rows] != list(range(s["trials"])):
+    print("expected_rewards.csv should hold one row per trial, in order"); bad += 1
+elif abs(sum(float(r["expected_reward"]) for r in rows) / len(rows) - e["mean"]) > 1e-9:
+    print("expected_rewards.csv's mean is not summary.json's"); bad += 1
+if abs(e["mean"] - drawn) > ci:
+    print(f"expected reward {e['mean']:.3f} is outside the drawn rewards' {drawn:.3f} +- {ci:.3f}"); bad += 1
+if not e["sd"] < 0.6 * s["sd_discounted_reward"]:
+    print(f"expected reward's sd {e['sd']:.2f} is not well below the drawn rewards' {s['sd_discounted_reward']:.2f}"); bad += 1
+sys.exit(bad)
+PY
+
 # The offline policy as a solver: solve Tiger, then run it; a policy for another problem is refused.
 "$bin" solve --problem "$src/problems/tiger.pomdp" --out "$work/tiger_policy" >/dev/null 2>&1 \
   || { echo "FAIL: solve tiger"; failures=$((failures + 1)); }

@@ -9,6 +9,7 @@
 #include "commands/planner_options.h"
 #include "common/error.h"
 #include "common/stop_signal.h"
+#include "experiment/expected_reward.h"
 #include "experiment/trial_log.h"
 #include "experiment/trial_records.h"
 #include "experiment/trial_summary.h"
@@ -37,6 +38,9 @@ void print_summary(const experiment::TrialSummary& s, const pomdp::ModelSpec& sp
   fmt::print("{:<24}{:.1f}%\n", "accuracy", 100.0 * s.accuracy);
   fmt::print("{:<24}{:.3f} ± {:.3f} (95% CI)\n", "mean discounted reward", s.mean_discounted_reward,
              s.ci95);
+  if (s.expected_reward.n > 0)
+    fmt::print("{:<24}{:.3f} ± {:.3f} (95% CI; each reward's expectation under the belief)\n",
+               "expected reward", s.expected_reward.mean, s.expected_reward.half_width);
   fmt::print("{:<24}{:.2f}\n", "mean steps", s.mean_steps);
   for (std::size_t a = 0; a < spec.action_names.size(); ++a)
     fmt::print("{:<24}{:.2f}\n", "  mean " + spec.action_names[a], s.mean_action_counts[a]);
@@ -80,6 +84,12 @@ void run_trials_command(const TrialsFlags& f) {
   spdlog::info("{} trials of {} on {}, results in {}", total, planner.describe(), spec.name, f.out);
   const auto start = std::chrono::steady_clock::now();
   std::vector<experiment::TrialRecord> records;
+  // With an exact belief the logged beliefs are the true state's distribution given the trial so
+  // far (the model is the world), so rewards in expectation under them are a measure of the same
+  // mean with less variance (experiment/expected_reward.h).
+  const pomdp::TabularModel* tables = problem.model->tabular();
+  const bool exact_belief = logged_particles == 0 && tables != nullptr;
+  std::vector<double> expected;
   for (int t = 0; t < total; ++t) {
     const auto trial = trials.run({t, options.object_of_trial(t), f.seed}, {}, &stop.flag());
     if (!trial) break;
@@ -87,12 +97,16 @@ void run_trials_command(const TrialsFlags& f) {
     log.trial_finished(result.record, result.steps);
     say_trial(result.record, spec, total);
     records.push_back(result.record);
+    if (exact_belief)
+      if (const auto value = experiment::expected_discounted_reward(result.steps, *tables))
+        expected.push_back(*value);
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const experiment::TrialSummary summary =
-      experiment::summarize(records, problem.model->num_actions());
+  experiment::TrialSummary summary = experiment::summarize(records, problem.model->num_actions());
+  if (!expected.empty() && expected.size() == records.size())
+    summary.expected_reward = mean_ci95(expected);
   nlohmann::json run = planner.to_json();
   run.update({{"problem", f.problem},
               {"seed", f.seed},
@@ -102,6 +116,7 @@ void run_trials_command(const TrialsFlags& f) {
               {"belief", logged_particles > 0 ? "particle" : "exact"},
               {"interrupted", stop.requested()}});
   log.write_summary(summary, run);
+  if (summary.expected_reward.n > 0) log.write_expected_rewards(expected);
   print_summary(summary, spec, planner, seconds);
   if (stop.requested()) {
     spdlog::warn("interrupted: {} of {} trials finished and written to {}", records.size(), total,
@@ -119,7 +134,11 @@ void add_trials_command(CLI::App& app) {
       "Run planning trials on a problem: the true object is drawn per trial, the solver plans "
       "each\n"
       "step, the model acts as the world. Writes DIR/trials.csv, DIR/steps.csv, DIR/summary.json\n"
-      "and prints a summary. Example:\n"
+      "and prints a summary. With an exact belief the summary also gives the expected reward\n"
+      "(each reward's expectation under the belief it was chosen from: the same mean, less\n"
+      "variance), per trial in DIR/expected_rewards.csv; runs with the same --seed draw the same\n"
+      "true objects, so two solvers compare trial by trial.\n"
+      "Example:\n"
       "  echoplan trials --problem problems/audio_objects.yaml --per-object 10 --episodes 2000 "
       "--seed 1 --out results/abt");
   cmd->add_option("--problem", flags->problem, "Problem file (.yaml or .pomdp)")->required();
