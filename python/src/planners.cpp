@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bindings.h"
+#include "experiment/expected_reward.h"
 #include "interrupt.h"
 #include "loop/loop.h"
 #include "loop/planner.h"
@@ -196,6 +197,24 @@ void bind_planners(py::module_& m) {
                      "Returns a list of Trial. Ctrl-C stops after the step in progress.\n") +
          planner_settings_doc())
             .c_str());
+  m.def(
+      "expected_reward",
+      [](const ProblemPtr& problem, const loop::Trial& trial) -> py::object {
+        const pomdp::TabularModel* tables = problem->model->tabular();
+        if (tables == nullptr)
+          throw py::value_error("expected_reward needs a discrete problem with tables");
+        std::vector<loop::StepRecord> steps;
+        for (const loop::Step& s : trial.steps) steps.push_back(s.record);
+        const auto value = experiment::expected_discounted_reward(steps, *tables);
+        if (!value) return py::none();
+        return py::float_(*value);
+      },
+      py::arg("problem"), py::arg("trial"),
+      "The trial's rewards in expectation under the beliefs its actions were chosen from, "
+      "discounted (experiment/expected_reward.h): with an exact belief (the problem's `belief: "
+      "{type: exact}`) and the model as the world, the same mean over trials as "
+      "record.discounted_reward with less variance, as `echoplan trials` reports it. None when a "
+      "step's belief does not fit the problem's states.");
   m.def(
       "stream_seed",
       [](std::uint64_t seed, const std::string& stream) {

@@ -88,3 +88,20 @@ def test_planner_settings_are_checked_as_the_commands_flags(report_problem):
         echoplan.Planner(report_problem, solver="foo")
     with pytest.raises(TypeError, match="planner settings"):
         echoplan.Planner(report_problem, episdoes=100)
+
+
+def test_expected_reward_is_the_commands(tmp_path):
+    """expected_reward() of each trial is the value `echoplan trials` writes to
+    expected_rewards.csv for the same problem (with an exact belief), seed and strategy."""
+    text = open(REPORT_PROBLEM).read().replace(
+        "belief: {type: particle, particles: 1000}", "belief: {type: exact}")
+    assert "belief: {type: exact}" in text
+    path = tmp_path / "exact.yaml"
+    path.write_text(text)
+    echoplan_command("trials", "--problem", path, "--solver", "information_gain", "--trials", 30,
+                     "--seed", 4, "--out", tmp_path / "out")
+    rows = read_csv(tmp_path / "out" / "expected_rewards.csv")
+    problem = echoplan.load_problem(str(path))
+    trials = echoplan.run_trials(problem, solver="information_gain", trials=30, seed=4)
+    assert [echoplan.expected_reward(problem, t) for t in trials] == pytest.approx(
+        [float(r["expected_reward"]) for r in rows], abs=1e-12)
