@@ -134,6 +134,15 @@ double SensingPolicy::live_probability(const std::vector<double>& belief, int a)
   return p;
 }
 
+double SensingPolicy::commit_after_sensing(const std::vector<double>& belief, int a) const {
+  double value = 0.0;
+  for (int o = 0; o < num_observations_; ++o) {
+    const double p = update(belief, a, o, posterior_);
+    if (p > 0.0) value += p * commit_value(posterior_);
+  }
+  return value;
+}
+
 double SensingPolicy::expected_reward(const std::vector<double>& belief, int a) const {
   const std::vector<int>& states = tables_->model_state;
   const double* reward = &tables_->reward[static_cast<std::size_t>(a) * states.size()];

@@ -60,6 +60,10 @@ class SensingPolicy {
                                  int observation) const;
   // P(the episode goes on | b, a): Σ_s b(s) stay(s, a).
   double live_probability(const std::vector<double>& belief, int action) const;
+  // The value of sensing once with `action` and then committing, without the sensing's own reward
+  // or discount: Σ_o P(o | b, a) commit_value(b after o) (an outcome that ends the episode counts
+  // 0).
+  double commit_after_sensing(const std::vector<double>& belief, int action) const;
   // Σ_s b(s) R(s, a).
   double expected_reward(const std::vector<double>& belief, int action) const;
   // The best terminal action's expected reward under `belief`.
@@ -111,7 +115,7 @@ class SensingPolicy {
   std::vector<double> best_commit_;  // [l]: max over terminal a of R(l, a)
   std::vector<int> best_terminal_;   // [l]: that action
   std::vector<double> thresholds_;   // kThresholds values, decreasing
-  mutable std::vector<double> scratch2_, groups_, commit_sums_;
+  mutable std::vector<double> scratch2_, groups_, commit_sums_, posterior_;
 
   // The large problems (sensing actions x outcomes x states >= kLargeAbove) take the grouped sum,
   // or the sparse one below.

@@ -84,12 +84,7 @@ double OneStepLookahead::commit_value(const std::vector<double>& objects) const 
 
 double OneStepLookahead::sense_then_commit_value(const std::vector<double>& objects, int a) const {
   const std::vector<double> b = states(objects);
-  double later = 0.0;
-  for (int o = 0; o < num_observations_; ++o) {
-    const double p = tables_.update(b, a, o, after_);
-    if (p > 0.0) later += p * tables_.commit_value(after_);
-  }
-  return tables_.expected_reward(b, a) + discount_ * later;
+  return tables_.expected_reward(b, a) + discount_ * tables_.commit_after_sensing(b, a);
 }
 
 double OneStepLookahead::expected_entropy_reduction(const std::vector<double>& objects,
