@@ -134,13 +134,19 @@ double SensingPolicy::live_probability(const std::vector<double>& belief, int a)
   return p;
 }
 
-double SensingPolicy::commit_after_sensing(const std::vector<double>& belief, int a) const {
-  double value = 0.0;
+template <class ValueAfter>
+double SensingPolicy::expect_over_outcomes(const std::vector<double>& belief, int a,
+                                           ValueAfter value_after) const {
+  double expected = 0.0;
   for (int o = 0; o < num_observations_; ++o) {
-    const double p = update(belief, a, o, posterior_);
-    if (p > 0.0) value += p * commit_value(posterior_);
+    const double p = update(belief, a, o, scratch2_);
+    if (p > 0.0) expected += p * value_after(scratch2_);
   }
-  return value;
+  return expected;
+}
+
+double SensingPolicy::commit_after_sensing(const std::vector<double>& belief, int a) const {
+  return expect_over_outcomes(belief, a, [this](const auto& after) { return commit_value(after); });
 }
 
 double SensingPolicy::expected_reward(const std::vector<double>& belief, int a) const {
@@ -261,12 +267,8 @@ void SensingPolicy::expect_sparse(const std::vector<double>& belief, const UseCo
 
 double SensingPolicy::expected_entropy_by_outcome(const std::vector<double>& belief, int a) const {
   // Outcomes that end the episode count 0.
-  double expected = 0.0;
-  for (int o = 0; o < num_observations_; ++o) {
-    const double p = update(belief, a, o, scratch2_);
-    if (p > 0.0) expected += p * decision_entropy(scratch2_);
-  }
-  return expected;
+  return expect_over_outcomes(belief, a,
+                              [this](const auto& after) { return decision_entropy(after); });
 }
 
 double SensingPolicy::expected_entropy_grouped(int a) const {

@@ -103,6 +103,11 @@ class SensingPolicy {
   // faster at 100 states x 100 outcomes).
   double expected_entropy_grouped(int a) const;
 
+  // Σ_o P(o | b, a) value_after(b after o) over the outcomes that keep the episode going (defined
+  // and used in the .cpp only).
+  template <class ValueAfter>
+  double expect_over_outcomes(const std::vector<double>& belief, int action,
+                              ValueAfter value_after) const;
   // P(o | s, a) stay(s, a) over the live states, for a sensing action.
   const double* emission(int action, int observation) const;
 
@@ -115,7 +120,7 @@ class SensingPolicy {
   std::vector<double> best_commit_;  // [l]: max over terminal a of R(l, a)
   std::vector<int> best_terminal_;   // [l]: that action
   std::vector<double> thresholds_;   // kThresholds values, decreasing
-  mutable std::vector<double> scratch2_, groups_, commit_sums_, posterior_;
+  mutable std::vector<double> scratch2_, groups_, commit_sums_;
 
   // The large problems (sensing actions x outcomes x states >= kLargeAbove) take the grouped sum,
   // or the sparse one below.
