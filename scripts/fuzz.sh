@@ -73,8 +73,7 @@ if [ "$build_first" = 1 ]; then
   cmake -S "$root" -B "$build" -DECHOPLAN_BUILD_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -gline-tables-only -DNDEBUG" \
     -DECHOPLAN_BUILD_TESTS=OFF -DECHOPLAN_BUILD_BENCH=OFF \
-    -DECHOPLAN_BUILD_PYTHON=OFF -DCMAKE_UNITY_BUILD=ON >/dev/null
-  # A unity build (CMake joins each library's files into batches), as setup.sh's sanitizer builds.
+    -DECHOPLAN_BUILD_PYTHON=OFF >/dev/null
   # ros_audio_fuzz exists only where roscpp was found: --all goes on without it, naming it fails.
   # (The list is read whole first: grep -q closing the pipe early would fail make under pipefail.)
   known=$(cmake --build "$build" --target help)

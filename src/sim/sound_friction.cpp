@@ -12,7 +12,6 @@ namespace echoplan::sim {
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 // m between surface-profile samples: the profile's resolution (12.5 kHz at 5 cm/s). Numerical, not
 // tuned.
 constexpr double kProfileSpacing = 2.0e-6;
@@ -110,7 +109,7 @@ void set_friction_drives(const std::function<double(double)>& object_mass_at,
   // velocity times the square root of its radiation efficiency (plate_radiation), with no dipole
   // factor.
   auto object_share = [&](double f) {
-    const double x = kTwoPi * f * object_mass_at(f) / table_impedance;
+    const double x = 2.0 * std::numbers::pi * f * object_mass_at(f) / table_impedance;
     return 1.0 / std::sqrt(1.0 + x * x);
   };
   for (std::size_t k = 0; k < object_modes.size(); ++k) {

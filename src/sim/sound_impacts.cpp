@@ -6,12 +6,6 @@
 
 namespace echoplan::sim {
 
-namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-
-}  // namespace
-
 double hertz_pulse_envelope(double omega, double duration_s) {
   const double x = omega * duration_s / std::numbers::pi;
   return 1.0 / std::sqrt(1.0 + x * x * x * x);
@@ -36,7 +30,7 @@ void add_impact_impulses(const Impact& impact, std::size_t at, double tau,
                          std::vector<ModeDrive>& table_drives) {
   const double momentum = impact.effective_mass * impact.normal_speed;
   auto radiated = [&](double f) {
-    return f / kReferenceHz * hertz_pulse_envelope(kTwoPi * f, tau);
+    return f / kReferenceHz * hertz_pulse_envelope(2.0 * std::numbers::pi * f, tau);
   };
   for (std::size_t k = 0; k < object_modes.size(); ++k) {
     const Mode& m = object_modes[k];
@@ -54,7 +48,8 @@ void add_impact_impulses(const Impact& impact, std::size_t at, double tau,
 
 void add_contact_ring(double gain, double momentum, double tau, double decay_per_s, std::size_t at,
                       int rate, std::vector<float>& out) {
-  const double scale = gain * momentum * std::numbers::pi / (tau * kTwoPi * kReferenceHz);
+  const double scale =
+      gain * momentum * std::numbers::pi / (tau * 2.0 * std::numbers::pi * kReferenceHz);
   const double omega = std::numbers::pi / tau;
   const auto length = static_cast<std::size_t>(std::ceil(kTailDecay / decay_per_s * rate));
   // cos(omega t) e^(-decay t) as a two-pole recursion (exact for the sampled sinusoid).

@@ -6,12 +6,6 @@
 
 namespace echoplan::sim {
 
-namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-
-}  // namespace
-
 void render_modes(const std::vector<Mode>& modes, const std::vector<ModeDrive>& drives,
                   const std::vector<float>& friction,
                   std::pair<std::size_t, std::size_t> friction_span,
@@ -47,7 +41,7 @@ void render_modes(const std::vector<Mode>& modes, const std::vector<ModeDrive>& 
         drive[lane] = d.continuous_gain;
       }
       if (f >= n_total) continue;
-      const double w = kTwoPi * mode.frequency_hz / rate;
+      const double w = 2.0 * std::numbers::pi * mode.frequency_hz / rate;
       const double r = std::exp(-mode.decay_per_s / rate);
       a1[lane] = 2.0 * r * std::cos(w);
       a2[lane] = -r * r;

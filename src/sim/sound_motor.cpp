@@ -6,19 +6,13 @@
 
 namespace echoplan::sim {
 
-namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-
-}  // namespace
-
 void add_motor_noise(const ContactTrace& trace, const RecordingConfig& rec, NoiseSource& noise,
                      std::vector<float>& out) {
   const int rate = rec.sample_rate;
   const double gain = rec.motor_noise_gain;
   if (gain <= 0 || trace.steps == 0 || trace.joint_speed.empty()) return;
   // RBJ band-pass biquad (constant 0 dB peak gain).
-  const double w0 = kTwoPi * rec.motor_noise_hz / rate;
+  const double w0 = 2.0 * std::numbers::pi * rec.motor_noise_hz / rate;
   const double bandwidth = std::sin(w0) / (2.0 * rec.motor_noise_q);
   const double a0 = 1 + bandwidth;
   const double b0 = bandwidth / a0, b2 = -bandwidth / a0, a1 = -2 * std::cos(w0) / a0,
