@@ -16,11 +16,14 @@
 # With ARMS=unlike (environment): seven arms, the five but random, the planner also planning with
 # lookalikes (lookalike: true; plan_lookalike listed first) and with objects unlike their class
 # (atypical: true), and information_gain also with lookalikes.
+# With ARMS=unheard (environment): five arms, the planner counting a sensing action's unheard
+# outcomes at their commit value (unheard: commit) with lookalikes (plan_commit_lookalike, listed
+# first) and without, the default planner with lookalikes and without, and information_gain.
 # With OBSERVATIONS=graded (environment): the five arms all hear grades.
 # With COSTS=costed (environment): each behaviour priced (task.costs), from 0.5 for the least
 # informative to 4.5 for the most, as published container studies price theirs: then information
 # must be bought, and the arms are compared in cost-weighted reward.
-# Usage: [ARMS=exact|graded|unlike] [SET=recorded] [COSTS=costed] [OBSERVATIONS=graded]
+# Usage: [ARMS=exact|graded|unlike|unheard] [SET=recorded] [COSTS=costed] [OBSERVATIONS=graded]
 #        bench/dataset_campaign.sh BUILD_DIR [EPISODES] [HOLD_OUT] [WORKERS] [OUT]
 set -eu
 # A misspelt switch would silently run another campaign than the one asked for.
@@ -31,7 +34,7 @@ check() {
     ;;
   esac
 }
-check ARMS "${ARMS:-}" " exact graded unlike"
+check ARMS "${ARMS:-}" " exact graded unlike unheard"
 check SET "${SET:-}" " recorded"
 check COSTS "${COSTS:-}" " costed"
 check OBSERVATIONS "${OBSERVATIONS:-}" " graded"
@@ -59,6 +62,12 @@ elif [ "${ARMS:-}" = graded ]; then
   arms='  - {name: plan_graded, strategy: plan, observations: graded}
   - {name: plan, strategy: plan}
   - {name: information_gain_graded, strategy: information_gain, observations: graded}
+  - {name: information_gain, strategy: information_gain}'
+elif [ "${ARMS:-}" = unheard ]; then
+  arms='  - {name: plan_commit_lookalike, strategy: plan, unheard: commit, lookalike: true}
+  - {name: plan_lookalike, strategy: plan, lookalike: true}
+  - {name: plan_commit, strategy: plan, unheard: commit}
+  - {name: plan, strategy: plan}
   - {name: information_gain, strategy: information_gain}'
 elif [ "${ARMS:-}" = unlike ]; then
   arms='  - {name: plan_lookalike, strategy: plan, lookalike: true}

@@ -19,6 +19,7 @@ solvers::PlannerOverrides planner_overrides(const py::kwargs& settings) {
       {"exploration", [&](py::handle v) { o.exploration = v.cast<double>(); }},
       {"depth", [&](py::handle v) { o.depth = v.cast<int>(); }},
       {"leaf", [&](py::handle v) { o.leaf = v.cast<std::string>(); }},
+      {"unheard", [&](py::handle v) { o.unheard = v.cast<std::string>(); }},
       {"expand_after", [&](py::handle v) { o.expand_after = v.cast<int>(); }},
       {"exact_share", [&](py::handle v) { o.exact_share = v.cast<double>(); }},
       {"offline_expansions", [&](py::handle v) { o.offline_expansions = v.cast<long>(); }},
@@ -44,7 +45,8 @@ const char* planner_settings_doc() {
          "`echoplan trials`): solver ('abt', 'pomcp', 'offline' or a strategy: all_actions, "
          "best_single, information_gain, random), policy (offline: policy.json), episodes or "
          "step_ms (search per step), exploration, depth, leaf ('policy', 'exact', "
-         "'exact-offline', 'lookahead', 'heuristic', 'rollout'), expand_after, exact_share, "
+         "'exact-offline', 'lookahead', 'heuristic', 'rollout'), unheard ('share' or 'commit'), "
+         "expand_after, exact_share, "
          "offline_expansions, root_particles, branch_threshold.";
 }
 

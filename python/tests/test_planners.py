@@ -81,6 +81,17 @@ def test_any_solver_by_name_makes_the_commands_decisions(report_problem, tmp_pat
     assert steps_of(trials, model) == command_steps(read_csv(tmp_path / "steps.csv"), model)
 
 
+def test_unheard_outcomes_at_commit_makes_the_commands_decisions(report_problem, tmp_path):
+    echoplan_command("trials", "--problem", REPORT_PROBLEM, "--unheard", "commit", "--trials", 6,
+                     "--episodes", 300, "--seed", 3, "--out", tmp_path)
+    trials = echoplan.run_trials(report_problem, unheard="commit", trials=6, episodes=300, seed=3)
+    model = report_problem.model
+    assert steps_of(trials, model) == command_steps(read_csv(tmp_path / "steps.csv"), model)
+    assert echoplan.Planner(report_problem, unheard="commit").settings["search"]["unheard"] == "commit"
+    with pytest.raises(echoplan.InputError, match="lookahead"):
+        echoplan.Planner(report_problem, unheard="commit", leaf="lookahead")
+
+
 def test_planner_settings_are_checked_as_the_commands_flags(report_problem):
     planner = echoplan.Planner(report_problem, solver="abt", episodes=100, exploration=5.0)
     assert planner.settings["solver"] == "abt"

@@ -58,6 +58,9 @@ struct CampaignArm {
   // An arm of strategy `plan`: the planner's leaf value (solvers/leaf_value.h: policy, exact, ...);
   // empty: the solver's default for the problem.
   std::string leaf{};
+  // An arm of strategy `plan`: how ABT counts outcomes no episode has heard yet (share or commit,
+  // solvers/search_tree.h); empty: share.
+  std::string unheard{};
 };
 
 // A group of trials with one object in the world. `object` is what the world holds (a catalogue

@@ -44,7 +44,10 @@ solvers::PlannerOverrides arm_planner(const CampaignConfig& config, const Campai
   overrides.solver = arm.strategy == kPlanStrategy ? config.planner.solver : arm.strategy;
   overrides.episodes = config.planner.episodes;
   overrides.step_ms = config.planner.step_ms;
-  if (arm.strategy == kPlanStrategy) overrides.leaf = arm.leaf;
+  if (arm.strategy == kPlanStrategy) {
+    overrides.leaf = arm.leaf;
+    overrides.unheard = arm.unheard;
+  }
   return overrides;
 }
 

@@ -56,6 +56,7 @@ nlohmann::json Planner::to_json() const {
        {{"exploration", options.exploration},
         {"max_depth", options.max_depth},
         {"leaf", solvers::leaf_mode_name(options.leaf.mode)},
+        {"unheard", solvers::unheard_outcomes_name(options.unheard)},
         {"expand_after", options.leaf.expand_after},
         {"root_particles", options.root_particles},
         {"branch_threshold", options.branching.continuous_threshold}}}};

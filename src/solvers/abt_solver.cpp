@@ -64,25 +64,57 @@ void AbtSolver::root_particle_added(BeliefNode& root, const pomdp::State& state,
 namespace {
 
 // The exact-belief terms of `action` at `belief` (the belief `node` holds now): computed once per
-// belief, and for each child once, in the order children were added.
-void weigh(const SensingPolicy& beliefs, BeliefNode& node, ActionNode& action, int a,
-           const std::vector<double>& belief) {
+// belief, and for each child once, in the order children were added. The commit terms only for
+// `unheard` at commit (they cost a Bayes update per outcome).
+void weigh(const SensingPolicy& beliefs, UnheardOutcomes unheard, BeliefNode& node,
+           ActionNode& action, int a, const std::vector<double>& belief) {
+  const bool commit = unheard == UnheardOutcomes::commit && !beliefs.is_terminal(a);
   if (node.weighed_belief != belief) {
     node.weighed_belief = belief;
     for (const auto& other : node.actions)
       if (other) {
         other->weighed = false;
         other->child_probability.clear();
+        other->child_commit.clear();
       }
   }
   if (!action.weighed) {
     action.expected_reward = beliefs.expected_reward(belief, a);
     action.live_probability = beliefs.live_probability(belief, a);
+    action.commit_after_sensing = commit ? beliefs.commit_after_sensing(belief, a) : 0.0;
     action.weighed = true;
   }
-  for (std::size_t k = action.child_probability.size(); k < action.children.size(); ++k)
-    action.child_probability.push_back(
-        beliefs.observation_probability(belief, a, action.children[k].observation.index));
+  for (std::size_t k = action.child_probability.size(); k < action.children.size(); ++k) {
+    const int o = action.children[k].observation.index;
+    action.child_probability.push_back(beliefs.observation_probability(belief, a, o));
+    if (commit) action.child_commit.push_back(beliefs.commit_after(belief, a, o));
+  }
+}
+
+// Σ_o P(o | b, a) V(b after o), the heard outcomes at their children's values and the unheard as
+// `unheard` says (search_tree.h); outcomes that end the episode count 0. A child every episode
+// through which was revised away counts as unheard.
+double future_value(const ActionNode& action, UnheardOutcomes unheard) {
+  if (unheard == UnheardOutcomes::commit && !action.child_commit.empty()) {
+    double future = action.commit_after_sensing;
+    for (std::size_t k = 0; k < action.children.size(); ++k) {
+      const ObservationChild& child = action.children[k];
+      if (child.arrivals == 0) continue;
+      // Committing after o is open to the child too: its value is at least that.
+      const double commit = action.child_commit[k];
+      future += std::max(action.child_probability[k] * child.node->value, commit) - commit;
+    }
+    return future;
+  }
+  double weighted = 0.0, seen = 0.0;
+  for (std::size_t k = 0; k < action.children.size(); ++k) {
+    const ObservationChild& child = action.children[k];
+    if (child.arrivals == 0) continue;
+    const double p = action.child_probability[k];
+    weighted += p * child.node->value;
+    seen += p;
+  }
+  return seen > 0.0 ? action.live_probability * weighted / seen : 0.0;
 }
 
 }  // namespace
@@ -96,22 +128,9 @@ double AbtSolver::action_value(BeliefNode& node, int a, const std::vector<double
     return node.particle_reward_sums[a] / static_cast<double>(node.particles_evaluated) +
            gamma * action.future_sum / static_cast<double>(action.visits);
   // With the exact belief, the children are weighted by P(o | b, a) instead of by how often the
-  // episodes happened to hear o (observations never heard yet share the weight of those that were,
-  // in proportion); outcomes that end the episode count 0.
-  weigh(*leaf_value().belief_model(), node, action, a, *belief);
-  double future = 0.0;
-  if (!action.children.empty()) {
-    double weighted = 0.0, seen = 0.0;
-    for (std::size_t k = 0; k < action.children.size(); ++k) {
-      const ObservationChild& child = action.children[k];
-      if (child.arrivals == 0) continue;  // every episode through it was revised away
-      const double p = action.child_probability[k];
-      weighted += p * child.node->value;
-      seen += p;
-    }
-    if (seen > 0.0) future = action.live_probability * weighted / seen;
-  }
-  return action.expected_reward + gamma * future;
+  // episodes happened to hear o.
+  weigh(*leaf_value().belief_model(), options().unheard, node, action, a, *belief);
+  return action.expected_reward + gamma * future_value(action, options().unheard);
 }
 
 void AbtSolver::refresh_child(ActionNode& action, std::size_t child) {

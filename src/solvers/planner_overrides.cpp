@@ -11,6 +11,7 @@ SearchOptions search_options(const PlannerOverrides& f, const pomdp::Problem& pr
     o.leaf.mode = parse_leaf_mode(f.leaf);
   else if (problem.model)
     o.leaf.mode = default_leaf_mode(solver, *problem.model);
+  if (!f.unheard.empty()) o.unheard = parse_unheard_outcomes(f.unheard);
   o.leaf.expand_after = f.expand_after;
   o.leaf.exact_share = f.exact_share;
   o.leaf.offline_expansions = f.offline_expansions;

@@ -10,6 +10,26 @@
 
 namespace echoplan::solvers {
 
+namespace {
+constexpr UnheardOutcomes kUnheardOutcomes[] = {UnheardOutcomes::share, UnheardOutcomes::commit};
+}  // namespace
+
+const char* unheard_outcomes_name(UnheardOutcomes unheard) {
+  return unheard == UnheardOutcomes::share ? "share" : "commit";
+}
+
+std::vector<std::string> unheard_outcomes_names() {
+  std::vector<std::string> names;
+  for (UnheardOutcomes u : kUnheardOutcomes) names.emplace_back(unheard_outcomes_name(u));
+  return names;
+}
+
+UnheardOutcomes parse_unheard_outcomes(const std::string& text) {
+  for (UnheardOutcomes u : kUnheardOutcomes)
+    if (text == unheard_outcomes_name(u)) return u;
+  throw InputError("unheard outcomes '" + text + "' is not one of share, commit");
+}
+
 void SearchOptions::validate() const {
   if (!(exploration >= 0.0)) throw InputError("exploration constant must be >= 0");
   if (max_depth < 1) throw InputError("max depth must be >= 1");
@@ -19,6 +39,13 @@ void SearchOptions::validate() const {
   if (!(leaf.exact_share >= 0.0 && leaf.exact_share <= 1.0))
     throw InputError("exact share must be in [0, 1]");
   if (leaf.offline_expansions < 1) throw InputError("offline expansions must be >= 1");
+  // Only a leaf that follows the exact belief knows P(o | b, a) and the value of committing after
+  // o.
+  if (unheard == UnheardOutcomes::commit && leaf.mode != LeafMode::policy &&
+      leaf.mode != LeafMode::exact && leaf.mode != LeafMode::exact_offline)
+    throw InputError(std::string("unheard outcomes at commit needs a leaf value that follows the "
+                                 "exact belief (policy, exact or exact-offline), not ") +
+                     leaf_mode_name(leaf.mode));
   if (!(branching.continuous_threshold >= 0.0))
     throw InputError("observation branching threshold must be >= 0");
 }

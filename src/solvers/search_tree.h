@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "pomdp/model.h"
@@ -25,6 +26,21 @@
 #include "solvers/use_limits.h"
 
 namespace echoplan::solvers {
+
+// How ABT values the outcomes of a sensing action that no episode has heard yet, when it follows
+// the exact belief (leaf policy, exact or exact-offline):
+//   share   the heard outcomes stand for the unheard in proportion to P(o | b, a). Unbiased when
+//           every outcome is about as valuable; with many outcomes and few visits one lucky outcome
+//           speaks for all, and the max over actions above then favours sensing.
+//   commit  an unheard outcome counts the value of committing right after it (and a heard one at
+//           least that): a lower bound, so sensing is worth only what the episodes have shown.
+//           Favours behaviours whose outcomes are few. docs/planning.md says where each wins.
+enum class UnheardOutcomes { share, commit };
+
+// Parses "share" | "commit"; throws InputError otherwise.
+UnheardOutcomes parse_unheard_outcomes(const std::string& text);
+const char* unheard_outcomes_name(UnheardOutcomes unheard);
+std::vector<std::string> unheard_outcomes_names();
 
 // Options shared by the tree-search solvers. Validated by validate().
 // The exploration constant and depth default to pomdp::PlannerDefaults (problem.h), the one place
@@ -37,6 +53,7 @@ struct SearchOptions {
   int root_particles = 1000;     // particles drawn from the belief at reset / replenishment; >= 1
   int min_root_particles = 100;  // after update, a root with fewer particles is replenished; >= 0
   LeafOptions leaf;
+  UnheardOutcomes unheard = UnheardOutcomes::share;  // ABT with a leaf that follows the belief
   ObservationBranching branching;
   // ABT only: keep every episode's (state, action, observation, reward) steps so that
   // AbtSolver::revise() can revise the tree after a model change. Off by default: nothing in
@@ -99,11 +116,14 @@ struct ActionNode {
   double future_sum = 0.0;  // ABT: sum over children of arrivals * value
   double value = 0.0;       // the action's estimated value, used by UCB and best_action()
   std::vector<ObservationChild> children;
-  // ABT's exact-belief terms at the node's weighed_belief: P(o | b, a) of children[0..k) (children
-  // are only ever appended), the expected reward and the chance the episode goes on.
-  std::vector<double> child_probability;
+  // ABT's exact-belief terms at the node's weighed_belief: for children[0..k) (children are only
+  // ever appended) P(o | b, a) and, with unheard outcomes at commit, SensingPolicy::commit_after(b,
+  // a, o); the expected reward, the chance the episode goes on and (unheard at commit) the value
+  // of sensing once with this action and then committing.
+  std::vector<double> child_probability, child_commit;
   double expected_reward = 0.0;
   double live_probability = 0.0;
+  double commit_after_sensing = 0.0;
   bool weighed = false;
 };
 

@@ -149,6 +149,11 @@ double SensingPolicy::commit_after_sensing(const std::vector<double>& belief, in
   return expect_over_outcomes(belief, a, [this](const auto& after) { return commit_value(after); });
 }
 
+double SensingPolicy::commit_after(const std::vector<double>& belief, int a, int o) const {
+  const double p = update(belief, a, o, scratch2_);
+  return p > 0.0 ? p * commit_value(scratch2_) : 0.0;
+}
+
 double SensingPolicy::expected_reward(const std::vector<double>& belief, int a) const {
   const std::vector<int>& states = tables_->model_state;
   const double* reward = &tables_->reward[static_cast<std::size_t>(a) * states.size()];

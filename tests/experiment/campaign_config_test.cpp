@@ -95,13 +95,15 @@ TEST(CampaignConfig, RejectsBadValues) {
   EXPECT_EQ(line.substr(0, 2), "6:") << line;
 }
 
+// kMinimal with its arm replaced by `arm`.
+std::string with_arm(const std::string& arm) {
+  std::string text = kMinimal;
+  const std::string from = "{name: a, problem: p.yaml}";
+  return text.replace(text.find(from), from.size(), arm);
+}
+
 // An arm that plans may choose its planner's leaf value; a fixed strategy has none to choose.
 TEST(CampaignConfig, APlanningArmChoosesItsLeafValue) {
-  auto with_arm = [](const std::string& arm) {
-    std::string text = kMinimal;
-    const std::string from = "{name: a, problem: p.yaml}";
-    return text.replace(text.find(from), from.size(), arm);
-  };
   const CampaignConfig c =
       parse_campaign_config(with_arm("{name: a, problem: p.yaml, leaf: exact}"), "/dir/c.yaml");
   EXPECT_EQ(c.arms[0].leaf, "exact");
@@ -115,6 +117,26 @@ TEST(CampaignConfig, APlanningArmChoosesItsLeafValue) {
   const std::string fixed =
       error_of(with_arm("{name: a, problem: p.yaml, strategy: all_actions, leaf: exact}"));
   EXPECT_NE(fixed.find("leaf: only an arm that plans"), std::string::npos) << fixed;
+}
+
+// How the planner counts unheard outcomes, likewise; left out of the identity at its default.
+TEST(CampaignConfig, APlanningArmChoosesHowUnheardOutcomesCount) {
+  // Campaigns written before the choice existed keep their identity (a resumed run continues).
+  CampaignConfig shipped =
+      load_campaign_config(std::string(ECHOPLAN_SOURCE_DIR) + "/experiments/chapter5.yaml");
+  EXPECT_FALSE(shipped.identity()["arms"][0].contains("unheard"));
+  shipped.arms[0].unheard = "commit";
+  EXPECT_EQ(shipped.identity()["arms"][0]["unheard"], "commit");
+  const CampaignConfig c =
+      parse_campaign_config(with_arm("{name: a, problem: p.yaml, unheard: commit}"), "/dir/c.yaml");
+  EXPECT_EQ(c.arms[0].unheard, "commit");
+  EXPECT_EQ(to_json(campaign_config_from_json(to_json(c), "campaign.json")), to_json(c));
+  const std::string unknown = error_of(with_arm("{name: a, problem: p.yaml, unheard: guess}"));
+  EXPECT_EQ(unknown.substr(0, 2), "3:") << unknown;
+  EXPECT_NE(unknown.find("share, commit"), std::string::npos) << unknown;
+  const std::string fixed =
+      error_of(with_arm("{name: a, problem: p.yaml, strategy: random, unheard: commit}"));
+  EXPECT_NE(fixed.find("unheard: only an arm that plans"), std::string::npos) << fixed;
 }
 
 TEST(CampaignConfig, TrainingTableEstimate) {

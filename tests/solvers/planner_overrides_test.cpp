@@ -27,6 +27,7 @@ TEST(PlannerOverrides, NoOverridesGiveTheProblemFilesSettings) {
   EXPECT_EQ(o.root_particles, 450);
   EXPECT_EQ(o.leaf.mode, LeafMode::lookahead);
   EXPECT_EQ(o.leaf.expand_after, LeafOptions{}.expand_after);
+  EXPECT_EQ(o.unheard, UnheardOutcomes::share);
   EXPECT_EQ(o.branching.continuous_threshold, 0.0);
 }
 
@@ -36,6 +37,10 @@ TEST(PlannerOverrides, EachOverrideWins) {
   f.depth = 3;
   f.leaf = "rollout";
   f.expand_after = 2;
+  PlannerOverrides commit;
+  commit.leaf = "policy";
+  commit.unheard = "commit";
+  EXPECT_EQ(search_options(commit, problem_with(700, 0)).unheard, UnheardOutcomes::commit);
   f.root_particles = 20;
   f.branch_threshold = 0.25;
   const SearchOptions o = search_options(f, problem_with(700, 0));
@@ -61,6 +66,14 @@ TEST(PlannerOverrides, BadValuesAreInputErrors) {
   PlannerOverrides threshold;
   threshold.branch_threshold = -1.0;
   EXPECT_THROW(search_options(threshold, p), InputError);
+  PlannerOverrides unheard;
+  unheard.leaf = "policy";
+  unheard.unheard = "guess";
+  EXPECT_THROW(search_options(unheard, p), InputError);
+  // Only a leaf that follows the exact belief knows what committing after an outcome is worth.
+  unheard.unheard = "commit";
+  unheard.leaf = "lookahead";
+  EXPECT_THROW(search_options(unheard, p), InputError);
 }
 
 void expect_budget(const Budget& b, Budget::Kind kind, std::int64_t amount) {

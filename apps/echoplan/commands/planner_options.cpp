@@ -7,6 +7,7 @@
 #include <string>
 
 #include "solvers/baseline_strategies.h"
+#include "solvers/search_tree.h"
 
 namespace echoplan::cli {
 
@@ -44,6 +45,11 @@ void add_planner_options(CLI::App& cmd, solvers::PlannerOverrides& f) {
                  "Leaf value: policy, exact or exact-offline (ABT only, identification problems), "
                  "lookahead, heuristic or rollout (default: policy for ABT on an identification "
                  "problem, else lookahead; docs/planning.md)");
+  cmd.add_option("--unheard", f.unheard,
+                 "ABT with leaf policy/exact: how a sensing action's outcomes no episode has heard "
+                 "yet count: share (the heard outcomes' values, in proportion; the default) or "
+                 "commit (the value of sorting right after them, a lower bound; docs/planning.md)")
+      ->check(CLI::IsMember(solvers::unheard_outcomes_names()));
   cmd.add_option("--exact-share", f.exact_share,
                  "--leaf exact/exact-offline: share of each step's budget spent refining the exact "
                  "solver at the current belief before the episodes, in [0, 1]")
