@@ -16,9 +16,9 @@
 # With ARMS=unlike (environment): seven arms, the five but random, the planner also planning with
 # lookalikes (lookalike: true; plan_lookalike listed first) and with objects unlike their class
 # (atypical: true), and information_gain also with lookalikes.
-# With ARMS=unheard (environment): six arms, the planner counting a sensing action's unheard
-# outcomes by gap with lookalikes (plan_gap_lookalike, listed first), at commit with lookalikes and
-# without, by share (the default) with lookalikes and without, and information_gain.
+# With ARMS=unheard (environment): five arms, the planner counting a sensing action's unheard
+# outcomes at their commit value (unheard: commit) with lookalikes (plan_commit_lookalike, listed
+# first) and without, the default planner with lookalikes and without, and information_gain.
 # With OBSERVATIONS=graded (environment): the five arms all hear grades.
 # With COSTS=costed (environment): each behaviour priced (task.costs), from 0.5 for the least
 # informative to 4.5 for the most, as published container studies price theirs: then information
@@ -64,8 +64,7 @@ elif [ "${ARMS:-}" = graded ]; then
   - {name: information_gain_graded, strategy: information_gain, observations: graded}
   - {name: information_gain, strategy: information_gain}'
 elif [ "${ARMS:-}" = unheard ]; then
-  arms='  - {name: plan_gap_lookalike, strategy: plan, unheard: gap, lookalike: true}
-  - {name: plan_commit_lookalike, strategy: plan, unheard: commit, lookalike: true}
+  arms='  - {name: plan_commit_lookalike, strategy: plan, unheard: commit, lookalike: true}
   - {name: plan_lookalike, strategy: plan, lookalike: true}
   - {name: plan_commit, strategy: plan, unheard: commit}
   - {name: plan, strategy: plan}

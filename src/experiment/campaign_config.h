@@ -58,8 +58,8 @@ struct CampaignArm {
   // An arm of strategy `plan`: the planner's leaf value (solvers/leaf_value.h: policy, exact, ...);
   // empty: the solver's default for the problem.
   std::string leaf{};
-  // An arm of strategy `plan`: how ABT counts outcomes no episode has heard yet (share, commit or
-  // gap, solvers/search_tree.h); empty: share.
+  // An arm of strategy `plan`: how ABT counts outcomes no episode has heard yet (share or commit,
+  // solvers/search_tree.h); empty: share.
   std::string unheard{};
 };
 

@@ -64,11 +64,11 @@ void AbtSolver::root_particle_added(BeliefNode& root, const pomdp::State& state,
 namespace {
 
 // The exact-belief terms of `action` at `belief` (the belief `node` holds now): computed once per
-// belief, and for each child once, in the order children were added. The terms after each outcome
-// only for `unheard` at commit or gap (they cost a Bayes update per outcome).
+// belief, and for each child once, in the order children were added. The commit terms only for
+// `unheard` at commit (they cost a Bayes update per outcome).
 void weigh(const SensingPolicy& beliefs, UnheardOutcomes unheard, BeliefNode& node,
            ActionNode& action, int a, const std::vector<double>& belief) {
-  const bool after_terms = unheard != UnheardOutcomes::share && !beliefs.is_terminal(a);
+  const bool commit = unheard == UnheardOutcomes::commit && !beliefs.is_terminal(a);
   if (node.weighed_belief != belief) {
     node.weighed_belief = belief;
     for (const auto& other : node.actions)
@@ -76,24 +76,18 @@ void weigh(const SensingPolicy& beliefs, UnheardOutcomes unheard, BeliefNode& no
         other->weighed = false;
         other->child_probability.clear();
         other->child_commit.clear();
-        other->child_loss.clear();
       }
   }
   if (!action.weighed) {
     action.expected_reward = beliefs.expected_reward(belief, a);
     action.live_probability = beliefs.live_probability(belief, a);
-    action.commit_after_sensing = after_terms ? beliefs.commit_after_sensing(belief, a) : 0.0;
-    action.loss_after_sensing = after_terms ? beliefs.loss_after_sensing(belief, a) : 0.0;
+    action.commit_after_sensing = commit ? beliefs.commit_after_sensing(belief, a) : 0.0;
     action.weighed = true;
   }
   for (std::size_t k = action.child_probability.size(); k < action.children.size(); ++k) {
     const int o = action.children[k].observation.index;
     action.child_probability.push_back(beliefs.observation_probability(belief, a, o));
-    if (after_terms) {
-      const SensingPolicy::AfterOutcome after = beliefs.after_outcome(belief, a, o);
-      action.child_commit.push_back(after.commit);
-      action.child_loss.push_back(after.loss);
-    }
+    if (commit) action.child_commit.push_back(beliefs.commit_after(belief, a, o));
   }
 }
 
@@ -101,22 +95,14 @@ void weigh(const SensingPolicy& beliefs, UnheardOutcomes unheard, BeliefNode& no
 // `unheard` says (search_tree.h); outcomes that end the episode count 0. A child every episode
 // through which was revised away counts as unheard.
 double future_value(const ActionNode& action, UnheardOutcomes unheard) {
-  if (unheard != UnheardOutcomes::share && !action.child_commit.empty()) {
-    double excess = 0.0, heard_loss = 0.0;
+  if (unheard == UnheardOutcomes::commit && !action.child_commit.empty()) {
+    double future = action.commit_after_sensing;
     for (std::size_t k = 0; k < action.children.size(); ++k) {
       const ObservationChild& child = action.children[k];
       if (child.arrivals == 0) continue;
       // Committing after o is open to the child too: its value is at least that.
       const double commit = action.child_commit[k];
-      excess += std::max(action.child_probability[k] * child.node->value, commit) - commit;
-      heard_loss += action.child_loss[k];
-    }
-    double future = action.commit_after_sensing + excess;
-    // gap: the unheard outcomes gain the share of what knowing the state would add after them
-    // that the heard outcomes' children gained of theirs (none when every heard outcome is sure).
-    if (unheard == UnheardOutcomes::gap && heard_loss > 0.0) {
-      const double recovered = std::clamp(excess / heard_loss, 0.0, 1.0);
-      future += recovered * std::max(action.loss_after_sensing - heard_loss, 0.0);
+      future += std::max(action.child_probability[k] * child.node->value, commit) - commit;
     }
     return future;
   }

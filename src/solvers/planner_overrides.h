@@ -24,7 +24,7 @@ struct PlannerOverrides {
   int depth = -1;
   std::string leaf;     // policy, exact, exact-offline, lookahead, heuristic or rollout; empty:
                         // default_leaf_mode()
-  std::string unheard;  // share, commit or gap (search_tree.h, UnheardOutcomes); empty: share
+  std::string unheard;  // share or commit (search_tree.h, UnheardOutcomes); empty: share
   int expand_after = LeafOptions{}.expand_after;
   double exact_share = LeafOptions{}.exact_share;              // leaf exact / exact-offline
   long offline_expansions = LeafOptions{}.offline_expansions;  // leaf exact-offline

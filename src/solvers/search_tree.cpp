@@ -11,20 +11,11 @@
 namespace echoplan::solvers {
 
 namespace {
-constexpr UnheardOutcomes kUnheardOutcomes[] = {UnheardOutcomes::share, UnheardOutcomes::commit,
-                                                UnheardOutcomes::gap};
+constexpr UnheardOutcomes kUnheardOutcomes[] = {UnheardOutcomes::share, UnheardOutcomes::commit};
 }  // namespace
 
 const char* unheard_outcomes_name(UnheardOutcomes unheard) {
-  switch (unheard) {
-    case UnheardOutcomes::share:
-      return "share";
-    case UnheardOutcomes::commit:
-      return "commit";
-    case UnheardOutcomes::gap:
-      return "gap";
-  }
-  return "?";
+  return unheard == UnheardOutcomes::share ? "share" : "commit";
 }
 
 std::vector<std::string> unheard_outcomes_names() {
@@ -36,7 +27,7 @@ std::vector<std::string> unheard_outcomes_names() {
 UnheardOutcomes parse_unheard_outcomes(const std::string& text) {
   for (UnheardOutcomes u : kUnheardOutcomes)
     if (text == unheard_outcomes_name(u)) return u;
-  throw InputError("unheard outcomes '" + text + "' is not one of share, commit, gap");
+  throw InputError("unheard outcomes '" + text + "' is not one of share, commit");
 }
 
 void SearchOptions::validate() const {
@@ -50,12 +41,11 @@ void SearchOptions::validate() const {
   if (leaf.offline_expansions < 1) throw InputError("offline expansions must be >= 1");
   // Only a leaf that follows the exact belief knows P(o | b, a) and the value of committing after
   // o.
-  if (unheard != UnheardOutcomes::share && leaf.mode != LeafMode::policy &&
+  if (unheard == UnheardOutcomes::commit && leaf.mode != LeafMode::policy &&
       leaf.mode != LeafMode::exact && leaf.mode != LeafMode::exact_offline)
-    throw InputError(
-        std::string("unheard outcomes at commit or gap need a leaf value that follows the "
-                    "exact belief (policy, exact or exact-offline), not ") +
-        leaf_mode_name(leaf.mode));
+    throw InputError(std::string("unheard outcomes at commit needs a leaf value that follows the "
+                                 "exact belief (policy, exact or exact-offline), not ") +
+                     leaf_mode_name(leaf.mode));
   if (!(branching.continuous_threshold >= 0.0))
     throw InputError("observation branching threshold must be >= 0");
 }

@@ -34,14 +34,10 @@ namespace echoplan::solvers {
 //           speaks for all, and the max over actions above then favours sensing.
 //   commit  an unheard outcome counts the value of committing right after it (and a heard one at
 //           least that): a lower bound, so sensing is worth only what the episodes have shown.
-//           Favours behaviours whose outcomes are few.
-//   gap     as commit, and each unheard outcome also gains the share of what knowing the state
-//           would add after it (SensingPolicy::loss) that the heard outcomes' children gained
-//           over committing: a certain outcome, lucky or not, then speaks for none.
-// docs/planning.md says where each wins.
-enum class UnheardOutcomes { share, commit, gap };
+//           Favours behaviours whose outcomes are few. docs/planning.md says where each wins.
+enum class UnheardOutcomes { share, commit };
 
-// Parses "share" | "commit" | "gap"; throws InputError otherwise.
+// Parses "share" | "commit"; throws InputError otherwise.
 UnheardOutcomes parse_unheard_outcomes(const std::string& text);
 const char* unheard_outcomes_name(UnheardOutcomes unheard);
 std::vector<std::string> unheard_outcomes_names();
@@ -121,15 +117,13 @@ struct ActionNode {
   double value = 0.0;       // the action's estimated value, used by UCB and best_action()
   std::vector<ObservationChild> children;
   // ABT's exact-belief terms at the node's weighed_belief: for children[0..k) (children are only
-  // ever appended) P(o | b, a) and, with unheard outcomes at commit or gap, the terms of
-  // SensingPolicy::after_outcome(b, a, o); the expected reward, the chance the episode goes on and
-  // (commit or gap) the value of sensing once and then committing and what knowing the state
-  // would add then.
-  std::vector<double> child_probability, child_commit, child_loss;
+  // ever appended) P(o | b, a) and, with unheard outcomes at commit, SensingPolicy::commit_after(b,
+  // a, o); the expected reward, the chance the episode goes on and (unheard at commit) the value
+  // of sensing once with this action and then committing.
+  std::vector<double> child_probability, child_commit;
   double expected_reward = 0.0;
   double live_probability = 0.0;
   double commit_after_sensing = 0.0;
-  double loss_after_sensing = 0.0;
   bool weighed = false;
 };
 

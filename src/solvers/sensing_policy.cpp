@@ -149,17 +149,9 @@ double SensingPolicy::commit_after_sensing(const std::vector<double>& belief, in
   return expect_over_outcomes(belief, a, [this](const auto& after) { return commit_value(after); });
 }
 
-double SensingPolicy::loss_after_sensing(const std::vector<double>& belief, int a) const {
-  return expect_over_outcomes(
-      belief, a, [this](const auto& after) { return loss(after, commit_value(after)); });
-}
-
-SensingPolicy::AfterOutcome SensingPolicy::after_outcome(const std::vector<double>& belief, int a,
-                                                         int o) const {
+double SensingPolicy::commit_after(const std::vector<double>& belief, int a, int o) const {
   const double p = update(belief, a, o, scratch2_);
-  if (!(p > 0.0)) return {};
-  const double commit = commit_value(scratch2_);
-  return {p * commit, p * loss(scratch2_, commit)};
+  return p > 0.0 ? p * commit_value(scratch2_) : 0.0;
 }
 
 double SensingPolicy::expected_reward(const std::vector<double>& belief, int a) const {

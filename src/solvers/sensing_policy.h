@@ -64,15 +64,9 @@ class SensingPolicy {
   // or discount: Σ_o P(o | b, a) commit_value(b after o) (an outcome that ends the episode counts
   // 0).
   double commit_after_sensing(const std::vector<double>& belief, int action) const;
-  // Σ_o P(o | b, a) loss(b after o): what knowing the state would add after sensing once.
-  double loss_after_sensing(const std::vector<double>& belief, int action) const;
-  // One outcome's terms of those sums: P(o | b, a) commit_value(b after o) and P(o | b, a)
-  // loss(b after o); 0 for an outcome that ends the episode or cannot be heard.
-  struct AfterOutcome {
-    double commit = 0.0;
-    double loss = 0.0;
-  };
-  AfterOutcome after_outcome(const std::vector<double>& belief, int action, int observation) const;
+  // One outcome's term of that sum: P(o | b, a) commit_value(b after o); 0 for an outcome that
+  // ends the episode or cannot be heard.
+  double commit_after(const std::vector<double>& belief, int action, int observation) const;
   // Σ_s b(s) R(s, a).
   double expected_reward(const std::vector<double>& belief, int action) const;
   // The best terminal action's expected reward under `belief`.

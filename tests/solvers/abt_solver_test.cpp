@@ -490,52 +490,41 @@ std::vector<double> root_values(UnheardOutcomes unheard, int seed, int episodes)
   return solver.root_action_values();
 }
 
-TEST(AbtUnheardOutcomes, AtCommitOrGapSensingIsWorthAtLeastSensingOnceThenSorting) {
-  // Unheard outcomes at least at their commit value and heard ones likewise: the one-step plan
+TEST(AbtUnheardOutcomes, AtCommitSensingIsWorthAtLeastSensingOnceThenSorting) {
+  // Unheard outcomes at their commit value and heard ones at least at theirs: the one-step plan
   // is a floor however few episodes there were. (An action no episode tried is NaN.)
-  for (UnheardOutcomes unheard : {UnheardOutcomes::commit, UnheardOutcomes::gap})
-    for (int seed = 1; seed <= 10; ++seed)
-      for (int episodes : {8, 16, 32, 64}) {
-        const std::vector<double> q = root_values(unheard, seed, episodes);
-        EXPECT_FALSE(q[kSlide] < kSense + kGamma * kSlideOnce.commit_after() - 1e-9) << seed;
-        EXPECT_FALSE(q[kStrike] < kSense + kGamma * kStrikeOnce.commit_after() - 1e-9) << seed;
-      }
+  for (int seed = 1; seed <= 10; ++seed)
+    for (int episodes : {8, 16, 32, 64}) {
+      const std::vector<double> q = root_values(UnheardOutcomes::commit, seed, episodes);
+      EXPECT_FALSE(q[kSlide] < kSense + kGamma * kSlideOnce.commit_after() - 1e-9) << seed;
+      EXPECT_FALSE(q[kStrike] < kSense + kGamma * kStrikeOnce.commit_after() - 1e-9) << seed;
+    }
 }
 
 // Q of a sensing action from the report's uniform prior when only outcome o was heard and its
 // child is worth v, as `unheard` counts the other outcomes (search_tree.h, UnheardOutcomes).
 double one_heard_outcome(UnheardOutcomes unheard, const OneSensing& once, int o, double v) {
-  const double p = once.probability[o], c = once.commit[o];
   if (unheard == UnheardOutcomes::share) return kSense + kGamma * v;  // v stands for all
-  const double excess = std::max(p * v, c) - c;
-  double future = once.commit_after() + excess;
-  if (unheard == UnheardOutcomes::gap) {
-    // Every object has a bin worth 10, so knowing the object after o is worth 10 P(o), and what
-    // knowing it would add after o is 10 P(o) - P(o) commit(o); over all outcomes 10 - Σ commit.
-    const double gap_o = 10 * p - c, gap_all = 10 - once.commit_after();
-    future += std::clamp(excess / gap_o, 0.0, 1.0) * (gap_all - gap_o);
-  }
-  return kSense + kGamma * future;
+  const double p = once.probability[o], c = once.commit[o];
+  return kSense + kGamma * (once.commit_after() + std::max(p * v, c) - c);
 }
 
 TEST(AbtUnheardOutcomes, OneHeardOutcomeStandsForAllOrOnlyForItself) {
   // The root branches from the first episode, and an untried action goes first: the first four
   // episodes try slide, strike, A and B in turn, so after 4 each sensing action has one heard
-  // outcome o, whose child holds one leaf value v, the same under every estimate (same seed, same
+  // outcome o, whose child holds one leaf value v, the same under both estimates (same seed, same
   // rollouts). Shared, v stands for every outcome, so Q = -1 + 0.99 v gives v; from it, Q at
-  // commit and at gap for the one o that was heard.
+  // commit for the one o that was heard.
   for (int seed = 1; seed <= 10; ++seed) {
     const std::vector<double> shared = root_values(UnheardOutcomes::share, seed, 4);
-    for (UnheardOutcomes unheard : {UnheardOutcomes::commit, UnheardOutcomes::gap}) {
-      const std::vector<double> q = root_values(unheard, seed, 4);
-      for (auto [action, once] : {std::pair{kSlide, kSlideOnce}, std::pair{kStrike, kStrikeOnce}}) {
-        const double v = (shared[action] - kSense) / kGamma;
-        double nearest = std::numeric_limits<double>::infinity();
-        for (int o = 0; o < 4; ++o)
-          nearest = std::min(nearest, std::abs(q[action] - one_heard_outcome(unheard, once, o, v)));
-        EXPECT_LT(nearest, 1e-9) << unheard_outcomes_name(unheard) << ", seed " << seed
-                                 << ", action " << action;
-      }
+    const std::vector<double> q = root_values(UnheardOutcomes::commit, seed, 4);
+    for (auto [action, once] : {std::pair{kSlide, kSlideOnce}, std::pair{kStrike, kStrikeOnce}}) {
+      const double v = (shared[action] - kSense) / kGamma;
+      double nearest = std::numeric_limits<double>::infinity();
+      for (int o = 0; o < 4; ++o)
+        nearest = std::min(
+            nearest, std::abs(q[action] - one_heard_outcome(UnheardOutcomes::commit, once, o, v)));
+      EXPECT_LT(nearest, 1e-9) << "seed " << seed << ", action " << action;
     }
   }
 }

@@ -47,10 +47,8 @@ void add_planner_options(CLI::App& cmd, solvers::PlannerOverrides& f) {
                  "problem, else lookahead; docs/planning.md)");
   cmd.add_option("--unheard", f.unheard,
                  "ABT with leaf policy/exact: how a sensing action's outcomes no episode has heard "
-                 "yet count: share (the heard outcomes' values, in proportion; the default), "
-                 "commit (the value of sorting right after them, a lower bound) or gap (commit "
-                 "plus the share of the value of knowing the object the heard ones gained; "
-                 "docs/planning.md)")
+                 "yet count: share (the heard outcomes' values, in proportion; the default) or "
+                 "commit (the value of sorting right after them, a lower bound; docs/planning.md)")
       ->check(CLI::IsMember(solvers::unheard_outcomes_names()));
   cmd.add_option("--exact-share", f.exact_share,
                  "--leaf exact/exact-offline: share of each step's budget spent refining the exact "
