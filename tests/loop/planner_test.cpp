@@ -36,6 +36,8 @@ TEST(Planner, TheProblemFilesPlannerByDefault) {
                                      {"max_depth", 100},
                                      // ABT on an identification problem: the default policy leaf
                                      {"leaf", "policy"},
+                                     // unheard outcomes share the heard ones' values (the default)
+                                     {"unheard", "share"},
                                      {"expand_after", solvers::LeafOptions{}.expand_after},
                                      {"root_particles", 1000},
                                      {"branch_threshold", 0.0}}}};
