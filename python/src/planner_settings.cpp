@@ -46,8 +46,7 @@ const char* planner_settings_doc() {
          "best_single, information_gain, random), policy (offline: policy.json), episodes or "
          "step_ms (search per step), exploration, depth, leaf ('policy', 'exact', "
          "'exact-offline', 'lookahead', 'heuristic', 'rollout'), unheard ('share' or 'commit'), "
-         "expand_after, exact_share, "
-         "offline_expansions, root_particles, branch_threshold.";
+         "expand_after, exact_share, offline_expansions, root_particles, branch_threshold.";
 }
 
 }  // namespace echoplan::python

@@ -80,14 +80,21 @@ void weigh(const SensingPolicy& beliefs, UnheardOutcomes unheard, BeliefNode& no
   }
   if (!action.weighed) {
     action.expected_reward = beliefs.expected_reward(belief, a);
-    action.live_probability = beliefs.live_probability(belief, a);
+    // Each estimate needs one of these two: share scales by the chance of going on, commit sums
+    // each outcome's commit term.
+    action.live_probability = commit ? 0.0 : beliefs.live_probability(belief, a);
     action.commit_after_sensing = commit ? beliefs.commit_after_sensing(belief, a) : 0.0;
     action.weighed = true;
   }
   for (std::size_t k = action.child_probability.size(); k < action.children.size(); ++k) {
     const int o = action.children[k].observation.index;
-    action.child_probability.push_back(beliefs.observation_probability(belief, a, o));
-    if (commit) action.child_commit.push_back(beliefs.commit_after(belief, a, o));
+    if (commit) {
+      const SensingPolicy::OutcomeTerm term = beliefs.commit_after(belief, a, o);
+      action.child_probability.push_back(term.probability);
+      action.child_commit.push_back(term.commit);
+    } else {
+      action.child_probability.push_back(beliefs.observation_probability(belief, a, o));
+    }
   }
 }
 

@@ -58,6 +58,10 @@ LeafMode default_leaf_mode(const std::string& solver, const pomdp::Model& model)
   return LeafMode::lookahead;
 }
 
+bool follows_exact_belief(LeafMode mode) {
+  return mode == LeafMode::policy || mode == LeafMode::exact || mode == LeafMode::exact_offline;
+}
+
 std::unique_ptr<LeafValue> make_leaf_value(const LeafOptions& options, const pomdp::ModelPtr& model,
                                            LeafUse use) {
   const LeafMode mode = options.mode;

@@ -62,6 +62,9 @@ std::vector<std::string> leaf_mode_names();
 // "Certified share of V*", but as the default it fails the ROS loop test whose microphone carries
 // no evidence: docs/planning.md.)
 LeafMode default_leaf_mode(const std::string& solver, const pomdp::Model& model);
+// True for the modes that follow the exact belief (policy, exact, exact-offline): only these know
+// P(o | b, a), so only ABT takes them.
+bool follows_exact_belief(LeafMode mode);
 
 struct LeafOptions {
   LeafMode mode = LeafMode::lookahead;

@@ -41,8 +41,7 @@ void SearchOptions::validate() const {
   if (leaf.offline_expansions < 1) throw InputError("offline expansions must be >= 1");
   // Only a leaf that follows the exact belief knows P(o | b, a) and the value of committing after
   // o.
-  if (unheard == UnheardOutcomes::commit && leaf.mode != LeafMode::policy &&
-      leaf.mode != LeafMode::exact && leaf.mode != LeafMode::exact_offline)
+  if (unheard == UnheardOutcomes::commit && !follows_exact_belief(leaf.mode))
     throw InputError(std::string("unheard outcomes at commit needs a leaf value that follows the "
                                  "exact belief (policy, exact or exact-offline), not ") +
                      leaf_mode_name(leaf.mode));

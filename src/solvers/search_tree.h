@@ -118,8 +118,8 @@ struct ActionNode {
   std::vector<ObservationChild> children;
   // ABT's exact-belief terms at the node's weighed_belief: for children[0..k) (children are only
   // ever appended) P(o | b, a) and, with unheard outcomes at commit, SensingPolicy::commit_after(b,
-  // a, o); the expected reward, the chance the episode goes on and (unheard at commit) the value
-  // of sensing once with this action and then committing.
+  // a, o).commit; the expected reward, and either the chance the episode goes on (unheard shared)
+  // or the value of sensing once with this action and then committing (unheard at commit).
   std::vector<double> child_probability, child_commit;
   double expected_reward = 0.0;
   double live_probability = 0.0;

@@ -149,9 +149,10 @@ double SensingPolicy::commit_after_sensing(const std::vector<double>& belief, in
   return expect_over_outcomes(belief, a, [this](const auto& after) { return commit_value(after); });
 }
 
-double SensingPolicy::commit_after(const std::vector<double>& belief, int a, int o) const {
+SensingPolicy::OutcomeTerm SensingPolicy::commit_after(const std::vector<double>& belief, int a,
+                                                       int o) const {
   const double p = update(belief, a, o, scratch2_);
-  return p > 0.0 ? p * commit_value(scratch2_) : 0.0;
+  return {p, p > 0.0 ? p * commit_value(scratch2_) : 0.0};
 }
 
 double SensingPolicy::expected_reward(const std::vector<double>& belief, int a) const {

@@ -64,9 +64,13 @@ class SensingPolicy {
   // or discount: Σ_o P(o | b, a) commit_value(b after o) (an outcome that ends the episode counts
   // 0).
   double commit_after_sensing(const std::vector<double>& belief, int action) const;
-  // One outcome's term of that sum: P(o | b, a) commit_value(b after o); 0 for an outcome that
-  // ends the episode or cannot be heard.
-  double commit_after(const std::vector<double>& belief, int action, int observation) const;
+  // One outcome's term of that sum, `commit` = P(o | b, a) commit_value(b after o) (0 for an
+  // outcome that ends the episode or cannot be heard), with its `probability` P(o | b, a) (the
+  // same bits as observation_probability()).
+  struct OutcomeTerm {
+    double probability, commit;
+  };
+  OutcomeTerm commit_after(const std::vector<double>& belief, int action, int observation) const;
   // Σ_s b(s) R(s, a).
   double expected_reward(const std::vector<double>& belief, int action) const;
   // The best terminal action's expected reward under `belief`.
