@@ -64,6 +64,8 @@ fi
   --actions press,grasp,lift,drop,poke,push,shake,tap,squeeze \
   --action-scales 0.3,0.4,0.5,0.6,0.7,0.8,0.9,1.0,1.2 --modality audio:8:1.5 \
   --modality haptic:4:1.0 --group-separation 1.0 --seed "$seed" $set_options
+# The planner of the unheard and commit comparisons (one definition, so both run the same arm).
+commit_lookalike='  - {name: plan_commit_lookalike, strategy: plan, unheard: commit, lookalike: true}'
 if [ "${ARMS:-}" = exact ]; then
   arms='  - {name: plan_exact, strategy: plan, leaf: exact}
   - {name: plan, strategy: plan}
@@ -74,14 +76,14 @@ elif [ "${ARMS:-}" = graded ]; then
   - {name: information_gain_graded, strategy: information_gain, observations: graded}
   - {name: information_gain, strategy: information_gain}'
 elif [ "${ARMS:-}" = unheard ]; then
-  arms='  - {name: plan_commit_lookalike, strategy: plan, unheard: commit, lookalike: true}
+  arms="$commit_lookalike
   - {name: plan_lookalike, strategy: plan, lookalike: true}
   - {name: plan_commit, strategy: plan, unheard: commit}
   - {name: plan, strategy: plan}
-  - {name: information_gain, strategy: information_gain}'
+  - {name: information_gain, strategy: information_gain}"
 elif [ "${ARMS:-}" = commit ]; then
-  arms='  - {name: plan_commit_lookalike, strategy: plan, unheard: commit, lookalike: true}
-  - {name: information_gain, strategy: information_gain}'
+  arms="$commit_lookalike
+  - {name: information_gain, strategy: information_gain}"
 elif [ "${ARMS:-}" = unlike ]; then
   arms='  - {name: plan_lookalike, strategy: plan, lookalike: true}
   - {name: plan_atypical, strategy: plan, atypical: true}

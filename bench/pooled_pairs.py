@@ -23,33 +23,41 @@ def fail(message):
     sys.exit(2)
 
 
-def rewards_by_pair(campaign, arm):
+COLUMNS = ("arm", "object", "session", "discounted_reward")
+
+
+def rewards_by_arm(campaign, arms):
+    """{arm: {(object, session): discounted reward}} for `arms`, from one read of trials.csv."""
     path = os.path.join(campaign, "trials.csv")
     try:
         with open(path, newline="") as f:
-            rows = [row for row in csv.DictReader(f) if row["arm"] == arm]
+            reader = csv.DictReader(f)
+            missing = [c for c in COLUMNS if c not in (reader.fieldnames or [])]
+            if missing:
+                fail(f"{path}: no column {', '.join(missing)}")
+            rows = [row for row in reader if row["arm"] in arms]
     except OSError as e:
         fail(f"{path}: {e.strerror}")
-    except KeyError as e:
-        fail(f"{path}: no column {e}")
-    if not rows:
-        fail(f"{path}: no trials of arm '{arm}'")
-    rewards = {}
-    for line, row in enumerate(rows, start=2):
-        key = (row["object"], row["session"])
-        if key in rewards:
+    rewards = {arm: {} for arm in arms}
+    for row in rows:
+        arm, key = row["arm"], (row["object"], row["session"])
+        if key in rewards[arm]:
             fail(f"{path}: arm '{arm}' has object {key[0]} session {key[1]} twice; "
                  "only a campaign with one trial per recorded session pairs this way")
         try:
-            rewards[key] = float(row["discounted_reward"])
+            rewards[arm][key] = float(row["discounted_reward"])
         except ValueError:
             fail(f"{path}: arm '{arm}': discounted_reward '{row['discounted_reward']}' "
                  "is not a number")
+    for arm in arms:
+        if not rewards[arm]:
+            fail(f"{path}: no trials of arm '{arm}'")
     return rewards
 
 
 def differences(campaign, arm, baseline):
-    a, b = rewards_by_pair(campaign, arm), rewards_by_pair(campaign, baseline)
+    rewards = rewards_by_arm(campaign, (arm, baseline))
+    a, b = rewards[arm], rewards[baseline]
     if a.keys() != b.keys():
         fail(f"{campaign}: arms '{arm}' and '{baseline}' did not run the same trials")
     return [a[key] - b[key] for key in sorted(a)]
