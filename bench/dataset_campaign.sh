@@ -21,13 +21,16 @@
 # first) and without, the default planner with lookalikes and without, and information_gain.
 # With ARMS=commit (environment): two arms, plan_commit_lookalike against information_gain only
 # (the pair the unheard comparison leaves open, in a fifth of its time).
+# With ARMS=auto (environment): two arms, plan_auto_lookalike (unheard: auto: share or commit chosen
+# by self-play on the folds' problems, experiment/unheard_choice.h) against information_gain; prints
+# the choice (unheard.json). Where it chooses commit its trials are ARMS=commit's, seed for seed.
 # With OBSERVATIONS=graded (environment): the five arms all hear grades.
 # With COSTS=costed (environment): each behaviour priced (task.costs), from 0.5 for the least
 # informative to 4.5 for the most, as published container studies price theirs: then information
 # must be bought, and the arms are compared in cost-weighted reward.
 # With SEED=N (environment, default 1): the feature set and the campaign drawn from seed N, so
 # another seed gives independent trials (a new set of objects and sessions) to pool with seed 1's.
-# Usage: [ARMS=exact|graded|unlike|unheard|commit] [SET=recorded] [COSTS=costed] [OBSERVATIONS=graded]
+# Usage: [ARMS=exact|graded|unlike|unheard|commit|auto] [SET=recorded] [COSTS=costed] [OBSERVATIONS=graded]
 #        [SEED=N] bench/dataset_campaign.sh BUILD_DIR [EPISODES] [HOLD_OUT] [WORKERS] [OUT]
 set -eu
 # A misspelt switch would silently run another campaign than the one asked for.
@@ -38,7 +41,7 @@ check() {
     ;;
   esac
 }
-check ARMS "${ARMS:-}" " exact graded unlike unheard commit"
+check ARMS "${ARMS:-}" " exact graded unlike unheard commit auto"
 check SET "${SET:-}" " recorded"
 check COSTS "${COSTS:-}" " costed"
 check OBSERVATIONS "${OBSERVATIONS:-}" " graded"
@@ -84,6 +87,9 @@ elif [ "${ARMS:-}" = unheard ]; then
 elif [ "${ARMS:-}" = commit ]; then
   arms="$commit_lookalike
   - {name: information_gain, strategy: information_gain}"
+elif [ "${ARMS:-}" = auto ]; then
+  arms='  - {name: plan_auto_lookalike, strategy: plan, unheard: auto, lookalike: true}
+  - {name: information_gain, strategy: information_gain}'
 elif [ "${ARMS:-}" = unlike ]; then
   arms='  - {name: plan_lookalike, strategy: plan, lookalike: true}
   - {name: plan_atypical, strategy: plan, atypical: true}
@@ -120,3 +126,4 @@ YAML
 cat "$dir/time"
 grep -E "^arm|^  all|minus" "$out/summary.txt"
 grep "^time:" "$out/summary.txt" || true
+if [ -f "$out/unheard.json" ]; then cat "$out/unheard.json"; fi

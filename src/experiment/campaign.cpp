@@ -13,6 +13,7 @@
 #include "common/file_io.h"
 #include "experiment/campaign_figures.h"
 #include "experiment/html_report.h"
+#include "experiment/unheard_choice.h"
 
 namespace echoplan::experiment {
 
@@ -72,9 +73,9 @@ Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) 
   return c;
 }
 
-bool prepare_training(Campaign& campaign, const ProgressFn& progress,
-                      const std::atomic<bool>& stop) {
-  std::optional<ArmLoops> loops = campaign.world->prepare(campaign.config, progress, stop);
+bool prepare_training(Campaign& campaign, const ProgressFn& progress, const std::atomic<bool>& stop,
+                      int workers) {
+  std::optional<ArmLoops> loops = campaign.world->prepare(campaign.config, progress, stop, workers);
   if (!loops) return false;
   campaign.loops = std::move(*loops);
   return true;
@@ -102,6 +103,8 @@ std::string rebuild_report(const Campaign& campaign, bool figures) {
   CampaignResults results = campaign.results;
   results.entries = std::move(entries);
   results.heard = campaign.world->heard(campaign.config);
+  if (fs::exists(dir / kUnheardChoices))
+    results.unheard_choices = read_unheard_choices(dir / kUnheardChoices);
   write_tables(dir, results);
   write_file_atomically(dir / "summary.json", summary_json(results).dump(2) + "\n");
   const std::string text = summary_text(results);
@@ -149,6 +152,14 @@ std::string merge_campaigns(const fs::path& directory, const std::vector<fs::pat
       if (error)
         throw InputError((directory / "training").string(), 0,
                          "cannot copy the training set: " + error.message());
+      break;
+    }
+
+  // The unheard choices likewise (every shard's self-play made the same ones).
+  for (const fs::path& shard : shards)
+    if (fs::exists(shard / kUnheardChoices)) {
+      write_file_atomically(directory / kUnheardChoices,
+                            read_text_file((shard / kUnheardChoices).string(), "unheard choices"));
       break;
     }
 

@@ -47,10 +47,10 @@ struct Campaign {
 Campaign open_campaign(const CampaignConfig& config, const std::filesystem::path& directory);
 
 // Prepares what the trials need (CampaignWorld::prepare: each fold's model, synthesised, trained
-// or fitted, and the loops). `progress(stage, done, total)` reports its stages. Returns false
-// when stopped.
-bool prepare_training(Campaign& campaign, const ProgressFn& progress,
-                      const std::atomic<bool>& stop);
+// or fitted, a dataset arm's unheard estimate chosen, and the loops) on `workers` threads.
+// `progress(stage, done, total)` reports its stages. Returns false when stopped.
+bool prepare_training(Campaign& campaign, const ProgressFn& progress, const std::atomic<bool>& stop,
+                      int workers = 1);
 
 // The trials of `shard` that DIR's journal does not hold yet, in id order.
 std::vector<TrialJob> remaining_jobs(const Campaign& campaign, const Shard& shard);

@@ -40,6 +40,12 @@ std::vector<std::string> observation_choices() { return perception::observation_
 
 std::vector<std::string> leaf_choices() { return solvers::leaf_mode_names(); }
 
+std::vector<std::string> unheard_choices() {
+  std::vector<std::string> choices = solvers::unheard_outcomes_names();
+  choices.emplace_back(kUnheardByPlay);
+  return choices;
+}
+
 std::vector<std::string> strategy_choices() {
   std::vector<std::string> choices{kPlanStrategy};
   for (const std::string& name : solvers::strategy_names()) choices.push_back(name);
@@ -98,7 +104,7 @@ const std::vector<Field<CampaignArm>>& arm_fields() {
       {.key = "unheard",
        .member = &CampaignArm::unheard,
        .identity = Identity::unless_default,
-       .choices = solvers::unheard_outcomes_names},
+       .choices = unheard_choices},
   };
   return fields;
 }
@@ -222,6 +228,14 @@ const std::vector<Field<PlannerConfig>>& planner_fields() {
       {.key = "episodes", .member = &PlannerConfig::episodes},
       {.key = "step_ms", .member = &PlannerConfig::step_ms},
       {.key = "max_steps", .member = &PlannerConfig::max_steps, .min = 1},
+      // Left out of the identity at its default: campaigns written before it existed.
+      {.key = "self_play_trials",
+       .member = &PlannerConfig::self_play_trials,
+       .identity = Identity::unless_default,
+       .worlds = Worlds::recorded_data,
+       .min = 2,
+       .elsewhere = "only for a dataset world: an arm there with unheard: auto plays this many "
+                    "trials per estimate on its folds' problems"},
   };
   return fields;
 }
@@ -341,6 +355,10 @@ std::vector<CampaignArm> read_arms(const YamlReader& f, const YAML::Node& root,
     if (!arm.unheard.empty() && arm.strategy != kPlanStrategy)
       f.fail(a, "unheard: only an arm that plans (strategy: plan) searches; '" + arm.strategy +
                     "' is a fixed strategy");
+    if (arm.unheard == kUnheardByPlay && !at.recorded_data)
+      f.fail(a,
+             "unheard: auto plays each fold's problem to choose, and only a dataset world has "
+             "folds; name share or commit");
     for (const CampaignArm& other : read)
       if (other.name == arm.name) f.fail(a, "two arms are named '" + arm.name + "'");
     read.push_back(std::move(arm));

@@ -287,6 +287,7 @@ nlohmann::json summary_json(const CampaignResults& results) {
     rows.push_back(std::move(r));
   }
   j["results"] = std::move(rows);
+  if (!results.unheard_choices.empty()) j["unheard_choices"] = results.unheard_choices;
   const auto& arms = results.config.arms;
   for (std::size_t k = 1; k < arms.size(); ++k) {
     const TrialSummary d = paired_difference(results, arms[0].name, arms[k].name);
@@ -392,6 +393,16 @@ std::string summary_text(const CampaignResults& results) {
       out += fmt::format("  {:<24} belief {:.3f}, sorted right {:.3f} ({:+.1f} points, {} sorts)\n",
                          c.arm, c.mean_belief, c.share_right,
                          100.0 * (c.mean_belief - c.share_right), c.sorts);
+  if (!results.unheard_choices.empty())
+    out +=
+        "\nhow each arm with unheard: auto counts outcomes it has not heard (self-play on its "
+        "folds' problems):\n";
+  for (const nlohmann::json& c : results.unheard_choices)
+    out += fmt::format(
+        "  {:<24} {} (commit minus share {:+.2f} ± {:.2f} expected reward per trial, {} pairs)\n",
+        c.at("arm").get<std::string>(), c.at("chosen").get<std::string>(),
+        c.at("commit_minus_share").get<double>(), c.at("ci95").get<double>(),
+        c.at("self_play_trials").get<int>());
   return out;
 }
 

@@ -46,7 +46,9 @@ solvers::PlannerOverrides arm_planner(const CampaignConfig& config, const Campai
   overrides.step_ms = config.planner.step_ms;
   if (arm.strategy == kPlanStrategy) {
     overrides.leaf = arm.leaf;
-    overrides.unheard = arm.unheard;
+    // auto is the campaign's to resolve (experiment/unheard_choice.h) before any loop is built;
+    // until then the arm checks as the search's default.
+    if (arm.unheard != kUnheardByPlay) overrides.unheard = arm.unheard;
   }
   return overrides;
 }

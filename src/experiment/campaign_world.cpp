@@ -38,7 +38,7 @@ class ProblemFileWorld final : public CampaignWorld {
 
   void open(CampaignConfig& config, CampaignResults& results, InputFiles& files) override;
   std::optional<ArmLoops> prepare(const CampaignConfig& config, const ProgressFn& progress,
-                                  const std::atomic<bool>& stop) override;
+                                  const std::atomic<bool>& stop, int workers) override;
   std::vector<HeardCounts> heard(const CampaignConfig& config) const override;
   std::vector<TemplateMatrix> templates() const override {
     return template_matrices(recordings_, training_objects_, training_actions_);
@@ -232,7 +232,7 @@ std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier
 
 std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
                                                   const ProgressFn& progress,
-                                                  const std::atomic<bool>& stop) {
+                                                  const std::atomic<bool>& stop, int /*workers*/) {
   if (config.training.recordings.empty() && config.training.recordings_per_pair > 0 &&
       !loop::synthesise_training_set(simulated_training(config), progress, stop))
     return std::nullopt;
@@ -323,10 +323,13 @@ class RecordedDataWorld final : public CampaignWorld {
   explicit RecordedDataWorld(fs::path directory) : directory_(std::move(directory)) {}
   void open(CampaignConfig& config, CampaignResults& results, InputFiles& files) override;
   std::optional<ArmLoops> prepare(const CampaignConfig& config, const ProgressFn& progress,
-                                  const std::atomic<bool>& stop) override {
+                                  const std::atomic<bool>& stop, int workers) override {
     if (!fit_dataset_folds(*trials_, config, progress, stop)) return std::nullopt;
     write_fold_problems(directory_, config, *trials_);
-    return dataset_loops(config, *trials_);
+    const std::optional<CampaignConfig> chosen =
+        choose_dataset_unheard(directory_, config, *trials_, progress, stop, workers);
+    if (!chosen) return std::nullopt;
+    return dataset_loops(*chosen, *trials_);
   }
 
  private:
@@ -337,9 +340,21 @@ class RecordedDataWorld final : public CampaignWorld {
 void RecordedDataWorld::open(CampaignConfig& config, CampaignResults& results, InputFiles& files) {
   trials_ = std::make_shared<DatasetTrials>(open_dataset(config, files));
   config.groups = dataset_groups(*trials_);
-  // Every arm's strategy is checked against the names problem now, not in a worker.
-  for (const CampaignArm& arm : config.arms)
+  // Every arm's strategy is checked against the names problem now, not in a worker; an arm that
+  // leaves the unheard estimate to self-play, with both estimates.
+  for (const CampaignArm& arm : config.arms) {
     loop::check_planner(arm_planner(config, arm), *trials_->names);
+    if (arm.unheard != kUnheardByPlay) continue;
+    solvers::PlannerOverrides commit = arm_planner(config, arm);
+    commit.unheard = solvers::unheard_outcomes_name(solvers::UnheardOutcomes::commit);
+    try {
+      loop::check_planner(commit, *trials_->names);
+    } catch (const InputError& e) {
+      throw InputError(
+          config.source, 0,
+          fmt::format("arm '{}': unheard: auto may choose commit, and {}", arm.name, e.problem()));
+    }
+  }
   results.spec = trials_->names->model->spec();
   results.right_action = right_actions(*trials_);
   results.right_share = right_shares(*trials_, config.rewards);

@@ -32,10 +32,11 @@ class CampaignWorld {
   // (recorded data: one per object, a trial per session) and the report's skeleton in `results`
   // (spec, planned trials, presentation).
   virtual void open(CampaignConfig& config, CampaignResults& results, InputFiles& files) = 0;
-  // Trains or fits each fold's model (progress: "synthesise", the trainer's stages, "fit folds")
-  // and returns the checked loop of every arm, group and trial; nothing when stopped.
+  // Trains or fits each fold's model (progress: "synthesise", the trainer's stages, "fit folds",
+  // "choose unheard") and returns the checked loop of every arm, group and trial; nothing when
+  // stopped. `workers` threads share what can run in parallel (results do not depend on it).
   virtual std::optional<ArmLoops> prepare(const CampaignConfig& config, const ProgressFn& progress,
-                                          const std::atomic<bool>& stop) = 0;
+                                          const std::atomic<bool>& stop, int workers) = 0;
   // What the page shows of the world beside the trials: the training set heard by the
   // reference's classifier, and its template figures.
   virtual std::vector<HeardCounts> heard(const CampaignConfig& config) const;

@@ -265,6 +265,37 @@ TEST_F(DatasetCampaignConfig, ReadsTheDataHoldOutGroupsRewardsAndStrategies) {
   EXPECT_EQ(to_json(back), to_json(c));
 }
 
+// unheard: auto chooses by self-play on the folds' problems: a dataset world's, with its trial
+// count; left out of the identity at its default.
+TEST_F(DatasetCampaignConfig, UnheardAutoAndItsSelfPlayTrialsBelongToADatasetWorld) {
+  std::string text = text_;
+  text.replace(text.find("{name: plan, strategy: plan}"), 28,
+               "{name: plan, strategy: plan, unheard: auto}");
+  const CampaignConfig c = parse_campaign_config(text, source());
+  EXPECT_EQ(c.arms[0].unheard, "auto");
+  EXPECT_EQ(c.planner.self_play_trials, 200);
+  std::filesystem::create_directories(dir_ / "data" / "shake");  // the identity hashes the data
+  std::ofstream(dir_ / "data" / "shake" / "audio.csv") << "object,session,f\nmug,1,0.5\n";
+  EXPECT_FALSE(c.identity()["planner"].contains("self_play_trials"));
+  text.replace(text.find("planner: {episodes: 100}"), 24,
+               "planner: {episodes: 100, self_play_trials: 40}");
+  const CampaignConfig forty = parse_campaign_config(text, source());
+  EXPECT_EQ(forty.planner.self_play_trials, 40);
+  EXPECT_EQ(forty.identity()["planner"]["self_play_trials"], 40);
+  EXPECT_EQ(to_json(campaign_config_from_json(to_json(forty), "campaign.json")), to_json(forty));
+  text.replace(text.find("self_play_trials: 40"), 20, "self_play_trials: 1");
+  EXPECT_NE(error(text).find("self_play_trials"), std::string::npos) << error(text);
+
+  const std::string model_world = error_of(with_arm("{name: a, problem: p.yaml, unheard: auto}"));
+  EXPECT_EQ(model_world.substr(0, 2), "3:") << model_world;
+  EXPECT_NE(model_world.find("only a dataset world has folds"), std::string::npos) << model_world;
+  std::string planner = kMinimal;
+  planner.replace(planner.find("planner: {episodes: 100}"), 24,
+                  "planner: {episodes: 100, self_play_trials: 40}");
+  EXPECT_NE(error_of(planner).find("only for a dataset world"), std::string::npos)
+      << error_of(planner);
+}
+
 TEST_F(DatasetCampaignConfig, CostsPriceBehavioursAndEnterTheIdentityOnlyWhenGiven) {
   std::string text = text_;
   const std::string rewards = "task: {rewards: {right: 5, wrong: -50, sense: -2}}";

@@ -6,10 +6,12 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include "../perception/synthetic_feature_set.h"
 #include "common/error.h"
 #include "experiment/campaign.h"
+#include "experiment/unheard_choice.h"
 
 namespace echoplan::experiment {
 namespace {
@@ -217,6 +219,114 @@ TEST(DatasetCampaign, AnArmWithLookalikesHasItsCopiesAndItsFoldProblem) {
   EXPECT_TRUE(fs::is_regular_file(dir / "folds/1/problem.yaml"));
   EXPECT_TRUE(fs::is_regular_file(dir / "folds/1/problem-lookalike.yaml"));
   EXPECT_EQ(results.entries.size(), 36u);
+}
+
+// An arm with unheard: auto plans, trial for trial, as the arm that names the estimate its
+// self-play chose (unheard.json), and a stopped self-play prepares nothing. On the shipped example
+// (four behaviours, none sorting alone) the two estimates decide differently.
+TEST(DatasetCampaign, AnArmWithUnheardAutoPlaysAsTheEstimateItsSelfPlayChose) {
+  const fs::path data = fs::path(ECHOPLAN_SOURCE_DIR) / "experiments/data/synthetic_objects";
+  const fs::path folder = perception::test_features::fresh_folder("dataset_unheard_auto");
+  const std::string text = "seed: 4\nworld: {type: dataset, data: " + data.string() +
+                           ", groups: " + (data / "groups.csv").string() +
+                           "}\narms:\n  - {name: auto, strategy: plan, unheard: auto}\n"
+                           "  - {name: share, strategy: plan, unheard: share}\n"
+                           "  - {name: commit, strategy: plan, unheard: commit}\n"
+                           "planner: {solver: abt, episodes: 300, max_steps: 20, "
+                           "self_play_trials: 24}\n";
+  const CampaignConfig config = parse_campaign_config(text, (folder / "campaign.yaml").string());
+  const fs::path dir = folder / "out";
+  const CampaignResults results = run(config, dir);
+  const nlohmann::json chosen = nlohmann::json::parse(std::ifstream(dir / "unheard.json"));
+  ASSERT_EQ(chosen["arms"].size(), 1u);
+  EXPECT_EQ(chosen["arms"][0]["arm"], "auto");
+  EXPECT_EQ(chosen["arms"][0]["self_play_trials"], 24);
+  const std::string estimate = chosen["arms"][0]["chosen"];
+  ASSERT_TRUE(estimate == "share" || estimate == "commit") << estimate;
+  EXPECT_EQ(estimate == "commit", chosen["arms"][0]["commit_minus_share"].get<double>() > 0.0);
+  std::map<std::string, TrialResult> named, other;
+  for (const JournalEntry& e : results.entries)
+    if (e.arm != "auto") (e.arm == estimate ? named : other)[e.object + "/" + e.session] = e.result;
+  int compared = 0, unlike_other = 0;
+  for (const JournalEntry& e : results.entries) {
+    if (e.arm != "auto") continue;
+    const TrialResult& same = named.at(e.object + "/" + e.session);
+    EXPECT_EQ(e.result.record.action_counts, same.record.action_counts) << e.object << e.session;
+    EXPECT_EQ(e.result.record.discounted_reward, same.record.discounted_reward);
+    unlike_other +=
+        e.result.record.action_counts != other.at(e.object + "/" + e.session).record.action_counts;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 48);
+  std::stringstream summary;
+  summary << std::ifstream(dir / "summary.txt").rdbuf();
+  EXPECT_NE(summary.str().find("  auto                     " + estimate + " (commit minus share"),
+            std::string::npos)
+      << summary.str();
+  const nlohmann::json json = nlohmann::json::parse(std::ifstream(dir / "summary.json"));
+  EXPECT_EQ(json["unheard_choices"], chosen["arms"]);
+  EXPECT_GT(unlike_other, 0) << "share and commit decided alike: the test cannot tell them apart";
+
+  // Stopped during the self-play: nothing prepared, no choice written.
+  Campaign stopped = open_campaign(config, folder / "stopped");
+  std::atomic<bool> stop{false};
+  int played = 0;
+  EXPECT_FALSE(prepare_training(
+      stopped,
+      [&](const std::string& what, int, int) {
+        if (what == "choose unheard" && ++played == 3) stop = true;
+      },
+      stop));
+  EXPECT_GE(played, 3);
+  EXPECT_FALSE(fs::exists(folder / "stopped" / "unheard.json"));
+
+  // A leaf commit cannot use is refused before any work.
+  std::string rollout = text;
+  rollout.replace(rollout.find("unheard: auto}"), 14, "unheard: auto, leaf: rollout}");
+  try {
+    open_campaign(parse_campaign_config(rollout, (folder / "campaign.yaml").string()),
+                  folder / "rollout");
+    FAIL() << "no error for unheard: auto with a rollout leaf";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.problem().find("arm 'auto': unheard: auto may choose commit"), std::string::npos)
+        << e.what();
+  }
+
+  // The choice does not depend on the workers: every trial's streams come from (seed, trial).
+  UnheardSelfPlay play;
+  play.problems = {std::make_shared<const pomdp::Problem>(
+                       pomdp::load_problem((dir / "folds/1/problem.yaml").string())),
+                   std::make_shared<const pomdp::Problem>(
+                       pomdp::load_problem((dir / "folds/2/problem.yaml").string()))};
+  play.planner.episodes = 300;
+  play.trials = 10;
+  const std::atomic<bool> never{false};
+  const std::optional<UnheardChoice> one = choose_unheard(play, {}, never);
+  play.workers = 2;
+  const std::optional<UnheardChoice> two = choose_unheard(play, {}, never);
+  ASSERT_TRUE(one && two);
+  EXPECT_EQ(one->difference, two->difference);
+  EXPECT_EQ(one->ci95, two->ci95);
+  EXPECT_EQ(one->chosen, two->chosen);
+}
+
+TEST(DatasetCampaign, UnheardChoicesThatAreNotACampaignsAreRefusedNamingTheFile) {
+  const fs::path file = perception::test_features::fresh_folder("unheard_file") / "unheard.json";
+  write_unheard_choices(file, {{"plan", {solvers::UnheardOutcomes::commit, 1.5, 0.5, 40}}});
+  const nlohmann::json arms = read_unheard_choices(file);
+  ASSERT_EQ(arms.size(), 1u);
+  EXPECT_EQ(arms[0]["chosen"], "commit");
+  EXPECT_EQ(arms[0]["self_play_trials"], 40);
+  for (const std::string text : {"{", "{\"arms\": [{\"arm\": \"plan\"}]}", "[]"}) {
+    std::ofstream(file) << text;
+    try {
+      read_unheard_choices(file);
+      FAIL() << "no error for " << text;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), file.string());
+      EXPECT_NE(e.problem().find("unheard choices"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(DatasetCampaign, TooFewSessionsOrObjectsToCalibrateOnAreRefusedBeforeAnyWork) {

@@ -61,7 +61,7 @@ void run_experiment(const ExperimentFlags& f) {
           }
           bar->update(done);
         },
-        stop_requested);
+        stop_requested, workers);
     if (bar) bar->finish();
     if (!complete) {
       spdlog::warn(

@@ -1,0 +1,140 @@
+#include "experiment/unheard_choice.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include "common/error.h"
+#include "common/file_io.h"
+#include "common/statistics.h"
+#include "experiment/expected_reward.h"
+#include "experiment/trial_records.h"
+#include "loop/loop.h"
+
+namespace echoplan::experiment {
+
+namespace {
+
+constexpr solvers::UnheardOutcomes kEstimates[] = {solvers::UnheardOutcomes::share,
+                                                   solvers::UnheardOutcomes::commit};
+
+// The loop of each estimate (outer) and problem (inner): the problem is the world (a table world).
+std::vector<std::vector<std::shared_ptr<const loop::LoopSpec>>> self_play_specs(
+    const UnheardSelfPlay& play) {
+  std::vector<std::vector<std::shared_ptr<const loop::LoopSpec>>> specs;
+  for (solvers::UnheardOutcomes estimate : kEstimates) {
+    auto& row = specs.emplace_back();
+    for (const auto& problem : play.problems) {
+      if (!problem->model->tabular() || problem->belief.type != pomdp::BeliefSettings::Type::exact)
+        throw InputError(problem->source_path, 0,
+                         "unheard: auto plays the problem as the world with an exact belief; "
+                         "this problem has no table or no exact belief");
+      loop::LoopSettings s;
+      s.problem = problem;
+      s.planner = play.planner;
+      s.planner.unheard = solvers::unheard_outcomes_name(estimate);
+      s.max_steps = play.max_steps;
+      row.push_back(std::make_shared<const loop::LoopSpec>(std::move(s)));
+    }
+  }
+  return specs;
+}
+
+}  // namespace
+
+std::optional<UnheardChoice> choose_unheard(const UnheardSelfPlay& play, const ProgressFn& progress,
+                                            const std::atomic<bool>& stop) {
+  if (play.problems.empty() || play.trials < 2 || play.workers < 1)
+    throw InputError(
+        fmt::format("unheard: auto needs a problem, 2 or more trials and a worker "
+                    "(given {} problems, {} trials, {} workers)",
+                    play.problems.size(), play.trials, play.workers));
+  const auto specs = self_play_specs(play);
+  const int jobs = 2 * play.trials;  // job j: estimate j / trials, trial j % trials
+  std::vector<std::vector<double>> expected(2, std::vector<double>(play.trials, 0.0));
+  std::atomic<int> next{0};
+  std::atomic<bool> failed{false};
+  std::exception_ptr first_error;
+  std::mutex mutex;
+  int finished = 0;
+  auto work = [&] {
+    try {
+      std::map<const loop::LoopSpec*, loop::Loop> loops;  // this thread's, one per spec it met
+      for (int j = next++; j < jobs && !failed && !stop; j = next++) {
+        const int e = j / play.trials, t = j % play.trials;
+        const auto& spec = specs[e][t % play.problems.size()];
+        auto it = loops.find(spec.get());
+        if (it == loops.end()) it = loops.emplace(spec.get(), loop::Loop(spec)).first;
+        const std::optional<loop::Trial> trial = it->second.run({t, -1, play.seed}, {}, &stop);
+        if (!trial) return;
+        const std::optional<double> value =
+            expected_discounted_reward(records_of(*trial).steps, *spec->problem().model->tabular());
+        if (!value)
+          throw std::logic_error("unheard: auto: a trial's belief does not fit its model");
+        std::lock_guard<std::mutex> lock(mutex);
+        expected[e][t] = *value;
+        if (progress) progress("choose unheard", ++finished, jobs);
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!first_error) first_error = std::current_exception();
+      failed = true;
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int w = 1; w < play.workers; ++w) threads.emplace_back(work);
+  work();
+  for (std::thread& thread : threads) thread.join();
+  if (first_error) std::rethrow_exception(first_error);
+  if (stop) return std::nullopt;
+
+  std::vector<double> difference(play.trials);
+  for (int t = 0; t < play.trials; ++t) difference[t] = expected[1][t] - expected[0][t];
+  const MeanInterval d = mean_ci95(difference);
+  UnheardChoice choice;
+  choice.chosen = d.mean > 0.0 ? solvers::UnheardOutcomes::commit : solvers::UnheardOutcomes::share;
+  choice.difference = d.mean;
+  choice.ci95 = d.half_width;
+  choice.trials = play.trials;
+  return choice;
+}
+
+void write_unheard_choices(const std::filesystem::path& file,
+                           const std::vector<ArmUnheardChoice>& choices) {
+  nlohmann::json arms = nlohmann::json::array();
+  for (const ArmUnheardChoice& c : choices)
+    arms.push_back({{"arm", c.arm},
+                    {"chosen", solvers::unheard_outcomes_name(c.choice.chosen)},
+                    {"commit_minus_share", c.choice.difference},
+                    {"ci95", c.choice.ci95},
+                    {"self_play_trials", c.choice.trials}});
+  const nlohmann::json j = {
+      {"what",
+       "each arm's unheard: auto, chosen by the expected reward per trial of commit minus share, "
+       "paired, on the folds' problems as the world (experiment/unheard_choice.h)"},
+      {"arms", std::move(arms)}};
+  write_file_atomically(file, j.dump(2) + "\n");
+}
+
+nlohmann::json read_unheard_choices(const std::filesystem::path& file) {
+  const nlohmann::json j =
+      nlohmann::json::parse(read_text_file(file.string(), "unheard choices"), nullptr, false);
+  const auto fits = [](const nlohmann::json& a) {
+    return a.is_object() && a.contains("arm") && a["arm"].is_string() && a.contains("chosen") &&
+           a["chosen"].is_string() && a.contains("commit_minus_share") &&
+           a["commit_minus_share"].is_number() && a.contains("ci95") && a["ci95"].is_number() &&
+           a.contains("self_play_trials") && a["self_play_trials"].is_number_integer();
+  };
+  if (j.is_discarded() || !j.is_object() || !j.contains("arms") || !j["arms"].is_array() ||
+      !std::all_of(j["arms"].begin(), j["arms"].end(), fits))
+    throw InputError(file.string(), 0,
+                     "is not a campaign's unheard choices (arms of arm, chosen, "
+                     "commit_minus_share, ci95, self_play_trials); remove it to choose again");
+  return j["arms"];
+}
+
+}  // namespace echoplan::experiment
