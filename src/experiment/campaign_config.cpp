@@ -232,10 +232,7 @@ const std::vector<Field<PlannerConfig>>& planner_fields() {
       {.key = "self_play_trials",
        .member = &PlannerConfig::self_play_trials,
        .identity = Identity::unless_default,
-       .worlds = Worlds::recorded_data,
-       .min = 2,
-       .elsewhere = "only for a dataset world: an arm there with unheard: auto plays this many "
-                    "trials per estimate on its folds' problems"},
+       .min = 2},
   };
   return fields;
 }
@@ -355,10 +352,6 @@ std::vector<CampaignArm> read_arms(const YamlReader& f, const YAML::Node& root,
     if (!arm.unheard.empty() && arm.strategy != kPlanStrategy)
       f.fail(a, "unheard: only an arm that plans (strategy: plan) searches; '" + arm.strategy +
                     "' is a fixed strategy");
-    if (arm.unheard == kUnheardByPlay && !at.recorded_data)
-      f.fail(a,
-             "unheard: auto plays each fold's problem to choose, and only a dataset world has "
-             "folds; name share or commit");
     for (const CampaignArm& other : read)
       if (other.name == arm.name) f.fail(a, "two arms are named '" + arm.name + "'");
     read.push_back(std::move(arm));

@@ -25,7 +25,7 @@ namespace echoplan::experiment {
 
 // The strategy of an arm that plans with the campaign's planner.
 inline constexpr const char* kPlanStrategy = "plan";
-// An arm's `unheard` when the campaign chooses it by self-play on the folds' problems.
+// An arm's `unheard` when the campaign chooses it by self-play on the arm's own problems.
 inline constexpr const char* kUnheardByPlay = "auto";
 
 // One arm of the campaign (a study arm, not the robot's: that is sim::ArmConfig): the same trials
@@ -61,8 +61,8 @@ struct CampaignArm {
   // empty: the solver's default for the problem.
   std::string leaf{};
   // An arm of strategy `plan`: how ABT counts outcomes no episode has heard yet (share or commit,
-  // solvers/search_tree.h), or, in a dataset world, kUnheardByPlay: the one that earns more on the
-  // folds' own problems (experiment/unheard_choice.h); empty: share.
+  // solvers/search_tree.h), or kUnheardByPlay: the one that earns more on the arm's own problems
+  // (experiment/unheard_choice.h); empty: share.
   std::string unheard{};
 };
 
@@ -139,7 +139,7 @@ struct PlannerConfig {
   std::int64_t episodes = 0;   // search episodes per step (reproducible); exactly one budget > 0
   std::int64_t step_ms = 0;    // wall time per step (not reproducible bit for bit)
   int max_steps = 100;         // a trial stops after this many steps
-  // Paired trials per estimate that an arm with `unheard: auto` plays on its folds' problems.
+  // Paired trials per estimate that an arm with `unheard: auto` plays on its own problems.
   int self_play_trials = 200;
 };
 

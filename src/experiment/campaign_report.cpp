@@ -395,8 +395,8 @@ std::string summary_text(const CampaignResults& results) {
                          100.0 * (c.mean_belief - c.share_right), c.sorts);
   if (!results.unheard_choices.empty())
     out +=
-        "\nhow each arm with unheard: auto counts outcomes it has not heard (self-play on its "
-        "folds' problems):\n";
+        "\nhow each arm with unheard: auto counts outcomes it has not heard (self-play on its own "
+        "problems):\n";
   for (const nlohmann::json& c : results.unheard_choices)
     out += fmt::format(
         "  {:<24} {} (commit minus share {:+.2f} ± {:.2f} expected reward per trial, {} pairs)\n",

@@ -7,6 +7,7 @@
 
 #include "common/error.h"
 #include "experiment/dataset_campaign.h"
+#include "experiment/unheard_choice.h"
 #include "loop/calibrated_problem.h"
 #include "loop/loop.h"
 #include "loop/object_problem.h"
@@ -89,6 +90,7 @@ void ProblemFileWorld::load_problems(const CampaignConfig& config, CampaignResul
     loop::check_same_names(*arm_problems_.back(), *world_problem_);
     // Every solver can be built (unknown names and bad settings fail now, not in a worker).
     loop::check_planner(arm_planner(config, arm), *arm_problems_.back());
+    check_unheard_auto(config, arm, *arm_problems_.back());
     if (arm.calibrate) loop::object_problem(*arm_problems_.back()->model);
     // A model world draws observations from its problem's own table, which has no grades.
     if (!simulates_ && arm.observation_kind() == perception::ObservationKind::graded)
@@ -232,7 +234,7 @@ std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier
 
 std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
                                                   const ProgressFn& progress,
-                                                  const std::atomic<bool>& stop, int /*workers*/) {
+                                                  const std::atomic<bool>& stop, int workers) {
   if (config.training.recordings.empty() && config.training.recordings_per_pair > 0 &&
       !loop::synthesise_training_set(simulated_training(config), progress, stop))
     return std::nullopt;
@@ -248,7 +250,18 @@ std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
       loop::save_problem(*arm_problems_[a], file);
     }
   }
-  return make_loops(config);
+  // Arms that leave the unheard estimate to self-play play their own (calibrated) problem, its
+  // belief tracked exactly; arms of one problem share the copy, and so one choice.
+  std::map<const pomdp::Problem*, std::shared_ptr<const pomdp::Problem>> exact;
+  const auto problems_of = [&](std::size_t arm) {
+    auto& p = exact[arm_problems_[arm].get()];
+    if (!p) p = with_exact_belief(arm_problems_[arm]);
+    return std::vector<std::shared_ptr<const pomdp::Problem>>{p};
+  };
+  const std::optional<CampaignConfig> chosen =
+      resolve_unheard(config, problems_of, training_.parent_path(), progress, stop, workers);
+  if (!chosen) return std::nullopt;
+  return make_loops(*chosen);
 }
 
 // The checked loop of every arm and group; InputError when a part does not fit.
@@ -344,16 +357,7 @@ void RecordedDataWorld::open(CampaignConfig& config, CampaignResults& results, I
   // leaves the unheard estimate to self-play, with both estimates.
   for (const CampaignArm& arm : config.arms) {
     loop::check_planner(arm_planner(config, arm), *trials_->names);
-    if (arm.unheard != kUnheardByPlay) continue;
-    solvers::PlannerOverrides commit = arm_planner(config, arm);
-    commit.unheard = solvers::unheard_outcomes_name(solvers::UnheardOutcomes::commit);
-    try {
-      loop::check_planner(commit, *trials_->names);
-    } catch (const InputError& e) {
-      throw InputError(
-          config.source, 0,
-          fmt::format("arm '{}': unheard: auto may choose commit, and {}", arm.name, e.problem()));
-    }
+    check_unheard_auto(config, arm, *trials_->names);
   }
   results.spec = trials_->names->model->spec();
   results.right_action = right_actions(*trials_);

@@ -14,7 +14,6 @@
 #include "loop/dataset_problem.h"
 #include "loop/dataset_world.h"
 #include "loop/loop.h"
-#include "loop/streams.h"
 #include "perception/observation_model_json.h"
 #include "perception/recording_features.h"
 
@@ -246,34 +245,20 @@ std::optional<CampaignConfig> choose_dataset_unheard(const std::filesystem::path
                                                      const DatasetTrials& trials,
                                                      const ProgressFn& progress,
                                                      const std::atomic<bool>& stop, int workers) {
-  CampaignConfig chosen = config;
-  std::map<std::pair<ArmProblemKind, std::string>, UnheardChoice> made;  // by kind and leaf
-  std::vector<ArmUnheardChoice> choices;
+  // Each kind's fold problems built once, so arms of one kind share them (and one choice).
+  std::map<ArmProblemKind, std::vector<std::shared_ptr<const pomdp::Problem>>> by_kind;
   const std::vector<int> uses = loop::default_uses(*trials.data);
-  for (CampaignArm& arm : chosen.arms) {
-    if (arm.unheard != kUnheardByPlay) continue;
-    const auto key = std::make_pair(arm_problem_kind(arm), arm.leaf);
-    auto it = made.find(key);
-    if (it == made.end()) {
-      UnheardSelfPlay play;
+  const auto problems_of = [&](std::size_t arm) {
+    const ArmProblemKind kind = arm_problem_kind(config.arms[arm]);
+    auto& problems = by_kind[kind];
+    if (problems.empty())
       for (std::size_t f = 0; f < trials.models.size(); ++f)
-        play.problems.push_back(std::make_shared<const pomdp::Problem>(
-            dataset_problem_file(fold_problem(config, trials, static_cast<int>(f), uses, key.first),
+        problems.push_back(std::make_shared<const pomdp::Problem>(
+            dataset_problem_file(fold_problem(config, trials, static_cast<int>(f), uses, kind),
                                  fmt::format("{} (fold {})", config.world.data, f + 1))));
-      play.planner = arm_planner(config, arm);
-      play.trials = config.planner.self_play_trials;
-      play.max_steps = config.planner.max_steps;
-      play.seed = loop::stream_seed(config.seed, loop::Stream::campaign_unheard);
-      play.workers = workers;
-      const std::optional<UnheardChoice> choice = choose_unheard(play, progress, stop);
-      if (!choice) return std::nullopt;
-      it = made.emplace(key, *choice).first;
-    }
-    arm.unheard = solvers::unheard_outcomes_name(it->second.chosen);
-    choices.push_back({arm.name, it->second});
-  }
-  if (!choices.empty()) write_unheard_choices(directory / kUnheardChoices, choices);
-  return chosen;
+    return problems;
+  };
+  return resolve_unheard(config, problems_of, directory, progress, stop, workers);
 }
 
 ArmLoops dataset_loops(const CampaignConfig& config, const DatasetTrials& trials) {

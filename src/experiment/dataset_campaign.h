@@ -85,11 +85,8 @@ bool any_lookalike(const CampaignConfig& config);
 void write_fold_problems(const std::filesystem::path& directory, const CampaignConfig& config,
                          const DatasetTrials& trials);
 
-// `config` with each arm's `unheard: auto` resolved to share or commit by self-play on the arm's
-// fold problems (experiment/unheard_choice.h: planner.self_play_trials paired trials, dealt over
-// the folds, each behaviour at its default limits), arms of one problem kind and leaf sharing
-// one choice. Writes the choices with their measure to `directory`/kUnheardChoices and returns
-// nothing when stopped. Needs the fitted folds.
+// resolve_unheard (experiment/unheard_choice.h) with each arm's fold problems, each behaviour at
+// its default limits. Needs the fitted folds.
 std::optional<CampaignConfig> choose_dataset_unheard(const std::filesystem::path& directory,
                                                      const CampaignConfig& config,
                                                      const DatasetTrials& trials,

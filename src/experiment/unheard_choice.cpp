@@ -11,9 +11,12 @@
 #include "common/error.h"
 #include "common/file_io.h"
 #include "common/statistics.h"
+#include "experiment/campaign_runner.h"
 #include "experiment/expected_reward.h"
 #include "experiment/trial_records.h"
 #include "loop/loop.h"
+#include "loop/planner.h"
+#include "loop/streams.h"
 
 namespace echoplan::experiment {
 
@@ -103,6 +106,68 @@ std::optional<UnheardChoice> choose_unheard(const UnheardSelfPlay& play, const P
   return choice;
 }
 
+void check_unheard_auto(const CampaignConfig& config, const CampaignArm& arm,
+                        const pomdp::Problem& problem) {
+  if (arm.unheard != kUnheardByPlay) return;
+  if (!problem.model->tabular())
+    throw InputError(
+        config.source, 0,
+        fmt::format("arm '{}': unheard: auto plays the arm's problem as the world, and "
+                    "{} has no table (name share or commit)",
+                    arm.name, problem.source_path));
+  solvers::PlannerOverrides commit = arm_planner(config, arm);
+  commit.unheard = solvers::unheard_outcomes_name(solvers::UnheardOutcomes::commit);
+  try {
+    loop::check_planner(commit, problem);
+  } catch (const InputError& e) {
+    throw InputError(
+        config.source, 0,
+        fmt::format("arm '{}': unheard: auto may choose commit, and {}", arm.name, e.problem()));
+  }
+}
+
+std::shared_ptr<const pomdp::Problem> with_exact_belief(
+    const std::shared_ptr<const pomdp::Problem>& problem) {
+  if (problem->belief.type == pomdp::BeliefSettings::Type::exact) return problem;
+  auto exact = std::make_shared<pomdp::Problem>(*problem);
+  exact->belief.type = pomdp::BeliefSettings::Type::exact;
+  return exact;
+}
+
+std::optional<CampaignConfig> resolve_unheard(const CampaignConfig& config,
+                                              const ArmSelfPlayProblems& problems_of,
+                                              const std::filesystem::path& directory,
+                                              const ProgressFn& progress,
+                                              const std::atomic<bool>& stop, int workers) {
+  CampaignConfig resolved = config;
+  using Key = std::pair<std::vector<const pomdp::Problem*>, std::string>;  // problems and leaf
+  std::map<Key, UnheardChoice> made;
+  std::vector<ArmUnheardChoice> choices;
+  for (std::size_t a = 0; a < resolved.arms.size(); ++a) {
+    CampaignArm& arm = resolved.arms[a];
+    if (arm.unheard != kUnheardByPlay) continue;
+    UnheardSelfPlay play;
+    play.problems = problems_of(a);
+    Key key{{}, arm.leaf};
+    for (const auto& p : play.problems) key.first.push_back(p.get());
+    auto it = made.find(key);
+    if (it == made.end()) {
+      play.planner = arm_planner(config, arm);
+      play.trials = config.planner.self_play_trials;
+      play.max_steps = config.planner.max_steps;
+      play.seed = loop::stream_seed(config.seed, loop::Stream::campaign_unheard);
+      play.workers = workers;
+      const std::optional<UnheardChoice> choice = choose_unheard(play, progress, stop);
+      if (!choice) return std::nullopt;
+      it = made.emplace(key, *choice).first;
+    }
+    arm.unheard = solvers::unheard_outcomes_name(it->second.chosen);
+    choices.push_back({arm.name, it->second});
+  }
+  if (!choices.empty()) write_unheard_choices(directory / kUnheardChoices, choices);
+  return resolved;
+}
+
 void write_unheard_choices(const std::filesystem::path& file,
                            const std::vector<ArmUnheardChoice>& choices) {
   nlohmann::json arms = nlohmann::json::array();
@@ -115,7 +180,8 @@ void write_unheard_choices(const std::filesystem::path& file,
   const nlohmann::json j = {
       {"what",
        "each arm's unheard: auto, chosen by the expected reward per trial of commit minus share, "
-       "paired, on the folds' problems as the world (experiment/unheard_choice.h)"},
+       "paired, on the arm's own problems (a dataset world's folds) as the world "
+       "(experiment/unheard_choice.h)"},
       {"arms", std::move(arms)}};
   write_file_atomically(file, j.dump(2) + "\n");
 }

@@ -1,25 +1,25 @@
 // Which of ABT's two estimates of the outcomes no episode has heard yet (share or commit,
-// solvers/search_tree.h) an arm plans with when its campaign leaves the choice to the data
-// (`unheard: auto`, the default of a dataset world's planning arms).
+// solvers/search_tree.h) an arm plans with when its campaign leaves the choice to self-play
+// (`unheard: auto` on an arm of strategy plan).
 //
 // Why a choice: neither estimate wins on every problem. On a problem whose behaviours have few
-// outcomes (the report's: four symbols) share is nearly exact and commit's pessimism costs
-// (certified regret 0.343 against 0.116); where they have many (a recorded-data fold: graded
-// classes and lookalikes) most outcomes stay unheard at the search's budget, share's heard children
-// stand for them too hopefully and the planner stops sensing early, and commit earns more
-// (docs/BENCHMARKS.md, "How the planner counts outcomes it has not heard"). Why this measure: the
-// fold's problem is the planner's model of the world, so playing the two estimates on it, with the
-// problem as the world and the exact belief, scores them on what the planner believes it faces,
-// paired (trial t of both draws the same object and random streams) and with each reward replaced
-// by its expectation under the belief (experiment/expected_reward.h). It never looks at the data
-// the campaign replays: the choice is the planner's, made before the first trial. What it cannot
-// see: a world unlike the model (on recorded data the two can differ; the campaign's own arms
-// measure that).
+// outcomes (the report's: four symbols) share is nearly exact and commit's lower bound costs
+// (certified regret 0.343 against 0.116); where they have many (a recorded-data fold with
+// lookalikes) most outcomes stay unheard at the search's budget, share lets the heard ones speak
+// for them, the planner keeps sensing, and commit earns more (docs/BENCHMARKS.md, "How the planner
+// counts outcomes it has not heard"). Why this measure: the arm's problem is the planner's model of
+// the world, so playing the two estimates on it, with the problem as the world and the exact
+// belief, scores them on what the planner believes it faces, paired (trial t of both draws the
+// same object and random streams) and with each reward replaced by its expectation under the
+// belief (experiment/expected_reward.h). It never looks at the world the campaign runs in: the
+// choice is the planner's, made before the first trial. What it cannot see: a world unlike the
+// model (on recorded data the two can differ; the campaign's own arms measure that).
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "common/progress.h"
+#include "experiment/campaign_config.h"
 #include "pomdp/problem.h"
 #include "solvers/planner_overrides.h"
 #include "solvers/search_tree.h"
@@ -57,6 +58,32 @@ struct UnheardChoice {
 // nothing when stopped. Throws InputError for a problem without a tabular model or exact belief.
 std::optional<UnheardChoice> choose_unheard(const UnheardSelfPlay& play, const ProgressFn& progress,
                                             const std::atomic<bool>& stop);
+
+// The problems arm number `arm` of a campaign plays on to choose (each with a table and an exact
+// belief): a dataset world's fold problems, a problem file world's arm problem.
+using ArmSelfPlayProblems =
+    std::function<std::vector<std::shared_ptr<const pomdp::Problem>>(std::size_t arm)>;
+
+// `config` with every arm's `unheard: auto` (kUnheardByPlay) resolved to share or commit by
+// choose_unheard on its problems (planner.self_play_trials trials, the campaign's planner, the
+// campaign_unheard stream of its seed); arms that play the same problems with the same leaf share
+// one choice. Writes the choices to `directory`/kUnheardChoices when an arm chose. Nothing when
+// stopped.
+std::optional<CampaignConfig> resolve_unheard(const CampaignConfig& config,
+                                              const ArmSelfPlayProblems& problems_of,
+                                              const std::filesystem::path& directory,
+                                              const ProgressFn& progress,
+                                              const std::atomic<bool>& stop, int workers);
+
+// Before any work: an arm with `unheard: auto` can play `problem` (it has a table) and plan with
+// either estimate (its leaf follows the exact belief); InputError naming the campaign file and
+// the arm otherwise. Other arms pass.
+void check_unheard_auto(const CampaignConfig& config, const CampaignArm& arm,
+                        const pomdp::Problem& problem);
+
+// `problem` with an exact belief (what the self-play tracks), the same problem when it has one.
+std::shared_ptr<const pomdp::Problem> with_exact_belief(
+    const std::shared_ptr<const pomdp::Problem>& problem);
 
 // A campaign's choices, in its folder (the report reads them back: summary.txt and summary.json).
 inline constexpr const char* kUnheardChoices = "unheard.json";

@@ -265,9 +265,9 @@ TEST_F(DatasetCampaignConfig, ReadsTheDataHoldOutGroupsRewardsAndStrategies) {
   EXPECT_EQ(to_json(back), to_json(c));
 }
 
-// unheard: auto chooses by self-play on the folds' problems: a dataset world's, with its trial
-// count; left out of the identity at its default.
-TEST_F(DatasetCampaignConfig, UnheardAutoAndItsSelfPlayTrialsBelongToADatasetWorld) {
+// unheard: auto chooses by self-play on the arm's problems, as many trials as the planner says;
+// left out of the identity at its default.
+TEST_F(DatasetCampaignConfig, UnheardAutoAndItsSelfPlayTrials) {
   std::string text = text_;
   text.replace(text.find("{name: plan, strategy: plan}"), 28,
                "{name: plan, strategy: plan, unheard: auto}");
@@ -284,16 +284,13 @@ TEST_F(DatasetCampaignConfig, UnheardAutoAndItsSelfPlayTrialsBelongToADatasetWor
   EXPECT_EQ(forty.identity()["planner"]["self_play_trials"], 40);
   EXPECT_EQ(to_json(campaign_config_from_json(to_json(forty), "campaign.json")), to_json(forty));
   text.replace(text.find("self_play_trials: 40"), 20, "self_play_trials: 1");
-  EXPECT_NE(error(text).find("self_play_trials"), std::string::npos) << error(text);
-
-  const std::string model_world = error_of(with_arm("{name: a, problem: p.yaml, unheard: auto}"));
-  EXPECT_EQ(model_world.substr(0, 2), "3:") << model_world;
-  EXPECT_NE(model_world.find("only a dataset world has folds"), std::string::npos) << model_world;
-  std::string planner = kMinimal;
-  planner.replace(planner.find("planner: {episodes: 100}"), 24,
-                  "planner: {episodes: 100, self_play_trials: 40}");
-  EXPECT_NE(error_of(planner).find("only for a dataset world"), std::string::npos)
-      << error_of(planner);
+  EXPECT_EQ(error(text), "7: self_play_trials must be >= 2");
+  // A problem file's arm may leave the choice to self-play too.
+  EXPECT_EQ(
+      parse_campaign_config(with_arm("{name: a, problem: p.yaml, unheard: auto}"), "/dir/c.yaml")
+          .arms[0]
+          .unheard,
+      "auto");
 }
 
 TEST_F(DatasetCampaignConfig, CostsPriceBehavioursAndEnterTheIdentityOnlyWhenGiven) {

@@ -164,6 +164,50 @@ TEST(Campaign, ArmsWithTheSameProblemPlayTheSameTrials) {
   EXPECT_EQ(j["paired_differences"][0]["mean_discounted_reward_difference"], 0.0);
 }
 
+// A problem file's arm with unheard: auto plans, trial for trial, as the arm that names the
+// estimate its self-play chose (on the problem with an exact belief), and shards merge with the
+// choice.
+TEST(Campaign, AnArmWithUnheardAutoPlaysAsTheEstimateItChoseAndShardsMergeWithIt) {
+  std::string text = "seed: 11\narms:\n";
+  for (const std::string unheard : {"auto", "share", "commit"})
+    text += "  - {name: " + unheard + ", problem: " + kProblem + ", unheard: " + unheard + "}\n";
+  text +=
+      "world: {type: model, problem: " + kProblem +
+      "}\ntraining_set: {recordings_per_pair: 0, catalogue: " + std::string(ECHOPLAN_SOURCE_DIR) +
+      "/objects/catalogue.yaml}\ntrials:\n  - {object: pringles_can, trials: 4}\n"
+      "  - {object: paper_base, trials: 4}\n"
+      "planner: {solver: abt, episodes: 200, max_steps: 25, self_play_trials: 30}\n";
+  const CampaignConfig config = parse_campaign_config(text, "auto.yaml");
+  const fs::path whole = fresh_dir("auto");
+  run(config, whole, 2);
+  const nlohmann::json chosen = nlohmann::json::parse(std::ifstream(whole / "unheard.json"));
+  ASSERT_EQ(chosen["arms"].size(), 1u);
+  const std::string estimate = chosen["arms"][0]["chosen"];
+  std::map<std::string, std::vector<JournalEntry>> by_arm;
+  for (const JournalEntry& e : read_journal(whole / "journal.jsonl")) by_arm[e.arm].push_back(e);
+  ASSERT_EQ(by_arm["auto"].size(), 8u);
+  const std::string other = estimate == "share" ? "commit" : "share";
+  int unlike_other = 0;
+  for (std::size_t k = 0; k < 8; ++k) {
+    const TrialRecord& mine = by_arm["auto"][k].result.record;
+    const TrialRecord& named = by_arm[estimate][k].result.record;
+    EXPECT_EQ(mine.action_counts, named.action_counts) << "trial " << k;
+    EXPECT_EQ(mine.discounted_reward, named.discounted_reward) << "trial " << k;
+    unlike_other += mine.action_counts != by_arm[other][k].result.record.action_counts;
+  }
+  EXPECT_GT(unlike_other, 0) << "share and commit decided alike: the test cannot tell them apart";
+
+  std::vector<fs::path> shards;
+  for (int i = 1; i <= 2; ++i) {
+    shards.push_back(fresh_dir("auto_shard" + std::to_string(i)));
+    run(config, shards.back(), 1, {i, 2});
+  }
+  const fs::path merged = fresh_dir("auto_merged");
+  merge_campaigns(merged, shards);
+  rebuild_report(open_campaign(config, whole), true);
+  expect_same_files(whole, merged);
+}
+
 TEST(Campaign, TrialsOfAGroupHaveItsObjectAsTruth) {
   const CampaignConfig config = tiny_config();
   const fs::path dir = fresh_dir("truth");
