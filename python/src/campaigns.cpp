@@ -31,7 +31,7 @@ std::string run_campaign(const std::string& config_path, const std::string& out,
   options.workers = workers.value_or(std::max(1u, std::thread::hardware_concurrency()));
   if (options.workers < 1) throw py::value_error("workers must be >= 1");
   return run_interruptibly([&](const std::atomic<bool>& stop) {
-    if (!experiment::prepare_training(campaign, {}, stop)) return std::string();
+    if (!experiment::prepare_training(campaign, {}, stop, options.workers)) return std::string();
     const auto jobs = experiment::remaining_jobs(campaign, shard);
     experiment::TrialJournal journal(campaign.directory / "journal.jsonl");
     options.stop = &stop;
