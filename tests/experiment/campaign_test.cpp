@@ -43,13 +43,14 @@ CampaignConfig tiny_config(int arms = 1, const std::string& second_problem = kPr
   return parse_campaign_config(text, "tiny.yaml");
 }
 
-// Runs `shard` of the campaign in `dir` with `workers` threads, stopping after `stop_after` trials
-// (< 0: never), then rebuilds the report (no figures: gnuplot is tested by the CLI tests).
+// Runs `shard` of the campaign in `dir` with `workers` threads (the preparation too), stopping
+// after `stop_after` trials (< 0: never), then rebuilds the report (no figures: gnuplot is tested
+// by the CLI tests).
 int run(const CampaignConfig& config, const fs::path& dir, int workers, Shard shard = {},
         int stop_after = -1) {
   Campaign campaign = open_campaign(config, dir);
   std::atomic<bool> stop{false};
-  EXPECT_TRUE(prepare_training(campaign, {}, stop));
+  EXPECT_TRUE(prepare_training(campaign, {}, stop, workers));
   int finished = 0;
   TrialJournal journal(dir / "journal.jsonl");
   CampaignRunOptions options;
