@@ -47,7 +47,7 @@ struct Campaign {
 Campaign open_campaign(const CampaignConfig& config, const std::filesystem::path& directory);
 
 // Prepares what the trials need (CampaignWorld::prepare: each fold's model, synthesised, trained
-// or fitted, a dataset arm's unheard estimate chosen, and the loops) on `workers` threads.
+// or fitted, each `unheard: auto` arm's estimate chosen, and the loops) on `workers` threads.
 // `progress(stage, done, total)` reports its stages. Returns false when stopped.
 bool prepare_training(Campaign& campaign, const ProgressFn& progress, const std::atomic<bool>& stop,
                       int workers = 1);

@@ -65,7 +65,7 @@ struct CampaignResults {
   // action; perception::heard_confusion), shown beside the reference's `heard` counts; empty when
   // the world is not simulated or the reference has no such counts.
   std::vector<HeardCounts> heard;
-  // A dataset world's arms with unheard: auto and what their self-play chose (unheard.json's
+  // The arms with unheard: auto and what their self-play chose (unheard.json's
   // "arms": arm, chosen, commit_minus_share, ci95, self_play_trials); empty otherwise.
   nlohmann::json unheard_choices = nlohmann::json::array();
 };

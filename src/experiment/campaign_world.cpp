@@ -338,9 +338,10 @@ class RecordedDataWorld final : public CampaignWorld {
   std::optional<ArmLoops> prepare(const CampaignConfig& config, const ProgressFn& progress,
                                   const std::atomic<bool>& stop, int workers) override {
     if (!fit_dataset_folds(*trials_, config, progress, stop)) return std::nullopt;
-    write_fold_problems(directory_, config, *trials_);
+    const FoldProblems problems = fold_problems(config, *trials_);
+    write_fold_problems(directory_, config, problems);
     const std::optional<CampaignConfig> chosen =
-        choose_dataset_unheard(directory_, config, *trials_, progress, stop, workers);
+        choose_dataset_unheard(directory_, config, problems, progress, stop, workers);
     if (!chosen) return std::nullopt;
     return dataset_loops(*chosen, *trials_);
   }

@@ -4,7 +4,6 @@
 #include <fmt/ranges.h>
 
 #include <map>
-#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -215,17 +214,26 @@ std::string kind_description(const ArmProblemKind& kind) {
 
 }  // namespace
 
-void write_fold_problems(const std::filesystem::path& directory, const CampaignConfig& config,
-                         const DatasetTrials& trials) {
-  pomdp::BeliefSettings belief;
-  belief.type = pomdp::BeliefSettings::Type::exact;  // as the campaign's trials track it
+FoldProblems fold_problems(const CampaignConfig& config, const DatasetTrials& trials) {
   const std::vector<int> uses = loop::default_uses(*trials.data);
-  std::set<ArmProblemKind> kinds;
-  for (const CampaignArm& arm : config.arms) kinds.insert(arm_problem_kind(arm));
-  for (std::size_t f = 0; f < trials.models.size(); ++f) {
-    const std::filesystem::path folder = directory / "folds" / std::to_string(f + 1);
-    std::filesystem::create_directories(folder);
-    for (const ArmProblemKind& kind : kinds) {
+  FoldProblems problems;
+  for (const CampaignArm& arm : config.arms) {
+    const ArmProblemKind kind = arm_problem_kind(arm);
+    if (problems.count(kind)) continue;
+    for (std::size_t f = 0; f < trials.models.size(); ++f)
+      problems[kind].push_back(std::make_shared<const pomdp::Problem>(
+          dataset_problem_file(fold_problem(config, trials, static_cast<int>(f), uses, kind),
+                               fmt::format("{} (fold {})", config.world.data, f + 1))));
+  }
+  return problems;
+}
+
+void write_fold_problems(const std::filesystem::path& directory, const CampaignConfig& config,
+                         const FoldProblems& problems) {
+  for (const auto& [kind, folds] : problems)
+    for (std::size_t f = 0; f < folds.size(); ++f) {
+      const std::filesystem::path folder = directory / "folds" / std::to_string(f + 1);
+      std::filesystem::create_directories(folder);
       std::ostringstream text;
       text << fmt::format(
           "# Fold {} of the campaign {}\n# (data {}): the problem its arms that {} planned "
@@ -233,30 +241,19 @@ void write_fold_problems(const std::filesystem::path& directory, const CampaignC
           "trial's own limits may be lower).\n# `echoplan certify --campaign` judges "
           "folds/{}/arms/*/steps.csv with it.\n",
           f + 1, config.source, config.world.data, kind_description(kind), f + 1);
-      pomdp::write_problem_yaml(text, fold_problem(config, trials, static_cast<int>(f), uses, kind),
-                                belief, pomdp::PlannerDefaults{});
+      pomdp::write_problem_yaml(text, folds[f]->model->object_identification()->data(),
+                                folds[f]->belief, pomdp::PlannerDefaults{});
       write_file_atomically(folder / fold_problem_name(kind), text.str());
     }
-  }
 }
 
 std::optional<CampaignConfig> choose_dataset_unheard(const std::filesystem::path& directory,
                                                      const CampaignConfig& config,
-                                                     const DatasetTrials& trials,
+                                                     const FoldProblems& problems,
                                                      const ProgressFn& progress,
                                                      const std::atomic<bool>& stop, int workers) {
-  // Each kind's fold problems built once, so arms of one kind share them (and one choice).
-  std::map<ArmProblemKind, std::vector<std::shared_ptr<const pomdp::Problem>>> by_kind;
-  const std::vector<int> uses = loop::default_uses(*trials.data);
   const auto problems_of = [&](std::size_t arm) {
-    const ArmProblemKind kind = arm_problem_kind(config.arms[arm]);
-    auto& problems = by_kind[kind];
-    if (problems.empty())
-      for (std::size_t f = 0; f < trials.models.size(); ++f)
-        problems.push_back(std::make_shared<const pomdp::Problem>(
-            dataset_problem_file(fold_problem(config, trials, static_cast<int>(f), uses, kind),
-                                 fmt::format("{} (fold {})", config.world.data, f + 1))));
-    return problems;
+    return problems.at(arm_problem_kind(config.arms[arm]));
   };
   return resolve_unheard(config, problems_of, directory, progress, stop, workers);
 }

@@ -11,6 +11,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -78,18 +79,22 @@ bool any_atypical(const CampaignConfig& config);
 // Some arm plans with lookalikes (CampaignArm::lookalike): every arm's problem has those copies.
 bool any_lookalike(const CampaignConfig& config);
 
-// Writes each fold's problems, `directory`/folds/<fold>/<fold_problem_name> (folds numbered from
-// 1), one per kind of arm: the fold's fitted table, the task's rewards and costs, each behaviour
-// limited to the most performances any session recorded (default_uses). `echoplan certify
-// --campaign` judges the fold's trials with it. Needs the fitted folds.
-void write_fold_problems(const std::filesystem::path& directory, const CampaignConfig& config,
-                         const DatasetTrials& trials);
+// Each kind of arm's problem of each fold, [kind][fold]: the fold's fitted table, the task's
+// rewards and costs, each behaviour limited to the most performances any session recorded
+// (default_uses), an exact belief (as the campaign's trials track it). Needs the fitted folds.
+using FoldProblems = std::map<ArmProblemKind, std::vector<std::shared_ptr<const pomdp::Problem>>>;
+FoldProblems fold_problems(const CampaignConfig& config, const DatasetTrials& trials);
 
-// resolve_unheard (experiment/unheard_choice.h) with each arm's fold problems, each behaviour at
-// its default limits. Needs the fitted folds.
+// Writes each fold's problems, `directory`/folds/<fold>/<fold_problem_name> (folds numbered from
+// 1). `echoplan certify --campaign` judges the fold's trials with them.
+void write_fold_problems(const std::filesystem::path& directory, const CampaignConfig& config,
+                         const FoldProblems& problems);
+
+// resolve_unheard (experiment/unheard_choice.h), each arm playing its kind's fold problems (arms
+// of one kind share them, and so one choice).
 std::optional<CampaignConfig> choose_dataset_unheard(const std::filesystem::path& directory,
                                                      const CampaignConfig& config,
-                                                     const DatasetTrials& trials,
+                                                     const FoldProblems& problems,
                                                      const ProgressFn& progress,
                                                      const std::atomic<bool>& stop, int workers);
 
