@@ -27,11 +27,11 @@ jobs=${JOBS:-$(nproc)}
 build_dir=${BUILD_DIR:-build}
 san_build_dir=${SAN_BUILD_DIR:-build-san}
 tsan_build_dir=${TSAN_BUILD_DIR:-build-tsan}
-# The tests that start threads (the campaign's parallel workers, parallel synthesis, the capture
+# The tests that start threads (the shared job pool, the campaign's parallel workers, parallel synthesis, the capture
 # callback of live recording), their binaries and a ctest pattern for them: the ThreadSanitizer build
 # runs these only (the rest of the suite is single-threaded, and the ASan build runs all of it).
-tsan_targets=(campaign_tests sim_tests portaudio_recorder_tests)
-tsan_tests='^campaign_tests\.Campaign\.|^sim_tests\.Dataset\.|^portaudio_recorder_tests\.'
+tsan_targets=(common_tests campaign_tests sim_tests portaudio_recorder_tests)
+tsan_tests='^common_tests\.ParallelJobs\.|^campaign_tests\.Campaign\.|^sim_tests\.Dataset\.|^portaudio_recorder_tests\.'
 
 # Keep this list in one place: docs/getting-started.md points here.
 packages=(

@@ -1,12 +1,12 @@
 #include "experiment/campaign_runner.h"
 
 #include <charconv>
-#include <exception>
 #include <map>
+#include <memory>
 #include <mutex>
-#include <thread>
 
 #include "common/error.h"
+#include "common/parallel_jobs.h"
 #include "common/rng.h"
 #include "common/stable_hash.h"
 #include "pomdp/problem.h"
@@ -89,49 +89,31 @@ Shard parse_shard(const std::string& text) {
 int run_campaign_trials(const CampaignConfig& config, const ArmLoops& loops,
                         const std::vector<TrialJob>& jobs, TrialJournal& journal,
                         const CampaignRunOptions& options) {
-  std::atomic<std::size_t> next{0};
-  std::atomic<int> finished{0};
-  std::atomic<bool> failed{false};
-  std::exception_ptr first_error;
   std::mutex report_mutex;
-  auto stopped = [&] { return failed.load() || (options.stop && options.stop->load()); };
-
-  auto work = [&] {
-    try {
-      Worker worker(loops);
-      while (!stopped()) {
-        const std::size_t k = next.fetch_add(1);
-        if (k >= jobs.size()) break;
-        const TrialJob& job = jobs[k];
-        const std::optional<loop::Trial> trial =
-            worker.run(job, group_seed(config, job.group), options.stop);
-        if (!trial) break;
-        // Trials are numbered by campaign id in every file (the runner numbers them within the
-        // group).
-        TrialResult result = records_of(*trial);
-        result.record.trial = job.id;
-        for (StepRecord& s : result.steps) s.trial = job.id;
-        JournalEntry entry{job.id, config.arms[job.arm].name, config.groups[job.group].object,
-                           trial_loop(loops, job).session, std::move(result)};
-        journal.append(entry);
-        std::lock_guard<std::mutex> lock(report_mutex);
-        ++finished;
-        if (options.on_trial) options.on_trial(entry);
-      }
-    } catch (...) {
+  int finished = 0;
+  run_jobs(jobs.size(), options.workers, [&]() -> JobRunner {
+    auto worker = std::make_shared<Worker>(loops);
+    return [&, worker](std::size_t k) {
+      if (options.stop && options.stop->load()) return false;
+      const TrialJob& job = jobs[k];
+      const std::optional<loop::Trial> trial =
+          worker->run(job, group_seed(config, job.group), options.stop);
+      if (!trial) return false;
+      // Trials are numbered by campaign id in every file (the runner numbers them within the
+      // group).
+      TrialResult result = records_of(*trial);
+      result.record.trial = job.id;
+      for (StepRecord& s : result.steps) s.trial = job.id;
+      JournalEntry entry{job.id, config.arms[job.arm].name, config.groups[job.group].object,
+                         trial_loop(loops, job).session, std::move(result)};
+      journal.append(entry);
       std::lock_guard<std::mutex> lock(report_mutex);
-      if (!first_error) first_error = std::current_exception();
-      failed = true;
-    }
-  };
-
-  const int workers = std::max(1, std::min<int>(options.workers, static_cast<int>(jobs.size())));
-  std::vector<std::thread> threads;
-  for (int w = 1; w < workers; ++w) threads.emplace_back(work);
-  work();
-  for (std::thread& t : threads) t.join();
-  if (first_error) std::rethrow_exception(first_error);
-  return finished.load();
+      ++finished;
+      if (options.on_trial) options.on_trial(entry);
+      return true;
+    };
+  });
+  return finished;
 }
 
 }  // namespace echoplan::experiment

@@ -3,13 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <exception>
 #include <map>
+#include <memory>
 #include <mutex>
-#include <thread>
 
 #include "common/error.h"
 #include "common/file_io.h"
+#include "common/parallel_jobs.h"
 #include "common/statistics.h"
 #include "experiment/campaign_runner.h"
 #include "experiment/expected_reward.h"
@@ -59,40 +59,28 @@ std::optional<UnheardChoice> choose_unheard(const UnheardSelfPlay& play, const P
   const auto specs = self_play_specs(play);
   const int jobs = 2 * play.trials;  // job j: estimate j / trials, trial j % trials
   std::vector<std::vector<double>> expected(2, std::vector<double>(play.trials, 0.0));
-  std::atomic<int> next{0};
-  std::atomic<bool> failed{false};
-  std::exception_ptr first_error;
   std::mutex mutex;
   int finished = 0;
-  auto work = [&] {
-    try {
-      std::map<const loop::LoopSpec*, loop::Loop> loops;  // this thread's, one per spec it met
-      for (int j = next++; j < jobs && !failed && !stop; j = next++) {
-        const int e = j / play.trials, t = j % play.trials;
-        const auto& spec = specs[e][t % play.problems.size()];
-        auto it = loops.find(spec.get());
-        if (it == loops.end()) it = loops.emplace(spec.get(), loop::Loop(spec)).first;
-        const std::optional<loop::Trial> trial = it->second.run({t, -1, play.seed}, {}, &stop);
-        if (!trial) return;
-        const std::optional<double> value =
-            expected_discounted_reward(records_of(*trial).steps, *spec->problem().model->tabular());
-        if (!value)
-          throw std::logic_error("unheard: auto: a trial's belief does not fit its model");
-        std::lock_guard<std::mutex> lock(mutex);
-        expected[e][t] = *value;
-        if (progress) progress("choose unheard", ++finished, jobs);
-      }
-    } catch (...) {
+  run_jobs(jobs, play.workers, [&]() -> JobRunner {
+    // This thread's loops, one per spec it meets.
+    auto loops = std::make_shared<std::map<const loop::LoopSpec*, loop::Loop>>();
+    return [&, loops](std::size_t j) {
+      if (stop.load()) return false;
+      const int e = static_cast<int>(j) / play.trials, t = static_cast<int>(j) % play.trials;
+      const auto& spec = specs[e][t % play.problems.size()];
+      auto it = loops->find(spec.get());
+      if (it == loops->end()) it = loops->emplace(spec.get(), loop::Loop(spec)).first;
+      const std::optional<loop::Trial> trial = it->second.run({t, -1, play.seed}, {}, &stop);
+      if (!trial) return false;
+      const std::optional<double> value =
+          expected_discounted_reward(records_of(*trial).steps, *spec->problem().model->tabular());
+      if (!value) throw std::logic_error("unheard: auto: a trial's belief does not fit its model");
       std::lock_guard<std::mutex> lock(mutex);
-      if (!first_error) first_error = std::current_exception();
-      failed = true;
-    }
-  };
-  std::vector<std::thread> threads;
-  for (int w = 1; w < play.workers; ++w) threads.emplace_back(work);
-  work();
-  for (std::thread& thread : threads) thread.join();
-  if (first_error) std::rethrow_exception(first_error);
+      expected[e][t] = *value;
+      if (progress) progress("choose unheard", ++finished, jobs);
+      return true;
+    };
+  });
   if (stop) return std::nullopt;
 
   std::vector<double> difference(play.trials);

@@ -7,11 +7,11 @@
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <thread>
 
 #include "audio/io.h"
 #include "common/error.h"
 #include "common/file_io.h"
+#include "common/parallel_jobs.h"
 #include "common/rng.h"
 #include "common/stable_hash.h"
 #include "sim/recording.h"
@@ -114,60 +114,50 @@ SimulatedRecordingsSummary write_simulated_recordings(const Catalogue& catalogue
   };
   std::vector<std::optional<Done>> done(jobs.size());
   std::size_t next_row = 0;
-  std::atomic<std::size_t> next_job{0};
   std::mutex mutex;
   SimulatedRecordingsSummary summary;
-  std::exception_ptr failure;
   auto write_row = [&](const Done& d) {
     manifest << d.row << '\n' << std::flush;
     if (!manifest) throw InputError(manifest_path.string(), 0, "cannot write the manifest");
     ++summary.written;
     if (d.collision) ++summary.collisions;
   };
-  auto worker = [&] {
-    std::string current;
+  // What a thread keeps between its clips: the robot and renderer of the object it is on.
+  struct CurrentObject {
+    std::string object;
     std::unique_ptr<SimulatedRobot> robot;
     std::unique_ptr<SoundRenderer> renderer;
-    try {
-      for (std::size_t k; !stop.load() && (k = next_job++) < jobs.size();) {
-        {
-          std::lock_guard lock(mutex);
-          if (failure) return;
-        }
-        const Job& job = jobs[k];
-        if (job.object != current) {
-          robot = std::make_unique<SimulatedRobot>(catalogue, job.object, config);
-          renderer = std::make_unique<SoundRenderer>(robot->object(), robot->table(), config);
-          current = job.object;
-        }
-        const std::string action = to_string(job.action);
-        const std::uint64_t seed = clip_seed(options.seed, job.object, action, job.index);
-        Rng rng(seed);
-        const Recording r = simulate_recording(*robot, *renderer, job.action, rng);
-        const std::string relative = fmt::format("{}/{}/{:03d}.wav", job.object, action, job.index);
-        const fs::path final_path = root / relative;
-        const fs::path partial = final_path.string() + ".part";
-        audio::write_audio(partial.string(), r.clip, audio::WriteOptions{});
-        move_into_place(partial, final_path);
-        std::string row = manifest_row(relative, job.object, action, job.index, seed, r.outcome);
-        std::lock_guard lock(mutex);
-        done[k] = Done{relative, std::move(row), r.outcome.collision()};
-        for (; next_row < done.size() && done[next_row]; ++next_row) {
-          write_row(*done[next_row]);
-          if (progress) progress(done[next_row]->file, summary.written, total);
-        }
-      }
-    } catch (...) {
-      std::lock_guard lock(mutex);
-      if (!failure) failure = std::current_exception();
-    }
   };
-  const int threads = std::max(1, std::min(options.threads, total));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  run_jobs(jobs.size(), options.threads, [&]() -> JobRunner {
+    auto scene = std::make_shared<CurrentObject>();
+    return [&, scene](std::size_t k) {
+      if (stop.load()) return false;
+      const Job& job = jobs[k];
+      if (job.object != scene->object) {
+        scene->robot = std::make_unique<SimulatedRobot>(catalogue, job.object, config);
+        scene->renderer =
+            std::make_unique<SoundRenderer>(scene->robot->object(), scene->robot->table(), config);
+        scene->object = job.object;
+      }
+      const std::string action = to_string(job.action);
+      const std::uint64_t seed = clip_seed(options.seed, job.object, action, job.index);
+      Rng rng(seed);
+      const Recording r = simulate_recording(*scene->robot, *scene->renderer, job.action, rng);
+      const std::string relative = fmt::format("{}/{}/{:03d}.wav", job.object, action, job.index);
+      const fs::path final_path = root / relative;
+      const fs::path partial = final_path.string() + ".part";
+      audio::write_audio(partial.string(), r.clip, audio::WriteOptions{});
+      move_into_place(partial, final_path);
+      std::string row = manifest_row(relative, job.object, action, job.index, seed, r.outcome);
+      std::lock_guard lock(mutex);
+      done[k] = Done{relative, std::move(row), r.outcome.collision()};
+      for (; next_row < done.size() && done[next_row]; ++next_row) {
+        write_row(*done[next_row]);
+        if (progress) progress(done[next_row]->file, summary.written, total);
+      }
+      return true;
+    };
+  });
   // Interrupted: keep the rows of every finished clip, even those after a gap, in manifest order.
   for (std::size_t k = next_row; k < done.size(); ++k)
     if (done[k]) write_row(*done[k]);
