@@ -101,6 +101,17 @@ std::vector<Sequence> cross_behaviour_sequences(std::span<const HeldOutPerforman
   return sequences;
 }
 
+std::vector<Sequence> whole_session_sequences(std::span<const HeldOutPerformances> actions) {
+  std::vector<Sequence> prefixes = cross_behaviour_sequences(actions);
+  // A session's prefixes come one performance longer each, so a prefix that the next one does not
+  // extend is its session's whole sequence.
+  std::vector<Sequence> whole;
+  for (std::size_t i = 0; i < prefixes.size(); ++i)
+    if (i + 1 == prefixes.size() || prefixes[i + 1].symbols.size() <= prefixes[i].symbols.size())
+      whole.push_back(std::move(prefixes[i]));
+  return whole;
+}
+
 std::vector<double> class_blind_row(const Table& table) {
   std::vector<double> row(table.front().size(), 0.0);
   for (const auto& r : table)
@@ -155,8 +166,8 @@ double fit_share(const Nll& nll) {
 }
 
 // The actions' sequences scored with their cross-fitted tables.
-std::vector<ScoredSequence> scored_sequences(std::span<const HeldOutPerformances> actions) {
-  const std::vector<Sequence> sequences = cross_behaviour_sequences(actions);
+std::vector<ScoredSequence> scored_sequences(std::span<const HeldOutPerformances> actions,
+                                             const std::vector<Sequence>& sequences) {
   if (sequences.empty()) return {};
   std::vector<Table> tables;
   for (const HeldOutPerformances& held : actions)
@@ -172,14 +183,16 @@ double lookalike_nll(std::span<const Table> tables, double rho,
 }
 
 double fit_lookalike_share(std::span<const HeldOutPerformances> actions) {
-  const std::vector<ScoredSequence> scored = scored_sequences(actions);
+  const std::vector<ScoredSequence> scored =
+      scored_sequences(actions, whole_session_sequences(actions));
   if (scored.empty() || scored.front().log_typical.size() < 2) return 0.0;
   const std::vector<TruthPosterior> posteriors = truth_posteriors(scored);
   return fit_share([&](double rho) { return lookalike_nll(posteriors, rho); });
 }
 
 double fit_atypical_share(std::span<const HeldOutPerformances> actions) {
-  const std::vector<ScoredSequence> scored = scored_sequences(actions);
+  const std::vector<ScoredSequence> scored =
+      scored_sequences(actions, cross_behaviour_sequences(actions));
   if (scored.empty()) return 0.0;
   return fit_share([&](double rho) { return mixture_nll(scored, rho); });
 }

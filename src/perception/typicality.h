@@ -22,7 +22,8 @@
 // performed again, and a planner repeats behaviours exactly when readings disagree. On the
 // recorded-data stand-in with novel objects (docs/BENCHMARKS.md), where the planner's belief was 8
 // points above its share right, the shares fitted on first performances alone were 0.00 to 0.03;
-// with repeats, 0.08 to 0.15 (and the lookalikes' below, 0.02 to 0.05).
+// with repeats, 0.08 to 0.15. (The lookalikes' share below is fitted on each session's whole
+// sequence alone.)
 #pragma once
 
 #include <span>
@@ -75,8 +76,17 @@ double fit_atypical_share(std::span<const HeldOutPerformances> actions);
 // cross_behaviour_sequences indexes them.
 double lookalike_nll(std::span<const Table> tables, double rho,
                      std::span<const Sequence> sequences);
-// Rho in [0, kMostAtypical] minimising lookalike_nll over the actions' sequences (those of
-// fit_atypical_share); 0 when no share lowers it, there are no sequences or only one class.
+// Rho in [0, kMostAtypical] minimising lookalike_nll over each session's whole sequence
+// (whole_session_sequences: every performance, not every prefix); 0 when no share lowers it, there
+// are no sequences or only one class. Why whole sequences: rho caps the belief where the evidence
+// is strongest, which is where a planner that keeps sensing sorts the objects it finds hard; a
+// session's short prefixes, where rho changes little, outnumber its whole sequence and pulled the
+// fit towards the typical objects (on the recorded-data stand-in with novel objects the prefixes
+// fitted 0.02 to 0.05 and left the planner up to 4.7 points surer than right; the whole sequences
+// fit about twice that; docs/BENCHMARKS.md).
 double fit_lookalike_share(std::span<const HeldOutPerformances> actions);
+
+// Each session's last sequence of cross_behaviour_sequences: all its performances.
+std::vector<Sequence> whole_session_sequences(std::span<const HeldOutPerformances> actions);
 
 }  // namespace echoplan::perception

@@ -106,6 +106,35 @@ TEST(Typicality, ObjectsThatSoundLikeTheOtherClassGetTheirShare) {
   EXPECT_EQ(fit_lookalike_share({}), 0.0);
 }
 
+// The lookalike share sees each session's whole sequence only: where the behaviours hear each
+// session decisively (0.999 right), the share is the share of sessions heard as the other class,
+// ns / n, however their first performances went (the mixture's likelihood is then about
+// (1 - rho)^(n - ns) rho^ns, maximal at ns / n).
+TEST(Typicality, TheLookalikeShareIsFittedOnEachSessionsWholeSequence) {
+  const Table sharp{{0.999, 0.001}, {0.001, 0.999}};
+  std::vector<HeldOutPerformances> actions(3);
+  for (auto& a : actions) a.cross_fitted = {sharp};
+  // 40 sessions of class 0. Sessions 0-9 sound like class 1: all three behaviours hear 1. Sessions
+  // 10-19 slip once: the behaviour they start with (session s starts at s mod 3) hears 1, the other
+  // two hear 0, so their whole sequences are heard as class 0 while their first prefix is not.
+  for (int s = 0; s < 40; ++s)
+    for (int a = 0; a < 3; ++a) {
+      actions[a].session.push_back(s);
+      actions[a].fold.push_back(0);
+      actions[a].label.push_back(0);
+      const bool other = s < 10 || (s < 20 && a == s % 3);
+      actions[a].symbol.push_back(other ? 1 : 0);
+    }
+  const std::vector<Sequence> whole = whole_session_sequences(actions);
+  ASSERT_EQ(whole.size(), 40u);
+  for (const Sequence& w : whole) EXPECT_EQ(w.symbols.size(), 3u);
+  EXPECT_NEAR(fit_lookalike_share(actions), 10.0 / 40.0, 0.005);
+  // Every prefix would have counted the slips' first performances against class 0 as well.
+  const std::vector<Table> tables{sharp, sharp, sharp};
+  const std::vector<Sequence> prefixes = cross_behaviour_sequences(actions);
+  EXPECT_LT(lookalike_nll(tables, 0.3, prefixes), lookalike_nll(tables, 0.25, prefixes));
+}
+
 // Each mixture, at its fitted share, explains its own kind of data better than the other does.
 TEST(Typicality, ClassBlindAndLookalikeObjectsAreToldApartByTheirLikelihood) {
   const std::vector<Table> tables{kTable, kTable};  // one fold of each of the two actions
