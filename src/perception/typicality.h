@@ -82,8 +82,8 @@ double lookalike_nll(std::span<const Table> tables, double rho,
 // is strongest, which is where a planner that keeps sensing sorts the objects it finds hard; a
 // session's short prefixes, where rho changes little, outnumber its whole sequence and pulled the
 // fit towards the typical objects (on the recorded-data stand-in with novel objects the prefixes
-// fitted 0.02 to 0.05 and left the planner up to 4.7 points surer than right; the whole sequences
-// fit about twice that; docs/BENCHMARKS.md).
+// fitted 0.01 to 0.06 per fold and left the planner up to 4.7 points surer than right; the whole
+// sequences fit 0.03 to 0.09, and it is within 0.2 points pooled; docs/BENCHMARKS.md).
 double fit_lookalike_share(std::span<const HeldOutPerformances> actions);
 
 // Each session's last sequence of cross_behaviour_sequences: all its performances.
