@@ -165,7 +165,8 @@ double fit_share(const Nll& nll) {
   return nll(rho) < nll(0.0) ? rho : 0.0;
 }
 
-// The actions' sequences scored with their cross-fitted tables.
+// `sequences` of the actions (as cross_behaviour_sequences indexes them) scored with their
+// cross-fitted tables.
 std::vector<ScoredSequence> scored_sequences(std::span<const HeldOutPerformances> actions,
                                              const std::vector<Sequence>& sequences) {
   if (sequences.empty()) return {};
