@@ -9,7 +9,8 @@
 
 namespace echoplan {
 
-void run_jobs(std::size_t count, int threads, const std::function<JobRunner()>& make_runner) {
+void run_jobs(std::size_t count, int threads, const std::function<JobRunner()>& make_runner,
+              const std::atomic<bool>* stop) {
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
   std::exception_ptr first_error;
@@ -17,7 +18,7 @@ void run_jobs(std::size_t count, int threads, const std::function<JobRunner()>& 
   auto work = [&] {
     try {
       const JobRunner run = make_runner();
-      while (!failed.load()) {
+      while (!failed.load() && !(stop && stop->load())) {
         const std::size_t job = next.fetch_add(1);
         if (job >= count || !run(job)) break;
       }

@@ -91,28 +91,30 @@ int run_campaign_trials(const CampaignConfig& config, const ArmLoops& loops,
                         const CampaignRunOptions& options) {
   std::mutex report_mutex;
   int finished = 0;
-  run_jobs(jobs.size(), options.workers, [&]() -> JobRunner {
-    auto worker = std::make_shared<Worker>(loops);
-    return [&, worker](std::size_t k) {
-      if (options.stop && options.stop->load()) return false;
-      const TrialJob& job = jobs[k];
-      const std::optional<loop::Trial> trial =
-          worker->run(job, group_seed(config, job.group), options.stop);
-      if (!trial) return false;
-      // Trials are numbered by campaign id in every file (the runner numbers them within the
-      // group).
-      TrialResult result = records_of(*trial);
-      result.record.trial = job.id;
-      for (StepRecord& s : result.steps) s.trial = job.id;
-      JournalEntry entry{job.id, config.arms[job.arm].name, config.groups[job.group].object,
-                         trial_loop(loops, job).session, std::move(result)};
-      journal.append(entry);
-      std::lock_guard<std::mutex> lock(report_mutex);
-      ++finished;
-      if (options.on_trial) options.on_trial(entry);
-      return true;
-    };
-  });
+  run_jobs(
+      jobs.size(), options.workers,
+      [&]() -> JobRunner {
+        auto worker = std::make_shared<Worker>(loops);
+        return [&, worker](std::size_t k) {
+          const TrialJob& job = jobs[k];
+          const std::optional<loop::Trial> trial =
+              worker->run(job, group_seed(config, job.group), options.stop);
+          if (!trial) return false;
+          // Trials are numbered by campaign id in every file (the runner numbers them within the
+          // group).
+          TrialResult result = records_of(*trial);
+          result.record.trial = job.id;
+          for (StepRecord& s : result.steps) s.trial = job.id;
+          JournalEntry entry{job.id, config.arms[job.arm].name, config.groups[job.group].object,
+                             trial_loop(loops, job).session, std::move(result)};
+          journal.append(entry);
+          std::lock_guard<std::mutex> lock(report_mutex);
+          ++finished;
+          if (options.on_trial) options.on_trial(entry);
+          return true;
+        };
+      },
+      options.stop);
   return finished;
 }
 

@@ -61,26 +61,29 @@ std::optional<UnheardChoice> choose_unheard(const UnheardSelfPlay& play, const P
   std::vector<std::vector<double>> expected(2, std::vector<double>(play.trials, 0.0));
   std::mutex mutex;
   int finished = 0;
-  run_jobs(jobs, play.workers, [&]() -> JobRunner {
-    // This thread's loops, one per spec it meets.
-    auto loops = std::make_shared<std::map<const loop::LoopSpec*, loop::Loop>>();
-    return [&, loops](std::size_t j) {
-      if (stop.load()) return false;
-      const int e = static_cast<int>(j) / play.trials, t = static_cast<int>(j) % play.trials;
-      const auto& spec = specs[e][t % play.problems.size()];
-      auto it = loops->find(spec.get());
-      if (it == loops->end()) it = loops->emplace(spec.get(), loop::Loop(spec)).first;
-      const std::optional<loop::Trial> trial = it->second.run({t, -1, play.seed}, {}, &stop);
-      if (!trial) return false;
-      const std::optional<double> value =
-          expected_discounted_reward(records_of(*trial).steps, *spec->problem().model->tabular());
-      if (!value) throw std::logic_error("unheard: auto: a trial's belief does not fit its model");
-      std::lock_guard<std::mutex> lock(mutex);
-      expected[e][t] = *value;
-      if (progress) progress("choose unheard", ++finished, jobs);
-      return true;
-    };
-  });
+  run_jobs(
+      jobs, play.workers,
+      [&]() -> JobRunner {
+        // This thread's loops, one per spec it meets.
+        auto loops = std::make_shared<std::map<const loop::LoopSpec*, loop::Loop>>();
+        return [&, loops](std::size_t j) {
+          const int e = static_cast<int>(j) / play.trials, t = static_cast<int>(j) % play.trials;
+          const auto& spec = specs[e][t % play.problems.size()];
+          auto it = loops->find(spec.get());
+          if (it == loops->end()) it = loops->emplace(spec.get(), loop::Loop(spec)).first;
+          const std::optional<loop::Trial> trial = it->second.run({t, -1, play.seed}, {}, &stop);
+          if (!trial) return false;
+          const std::optional<double> value = expected_discounted_reward(
+              records_of(*trial).steps, *spec->problem().model->tabular());
+          if (!value)
+            throw std::logic_error("unheard: auto: a trial's belief does not fit its model");
+          std::lock_guard<std::mutex> lock(mutex);
+          expected[e][t] = *value;
+          if (progress) progress("choose unheard", ++finished, jobs);
+          return true;
+        };
+      },
+      &stop);
   if (stop) return std::nullopt;
 
   std::vector<double> difference(play.trials);

@@ -128,36 +128,39 @@ SimulatedRecordingsSummary write_simulated_recordings(const Catalogue& catalogue
     std::unique_ptr<SimulatedRobot> robot;
     std::unique_ptr<SoundRenderer> renderer;
   };
-  run_jobs(jobs.size(), options.threads, [&]() -> JobRunner {
-    auto scene = std::make_shared<CurrentObject>();
-    return [&, scene](std::size_t k) {
-      if (stop.load()) return false;
-      const Job& job = jobs[k];
-      if (job.object != scene->object) {
-        scene->robot = std::make_unique<SimulatedRobot>(catalogue, job.object, config);
-        scene->renderer =
-            std::make_unique<SoundRenderer>(scene->robot->object(), scene->robot->table(), config);
-        scene->object = job.object;
-      }
-      const std::string action = to_string(job.action);
-      const std::uint64_t seed = clip_seed(options.seed, job.object, action, job.index);
-      Rng rng(seed);
-      const Recording r = simulate_recording(*scene->robot, *scene->renderer, job.action, rng);
-      const std::string relative = fmt::format("{}/{}/{:03d}.wav", job.object, action, job.index);
-      const fs::path final_path = root / relative;
-      const fs::path partial = final_path.string() + ".part";
-      audio::write_audio(partial.string(), r.clip, audio::WriteOptions{});
-      move_into_place(partial, final_path);
-      std::string row = manifest_row(relative, job.object, action, job.index, seed, r.outcome);
-      std::lock_guard lock(mutex);
-      done[k] = Done{relative, std::move(row), r.outcome.collision()};
-      for (; next_row < done.size() && done[next_row]; ++next_row) {
-        write_row(*done[next_row]);
-        if (progress) progress(done[next_row]->file, summary.written, total);
-      }
-      return true;
-    };
-  });
+  run_jobs(
+      jobs.size(), options.threads,
+      [&]() -> JobRunner {
+        auto scene = std::make_shared<CurrentObject>();
+        return [&, scene](std::size_t k) {
+          const Job& job = jobs[k];
+          if (job.object != scene->object) {
+            scene->robot = std::make_unique<SimulatedRobot>(catalogue, job.object, config);
+            scene->renderer = std::make_unique<SoundRenderer>(scene->robot->object(),
+                                                              scene->robot->table(), config);
+            scene->object = job.object;
+          }
+          const std::string action = to_string(job.action);
+          const std::uint64_t seed = clip_seed(options.seed, job.object, action, job.index);
+          Rng rng(seed);
+          const Recording r = simulate_recording(*scene->robot, *scene->renderer, job.action, rng);
+          const std::string relative =
+              fmt::format("{}/{}/{:03d}.wav", job.object, action, job.index);
+          const fs::path final_path = root / relative;
+          const fs::path partial = final_path.string() + ".part";
+          audio::write_audio(partial.string(), r.clip, audio::WriteOptions{});
+          move_into_place(partial, final_path);
+          std::string row = manifest_row(relative, job.object, action, job.index, seed, r.outcome);
+          std::lock_guard lock(mutex);
+          done[k] = Done{relative, std::move(row), r.outcome.collision()};
+          for (; next_row < done.size() && done[next_row]; ++next_row) {
+            write_row(*done[next_row]);
+            if (progress) progress(done[next_row]->file, summary.written, total);
+          }
+          return true;
+        };
+      },
+      &stop);
   // Interrupted: keep the rows of every finished clip, even those after a gap, in manifest order.
   for (std::size_t k = next_row; k < done.size(); ++k)
     if (done[k]) write_row(*done[k]);

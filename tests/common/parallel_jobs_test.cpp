@@ -1,11 +1,12 @@
 // The shared job pool: every job runs once, each thread keeps its own runner and takes jobs in
-// increasing order, a runner's false stops its thread, the first exception reaches the caller. The
-// TSan stage runs these (scripts/setup.sh).
+// increasing order, a runner's false stops its thread, a stop request stops all, the first
+// exception reaches the caller. The TSan stage runs these (scripts/setup.sh).
 #include "common/parallel_jobs.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <numeric>
@@ -74,6 +75,22 @@ TEST(ParallelJobs, ARunnerReturningFalseTakesNoMoreJobs) {
       return job < 3;
     };
   });
+  EXPECT_EQ(ran, (std::vector<std::size_t>{0, 1, 2, 3}));
+}
+
+TEST(ParallelJobs, NoJobIsTakenOnceStopIsSet) {
+  std::atomic<bool> stop{false};
+  std::vector<std::size_t> ran;
+  run_jobs(
+      10, 1,
+      [&]() -> JobRunner {
+        return [&](std::size_t job) {
+          ran.push_back(job);
+          if (job == 3) stop = true;
+          return true;
+        };
+      },
+      &stop);
   EXPECT_EQ(ran, (std::vector<std::size_t>{0, 1, 2, 3}));
 }
 
