@@ -25,13 +25,17 @@
 # by self-play on the folds' problems, experiment/unheard_choice.h) against information_gain; prints
 # the choice (unheard.json). Where it chooses commit its trials are ARMS=commit's, seed for seed.
 # With OBSERVATIONS=graded (environment): the five arms all hear grades.
+# With PLAN=plain (environment): the five arms' planner counts unheard outcomes as shared and plans
+# without lookalikes (unheard: share, lookalike: false): with HOLD_OUT object, as it did by default
+# before a planner sorting novel objects defaulted to commit with lookalikes (with session it does
+# so anyway); the other ARMS name their planners' settings.
 # With COSTS=costed (environment): each behaviour priced (task.costs), from 0.5 for the least
 # informative to 4.5 for the most, as published container studies price theirs: then information
 # must be bought, and the arms are compared in cost-weighted reward.
 # With SEED=N (environment, default 1): the feature set and the campaign drawn from seed N, so
 # another seed gives independent trials (a new set of objects and sessions) to pool with seed 1's.
 # Usage: [ARMS=exact|graded|unlike|unheard|commit|auto] [SET=recorded] [COSTS=costed] [OBSERVATIONS=graded]
-#        [SEED=N] bench/dataset_campaign.sh BUILD_DIR [EPISODES] [HOLD_OUT] [WORKERS] [OUT]
+#        [PLAN=plain] [SEED=N] bench/dataset_campaign.sh BUILD_DIR [EPISODES] [HOLD_OUT] [WORKERS] [OUT]
 set -eu
 # A misspelt switch would silently run another campaign than the one asked for.
 check() {
@@ -45,6 +49,7 @@ check ARMS "${ARMS:-}" " exact graded unlike unheard commit auto"
 check SET "${SET:-}" " recorded"
 check COSTS "${COSTS:-}" " costed"
 check OBSERVATIONS "${OBSERVATIONS:-}" " graded"
+check PLAN "${PLAN:-}" " plain"
 build=$1
 episodes=${2:-20000}
 hold_out=${3:-session}
@@ -69,20 +74,22 @@ fi
   --modality haptic:4:1.0 --group-separation 1.0 --seed "$seed" $set_options
 # The planner of the unheard and commit comparisons (one definition, so both run the same arm).
 commit_lookalike='  - {name: plan_commit_lookalike, strategy: plan, unheard: commit, lookalike: true}'
+# The planner without the novel-object defaults (the tables measured with it name it so).
+plain=', unheard: share, lookalike: false'
 if [ "${ARMS:-}" = exact ]; then
-  arms='  - {name: plan_exact, strategy: plan, leaf: exact}
-  - {name: plan, strategy: plan}
-  - {name: information_gain, strategy: information_gain}'
+  arms="  - {name: plan_exact, strategy: plan, leaf: exact$plain}
+  - {name: plan, strategy: plan$plain}
+  - {name: information_gain, strategy: information_gain}"
 elif [ "${ARMS:-}" = graded ]; then
-  arms='  - {name: plan_graded, strategy: plan, observations: graded}
-  - {name: plan, strategy: plan}
+  arms="  - {name: plan_graded, strategy: plan, observations: graded$plain}
+  - {name: plan, strategy: plan$plain}
   - {name: information_gain_graded, strategy: information_gain, observations: graded}
-  - {name: information_gain, strategy: information_gain}'
+  - {name: information_gain, strategy: information_gain}"
 elif [ "${ARMS:-}" = unheard ]; then
   arms="$commit_lookalike
-  - {name: plan_lookalike, strategy: plan, lookalike: true}
-  - {name: plan_commit, strategy: plan, unheard: commit}
-  - {name: plan, strategy: plan}
+  - {name: plan_lookalike, strategy: plan, lookalike: true, unheard: share}
+  - {name: plan_commit, strategy: plan, unheard: commit, lookalike: false}
+  - {name: plan, strategy: plan$plain}
   - {name: information_gain, strategy: information_gain}"
 elif [ "${ARMS:-}" = commit ]; then
   arms="$commit_lookalike
@@ -91,17 +98,19 @@ elif [ "${ARMS:-}" = auto ]; then
   arms='  - {name: plan_auto_lookalike, strategy: plan, unheard: auto, lookalike: true}
   - {name: information_gain, strategy: information_gain}'
 elif [ "${ARMS:-}" = unlike ]; then
-  arms='  - {name: plan_lookalike, strategy: plan, lookalike: true}
-  - {name: plan_atypical, strategy: plan, atypical: true}
-  - {name: plan, strategy: plan}
+  arms="  - {name: plan_lookalike, strategy: plan, lookalike: true, unheard: share}
+  - {name: plan_atypical, strategy: plan, atypical: true$plain}
+  - {name: plan, strategy: plan$plain}
   - {name: all_actions, strategy: all_actions}
   - {name: best_single, strategy: best_single}
   - {name: information_gain, strategy: information_gain}
-  - {name: information_gain_lookalike, strategy: information_gain, lookalike: true}'
+  - {name: information_gain_lookalike, strategy: information_gain, lookalike: true}"
 else
   heard=
   [ "${OBSERVATIONS:-}" = graded ] && heard=', observations: graded'
-  arms="  - {name: plan, strategy: plan$heard}
+  planner=
+  [ "${PLAN:-}" = plain ] && planner=$plain
+  arms="  - {name: plan, strategy: plan$heard$planner}
   - {name: all_actions, strategy: all_actions$heard}
   - {name: best_single, strategy: best_single$heard}
   - {name: information_gain, strategy: information_gain$heard}

@@ -55,14 +55,16 @@ struct CampaignArm {
   bool atypical = false;
   // A dataset world's arm that plans knowing some objects sound like another class
   // (perception/typicality.h, lookalikes): each class has a lookalike copy with the share its
-  // fold's model fitted; every arm's problem then has the copies, as with `atypical`.
+  // fold's model fitted; every arm's problem then has the copies, as with `atypical`. An arm of
+  // strategy `plan` that does not name it plans with them where the world holds out objects.
   bool lookalike = false;
   // An arm of strategy `plan`: the planner's leaf value (solvers/leaf_value.h: policy, exact, ...);
   // empty: the solver's default for the problem.
   std::string leaf{};
   // An arm of strategy `plan`: how ABT counts outcomes no episode has heard yet (share or commit,
   // solvers/search_tree.h), or kUnheardByPlay: the one that earns more on the arm's own problems
-  // (experiment/unheard_choice.h); empty: share.
+  // (experiment/unheard_choice.h); empty: share. An arm that plans with ABT and a leaf that can
+  // commit, in a world that holds out objects, has commit unless it names another.
   std::string unheard{};
 };
 

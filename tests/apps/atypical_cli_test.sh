@@ -2,7 +2,8 @@
 # Objects unlike their class and lookalikes end to end (docs/feature-sets.md, 6 and 7), on the
 # shipped synthetic feature set (experiments/data/synthetic_objects, two of its behaviours), novel
 # objects sorted by group:
-#   - a dataset campaign runs a planner arm without, one with `atypical: true` and one with
+#   - a dataset campaign runs a planner arm without (`lookalike: false`: a dataset world's planner
+#     plans with lookalikes unless told not to), one with `atypical: true` and one with
 #     `lookalike: true`; each fold has a problem of each kind beside its trials, all naming the
 #     atypical copies then the lookalikes of the groups, each with a prior only on its own kind
 #     (its model's share);
@@ -19,8 +20,8 @@ cat >"$work/atypical.yaml" <<YAML
 seed: 5
 world: {type: dataset, data: $data, hold_out: object, groups: $data/groups.csv}
 arms:
-  - {name: plain, strategy: plan}
-  - {name: atypical, strategy: plan, atypical: true}
+  - {name: plain, strategy: plan, lookalike: false}
+  - {name: atypical, strategy: plan, atypical: true, lookalike: false}
   - {name: lookalike, strategy: plan, lookalike: true}
 planner: {solver: abt, episodes: 500, max_steps: 100}
 YAML

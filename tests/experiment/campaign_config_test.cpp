@@ -331,6 +331,51 @@ TEST_F(DatasetCampaignConfig, DefaultsAreTheReportsRewardsAndSessions) {
   EXPECT_EQ(c.arms[0].strategy, "plan");
 }
 
+// A planner sorting novel objects plans with lookalikes and counts unheard outcomes at commit
+// unless its arm names them; the fixed strategies, a world holding out sessions and the other
+// worlds keep the plain defaults, and the resolved values are in the identity (a campaign begun
+// with the old defaults is another campaign).
+TEST_F(DatasetCampaignConfig, ThePlannersDefaultsOnNovelObjectsAreLookalikesAndCommit) {
+  std::string text = text_;
+  text.replace(text.find("  - {name: greedy"), 0,
+               "  - {name: plain, strategy: plan, unheard: share, lookalike: false}\n"
+               "  - {name: rollout, strategy: plan, leaf: rollout}\n"
+               "  - {name: exact, strategy: plan, leaf: exact}\n");
+  const CampaignConfig c = parse_campaign_config(text, source());
+  ASSERT_EQ(c.arms.size(), 5u);
+  EXPECT_TRUE(c.arms[0].lookalike);
+  EXPECT_EQ(c.arms[0].unheard, "commit");
+  EXPECT_FALSE(c.arms[1].lookalike);  // named: kept
+  EXPECT_EQ(c.arms[1].unheard, "share");
+  EXPECT_TRUE(c.arms[2].lookalike);
+  EXPECT_EQ(c.arms[2].unheard, "");  // a rollout leaf cannot commit: the search's default
+  EXPECT_EQ(c.arms[3].unheard, "commit");
+  EXPECT_FALSE(c.arms[4].lookalike);  // the greedy rule
+  EXPECT_EQ(c.arms[4].unheard, "");
+  std::filesystem::create_directories(dir_ / "data" / "shake");  // the identity hashes the data
+  std::ofstream(dir_ / "data" / "shake" / "audio.csv") << "object,session,f\nmug,1,0.5\n";
+  const nlohmann::json arms = c.identity()["arms"];
+  EXPECT_EQ(arms[0]["unheard"], "commit");
+  EXPECT_EQ(arms[0]["lookalike"], true);
+  EXPECT_FALSE(arms[4].contains("lookalike"));
+  EXPECT_EQ(to_json(campaign_config_from_json(to_json(c), "campaign.json")), to_json(c));
+  // Known objects' new sessions: the plain planner.
+  std::string sessions = text;
+  sessions.replace(sessions.find("hold_out: object"), 16, "hold_out: session");
+  const CampaignConfig known = parse_campaign_config(sessions, source());
+  EXPECT_FALSE(known.arms[0].lookalike);
+  EXPECT_EQ(known.arms[0].unheard, "");
+  // POMCP has no unheard estimate to choose.
+  text.replace(text.find("planner: {episodes: 100}"), 24,
+               "planner: {episodes: 100, solver: pomcp}");
+  EXPECT_EQ(parse_campaign_config(text, source()).arms[0].unheard, "");
+  // A problem file's planner keeps the search's defaults.
+  const CampaignConfig model =
+      parse_campaign_config(with_arm("{name: a, problem: p.yaml}"), "/dir/c.yaml");
+  EXPECT_FALSE(model.arms[0].lookalike);
+  EXPECT_EQ(model.arms[0].unheard, "");
+}
+
 TEST_F(DatasetCampaignConfig, MistakesNameTheLineAndTheProblem) {
   auto replaced = [&](const std::string& from, const std::string& to) {
     std::string text = text_;

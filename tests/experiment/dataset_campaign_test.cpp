@@ -155,9 +155,9 @@ TEST(DatasetCampaign, HoldingOutObjectsSortsNovelObjectsByGroup) {
   const CampaignResults results =
       run(dataset_config(data, "object", "lda"), data.parent_path() / "out");
   ASSERT_EQ(results.entries.size(), 5u * 18u);
-  // The hidden state is the group: 2 classes.
+  // The hidden state is the group: 2 classes, and their lookalikes (the planner's default).
   EXPECT_EQ(results.spec.state.discrete_value_names.at(0),
-            (std::vector<std::string>{"group0", "group1"}));
+            (std::vector<std::string>{"group0", "group1", "group0~lookalike", "group1~lookalike"}));
   for (const JournalEntry& e : results.entries) {
     const int object = std::stoi(e.object.substr(3));
     EXPECT_EQ(e.result.record.true_state, object / 3) << e.object;
@@ -172,8 +172,9 @@ TEST(DatasetCampaign, AnArmWithAtypicalObjectsLeavesTheOtherArmsAsTheyWere) {
   auto config = [&](bool with_atypical) {
     std::string text = "seed: 3\nworld: {type: dataset, data: " + data.string() +
                        ", hold_out: object, groups: " + (data / "groups.csv").string() +
-                       "}\narms:\n  - {name: plan, strategy: plan}\n";
-    if (with_atypical) text += "  - {name: plan_atypical, strategy: plan, atypical: true}\n";
+                       "}\narms:\n  - {name: plan, strategy: plan, lookalike: false}\n";
+    if (with_atypical)
+      text += "  - {name: plan_atypical, strategy: plan, atypical: true, lookalike: false}\n";
     text += "planner: {solver: abt, episodes: 300, max_steps: 20}\n";
     return parse_campaign_config(text, (data.parent_path() / "campaign.yaml").string());
   };
@@ -204,7 +205,7 @@ TEST(DatasetCampaign, AnArmWithLookalikesHasItsCopiesAndItsFoldProblem) {
   const fs::path data = separable_data("dataset_lookalike");
   const std::string text = "seed: 3\nworld: {type: dataset, data: " + data.string() +
                            ", hold_out: object, groups: " + (data / "groups.csv").string() +
-                           "}\narms:\n  - {name: plan, strategy: plan}\n"
+                           "}\narms:\n  - {name: plan, strategy: plan, lookalike: false}\n"
                            "  - {name: plan_lookalike, strategy: plan, lookalike: true}\n"
                            "planner: {solver: abt, episodes: 300, max_steps: 20}\n";
   const fs::path dir = data.parent_path() / "out";
