@@ -5,9 +5,10 @@
 # in 8 groups of 5, 5 sessions, 4 behaviours, audio and haptic), sorted by group with whole objects
 # held out, at EPISODES episodes: the planner (with ABT's default leaf and with the exact leaf) and
 # the greedy rule, each without and with atypical objects among the hidden states
-# (`atypical: true`), the planner with lookalikes instead (`lookalike: true`, with either leaf), and
-# two fixed baselines; the exact planner with atypical objects first, so the
-# paired differences are against it. Prints each arm's row, the paired differences, how sure each
+# (`atypical: true`), the planner with lookalikes instead (`lookalike: true`, with either leaf), two
+# fixed baselines, and last the planner as a campaign sorting novel objects plans by default
+# (`plan_defaults`: lookalikes, unheard outcomes at commit); the exact planner with atypical objects
+# first, so the paired differences are against it. Prints each arm's row, the paired differences, how sure each
 # arm was at the sort against how often it was right, and each fold's certified regret per trial.
 # Usage: bench/honest_confidence.sh BUILD_DIR [EPISODES] [OUT]
 set -eu
@@ -40,6 +41,7 @@ arms:
   - {name: information_gain_atypical, strategy: information_gain, atypical: true}
   - {name: plan_exact_lookalike, strategy: plan, leaf: exact, lookalike: true, unheard: share}
   - {name: plan_lookalike, strategy: plan, lookalike: true, unheard: share}
+  - {name: plan_defaults, strategy: plan}
 planner: {solver: abt, episodes: $episodes, max_steps: 100}
 YAML
 "$build/echoplan" experiment --config "$dir/campaign.yaml" --out "$out" --workers 2 >/dev/null 2>&1
