@@ -12,7 +12,8 @@
 # table is tempered), a tenth of the objects like another group in every behaviour, and the
 # planner sensing longer.
 # With ARMS=graded (environment): four arms, plan and information_gain each hearing labels and
-# grades (observations: graded), so grades are measured paired against labels.
+# grades (observations: graded), so grades are measured paired against labels; the planner is the
+# default one (PLAN=plain: the plain one).
 # With ARMS=unlike (environment): seven arms, the five but random, the planner also planning with
 # lookalikes (lookalike: true; plan_lookalike listed first) and with objects unlike their class
 # (atypical: true), and information_gain also with lookalikes.
@@ -25,10 +26,10 @@
 # by self-play on the folds' problems, experiment/unheard_choice.h) against information_gain; prints
 # the choice (unheard.json). Where it chooses commit its trials are ARMS=commit's, seed for seed.
 # With OBSERVATIONS=graded (environment): the five arms all hear grades.
-# With PLAN=plain (environment): the five arms' planner counts unheard outcomes as shared and plans
-# without lookalikes (unheard: share, lookalike: false): with HOLD_OUT object, as it did by default
-# before a planner sorting novel objects defaulted to commit with lookalikes (with session it does
-# so anyway); the other ARMS name their planners' settings.
+# With PLAN=plain (environment): the planner of the five arms (and of ARMS=graded) counts unheard
+# outcomes as shared and plans without lookalikes (unheard: share, lookalike: false): with HOLD_OUT
+# object, as it did by default before a planner sorting novel objects defaulted to commit with
+# lookalikes (with session it does so anyway); the other ARMS name their planners' settings.
 # With COSTS=costed (environment): each behaviour priced (task.costs), from 0.5 for the least
 # informative to 4.5 for the most, as published container studies price theirs: then information
 # must be bought, and the arms are compared in cost-weighted reward.
@@ -76,13 +77,16 @@ fi
 commit_lookalike='  - {name: plan_commit_lookalike, strategy: plan, unheard: commit, lookalike: true}'
 # The planner without the novel-object defaults (the tables measured with it name it so).
 plain=', unheard: share, lookalike: false'
+# The planner of the five arms and of ARMS=graded: the default one, or with PLAN=plain the plain one.
+planner=
+[ "${PLAN:-}" = plain ] && planner=$plain
 if [ "${ARMS:-}" = exact ]; then
   arms="  - {name: plan_exact, strategy: plan, leaf: exact$plain}
   - {name: plan, strategy: plan$plain}
   - {name: information_gain, strategy: information_gain}"
 elif [ "${ARMS:-}" = graded ]; then
-  arms="  - {name: plan_graded, strategy: plan, observations: graded$plain}
-  - {name: plan, strategy: plan$plain}
+  arms="  - {name: plan_graded, strategy: plan, observations: graded$planner}
+  - {name: plan, strategy: plan$planner}
   - {name: information_gain_graded, strategy: information_gain, observations: graded}
   - {name: information_gain, strategy: information_gain}"
 elif [ "${ARMS:-}" = unheard ]; then
@@ -108,8 +112,6 @@ elif [ "${ARMS:-}" = unlike ]; then
 else
   heard=
   [ "${OBSERVATIONS:-}" = graded ] && heard=', observations: graded'
-  planner=
-  [ "${PLAN:-}" = plain ] && planner=$plain
   arms="  - {name: plan, strategy: plan$heard$planner}
   - {name: all_actions, strategy: all_actions$heard}
   - {name: best_single, strategy: best_single$heard}

@@ -80,15 +80,18 @@ std::vector<ArmEntry> arm_entries(const fs::path& directory) {
 }  // namespace
 
 std::vector<ArmCertificate> certify_campaign(const fs::path& directory,
-                                             const CertifyOptions& options) {
+                                             const CertifyOptions& options,
+                                             const CertifiedProgress& progress) {
   const fs::path folds = directory / "folds";
   if (!fs::is_directory(folds))
     throw InputError(directory.string(), 0,
                      "has no folds/ folder: certify --campaign takes a dataset campaign's folder "
                      "(each fold's problem beside its trials)");
   const std::vector<ArmEntry> arms = arm_entries(directory);
+  const std::vector<std::string> fold_list = fold_names(folds);
+  const std::size_t total = fold_list.size() * arms.size();
   std::vector<ArmCertificate> certificates;
-  for (const std::string& fold : fold_names(folds)) {
+  for (const std::string& fold : fold_list) {
     std::map<std::string, pomdp::Problem> problems;  // loaded once per fold
     for (const ArmEntry& arm : arms) {
       const std::string name = fold_problem_name(arm.problem);
@@ -108,6 +111,7 @@ std::vector<ArmCertificate> certify_campaign(const fs::path& directory,
       certificates.push_back(
           {fold, arm.name, problem_file,
            certify_steps(problems.at(name), problem_path.string(), steps, options)});
+      if (progress) progress(certificates.back(), certificates.size(), total);
     }
   }
   if (certificates.empty()) throw InputError(folds.string(), 0, "holds no folds");

@@ -4,7 +4,9 @@
 // tables differ and one problem for all would certify the wrong decisions.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -27,11 +29,17 @@ struct ArmCertificate {
   Certificate certificate;
 };
 
+// Told after each fold and arm is certified, in order: that certificate, and how many of how many
+// are done (a campaign's certificates can take many minutes, the exact bounds at every belief).
+using CertifiedProgress =
+    std::function<void(const ArmCertificate& certified, std::size_t done, std::size_t total)>;
+
 // Every fold (in numeric order) and arm (in the campaign's order, from its campaign.json) of the
 // campaign folder `directory`. Throws InputError when it has no folds/ (not a dataset campaign, or
 // written before folds were), a fold has no problem.yaml, or an arm's steps.csv is missing.
 std::vector<ArmCertificate> certify_campaign(const std::filesystem::path& directory,
-                                             const CertifyOptions& options);
+                                             const CertifyOptions& options,
+                                             const CertifiedProgress& progress = {});
 
 // A certificate's share of V* is only worth stating when its bounds are this tight: V*(b0)'s gap
 // and the mean per-trial looseness each within 1% of V*.

@@ -74,6 +74,12 @@ if {e["arm"] for e in entries} != {"plain", "atypical", "lookalike"}:
     print("arms:", {e["arm"] for e in entries}); bad += 1
 sys.exit(bad)
 PY
+# Progress on stderr: a line as each fold and arm is certified, counted against all of them.
+folds_arms=$(python3 -c "import json, sys; print(len(json.load(open(sys.argv[1]))['folds']))" "$work/certify.json")
+[ "$(grep -c "certified fold .*, arm .* ([0-9]* of $folds_arms, " "$work/certify.err")" = "$folds_arms" ] \
+  || fail "certify --campaign did not report each of its $folds_arms folds x arms: $(cat "$work/certify.err")"
+grep -q "certified fold 1, arm plain (1 of $folds_arms, " "$work/certify.err" \
+  || fail "the first progress line is not fold 1's first arm: $(cat "$work/certify.err")"
 
 # Only a dataset world's folds fit the share.
 cat >"$work/simulated.yaml" <<YAML

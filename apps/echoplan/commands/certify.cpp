@@ -50,8 +50,17 @@ void certify_campaign(const CertifyArgs& args) {
   if (!args.problem.empty() || !args.steps.empty())
     throw InputError("--campaign certifies each fold with its own problem: drop --problem/--steps");
   const auto start = std::chrono::steady_clock::now();
+  auto seconds = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  const auto progress = [&](const experiment::ArmCertificate& a, std::size_t done,
+                            std::size_t total) {
+    spdlog::info("certified fold {}, arm {} ({} of {}, {:.1f} s): regret {:.4f} ± {:.4f} per trial",
+                 a.fold, a.arm, done, total, seconds(), a.certificate.regret.mean,
+                 a.certificate.regret.half_width);
+  };
   const std::vector<experiment::ArmCertificate> certificates =
-      experiment::certify_campaign(args.campaign, certify_options(args));
+      experiment::certify_campaign(args.campaign, certify_options(args), progress);
   const std::filesystem::path out = std::filesystem::path(args.campaign) / "certified";
   std::filesystem::create_directories(out);
   const std::string text = experiment::campaign_certificate_text(certificates);
@@ -59,8 +68,7 @@ void certify_campaign(const CertifyArgs& args) {
   write_file_atomically(out / "summary.json", json.dump(2) + "\n");
   write_file_atomically(out / "summary.txt", text);
   fmt::print("{}", args.json ? json.dump() + "\n" : text);
-  spdlog::info("certified {} folds x arms in {:.2f} s; {}", certificates.size(),
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+  spdlog::info("certified {} folds x arms in {:.2f} s; {}", certificates.size(), seconds(),
                (out / "summary.json").string());
 }
 
