@@ -81,7 +81,8 @@ std::vector<ArmEntry> arm_entries(const fs::path& directory) {
 
 std::vector<ArmCertificate> certify_campaign(const fs::path& directory,
                                              const CertifyOptions& options,
-                                             const CertifiedProgress& progress) {
+                                             const CertifiedProgress& progress,
+                                             const std::atomic<bool>* stop) {
   const fs::path folds = directory / "folds";
   if (!fs::is_directory(folds))
     throw InputError(directory.string(), 0,
@@ -90,10 +91,12 @@ std::vector<ArmCertificate> certify_campaign(const fs::path& directory,
   const std::vector<ArmEntry> arms = arm_entries(directory);
   const std::vector<std::string> fold_list = fold_names(folds);
   const std::size_t total = fold_list.size() * arms.size();
+  if (total == 0) throw InputError(folds.string(), 0, "holds no folds");
   std::vector<ArmCertificate> certificates;
   for (const std::string& fold : fold_list) {
     std::map<std::string, pomdp::Problem> problems;  // loaded once per fold
     for (const ArmEntry& arm : arms) {
+      if (stop != nullptr && stop->load()) return certificates;
       const std::string name = fold_problem_name(arm.problem);
       const std::string problem_file = "folds/" + fold + "/" + name;
       const fs::path problem_path = directory / problem_file;
@@ -114,7 +117,6 @@ std::vector<ArmCertificate> certify_campaign(const fs::path& directory,
       if (progress) progress(certificates.back(), certificates.size(), total);
     }
   }
-  if (certificates.empty()) throw InputError(folds.string(), 0, "holds no folds");
   return certificates;
 }
 

@@ -4,6 +4,7 @@
 // tables differ and one problem for all would certify the wrong decisions.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -35,11 +36,13 @@ using CertifiedProgress =
     std::function<void(const ArmCertificate& certified, std::size_t done, std::size_t total)>;
 
 // Every fold (in numeric order) and arm (in the campaign's order, from its campaign.json) of the
-// campaign folder `directory`. Throws InputError when it has no folds/ (not a dataset campaign, or
-// written before folds were), a fold has no problem.yaml, or an arm's steps.csv is missing.
+// campaign folder `directory`; once `stop` is set, no further one is begun, and those finished are
+// returned. Throws InputError when it has no folds/ (not a dataset campaign, or written before
+// folds were), a fold has no problem.yaml, or an arm's steps.csv is missing.
 std::vector<ArmCertificate> certify_campaign(const std::filesystem::path& directory,
                                              const CertifyOptions& options,
-                                             const CertifiedProgress& progress = {});
+                                             const CertifiedProgress& progress = {},
+                                             const std::atomic<bool>* stop = nullptr);
 
 // A certificate's share of V* is only worth stating when its bounds are this tight: V*(b0)'s gap
 // and the mean per-trial looseness each within 1% of V*.

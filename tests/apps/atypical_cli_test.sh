@@ -80,6 +80,8 @@ folds_arms=$(python3 -c "import json, sys; print(len(json.load(open(sys.argv[1])
   || fail "certify --campaign did not report each of its $folds_arms folds x arms: $(cat "$work/certify.err")"
 grep -q "certified fold 1, arm plain (1 of $folds_arms, " "$work/certify.err" \
   || fail "the first progress line is not fold 1's first arm: $(cat "$work/certify.err")"
+grep -q '"interrupted": false' "$work/atypical/certified/summary.json" \
+  || fail "certified/summary.json does not say the certificates ran to the end"
 
 # Only a dataset world's folds fit the share.
 cat >"$work/simulated.yaml" <<YAML

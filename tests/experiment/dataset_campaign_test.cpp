@@ -11,6 +11,7 @@
 #include "../perception/synthetic_feature_set.h"
 #include "common/error.h"
 #include "experiment/campaign.h"
+#include "experiment/campaign_certificate.h"
 #include "experiment/unheard_choice.h"
 
 namespace echoplan::experiment {
@@ -220,6 +221,61 @@ TEST(DatasetCampaign, AnArmWithLookalikesHasItsCopiesAndItsFoldProblem) {
   EXPECT_TRUE(fs::is_regular_file(dir / "folds/1/problem.yaml"));
   EXPECT_TRUE(fs::is_regular_file(dir / "folds/1/problem-lookalike.yaml"));
   EXPECT_EQ(results.entries.size(), 36u);
+}
+
+// certify --campaign's library half: each fold and arm reported as it is certified, in order and
+// counted against all of them; once stopped, the ones finished are returned and no other is begun.
+TEST(DatasetCampaign, CertifyingACampaignReportsEachFoldAndArmAndStopsWhenAsked) {
+  const fs::path data = separable_data("dataset_certify_progress");
+  const std::string text = "seed: 3\nworld: {type: dataset, data: " + data.string() +
+                           ", hold_out: object, groups: " + (data / "groups.csv").string() +
+                           "}\narms:\n  - {name: plan, strategy: plan}\n"
+                           "  - {name: information_gain, strategy: information_gain}\n"
+                           "planner: {solver: abt, episodes: 300, max_steps: 20}\n";
+  const fs::path dir = data.parent_path() / "out";
+  run(parse_campaign_config(text, (data.parent_path() / "campaign.yaml").string()), dir);
+  CertifyOptions options;
+  options.root_expansions = 2000;
+  std::vector<std::string> reported;
+  std::size_t last_total = 0;
+  const auto record = [&](const ArmCertificate& a, std::size_t done, std::size_t total) {
+    reported.push_back(a.fold + "/" + a.arm);
+    EXPECT_EQ(done, reported.size());
+    last_total = total;
+  };
+  const std::vector<ArmCertificate> all = certify_campaign(dir, options, record);
+  std::size_t folds = 0;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir / "folds"))
+    folds += e.is_directory() ? 1 : 0;
+  ASSERT_GE(folds, 2u);
+  ASSERT_EQ(all.size(), 2 * folds);  // two arms a fold
+  EXPECT_EQ(last_total, all.size());
+  ASSERT_EQ(reported.size(), all.size());
+  for (std::size_t i = 0; i < all.size(); ++i)
+    EXPECT_EQ(reported[i], all[i].fold + "/" + all[i].arm);
+  EXPECT_EQ(reported[0], "1/plan");
+  EXPECT_EQ(reported[1], "1/information_gain");
+  EXPECT_EQ(reported[2], "2/plan");
+
+  // Stopped while the third is certified: it finishes, and no fourth is begun.
+  std::atomic<bool> stop{false};
+  std::size_t calls = 0;
+  const std::vector<ArmCertificate> some = certify_campaign(
+      dir, options,
+      [&](const ArmCertificate&, std::size_t done, std::size_t) {
+        ++calls;
+        if (done == 3) stop = true;
+      },
+      &stop);
+  ASSERT_EQ(some.size(), 3u);
+  EXPECT_EQ(calls, 3u);
+  for (std::size_t i = 0; i < some.size(); ++i) {
+    EXPECT_EQ(some[i].fold, all[i].fold);
+    EXPECT_EQ(some[i].arm, all[i].arm);
+    EXPECT_EQ(some[i].certificate.regret.mean, all[i].certificate.regret.mean);
+  }
+  // Asked to stop before any: none, and no error (the folder is a campaign's).
+  EXPECT_TRUE(certify_campaign(dir, options, {}, &stop).empty());
 }
 
 // An arm with unheard: auto plans, trial for trial, as the arm that names the estimate its

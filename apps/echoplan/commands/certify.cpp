@@ -12,6 +12,7 @@
 #include "commands/commands.h"
 #include "common/error.h"
 #include "common/file_io.h"
+#include "common/stop_signal.h"
 #include "experiment/campaign_certificate.h"
 #include "experiment/regret_certificate.h"
 #include "experiment/trial_log.h"
@@ -59,15 +60,23 @@ void certify_campaign(const CertifyArgs& args) {
                  a.fold, a.arm, done, total, seconds(), a.certificate.regret.mean,
                  a.certificate.regret.half_width);
   };
+  // Ctrl-C stops after the fold and arm in progress; those finished are written.
+  const StopSignal stop;
   const std::vector<experiment::ArmCertificate> certificates =
-      experiment::certify_campaign(args.campaign, certify_options(args), progress);
+      experiment::certify_campaign(args.campaign, certify_options(args), progress, &stop.flag());
   const std::filesystem::path out = std::filesystem::path(args.campaign) / "certified";
   std::filesystem::create_directories(out);
   const std::string text = experiment::campaign_certificate_text(certificates);
-  const nlohmann::ordered_json json = experiment::campaign_certificate_json(certificates);
+  nlohmann::ordered_json json = experiment::campaign_certificate_json(certificates);
+  json["interrupted"] = stop.requested();
   write_file_atomically(out / "summary.json", json.dump(2) + "\n");
   write_file_atomically(out / "summary.txt", text);
   fmt::print("{}", args.json ? json.dump() + "\n" : text);
+  if (stop.requested()) {
+    spdlog::warn("interrupted: {} folds x arms certified and written to {}", certificates.size(),
+                 (out / "summary.json").string());
+    throw Interrupted{};
+  }
   spdlog::info("certified {} folds x arms in {:.2f} s; {}", certificates.size(), seconds(),
                (out / "summary.json").string());
 }
