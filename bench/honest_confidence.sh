@@ -8,8 +8,9 @@
 # (`atypical: true`), the planner with lookalikes instead (`lookalike: true`, with either leaf), two
 # fixed baselines, and last the planner as a campaign sorting novel objects plans by default
 # (`plan_defaults`: lookalikes, unheard outcomes at commit); the exact planner with atypical objects
-# first, so the paired differences are against it. Prints each arm's row, the paired differences, how sure each
-# arm was at the sort against how often it was right, and each fold's certified regret per trial.
+# first, so the paired differences are against it. Prints each arm's row, the paired differences,
+# how sure each arm was at the sort against how often it was right, and each fold's certified
+# regret per trial.
 # Usage: bench/honest_confidence.sh BUILD_DIR [EPISODES] [OUT]
 set -eu
 build=$1

@@ -39,6 +39,15 @@ CampaignConfig dataset_config(const fs::path& data, const std::string& hold_out,
   return parse_campaign_config(text, (data.parent_path() / "campaign.yaml").string());
 }
 
+// Whole objects of `data` held out and sorted by group, with the arms `arms` (YAML list lines).
+CampaignConfig novel_object_config(const fs::path& data, const std::string& arms) {
+  const std::string text = "seed: 3\nworld: {type: dataset, data: " + data.string() +
+                           ", hold_out: object, groups: " + (data / "groups.csv").string() +
+                           "}\narms:\n" + arms +
+                           "planner: {solver: abt, episodes: 300, max_steps: 20}\n";
+  return parse_campaign_config(text, (data.parent_path() / "campaign.yaml").string());
+}
+
 // Runs the whole campaign in `dir` on one worker and returns its results.
 CampaignResults run(const CampaignConfig& config, const fs::path& dir) {
   fs::remove_all(dir);
@@ -171,13 +180,10 @@ TEST(DatasetCampaign, HoldingOutObjectsSortsNovelObjectsByGroup) {
 TEST(DatasetCampaign, AnArmWithAtypicalObjectsLeavesTheOtherArmsAsTheyWere) {
   const fs::path data = separable_data("dataset_atypical");
   auto config = [&](bool with_atypical) {
-    std::string text = "seed: 3\nworld: {type: dataset, data: " + data.string() +
-                       ", hold_out: object, groups: " + (data / "groups.csv").string() +
-                       "}\narms:\n  - {name: plan, strategy: plan, lookalike: false}\n";
+    std::string arms = "  - {name: plan, strategy: plan, lookalike: false}\n";
     if (with_atypical)
-      text += "  - {name: plan_atypical, strategy: plan, atypical: true, lookalike: false}\n";
-    text += "planner: {solver: abt, episodes: 300, max_steps: 20}\n";
-    return parse_campaign_config(text, (data.parent_path() / "campaign.yaml").string());
+      arms += "  - {name: plan_atypical, strategy: plan, atypical: true, lookalike: false}\n";
+    return novel_object_config(data, arms);
   };
   const fs::path with_dir = data.parent_path() / "with";
   const CampaignResults with = run(config(true), with_dir);
@@ -204,14 +210,12 @@ TEST(DatasetCampaign, AnArmWithAtypicalObjectsLeavesTheOtherArmsAsTheyWere) {
 // its own fold problem, and a sort's belief counts a lookalike's chance of being in the bin.
 TEST(DatasetCampaign, AnArmWithLookalikesHasItsCopiesAndItsFoldProblem) {
   const fs::path data = separable_data("dataset_lookalike");
-  const std::string text = "seed: 3\nworld: {type: dataset, data: " + data.string() +
-                           ", hold_out: object, groups: " + (data / "groups.csv").string() +
-                           "}\narms:\n  - {name: plan, strategy: plan, lookalike: false}\n"
-                           "  - {name: plan_lookalike, strategy: plan, lookalike: true}\n"
-                           "planner: {solver: abt, episodes: 300, max_steps: 20}\n";
   const fs::path dir = data.parent_path() / "out";
   const CampaignResults results =
-      run(parse_campaign_config(text, (data.parent_path() / "campaign.yaml").string()), dir);
+      run(novel_object_config(data,
+                              "  - {name: plan, strategy: plan, lookalike: false}\n"
+                              "  - {name: plan_lookalike, strategy: plan, lookalike: true}\n"),
+          dir);
   EXPECT_EQ(results.spec.state.discrete_value_names.at(0),
             (std::vector<std::string>{"group0", "group1", "group0~lookalike", "group1~lookalike"}));
   // Two groups: a lookalike of group0 is group1, right only in group1's bin.
@@ -227,13 +231,11 @@ TEST(DatasetCampaign, AnArmWithLookalikesHasItsCopiesAndItsFoldProblem) {
 // counted against all of them; once stopped, the ones finished are returned and no other is begun.
 TEST(DatasetCampaign, CertifyingACampaignReportsEachFoldAndArmAndStopsWhenAsked) {
   const fs::path data = separable_data("dataset_certify_progress");
-  const std::string text = "seed: 3\nworld: {type: dataset, data: " + data.string() +
-                           ", hold_out: object, groups: " + (data / "groups.csv").string() +
-                           "}\narms:\n  - {name: plan, strategy: plan}\n"
-                           "  - {name: information_gain, strategy: information_gain}\n"
-                           "planner: {solver: abt, episodes: 300, max_steps: 20}\n";
   const fs::path dir = data.parent_path() / "out";
-  run(parse_campaign_config(text, (data.parent_path() / "campaign.yaml").string()), dir);
+  run(novel_object_config(data,
+                          "  - {name: plan, strategy: plan}\n"
+                          "  - {name: information_gain, strategy: information_gain}\n"),
+      dir);
   CertifyOptions options;
   options.root_expansions = 2000;
   std::vector<std::string> reported;
