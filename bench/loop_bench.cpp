@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "../tests/common/source_dir.h"
 #include "common/rng.h"
 #include "loop/calibrated_problem.h"
 #include "loop/object_problem.h"
@@ -28,9 +29,9 @@ using namespace echoplan;
 
 struct Fixture {
   sim::Catalogue catalogue =
-      sim::load_catalogue(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml");
+      sim::load_catalogue(echoplan::testing::source_dir() + "/objects/catalogue.yaml");
   pomdp::Problem base =
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+      pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml");
   std::shared_ptr<const perception::ObservationModel> model;
   pomdp::ModelPtr problem;
   audio::AudioClip clip;

@@ -4,6 +4,7 @@
 //   build/bench/planner_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include "../tests/common/source_dir.h"
 #include "pomdp/make_belief.h"
 #include "pomdp/problem.h"
 #include "solvers/make_solver.h"
@@ -15,7 +16,7 @@ using namespace echoplan;
 void search_from_b0(benchmark::State& state, const char* problem_file, const char* solver_name,
                     bool keep_episodes = false) {
   const pomdp::Problem problem =
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/" + problem_file);
+      pomdp::load_problem(echoplan::testing::source_dir() + "/" + problem_file);
   solvers::SearchOptions options;
   options.max_depth = problem.planner.depth;
   options.keep_episodes = keep_episodes;

@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "../tests/common/source_dir.h"
 #include "pomdp/exact_belief.h"
 #include "pomdp/particle_belief.h"
 #include "pomdp/problem.h"
@@ -17,7 +18,7 @@ using namespace echoplan::pomdp;
 // range(0) = number of objects: 4 is the report's problem, larger ones are random problems.
 ModelPtr object_model(int objects) {
   if (objects == 4)
-    return load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml").model;
+    return load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml").model;
   Rng rng(1);
   return std::make_shared<const ObjectIdentificationModel>(
       make_random_object_problem(RandomProblemSettings{objects, 4, 1.5, 1}, rng));

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "../tests/common/source_dir.h"
 #include "sim/recording.h"
 
 namespace {
@@ -12,7 +13,7 @@ using echoplan::sim::SimConfig;
 
 const echoplan::sim::Catalogue& catalogue() {
   static const auto c =
-      echoplan::sim::load_catalogue(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml");
+      echoplan::sim::load_catalogue(echoplan::testing::source_dir() + "/objects/catalogue.yaml");
   return c;
 }
 

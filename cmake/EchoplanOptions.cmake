@@ -34,11 +34,21 @@ function(echoplan_module name)
   install(FILES ${headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/echoplan/${folder})
 endfunction()
 
+# Tests and benchmarks find the repository's files through tests/common/source_dir.h. The checkout's
+# path is compiled into this one library, not passed to every compile: each test file then compiles
+# the same in any folder, and a compiler cache filled from one clone hits from another.
+function(echoplan_source_dir_library)
+  configure_file(${PROJECT_SOURCE_DIR}/cmake/source_dir.cpp.in ${PROJECT_BINARY_DIR}/source_dir.cpp @ONLY)
+  add_library(echoplan_source_dir STATIC ${PROJECT_BINARY_DIR}/source_dir.cpp)
+  target_include_directories(echoplan_source_dir PRIVATE ${PROJECT_SOURCE_DIR}/tests/common)
+  target_link_libraries(echoplan_source_dir PRIVATE echoplan_options)
+endfunction()
+
 # echoplan_test(NAME SOURCES... DEPS ...): one GoogleTest binary, registered with ctest.
 function(echoplan_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
-  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest_main GTest::gmock echoplan_options)
-  target_compile_definitions(${name} PRIVATE ECHOPLAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest_main GTest::gmock echoplan_options
+                                        echoplan_source_dir)
   gtest_discover_tests(${name} TEST_PREFIX "${name}." DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 300)
 endfunction()

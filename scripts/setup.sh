@@ -12,6 +12,12 @@
 #                             libFuzzer target built with clang and run briefly (scripts/fuzz.sh)
 #   scripts/setup.sh deps     only install dependencies
 #
+# Compiles go through Debian's ccache when it is installed (setup installs it): its cache (by
+# default ~/.cache/ccache, ECHOPLAN_CCACHE=0 turns it off) outlives the build folders, and paths are
+# taken relative to the checkout, so a fresh clone in another folder compiles from the cache what an
+# earlier run on this machine compiled. A first run on a bare machine fills it (docs/BENCHMARKS.md,
+# "Building and testing" has both times).
+#
 # Environment: JOBS (parallel build jobs, default: number of cores), BUILD_DIR (default: build),
 # SAN_BUILD_DIR (default: build-san), TSAN_BUILD_DIR (default: build-tsan), ECHOPLAN_CHECK_FORMAT (1: `test` first checks the layout of every
 # C++ file with scripts/check-format.sh; default 1; 0 skips it), ECHOPLAN_INSTALL_PYTHON (1: after
@@ -36,6 +42,7 @@ tsan_tests='^common_tests\.ParallelJobs\.|^campaign_tests\.Campaign\.|^sim_tests
 # Keep this list in one place: docs/getting-started.md points here.
 packages=(
   build-essential cmake pkg-config git
+  ccache                     # the compiler cache above
   libgtest-dev libgmock-dev libbenchmark-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev
   libsndfile1-dev libsamplerate0-dev libkissfft-dev
@@ -53,6 +60,25 @@ packages=(
   python3-roslaunch python3-rosparam python3-rosservice python3-rostest librostest-dev
   python3-rospy              # tests/robot/ros/audio_capture_stand_in.py: a stand-in audio_capture node
 )
+
+# Every compile through ccache (CMake reads these when a build folder is configured the first
+# time; scripts/fuzz.sh and scripts/check-install.sh inherit them). BASEDIR and NOHASHDIR make a
+# compile independent of where the checkout is: the debug line tables then name the first clone's
+# folder, which is all a sanitizer report needs.
+use_compiler_cache() {
+  [ "${ECHOPLAN_CCACHE:-1}" = 1 ] && command -v ccache >/dev/null || return 0
+  export CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache
+  export CCACHE_BASEDIR=$here CCACHE_NOHASHDIR=1 CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-20G}
+}
+
+# stage NAME: prints how long the previous stage of `test` took and starts timing NAME.
+stage_name=""
+stage_start=$SECONDS
+stage() {
+  [ -z "$stage_name" ] || echo "setup: $stage_name took $((SECONDS - stage_start)) s"
+  stage_name=$1
+  stage_start=$SECONDS
+}
 
 install_deps() {
   local missing=()
@@ -127,25 +153,30 @@ install_python() {  # install_python DIR
 
 case "$mode" in
   deps) install_deps ;;
-  build) install_deps; build "$build_dir"; install_python "$build_dir" ;;
+  build) install_deps; use_compiler_cache; build "$build_dir"; install_python "$build_dir" ;;
   run)
     # Only the command: the tests and benchmarks the main job never runs wait for `test`.
-    install_deps; build_command "$build_dir"
+    install_deps; use_compiler_cache; build_command "$build_dir"
     # The main job: the report's chapter 5 (experiments/chapter5.yaml) on all cores. Running it again
     # continues an interrupted campaign; a finished one is only re-reported.
     "$build_dir/echoplan" experiment --out results/chapter5
     echo "setup: the report is $here/results/chapter5/index.html"
     ;;
   test)
+    stage "installing dependencies"
     install_deps
-    if [ "${ECHOPLAN_CHECK_FORMAT:-1}" = 1 ]; then scripts/check-format.sh; fi
+    use_compiler_cache
+    if [ "${ECHOPLAN_CHECK_FORMAT:-1}" = 1 ]; then stage "format check"; scripts/check-format.sh; fi
+    stage "normal build"
     build "$build_dir"
+    stage "normal tests"
     ctest --test-dir "$build_dir" -j"$jobs" --output-on-failure
+    stage "install check"
     scripts/check-install.sh "$build_dir"
     install_python "$build_dir"
     # The sanitizer build leaves the Python module out: an ASan extension only loads into a python3
     # started with libasan preloaded (cmake/EchoplanPython.cmake).
-    echo "setup: sanitizer build (ASan + UBSan; without the Python module)"
+    stage "sanitizer build (ASan + UBSan; without the Python module)"
     # -O1: ASan's documented setting for speed (the suite ran 10x slower at -O0); Debug keeps asserts;
     # line tables (-g1) are all a sanitizer report needs, and compile 30% faster than -g. The
     # sanitizer builds are unity builds (CMake joins a target's files into batches): the same code in
@@ -153,17 +184,23 @@ case "$mode" in
     # build above keeps one file per compile, which is what catches a file that forgets an include.
     build "$san_build_dir" -DECHOPLAN_SANITIZE=ON -DECHOPLAN_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug \
       -DCMAKE_CXX_FLAGS_DEBUG="-g1 -O1" -DCMAKE_UNITY_BUILD=ON
+    stage "sanitizer tests"
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
       ctest --test-dir "$san_build_dir" -j"$jobs" --output-on-failure
-    echo "setup: thread sanitizer build (${tsan_targets[*]}: the tests that start threads)"
+    stage "thread sanitizer build (${tsan_targets[*]}: the tests that start threads)"
     build_targets "$tsan_build_dir" "${tsan_targets[*]}" -DECHOPLAN_TSAN=ON -DECHOPLAN_BUILD_BENCH=OFF \
       -DECHOPLAN_BUILD_PYTHON=OFF -DCMAKE_UNITY_BUILD=ON
+    stage "thread sanitizer tests"
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
       ctest --test-dir "$tsan_build_dir" -j"$jobs" -R "$tsan_tests" --output-on-failure
     # A smoke run on the committed corpus (docs/fuzzing.md has the long runs): a crash, hang or
     # sanitizer report in any target fails here.
-    echo "setup: fuzz targets (clang, libFuzzer), ${FUZZ_SECONDS:-5} s each"
+    stage "fuzz targets (clang, libFuzzer), ${FUZZ_SECONDS:-5} s each"
     JOBS=$jobs scripts/fuzz.sh --all --seconds "${FUZZ_SECONDS:-5}"
+    stage ""
+    if command -v ccache >/dev/null && [ "${ECHOPLAN_CCACHE:-1}" = 1 ]; then
+      echo "setup: compiler cache: $(ccache --print-stats | awk -F'\t' '$1 == "direct_cache_hit" || $1 == "preprocessed_cache_hit" { hits += $2 } $1 == "cache_miss" { miss = $2 } END { printf "%d hits, %d misses since its statistics were last zeroed", hits, miss }')"
+    fi
     ;;
   -h|--help|help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//' ;;
   *) echo "setup: unknown mode '$mode' (try: build, run, test, deps)" >&2; exit 2 ;;

@@ -11,13 +11,14 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "../common/source_dir.h"
+
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kInputs =
-    std::string(ECHOPLAN_SOURCE_DIR) + "/tests/data/reference/audio/inputs/";
+const std::string kInputs = echoplan::testing::source_dir() + "/tests/data/reference/audio/inputs/";
 const std::string kExpected =
-    std::string(ECHOPLAN_SOURCE_DIR) + "/tests/data/reference/audio/expected/";
+    echoplan::testing::source_dir() + "/tests/data/reference/audio/expected/";
 
 struct CommandResult {
   int status = -1;

@@ -11,6 +11,7 @@
 #include <limits>
 #include <numbers>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 
 namespace echoplan::audio {
@@ -18,8 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kInputs =
-    std::string(ECHOPLAN_SOURCE_DIR) + "/tests/data/reference/audio/inputs/";
+const std::string kInputs = echoplan::testing::source_dir() + "/tests/data/reference/audio/inputs/";
 
 fs::path temp_path(const std::string& name) {
   fs::path dir = fs::temp_directory_path() / ("echoplan_io_test_" + std::to_string(::getpid()));

@@ -11,6 +11,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "../common/source_dir.h"
 #include "audio/features.h"
 #include "audio/io.h"
 
@@ -18,7 +19,8 @@ namespace echoplan::audio {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kReference = fs::path(ECHOPLAN_SOURCE_DIR) / "tests/data/reference/audio";
+const fs::path kReference =
+    fs::path(echoplan::testing::source_dir()) / "tests/data/reference/audio";
 
 struct Table {
   std::size_t rows = 0, cols = 0;

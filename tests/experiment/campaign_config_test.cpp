@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../common/source_dir.h"
 #include "../common/test_folder.h"
 #include "common/error.h"
 
@@ -34,7 +35,7 @@ std::string error_of(const std::string& text) {
 
 TEST(CampaignConfig, ShippedDefaultIsTheReportsChapter5) {
   const CampaignConfig c =
-      load_campaign_config(std::string(ECHOPLAN_SOURCE_DIR) + "/experiments/chapter5.yaml");
+      load_campaign_config(echoplan::testing::source_dir() + "/experiments/chapter5.yaml");
   ASSERT_EQ(c.groups.size(), 6u);
   for (int g = 0; g < 4; ++g) {
     EXPECT_EQ(c.groups[g].trials, 10);
@@ -123,7 +124,7 @@ TEST(CampaignConfig, APlanningArmChoosesItsLeafValue) {
 TEST(CampaignConfig, APlanningArmChoosesHowUnheardOutcomesCount) {
   // Campaigns written before the choice existed keep their identity (a resumed run continues).
   CampaignConfig shipped =
-      load_campaign_config(std::string(ECHOPLAN_SOURCE_DIR) + "/experiments/chapter5.yaml");
+      load_campaign_config(echoplan::testing::source_dir() + "/experiments/chapter5.yaml");
   EXPECT_FALSE(shipped.identity()["arms"][0].contains("unheard"));
   shipped.arms[0].unheard = "commit";
   EXPECT_EQ(shipped.identity()["arms"][0]["unheard"], "commit");
@@ -163,10 +164,10 @@ TEST(CampaignConfig, ClassifierWithModelIsAnError) {
 
 TEST(CampaignConfig, ShippedDefaultNamesTheReportsNumbers) {
   const CampaignConfig c =
-      load_campaign_config(std::string(ECHOPLAN_SOURCE_DIR) + "/experiments/chapter5.yaml");
+      load_campaign_config(echoplan::testing::source_dir() + "/experiments/chapter5.yaml");
   ASSERT_TRUE(c.reference);
   EXPECT_EQ(c.reference->source,
-            std::string(ECHOPLAN_SOURCE_DIR) + "/experiments/chapter5_reference.yaml");
+            echoplan::testing::source_dir() + "/experiments/chapter5_reference.yaml");
   EXPECT_EQ(c.reference->label, "report");
   // A reference changes the report's comparison, not the trials: not part of the identity.
   CampaignConfig without = c;

@@ -13,6 +13,7 @@
 // Actions: listen (0), pick_a (1), pick_b (2); observations heard_a, heard_b, none.
 #pragma once
 
+#include "../common/source_dir.h"
 #include "experiment/campaign_report.h"
 
 namespace echoplan::experiment::testing {
@@ -59,7 +60,7 @@ inline CampaignResults small_campaign() {
   CampaignConfig& c = results.config;
   c.source = "small.yaml";
   // summary.json's campaign identity hashes the problem file: a real one.
-  const std::string problem = std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml";
+  const std::string problem = echoplan::testing::source_dir() + "/problems/audio_objects.yaml";
   c.arms = {{"one", problem, false}, {"two", problem, true}};
   c.world.type = WorldType::model;
   c.world.problem = problem;

@@ -6,11 +6,13 @@
 
 #include <array>
 
+#include "../common/source_dir.h"
+
 namespace echoplan::experiment {
 namespace {
 
 // audio_objects.yaml asks for depth 100, exploration 110 and 1000 particles (its planner section).
-const std::string kProblem = std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml";
+const std::string kProblem = echoplan::testing::source_dir() + "/problems/audio_objects.yaml";
 
 TEST(CampaignRunner, AnArmPlansWithTheCampaignsSolverAndBudgetAndTheProblemsSearch) {
   CampaignConfig config;

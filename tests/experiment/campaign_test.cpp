@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "common/file_io.h"
 #include "perception/recording_set.h"
@@ -18,7 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kProblem = std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml";
+const std::string kProblem = echoplan::testing::source_dir() + "/problems/audio_objects.yaml";
 
 fs::path fresh_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / "echoplan_campaign_test" / name;
@@ -33,7 +34,7 @@ CampaignConfig tiny_config(int arms = 1, const std::string& second_problem = kPr
   text += "world: {type: model, problem: " + kProblem +
           "}\n"
           "training_set: {recordings_per_pair: 0, catalogue: " +
-          std::string(ECHOPLAN_SOURCE_DIR) +
+          echoplan::testing::source_dir() +
           "/objects/catalogue.yaml}\n"
           "trials:\n"
           "  - {object: pringles_can, trials: 3}\n"
@@ -174,7 +175,7 @@ TEST(Campaign, AnArmWithUnheardAutoPlaysAsTheEstimateItChoseAndShardsMergeWithIt
     text += "  - {name: " + unheard + ", problem: " + kProblem + ", unheard: " + unheard + "}\n";
   text +=
       "world: {type: model, problem: " + kProblem +
-      "}\ntraining_set: {recordings_per_pair: 0, catalogue: " + std::string(ECHOPLAN_SOURCE_DIR) +
+      "}\ntraining_set: {recordings_per_pair: 0, catalogue: " + echoplan::testing::source_dir() +
       "/objects/catalogue.yaml}\ntrials:\n  - {object: pringles_can, trials: 4}\n"
       "  - {object: paper_base, trials: 4}\n"
       "planner: {solver: abt, episodes: 200, max_steps: 25, self_play_trials: 30}\n";
@@ -225,12 +226,12 @@ TEST(Campaign, ClosedLoopRunsWithACalibratedArmAndGivesTheSameFilesOnAnyNumberOf
       "seed: 5\narms:\n  - {name: calibrated, problem: " + kProblem +
       ", calibrate: true}\n  - {name: hand_tuned, problem: " + kProblem +
       "}\nworld: {type: simulated, problem: " + kProblem +
-      "}\ntraining_set: {recordings_per_pair: 2, catalogue: " + std::string(ECHOPLAN_SOURCE_DIR) +
+      "}\ntraining_set: {recordings_per_pair: 2, catalogue: " + echoplan::testing::source_dir() +
       "/objects/catalogue.yaml}\n"
       "trials:\n  - {object: paper_base, trials: 1}\n"
       "  - {object: coffee_mug_weighted, plays: coffee_mug, trials: 1}\n"
       "planner: {solver: abt, episodes: 200, max_steps: 12}\nreference: " +
-      std::string(ECHOPLAN_SOURCE_DIR) + "/experiments/chapter5_reference.yaml\n";
+      echoplan::testing::source_dir() + "/experiments/chapter5_reference.yaml\n";
   const CampaignConfig config = parse_campaign_config(text, "closed_loop.yaml");
   const fs::path one = fresh_dir("loop_one"), two = fresh_dir("loop_two");
   EXPECT_EQ(run(config, one, 1), 4);
@@ -299,7 +300,7 @@ TEST(Campaign, RefusesBadInputBeforeAnyWork) {
       open_error(config, dir).find("no_such_recordings: the recordings folder does not exist"),
       std::string::npos);
 
-  config = tiny_config(2, std::string(ECHOPLAN_SOURCE_DIR) + "/problems/tiger.pomdp");
+  config = tiny_config(2, echoplan::testing::source_dir() + "/problems/tiger.pomdp");
   EXPECT_NE(open_error(config, dir).find("must share objects, actions and observations"),
             std::string::npos)
       << open_error(config, dir);

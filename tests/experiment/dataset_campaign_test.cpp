@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "../common/source_dir.h"
 #include "../perception/synthetic_feature_set.h"
 #include "common/error.h"
 #include "experiment/campaign.h"
@@ -284,7 +285,8 @@ TEST(DatasetCampaign, CertifyingACampaignReportsEachFoldAndArmAndStopsWhenAsked)
 // self-play chose (unheard.json), and a stopped self-play prepares nothing. On the shipped example
 // (four behaviours, none sorting alone) the two estimates decide differently.
 TEST(DatasetCampaign, AnArmWithUnheardAutoPlaysAsTheEstimateItsSelfPlayChose) {
-  const fs::path data = fs::path(ECHOPLAN_SOURCE_DIR) / "experiments/data/synthetic_objects";
+  const fs::path data =
+      fs::path(echoplan::testing::source_dir()) / "experiments/data/synthetic_objects";
   const fs::path folder = perception::test_features::fresh_folder("dataset_unheard_auto");
   const std::string text = "seed: 4\nworld: {type: dataset, data: " + data.string() +
                            ", groups: " + (data / "groups.csv").string() +

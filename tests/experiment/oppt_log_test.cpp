@@ -8,12 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 
 namespace echoplan::experiment {
 namespace {
 
-const std::string kProblem = std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml";
+const std::string kProblem = echoplan::testing::source_dir() + "/problems/audio_objects.yaml";
 const std::string kState = "-2.89 1.45 -0.18 2.07 -0.31 0.63 -1.54 0.1 0 0";
 
 std::string state_line(const char* key, int object, const char* weight) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 
 namespace echoplan::experiment {
@@ -25,7 +26,7 @@ std::string error_of(const std::string& text) {
 }
 
 TEST(ReferenceResults, ShippedFileHoldsTheReportsTables) {
-  const ReferenceResults r = load_reference_results(std::string(ECHOPLAN_SOURCE_DIR) +
+  const ReferenceResults r = load_reference_results(echoplan::testing::source_dir() +
                                                     "/experiments/chapter5_reference.yaml");
   EXPECT_EQ(r.label, "report");
   EXPECT_EQ(r.objects.size(), 6u);
@@ -50,7 +51,7 @@ TEST(ReferenceResults, ShippedFileHoldsTheReportsTables) {
 }
 
 TEST(ReferenceResults, ShippedFileHoldsWhatTheLabsClassifierHeard) {
-  const ReferenceResults r = load_reference_results(std::string(ECHOPLAN_SOURCE_DIR) +
+  const ReferenceResults r = load_reference_results(echoplan::testing::source_dir() +
                                                     "/experiments/chapter5_reference.yaml");
   ASSERT_TRUE(r.heard);
   EXPECT_EQ(r.heard->classifier, "report-template");
@@ -124,7 +125,7 @@ TEST(ReferenceResults, MistakesNameTheFileAndLine) {
 }
 
 TEST(ReferenceResults, JsonRoundTrip) {
-  const ReferenceResults r = load_reference_results(std::string(ECHOPLAN_SOURCE_DIR) +
+  const ReferenceResults r = load_reference_results(echoplan::testing::source_dir() +
                                                     "/experiments/chapter5_reference.yaml");
   const ReferenceResults back = reference_results_from_json(to_json(r), "campaign.json");
   EXPECT_EQ(to_json(back), to_json(r));

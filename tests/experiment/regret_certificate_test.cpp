@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "pomdp/object_identification_model.h"
 #include "pomdp/problem.h"
@@ -17,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string repo_file(const std::string& relative) {
-  return std::string(ECHOPLAN_SOURCE_DIR) + "/" + relative;
+  return echoplan::testing::source_dir() + "/" + relative;
 }
 
 pomdp::ObjectProblemData perfect_sensing_report() {
@@ -77,7 +78,7 @@ TEST(RegretCertificate, LoosenessBoundsTheDistanceBetweenTheTwoRegrets) {
   // and the two regret figures (from the bounds' two ends) differ by at most the summed gaps
   // reported.
   const pomdp::Problem problem =
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+      pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml");
   const auto& model = (*problem.model->object_identification());
   const fs::path steps = write_steps("loose",
                                      "0,0,strike,coffee_mug,0,0,0,0,-1,10\n"
@@ -111,7 +112,7 @@ TEST(RegretCertificate, LooseBoundsNeverCertifyLessRegretThanTightOnes) {
   // far from converged and with bounds near convergence: the loose certificate's regret is never
   // below the tight one's lower end, and the tight one's two ends nearly meet.
   const pomdp::Problem problem =
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+      pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml");
   const auto& model = (*problem.model->object_identification());
   const fs::path steps = write_steps("rival",
                                      "0,0,strike,coffee_mug,0,0,0,0,-1,10\n"

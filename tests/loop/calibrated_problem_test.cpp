@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "perception/observation_model.h"
 #include "pomdp/problem.h"
@@ -21,7 +22,7 @@ namespace {
 using pomdp::ObjectProblemData;
 
 std::string repo_file(const std::string& relative) {
-  return std::string(ECHOPLAN_SOURCE_DIR) + "/" + relative;
+  return echoplan::testing::source_dir() + "/" + relative;
 }
 
 const perception::ObservationModel& stored_model() {

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../common/source_dir.h"
 #include "../common/test_folder.h"
 #include "audio/io.h"
 #include "common/error.h"
@@ -21,7 +22,7 @@ namespace fs = std::filesystem;
 
 const pomdp::ObjectIdentificationModel& report_model() {
   static const pomdp::Problem problem =
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+      pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml");
   return *problem.model->object_identification();
 }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "../common/input_error_message.h"
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "pomdp/problem.h"
 
@@ -13,7 +14,7 @@ namespace {
 
 std::shared_ptr<const pomdp::Problem> shipped(const std::string& name) {
   return std::make_shared<const pomdp::Problem>(
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/" + name));
+      pomdp::load_problem(echoplan::testing::source_dir() + "/problems/" + name));
 }
 
 LoopSettings table_settings() {

@@ -8,6 +8,7 @@
 
 #include <typeinfo>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "solvers/abt_solver.h"
 #include "solvers/baseline_strategies.h"
@@ -17,7 +18,7 @@ namespace echoplan::loop {
 namespace {
 
 std::string shipped(const std::string& name) {
-  return std::string(ECHOPLAN_SOURCE_DIR) + "/problems/" + name;
+  return echoplan::testing::source_dir() + "/problems/" + name;
 }
 
 TEST(Planner, TheProblemFilesPlannerByDefault) {

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "experiment/regret_certificate.h"
 #include "experiment/trial_log.h"
@@ -40,7 +41,7 @@ int count_lines(const std::string& text) {
 }
 
 pomdp::Problem report_problem() {
-  return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+  return pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml");
 }
 
 struct Harness {

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "../common/input_error_message.h"
+#include "../common/source_dir.h"
 #include "../robot/small_training_set.h"
 #include "common/error.h"
 #include "loop/calibrated_problem.h"
@@ -79,7 +80,7 @@ TEST(WorldFactory, AReplayFolderWithoutAnObjectIsAnError) {
 
 TEST(WorldFactory, ATabularProblemIsAnError) {
   const pomdp::Problem tiger =
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/tiger.pomdp");
+      pomdp::load_problem(echoplan::testing::source_dir() + "/problems/tiger.pomdp");
   const std::string e =
       input_error_message([&] { make_world_factory(simulator_inputs(tiger.model)); });
   EXPECT_TRUE(mentions(e, "object-identification problem")) << e;

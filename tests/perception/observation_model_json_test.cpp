@@ -9,6 +9,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "trained_model.h"
 
@@ -73,7 +74,7 @@ TEST(ObservationModelJson, KeepsTheAtypicalAndLookalikeSharesAndReadsOldFilesAsN
 // seed-gaussian: it loads under the current name, and saves with it.
 TEST(ObservationModelJson, ReadsAnOldClassifierNameAsTheCurrentOne) {
   const ObservationModel old = load_observation_model(
-      std::string(ECHOPLAN_SOURCE_DIR) + "/tests/data/perception/seed_gaussian_model.json");
+      echoplan::testing::source_dir() + "/tests/data/perception/seed_gaussian_model.json");
   EXPECT_EQ(old.classifier_name(), "report-gaussian");
   for (const std::string action : {"slide", "strike"})
     EXPECT_EQ(old.classifier(action).name(), "report-gaussian");

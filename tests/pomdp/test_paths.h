@@ -6,10 +6,12 @@
 #include <iterator>
 #include <string>
 
+#include "../common/source_dir.h"
+
 namespace echoplan::pomdp::testing {
 
 inline std::string repo_file(const std::string& relative) {
-  return std::string(ECHOPLAN_SOURCE_DIR) + "/" + relative;
+  return echoplan::testing::source_dir() + "/" + relative;
 }
 
 // The text of a repository file (empty if it cannot be read), for tests that edit a shipped

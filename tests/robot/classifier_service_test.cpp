@@ -7,6 +7,7 @@
 #include <numeric>
 #include <span>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "common/rng.h"
 #include "perception/dataset_task.h"
@@ -104,7 +105,7 @@ TEST(ClassifierService, ActionWithoutAClassifierIsAnInputError) {
 std::shared_ptr<const perception::ObservationModel> sensor_model() {
   static const auto m = [] {
     const perception::FeatureSet set = perception::load_feature_set(
-        std::string(ECHOPLAN_SOURCE_DIR) + "/experiments/data/synthetic_objects");
+        echoplan::testing::source_dir() + "/experiments/data/synthetic_objects");
     std::vector<int> sessions(set.sessions.size());
     std::iota(sessions.begin(), sessions.end(), 0);
     return std::make_shared<const perception::ObservationModel>(perception::fit_feature_model(

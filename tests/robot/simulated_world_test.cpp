@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 
 namespace echoplan::robot {
@@ -13,7 +14,7 @@ namespace {
 
 const sim::Catalogue& shipped_catalogue() {
   static const sim::Catalogue c =
-      sim::load_catalogue(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml");
+      sim::load_catalogue(echoplan::testing::source_dir() + "/objects/catalogue.yaml");
   return c;
 }
 

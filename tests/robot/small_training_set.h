@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/source_dir.h"
 #include "perception/observation_model.h"
 #include "perception/recording_set.h"
 #include "sim/catalogue.h"
@@ -21,7 +22,7 @@ namespace echoplan::testing {
 
 inline const sim::Catalogue& shipped_catalogue() {
   static const sim::Catalogue c =
-      sim::load_catalogue(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml");
+      sim::load_catalogue(echoplan::testing::source_dir() + "/objects/catalogue.yaml");
   return c;
 }
 

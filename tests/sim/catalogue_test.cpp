@@ -5,12 +5,13 @@
 #include <string>
 #include <vector>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 
 namespace echoplan::sim {
 namespace {
 
-const std::string kCatalogue = std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml";
+const std::string kCatalogue = echoplan::testing::source_dir() + "/objects/catalogue.yaml";
 
 // A small valid catalogue; tests break one thing at a time.
 const std::string kValid = R"(materials:

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "../common/source_dir.h"
 #include "sim/catalogue.h"
 #include "sim/sim_config.h"
 
@@ -10,7 +11,7 @@ namespace echoplan::sim {
 
 inline const Catalogue& shipped_catalogue() {
   static const Catalogue c =
-      load_catalogue(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/catalogue.yaml");
+      load_catalogue(echoplan::testing::source_dir() + "/objects/catalogue.yaml");
   return c;
 }
 

@@ -7,6 +7,7 @@
 #include <tuple>
 #include <vector>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 
 namespace echoplan::sim {
@@ -20,8 +21,7 @@ TEST(SimConfig, EmptyTextGivesDefaults) {
 
 TEST(SimConfig, ShippedExampleStatesTheDefaults) {
   // objects/sim_config.yaml documents the defaults: loading it must change nothing.
-  const SimConfig c =
-      load_sim_config(std::string(ECHOPLAN_SOURCE_DIR) + "/objects/sim_config.yaml");
+  const SimConfig c = load_sim_config(echoplan::testing::source_dir() + "/objects/sim_config.yaml");
   const SimConfig d;
   Rng a(3), b(3);
   EXPECT_EQ(sample_action(c.variability, a).named(), sample_action(d.variability, b).named());

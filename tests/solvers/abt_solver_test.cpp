@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "pomdp/exact_belief.h"
 #include "pomdp/particle_belief.h"
@@ -34,7 +35,7 @@ using pomdp::ObjectProblemData;
 constexpr int kSlide = 0, kStrike = 1;
 
 pomdp::Problem report_problem() {
-  return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+  return pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml");
 }
 
 std::shared_ptr<const ObjectIdentificationModel> report_model() {
@@ -313,7 +314,7 @@ TEST(AbtRevision, UpdateKeepsTheEpisodesThroughTheNewRoot) {
 }
 
 std::string repo_file(const std::string& relative) {
-  return std::string(ECHOPLAN_SOURCE_DIR) + "/" + relative;
+  return echoplan::testing::source_dir() + "/" + relative;
 }
 
 constexpr int kMoveToA = 2;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "pomdp/problem.h"
 
@@ -19,7 +20,7 @@ constexpr int kSlide = 0, kStrike = 1;
 constexpr int kPringles = 0, kMug = 1, kCup = 2, kPaper = 3;
 
 pomdp::Problem load(const std::string& file) {
-  return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/" + file);
+  return pomdp::load_problem(echoplan::testing::source_dir() + "/" + file);
 }
 
 // max over the sorting actions of Σ_s b(s) R(s, a): what committing now earns.

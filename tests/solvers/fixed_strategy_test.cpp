@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "pomdp/problem.h"
 #include "solvers/baseline_strategies.h"
@@ -91,7 +92,7 @@ TEST(FixedStrategy, NoSearchNoTreeAndADecisionOnlyAfterImprove) {
 
 TEST(FixedStrategy, RefusesProblemsThatAreNotObjectIdentification) {
   const pomdp::Problem tiger =
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/tiger.pomdp");
+      pomdp::load_problem(echoplan::testing::source_dir() + "/problems/tiger.pomdp");
   for (const std::string& name : strategy_names()) {
     try {
       make_strategy(name, tiger.model);

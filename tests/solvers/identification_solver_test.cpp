@@ -6,6 +6,7 @@
 
 #include <memory>
 
+#include "../common/source_dir.h"
 #include "identification_brute_force.h"
 #include "pomdp/object_identification_model.h"
 #include "pomdp/problem.h"
@@ -14,7 +15,7 @@ namespace echoplan::solvers {
 namespace {
 
 std::string repo_file(const std::string& relative) {
-  return std::string(ECHOPLAN_SOURCE_DIR) + "/" + relative;
+  return echoplan::testing::source_dir() + "/" + relative;
 }
 
 pomdp::ObjectProblemData report_data() {

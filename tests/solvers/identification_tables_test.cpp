@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/source_dir.h"
 #include "pomdp/problem.h"
 #include "solvers/sensing_policy.h"
 
@@ -15,7 +16,7 @@ namespace echoplan::solvers {
 namespace {
 
 pomdp::Problem report_problem() {
-  return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+  return pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml");
 }
 
 TEST(IdentificationTables, ReadsTheReportsProblemOverItsLiveStates) {

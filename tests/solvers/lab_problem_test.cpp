@@ -7,6 +7,7 @@
 
 #include <array>
 
+#include "../common/source_dir.h"
 #include "pomdp/object_identification_model.h"
 #include "pomdp/problem.h"
 #include "solvers/identification_solver.h"
@@ -15,7 +16,7 @@ namespace echoplan::solvers {
 namespace {
 
 std::string repo_file(const std::string& relative) {
-  return std::string(ECHOPLAN_SOURCE_DIR) + "/" + relative;
+  return echoplan::testing::source_dir() + "/" + relative;
 }
 
 pomdp::ObjectProblemData shipped(const std::string& file) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "pomdp/problem.h"
 
@@ -11,7 +12,7 @@ namespace {
 // The report's shipped problem: objects 0 and 2 belong at A, 1 and 3 at B; sorting right earns 10,
 // wrong -100; sensing costs 1; discount 0.99; the heuristic of a known object is 10 (sort it now).
 std::shared_ptr<const pomdp::Model> report_model() {
-  return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml")
+  return pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml")
       .model;
 }
 

@@ -6,6 +6,7 @@
 
 #include <typeinfo>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "common/rng.h"
 #include "pomdp/make_belief.h"
@@ -17,7 +18,7 @@ namespace echoplan::solvers {
 namespace {
 
 pomdp::Problem tiger() {
-  return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/tiger.pomdp");
+  return pomdp::load_problem(echoplan::testing::source_dir() + "/problems/tiger.pomdp");
 }
 
 TEST(MakeSolver, TheNamesAreAbtAndPomcp) {

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "pomdp/object_identification_model.h"
 #include "pomdp/problem.h"
@@ -31,7 +32,7 @@ constexpr int kPaper = 3;
 
 std::shared_ptr<const ObjectIdentificationModel> report_model() {
   const pomdp::Problem p =
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+      pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml");
   const ObjectIdentificationModel* objects = p.model->object_identification();
   if (!objects)
     throw std::logic_error("audio_objects.yaml is not an object-identification problem");

@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "../common/source_dir.h"
 #include "identification_brute_force.h"
 #include "pomdp/object_identification_model.h"
 #include "pomdp/problem.h"
@@ -17,7 +18,7 @@ namespace {
 
 pomdp::ObjectProblemData report_data(double discount) {
   const pomdp::Problem p =
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+      pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml");
   auto d = p.model->object_identification()->data();
   d.discount = discount;
   return d;

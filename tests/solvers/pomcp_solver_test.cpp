@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "pomdp/particle_belief.h"
 #include "pomdp/problem.h"
@@ -25,7 +26,7 @@ constexpr int kListen = 0, kOpenLeft = 1, kOpenRight = 2;
 constexpr int kHeardLeft = 0, kHeardRight = 1;
 
 pomdp::ModelPtr tiger() {
-  return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/tiger.pomdp").model;
+  return pomdp::load_problem(echoplan::testing::source_dir() + "/problems/tiger.pomdp").model;
 }
 
 pomdp::Observation heard(int side) {

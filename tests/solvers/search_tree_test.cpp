@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "pomdp/particle_belief.h"
 #include "pomdp/problem.h"
@@ -16,7 +17,7 @@ namespace echoplan::solvers {
 namespace {
 
 pomdp::ModelPtr shipped(const std::string& file) {
-  return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/" + file).model;
+  return pomdp::load_problem(echoplan::testing::source_dir() + "/problems/" + file).model;
 }
 pomdp::ModelPtr report_model() { return shipped("audio_objects.yaml"); }
 // Action indices: the report's problem lists its sensing actions, then its sorting actions; the

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/source_dir.h"
 #include "common/error.h"
 #include "pomdp/problem.h"
 #include "pomdp/random_problem.h"
@@ -17,7 +18,7 @@ namespace echoplan::solvers {
 namespace {
 
 std::string repo_file(const std::string& relative) {
-  return std::string(ECHOPLAN_SOURCE_DIR) + "/" + relative;
+  return echoplan::testing::source_dir() + "/" + relative;
 }
 
 // The report's problem's indices: objects pringles_can 0, coffee_mug 1, plastic_cup 2, paper_base 3

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "../common/source_dir.h"
 #include "common/statistics.h"
 #include "pomdp/exact_belief.h"
 #include "pomdp/object_identification_model.h"
@@ -43,7 +44,7 @@ pomdp::ModelPtr one_noisy_sensor(int uses) {
 
 pomdp::ModelPtr report_with_limits(int slide, int strike) {
   const pomdp::Problem p =
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+      pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml");
   pomdp::ObjectProblemData d = p.model->object_identification()->data();
   d.sensing[0].uses = slide;
   d.sensing[1].uses = strike;

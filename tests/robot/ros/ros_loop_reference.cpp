@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 
+#include "../../common/source_dir.h"
 #include "loop/calibrated_problem.h"
 #include "loop/object_problem.h"
 #include "loop/robot_world.h"
@@ -29,7 +30,7 @@ using namespace echoplan;
 
 int prepare(const std::string& dir) {
   const pomdp::Problem base =
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+      pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml");
   const auto& data = loop::object_problem(*base.model).data();
   const auto model = testing::train_small_model(data.objects, {"slide", "strike"}, 3);
   perception::save_observation_model(*model, dir + "/model.json");

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "../../common/source_dir.h"
 #include "common/error.h"
 #include "pomdp/problem.h"
 
@@ -22,7 +23,7 @@ namespace {
 
 std::shared_ptr<const FlatPomdp> tiger() {
   const pomdp::Problem p =
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/tiger.pomdp");
+      pomdp::load_problem(echoplan::testing::source_dir() + "/problems/tiger.pomdp");
   return std::make_shared<const FlatPomdp>(make_flat_pomdp(*p.model->tabular()));
 }
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../../common/source_dir.h"
 #include "common/error.h"
 #include "common/rng.h"
 #include "pomdp/exact_belief.h"
@@ -22,7 +23,7 @@ class SolvedReportProblem : public ::testing::Test {
  protected:
   void SetUp() override {
     problem =
-        pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.pomdp");
+        pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.pomdp");
     dense = std::make_shared<const FlatPomdp>(make_flat_pomdp(*problem.model->tabular()));
     SolverOptions options;
     options.max_trials = 300;  // a fixed amount of work: the same vectors on every machine

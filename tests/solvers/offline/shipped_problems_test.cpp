@@ -1,6 +1,7 @@
 // The solver on the problem files shipped in problems/, through the pomdp module's loader.
 #include <gtest/gtest.h>
 
+#include "../../common/source_dir.h"
 #include "pomdp/problem.h"
 #include "solvers/offline/point_based_solver.h"
 
@@ -8,7 +9,7 @@ namespace echoplan::solvers::offline {
 namespace {
 
 std::shared_ptr<const FlatPomdp> load_tables(const std::string& name) {
-  const std::string path = std::string(ECHOPLAN_SOURCE_DIR) + "/problems/" + name;
+  const std::string path = echoplan::testing::source_dir() + "/problems/" + name;
   const pomdp::Problem problem = pomdp::load_problem(path);
   return std::make_shared<const FlatPomdp>(make_flat_pomdp(*problem.model->tabular(), path));
 }

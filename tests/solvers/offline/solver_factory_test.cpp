@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "../../common/source_dir.h"
 #include "common/error.h"
 #include "pomdp/exact_belief.h"
 #include "solvers/offline/policy_file.h"
@@ -18,7 +19,7 @@ namespace echoplan::solvers {
 namespace {
 
 pomdp::Problem report_problem() {
-  return pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/audio_objects.yaml");
+  return pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml");
 }
 
 TEST(SolverFactory, BuildsAnOnlineSolverWithTheOverridesOptionsAndBudget) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "../../common/source_dir.h"
 #include "pomdp/model.h"
 #include "pomdp/problem.h"
 
@@ -33,7 +34,7 @@ class TableModel : public pomdp::TabularModel {
 // A shipped problem file's tables, copied so that a test can change one entry.
 inline TableModel shipped_tables(const std::string& file) {
   const pomdp::Problem problem =
-      pomdp::load_problem(std::string(ECHOPLAN_SOURCE_DIR) + "/problems/" + file);
+      pomdp::load_problem(echoplan::testing::source_dir() + "/problems/" + file);
   const pomdp::TabularModel& m = *problem.model->tabular();
   TableModel t;
   const int S = m.num_states(), A = m.num_actions(), O = m.num_observations();
