@@ -3,8 +3,9 @@
 #
 #   scripts/setup.sh          install dependencies, build (build/) and install the Python module
 #                             `echoplan` where Debian's python3 finds it (docs/python.md)
-#   scripts/setup.sh run      install dependencies, build the `echoplan` command only, and run the
-#                             main job with its default configuration
+#   scripts/setup.sh run      install dependencies, build the `echoplan` command only, run the
+#                             main job with its default configuration, then build and install the
+#                             Python module (after the job, so the job starts as soon as it can)
 #   scripts/setup.sh test     install dependencies, build, and run all tests: the normal build (with
 #                             the Python module's), an install into a temporary prefix with a project
 #                             built on it (scripts/check-install.sh), an ASan+UBSan build, a
@@ -161,6 +162,11 @@ case "$mode" in
     # continues an interrupted campaign; a finished one is only re-reported.
     "$build_dir/echoplan" experiment --out results/chapter5
     echo "setup: the report is $here/results/chapter5/index.html"
+    if [ "${ECHOPLAN_INSTALL_PYTHON:-1}" = 1 ]; then
+      echo "setup: building the Python module"
+      build_targets "$build_dir" echoplan_python
+      install_python "$build_dir"
+    fi
     ;;
   test)
     stage "installing dependencies"

@@ -13,6 +13,7 @@
 #include "common/file_io.h"
 #include "experiment/campaign_figures.h"
 #include "experiment/html_report.h"
+#include "experiment/report_inputs.h"
 #include "experiment/unheard_choice.h"
 
 namespace echoplan::experiment {
@@ -39,23 +40,41 @@ void check_writable(const fs::path& directory) {
   fs::remove(probe, error);
 }
 
-// The folder holds this campaign or none: claims it by writing campaign.json.
+// campaign.json: the configuration, what each arm runs, the identity.
+void write_description(const Campaign& c) {
+  nlohmann::json arms = nlohmann::json::array();
+  for (const ResolvedArm& arm : c.arms)
+    arms.push_back(to_json(arm, c.config.world.recorded_data()));
+  const nlohmann::json j = {
+      {"config", to_json(c.config)}, {"arms", std::move(arms)}, {"identity", c.results.identity}};
+  write_file_atomically(c.directory / kDescription, j.dump(2) + "\n");
+}
+
+// Puts the choices an earlier preparation of this campaign made (unheard.json) in its arms.
+void apply_folder_choices(Campaign& c) {
+  if (!fs::exists(c.directory / kUnheardChoices)) return;
+  apply_unheard_choices(read_unheard_choices(c.directory / kUnheardChoices), c.arms);
+  c.results.arms = c.arms;
+}
+
+// The folder holds this campaign or none: claims it by writing campaign.json (with the choices
+// of an earlier run in it, if any).
 void claim_folder(Campaign& c, InputFiles& files) {
   check_writable(c.directory);
   const fs::path described = c.directory / kDescription;
   c.results.identity = c.config.identity(files);
-  const nlohmann::json mine = {{"config", to_json(c.config)}, {"identity", c.results.identity}};
   if (fs::exists(described)) {
     const nlohmann::json theirs = nlohmann::json::parse(
         read_text_file(described.string(), "campaign description"), nullptr, false);
     if (theirs.is_discarded() || !theirs.contains("identity") ||
-        theirs["identity"] != mine["identity"])
+        theirs["identity"] != c.results.identity)
       throw InputError(
           c.directory.string(), 0,
           "holds a different campaign (its campaign.json differs from this configuration); "
           "choose another --out, or remove the folder to start again");
+    apply_folder_choices(c);
   }
-  write_file_atomically(described, mine.dump(2) + "\n");
+  write_description(c);
 }
 
 }  // namespace
@@ -63,11 +82,13 @@ void claim_folder(Campaign& c, InputFiles& files) {
 Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) {
   Campaign c;
   c.config = config;
+  c.arms = resolve_arms(config);
   c.directory = directory;
   c.world = make_campaign_world(config, directory);
   InputFiles files;
-  c.world->open(c.config, c.results, files);
+  c.world->open(c.config, c.arms, c.results, files);
   c.results.config = c.config;
+  c.results.arms = c.arms;
   c.results.planned_trials = c.config.total_trials();
   claim_folder(c, files);
   return c;
@@ -75,9 +96,14 @@ Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) 
 
 bool prepare_training(Campaign& campaign, const ProgressFn& progress, const std::atomic<bool>& stop,
                       int workers) {
-  std::optional<ArmLoops> loops = campaign.world->prepare(campaign.config, progress, stop, workers);
+  std::vector<ResolvedArm> arms = campaign.arms;
+  std::optional<ArmLoops> loops =
+      campaign.world->prepare(campaign.config, arms, progress, stop, workers);
   if (!loops) return false;
+  campaign.arms = std::move(arms);
+  campaign.results.arms = campaign.arms;
   campaign.loops = std::move(*loops);
+  write_description(campaign);
   return true;
 }
 
@@ -102,7 +128,8 @@ std::string rebuild_report(const Campaign& campaign, bool figures) {
 
   CampaignResults results = campaign.results;
   results.entries = std::move(entries);
-  results.heard = campaign.world->heard(campaign.config);
+  ReportInputs inputs = read_report_inputs(dir);
+  results.heard = std::move(inputs.heard);
   if (fs::exists(dir / kUnheardChoices))
     results.unheard_choices = read_unheard_choices(dir / kUnheardChoices);
   write_tables(dir, results);
@@ -110,7 +137,7 @@ std::string rebuild_report(const Campaign& campaign, bool figures) {
   const std::string text = summary_text(results);
   write_file_atomically(dir / "summary.txt", text);
   if (figures) {
-    const std::vector<Figure> drawn = draw_figures(dir, results, campaign.world->templates());
+    const std::vector<Figure> drawn = draw_figures(dir, results, inputs.templates);
     write_file_atomically(dir / "index.html", html_report(dir, results, drawn));
   }
   return text;
@@ -139,7 +166,7 @@ std::string merge_campaigns(const fs::path& directory, const std::vector<fs::pat
       throw InputError(directory.string(), 0, "the merged folder must not be one of the shards");
   const CampaignConfig config =
       campaign_config_from_json(first["config"], (shards[0] / kDescription).string());
-  const Campaign campaign = open_campaign(config, directory);
+  Campaign campaign = open_campaign(config, directory);
 
   // The training set of the first shard that has one (every shard synthesised the same one).
   if (config.training.recordings.empty())
@@ -155,13 +182,18 @@ std::string merge_campaigns(const fs::path& directory, const std::vector<fs::pat
       break;
     }
 
-  // The unheard choices likewise (every shard's self-play made the same ones).
-  for (const fs::path& shard : shards)
-    if (fs::exists(shard / kUnheardChoices)) {
-      write_file_atomically(directory / kUnheardChoices,
-                            read_text_file((shard / kUnheardChoices).string(), "unheard choices"));
-      break;
-    }
+  // What prepare left for the report likewise (every shard made the same).
+  for (const char* prepared : {kUnheardChoices, kReportInputs})
+    for (const fs::path& shard : shards)
+      if (fs::exists(shard / prepared)) {
+        write_file_atomically(directory / prepared,
+                              read_text_file((shard / prepared).string(), prepared));
+        break;
+      }
+
+  // The arms as the shards ran them.
+  apply_folder_choices(campaign);
+  write_description(campaign);
 
   std::map<int, JournalEntry> by_id;
   for (const fs::path& shard : shards)

@@ -2,10 +2,14 @@
 // the report rebuilt from what is on disk.
 //
 // The output folder DIR holds:
-// - campaign.json: the campaign, its configuration and identity (written before any trial);
+// - campaign.json: the campaign: its configuration as the file gives it, what each arm runs (its
+//   resolved arm, campaign_arms.h; rewritten once self-play has chosen) and the identity (written
+//   before any trial);
 // - training/: the synthesised training set (recordings/<object>/<action>/NNN.wav, manifest.csv),
 //   the classifier trained on it (model.json) and each calibrating arm's problem;
 // - journal.jsonl: one line per finished trial (trial_journal.h), in id order once complete;
+// - report_inputs.json (and unheard.json when an arm chose): what prepare_training worked out for
+//   the report besides the trials (report_inputs.h);
 // - the report, a pure function of the above rebuilt at the end of every run: trials.csv,
 //   steps.csv, arms/<arm>/, summary.json, summary.txt, figures/, index.html.
 // Running the same command again continues the campaign in DIR: finished trials are skipped.
@@ -18,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "experiment/campaign_arms.h"
 #include "experiment/campaign_config.h"
 #include "experiment/campaign_report.h"
 #include "experiment/campaign_runner.h"
@@ -29,7 +34,9 @@ namespace echoplan::experiment {
 // report's skeleton) and its world, with every input loaded once and shared read-only by the
 // workers. The journal on disk is the only state that changes as trials finish.
 struct Campaign {
-  CampaignConfig config;
+  CampaignConfig config;  // the file as written, and the trial groups of its world
+  // What each arm runs (resolve_arms); prepare_training() fills in what self-play chose.
+  std::vector<ResolvedArm> arms;
   std::filesystem::path directory;
   CampaignResults results;  // spec, particles, planned trials, presentation (entries: none yet)
   std::shared_ptr<CampaignWorld> world;
@@ -55,8 +62,9 @@ bool prepare_training(Campaign& campaign, const ProgressFn& progress, const std:
 // The trials of `shard` that DIR's journal does not hold yet, in id order.
 std::vector<TrialJob> remaining_jobs(const Campaign& campaign, const Shard& shard);
 
-// Rebuilds the report from DIR's journal (sorting the journal by id first) and returns the summary
-// text. With `figures` false, no figures or page (for quick checks).
+// Rebuilds the report from DIR's journal (sorting the journal by id first) and the files
+// prepare_training left, and returns the summary text: it synthesises, opens and fits nothing. With
+// `figures` false, no figures or page (for quick checks).
 std::string rebuild_report(const Campaign& campaign, bool figures = true);
 
 // Joins the shard folders of one campaign into `directory`: the same campaign.json in each (else

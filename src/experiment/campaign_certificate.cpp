@@ -53,26 +53,22 @@ struct ArmEntry {
   ArmProblemKind problem;
 };
 
-// The campaign's arms in its own order (campaign.json), the planner usually first, with what each
-// heard (its fold problems differ: problem.yaml or problem-graded.yaml).
+// The campaign's arms in its own order (campaign.json's configuration, resolved as the campaign
+// resolved them), the planner usually first, with the kind of fold problem each planned with
+// (problem.yaml, problem-graded.yaml, ...).
 std::vector<ArmEntry> arm_entries(const fs::path& directory) {
   const fs::path described = directory / "campaign.json";
   const nlohmann::json j = nlohmann::json::parse(
       read_text_file(described.string(), "campaign description"), nullptr, false);
-  if (j.is_discarded() || !j.contains("config") || !j["config"].contains("arms"))
+  if (j.is_discarded() || !j.is_object() || !j.contains("config"))
     throw InputError(described.string(), 0, "is not a campaign description");
   std::vector<ArmEntry> arms;
   try {
-    for (const nlohmann::json& arm : j["config"]["arms"])
-      arms.push_back(
-          {arm.value("name", std::string()),
-           {perception::parse_observation_kind(arm.value("observations", std::string("labels"))),
-            arm.value("atypical", false), arm.value("lookalike", false)}});
+    for (const ResolvedArm& arm :
+         resolve_arms(campaign_config_from_json(j["config"], described.string())))
+      arms.push_back({arm.name, arm.plans_with});
   } catch (const InputError& e) {
     throw InputError(described.string(), 0, e.problem());
-  } catch (const nlohmann::json::exception&) {
-    throw InputError(described.string(), 0,
-                     "an arm's name, observations, atypical or lookalike is not of its type");
   }
   return arms;
 }

@@ -13,6 +13,7 @@
 #include "common/file_io.h"
 #include "common/json_fields.h"
 #include "common/yaml_reader.h"
+#include "experiment/campaign_arms.h"
 #include "experiment/config_fields.h"
 #include "perception/train_observation_model.h"
 #include "solvers/baseline_strategies.h"
@@ -314,7 +315,12 @@ nlohmann::json CampaignConfig::identity(InputFiles& files) const {
   const config_fields::Fingerprints fingerprints{
       [&](const std::string& path) { return path.empty() ? "" : files.fingerprint(path); },
       [&](const std::string& folder) { return files.data_fingerprint(folder); }};
-  nlohmann::json j = campaign_json(*this, [&](const auto& fields, const auto& value) {
+  // The arms as they run, in the file's words: a default that changes what an arm does changes
+  // the identity, and a file that spells a default out is the same campaign as one that does not.
+  CampaignConfig as_run = *this;
+  as_run.arms.clear();
+  for (const ResolvedArm& arm : resolve_arms(*this)) as_run.arms.push_back(as_written(arm));
+  nlohmann::json j = campaign_json(as_run, [&](const auto& fields, const auto& value) {
     return config_fields::write_identity(fields, value, world.recorded_data(), fingerprints);
   });
   // A campaign without trial groups (identity before a dataset world's open) lists none.
@@ -339,20 +345,11 @@ std::vector<CampaignArm> read_arms(const YamlReader& f, const YAML::Node& root,
   const YAML::Node arms = f.require(root, "arms", "the campaign");
   if (!arms.IsSequence() || arms.size() == 0) f.fail(arms, "arms must be a non-empty list");
   std::vector<CampaignArm> read;
+  // Each arm's keys and values; what they may be together is campaign_arms.h's to say.
   for (const YAML::Node& a : arms) {
     CampaignArm arm;
     config_fields::read_yaml(f, a, arm_fields(), at, arm);
-    if (arm.observation_kind() == perception::ObservationKind::graded && !at.recorded_data &&
-        !arm.calibrate)
-      f.fail(a,
-             "observations: graded needs calibrate: true (grades come from the trained "
-             "classifier; a problem file's own table has none)");
-    if (!arm.leaf.empty() && arm.strategy != kPlanStrategy)
-      f.fail(a, "leaf: only an arm that plans (strategy: plan) has a leaf value; '" + arm.strategy +
-                    "' is a fixed strategy");
-    if (!arm.unheard.empty() && arm.strategy != kPlanStrategy)
-      f.fail(a, "unheard: only an arm that plans (strategy: plan) searches; '" + arm.strategy +
-                    "' is a fixed strategy");
+    arm.line = YamlReader::line_of(a);
     for (const CampaignArm& other : read)
       if (other.name == arm.name) f.fail(a, "two arms are named '" + arm.name + "'");
     read.push_back(std::move(arm));
@@ -439,28 +436,6 @@ PlannerConfig read_planner(const YamlReader& f, const YAML::Node& root,
   return planner;
 }
 
-// A planner sorting novel objects (a dataset world holding out objects), where its arm leaves them
-// out, plans with lookalikes and counts the outcomes no episode has heard at their commit value
-// (ABT with a leaf that follows the exact belief): on the recorded-data stand-ins' novel objects
-// together they took the planner from below the greedy rule to above it and made its belief at the
-// sort honest (docs/BENCHMARKS.md, "How the planner counts outcomes it has not heard"). Holding out
-// sessions, the folds fit no lookalikes and commit ties share, for 1.6 to 2.6 times the planning
-// time: there the plain planner stays. Resolved here, so the campaign's identity and its written
-// config name what the arm does.
-void apply_novel_object_plan_defaults(const YAML::Node& arms, CampaignConfig& c) {
-  if (!c.world.recorded_data() || c.world.hold_out != perception::HoldOut::object) return;
-  const bool can_commit = c.planner.solver == "abt";
-  for (std::size_t i = 0; i < c.arms.size(); ++i) {
-    CampaignArm& arm = c.arms[i];
-    if (arm.strategy != kPlanStrategy) continue;
-    const YAML::Node given = arms[i];
-    if (!given["lookalike"]) arm.lookalike = true;
-    if (!given["unheard"] && can_commit &&
-        (arm.leaf.empty() || solvers::follows_exact_belief(solvers::parse_leaf_mode(arm.leaf))))
-      arm.unheard = solvers::unheard_outcomes_name(solvers::UnheardOutcomes::commit);
-  }
-}
-
 // The reference file named by `reference:`, read whole (its mistakes name its own lines).
 std::optional<ReferenceResults> read_reference(const YamlReader& f, const YAML::Node& root,
                                                const std::string& source) {
@@ -509,7 +484,6 @@ CampaignConfig read_campaign(const std::string& yaml_text, const std::string& so
         read_training_set(f, t, {source, "training_set", recorded}, !c.world.model.empty());
   read_world_sections(f, root, c);
   c.planner = read_planner(f, root, {source, "planner", recorded});
-  apply_novel_object_plan_defaults(root["arms"], c);
   c.reference = read_reference(f, root, source);
   return c;
 }

@@ -28,8 +28,9 @@ inline constexpr const char* kPlanStrategy = "plan";
 // An arm's `unheard` when the campaign chooses it by self-play on the arm's own problems.
 inline constexpr const char* kUnheardByPlay = "auto";
 
-// One arm of the campaign (a study arm, not the robot's: that is sim::ArmConfig): the same trials
-// decided by one strategy with one problem.
+// One arm of the campaign (a study arm, not the robot's: that is sim::ArmConfig) in the file's
+// words: the same trials decided by one strategy with one problem. What it runs, defaults applied
+// and rules checked, is its ResolvedArm (campaign_arms.h).
 struct CampaignArm {
   std::string name;  // a label: letters, digits, '_' and '-'
   // Path of the problem file the arm decides with; empty in a dataset world, where each fold's
@@ -55,9 +56,9 @@ struct CampaignArm {
   bool atypical = false;
   // A dataset world's arm that plans knowing some objects sound like another class
   // (perception/typicality.h, lookalikes): each class has a lookalike copy with the share its
-  // fold's model fitted; every arm's problem then has the copies, as with `atypical`. An arm of
-  // strategy `plan` that does not name it plans with them where the world holds out objects.
-  bool lookalike = false;
+  // fold's model fitted; every arm's problem then has the copies, as with `atypical`. Absent: the
+  // default (campaign_arms.h: with them for a planner sorting novel objects).
+  std::optional<bool> lookalike;
   // An arm of strategy `plan`: the planner's leaf value (solvers/leaf_value.h: policy, exact, ...);
   // empty: the solver's default for the problem.
   std::string leaf{};
@@ -66,6 +67,7 @@ struct CampaignArm {
   // (experiment/unheard_choice.h); empty: share. An arm that plans with ABT and a leaf that can
   // commit, in a world that holds out objects, has commit unless it names another.
   std::string unheard{};
+  int line = 0;  // where the file gives the arm (0: not read from a file); not a setting
 };
 
 // A group of trials with one object in the world. `object` is what the world holds (a catalogue

@@ -162,6 +162,13 @@ struct TradeoffAxis {
   std::function<double(const TrialSummary&)> x;
 };
 
+// The share-sorted-right axis from a little below the lowest share plotted to just above 1, in
+// steps of 0.05: arms between 0.92 and 0.97 fill the figure instead of its top twentieth.
+std::string accuracy_range(double lowest) {
+  const double bottom = std::max(0.0, std::floor((lowest - 0.02) * 20.0) / 20.0);
+  return fmt::format("set yrange [{}:{}]\n", bottom, 1.0 + 0.03 * (1.0 - bottom));
+}
+
 Drawing tradeoff_drawing(const CampaignResults& results, const TradeoffAxis& axis,
                          const fs::path& data_dir) {
   Drawing d;
@@ -173,10 +180,12 @@ Drawing tradeoff_drawing(const CampaignResults& results, const TradeoffAxis& axi
   std::string data;
   std::string plot;
   int index = 0;
+  double lowest = 1.0;
   const std::string file = axis.name + ".dat";
   for (const SummaryRow& row : summary_rows(results)) {
     if (row.scope != RowScope::all) continue;
     data += fmt::format("{} {}\n", axis.x(row.summary), row.summary.accuracy);
+    lowest = std::min(lowest, row.summary.accuracy);
     // One series per arm, so each has its own colour and a key entry (labels would overlap).
     plot += fmt::format("{}'{}' every ::{}::{} using 1:2 with points pt 7 ps 2 title {}",
                         index ? ", " : "plot ", file, index, index, gnuplot_text(row.arm));
@@ -185,8 +194,8 @@ Drawing tradeoff_drawing(const CampaignResults& results, const TradeoffAxis& axi
   std::ofstream(data_dir / file) << data;
   d.commands = fmt::format(
       "set xlabel '{}'\nset ylabel 'sorted right'\n"
-      "set yrange [0:1.05]\nset xrange [0:*]\nset grid\nset key bottom right noenhanced\n{}\n",
-      axis.xlabel, plot);
+      "{}set xrange [0:*]\nset grid\nset key bottom right noenhanced\n{}\n",
+      axis.xlabel, accuracy_range(lowest), plot);
   return d;
 }
 
@@ -260,10 +269,11 @@ Drawing action_use_drawing(const CampaignResults& results, int sensing, const fs
   d.figure.stem = "actions_chosen";
   d.figure.title = "How often each arm chose each sensing action";
   d.figure.caption = "Mean number of times each sensing action was performed per trial, per arm.";
-  d.width = std::max(700, 90 * sensing * static_cast<int>(results.config.arms.size()) / 2);
+  // At most the page's width: a wider image is shrunk to fit, and its labels with it.
+  d.width = std::clamp(45 * sensing * static_cast<int>(results.arms.size()), 700, 1200);
   d.height = 500;
   std::string data = "action";
-  for (const CampaignArm& arm : results.config.arms) data += " " + gnuplot_text(arm.name);
+  for (const ResolvedArm& arm : results.arms) data += " " + gnuplot_text(arm.name);
   data += "\n";
   std::vector<std::vector<double>> uses;
   for (const SummaryRow& row : summary_rows(results))
@@ -279,7 +289,7 @@ Drawing action_use_drawing(const CampaignResults& results, int sensing, const fs
       "0.8 border -1\nset ylabel 'uses per trial'\nset xtics rotate by 30 right noenhanced\n"
       "set key top right noenhanced\nset grid ytics\nset yrange [0:*]\n"
       "plot for [c=2:{}] 'actions_chosen.dat' using c:xtic(1) title columnhead\n",
-      results.config.arms.size() + 1);
+      results.arms.size() + 1);
   return d;
 }
 
@@ -412,7 +422,7 @@ std::vector<Figure> draw_figures(const fs::path& directory, const CampaignResult
     for (Drawing& d : tradeoff_drawings(results, work.path())) drawings.push_back(std::move(d));
     drawings.push_back(action_use_drawing(results, results.sensing_actions, work.path()));
   }
-  for (const CampaignArm& arm : results.config.arms) {
+  for (const ResolvedArm& arm : results.arms) {
     if (!results.world.per_object) break;
     for (const ObjectGroup& group : results.config.groups) {
       const bool any = std::any_of(

@@ -91,7 +91,7 @@ std::vector<SummaryRow> summary_rows(const CampaignResults& results) {
   const bool originals = std::any_of(groups.begin(), groups.end(), plays_itself);
   const bool variants = !std::all_of(groups.begin(), groups.end(), plays_itself);
   std::vector<SummaryRow> rows;
-  for (const CampaignArm& arm : results.config.arms) {
+  for (const ResolvedArm& arm : results.arms) {
     auto add = [&](RowScope scope, const std::string& label, const GroupFilter& keep) {
       const std::vector<TrialRecord> records = records_where(results, arm.name, keep);
       if (records.empty()) return;
@@ -117,10 +117,9 @@ std::vector<SummaryRow> summary_rows(const CampaignResults& results) {
 
 std::vector<std::string> observation_names(const CampaignResults& results, const std::string& arm) {
   const std::vector<std::string>& names = results.spec.observation.names;
-  const auto it = std::find_if(results.config.arms.begin(), results.config.arms.end(),
-                               [&](const CampaignArm& a) { return a.name == arm; });
-  if (it == results.config.arms.end() ||
-      it->observation_kind() != perception::ObservationKind::graded)
+  const auto it = std::find_if(results.arms.begin(), results.arms.end(),
+                               [&](const ResolvedArm& a) { return a.name == arm; });
+  if (it == results.arms.end() || it->hearing() != perception::ObservationKind::graded)
     return names;
   std::vector<std::string> graded;
   for (const std::string& name : names) {
@@ -136,7 +135,7 @@ std::vector<std::string> observation_names(const CampaignResults& results, const
 
 std::map<std::string, std::vector<std::string>> observation_names(const CampaignResults& results) {
   std::map<std::string, std::vector<std::string>> names;
-  for (const CampaignArm& arm : results.config.arms)
+  for (const ResolvedArm& arm : results.arms)
     names[arm.name] = observation_names(results, arm.name);
   return names;
 }
@@ -147,10 +146,10 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
   for (const std::string& s : symbols)
     if (s != "none") classes.push_back(s);
   std::vector<ConfusionCounts> all;
-  for (const CampaignArm& arm : results.config.arms) {
+  for (const ResolvedArm& arm : results.arms) {
     // A graded arm's symbol o is class o / kGrades (its grades are counted together).
     const int per_class =
-        arm.observation_kind() == perception::ObservationKind::graded ? perception::kGrades : 1;
+        arm.hearing() == perception::ObservationKind::graded ? perception::kGrades : 1;
     // Sensing actions: those that were ever followed by a heard class in this campaign, in action
     // order.
     for (std::size_t a = 0; a < results.spec.action_names.size(); ++a) {
@@ -193,7 +192,7 @@ namespace {
 // arms/<arm>/{trials,steps}.csv under `directory`, of the entries `keep` accepts.
 void write_arm_tables(const fs::path& directory, const CampaignResults& results,
                       const std::function<bool(const JournalEntry&)>& keep) {
-  for (const CampaignArm& arm : results.config.arms) {
+  for (const ResolvedArm& arm : results.arms) {
     pomdp::ModelSpec spec = results.spec;
     spec.observation.names = observation_names(results, arm.name);
     TrialLog per_arm(directory / "arms" / arm.name, spec, results.belief_particles,
@@ -236,7 +235,7 @@ std::vector<double> action_costs(const pomdp::Model& model) {
 
 std::vector<ArmConfidence> arm_confidence(const CampaignResults& results) {
   std::vector<std::string> arms;
-  for (const CampaignArm& arm : results.config.arms) arms.push_back(arm.name);
+  for (const ResolvedArm& arm : results.arms) arms.push_back(arm.name);
   return arm_confidence(arms, results.entries, results.right_share);
 }
 
@@ -288,7 +287,7 @@ nlohmann::json summary_json(const CampaignResults& results) {
   }
   j["results"] = std::move(rows);
   if (!results.unheard_choices.empty()) j["unheard_choices"] = results.unheard_choices;
-  const auto& arms = results.config.arms;
+  const auto& arms = results.arms;
   for (std::size_t k = 1; k < arms.size(); ++k) {
     const TrialSummary d = paired_difference(results, arms[0].name, arms[k].name);
     j["paired_differences"].push_back(
@@ -321,15 +320,15 @@ nlohmann::json summary_json(const CampaignResults& results) {
 namespace {
 
 // How an arm decides, for the summary's heading.
-std::string arm_text(const CampaignResults& results, const CampaignArm& arm) {
+std::string arm_text(const CampaignResults& results, const ResolvedArm& arm) {
   std::string problem =
       !results.world.arm_problem.empty()
           ? results.world.arm_problem
           : (arm.calibrate ? arm.problem + ", its observation table calibrated on the training set"
                            : arm.problem);
-  if (arm.observation_kind() == perception::ObservationKind::graded)
+  if (arm.hearing() == perception::ObservationKind::graded)
     problem += ", hearing graded observations (the class and how sure the classifier was)";
-  if (arm.strategy == kPlanStrategy) return "plans with " + problem;
+  if (arm.plans()) return "plans with " + problem;
   return fmt::format("fixed strategy {} with {}", arm.strategy, problem);
 }
 
@@ -356,7 +355,7 @@ std::string summary_text(const CampaignResults& results) {
   for (const SummaryRow& row : summary_rows(results)) {
     if (row.arm != current_arm) {
       current_arm = row.arm;
-      for (const CampaignArm& a : results.config.arms)
+      for (const ResolvedArm& a : results.arms)
         if (a.name == row.arm) out += fmt::format("\narm {} ({})\n", row.arm, arm_text(results, a));
       out += fmt::format("  {:<24}{:>7}{:>10}{:>22}{:>7}", "objects", "trials", "accuracy",
                          "reward (95% CI)", "steps");
@@ -379,7 +378,7 @@ std::string summary_text(const CampaignResults& results) {
                          row.reference->mean_discounted_reward);
     out += '\n';
   }
-  const auto& arms = results.config.arms;
+  const auto& arms = results.arms;
   for (std::size_t k = 1; k < arms.size(); ++k) {
     const TrialSummary d = paired_difference(results, arms[0].name, arms[k].name);
     if (d.trials == 0) continue;

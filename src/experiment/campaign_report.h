@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "experiment/campaign_arms.h"
 #include "experiment/campaign_config.h"
 #include "experiment/sort_confidence.h"
 #include "experiment/trial_journal.h"
@@ -41,6 +42,7 @@ struct WorldPresentation {
 
 struct CampaignResults {
   CampaignConfig config;
+  std::vector<ResolvedArm> arms;  // what each arm of config ran (campaign_arms.h)
   WorldPresentation world;
   pomdp::ModelSpec spec;     // objects, actions and observation names, the same for every arm
   int belief_particles = 0;  // > 0: steps.csv shows particle counts (Table 5.2); 0: probabilities

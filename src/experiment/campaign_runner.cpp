@@ -39,20 +39,6 @@ class Worker {
 
 }  // namespace
 
-solvers::PlannerOverrides arm_planner(const CampaignConfig& config, const CampaignArm& arm) {
-  solvers::PlannerOverrides overrides;
-  overrides.solver = arm.strategy == kPlanStrategy ? config.planner.solver : arm.strategy;
-  overrides.episodes = config.planner.episodes;
-  overrides.step_ms = config.planner.step_ms;
-  if (arm.strategy == kPlanStrategy) {
-    overrides.leaf = arm.leaf;
-    // auto is the campaign's to resolve (experiment/unheard_choice.h) before any loop is built;
-    // until then the arm checks as the search's default.
-    if (arm.unheard != kUnheardByPlay) overrides.unheard = arm.unheard;
-  }
-  return overrides;
-}
-
 std::vector<TrialJob> campaign_jobs(const CampaignConfig& config) {
   std::vector<TrialJob> jobs;
   int id = 0;

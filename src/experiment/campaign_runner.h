@@ -18,7 +18,6 @@
 #include "experiment/trial_journal.h"
 #include "loop/loop.h"
 #include "pomdp/problem.h"
-#include "solvers/planner_overrides.h"
 
 namespace echoplan::experiment {
 
@@ -46,10 +45,6 @@ struct Shard {
 
 // Parses "I/N"; throws InputError for anything else or I outside 1..N.
 Shard parse_shard(const std::string& text);
-
-// What an arm's planner takes from the campaign: its solver and budget (the arm problem's file
-// gives the search settings), or the arm's fixed strategy.
-solvers::PlannerOverrides arm_planner(const CampaignConfig& config, const CampaignArm& arm);
 
 // What a trial runs: the checked loop, the true state it fixes and, in a dataset world, the
 // session it replays.

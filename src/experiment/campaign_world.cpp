@@ -7,6 +7,7 @@
 
 #include "common/error.h"
 #include "experiment/dataset_campaign.h"
+#include "experiment/report_inputs.h"
 #include "experiment/unheard_choice.h"
 #include "loop/calibrated_problem.h"
 #include "loop/loop.h"
@@ -19,9 +20,6 @@
 namespace echoplan::experiment {
 
 namespace fs = std::filesystem;
-
-std::vector<HeardCounts> CampaignWorld::heard(const CampaignConfig&) const { return {}; }
-std::vector<TemplateMatrix> CampaignWorld::templates() const { return {}; }
 
 namespace {
 
@@ -37,27 +35,30 @@ class ProblemFileWorld final : public CampaignWorld {
   ProblemFileWorld(bool simulates, fs::path directory)
       : simulates_(simulates), training_(std::move(directory) / "training") {}
 
-  void open(CampaignConfig& config, CampaignResults& results, InputFiles& files) override;
-  std::optional<ArmLoops> prepare(const CampaignConfig& config, const ProgressFn& progress,
-                                  const std::atomic<bool>& stop, int workers) override;
-  std::vector<HeardCounts> heard(const CampaignConfig& config) const override;
-  std::vector<TemplateMatrix> templates() const override {
-    return template_matrices(recordings_, training_objects_, training_actions_);
-  }
+  void open(CampaignConfig& config, const std::vector<ResolvedArm>& arms, CampaignResults& results,
+            InputFiles& files) override;
+  std::optional<ArmLoops> prepare(const CampaignConfig& config, std::vector<ResolvedArm>& arms,
+                                  const ProgressFn& progress, const std::atomic<bool>& stop,
+                                  int workers) override;
 
  private:
   // A trained classifier is needed: an arm calibrates, or the simulator's sound is heard.
-  bool needs_classifier(const CampaignConfig& config) const;
-  void load_problems(const CampaignConfig& config, CampaignResults& results, InputFiles& files);
+  bool needs_classifier(const std::vector<ResolvedArm>& arms) const;
+  void load_problems(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+                     CampaignResults& results, InputFiles& files);
   void check_objects(const CampaignConfig& config, const pomdp::ModelSpec& spec);
   void load_simulator(const CampaignConfig& config, InputFiles& files);
-  void load_given_model(const CampaignConfig& config, InputFiles& files);
+  void load_given_model(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+                        InputFiles& files);
   WorldPresentation presentation(const CampaignConfig& config) const;
   loop::SimulatedTraining simulated_training(const CampaignConfig& config) const;
   std::shared_ptr<const perception::ObservationModel> classifier(const CampaignConfig& config,
                                                                  const ProgressFn& progress,
                                                                  const std::atomic<bool>& stop);
-  ArmLoops make_loops(const CampaignConfig& config) const;
+  ArmLoops make_loops(const CampaignConfig& config, const std::vector<ResolvedArm>& arms) const;
+  std::optional<std::vector<HeardCounts>> heard(const CampaignConfig& config,
+                                                const std::atomic<bool>& stop) const;
+  bool write_report_inputs(const CampaignConfig& config, const std::atomic<bool>& stop) const;
 
   bool simulates_;
   fs::path training_;    // DIR/training: the model, the calibrated problems
@@ -72,33 +73,24 @@ class ProblemFileWorld final : public CampaignWorld {
   std::shared_ptr<const perception::ObservationModel> model_;  // given, or trained by prepare()
 };
 
-bool ProblemFileWorld::needs_classifier(const CampaignConfig& config) const {
-  return simulates_ || std::any_of(config.arms.begin(), config.arms.end(),
-                                   [](const CampaignArm& a) { return a.calibrate; });
+bool ProblemFileWorld::needs_classifier(const std::vector<ResolvedArm>& arms) const {
+  return simulates_ ||
+         std::any_of(arms.begin(), arms.end(), [](const ResolvedArm& a) { return a.calibrate; });
 }
 
 // The problems: each loads, and all share objects, actions and observations with the world.
-void ProblemFileWorld::load_problems(const CampaignConfig& config, CampaignResults& results,
+void ProblemFileWorld::load_problems(const CampaignConfig& config,
+                                     const std::vector<ResolvedArm>& arms, CampaignResults& results,
                                      InputFiles& files) {
   world_problem_ = files.problem(config.world.problem);
   const pomdp::ModelSpec& spec = world_problem_->model->spec();
   if (spec.state.discrete_value_names.empty())
     throw InputError(config.world.problem, 0,
                      "a campaign needs an object-identification problem (objects as its state)");
-  for (const CampaignArm& arm : config.arms) {
+  for (const ResolvedArm& arm : arms) {
     arm_problems_.push_back(files.problem(arm.problem));
     loop::check_same_names(*arm_problems_.back(), *world_problem_);
-    // Every solver can be built (unknown names and bad settings fail now, not in a worker).
-    loop::check_planner(arm_planner(config, arm), *arm_problems_.back());
-    check_unheard_auto(config, arm, *arm_problems_.back());
-    if (arm.calibrate) loop::object_problem(*arm_problems_.back()->model);
-    // A model world draws observations from its problem's own table, which has no grades.
-    if (!simulates_ && arm.observation_kind() == perception::ObservationKind::graded)
-      throw InputError(config.source, 0,
-                       fmt::format("arm '{}': observations: graded needs a world that hears (a "
-                                   "simulated or dataset world); a model world draws labels from "
-                                   "its problem's table",
-                                   arm.name));
+    check_arm_problem(config, arm, *arm_problems_.back());
   }
   results.spec = spec;
   results.action_costs = action_costs(*world_problem_->model);
@@ -150,13 +142,14 @@ void ProblemFileWorld::load_simulator(const CampaignConfig& config, InputFiles& 
 
 // training_set.model: one for these objects and actions, checked against every calibrating arm
 // and every loop now.
-void ProblemFileWorld::load_given_model(const CampaignConfig& config, InputFiles& files) {
+void ProblemFileWorld::load_given_model(const CampaignConfig& config,
+                                        const std::vector<ResolvedArm>& arms, InputFiles& files) {
   model_ = std::make_shared<const perception::ObservationModel>(perception::parse_observation_model(
       files.text(config.training.model), config.training.model));
-  for (std::size_t a = 0; a < config.arms.size(); ++a)
-    if (config.arms[a].calibrate)
-      loop::calibrate_problem(*arm_problems_[a], *model_, "", config.arms[a].observation_kind());
-  make_loops(config);
+  for (std::size_t a = 0; a < arms.size(); ++a)
+    if (arms[a].calibrate)
+      loop::calibrate_problem(*arm_problems_[a], *model_, "", arms[a].hearing());
+  make_loops(config, arms);
 }
 
 WorldPresentation ProblemFileWorld::presentation(const CampaignConfig& config) const {
@@ -180,18 +173,19 @@ WorldPresentation ProblemFileWorld::presentation(const CampaignConfig& config) c
   return p;
 }
 
-void ProblemFileWorld::open(CampaignConfig& config, CampaignResults& results, InputFiles& files) {
+void ProblemFileWorld::open(CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+                            CampaignResults& results, InputFiles& files) {
   recordings_ = config.training.recordings.empty() ? training_ / "recordings"
                                                    : fs::path(config.training.recordings);
-  load_problems(config, results, files);
+  load_problems(config, arms, results, files);
   load_simulator(config, files);
   check_objects(config, results.spec);
   results.world = presentation(config);
   if (!config.training.recordings.empty() && !fs::is_directory(config.training.recordings))
     throw InputError(config.training.recordings, 0, "the recordings folder does not exist");
-  if (!config.training.model.empty() && needs_classifier(config))
-    load_given_model(config, files);
-  else if (needs_classifier(config) && config.training.recordings_per_pair == 0 &&
+  if (!config.training.model.empty() && needs_classifier(arms))
+    load_given_model(config, arms, files);
+  else if (needs_classifier(arms) && config.training.recordings_per_pair == 0 &&
            config.training.recordings.empty())
     throw InputError(
         config.source, 0,
@@ -233,20 +227,21 @@ std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier
 }
 
 std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
+                                                  std::vector<ResolvedArm>& arms,
                                                   const ProgressFn& progress,
                                                   const std::atomic<bool>& stop, int workers) {
   if (config.training.recordings.empty() && config.training.recordings_per_pair > 0 &&
       !loop::synthesise_training_set(simulated_training(config), progress, stop))
     return std::nullopt;
-  if (needs_classifier(config)) {
+  if (needs_classifier(arms)) {
     fs::create_directories(training_);
     model_ = classifier(config, progress, stop);
     if (!model_) return std::nullopt;
-    for (std::size_t a = 0; a < config.arms.size(); ++a) {
-      if (!config.arms[a].calibrate) continue;
-      const std::string file = (training_ / (config.arms[a].name + ".problem.yaml")).string();
-      arm_problems_[a] = loop::calibrate_problem(*arm_problems_[a], *model_, file,
-                                                 config.arms[a].observation_kind());
+    for (std::size_t a = 0; a < arms.size(); ++a) {
+      if (!arms[a].calibrate) continue;
+      const std::string file = (training_ / (arms[a].name + ".problem.yaml")).string();
+      arm_problems_[a] =
+          loop::calibrate_problem(*arm_problems_[a], *model_, file, arms[a].hearing());
       loop::save_problem(*arm_problems_[a], file);
     }
   }
@@ -258,35 +253,53 @@ std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
     if (!p) p = with_exact_belief(arm_problems_[arm]);
     return std::vector<std::shared_ptr<const pomdp::Problem>>{p};
   };
-  const std::optional<CampaignConfig> chosen =
-      resolve_unheard(config, problems_of, training_.parent_path(), progress, stop, workers);
-  if (!chosen) return std::nullopt;
-  return make_loops(*chosen);
+  if (!choose_arms_unheard(config, arms, problems_of, training_.parent_path(), progress, stop,
+                           workers) ||
+      !write_report_inputs(config, stop))
+    return std::nullopt;
+  return make_loops(config, arms);
+}
+
+// The page's view of the training set (heard counts, templates), worked out once per campaign
+// folder: an earlier run's file is kept (the folder holds one campaign, so it cannot differ).
+// False when stopped.
+bool ProblemFileWorld::write_report_inputs(const CampaignConfig& config,
+                                           const std::atomic<bool>& stop) const {
+  const fs::path directory = training_.parent_path();
+  if (fs::exists(directory / kReportInputs)) return true;
+  ReportInputs inputs;
+  std::optional<std::vector<HeardCounts>> heard_counts = heard(config, stop);
+  if (!heard_counts) return false;
+  inputs.heard = std::move(*heard_counts);
+  if (fs::is_directory(recordings_))
+    inputs.templates = template_matrices(recordings_, training_objects_, training_actions_);
+  experiment::write_report_inputs(directory, inputs);
+  return true;
 }
 
 // The checked loop of every arm and group; InputError when a part does not fit.
-ArmLoops ProblemFileWorld::make_loops(const CampaignConfig& config) const {
-  ArmLoops loops(config.arms.size());
+ArmLoops ProblemFileWorld::make_loops(const CampaignConfig& config,
+                                      const std::vector<ResolvedArm>& arms) const {
+  ArmLoops loops(arms.size());
   // A graded arm's world hears graded symbols: the world's problem with the model's graded table
   // (its rewards and kinematics as they are; the simulator, not the table, makes observations).
   std::shared_ptr<const pomdp::Problem> graded_world;
-  for (std::size_t a = 0; a < config.arms.size(); ++a)
-    if (config.arms[a].observation_kind() == perception::ObservationKind::graded && !graded_world)
+  for (const ResolvedArm& arm : arms)
+    if (arm.hearing() == perception::ObservationKind::graded && !graded_world)
       graded_world = loop::calibrate_problem(*world_problem_, *model_, world_problem_->source_path,
                                              perception::ObservationKind::graded);
-  for (std::size_t a = 0; a < config.arms.size(); ++a)
+  for (std::size_t a = 0; a < arms.size(); ++a)
     for (const ObjectGroup& group : config.groups) {
       loop::LoopSettings s;
       s.problem = arm_problems_[a];
-      s.world_problem = config.arms[a].observation_kind() == perception::ObservationKind::graded
-                            ? graded_world
-                            : world_problem_;
+      s.world_problem =
+          arms[a].hearing() == perception::ObservationKind::graded ? graded_world : world_problem_;
       if (simulates_) {
         s.world = loop::SimulatedWorldSpec{catalogue_, sim_config_};
         s.classifier = model_;
         if (group.object != group.plays) s.world_objects[group.plays] = group.object;
       }
-      s.planner = arm_planner(config, config.arms[a]);
+      s.planner = arms[a].planner;
       s.max_steps = config.planner.max_steps;
       auto spec = std::make_shared<const loop::LoopSpec>(std::move(s));
       const int object = loop::object_index(spec->problem(), group.plays);
@@ -300,10 +313,12 @@ ArmLoops ProblemFileWorld::make_loops(const CampaignConfig& config) const {
 // on the whole training set, as the lab heard its modified objects: the page's comparison with the
 // lab's counts. The variants' recordings (as many per pair as the training set's) are synthesised
 // into DIR/training/variants on their own random stream. Empty for a reference without `heard`,
-// or no training set.
-std::vector<HeardCounts> ProblemFileWorld::heard(const CampaignConfig& config) const {
+// or no training set; nothing when stopped.
+std::optional<std::vector<HeardCounts>> ProblemFileWorld::heard(
+    const CampaignConfig& config, const std::atomic<bool>& stop) const {
   const std::optional<ReferenceResults>& reference = config.reference;
-  if (!simulates_ || !reference || !reference->heard || !fs::is_directory(recordings_)) return {};
+  if (!simulates_ || !reference || !reference->heard || !fs::is_directory(recordings_))
+    return std::vector<HeardCounts>{};
   const perception::RecordingSet training = perception::load_recording_set(recordings_.string());
   loop::SimulatedTraining variants = simulated_training(config);
   variants.objects.clear();
@@ -316,9 +331,8 @@ std::vector<HeardCounts> ProblemFileWorld::heard(const CampaignConfig& config) c
   variants.actions = training.actions;
   variants.seed = loop::stream_seed(config.seed, loop::Stream::campaign_variants);
   variants.directory = training_ / "variants";
-  const std::atomic<bool> never_stop{false};
-  const bool hear_variants = !variants.objects.empty() && variants.per_pair > 0 &&
-                             loop::synthesise_training_set(variants, {}, never_stop);
+  const bool hear_variants = !variants.objects.empty() && variants.per_pair > 0;
+  if (hear_variants && !loop::synthesise_training_set(variants, {}, stop)) return std::nullopt;
   const std::vector<perception::HeardConfusion> confusions =
       hear_variants ? perception::heard_confusion(
                           training, perception::load_recording_set(variants.directory.string()),
@@ -334,16 +348,17 @@ std::vector<HeardCounts> ProblemFileWorld::heard(const CampaignConfig& config) c
 class RecordedDataWorld final : public CampaignWorld {
  public:
   explicit RecordedDataWorld(fs::path directory) : directory_(std::move(directory)) {}
-  void open(CampaignConfig& config, CampaignResults& results, InputFiles& files) override;
-  std::optional<ArmLoops> prepare(const CampaignConfig& config, const ProgressFn& progress,
-                                  const std::atomic<bool>& stop, int workers) override {
+  void open(CampaignConfig& config, const std::vector<ResolvedArm>& arms, CampaignResults& results,
+            InputFiles& files) override;
+  std::optional<ArmLoops> prepare(const CampaignConfig& config, std::vector<ResolvedArm>& arms,
+                                  const ProgressFn& progress, const std::atomic<bool>& stop,
+                                  int workers) override {
     if (!fit_dataset_folds(*trials_, config, progress, stop)) return std::nullopt;
-    const FoldProblems problems = fold_problems(config, *trials_);
+    const FoldProblems problems = fold_problems(config, arms, *trials_);
     write_fold_problems(directory_, config, problems);
-    const std::optional<CampaignConfig> chosen =
-        choose_dataset_unheard(directory_, config, problems, progress, stop, workers);
-    if (!chosen) return std::nullopt;
-    return dataset_loops(*chosen, *trials_);
+    if (!choose_dataset_unheard(directory_, config, arms, problems, progress, stop, workers))
+      return std::nullopt;
+    return dataset_loops(config, arms, *trials_);
   }
 
  private:
@@ -351,15 +366,12 @@ class RecordedDataWorld final : public CampaignWorld {
   std::shared_ptr<DatasetTrials> trials_;
 };
 
-void RecordedDataWorld::open(CampaignConfig& config, CampaignResults& results, InputFiles& files) {
-  trials_ = std::make_shared<DatasetTrials>(open_dataset(config, files));
+void RecordedDataWorld::open(CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+                             CampaignResults& results, InputFiles& files) {
+  trials_ = std::make_shared<DatasetTrials>(open_dataset(config, arms, files));
   config.groups = dataset_groups(*trials_);
-  // Every arm's strategy is checked against the names problem now, not in a worker; an arm that
-  // leaves the unheard estimate to self-play, with both estimates.
-  for (const CampaignArm& arm : config.arms) {
-    loop::check_planner(arm_planner(config, arm), *trials_->names);
-    check_unheard_auto(config, arm, *trials_->names);
-  }
+  // Every arm against the names problem now, not in a worker.
+  for (const ResolvedArm& arm : arms) check_arm_problem(config, arm, *trials_->names);
   results.spec = trials_->names->model->spec();
   results.right_action = right_actions(*trials_);
   results.right_share = right_shares(*trials_, config.rewards);

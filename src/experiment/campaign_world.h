@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "common/progress.h"
+#include "experiment/campaign_arms.h"
 #include "experiment/campaign_config.h"
-#include "experiment/campaign_figures.h"
 #include "experiment/campaign_report.h"
 #include "experiment/campaign_runner.h"
 #include "experiment/input_files.h"
@@ -28,19 +28,21 @@ class CampaignWorld {
  public:
   virtual ~CampaignWorld() = default;
   // Loads and checks everything the world needs before any work (files read once through
-  // `files`): InputError naming the file and the problem. Fills the groups the world decides
-  // (recorded data: one per object, a trial per session) and the report's skeleton in `results`
-  // (spec, planned trials, presentation).
-  virtual void open(CampaignConfig& config, CampaignResults& results, InputFiles& files) = 0;
+  // `files`), each arm against the problem it plans on (check_arm_problem): InputError naming the
+  // file and the problem. Fills the groups the world decides (recorded data: one per object, a
+  // trial per session) and the report's skeleton in `results` (spec, planned trials,
+  // presentation).
+  virtual void open(CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+                    CampaignResults& results, InputFiles& files) = 0;
   // Trains or fits each fold's model (progress: "synthesise", the trainer's stages, "fit folds",
-  // "choose unheard") and returns the checked loop of every arm, group and trial; nothing when
-  // stopped. `workers` threads share what can run in parallel (results do not depend on it).
-  virtual std::optional<ArmLoops> prepare(const CampaignConfig& config, const ProgressFn& progress,
-                                          const std::atomic<bool>& stop, int workers) = 0;
-  // What the page shows of the world beside the trials: the training set heard by the
-  // reference's classifier, and its template figures.
-  virtual std::vector<HeardCounts> heard(const CampaignConfig& config) const;
-  virtual std::vector<TemplateMatrix> templates() const;
+  // "choose unheard"), puts what self-play chose in the arms' planners, writes what the report
+  // shows of the world besides the trials (report_inputs.h), and returns the checked loop of every
+  // arm, group and trial; nothing when stopped. `workers` threads share what can run in parallel
+  // (results do not depend on it).
+  virtual std::optional<ArmLoops> prepare(const CampaignConfig& config,
+                                          std::vector<ResolvedArm>& arms,
+                                          const ProgressFn& progress, const std::atomic<bool>& stop,
+                                          int workers) = 0;
 };
 
 // The world of `config`; what it writes (a synthesised training set, the trained model, the

@@ -16,6 +16,7 @@
 #include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -50,9 +51,10 @@ enum class Identity {
 enum class Worlds { any, problem_files, recorded_data };
 
 template <class T>
-using Member = std::variant<std::string T::*, bool T::*, int T::*, std::int64_t T::*,
-                            std::uint64_t T::*, double T::*, std::vector<std::string> T::*,
-                            perception::HoldOut T::*, std::map<std::string, double> T::*>;
+using Member =
+    std::variant<std::string T::*, bool T::*, std::optional<bool> T::*, int T::*, std::int64_t T::*,
+                 std::uint64_t T::*, double T::*, std::vector<std::string> T::*,
+                 perception::HoldOut T::*, std::map<std::string, double> T::*>;
 
 template <class T>
 struct Field {
@@ -115,7 +117,7 @@ void read_yaml_field(const YamlReader& f, const YAML::Node& map, const Field<T>&
           if (field.text == Text::path || field.text == Text::file || field.text == Text::folder)
             value = resolve(at.source, value);
           check_text(f, n, field.key, field.text, field.choices, value);
-        } else if constexpr (std::is_same_v<V, bool>) {
+        } else if constexpr (std::is_same_v<V, bool> || std::is_same_v<V, std::optional<bool>>) {
           value = f.boolean(n, field.key);
         } else if constexpr (std::is_same_v<V, std::uint64_t>) {
           try {
@@ -162,11 +164,13 @@ void read_yaml(const YamlReader& f, const YAML::Node& map, const std::vector<Fie
   for (const Field<T>& field : fields) read_yaml_field(f, map, field, at, into);
 }
 
-// A field's value as JSON (a hold-out by its name).
+// A field's value as JSON (a hold-out by its name; a yes-or-no the file did not give as null).
 template <class V>
 nlohmann::json json_value(const V& value) {
   if constexpr (std::is_same_v<V, perception::HoldOut>)
     return perception::hold_out_name(value);
+  else if constexpr (std::is_same_v<V, std::optional<bool>>)
+    return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
   else
     return value;
 }
@@ -200,6 +204,9 @@ void read_json(const nlohmann::json& j, const std::vector<Field<T>>& fields,
             value = jf::string(*n, where, source);
           else if constexpr (std::is_same_v<V, bool>)
             value = jf::boolean(*n, where, source);
+          else if constexpr (std::is_same_v<V, std::optional<bool>>)
+            value =
+                n->is_null() ? std::nullopt : std::optional<bool>(jf::boolean(*n, where, source));
           else if constexpr (std::is_same_v<V, int>)
             value = jf::integer(*n, field.min, 1 << 30, where, source);
           else if constexpr (std::is_same_v<V, std::int64_t>)

@@ -86,8 +86,8 @@ void open_frozen_model(DatasetTrials& t, const std::string& path, InputFiles& fi
 
 }  // namespace
 
-DatasetTrials open_dataset(const CampaignConfig& config, InputFiles& files,
-                           const ProgressFn& progress) {
+DatasetTrials open_dataset(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+                           InputFiles& files, const ProgressFn& progress) {
   DatasetTrials t;
   t.data = files.data(config.world.data, progress);
   std::optional<perception::ObjectGroups> groups;
@@ -105,10 +105,10 @@ DatasetTrials open_dataset(const CampaignConfig& config, InputFiles& files,
       for (int s : t.folds[f].test_sessions) t.fold_of_session.at(s) = static_cast<int>(f);
   }
   try {
-    t.names = std::make_shared<const pomdp::Problem>(dataset_problem_file(
-        loop::dataset_problem_shape(t.task, *t.data, config.rewards, any_atypical(config),
-                                    any_lookalike(config)),
-        config.world.data));
+    t.names = std::make_shared<const pomdp::Problem>(
+        dataset_problem_file(loop::dataset_problem_shape(t.task, *t.data, config.rewards,
+                                                         any_atypical(arms), any_lookalike(arms)),
+                             config.world.data));
   } catch (const InputError& e) {
     // Only the task can be wrong here (a cost for a behaviour the data does not have).
     throw InputError(config.source, 0, "task." + e.problem());
@@ -168,37 +168,18 @@ bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
   return true;
 }
 
-bool any_atypical(const CampaignConfig& config) {
-  return std::any_of(config.arms.begin(), config.arms.end(),
-                     [](const CampaignArm& arm) { return arm.atypical; });
-}
-
-bool any_lookalike(const CampaignConfig& config) {
-  return std::any_of(config.arms.begin(), config.arms.end(),
-                     [](const CampaignArm& arm) { return arm.lookalike; });
-}
-
-ArmProblemKind arm_problem_kind(const CampaignArm& arm) {
-  return {arm.observation_kind(), arm.atypical, arm.lookalike};
-}
-
-std::string fold_problem_name(const ArmProblemKind& kind) {
-  return fmt::format("problem{}{}{}.yaml",
-                     kind.kind == perception::ObservationKind::graded ? "-graded" : "",
-                     kind.atypical ? "-atypical" : "", kind.lookalike ? "-lookalike" : "");
-}
-
 namespace {
 
 // The fold's problem for arms of `kind`. When some arm plans with copies of a class, every arm's
 // problem has them (those that do not plan with them, with a share of 0).
-pomdp::ObjectProblemData fold_problem(const CampaignConfig& config, const DatasetTrials& trials,
-                                      int fold, const std::vector<int>& uses,
-                                      const ArmProblemKind& kind) {
+pomdp::ObjectProblemData fold_problem(const CampaignConfig& config,
+                                      const std::vector<ResolvedArm>& arms,
+                                      const DatasetTrials& trials, int fold,
+                                      const std::vector<int>& uses, const ArmProblemKind& kind) {
   const perception::ObservationModel& model = *trials.models.at(fold);
   loop::UnlikeTheirClass unlike;
-  if (any_atypical(config)) unlike.atypical = kind.atypical ? model.atypical_share(kind.kind) : 0.0;
-  if (any_lookalike(config))
+  if (any_atypical(arms)) unlike.atypical = kind.atypical ? model.atypical_share(kind.kind) : 0.0;
+  if (any_lookalike(arms))
     unlike.lookalike = kind.lookalike ? model.lookalike_share(kind.kind) : 0.0;
   return loop::dataset_problem(trials.task, model, config.rewards, uses, kind.kind, unlike);
 }
@@ -214,15 +195,16 @@ std::string kind_description(const ArmProblemKind& kind) {
 
 }  // namespace
 
-FoldProblems fold_problems(const CampaignConfig& config, const DatasetTrials& trials) {
+FoldProblems fold_problems(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+                           const DatasetTrials& trials) {
   const std::vector<int> uses = loop::default_uses(*trials.data);
   FoldProblems problems;
-  for (const CampaignArm& arm : config.arms) {
-    const ArmProblemKind kind = arm_problem_kind(arm);
+  for (const ResolvedArm& arm : arms) {
+    const ArmProblemKind& kind = arm.plans_with;
     if (problems.count(kind)) continue;
     for (std::size_t f = 0; f < trials.models.size(); ++f)
       problems[kind].push_back(std::make_shared<const pomdp::Problem>(
-          dataset_problem_file(fold_problem(config, trials, static_cast<int>(f), uses, kind),
+          dataset_problem_file(fold_problem(config, arms, trials, static_cast<int>(f), uses, kind),
                                fmt::format("{} (fold {})", config.world.data, f + 1))));
   }
   return problems;
@@ -247,41 +229,38 @@ void write_fold_problems(const std::filesystem::path& directory, const CampaignC
     }
 }
 
-std::optional<CampaignConfig> choose_dataset_unheard(const std::filesystem::path& directory,
-                                                     const CampaignConfig& config,
-                                                     const FoldProblems& problems,
-                                                     const ProgressFn& progress,
-                                                     const std::atomic<bool>& stop, int workers) {
-  const auto problems_of = [&](std::size_t arm) {
-    return problems.at(arm_problem_kind(config.arms[arm]));
-  };
-  return resolve_unheard(config, problems_of, directory, progress, stop, workers);
+bool choose_dataset_unheard(const std::filesystem::path& directory, const CampaignConfig& config,
+                            std::vector<ResolvedArm>& arms, const FoldProblems& problems,
+                            const ProgressFn& progress, const std::atomic<bool>& stop,
+                            int workers) {
+  const auto problems_of = [&](std::size_t arm) { return problems.at(arms[arm].plans_with); };
+  return choose_arms_unheard(config, arms, problems_of, directory, progress, stop, workers);
 }
 
-ArmLoops dataset_loops(const CampaignConfig& config, const DatasetTrials& trials) {
+ArmLoops dataset_loops(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+                       const DatasetTrials& trials) {
   // One problem per fold and use limits, shared by every arm and trial that needs it.
   using Key = std::tuple<int, std::vector<int>, ArmProblemKind>;
   std::map<Key, std::shared_ptr<const pomdp::Problem>> problems;
   const auto& names = trials.names->model->object_identification()->data();
-  const auto problem_for = [&](int fold, const std::vector<int>& uses, const CampaignArm& arm) {
-    auto& p = problems[{fold, uses, arm_problem_kind(arm)}];
+  const auto problem_for = [&](int fold, const std::vector<int>& uses, const ResolvedArm& arm) {
+    auto& p = problems[{fold, uses, arm.plans_with}];
     if (!p)
       p = std::make_shared<const pomdp::Problem>(
-          dataset_problem_file(fold_problem(config, trials, fold, uses, arm_problem_kind(arm)),
+          dataset_problem_file(fold_problem(config, arms, trials, fold, uses, arm.plans_with),
                                fmt::format("{} (fold {})", config.world.data, fold + 1)));
     return p;
   };
-  ArmLoops loops(config.arms.size());
-  for (std::size_t a = 0; a < config.arms.size(); ++a)
+  ArmLoops loops(arms.size());
+  for (std::size_t a = 0; a < arms.size(); ++a)
     for (std::size_t o = 0; o < trials.data->objects.size(); ++o) {
       std::vector<TrialLoop>& group = loops[a].emplace_back();
       for (int session : sessions_of(*trials.data, static_cast<int>(o))) {
         const int fold = trials.fold_of_session.at(session);
         loop::LoopSettings s;
-        s.problem =
-            problem_for(fold, loop::session_uses(names, *trials.data, session), config.arms[a]);
+        s.problem = problem_for(fold, loop::session_uses(names, *trials.data, session), arms[a]);
         s.world = loop::DatasetWorldSpec{trials.data, trials.models.at(fold), session};
-        s.planner = arm_planner(config, config.arms[a]);
+        s.planner = arms[a].planner;
         s.max_steps = config.planner.max_steps;
         group.push_back({std::make_shared<const loop::LoopSpec>(std::move(s)),
                          trials.task.class_of_object.at(o), trials.data->sessions[session].name});

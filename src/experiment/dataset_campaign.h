@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "common/progress.h"
+#include "experiment/campaign_arms.h"
 #include "experiment/campaign_config.h"
 #include "experiment/campaign_runner.h"
 #include "experiment/input_files.h"
@@ -40,10 +41,11 @@ struct DatasetTrials {
 };
 
 // Loads (through `files`, each input read once) and checks the world's data, groups and frozen
-// model (InputError naming the file and line) and deals the folds. A recordings tree's audio is
-// analysed now (`progress` hears "analyse").
-DatasetTrials open_dataset(const CampaignConfig& config, InputFiles& files,
-                           const ProgressFn& progress = {});
+// model (InputError naming the file and line) and deals the folds; the names problem has the
+// copies of a class some arm plans with. A recordings tree's audio is analysed now (`progress`
+// hears "analyse").
+DatasetTrials open_dataset(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+                           InputFiles& files, const ProgressFn& progress = {});
 
 // The trial groups of the data: one per object, in the data's order, a trial per session.
 std::vector<ObjectGroup> dataset_groups(const DatasetTrials& trials);
@@ -62,44 +64,27 @@ std::vector<std::vector<double>> right_shares(const DatasetTrials& trials,
 bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
                        const ProgressFn& progress, const std::atomic<bool>& stop);
 
-// What an arm's fold problem depends on besides the fold: what it hears and which objects unlike
-// their class it plans with (CampaignArm::observations, atypical, lookalike).
-struct ArmProblemKind {
-  perception::ObservationKind kind = perception::ObservationKind::labels;
-  bool atypical = false;
-  bool lookalike = false;
-  friend auto operator<=>(const ArmProblemKind&, const ArmProblemKind&) = default;
-};
-ArmProblemKind arm_problem_kind(const CampaignArm& arm);
-
-// The file name of a fold's problem of that kind: problem[-graded][-atypical][-lookalike].yaml.
-std::string fold_problem_name(const ArmProblemKind& kind);
-// Some arm plans with atypical objects (CampaignArm::atypical): every arm's problem has the copies.
-bool any_atypical(const CampaignConfig& config);
-// Some arm plans with lookalikes (CampaignArm::lookalike): every arm's problem has those copies.
-bool any_lookalike(const CampaignConfig& config);
-
 // Each kind of arm's problem of each fold, [kind][fold]: the fold's fitted table, the task's
 // rewards and costs, each behaviour limited to the most performances any session recorded
 // (default_uses), an exact belief (as the campaign's trials track it). Needs the fitted folds.
 using FoldProblems = std::map<ArmProblemKind, std::vector<std::shared_ptr<const pomdp::Problem>>>;
-FoldProblems fold_problems(const CampaignConfig& config, const DatasetTrials& trials);
+FoldProblems fold_problems(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+                           const DatasetTrials& trials);
 
 // Writes each fold's problems, `directory`/folds/<fold>/<fold_problem_name> (folds numbered from
 // 1). `echoplan certify --campaign` judges the fold's trials with them.
 void write_fold_problems(const std::filesystem::path& directory, const CampaignConfig& config,
                          const FoldProblems& problems);
 
-// resolve_unheard (experiment/unheard_choice.h), each arm playing its kind's fold problems (arms
-// of one kind share them, and so one choice).
-std::optional<CampaignConfig> choose_dataset_unheard(const std::filesystem::path& directory,
-                                                     const CampaignConfig& config,
-                                                     const FoldProblems& problems,
-                                                     const ProgressFn& progress,
-                                                     const std::atomic<bool>& stop, int workers);
+// choose_arms_unheard (experiment/unheard_choice.h), each arm playing its kind's fold problems
+// (arms of one kind share them, and so one choice). False when stopped.
+bool choose_dataset_unheard(const std::filesystem::path& directory, const CampaignConfig& config,
+                            std::vector<ResolvedArm>& arms, const FoldProblems& problems,
+                            const ProgressFn& progress, const std::atomic<bool>& stop, int workers);
 
 // The loop of every arm and trial: loops[arm][object][session] (campaign_runner.h). Needs the
 // fitted folds.
-ArmLoops dataset_loops(const CampaignConfig& config, const DatasetTrials& trials);
+ArmLoops dataset_loops(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+                       const DatasetTrials& trials);
 
 }  // namespace echoplan::experiment

@@ -47,7 +47,7 @@ std::string read_bytes(const fs::path& path) {
 const char* kStyle = R"(
 body { font-family: sans-serif; margin: 2em auto; max-width: 1250px; color: #222; line-height: 1.4; }
 h1 { font-size: 1.6em; } h2 { border-bottom: 1px solid #ccc; padding-bottom: .2em; margin-top: 2em; }
-table { border-collapse: collapse; margin: .8em 0; font-size: .9em; }
+table { border-collapse: collapse; margin: .8em 0; font-size: .9em; display: block; overflow-x: auto; max-width: 100%; }
 th, td { border: 1px solid #bbb; padding: .25em .6em; text-align: right; }
 th { background: #e8eef6; } td.l, th.l { text-align: left; }
 tr.total td { font-weight: bold; background: #f4f4f4; }
@@ -111,6 +111,11 @@ std::string page_opening(const CampaignResults& results) {
   return h;
 }
 
+// Up to this many actions the results table gives each a column; with more (recorded data with
+// many behaviours) the table would run off a laptop's screen, and behaviours_table() gives them
+// a row each instead.
+constexpr int kActionColumns = 4;
+
 // The summary rows, with the reference's columns when the campaign names a reference.
 std::string results_table(const CampaignResults& results) {
   const std::optional<ReferenceResults>& reference = results.config.reference;
@@ -121,7 +126,7 @@ std::string results_table(const CampaignResults& results) {
        "steps</th>";
   const bool costed = !results.action_costs.empty();  // the mean cost beside the steps
   if (costed) h += "<th>mean cost</th>";
-  const int shown = shown_actions(results);
+  const int shown = shown_actions(results) <= kActionColumns ? shown_actions(results) : 0;
   for (int a = 0; a < shown; ++a) h += "<th>mean " + escape(results.spec.action_names[a]) + "</th>";
   if (reference)
     h += fmt::format("<th>{0}: correct</th><th>{0}: reward</th>", escape(reference->label));
@@ -141,6 +146,28 @@ std::string results_table(const CampaignResults& results) {
                        row.reference->trials, row.reference->mean_discounted_reward);
     else if (reference)
       h += "<td></td><td></td>";
+    h += "</tr>\n";
+  }
+  return h + "</table>\n";
+}
+
+// With more actions than the results table has columns for: per action, each arm's mean uses per
+// trial over all its trials (a row per action, a column per arm).
+std::string behaviours_table(const CampaignResults& results) {
+  const int shown = shown_actions(results);
+  if (shown <= kActionColumns) return "";
+  std::vector<const SummaryRow*> all;
+  const std::vector<SummaryRow> rows = summary_rows(results);
+  for (const SummaryRow& row : rows)
+    if (row.scope == RowScope::all) all.push_back(&row);
+  std::string h =
+      "<h2>Behaviours performed per trial</h2>\n<table>\n<tr><th class=\"l\">behaviour</th>";
+  for (const SummaryRow* row : all) h += "<th>" + escape(row->arm) + "</th>";
+  h += "</tr>\n";
+  for (int a = 0; a < shown; ++a) {
+    h += "<tr><td class=\"l\">" + escape(results.spec.action_names[a]) + "</td>";
+    for (const SummaryRow* row : all)
+      h += fmt::format("<td>{:.2f}</td>", row->summary.mean_action_counts[a]);
     h += "</tr>\n";
   }
   return h + "</table>\n";
@@ -324,7 +351,8 @@ std::string confidence_table(const CampaignResults& results) {
 
 std::string html_report(const fs::path& directory, const CampaignResults& results,
                         const std::vector<Figure>& figures) {
-  std::string h = page_opening(results) + results_table(results) + paired_comparison(results);
+  std::string h = page_opening(results) + results_table(results) + paired_comparison(results) +
+                  behaviours_table(results);
   const std::optional<ReferenceResults>& reference = results.config.reference;
   if (reference && !reference->note.empty()) h += "<p>" + escape(reference->note) + "</p>\n";
   h += heard_section(results) + confidence_table(results);

@@ -97,26 +97,6 @@ std::optional<UnheardChoice> choose_unheard(const UnheardSelfPlay& play, const P
   return choice;
 }
 
-void check_unheard_auto(const CampaignConfig& config, const CampaignArm& arm,
-                        const pomdp::Problem& problem) {
-  if (arm.unheard != kUnheardByPlay) return;
-  if (!problem.model->tabular())
-    throw InputError(
-        config.source, 0,
-        fmt::format("arm '{}': unheard: auto plays the arm's problem as the world, and "
-                    "{} has no table (name share or commit)",
-                    arm.name, problem.source_path));
-  solvers::PlannerOverrides commit = arm_planner(config, arm);
-  commit.unheard = solvers::unheard_outcomes_name(solvers::UnheardOutcomes::commit);
-  try {
-    loop::check_planner(commit, problem);
-  } catch (const InputError& e) {
-    throw InputError(
-        config.source, 0,
-        fmt::format("arm '{}': unheard: auto may choose commit, and {}", arm.name, e.problem()));
-  }
-}
-
 std::shared_ptr<const pomdp::Problem> with_exact_belief(
     const std::shared_ptr<const pomdp::Problem>& problem) {
   if (problem->belief.type == pomdp::BeliefSettings::Type::exact) return problem;
@@ -125,38 +105,46 @@ std::shared_ptr<const pomdp::Problem> with_exact_belief(
   return exact;
 }
 
-std::optional<CampaignConfig> resolve_unheard(const CampaignConfig& config,
-                                              const ArmSelfPlayProblems& problems_of,
-                                              const std::filesystem::path& directory,
-                                              const ProgressFn& progress,
-                                              const std::atomic<bool>& stop, int workers) {
-  CampaignConfig resolved = config;
+bool choose_arms_unheard(const CampaignConfig& config, std::vector<ResolvedArm>& arms,
+                         const ArmSelfPlayProblems& problems_of,
+                         const std::filesystem::path& directory, const ProgressFn& progress,
+                         const std::atomic<bool>& stop, int workers) {
   using Key = std::pair<std::vector<const pomdp::Problem*>, std::string>;  // problems and leaf
   std::map<Key, UnheardChoice> made;
   std::vector<ArmUnheardChoice> choices;
-  for (std::size_t a = 0; a < resolved.arms.size(); ++a) {
-    CampaignArm& arm = resolved.arms[a];
-    if (arm.unheard != kUnheardByPlay) continue;
+  for (std::size_t a = 0; a < arms.size(); ++a) {
+    const ResolvedArm& arm = arms[a];
+    if (!arm.unheard_by_play) continue;
     UnheardSelfPlay play;
     play.problems = problems_of(a);
-    Key key{{}, arm.leaf};
+    Key key{{}, arm.planner.leaf};
     for (const auto& p : play.problems) key.first.push_back(p.get());
     auto it = made.find(key);
     if (it == made.end()) {
-      play.planner = arm_planner(config, arm);
+      play.planner = arm.planner;
       play.trials = config.planner.self_play_trials;
       play.max_steps = config.planner.max_steps;
       play.seed = loop::stream_seed(config.seed, loop::Stream::campaign_unheard);
       play.workers = workers;
       const std::optional<UnheardChoice> choice = choose_unheard(play, progress, stop);
-      if (!choice) return std::nullopt;
+      if (!choice) return false;
       it = made.emplace(key, *choice).first;
     }
-    arm.unheard = solvers::unheard_outcomes_name(it->second.chosen);
     choices.push_back({arm.name, it->second});
   }
-  if (!choices.empty()) write_unheard_choices(directory / kUnheardChoices, choices);
-  return resolved;
+  if (choices.empty()) return true;
+  for (const ArmUnheardChoice& c : choices)
+    for (ResolvedArm& arm : arms)
+      if (arm.name == c.arm) arm.planner.unheard = solvers::unheard_outcomes_name(c.choice.chosen);
+  write_unheard_choices(directory / kUnheardChoices, choices);
+  return true;
+}
+
+void apply_unheard_choices(const nlohmann::json& choices, std::vector<ResolvedArm>& arms) {
+  for (const nlohmann::json& c : choices)
+    for (ResolvedArm& arm : arms)
+      if (arm.unheard_by_play && arm.name == c["arm"].get<std::string>())
+        arm.planner.unheard = c["chosen"].get<std::string>();
 }
 
 void write_unheard_choices(const std::filesystem::path& file,

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "common/progress.h"
+#include "experiment/campaign_arms.h"
 #include "experiment/campaign_config.h"
 #include "pomdp/problem.h"
 #include "solvers/planner_overrides.h"
@@ -64,22 +65,19 @@ std::optional<UnheardChoice> choose_unheard(const UnheardSelfPlay& play, const P
 using ArmSelfPlayProblems =
     std::function<std::vector<std::shared_ptr<const pomdp::Problem>>(std::size_t arm)>;
 
-// `config` with every arm's `unheard: auto` (kUnheardByPlay) resolved to share or commit by
-// choose_unheard on its problems (planner.self_play_trials trials, the campaign's planner, the
-// campaign_unheard stream of its seed); arms that play the same problems with the same leaf share
-// one choice. Writes the choices to `directory`/kUnheardChoices when an arm chose. Nothing when
-// stopped.
-std::optional<CampaignConfig> resolve_unheard(const CampaignConfig& config,
-                                              const ArmSelfPlayProblems& problems_of,
-                                              const std::filesystem::path& directory,
-                                              const ProgressFn& progress,
-                                              const std::atomic<bool>& stop, int workers);
+// Chooses the unheard estimate of every arm with `unheard: auto` (ResolvedArm::unheard_by_play) by
+// choose_unheard on its problems (planner.self_play_trials trials, the arm's planner, the
+// campaign_unheard stream of the campaign's seed) and puts it in the arm's planner; arms that play
+// the same problems with the same leaf share one choice. Writes the choices to
+// `directory`/kUnheardChoices when an arm chose. False when stopped (the arms then unchanged).
+bool choose_arms_unheard(const CampaignConfig& config, std::vector<ResolvedArm>& arms,
+                         const ArmSelfPlayProblems& problems_of,
+                         const std::filesystem::path& directory, const ProgressFn& progress,
+                         const std::atomic<bool>& stop, int workers);
 
-// Before any work: an arm with `unheard: auto` can play `problem` (it has a table) and plan with
-// either estimate (its leaf follows the exact belief); InputError naming the campaign file and
-// the arm otherwise. Other arms pass.
-void check_unheard_auto(const CampaignConfig& config, const CampaignArm& arm,
-                        const pomdp::Problem& problem);
+// Puts the choices kept in a campaign folder's kUnheardChoices (read_unheard_choices) in the
+// arms' planners, as choose_arms_unheard did when the campaign was prepared.
+void apply_unheard_choices(const nlohmann::json& choices, std::vector<ResolvedArm>& arms);
 
 // `problem` with an exact belief (what the self-play tracks), the same problem when it has one.
 std::shared_ptr<const pomdp::Problem> with_exact_belief(

@@ -10,6 +10,7 @@
 #include "../common/source_dir.h"
 #include "../common/test_folder.h"
 #include "common/error.h"
+#include "experiment/campaign_arms.h"
 
 namespace echoplan::experiment {
 namespace {
@@ -27,6 +28,16 @@ planner: {episodes: 100}
 std::string error_of(const std::string& text) {
   try {
     parse_campaign_config(text, "/dir/c.yaml");
+  } catch (const InputError& e) {
+    return std::to_string(e.line()) + ": " + e.problem();
+  }
+  return "no error";
+}
+
+// The InputError of resolving the arms of `text` (campaign_arms.h), as "line: problem".
+std::string arm_error_of(const std::string& text) {
+  try {
+    resolve_arms(parse_campaign_config(text, "/dir/c.yaml"));
   } catch (const InputError& e) {
     return std::to_string(e.line()) + ": " + e.problem();
   }
@@ -115,9 +126,11 @@ TEST(CampaignConfig, APlanningArmChoosesItsLeafValue) {
   EXPECT_NE(unknown.find("policy, exact, exact-offline, lookahead, heuristic, rollout"),
             std::string::npos)
       << unknown;
+  // Read as written; refused, at the arm's line, when the arms are resolved.
   const std::string fixed =
-      error_of(with_arm("{name: a, problem: p.yaml, strategy: all_actions, leaf: exact}"));
-  EXPECT_NE(fixed.find("leaf: only an arm that plans"), std::string::npos) << fixed;
+      arm_error_of(with_arm("{name: a, problem: p.yaml, strategy: all_actions, leaf: exact}"));
+  EXPECT_EQ(fixed.substr(0, 3), "3: ") << fixed;
+  EXPECT_NE(fixed.find("arm 'a': leaf: only an arm that plans"), std::string::npos) << fixed;
 }
 
 // How the planner counts unheard outcomes, likewise; left out of the identity at its default.
@@ -136,8 +149,8 @@ TEST(CampaignConfig, APlanningArmChoosesHowUnheardOutcomesCount) {
   EXPECT_EQ(unknown.substr(0, 2), "3:") << unknown;
   EXPECT_NE(unknown.find("share, commit"), std::string::npos) << unknown;
   const std::string fixed =
-      error_of(with_arm("{name: a, problem: p.yaml, strategy: random, unheard: commit}"));
-  EXPECT_NE(fixed.find("unheard: only an arm that plans"), std::string::npos) << fixed;
+      arm_error_of(with_arm("{name: a, problem: p.yaml, strategy: random, unheard: commit}"));
+  EXPECT_NE(fixed.find("arm 'a': unheard: only an arm that plans"), std::string::npos) << fixed;
 }
 
 TEST(CampaignConfig, TrainingTableEstimate) {
@@ -334,8 +347,8 @@ TEST_F(DatasetCampaignConfig, DefaultsAreTheReportsRewardsAndSessions) {
 
 // A planner sorting novel objects plans with lookalikes and counts unheard outcomes at commit
 // unless its arm names them; the fixed strategies, a world holding out sessions and the other
-// worlds keep the plain defaults, and the resolved values are in the identity (a campaign begun
-// with the old defaults is another campaign).
+// worlds keep the plain defaults. The configuration keeps the file's words; the resolved values
+// are in the identity (a campaign begun with the old defaults is another campaign).
 TEST_F(DatasetCampaignConfig, ThePlannersDefaultsOnNovelObjectsAreLookalikesAndCommit) {
   std::string text = text_;
   text.replace(text.find("  - {name: greedy"), 0,
@@ -344,15 +357,19 @@ TEST_F(DatasetCampaignConfig, ThePlannersDefaultsOnNovelObjectsAreLookalikesAndC
                "  - {name: exact, strategy: plan, leaf: exact}\n");
   const CampaignConfig c = parse_campaign_config(text, source());
   ASSERT_EQ(c.arms.size(), 5u);
-  EXPECT_TRUE(c.arms[0].lookalike);
-  EXPECT_EQ(c.arms[0].unheard, "commit");
-  EXPECT_FALSE(c.arms[1].lookalike);  // named: kept
-  EXPECT_EQ(c.arms[1].unheard, "share");
-  EXPECT_TRUE(c.arms[2].lookalike);
-  EXPECT_EQ(c.arms[2].unheard, "");  // a rollout leaf cannot commit: the search's default
-  EXPECT_EQ(c.arms[3].unheard, "commit");
-  EXPECT_FALSE(c.arms[4].lookalike);  // the greedy rule
-  EXPECT_EQ(c.arms[4].unheard, "");
+  EXPECT_FALSE(c.arms[0].lookalike.has_value());  // as written
+  EXPECT_EQ(c.arms[0].unheard, "");
+  const std::vector<ResolvedArm> r = resolve_arms(c);
+  EXPECT_TRUE(r[0].plans_with.lookalike);
+  EXPECT_EQ(r[0].planner.unheard, "commit");
+  EXPECT_FALSE(r[1].plans_with.lookalike);  // named: kept
+  EXPECT_EQ(r[1].planner.unheard, "share");
+  EXPECT_TRUE(r[2].plans_with.lookalike);
+  EXPECT_EQ(r[2].planner.unheard, "");  // a rollout leaf cannot commit: the search's default
+  EXPECT_EQ(r[3].planner.unheard, "commit");
+  EXPECT_FALSE(r[4].plans_with.lookalike);  // the greedy rule
+  EXPECT_EQ(r[4].planner.unheard, "");
+  EXPECT_EQ(r[4].planner.solver, "information_gain");
   std::filesystem::create_directories(dir_ / "data" / "shake");  // the identity hashes the data
   std::ofstream(dir_ / "data" / "shake" / "audio.csv") << "object,session,f\nmug,1,0.5\n";
   const nlohmann::json arms = c.identity()["arms"];
@@ -360,21 +377,29 @@ TEST_F(DatasetCampaignConfig, ThePlannersDefaultsOnNovelObjectsAreLookalikesAndC
   EXPECT_EQ(arms[0]["lookalike"], true);
   EXPECT_FALSE(arms[4].contains("lookalike"));
   EXPECT_EQ(to_json(campaign_config_from_json(to_json(c), "campaign.json")), to_json(c));
+  // campaign.json keeps which keys the file gave: read back (a merge, a certificate), the arms
+  // resolve as they did, `lookalike: false` named included.
+  const std::vector<ResolvedArm> again =
+      resolve_arms(campaign_config_from_json(to_json(c), "campaign.json"));
+  for (std::size_t a = 0; a < r.size(); ++a) {
+    EXPECT_EQ(again[a].plans_with, r[a].plans_with) << r[a].name;
+    EXPECT_EQ(again[a].planner.unheard, r[a].planner.unheard) << r[a].name;
+  }
   // Known objects' new sessions: the plain planner.
   std::string sessions = text;
   sessions.replace(sessions.find("hold_out: object"), 16, "hold_out: session");
-  const CampaignConfig known = parse_campaign_config(sessions, source());
-  EXPECT_FALSE(known.arms[0].lookalike);
-  EXPECT_EQ(known.arms[0].unheard, "");
+  const ResolvedArm known = resolve_arms(parse_campaign_config(sessions, source()))[0];
+  EXPECT_FALSE(known.plans_with.lookalike);
+  EXPECT_EQ(known.planner.unheard, "");
   // POMCP has no unheard estimate to choose.
   text.replace(text.find("planner: {episodes: 100}"), 24,
                "planner: {episodes: 100, solver: pomcp}");
-  EXPECT_EQ(parse_campaign_config(text, source()).arms[0].unheard, "");
+  EXPECT_EQ(resolve_arms(parse_campaign_config(text, source()))[0].planner.unheard, "");
   // A problem file's planner keeps the search's defaults.
-  const CampaignConfig model =
-      parse_campaign_config(with_arm("{name: a, problem: p.yaml}"), "/dir/c.yaml");
-  EXPECT_FALSE(model.arms[0].lookalike);
-  EXPECT_EQ(model.arms[0].unheard, "");
+  const ResolvedArm model =
+      resolve_arms(parse_campaign_config(with_arm("{name: a, problem: p.yaml}"), "/dir/c.yaml"))[0];
+  EXPECT_FALSE(model.plans_with.lookalike);
+  EXPECT_EQ(model.planner.unheard, "");
 }
 
 TEST_F(DatasetCampaignConfig, MistakesNameTheLineAndTheProblem) {

@@ -66,6 +66,7 @@ inline CampaignResults small_campaign() {
   c.world.problem = problem;
   c.groups = {{"a", "a", 2}, {"b_heavy", "b", 1}};
   c.planner.episodes = 100;
+  results.arms = resolve_arms(c);
   pomdp::ModelSpec& spec = results.spec;
   spec.action_names = {"listen", "pick_a", "pick_b"};
   spec.state.discrete_names = {"object"};

@@ -7,6 +7,7 @@
 #include <array>
 
 #include "../common/source_dir.h"
+#include "experiment/campaign_arms.h"
 
 namespace echoplan::experiment {
 namespace {
@@ -19,7 +20,8 @@ TEST(CampaignRunner, AnArmPlansWithTheCampaignsSolverAndBudgetAndTheProblemsSear
   config.planner.solver = "pomcp";
   config.planner.episodes = 120;
   const pomdp::Problem problem = pomdp::load_problem(kProblem);
-  const loop::Planner p = loop::make_planner(arm_planner(config, CampaignArm{}), problem, kProblem);
+  config.arms = {CampaignArm{}};
+  const loop::Planner p = loop::make_planner(resolve_arms(config)[0].planner, problem, kProblem);
   EXPECT_EQ(p.name, "pomcp");
   EXPECT_EQ(p.budget.kind, solvers::Budget::Kind::episodes);
   EXPECT_EQ(p.budget.amount, 120);
@@ -30,7 +32,7 @@ TEST(CampaignRunner, AnArmPlansWithTheCampaignsSolverAndBudgetAndTheProblemsSear
   config.planner.episodes = 0;
   config.planner.step_ms = 40;
   const loop::Planner timed =
-      loop::make_planner(arm_planner(config, CampaignArm{}), problem, kProblem);
+      loop::make_planner(resolve_arms(config)[0].planner, problem, kProblem);
   EXPECT_EQ(timed.budget.kind, solvers::Budget::Kind::milliseconds);
   EXPECT_EQ(timed.budget.amount, 40);
 }
@@ -39,11 +41,12 @@ TEST(CampaignRunner, AStrategyArmDecidesByItsStrategyNotTheCampaignsSolver) {
   CampaignConfig config;
   config.planner.solver = "abt";
   config.planner.episodes = 120;
-  CampaignArm arm;
-  arm.strategy = "best_single";
-  EXPECT_EQ(arm_planner(config, arm).solver, "best_single");
-  arm.strategy = kPlanStrategy;
-  EXPECT_EQ(arm_planner(config, arm).solver, "abt");
+  config.arms.resize(2);
+  config.arms[0].strategy = "best_single";
+  config.arms[1].strategy = kPlanStrategy;
+  const std::vector<ResolvedArm> arms = resolve_arms(config);
+  EXPECT_EQ(arms[0].planner.solver, "best_single");
+  EXPECT_EQ(arms[1].planner.solver, "abt");
 }
 
 TEST(CampaignRunner, JobsNumberArmsThenGroupsThenTrials) {

@@ -79,14 +79,18 @@ std::map<std::string, std::string> files_of(const fs::path& dir) {
   return files;
 }
 
-void expect_same_files(const fs::path& a, const fs::path& b) {
-  const auto fa = files_of(a);
-  const auto fb = files_of(b);
+// The same file names with the same bytes.
+void expect_same(const std::map<std::string, std::string>& fa,
+                 const std::map<std::string, std::string>& fb) {
   std::vector<std::string> names_a, names_b;
   for (const auto& [name, bytes] : fa) names_a.push_back(name);
   for (const auto& [name, bytes] : fb) names_b.push_back(name);
   ASSERT_EQ(names_a, names_b);
   for (const auto& [name, bytes] : fa) EXPECT_TRUE(bytes == fb.at(name)) << name << " differs";
+}
+
+void expect_same_files(const fs::path& a, const fs::path& b) {
+  expect_same(files_of(a), files_of(b));
 }
 
 int lines_of(const fs::path& file) {
@@ -221,7 +225,9 @@ TEST(Campaign, TrialsOfAGroupHaveItsObjectAsTruth) {
   }
 }
 
-TEST(Campaign, ClosedLoopRunsWithACalibratedArmAndGivesTheSameFilesOnAnyNumberOfWorkers) {
+// The simulated world with a calibrated arm beside the hand-tuned one, heard against the report's
+// reference: a training set of 2 recordings per pair, one trial of an object and of a variant.
+CampaignConfig closed_loop_config() {
   const std::string text =
       "seed: 5\narms:\n  - {name: calibrated, problem: " + kProblem +
       ", calibrate: true}\n  - {name: hand_tuned, problem: " + kProblem +
@@ -232,7 +238,11 @@ TEST(Campaign, ClosedLoopRunsWithACalibratedArmAndGivesTheSameFilesOnAnyNumberOf
       "  - {object: coffee_mug_weighted, plays: coffee_mug, trials: 1}\n"
       "planner: {solver: abt, episodes: 200, max_steps: 12}\nreference: " +
       echoplan::testing::source_dir() + "/experiments/chapter5_reference.yaml\n";
-  const CampaignConfig config = parse_campaign_config(text, "closed_loop.yaml");
+  return parse_campaign_config(text, "closed_loop.yaml");
+}
+
+TEST(Campaign, ClosedLoopRunsWithACalibratedArmAndGivesTheSameFilesOnAnyNumberOfWorkers) {
+  const CampaignConfig config = closed_loop_config();
   const fs::path one = fresh_dir("loop_one"), two = fresh_dir("loop_two");
   EXPECT_EQ(run(config, one, 1), 4);
   EXPECT_EQ(run(config, two, 2), 4);
@@ -269,6 +279,27 @@ TEST(Campaign, ClosedLoopRunsWithACalibratedArmAndGivesTheSameFilesOnAnyNumberOf
   EXPECT_EQ(summary["heard"]["lab"].size(), 2u);
   EXPECT_EQ(perception::load_recording_set((one / "training" / "variants").string()).objects,
             (std::vector<std::string>{"coffee_mug_weighted"}));
+}
+
+// Rebuilding a finished campaign's report (as `echoplan merge` or a rerun does) reads the journal
+// and what the preparation wrote: with the training recordings, the variants' recordings and the
+// trained model moved out of the folder, the report's files come out byte for byte the same, the
+// heard counts and the templates figure included, and nothing is synthesised again.
+TEST(Campaign, RebuildingTheReportOpensNoRecordingAndFitsNoModel) {
+  const CampaignConfig config = closed_loop_config();
+  const fs::path dir = fresh_dir("rebuild_reads_files"), away = fresh_dir("rebuild_moved_away");
+  run(config, dir, 1);
+  rebuild_report(open_campaign(config, dir), true);
+  ASSERT_TRUE(fs::exists(dir / "figures" / "templates.svg"));
+  fs::create_directories(away);
+  for (const char* moved : {"recordings", "variants", "model.json"})
+    fs::rename(dir / "training" / moved, away / moved);
+  const auto before = files_of(dir);
+  rebuild_report(open_campaign(config, dir), true);
+  expect_same(before, files_of(dir));
+  const nlohmann::json summary =
+      nlohmann::json::parse(read_text_file((dir / "summary.json").string(), "summary"));
+  EXPECT_EQ(summary["heard"]["simulated"].size(), 2u);
 }
 
 // The InputError message of opening `config` in `dir`.

@@ -1,0 +1,170 @@
+#include "experiment/campaign_arms.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "common/error.h"
+#include "loop/object_problem.h"
+#include "loop/planner.h"
+#include "solvers/leaf_value.h"
+#include "solvers/search_tree.h"
+
+namespace echoplan::experiment {
+
+namespace {
+
+[[noreturn]] void refuse(const CampaignConfig& config, const CampaignArm& arm,
+                         const std::string& rule) {
+  throw InputError(config.source, arm.line, fmt::format("arm '{}': {}", arm.name, rule));
+}
+
+// What the file's words allow: a fixed strategy does not search, and grades need a classifier.
+void check_words(const CampaignConfig& config, const CampaignArm& arm) {
+  if (arm.strategy != kPlanStrategy) {
+    if (!arm.leaf.empty())
+      refuse(config, arm,
+             "leaf: only an arm that plans (strategy: plan) has a leaf value; '" + arm.strategy +
+                 "' is a fixed strategy");
+    if (!arm.unheard.empty())
+      refuse(config, arm,
+             "unheard: only an arm that plans (strategy: plan) searches; '" + arm.strategy +
+                 "' is a fixed strategy");
+  }
+  if (arm.observation_kind() != perception::ObservationKind::graded) return;
+  if (!config.world.recorded_data() && !arm.calibrate)
+    refuse(config, arm,
+           "observations: graded needs calibrate: true (grades come from the trained classifier; "
+           "a problem file's own table has none)");
+  if (config.world.type == WorldType::model)
+    refuse(config, arm,
+           "observations: graded needs a world that hears (a simulated or dataset world); a "
+           "model world draws labels from its problem's table");
+}
+
+// A planner sorting novel objects (a dataset world holding out objects) plans with lookalikes and
+// counts the outcomes no episode has heard at their commit value (ABT with a leaf that follows the
+// exact belief), unless its arm names them. Holding out sessions, the folds fit no lookalikes and
+// commit ties share for more planning time: there the plain planner stays.
+void apply_novel_object_defaults(const CampaignConfig& config, const CampaignArm& arm,
+                                 ResolvedArm& resolved) {
+  if (!resolved.plans() || !config.world.recorded_data() ||
+      config.world.hold_out != perception::HoldOut::object)
+    return;
+  if (!arm.lookalike) resolved.plans_with.lookalike = true;
+  const bool can_commit =
+      config.planner.solver == "abt" &&
+      (arm.leaf.empty() || solvers::follows_exact_belief(solvers::parse_leaf_mode(arm.leaf)));
+  if (arm.unheard.empty() && can_commit)
+    resolved.planner.unheard = solvers::unheard_outcomes_name(solvers::UnheardOutcomes::commit);
+}
+
+ResolvedArm resolve_arm(const CampaignConfig& config, const CampaignArm& arm) {
+  check_words(config, arm);
+  ResolvedArm r;
+  r.name = arm.name;
+  r.strategy = arm.strategy;
+  r.problem = arm.problem;
+  r.calibrate = arm.calibrate;
+  r.line = arm.line;
+  r.plans_with = {arm.observation_kind(), arm.atypical, arm.lookalike.value_or(false)};
+  r.planner.solver = r.plans() ? config.planner.solver : arm.strategy;
+  r.planner.episodes = config.planner.episodes;
+  r.planner.step_ms = config.planner.step_ms;
+  if (r.plans()) {
+    r.planner.leaf = arm.leaf;
+    r.unheard_by_play = arm.unheard == kUnheardByPlay;
+    // auto is chosen by self-play when the campaign is prepared (experiment/unheard_choice.h);
+    // until then the arm checks as the search's default.
+    if (!r.unheard_by_play) r.planner.unheard = arm.unheard;
+  }
+  apply_novel_object_defaults(config, arm, r);
+  return r;
+}
+
+}  // namespace
+
+std::vector<ResolvedArm> resolve_arms(const CampaignConfig& config) {
+  std::vector<ResolvedArm> arms;
+  for (const CampaignArm& arm : config.arms) arms.push_back(resolve_arm(config, arm));
+  return arms;
+}
+
+void check_arm_problem(const CampaignConfig& config, const ResolvedArm& arm,
+                       const pomdp::Problem& problem) {
+  const auto fail = [&](const std::string& rule) {
+    throw InputError(config.source, arm.line, fmt::format("arm '{}': {}", arm.name, rule));
+  };
+  // Every solver can be built (unknown names and bad settings fail now, not in a worker).
+  loop::check_planner(arm.planner, problem);
+  if (arm.calibrate) loop::object_problem(*problem.model);
+  if (!arm.unheard_by_play) return;
+  if (!problem.model->tabular())
+    fail(
+        fmt::format("unheard: auto plays the arm's problem as the world, and {} has no table "
+                    "(name share or commit)",
+                    problem.source_path));
+  solvers::PlannerOverrides commit = arm.planner;
+  commit.unheard = solvers::unheard_outcomes_name(solvers::UnheardOutcomes::commit);
+  try {
+    loop::check_planner(commit, problem);
+  } catch (const InputError& e) {
+    fail("unheard: auto may choose commit, and " + e.problem());
+  }
+}
+
+CampaignArm as_written(const ResolvedArm& arm) {
+  CampaignArm a;
+  a.name = arm.name;
+  a.problem = arm.problem;
+  a.calibrate = arm.calibrate;
+  a.strategy = arm.strategy;
+  a.observations = perception::observation_kind_name(arm.plans_with.kind);
+  a.atypical = arm.plans_with.atypical;
+  // Written only when it plans with them (a `lookalike: false` reads as the file not naming it).
+  if (arm.plans_with.lookalike) a.lookalike = true;
+  a.leaf = arm.planner.leaf;
+  a.unheard = arm.unheard_by_play ? kUnheardByPlay : arm.planner.unheard;
+  a.line = arm.line;
+  return a;
+}
+
+bool any_atypical(const std::vector<ResolvedArm>& arms) {
+  return std::any_of(arms.begin(), arms.end(),
+                     [](const ResolvedArm& arm) { return arm.plans_with.atypical; });
+}
+
+bool any_lookalike(const std::vector<ResolvedArm>& arms) {
+  return std::any_of(arms.begin(), arms.end(),
+                     [](const ResolvedArm& arm) { return arm.plans_with.lookalike; });
+}
+
+nlohmann::json to_json(const ResolvedArm& arm, bool recorded_data) {
+  nlohmann::json j = {{"name", arm.name}, {"strategy", arm.strategy}};
+  if (!arm.problem.empty()) j["problem"] = arm.problem;
+  if (arm.calibrate) j["calibrate"] = true;
+  j["solver"] = arm.planner.solver;
+  if (arm.planner.episodes > 0) j["episodes"] = arm.planner.episodes;
+  if (arm.planner.step_ms > 0) j["step_ms"] = arm.planner.step_ms;
+  if (arm.plans()) {
+    j["leaf"] = arm.planner.leaf.empty() ? "default" : arm.planner.leaf;
+    j["unheard"] = arm.planner.unheard.empty() ? (arm.unheard_by_play ? kUnheardByPlay : "share")
+                                               : arm.planner.unheard;
+    if (arm.unheard_by_play) j["unheard_chosen_by"] = "self-play";
+  }
+  j["observations"] = perception::observation_kind_name(arm.hearing());
+  if (recorded_data) {
+    j["atypical"] = arm.plans_with.atypical;
+    j["lookalike"] = arm.plans_with.lookalike;
+    j["fold_problem"] = fold_problem_name(arm.plans_with);
+  }
+  return j;
+}
+
+std::string fold_problem_name(const ArmProblemKind& kind) {
+  return fmt::format("problem{}{}{}.yaml",
+                     kind.kind == perception::ObservationKind::graded ? "-graded" : "",
+                     kind.atypical ? "-atypical" : "", kind.lookalike ? "-lookalike" : "");
+}
+
+}  // namespace echoplan::experiment
