@@ -444,9 +444,9 @@ PlannerConfig read_planner(const YamlReader& f, const YAML::Node& root,
 // (ABT with a leaf that follows the exact belief): on the recorded-data stand-ins' novel objects
 // together they took the planner from below the greedy rule to above it and made its belief at the
 // sort honest (docs/BENCHMARKS.md, "How the planner counts outcomes it has not heard"). Holding out
-// sessions, the folds fit no lookalikes and commit ties share, for 1.6 to 2.6 times the planning
-// time: there the plain planner stays. Resolved here, so the campaign's identity and its written
-// config name what the arm does.
+// sessions, the folds fit no lookalikes and commit ties share, for more planning time
+// (docs/BENCHMARKS.md, "The planner's defaults on novel objects"): there the plain planner stays.
+// Resolved here, so the campaign's identity and its written config name what the arm does.
 void apply_novel_object_plan_defaults(const YAML::Node& arms, CampaignConfig& c) {
   if (!c.world.recorded_data() || c.world.hold_out != perception::HoldOut::object) return;
   const bool can_commit = c.planner.solver == "abt";
