@@ -27,7 +27,8 @@
 //   ~cached_param  false (default): each read asks the master (one XML-RPC call on loopback,
 //                  about 1 ms), so capture starts within a poll period of the flip; true: read
 //                  roscpp's cache, which the master updates by pushing - no load on the master,
-//                  but the push took tens of milliseconds here (docs/BENCHMARKS.md)
+//                  but the push was measured much slower here (docs/BENCHMARKS.md, "The loop
+//                  over ROS")
 //   ~sim_clip_wait_s  simulation source: how long to wait at the end of a recording for a clip
 //                  still on its way (5.0)
 //

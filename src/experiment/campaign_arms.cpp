@@ -44,8 +44,10 @@ void check_words(const CampaignConfig& config, const CampaignArm& arm) {
 
 // A planner sorting novel objects (a dataset world holding out objects) plans with lookalikes and
 // counts the outcomes no episode has heard at their commit value (ABT with a leaf that follows the
-// exact belief), unless its arm names them. Holding out sessions, the folds fit no lookalikes and
-// commit ties share for more planning time: there the plain planner stays.
+// exact belief), unless its arm names them (measured: docs/BENCHMARKS.md, "How the planner counts
+// outcomes it has not heard"). Holding out sessions, the folds fit no lookalikes and commit ties
+// share for more planning time (docs/BENCHMARKS.md, "The planner's defaults on novel objects"):
+// there the plain planner stays.
 void apply_novel_object_defaults(const CampaignConfig& config, const CampaignArm& arm,
                                  ResolvedArm& resolved) {
   if (!resolved.plans() || !config.world.recorded_data() ||

@@ -9,9 +9,9 @@
 // removes the noise of the draw of the state: a sort at belief 0.9 counts 0.9 · right + 0.1 · wrong
 // instead of right or wrong. On an identification problem whose sorts earn +10 or -100 this is most
 // of a trial's variance (measured on a 40-state problem: the paired CI of two solvers' difference
-// 2.5 times narrower at the same trials; docs/planning.md). It says nothing about a world other
-// than the model: in a campaign's dataset or simulated world the belief is the planner's opinion,
-// not the truth's distribution.
+// much narrower at the same trials; docs/BENCHMARKS.md, "Under its own model"). It says nothing
+// about a world other than the model: in a campaign's dataset or simulated world the belief is the
+// planner's opinion, not the truth's distribution.
 #pragma once
 
 #include <optional>

@@ -4,7 +4,7 @@
 //
 // Why a choice: neither estimate wins on every problem. On a problem whose behaviours have few
 // outcomes (the report's: four symbols) share is nearly exact and commit's lower bound costs
-// (certified regret 0.343 against 0.116); where they have many (a recorded-data fold with
+// (in certified regret); where they have many (a recorded-data fold with
 // lookalikes) most outcomes stay unheard at the search's budget, share lets the heard ones speak
 // for them, the planner keeps sensing, and commit earns more (docs/BENCHMARKS.md, "How the planner
 // counts outcomes it has not heard"). Why this measure: the arm's problem is the planner's model of

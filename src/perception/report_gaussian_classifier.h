@@ -1,7 +1,7 @@
 // "gaussian" (the row classifier of the `report-gaussian` preset): the report's first attempt, kept
 // for the record: each class is a Gaussian over two whole-clip features, the spectral centroid (Hz)
 // and the RMS level, with independent dimensions. The report discarded it; the benchmark shows why
-// (docs/BENCHMARKS.md).
+// (docs/BENCHMARKS.md, "Perception").
 //
 // With 3-10 recordings a class's own variance is a poor estimate, so each class variance is floored
 // at 5% of the variance pooled over all classes (never zero: identical recordings stay

@@ -1,7 +1,7 @@
 // Objects unlike their class. Different behaviours on one object do not err independently given
 // its class: an object unlike its class (a weighted can, a foam-filled bottle) fools several
 // behaviours at once, and the product of their tables, each calibrated on its own, is then surer
-// than the object's sorts are right (bench/honest_confidence.sh measured 8 points).
+// than the object's sorts are right (measured: docs/BENCHMARKS.md, "Honest confidence").
 //
 // The model: a share rho of the objects are atypical, and an atypical object's performances say
 // nothing about its class: each is heard with the action's class-blind marginal
@@ -20,10 +20,10 @@
 // is scored with its action's table of the other inner folds, as tempered for repeats. Repeats
 // belong in the sequences: an object unlike its class repeats its error when a behaviour is
 // performed again, and a planner repeats behaviours exactly when readings disagree. On the
-// recorded-data stand-in with novel objects (docs/BENCHMARKS.md), where the planner's belief was 8
-// points above its share right, the shares fitted on first performances alone were 0.00 to 0.03;
-// with repeats, 0.08 to 0.15. (The lookalikes' share below is fitted on each session's whole
-// sequence alone.)
+// recorded-data stand-in with novel objects (docs/BENCHMARKS.md, "Novel objects on the
+// recorded-data stand-in"), where the planner's belief was above its share right, the shares fitted
+// on first performances alone were far smaller than with repeats. (The lookalikes' share below is
+// fitted on each session's whole sequence alone.)
 #pragma once
 
 #include <span>
@@ -82,8 +82,9 @@ double lookalike_nll(std::span<const Table> tables, double rho,
 // is strongest, which is where a planner that keeps sensing sorts the objects it finds hard; a
 // session's short prefixes, where rho changes little, outnumber its whole sequence and pulled the
 // fit towards the typical objects (on the recorded-data stand-in with novel objects the prefixes
-// fitted 0.01 to 0.06 per fold and left the planner up to 4.7 points surer than right; the whole
-// sequences fit 0.03 to 0.09, and it is within 0.2 points pooled; docs/BENCHMARKS.md).
+// fitted smaller shares and left the planner surer than right, the whole sequences leave it honest;
+// measured: docs/BENCHMARKS.md, "Against the greedy rule on independent stand-ins" and "Tried, not
+// kept").
 double fit_lookalike_share(std::span<const HeldOutPerformances> actions);
 
 // Each session's last sequence of cross_behaviour_sequences: all its performances.

@@ -32,8 +32,8 @@
 // consulted when a node is about to be expanded, which they may spare. The alternative,
 // HSVI-style trials (Smith & Simmons 2005: descend the action with the highest upper bound and the
 // observation with the largest P(o) · (gap − ε γ^-t), back up along the path) measured worse here
-// (docs/BENCHMARKS.md) and is kept as an option for that comparison. Every call is anytime: the
-// bounds are valid whenever it stops.
+// (docs/BENCHMARKS.md, "Exact identification solver") and is kept as an option for that
+// comparison. Every call is anytime: the bounds are valid whenever it stops.
 //
 // Shape accepted (identification_shape() explains a refusal in words):
 //   - absorbing states: every action keeps them with reward 0 (Cassandra's goal-state rule);
@@ -59,8 +59,9 @@
 // dominated plan that needs fewer uses may be the one that fits). A sawtooth point's upper bound
 // holds only for nodes with at least its uses spent, so with limits no points are stored (the
 // corners stay). Falling back to commit-now vectors alone was measured far weaker: on a 20-class,
-// 9-action problem with one use per action the lower bound at b0 stayed at -6.4 while ABT earned
-// +6.1 (docs/BENCHMARKS.md, "Use limits").
+// 9-action problem with one use per action its lower bound at b0 stayed far below what ABT earned
+// (the bounds with limits: docs/BENCHMARKS.md, "ABT, the exact solver and certify at 20 and 100
+// classes with 9 behaviours").
 //
 // Nodes are found by a 128-bit key, the sum of two independent random 64-bit codes per (a, o) pair
 // times its count (order-free, so every path to the same counts meets the same node); two count
@@ -91,7 +92,8 @@ struct RefineLimits {
 };
 
 // How the solver bounds new beliefs and where it spends its expansions. The defaults are the
-// fastest measured (docs/BENCHMARKS.md); the others are there to measure what each part buys.
+// fastest measured (docs/BENCHMARKS.md, "Exact identification solver"); the others are there to
+// measure what each part buys.
 struct IdentificationOptions {
   enum class Search { trials, passes };
   Search search = Search::passes;
@@ -112,7 +114,8 @@ struct IdentificationOptions {
   // The plans' own cap when > 0 (else max_frontier_entries): a plan costs a dot product over
   // the states per evaluation (kept contiguous), a sawtooth point a scan over its support, and
   // the frontier's lower bound is the side that gains more from more entries (measured: 1024
-  // plans halved the gap in equal time on the report's and 8-object problems; docs/BENCHMARKS.md).
+  // plans narrow the gap in equal time against 256 on the report's and 8-object problems;
+  // docs/BENCHMARKS.md, "Exact identification solver").
   std::size_t max_frontier_plans = 1024;
   // Memory cap: refinement stops (bounds stay valid) when this many nodes exist; 0: about 2 GB.
   std::size_t max_nodes = 0;
@@ -183,7 +186,7 @@ class IdentificationSolver {
   };
   // Node ids by key: open addressing with linear probing (the keys are random codes, so their
   // low bits are a good hash). A node-based hash map cost a cache miss or two per lookup and
-  // was the largest single cost of a search (perf, docs/BENCHMARKS.md).
+  // was the largest single cost of a search (perf; docs/BENCHMARKS.md, "Tried, not kept").
   class NodeIndex {
    public:
     // The node with `key`, or kEnded when there is none.

@@ -57,8 +57,8 @@ struct SearchOptions {
   ObservationBranching branching;
   // ABT only: keep every episode's (state, action, observation, reward) steps so that
   // AbtSolver::revise() can revise the tree after a model change. Off by default: nothing in
-  // echoplan's commands changes the model mid-run, and keeping them costs 1.3x (1,000 episodes)
-  // to 2.4x (10,000) the CPU time per episode on the report's problem (docs/BENCHMARKS.md).
+  // echoplan's commands changes the model mid-run, and keeping them adds CPU time per episode that
+  // grows with the tree (measured: docs/BENCHMARKS.md, "Planning").
   bool keep_episodes = false;
 
   // Throws InputError naming the offending option.

@@ -97,6 +97,30 @@ TEST_F(HtmlReport, ReferenceColumnsOnlyWithAReference) {
   EXPECT_TRUE(has(page, "<p>Numbers from the lab's notebook &lt;p. 3&gt; &amp; friends.</p>"));
 }
 
+// With more actions than fit as columns (recorded data with many behaviours), the results table
+// leaves them out and a table of their own gives each a row and each arm a column, so the page
+// keeps a laptop screen's width.
+TEST_F(HtmlReport, ManyBehavioursGetARowEachInsteadOfAColumn) {
+  CampaignResults results = small_campaign();
+  EXPECT_TRUE(has(html_report(dir_, results, {}), "<th>mean listen</th>"));
+  EXPECT_FALSE(has(html_report(dir_, results, {}), "Behaviours performed per trial"));
+  // As a dataset world presents itself: the sensing actions are the first five.
+  results.world.per_object = false;
+  results.sensing_actions = 5;
+  results.spec.action_names = {"b1", "b2", "b3", "b4", "b5", "pick_a", "pick_b"};
+  for (JournalEntry& e : results.entries) e.result.record.action_counts.resize(7, 0);
+  const std::string page = html_report(dir_, results, {});
+  EXPECT_FALSE(has(page, "<th>mean b1</th>"));
+  EXPECT_TRUE(has(page, "<h2>Behaviours performed per trial</h2>"));
+  EXPECT_TRUE(has(page, "<tr><th class=\"l\">behaviour</th><th>one</th><th>two</th></tr>"));
+  // The fixture's first action is its listens (one: 1 + 1 + 0 in 3 trials; two: 2 + 1 + 1), its
+  // second counts the trials that believed a (one: 1 of 3; two: 3 of 3).
+  EXPECT_TRUE(has(page, "<tr><td class=\"l\">b1</td><td>0.67</td><td>1.33</td></tr>")) << page;
+  EXPECT_TRUE(has(page, "<tr><td class=\"l\">b2</td><td>0.33</td><td>1.00</td></tr>"));
+  EXPECT_TRUE(has(page, "<tr><td class=\"l\">b5</td><td>0.00</td><td>0.00</td></tr>"));
+  EXPECT_FALSE(has(page, "<td class=\"l\">pick_a</td><td>"));
+}
+
 TEST_F(HtmlReport, HeardConfusionBesideTheReferencesOnlyWhenBothAreThere) {
   CampaignResults results = small_campaign();
   results.config.reference = small_reference("lab");

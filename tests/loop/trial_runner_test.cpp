@@ -297,9 +297,9 @@ TEST(Trials, AbtIsCertifiedToKeepFourFifthsOfTheOptimalValueOnTheReportsProblem)
   // fallback where the exact solver has no node) and 1000 episodes per step must keep a certified
   // 80% of V*(b0) = 2.9534: mean regret plus its 95% CI half-width <= 0.2 V* (measured: 0.076 +-
   // 0.069; lower end 0.035).
-  // That rejects the lookahead leaf ABT had before (true regret ~0.5, 81% of V*: BENCHMARKS.md) and
-  // the fixed rule "strike until 98% sure" (2.452, regret 0.50), as well as every planner that
-  // sorts on thin evidence (value below 0).
+  // That rejects the lookahead leaf ABT had before (its certificate: docs/BENCHMARKS.md, "Certified
+  // share of V*") and the fixed rule "strike until 98% sure" (2.452, regret 0.50), as well as every
+  // planner that sorts on thin evidence (value below 0).
   const Certificate c = certified_abt_trials("policy", "ABT, policy leaf");
   ASSERT_EQ(c.trials.size(), 12u);
   // The bounds on V*(b0) contain the value DESIGN.md gives (exact search to 1e-4).

@@ -37,7 +37,7 @@ class RosRecorder final : public Recorder {
   CaptureReport capture_report() const override { return capture_; }
 
   // Seconds from setting the parameter to true until the listener reported capture started, for the
-  // last start() (the capture start latency of docs/BENCHMARKS.md).
+  // last start() (the capture start latency of docs/BENCHMARKS.md, "The loop over ROS").
   double last_start_latency_s() const { return last_start_latency_s_; }
 
  private:
