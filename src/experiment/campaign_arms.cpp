@@ -14,8 +14,9 @@ namespace echoplan::experiment {
 
 namespace {
 
-[[noreturn]] void refuse(const CampaignConfig& config, const CampaignArm& arm,
-                         const std::string& rule) {
+// The error of an arm that breaks `rule`: the campaign file, the arm's line and its name.
+template <class Arm>
+[[noreturn]] void refuse(const CampaignConfig& config, const Arm& arm, const std::string& rule) {
   throw InputError(config.source, arm.line, fmt::format("arm '{}': {}", arm.name, rule));
 }
 
@@ -94,24 +95,21 @@ std::vector<ResolvedArm> resolve_arms(const CampaignConfig& config) {
 
 void check_arm_problem(const CampaignConfig& config, const ResolvedArm& arm,
                        const pomdp::Problem& problem) {
-  const auto fail = [&](const std::string& rule) {
-    throw InputError(config.source, arm.line, fmt::format("arm '{}': {}", arm.name, rule));
-  };
   // Every solver can be built (unknown names and bad settings fail now, not in a worker).
   loop::check_planner(arm.planner, problem);
   if (arm.calibrate) loop::object_problem(*problem.model);
   if (!arm.unheard_by_play) return;
   if (!problem.model->tabular())
-    fail(
-        fmt::format("unheard: auto plays the arm's problem as the world, and {} has no table "
-                    "(name share or commit)",
-                    problem.source_path));
+    refuse(config, arm,
+           fmt::format("unheard: auto plays the arm's problem as the world, and {} has no table "
+                       "(name share or commit)",
+                       problem.source_path));
   solvers::PlannerOverrides commit = arm.planner;
   commit.unheard = solvers::unheard_outcomes_name(solvers::UnheardOutcomes::commit);
   try {
     loop::check_planner(commit, problem);
   } catch (const InputError& e) {
-    fail("unheard: auto may choose commit, and " + e.problem());
+    refuse(config, arm, "unheard: auto may choose commit, and " + e.problem());
   }
 }
 
