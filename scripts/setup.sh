@@ -172,6 +172,8 @@ case "$mode" in
     stage "installing dependencies"
     install_deps
     use_compiler_cache
+    # The cache's hit count at the end is this run's.
+    if [ "${CMAKE_CXX_COMPILER_LAUNCHER:-}" = ccache ]; then ccache --zero-stats >/dev/null; fi
     if [ "${ECHOPLAN_CHECK_FORMAT:-1}" = 1 ]; then stage "format check"; scripts/check-format.sh; fi
     stage "normal build"
     build "$build_dir"
@@ -204,8 +206,8 @@ case "$mode" in
     stage "fuzz targets (clang, libFuzzer), ${FUZZ_SECONDS:-5} s each"
     JOBS=$jobs scripts/fuzz.sh --all --seconds "${FUZZ_SECONDS:-5}"
     stage ""
-    if command -v ccache >/dev/null && [ "${ECHOPLAN_CCACHE:-1}" = 1 ]; then
-      echo "setup: compiler cache: $(ccache --print-stats | awk -F'\t' '$1 == "direct_cache_hit" || $1 == "preprocessed_cache_hit" { hits += $2 } $1 == "cache_miss" { miss = $2 } END { printf "%d hits, %d misses since its statistics were last zeroed", hits, miss }')"
+    if [ "${CMAKE_CXX_COMPILER_LAUNCHER:-}" = ccache ]; then
+      echo "setup: compiler cache: $(ccache --print-stats | awk -F'\t' '$1 == "direct_cache_hit" || $1 == "preprocessed_cache_hit" { hits += $2 } $1 == "cache_miss" { miss = $2 } END { printf "%d of %d compiles from the cache", hits, hits + miss }')"
     fi
     ;;
   -h|--help|help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//' ;;
