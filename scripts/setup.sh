@@ -44,6 +44,7 @@ tsan_tests='^common_tests\.ParallelJobs\.|^campaign_tests\.Campaign\.|^sim_tests
 packages=(
   build-essential cmake pkg-config git
   ccache                     # the compiler cache above
+  lld                        # LLVM's linker: links the test binaries about 4x faster than ld.bfd
   libgtest-dev libgmock-dev libbenchmark-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev
   libsndfile1-dev libsamplerate0-dev libkissfft-dev
@@ -70,6 +71,14 @@ use_compiler_cache() {
   [ "${ECHOPLAN_CCACHE:-1}" = 1 ] && command -v ccache >/dev/null || return 0
   export CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache
   export CCACHE_BASEDIR=$here CCACHE_NOHASHDIR=1 CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-20G}
+}
+
+# Links with lld when it is installed (CMake takes LDFLAGS when a build folder is configured the
+# first time): a campaign test binary links in 0.15 s instead of ld.bfd's 0.72, and every build
+# of `test` links some fifty.
+use_fast_linker() {
+  command -v ld.lld >/dev/null || return 0
+  export LDFLAGS="${LDFLAGS:+$LDFLAGS }-fuse-ld=lld"
 }
 
 # stage NAME: prints how long the previous stage of `test` took and starts timing NAME.
@@ -154,10 +163,10 @@ install_python() {  # install_python DIR
 
 case "$mode" in
   deps) install_deps ;;
-  build) install_deps; use_compiler_cache; build "$build_dir"; install_python "$build_dir" ;;
+  build) install_deps; use_compiler_cache; use_fast_linker; build "$build_dir"; install_python "$build_dir" ;;
   run)
     # Only the command: the tests and benchmarks the main job never runs wait for `test`.
-    install_deps; use_compiler_cache; build_command "$build_dir"
+    install_deps; use_compiler_cache; use_fast_linker; build_command "$build_dir"
     # The main job: the report's chapter 5 (experiments/chapter5.yaml) on all cores. Running it again
     # continues an interrupted campaign; a finished one is only re-reported.
     "$build_dir/echoplan" experiment --out results/chapter5
@@ -172,6 +181,7 @@ case "$mode" in
     stage "installing dependencies"
     install_deps
     use_compiler_cache
+    use_fast_linker
     # The cache's hit count at the end is this run's.
     if [ "${CMAKE_CXX_COMPILER_LAUNCHER:-}" = ccache ]; then ccache --zero-stats >/dev/null; fi
     if [ "${ECHOPLAN_CHECK_FORMAT:-1}" = 1 ]; then stage "format check"; scripts/check-format.sh; fi
