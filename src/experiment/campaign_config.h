@@ -58,7 +58,7 @@ struct CampaignArm {
   // (perception/typicality.h, lookalikes): each class has a lookalike copy with the share its
   // fold's model fitted; every arm's problem then has the copies, as with `atypical`. Absent: the
   // default (campaign_arms.h: with them for a planner sorting novel objects).
-  std::optional<bool> lookalike;
+  std::optional<bool> lookalike{};
   // An arm of strategy `plan`: the planner's leaf value (solvers/leaf_value.h: policy, exact, ...);
   // empty: the solver's default for the problem.
   std::string leaf{};

@@ -180,12 +180,14 @@ Drawing tradeoff_drawing(const CampaignResults& results, const TradeoffAxis& axi
   std::string data;
   std::string plot;
   int index = 0;
-  double lowest = 1.0;
+  // The axes fit the points: x ends a little past the rightmost, so none sits on the border.
+  double lowest = 1.0, rightmost = 0.0;
   const std::string file = axis.name + ".dat";
   for (const SummaryRow& row : summary_rows(results)) {
     if (row.scope != RowScope::all) continue;
     data += fmt::format("{} {}\n", axis.x(row.summary), row.summary.accuracy);
     lowest = std::min(lowest, row.summary.accuracy);
+    rightmost = std::max(rightmost, axis.x(row.summary));
     // One series per arm, so each has its own colour and a key entry (labels would overlap).
     plot += fmt::format("{}'{}' every ::{}::{} using 1:2 with points pt 7 ps 2 title {}",
                         index ? ", " : "plot ", file, index, index, gnuplot_text(row.arm));
@@ -194,8 +196,9 @@ Drawing tradeoff_drawing(const CampaignResults& results, const TradeoffAxis& axi
   std::ofstream(data_dir / file) << data;
   d.commands = fmt::format(
       "set xlabel '{}'\nset ylabel 'sorted right'\n"
-      "{}set xrange [0:*]\nset grid\nset key bottom right noenhanced\n{}\n",
-      axis.xlabel, accuracy_range(lowest), plot);
+      "{}set xrange [0:{}]\nset grid\nset key bottom right noenhanced\n{}\n",
+      axis.xlabel, accuracy_range(lowest),
+      rightmost > 0.0 ? fmt::format("{}", 1.08 * rightmost) : "*", plot);
   return d;
 }
 
@@ -287,7 +290,7 @@ Drawing action_use_drawing(const CampaignResults& results, int sensing, const fs
   d.commands = fmt::format(
       "set style data histograms\nset style histogram clustered gap 1\nset style fill solid "
       "0.8 border -1\nset ylabel 'uses per trial'\nset xtics rotate by 30 right noenhanced\n"
-      "set key top right noenhanced\nset grid ytics\nset yrange [0:*]\n"
+      "set key outside right top noenhanced\nset grid ytics\nset yrange [0:*]\n"
       "plot for [c=2:{}] 'actions_chosen.dat' using c:xtic(1) title columnhead\n",
       results.arms.size() + 1);
   return d;
