@@ -363,12 +363,12 @@ class RecordedDataWorld final : public CampaignWorld {
 
  private:
   fs::path directory_;  // the campaign's folder: each fold's problem goes to folds/<fold>/
-  std::shared_ptr<DatasetTrials> trials_;
+  std::shared_ptr<DatasetFolds> trials_;
 };
 
 void RecordedDataWorld::open(CampaignConfig& config, const std::vector<ResolvedArm>& arms,
                              CampaignResults& results, InputFiles& files) {
-  trials_ = std::make_shared<DatasetTrials>(open_dataset(config, arms, files));
+  trials_ = std::make_shared<DatasetFolds>(open_dataset(config, arms, files));
   config.groups = dataset_groups(*trials_);
   // Every arm against the names problem now, not in a worker.
   for (const ResolvedArm& arm : arms) check_arm_problem(config, arm, *trials_->names);

@@ -62,7 +62,7 @@ void check_enough_for_folds(const perception::FeatureSet& data, const perception
 
 // A frozen model: one "fold" holding every session, its model the file's (checked against the
 // task's classes and the data's actions and modalities before any trial).
-void open_frozen_model(DatasetTrials& t, const std::string& path, InputFiles& files) {
+void open_frozen_model(DatasetFolds& t, const std::string& path, InputFiles& files) {
   auto model = std::make_shared<const perception::ObservationModel>(
       perception::parse_observation_model(files.text(path), path));
   if (model->classes() != t.task.classes)
@@ -86,9 +86,9 @@ void open_frozen_model(DatasetTrials& t, const std::string& path, InputFiles& fi
 
 }  // namespace
 
-DatasetTrials open_dataset(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
-                           InputFiles& files, const ProgressFn& progress) {
-  DatasetTrials t;
+DatasetFolds open_dataset(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+                          InputFiles& files, const ProgressFn& progress) {
+  DatasetFolds t;
   t.data = files.data(config.world.data, progress);
   std::optional<perception::ObjectGroups> groups;
   if (!config.world.groups.empty())
@@ -116,7 +116,7 @@ DatasetTrials open_dataset(const CampaignConfig& config, const std::vector<Resol
   return t;
 }
 
-std::vector<ObjectGroup> dataset_groups(const DatasetTrials& trials) {
+std::vector<ObjectGroup> dataset_groups(const DatasetFolds& trials) {
   std::vector<ObjectGroup> groups;
   for (std::size_t o = 0; o < trials.data->objects.size(); ++o) {
     const std::string& name = trials.data->objects[o];
@@ -126,7 +126,7 @@ std::vector<ObjectGroup> dataset_groups(const DatasetTrials& trials) {
   return groups;
 }
 
-std::vector<int> right_actions(const DatasetTrials& trials) {
+std::vector<int> right_actions(const DatasetFolds& trials) {
   const int sensing = static_cast<int>(trials.data->actions.size());
   std::vector<int> right;
   for (int bin : trials.task.bin_of_class) right.push_back(sensing + bin);
@@ -135,7 +135,7 @@ std::vector<int> right_actions(const DatasetTrials& trials) {
   return right;
 }
 
-std::vector<std::vector<double>> right_shares(const DatasetTrials& trials,
+std::vector<std::vector<double>> right_shares(const DatasetFolds& trials,
                                               const loop::TaskRewards& rewards) {
   const pomdp::ObjectProblemData& names = trials.names->model->object_identification()->data();
   const std::size_t sensing = names.sensing.size();
@@ -148,7 +148,7 @@ std::vector<std::vector<double>> right_shares(const DatasetTrials& trials,
   return shares;
 }
 
-bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
+bool fit_dataset_folds(DatasetFolds& trials, const CampaignConfig& config,
                        const ProgressFn& progress, const std::atomic<bool>& stop) {
   if (!config.world.model.empty()) return true;  // frozen: open_dataset loaded it
   perception::FeatureModelOptions options;
@@ -174,7 +174,7 @@ namespace {
 // problem has them (those that do not plan with them, with a share of 0).
 pomdp::ObjectProblemData fold_problem(const CampaignConfig& config,
                                       const std::vector<ResolvedArm>& arms,
-                                      const DatasetTrials& trials, int fold,
+                                      const DatasetFolds& trials, int fold,
                                       const std::vector<int>& uses, const ArmProblemKind& kind) {
   const perception::ObservationModel& model = *trials.models.at(fold);
   loop::UnlikeTheirClass unlike;
@@ -196,7 +196,7 @@ std::string kind_description(const ArmProblemKind& kind) {
 }  // namespace
 
 FoldProblems fold_problems(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
-                           const DatasetTrials& trials) {
+                           const DatasetFolds& trials) {
   const std::vector<int> uses = loop::default_uses(*trials.data);
   FoldProblems problems;
   for (const ResolvedArm& arm : arms) {
@@ -238,7 +238,7 @@ bool choose_dataset_unheard(const std::filesystem::path& directory, const Campai
 }
 
 ArmLoops dataset_loops(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
-                       const DatasetTrials& trials) {
+                       const DatasetFolds& trials) {
   // One problem per fold and use limits, shared by every arm and trial that needs it.
   using Key = std::tuple<int, std::vector<int>, ArmProblemKind>;
   std::map<Key, std::shared_ptr<const pomdp::Problem>> problems;

@@ -29,7 +29,8 @@
 
 namespace echoplan::experiment {
 
-struct DatasetTrials {
+// A dataset world's data dealt into folds, with each fold's fitted model: what its trials replay.
+struct DatasetFolds {
   std::shared_ptr<const perception::FeatureSet> data;
   perception::DatasetTask task;
   std::vector<perception::Fold> folds;
@@ -44,24 +45,24 @@ struct DatasetTrials {
 // model (InputError naming the file and line) and deals the folds; the names problem has the
 // copies of a class some arm plans with. A recordings tree's audio is analysed now (`progress`
 // hears "analyse").
-DatasetTrials open_dataset(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
-                           InputFiles& files, const ProgressFn& progress = {});
+DatasetFolds open_dataset(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+                          InputFiles& files, const ProgressFn& progress = {});
 
 // The trial groups of the data: one per object, in the data's order, a trial per session.
-std::vector<ObjectGroup> dataset_groups(const DatasetTrials& trials);
+std::vector<ObjectGroup> dataset_groups(const DatasetFolds& trials);
 
 // The action that sorts each class right, for the report's accuracy (CampaignResults); the
 // copies of a class (atypical, lookalike) have -1: a trial's truth is always a class.
-std::vector<int> right_actions(const DatasetTrials& trials);
+std::vector<int> right_actions(const DatasetFolds& trials);
 // Per state of the names problem (classes, then their copies) and action, the chance that the
 // action sorts an object in that state right: (reward - wrong) / (right - wrong) for a sorting
 // action (1 or 0 for a class and its atypical copy, the share of the other classes in the bin for
 // a lookalike), 0 for a sensing action. What the belief at a sort is measured with.
-std::vector<std::vector<double>> right_shares(const DatasetTrials& trials,
+std::vector<std::vector<double>> right_shares(const DatasetFolds& trials,
                                               const loop::TaskRewards& rewards);
 
 // Fits every fold's model (`progress` hears "fit folds"). Returns false when stopped.
-bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
+bool fit_dataset_folds(DatasetFolds& trials, const CampaignConfig& config,
                        const ProgressFn& progress, const std::atomic<bool>& stop);
 
 // Each kind of arm's problem of each fold, [kind][fold]: the fold's fitted table, the task's
@@ -69,7 +70,7 @@ bool fit_dataset_folds(DatasetTrials& trials, const CampaignConfig& config,
 // (default_uses), an exact belief (as the campaign's trials track it). Needs the fitted folds.
 using FoldProblems = std::map<ArmProblemKind, std::vector<std::shared_ptr<const pomdp::Problem>>>;
 FoldProblems fold_problems(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
-                           const DatasetTrials& trials);
+                           const DatasetFolds& trials);
 
 // Writes each fold's problems, `directory`/folds/<fold>/<fold_problem_name> (folds numbered from
 // 1). `echoplan certify --campaign` judges the fold's trials with them.
@@ -85,6 +86,6 @@ bool choose_dataset_unheard(const std::filesystem::path& directory, const Campai
 // The loop of every arm and trial: loops[arm][object][session] (campaign_runner.h). Needs the
 // fitted folds.
 ArmLoops dataset_loops(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
-                       const DatasetTrials& trials);
+                       const DatasetFolds& trials);
 
 }  // namespace echoplan::experiment

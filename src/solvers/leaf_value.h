@@ -3,7 +3,7 @@
 // Why this matters: on the report's problem a uniformly random rollout makes sensing look worthless
 // next to the -100 of a wrong sort (random play sorts wrongly half the time), so a planner valuing
 // leaves by random rollouts commits after about one observation (about -28 against V* = 2.95).
-// Four estimators are offered:
+// Six estimators are offered:
 //
 //   policy               the value of a default policy that senses with the most informative action
 //                        until confident and then commits (sensing_policy.h), rolled out from the
@@ -11,17 +11,17 @@
 //                        the best of its stopping thresholds counts. A lower bound in expectation,
 //                        which the search improves on. ABT only; needs model tables.
 //   exact                the exact solver's lower bound at the node's belief
-//   (exact_bounds_guide.h):
-//                        the value of a plan the IdentificationSolver knows there, after one
-//                        lookahead over its children's bounds. The same solver is refined at the
-//                        root for `exact_share` of every step's budget, and its [lower, upper]
-//                        bounds on V* clamp every node's value; at the root, an action its bounds
-//                        prove optimal is taken outright. Everything comes from the problem file
-//                        within the step's budget. ABT only; identification problems only.
+//                        (exact_bounds_guide.h): the value of a plan the IdentificationSolver
+//                        knows there, after one lookahead over its children's bounds. The same
+//                        solver is refined at the root for `exact_share` of every step's
+//                        budget, and its [lower, upper] bounds on V* clamp every node's value; at
+//                        the root, an action its bounds prove optimal is taken outright. Everything
+//                        comes from the problem file within the step's budget. ABT only;
+//                        identification problems only.
 //   exact-offline        `exact`, but every trial starts from a solve of `offline_expansions`
 //                        expansions made once, before the first step (reported apart: it is not
 //                        computed within the per-step budget).
-//   lookahead  the belief-level value of the best single next step: for each action, the
+//   lookahead            the belief-level value of the best single next step: for each action, the
 //                        mean over the node's particles of r(s, a) + gamma * h(s') (h = the model's
 //                        heuristic_value; 0 after a terminal step), maximised over actions. For an
 //                        object-identification problem that is "commit now to the best sorting
