@@ -43,7 +43,7 @@ void check_writable(const fs::path& directory) {
 // campaign.json: the configuration, what each arm runs, the identity.
 void write_description(const Campaign& c) {
   nlohmann::json arms = nlohmann::json::array();
-  for (const ResolvedArm& arm : c.arms)
+  for (const ResolvedArm& arm : c.results.arms)
     arms.push_back(to_json(arm, c.config.world.recorded_data()));
   const nlohmann::json j = {
       {"config", to_json(c.config)}, {"arms", std::move(arms)}, {"identity", c.results.identity}};
@@ -53,8 +53,7 @@ void write_description(const Campaign& c) {
 // Puts the choices an earlier preparation of this campaign made (unheard.json) in its arms.
 void apply_folder_choices(Campaign& c) {
   if (!fs::exists(c.directory / kUnheardChoices)) return;
-  apply_unheard_choices(read_unheard_choices(c.directory / kUnheardChoices), c.arms);
-  c.results.arms = c.arms;
+  apply_unheard_choices(read_unheard_choices(c.directory / kUnheardChoices), c.results.arms);
 }
 
 // The folder holds this campaign or none: claims it by writing campaign.json (with the choices
@@ -82,13 +81,12 @@ void claim_folder(Campaign& c, InputFiles& files) {
 Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) {
   Campaign c;
   c.config = config;
-  c.arms = resolve_arms(config);
+  c.results.arms = resolve_arms(config);
   c.directory = directory;
   c.world = make_campaign_world(config, directory);
   InputFiles files;
-  c.world->open(c.config, c.arms, c.results, files);
+  c.world->open(c.config, c.results.arms, c.results, files);
   c.results.config = c.config;
-  c.results.arms = c.arms;
   c.results.planned_trials = c.config.total_trials();
   claim_folder(c, files);
   return c;
@@ -96,12 +94,12 @@ Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) 
 
 bool prepare_training(Campaign& campaign, const ProgressFn& progress, const std::atomic<bool>& stop,
                       int workers) {
-  std::vector<ResolvedArm> arms = campaign.arms;
+  // A stopped preparation leaves the arms as they were.
+  std::vector<ResolvedArm> arms = campaign.results.arms;
   std::optional<ArmLoops> loops =
       campaign.world->prepare(campaign.config, arms, progress, stop, workers);
   if (!loops) return false;
-  campaign.arms = std::move(arms);
-  campaign.results.arms = campaign.arms;
+  campaign.results.arms = std::move(arms);
   campaign.loops = std::move(*loops);
   write_description(campaign);
   return true;

@@ -22,7 +22,6 @@
 #include <string>
 #include <vector>
 
-#include "experiment/campaign_arms.h"
 #include "experiment/campaign_config.h"
 #include "experiment/campaign_report.h"
 #include "experiment/campaign_runner.h"
@@ -35,10 +34,10 @@ namespace echoplan::experiment {
 // workers. The journal on disk is the only state that changes as trials finish.
 struct Campaign {
   CampaignConfig config;  // the file as written, and the trial groups of its world
-  // What each arm runs (resolve_arms); prepare_training() fills in what self-play chose.
-  std::vector<ResolvedArm> arms;
   std::filesystem::path directory;
-  CampaignResults results;  // spec, particles, planned trials, presentation (entries: none yet)
+  // spec, particles, planned trials, presentation (entries: none yet) and what each arm runs
+  // (results.arms: resolve_arms, with what self-play chose once prepare_training() has run)
+  CampaignResults results;
   std::shared_ptr<CampaignWorld> world;
   // Filled by prepare_training(): the checked loop of each arm and group, what the workers run.
   ArmLoops loops;

@@ -58,7 +58,7 @@ class ProblemFileWorld final : public CampaignWorld {
   ArmLoops make_loops(const CampaignConfig& config, const std::vector<ResolvedArm>& arms) const;
   std::optional<std::vector<HeardCounts>> heard(const CampaignConfig& config,
                                                 const std::atomic<bool>& stop) const;
-  bool write_report_inputs(const CampaignConfig& config, const std::atomic<bool>& stop) const;
+  bool keep_report_inputs(const CampaignConfig& config, const std::atomic<bool>& stop) const;
 
   bool simulates_;
   fs::path training_;    // DIR/training: the model, the calibrated problems
@@ -255,7 +255,7 @@ std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
   };
   if (!choose_arms_unheard(config, arms, problems_of, training_.parent_path(), progress, stop,
                            workers) ||
-      !write_report_inputs(config, stop))
+      !keep_report_inputs(config, stop))
     return std::nullopt;
   return make_loops(config, arms);
 }
@@ -263,8 +263,8 @@ std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
 // The page's view of the training set (heard counts, templates), worked out once per campaign
 // folder: an earlier run's file is kept (the folder holds one campaign, so it cannot differ).
 // False when stopped.
-bool ProblemFileWorld::write_report_inputs(const CampaignConfig& config,
-                                           const std::atomic<bool>& stop) const {
+bool ProblemFileWorld::keep_report_inputs(const CampaignConfig& config,
+                                          const std::atomic<bool>& stop) const {
   const fs::path directory = training_.parent_path();
   if (fs::exists(directory / kReportInputs)) return true;
   ReportInputs inputs;
@@ -273,7 +273,7 @@ bool ProblemFileWorld::write_report_inputs(const CampaignConfig& config,
   inputs.heard = std::move(*heard_counts);
   if (fs::is_directory(recordings_))
     inputs.templates = template_matrices(recordings_, training_objects_, training_actions_);
-  experiment::write_report_inputs(directory, inputs);
+  write_report_inputs(directory, inputs);
   return true;
 }
 
