@@ -10,7 +10,7 @@ counted, as the planner counts them, and only the first performance of each beha
 trials that sensed fewer than 8 and at least 8 times and for all, the mean belief, the share sorted
 right and the gap in points. A gap that shrinks when repeats are left out says the repeats of one
 behaviour are worth less than the table says; one that stays says the behaviours together are.
-Beliefs are of the classes alone (an atypical arm's copies are left out).
+Beliefs are of the classes alone (a lookalike arm's copies are left out).
 """
 import collections
 import csv

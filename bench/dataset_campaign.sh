@@ -14,9 +14,9 @@
 # With ARMS=graded (environment): four arms, plan and information_gain each hearing labels and
 # grades (observations: graded), so grades are measured paired against labels; the planner is the
 # default one (PLAN=plain: the plain one).
-# With ARMS=unlike (environment): seven arms, the five but random, the planner also planning with
-# lookalikes (lookalike: true; plan_lookalike listed first) and with objects unlike their class
-# (atypical: true), and information_gain also with lookalikes.
+# With ARMS=unlike (environment): six arms, the five but random, the planner also planning with
+# lookalikes (lookalike: true; plan_lookalike listed first), and information_gain also with
+# lookalikes.
 # With ARMS=unheard (environment): five arms, the planner counting a sensing action's unheard
 # outcomes at their commit value (unheard: commit) with lookalikes (plan_commit_lookalike, listed
 # first) and without, the default planner with lookalikes and without, and information_gain.
@@ -65,7 +65,7 @@ dir=$(mktemp -d)
 out=${5:-$dir/campaign}
 trap 'rm -rf "$dir"' EXIT
 if [ "${SET:-}" = recorded ]; then
-  set_options='--repeats 2 --session-sd 0.6 --atypical-share 0.1'
+  set_options='--repeats 2 --session-sd 0.6 --lookalike-share 0.1'
 else
   set_options='--session-sd 0.3'
 fi
@@ -103,7 +103,6 @@ elif [ "${ARMS:-}" = auto ]; then
   - {name: information_gain, strategy: information_gain}'
 elif [ "${ARMS:-}" = unlike ]; then
   arms="  - {name: plan_lookalike, strategy: plan, lookalike: true, unheard: share}
-  - {name: plan_atypical, strategy: plan, atypical: true$plain}
   - {name: plan, strategy: plan$plain}
   - {name: all_actions, strategy: all_actions}
   - {name: best_single, strategy: best_single}

@@ -1,13 +1,12 @@
 #!/bin/sh
 # Honest confidence on novel objects (docs/BENCHMARKS.md, "Honest confidence: objects unlike their
 # class"): a synthetic stand-in where a quarter of the objects look like another group in every
-# behaviour at once (bench/make_feature_set --atypical-share 0.25 --atypical-pull 0.6; 40 objects
+# behaviour at once (bench/make_feature_set --lookalike-share 0.25 --lookalike-pull 0.6; 40 objects
 # in 8 groups of 5, 5 sessions, 4 behaviours, audio and haptic), sorted by group with whole objects
 # held out, at EPISODES episodes: the planner (with ABT's default leaf and with the exact leaf) and
-# the greedy rule, each without and with atypical objects among the hidden states
-# (`atypical: true`), the planner with lookalikes instead (`lookalike: true`, with either leaf), two
+# the greedy rule, each without and with lookalikes among the hidden states (`lookalike: true`), two
 # fixed baselines, and last the planner as a campaign sorting novel objects plans by default
-# (`plan_defaults`: lookalikes, unheard outcomes at commit); the exact planner with atypical objects
+# (`plan_defaults`: lookalikes, unheard outcomes at commit); the exact planner with lookalikes
 # first, so the paired differences are against it. Prints each arm's row, the paired differences,
 # how sure each arm was at the sort against how often it was right, and each fold's certified
 # regret per trial.
@@ -20,8 +19,8 @@ out=${3:-$dir/campaign}
 trap 'rm -rf "$dir"' EXIT
 "$build/bench/make_feature_set" -o "$dir/fs" --objects 40 --group-size 5 --sessions 5 \
   --actions press,shake,tap,squeeze --action-scales 0.3,0.6,0.9,1.2 --modality audio:6:1.5 \
-  --modality haptic:3:1.0 --group-separation 1.5 --session-sd 0.3 --atypical-share 0.25 \
-  --atypical-pull 0.6 --seed 1
+  --modality haptic:3:1.0 --group-separation 1.5 --session-sd 0.3 --lookalike-share 0.25 \
+  --lookalike-pull 0.6 --seed 1
 # The planner's arms name how they count unheard outcomes and, but for the lookalike ones, that
 # they plan without lookalikes: the table was measured so, before a planner sorting novel objects
 # defaulted to commit with lookalikes (docs/experiment.md).
@@ -32,16 +31,14 @@ world: {type: dataset, data: $dir/fs, hold_out: object, groups: $dir/fs/groups.c
 task:
   rewards: {right: 10, wrong: -100, sense: -1}
 arms:
-  - {name: plan_exact_atypical, strategy: plan, leaf: exact, atypical: true$plain}
-  - {name: plan_atypical, strategy: plan, atypical: true$plain}
+  - {name: plan_exact_lookalike, strategy: plan, leaf: exact, lookalike: true, unheard: share}
+  - {name: plan_lookalike, strategy: plan, lookalike: true, unheard: share}
   - {name: plan, strategy: plan$plain}
   - {name: plan_exact, strategy: plan, leaf: exact$plain}
   - {name: all_actions, strategy: all_actions}
   - {name: best_single, strategy: best_single}
   - {name: information_gain, strategy: information_gain}
-  - {name: information_gain_atypical, strategy: information_gain, atypical: true}
-  - {name: plan_exact_lookalike, strategy: plan, leaf: exact, lookalike: true, unheard: share}
-  - {name: plan_lookalike, strategy: plan, lookalike: true, unheard: share}
+  - {name: information_gain_lookalike, strategy: information_gain, lookalike: true}
   - {name: plan_defaults, strategy: plan}
 planner: {solver: abt, episodes: $episodes, max_steps: 100}
 YAML

@@ -67,11 +67,11 @@ int main(int argc, char** argv) {
   app.add_option("--session-sd", spec.session_sd,
                  "SD of each session's offset, shared by its repeats")
       ->capture_default_str();
-  app.add_option("--atypical-share", spec.atypical_share,
+  app.add_option("--lookalike-share", spec.lookalike_share,
                  "chance that an object looks like another group in every behaviour")
       ->capture_default_str();
-  app.add_option("--atypical-pull", spec.atypical_pull,
-                 "how far an atypical object sits towards its lookalike group, 0 to 1")
+  app.add_option("--lookalike-pull", spec.lookalike_pull,
+                 "how far such an object sits towards the group it looks like, 0 to 1")
       ->capture_default_str();
   app.add_option("--seed", spec.seed, "every number comes from it")->capture_default_str();
   try {

@@ -21,7 +21,7 @@ trap 'rm -rf "$dir"' EXIT
   --actions press,grasp,lift,drop,poke,push,shake,tap,squeeze \
   --action-scales 0.3,0.4,0.5,0.6,0.7,0.8,0.9,1.0,1.2 --modality audio:8:1.5 \
   --modality haptic:4:1.0 --group-separation 1.0 --seed 1 --repeats 2 --session-sd 0.6 \
-  --atypical-share 0.1 >/dev/null
+  --lookalike-share 0.1 >/dev/null
 mkdir -p "$out"
 "$build/echoplan" train --data "$dir/fs100" --groups "$dir/fs100/groups.csv" --hold-out object \
   --problem-out "$out/problem.yaml" >/dev/null 2>&1

@@ -48,7 +48,7 @@ const std::vector<std::string>& names() {
 
 void BM_RecordingToObservation(benchmark::State& state) {
   static const fs::path dir = write_set(3);
-  echoplan::perception::TrainOptions options;
+  echoplan::perception::FitOptions options;
   options.classifier = names()[static_cast<std::size_t>(state.range(0))];
   const auto model = echoplan::perception::train_observation_model(
       echoplan::perception::load_recording_set(dir.string()), options);
@@ -71,7 +71,7 @@ BENCHMARK(BM_RecordingToObservation)->DenseRange(0, 3)->Unit(benchmark::kMillise
 
 void BM_Train80Clips(benchmark::State& state) {
   static const fs::path dir = write_set(10);  // 4 objects x 2 actions x 10 = 80 clips
-  echoplan::perception::TrainOptions options;
+  echoplan::perception::FitOptions options;
   options.classifier = names()[static_cast<std::size_t>(state.range(0))];
   const auto set = echoplan::perception::load_recording_set(dir.string());
   for (auto _ : state)

@@ -1,7 +1,6 @@
-// Feature sets from files or numpy arrays, and the model fitted on them: the sessions recipe of
-// `echoplan train --data DIR` (fit_feature_model) on a FeatureSet built in memory exactly as
-// load_feature_set builds one from DIR/<action>/<modality>.csv, and the clips recipe
-// (train_observation_model) on a recordings tree.
+// Feature sets from files or numpy arrays, and the model fitted on them: `echoplan train --data
+// DIR` (perception/fit_observation_model.h) on a FeatureSet built in memory exactly as
+// load_feature_set builds one from DIR/<action>/<modality>.csv, or on a data folder.
 #include "feature_arrays.h"
 
 #include <pybind11/numpy.h>
@@ -19,7 +18,7 @@
 #include "interrupt.h"
 #include "loop/dataset_problem.h"
 #include "perception/dataset_task.h"
-#include "perception/feature_model.h"
+#include "perception/fit_observation_model.h"
 #include "perception/observation_model.h"
 #include "perception/recording_features.h"
 #include "perception/recording_set.h"
@@ -221,39 +220,103 @@ void bind_feature_set(py::module_& m) {
       py::arg("dir"), "A feature set or a recordings tree (its audio analysed) as a FeatureSet.");
 }
 
-// The task `echoplan train` makes of its flags: groups from a file path or a dict.
-perception::DatasetTask task_of(const FeatureSet& set, py::handle groups,
-                                const std::string& hold_out) {
-  std::optional<perception::ObjectGroups> g;
-  std::string file;
+// The groups `echoplan train --groups` reads, from a file path or a dict (read with the GIL held).
+struct GroupsArgument {
+  std::optional<perception::ObjectGroups> groups;
+  std::string file;  // names them in errors
+};
+
+GroupsArgument groups_of(py::handle groups) {
+  GroupsArgument g;
   if (py::isinstance<py::dict>(groups)) {
-    g.emplace();
+    g.groups.emplace();
     for (const auto& [object, group] : groups.cast<py::dict>()) {
-      g->objects.push_back(object.cast<std::string>());
-      g->groups.push_back(group.cast<std::string>());
+      g.groups->objects.push_back(object.cast<std::string>());
+      g.groups->groups.push_back(group.cast<std::string>());
     }
-    file = "groups";
+    g.file = "groups";
   } else if (!groups.is_none()) {
-    file = py::str(groups).cast<std::string>();
-    g = perception::load_groups(file);
+    g.file = py::str(groups).cast<std::string>();
+    g.groups = perception::load_groups(g.file);
   }
-  return perception::make_dataset_task(set, g ? &*g : nullptr, perception::parse_hold_out(hold_out),
-                                       file);
+  return g;
 }
 
-std::shared_ptr<perception::ObservationModel> fit(const SetPtr& set, py::handle groups,
-                                                  const std::string& hold_out,
-                                                  const std::string& classifier,
-                                                  std::optional<std::vector<int>> sessions) {
-  const perception::DatasetTask task = task_of(*set, groups, hold_out);
-  std::vector<int> training(set->sessions.size());
-  std::iota(training.begin(), training.end(), 0);
-  if (sessions) training = *sessions;
+perception::DatasetTask task_of(const FeatureSet& set, const GroupsArgument& g,
+                                const std::string& hold_out) {
+  return perception::make_dataset_task(set, g.groups ? &*g.groups : nullptr,
+                                       perception::parse_hold_out(hold_out), g.file);
+}
+
+// The task `echoplan train` makes of its flags.
+perception::DatasetTask task_of(const FeatureSet& set, py::handle groups,
+                                const std::string& hold_out) {
+  return task_of(set, groups_of(groups), hold_out);
+}
+
+// The options `echoplan train` makes of its flags: the defaults of the cross-validation (given,
+// or following the data and the task), then every option given (None: the default).
+struct FitArguments {
+  std::optional<std::string> cross_validation, classifier, table;
+  std::optional<int> folds, sample_rate;
+  std::optional<std::uint64_t> seed;
+  std::optional<bool> reject, fuse, temper;
+  std::optional<double> reject_margin, alpha;
+
+  perception::FitOptions options(perception::DataKind kind, bool task_named) const {
+    perception::FitOptions o = perception::fit_defaults(
+        cross_validation ? perception::parse_cross_validation(*cross_validation)
+                         : perception::default_cross_validation(kind, task_named));
+    if (classifier) o.classifier = *classifier;
+    if (table) o.table = perception::parse_table_estimate(*table);
+    if (folds) o.folds = *folds;
+    if (sample_rate) o.analysis.sample_rate = *sample_rate;
+    if (seed) o.seed = *seed;
+    if (reject) o.reject = *reject;
+    if (fuse) o.fuse = *fuse;
+    if (temper) o.temper = *temper;
+    if (reject_margin) o.reject_margin = *reject_margin;
+    if (alpha) o.dirichlet_alpha = *alpha;
+    perception::check_fit_options(o);
+    return o;
+  }
+};
+
+// `data`: a FeatureSet, or the path of a recordings tree or a feature set. Python objects are read
+// here, with the GIL held; the work runs interruptibly without it.
+std::shared_ptr<perception::ObservationModel> fit(py::handle data, py::handle groups,
+                                                  std::optional<std::string> hold_out,
+                                                  std::optional<std::vector<int>> sessions,
+                                                  const FitArguments& arguments) {
+  const GroupsArgument g = groups_of(groups);
+  const bool task_named = g.groups.has_value() || hold_out.has_value();
+  SetPtr given;
+  std::string dir;
+  perception::DataKind kind = perception::DataKind::features;
+  if (py::isinstance<FeatureSet>(data)) {
+    given = data.cast<SetPtr>();
+  } else {
+    dir = py::str(data).cast<std::string>();
+    kind = perception::data_kind(dir);
+  }
+  const perception::FitOptions options = arguments.options(kind, task_named);
   return run_interruptibly([&](const std::atomic<bool>& stop) {
-    return std::make_shared<perception::ObservationModel>(perception::fit_feature_model(
-        *set, task, training, {classifier}, [&](const std::string&, int, int) {
-          if (stop) throw Stopped{};
-        }));
+    const auto progress = [&](const std::string&, int, int) {
+      if (stop) throw Stopped{};
+    };
+    SetPtr set = given;
+    if (!set)
+      set = std::make_shared<FeatureSet>(
+          kind == perception::DataKind::features
+              ? perception::load_feature_set(dir)
+              : perception::recordings_as_features(perception::load_recording_set(dir), options,
+                                                   progress));
+    const perception::DatasetTask task = task_of(*set, g, hold_out.value_or("session"));
+    std::vector<int> training(set->sessions.size());
+    std::iota(training.begin(), training.end(), 0);
+    if (sessions) training = *sessions;
+    return std::make_shared<perception::ObservationModel>(
+        perception::fit_observation_model(*set, task, training, options, progress));
   });
 }
 
@@ -261,14 +324,13 @@ std::shared_ptr<perception::ObservationModel> fit(const SetPtr& set, py::handle 
 // it (exact beliefs, default planner settings), read back as a Problem.
 ProblemPtr dataset_problem(const SetPtr& set, const perception::ObservationModel& model,
                            py::handle groups, const std::string& hold_out, double right,
-                           double wrong, double sense, bool atypical, bool lookalike) {
+                           double wrong, double sense, bool lookalike) {
   const perception::DatasetTask task = task_of(*set, groups, hold_out);
   const auto kind = perception::ObservationKind::labels;
-  loop::UnlikeTheirClass unlike;
-  if (atypical) unlike.atypical = model.atypical_share(kind);
-  if (lookalike) unlike.lookalike = model.lookalike_share(kind);
+  std::optional<double> lookalike_share;
+  if (lookalike) lookalike_share = model.lookalike_share(kind);
   const auto data = loop::dataset_problem(task, model, {right, wrong, sense, {}},
-                                          loop::default_uses(*set), kind, unlike);
+                                          loop::default_uses(*set), kind, lookalike_share);
   std::ostringstream text;
   pomdp::BeliefSettings belief;
   belief.type = pomdp::BeliefSettings::Type::exact;
@@ -277,64 +339,47 @@ ProblemPtr dataset_problem(const SetPtr& set, const perception::ObservationModel
       pomdp::parse_problem(text.str(), set->root + "/problem.yaml"));
 }
 
-std::shared_ptr<perception::ObservationModel> train_clips(const std::string& dir,
-                                                          const perception::TrainOptions& options) {
-  const perception::RecordingSet set = perception::load_recording_set(dir);
-  return run_interruptibly([&](const std::atomic<bool>& stop) {
-    return std::make_shared<perception::ObservationModel>(
-        perception::train_observation_model(set, options, [&](const std::string&, int, int) {
-          if (stop) throw Stopped{};
-        }));
-  });
-}
-
 }  // namespace
 
 void bind_feature_sets(py::module_& m) {
   bind_feature_set(m);
-  m.def("fit_feature_model", &fit, py::arg("feature_set"), py::kw_only(),
-        py::arg("groups") = py::none(), py::arg("hold_out") = "session",
-        py::arg("classifier") = std::string(perception::kDefaultRowClassifier),
-        py::arg("training_sessions") = py::none(),
-        "The sessions recipe of `echoplan train --data DIR` on a FeatureSet: a row classifier "
-        "per (action, modality), fused and calibrated by session-grouped cross-validation. "
-        "groups: a groups file path or a dict {object: group}; hold_out: 'session' or 'object'; "
-        "classifier: 'lda' or 'nearest-neighbour'; training_sessions: session indices (default: "
-        "all). Ctrl-C stops it.");
+  m.def(
+      "fit_observation_model",
+      [](py::handle data, py::handle groups, std::optional<std::string> hold_out,
+         std::optional<std::vector<int>> training_sessions, std::optional<std::string> cv,
+         std::optional<std::string> classifier, std::optional<int> folds,
+         std::optional<std::uint64_t> seed, std::optional<bool> reject,
+         std::optional<double> reject_margin, std::optional<double> alpha,
+         std::optional<std::string> table, std::optional<bool> fuse, std::optional<bool> temper,
+         std::optional<int> sample_rate) {
+        return fit(data, groups, std::move(hold_out), std::move(training_sessions),
+                   {cv, classifier, table, folds, sample_rate, seed, reject, fuse, temper,
+                    reject_margin, alpha});
+      },
+      py::arg("data"), py::kw_only(), py::arg("groups") = py::none(),
+      py::arg("hold_out") = py::none(), py::arg("training_sessions") = py::none(),
+      py::arg("cross_validation") = py::none(), py::arg("classifier") = py::none(),
+      py::arg("folds") = py::none(), py::arg("seed") = py::none(), py::arg("reject") = py::none(),
+      py::arg("reject_margin") = py::none(), py::arg("alpha") = py::none(),
+      py::arg("table") = py::none(), py::arg("fuse") = py::none(), py::arg("temper") = py::none(),
+      py::arg("sample_rate") = py::none(),
+      "`echoplan train --data DIR` from Python: the one observation model fitted on a FeatureSet "
+      "or on a data folder (a recordings tree or a feature set), with the command's options "
+      "under their flags' names (None: the default, which follows cross_validation: 'performance' "
+      "for a recordings tree, 'session' for a feature set or when groups or hold_out is given; "
+      "docs/feature-sets.md). groups: a groups file path or a dict {object: group}; hold_out: "
+      "'session' or 'object'; training_sessions: session indices (default: all). Ctrl-C stops "
+      "it.");
   m.def("dataset_problem", &dataset_problem, py::arg("feature_set"), py::arg("model"),
         py::kw_only(), py::arg("groups") = py::none(), py::arg("hold_out") = "session",
         py::arg("right") = 10.0, py::arg("wrong") = -100.0, py::arg("sense") = -1.0,
-        py::arg("atypical") = false, py::arg("lookalike") = false,
+        py::arg("lookalike") = false,
         "The problem of a feature set with a model fitted on it, as `echoplan train "
         "--problem-out` writes it: the classes, one sensing action per behaviour with its use "
-        "limit, one sorting action per bin, the model's table, exact beliefs. atypical=True adds "
-        "an atypical copy of every class ('<class>~atypical') with the model's atypical_share() "
-        "of the prior, as a campaign arm with `atypical: true` plans; lookalike=True a lookalike "
-        "copy ('<class>~lookalike': sounds like the class, is another) with its "
+        "limit, one sorting action per bin, the model's table, exact beliefs. lookalike=True adds "
+        "a lookalike copy of every class ('<class>~lookalike': sounds like the class, is another) "
+        "with its "
         "lookalike_share(), as an arm with `lookalike: true` plans.");
-  const perception::TrainOptions d;
-  m.def(
-      "train_observation_model",
-      [](const std::string& dir, const std::string& classifier, bool reject, double margin,
-         double alpha, const std::string& table, int folds, std::uint64_t seed, int rate) {
-        perception::TrainOptions o;
-        o.classifier = classifier;
-        o.reject = reject;
-        o.reject_margin = margin;
-        o.dirichlet_alpha = alpha;
-        o.table = perception::parse_table_estimate(table);
-        o.folds = folds;
-        o.seed = seed;
-        o.analysis.sample_rate = rate;
-        return train_clips(dir, o);
-      },
-      py::arg("recordings"), py::kw_only(), py::arg("classifier") = d.classifier,
-      py::arg("reject") = d.reject, py::arg("reject_margin") = d.reject_margin,
-      py::arg("alpha") = d.dirichlet_alpha, py::arg("table") = "counts", py::arg("folds") = d.folds,
-      py::arg("seed") = d.seed, py::arg("sample_rate") = d.analysis.sample_rate,
-      "The clips recipe of `echoplan train --data DIR --out MODEL` on a recordings tree "
-      "DIR/<object>/<action>/*.wav: one audio classifier per action, cross-validated and "
-      "calibrated; the same options as the command's flags. Ctrl-C stops it.");
 }
 
 }  // namespace echoplan::python

@@ -59,7 +59,7 @@ PythonLoop make_loop(const ProblemPtr& problem, const py::object& robot, const p
   s.problem = problem;
   s.world_problem = world_problem;
   s.world = world_of(robot, recorder, service, model, recordings, description);
-  s.classifier = model;
+  s.observation_model = model;
   s.world_objects = std::move(world_objects);
   s.planner = planner_overrides(settings);
   s.max_steps = max_steps;

@@ -1,7 +1,7 @@
 // Perception from Python: audio clips as numpy arrays, their features (the presets of `echoplan
 // features`), feature sets from files or from numpy arrays, and the one observation model
-// (perception/observation_model.h): fitted on a recordings tree (the clips recipe) or on a feature
-// set's sessions (the sessions recipe), classifying a clip or a feature row, saved and loaded.
+// (perception/observation_model.h): fitted on a recordings tree or a feature set
+// (fit_observation_model), classifying a clip or a feature row, saved and loaded.
 #include <pybind11/stl.h>
 
 #include <nlohmann/json.hpp>
@@ -15,8 +15,9 @@
 #include "feature_arrays.h"
 #include "interrupt.h"
 #include "perception/dataset_task.h"
-#include "perception/feature_model.h"
+#include "perception/fit_observation_model.h"
 #include "perception/observation_model.h"
+#include "perception/performance_reader.h"
 #include "perception/recording_features.h"
 
 namespace echoplan::python {
@@ -152,8 +153,8 @@ void bind_model(py::module_& m) {
       m, "ObservationModel",
       "The observation model (perception/observation_model.h): per sensing action, a classifier "
       "per modality, their fusion and calibration, and the table P(symbol | object) the planner "
-      "plans with. Fit with train_observation_model (recordings) or fit_feature_model (a feature "
-      "set); load_observation_model(path); save(path).")
+      "plans with. Fit with fit_observation_model (a FeatureSet or a data folder); "
+      "load_observation_model(path); save(path).")
       .def_property_readonly("classes", &ObservationModel::classes)
       .def_property_readonly("actions", &ObservationModel::actions)
       .def_property_readonly("observation_symbols",
@@ -166,16 +167,6 @@ void bind_model(py::module_& m) {
             return x.observation_symbols(perception::ObservationKind::graded);
           },
           "The graded observation symbols ('mug@low', ...), the alphabet of a graded problem.")
-      .def(
-          "atypical_share",
-          [](const ObservationModel& x, bool graded) {
-            return x.atypical_share(graded ? perception::ObservationKind::graded
-                                           : perception::ObservationKind::labels);
-          },
-          py::arg("graded") = false,
-          "The share of objects unlike their class the model fitted on held-out sessions (0 for a "
-          "model trained on recordings): the prior of the atypical copies of dataset_problem(..., "
-          "atypical=True).")
       .def(
           "lookalike_share",
           [](const ObservationModel& x, bool graded) {

@@ -53,7 +53,7 @@ def test_a_model_fitted_on_numpy_arrays_is_the_commands(tmp_path):
     echoplan_command("train", "--data", FEATURE_SET, "--out", command_model)
     feature_set = echoplan.FeatureSet.from_arrays(read_feature_set(FEATURE_SET))
     assert feature_set.actions == ["press", "shake", "squeeze", "tap"]
-    model = echoplan.fit_feature_model(feature_set)
+    model = echoplan.fit_observation_model(feature_set)
     model.save(str(tmp_path / "mine.json"))
     assert json.load(open(tmp_path / "mine.json")) == json.load(open(command_model))
     # The same model classifies a feature row as the loaded one does.
@@ -65,7 +65,7 @@ def test_a_model_fitted_on_numpy_arrays_is_the_commands(tmp_path):
 
 
 def test_a_graded_model_hears_a_class_and_its_grade():
-    model = echoplan.fit_feature_model(echoplan.load_feature_set(FEATURE_SET))
+    model = echoplan.fit_observation_model(echoplan.load_feature_set(FEATURE_SET))
     assert model.graded
     grades = ["low", "mid", "high"]
     assert model.graded_symbols == [f"{c}@{g}" for c in model.classes for g in grades]
@@ -84,28 +84,30 @@ def test_the_problem_of_a_feature_set_is_the_commands(tmp_path):
     echoplan_command("train", "--data", FEATURE_SET, "--groups", groups, "--problem-out",
                      tmp_path / "command.yaml")
     feature_set = echoplan.load_feature_set(FEATURE_SET)
-    model = echoplan.fit_feature_model(feature_set, groups=groups)
+    model = echoplan.fit_observation_model(feature_set, groups=groups)
     problem = echoplan.dataset_problem(feature_set, model, groups=groups)
     command = echoplan.load_problem(str(tmp_path / "command.yaml"))
     for key, value in command.model.tables().items():
         np.testing.assert_array_equal(problem.model.tables()[key], value)
 
 
-def test_objects_unlike_their_class_are_an_atypical_copy_of_each_class():
+def test_lookalikes_are_a_copy_of_each_class_heard_through_its_rows():
     groups = str(Path(FEATURE_SET) / "groups.csv")
     feature_set = echoplan.load_feature_set(FEATURE_SET)
-    model = echoplan.fit_feature_model(feature_set, groups=groups, hold_out="object")
-    share = model.atypical_share()
-    assert 0.0 <= share <= 0.5 and 0.0 <= model.atypical_share(graded=True) <= 0.5
+    model = echoplan.fit_observation_model(feature_set, groups=groups, hold_out="object")
+    share = model.lookalike_share()
+    assert 0.0 <= share <= 0.5 and 0.0 <= model.lookalike_share(graded=True) <= 0.5
     plain = echoplan.dataset_problem(feature_set, model, groups=groups, hold_out="object")
     problem = echoplan.dataset_problem(feature_set, model, groups=groups, hold_out="object",
-                                       atypical=True)
+                                       lookalike=True)
     classes = plain.model.objects
-    assert problem.model.objects == classes + [f"{c}~atypical" for c in classes]
-    assert 0.0 <= model.lookalike_share() <= 0.5
-    both = echoplan.dataset_problem(feature_set, model, groups=groups, hold_out="object",
-                                    atypical=True, lookalike=True)
-    assert both.model.objects == problem.model.objects + [f"{c}~lookalike" for c in classes]
+    k = len(classes)
+    assert problem.model.objects == classes + [f"{c}~lookalike" for c in classes]
+    tables = problem.model.tables()
+    np.testing.assert_allclose(tables["initial_belief"][k:2 * k], share / k)
+    np.testing.assert_allclose(tables["initial_belief"][:k], (1.0 - share) / k)
+    np.testing.assert_array_equal(tables["observation"][:, k:2 * k, :],
+                                  tables["observation"][:, :k, :])
 
 
 def test_bad_arrays_raise_input_error_naming_action_modality_and_row():
@@ -132,7 +134,7 @@ def test_classify_a_clip_as_the_command_does(tmp_path, strike):
     recordings = tmp_path / "recordings"
     echoplan_command("synth-recordings", "--per-pair", 3, "--seed", 2, "-o", recordings)
     echoplan_command("train", "--data", recordings, "--out", tmp_path / "model.json")
-    mine = echoplan.train_observation_model(str(recordings))
+    mine = echoplan.fit_observation_model(str(recordings))
     mine.save(str(tmp_path / "mine.json"))
     assert json.load(open(tmp_path / "mine.json")) == json.load(open(tmp_path / "model.json"))
     command = json.loads(echoplan_command("classify", "--model", tmp_path / "model.json",

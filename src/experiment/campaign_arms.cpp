@@ -70,7 +70,7 @@ ResolvedArm resolve_arm(const CampaignConfig& config, const CampaignArm& arm) {
   r.problem = arm.problem;
   r.calibrate = arm.calibrate;
   r.line = arm.line;
-  r.plans_with = {arm.observation_kind(), arm.atypical, arm.lookalike.value_or(false)};
+  r.plans_with = {arm.observation_kind(), arm.lookalike.value_or(false)};
   r.planner.solver = r.plans() ? config.planner.solver : arm.strategy;
   r.planner.episodes = config.planner.episodes;
   r.planner.step_ms = config.planner.step_ms;
@@ -120,18 +120,12 @@ CampaignArm as_written(const ResolvedArm& arm) {
   a.calibrate = arm.calibrate;
   a.strategy = arm.strategy;
   a.observations = perception::observation_kind_name(arm.plans_with.kind);
-  a.atypical = arm.plans_with.atypical;
   // Written only when it plans with them (a `lookalike: false` reads as the file not naming it).
   if (arm.plans_with.lookalike) a.lookalike = true;
   a.leaf = arm.planner.leaf;
   a.unheard = arm.unheard_by_play ? kUnheardByPlay : arm.planner.unheard;
   a.line = arm.line;
   return a;
-}
-
-bool any_atypical(const std::vector<ResolvedArm>& arms) {
-  return std::any_of(arms.begin(), arms.end(),
-                     [](const ResolvedArm& arm) { return arm.plans_with.atypical; });
 }
 
 bool any_lookalike(const std::vector<ResolvedArm>& arms) {
@@ -154,7 +148,6 @@ nlohmann::json to_json(const ResolvedArm& arm, bool recorded_data) {
   }
   j["observations"] = perception::observation_kind_name(arm.hearing());
   if (recorded_data) {
-    j["atypical"] = arm.plans_with.atypical;
     j["lookalike"] = arm.plans_with.lookalike;
     j["fold_problem"] = fold_problem_name(arm.plans_with);
   }
@@ -162,9 +155,9 @@ nlohmann::json to_json(const ResolvedArm& arm, bool recorded_data) {
 }
 
 std::string fold_problem_name(const ArmProblemKind& kind) {
-  return fmt::format("problem{}{}{}.yaml",
+  return fmt::format("problem{}{}.yaml",
                      kind.kind == perception::ObservationKind::graded ? "-graded" : "",
-                     kind.atypical ? "-atypical" : "", kind.lookalike ? "-lookalike" : "");
+                     kind.lookalike ? "-lookalike" : "");
 }
 
 }  // namespace echoplan::experiment

@@ -26,10 +26,9 @@
 namespace echoplan::experiment {
 
 // What an arm's problem depends on besides the world (a dataset world: besides the fold): what it
-// hears and which objects unlike their class it plans with.
+// hears and whether it plans with objects that sound like another class (lookalikes).
 struct ArmProblemKind {
   perception::ObservationKind kind = perception::ObservationKind::labels;
-  bool atypical = false;
   bool lookalike = false;
   friend auto operator<=>(const ArmProblemKind&, const ArmProblemKind&) = default;
 };
@@ -64,9 +63,8 @@ void check_arm_problem(const CampaignConfig& config, const ResolvedArm& arm,
 // arms section of the campaign's identity.
 CampaignArm as_written(const ResolvedArm& arm);
 
-// Some arm plans with atypical objects / lookalikes: every arm's problem then has those copies
-// (with a share of 0 for the arms that do not plan with them).
-bool any_atypical(const std::vector<ResolvedArm>& arms);
+// Some arm plans with lookalikes: every arm's problem then has those copies (with a share of 0 for
+// the arms that do not plan with them).
 bool any_lookalike(const std::vector<ResolvedArm>& arms);
 
 // What campaign.json says each arm ran: name, strategy, solver, budget, leaf, unheard (and whether
@@ -75,7 +73,7 @@ bool any_lookalike(const std::vector<ResolvedArm>& arms);
 nlohmann::json to_json(const ResolvedArm& arm, bool recorded_data);
 
 // The file name of a dataset world's fold problem of that kind:
-// problem[-graded][-atypical][-lookalike].yaml.
+// problem[-graded][-lookalike].yaml.
 std::string fold_problem_name(const ArmProblemKind& kind);
 
 }  // namespace echoplan::experiment

@@ -15,7 +15,7 @@
 #include "common/yaml_reader.h"
 #include "experiment/campaign_arms.h"
 #include "experiment/config_fields.h"
-#include "perception/train_observation_model.h"
+#include "perception/fit_observation_model.h"
 #include "solvers/baseline_strategies.h"
 #include "solvers/leaf_value.h"
 #include "solvers/make_solver.h"
@@ -83,13 +83,6 @@ const std::vector<Field<CampaignArm>>& arm_fields() {
        .member = &CampaignArm::observations,
        .identity = Identity::unless_default,
        .choices = observation_choices},
-      // Left out of the identity at its default: campaigns written before it existed.
-      {.key = "atypical",
-       .member = &CampaignArm::atypical,
-       .identity = Identity::unless_default,
-       .worlds = Worlds::recorded_data,
-       .elsewhere = "only for a dataset world: its folds' models fit the share of objects "
-                    "unlike their class"},
       // Left out of the identity at its default: campaigns written before it existed.
       {.key = "lookalike",
        .member = &CampaignArm::lookalike,
@@ -193,10 +186,15 @@ const std::vector<Field<TrainingSetConfig>>& training_fields() {
        .text = Text::path,
        .elsewhere = kFitsPerFold},
       {.key = "classifier", .member = &T::classifier},
+      // The campaign trains with the reject option, whose `unknown` the shrunk table has no place
+      // for (perception::check_fit_options): counts or soft.
       {.key = "table",
        .member = &T::table,
        .worlds = Worlds::problem_files,
-       .choices = [] { return perception::clip_table_estimate_names(); },
+       .choices =
+           [] {
+             return std::vector<std::string>{"counts", "soft"};
+           },
        .elsewhere = kFitsPerFold},
       {.key = "catalogue",
        .member = &T::catalogue,

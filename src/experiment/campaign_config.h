@@ -48,16 +48,12 @@ struct CampaignArm {
   // simulated world, or any arm of a dataset world).
   std::string observations = "labels";
   perception::ObservationKind observation_kind() const;
-  // A dataset world's arm that plans knowing some objects are unlike their class
-  // (perception/typicality.h): each class has an atypical copy with the share its fold's model
-  // fitted on held-out data (loop/dataset_problem.h). When one arm does, every arm's problem has
-  // the copies (with a share of 0 for the others, which then plan exactly as without them), so
-  // all arms' beliefs name the same states.
-  bool atypical = false;
   // A dataset world's arm that plans knowing some objects sound like another class
   // (perception/typicality.h, lookalikes): each class has a lookalike copy with the share its
-  // fold's model fitted; every arm's problem then has the copies, as with `atypical`. Absent: the
-  // default (campaign_arms.h: with them for a planner sorting novel objects).
+  // fold's model fitted on held-out data (loop/dataset_problem.h). When one arm does, every arm's
+  // problem has the copies (with a share of 0 for the others, which then plan exactly as without
+  // them), so all arms' beliefs name the same states. Absent: the default (campaign_arms.h: with
+  // them for a planner sorting novel objects).
   std::optional<bool> lookalike{};
   // An arm of strategy `plan`: the planner's leaf value (solvers/leaf_value.h: policy, exact, ...);
   // empty: the solver's default for the problem.

@@ -296,7 +296,7 @@ ArmLoops ProblemFileWorld::make_loops(const CampaignConfig& config,
           arms[a].hearing() == perception::ObservationKind::graded ? graded_world : world_problem_;
       if (simulates_) {
         s.world = loop::SimulatedWorldSpec{catalogue_, sim_config_};
-        s.classifier = model_;
+        s.observation_model = model_;
         if (group.object != group.plays) s.world_objects[group.plays] = group.object;
       }
       s.planner = arms[a].planner;

@@ -105,10 +105,9 @@ DatasetFolds open_dataset(const CampaignConfig& config, const std::vector<Resolv
       for (int s : t.folds[f].test_sessions) t.fold_of_session.at(s) = static_cast<int>(f);
   }
   try {
-    t.names = std::make_shared<const pomdp::Problem>(
-        dataset_problem_file(loop::dataset_problem_shape(t.task, *t.data, config.rewards,
-                                                         any_atypical(arms), any_lookalike(arms)),
-                             config.world.data));
+    t.names = std::make_shared<const pomdp::Problem>(dataset_problem_file(
+        loop::dataset_problem_shape(t.task, *t.data, config.rewards, any_lookalike(arms)),
+        config.world.data));
   } catch (const InputError& e) {
     // Only the task can be wrong here (a cost for a behaviour the data does not have).
     throw InputError(config.source, 0, "task." + e.problem());
@@ -151,7 +150,7 @@ std::vector<std::vector<double>> right_shares(const DatasetFolds& trials,
 bool fit_dataset_folds(DatasetFolds& trials, const CampaignConfig& config,
                        const ProgressFn& progress, const std::atomic<bool>& stop) {
   if (!config.world.model.empty()) return true;  // frozen: open_dataset loaded it
-  perception::FeatureModelOptions options;
+  perception::FitOptions options = perception::session_fit_options();
   if (!config.training.classifier.empty()) options.classifier = config.training.classifier;
   trials.models.clear();
   const int folds = static_cast<int>(trials.folds.size());
@@ -162,7 +161,7 @@ bool fit_dataset_folds(DatasetFolds& trials, const CampaignConfig& config,
     for (std::size_t s = 0; s < trials.data->sessions.size(); ++s)
       if (trials.fold_of_session[s] != f) training.push_back(static_cast<int>(s));
     trials.models.push_back(std::make_shared<const perception::ObservationModel>(
-        perception::fit_feature_model(*trials.data, trials.task, training, options)));
+        perception::fit_observation_model(*trials.data, trials.task, training, options)));
   }
   if (progress) progress("fit folds", folds, folds);
   return true;
@@ -177,20 +176,17 @@ pomdp::ObjectProblemData fold_problem(const CampaignConfig& config,
                                       const DatasetFolds& trials, int fold,
                                       const std::vector<int>& uses, const ArmProblemKind& kind) {
   const perception::ObservationModel& model = *trials.models.at(fold);
-  loop::UnlikeTheirClass unlike;
-  if (any_atypical(arms)) unlike.atypical = kind.atypical ? model.atypical_share(kind.kind) : 0.0;
+  std::optional<double> lookalike_share;
   if (any_lookalike(arms))
-    unlike.lookalike = kind.lookalike ? model.lookalike_share(kind.kind) : 0.0;
-  return loop::dataset_problem(trials.task, model, config.rewards, uses, kind.kind, unlike);
+    lookalike_share = kind.lookalike ? model.lookalike_share(kind.kind) : 0.0;
+  return loop::dataset_problem(trials.task, model, config.rewards, uses, kind.kind,
+                               lookalike_share);
 }
 
-// "hear labels", "hear grades and plan with atypical objects and lookalikes", ...
+// "hear labels", "hear grades and plan with lookalikes", ...
 std::string kind_description(const ArmProblemKind& kind) {
-  std::vector<std::string> with;
-  if (kind.atypical) with.push_back("atypical objects");
-  if (kind.lookalike) with.push_back("lookalikes");
-  return fmt::format("hear {}{}{}", perception::observation_kind_name(kind.kind),
-                     with.empty() ? "" : " and plan with ", fmt::join(with, " and "));
+  return fmt::format("hear {}{}", perception::observation_kind_name(kind.kind),
+                     kind.lookalike ? " and plan with lookalikes" : "");
 }
 
 }  // namespace

@@ -23,8 +23,8 @@
 #include "experiment/input_files.h"
 #include "perception/dataset_folds.h"
 #include "perception/dataset_task.h"
-#include "perception/feature_model.h"
 #include "perception/feature_set.h"
+#include "perception/fit_observation_model.h"
 #include "pomdp/problem.h"
 
 namespace echoplan::experiment {
@@ -52,11 +52,11 @@ DatasetFolds open_dataset(const CampaignConfig& config, const std::vector<Resolv
 std::vector<ObjectGroup> dataset_groups(const DatasetFolds& trials);
 
 // The action that sorts each class right, for the report's accuracy (CampaignResults); the
-// copies of a class (atypical, lookalike) have -1: a trial's truth is always a class.
+// lookalike copies of the classes have -1: a trial's truth is always a class.
 std::vector<int> right_actions(const DatasetFolds& trials);
 // Per state of the names problem (classes, then their copies) and action, the chance that the
 // action sorts an object in that state right: (reward - wrong) / (right - wrong) for a sorting
-// action (1 or 0 for a class and its atypical copy, the share of the other classes in the bin for
+// action (1 or 0 for a class, the share of the other classes in the bin for
 // a lookalike), 0 for a sensing action. What the belief at a sort is measured with.
 std::vector<std::vector<double>> right_shares(const DatasetFolds& trials,
                                               const loop::TaskRewards& rewards);

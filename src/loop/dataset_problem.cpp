@@ -9,7 +9,6 @@
 #include <utility>
 
 #include "common/error.h"
-#include "perception/typicality.h"
 
 namespace echoplan::loop {
 
@@ -80,24 +79,10 @@ void add_copy_states(pomdp::ObjectProblemData& data, std::size_t classes, double
   }
 }
 
-// Appends the atypical copy of every class (dataset_problem.h) with share `rho`.
-void add_atypical_copies(pomdp::ObjectProblemData& data, double rho) {
+// Appends the lookalike copy of every class (dataset_problem.h) with share `rho`: heard through
+// its class's rows, sorted as any other class would be.
+void add_lookalike_copies(pomdp::ObjectProblemData& data, double rho) {
   const std::size_t classes = data.objects.size();
-  add_copy_states(data, classes, rho, atypical_name, "the atypical copy of");
-  for (auto& row : data.sorting_reward) {
-    const std::vector<double> of_classes = row;  // vector::insert may not read from itself
-    row.insert(row.end(), of_classes.begin(), of_classes.end());
-  }
-  for (auto& table : data.observation_table) {
-    const std::vector<double> blind = perception::class_blind_row(table);
-    table.insert(table.end(), classes, blind);
-  }
-  pomdp::validate_object_problem(data);
-}
-
-// Appends the lookalike copy of each of the first `classes` objects (dataset_problem.h) with
-// share `rho`: heard through its class's rows, sorted as any other class would be.
-void add_lookalike_copies(pomdp::ObjectProblemData& data, std::size_t classes, double rho) {
   add_copy_states(data, classes, rho, lookalike_name, "the lookalike of");
   for (auto& row : data.sorting_reward) {
     double total = 0.0;
@@ -113,18 +98,9 @@ void add_lookalike_copies(pomdp::ObjectProblemData& data, std::size_t classes, d
   pomdp::validate_object_problem(data);
 }
 
-// The copies of `unlike` after the classes: atypical ones, then lookalikes.
-void add_copies(pomdp::ObjectProblemData& data, const UnlikeTheirClass& unlike) {
-  const std::size_t classes = data.objects.size();
-  if (unlike.atypical) add_atypical_copies(data, *unlike.atypical);
-  if (unlike.lookalike) add_lookalike_copies(data, classes, *unlike.lookalike);
-}
-
 }  // namespace
 
 std::string lookalike_name(const std::string& name) { return name + "~lookalike"; }
-
-std::string atypical_name(const std::string& name) { return name + "~atypical"; }
 
 double TaskRewards::sensing_reward(const std::string& behaviour) const {
   const auto priced = costs.find(behaviour);
@@ -135,7 +111,7 @@ pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
                                          const perception::ObservationModel& model,
                                          const TaskRewards& rewards, std::vector<int> uses,
                                          perception::ObservationKind kind,
-                                         const UnlikeTheirClass& unlike) {
+                                         std::optional<double> lookalike_share) {
   if (model.classes() != task.classes || model.reject())
     throw InputError(fmt::format(
         "the model's classes ({}{}) are not the task's ({}): a dataset problem needs a model "
@@ -147,14 +123,13 @@ pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
     table.push_back(model.observation_table(action, kind));
   pomdp::ObjectProblemData data = problem_of(task, model.actions(), model.observation_symbols(kind),
                                              table, rewards, std::move(uses));
-  add_copies(data, unlike);
+  if (lookalike_share) add_lookalike_copies(data, *lookalike_share);
   return data;
 }
 
 pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& task,
                                                const perception::FeatureSet& set,
-                                               const TaskRewards& rewards, bool atypical,
-                                               bool lookalike) {
+                                               const TaskRewards& rewards, bool lookalike) {
   std::vector<std::string> actions;
   for (const perception::ActionData& action : set.actions) actions.push_back(action.name);
   const std::size_t classes = task.classes.size();
@@ -162,10 +137,7 @@ pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& ta
                                           classes, std::vector<double>(classes, 1.0 / classes)));
   pomdp::ObjectProblemData data =
       problem_of(task, actions, task.classes, uniform, rewards, default_uses(set));
-  UnlikeTheirClass unlike;
-  if (atypical) unlike.atypical = 0.5;
-  if (lookalike) unlike.lookalike = 0.5;
-  add_copies(data, unlike);
+  if (lookalike) add_lookalike_copies(data, 0.5);
   return data;
 }
 

@@ -41,40 +41,26 @@ struct TaskRewards {
 // negative, when `rewards.costs` prices a behaviour the model does not have, or when the model's
 // classes are not the task's (or it rejects), or `kind` is graded and the model has no grades.
 //
-// With `unlike.atypical` rho, objects unlike their class are hidden states too
-// (perception/typicality.h): after the classes come their atypical copies, named
-// atypical_name(class), with the prior (1 - rho) / K for each class and rho / K for each copy
-// (usually the model's atypical_share(kind); 0 plans exactly as without copies), the same sorting
-// rewards as their class, and as observation rows the action's class-blind row (the mean of its
-// class rows).
-//
-// With `unlike.lookalike` rho, objects that sound like another class are hidden states too
-// (perception/typicality.h, lookalikes): after the classes (and their atypical copies) comes a
-// lookalike copy of every class j, named lookalike_name(j): "sounds like j, is another class". Its
-// prior is rho times j's (j keeps 1 - rho of it), its observation rows are j's, and its sorting
-// reward is the mean of the other classes' (the class it really is is any other, equally likely).
-// However clearly an object sounds like j, the belief that it is j then stays below about 1 - rho.
-struct UnlikeTheirClass {
-  std::optional<double> atypical;   // the share of atypical copies; none: no copies
-  std::optional<double> lookalike;  // the share of lookalike copies; none: no copies
-};
-
+// With a lookalike share rho, objects that sound like another class are hidden states too
+// (perception/typicality.h): after the classes comes a lookalike copy of every class j, named
+// lookalike_name(j): "sounds like j, is another class". Its prior is rho times j's (j keeps 1 - rho
+// of it), its observation rows are j's, and its sorting reward is the mean of the other classes'
+// (the class it really is is any other, equally likely). However clearly an object sounds like j,
+// the belief that it is j then stays below about 1 - rho. Usually rho is the model's
+// lookalike_share(kind); 0 plans exactly as without copies; none: no copies.
 pomdp::ObjectProblemData dataset_problem(
     const perception::DatasetTask& task, const perception::ObservationModel& model,
     const TaskRewards& rewards, std::vector<int> uses,
     perception::ObservationKind kind = perception::ObservationKind::labels,
-    const UnlikeTheirClass& unlike = {});
+    std::optional<double> lookalike_share = std::nullopt);
 
 // The same problem's shape, with every observation row uniform and default_uses(set): its names
-// (classes, their atypical copies with `atypical` and lookalike copies with `lookalike`, actions,
-// bins, symbols) before any model is fitted, e.g. for a campaign's report.
+// (classes, their lookalike copies with `lookalike`, actions, bins, symbols) before any model is
+// fitted, e.g. for a campaign's report.
 pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& task,
                                                const perception::FeatureSet& set,
-                                               const TaskRewards& rewards, bool atypical = false,
-                                               bool lookalike = false);
+                                               const TaskRewards& rewards, bool lookalike = false);
 
-// The hidden state of an object of class `name` unlike its class: "<name>~atypical".
-std::string atypical_name(const std::string& name);
 // The hidden state of an object that sounds like class `name` and is another: "<name>~lookalike".
 std::string lookalike_name(const std::string& name);
 // Per action of `set`: the most performances of that action in any one session (a trial can

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "loop/world.h"
-#include "perception/feature_model.h"
 #include "perception/feature_set.h"
 #include "perception/observation_model.h"
+#include "perception/performance_reader.h"
 #include "pomdp/object_identification_model.h"
 
 namespace echoplan::loop {

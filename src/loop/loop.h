@@ -1,7 +1,7 @@
 // The closed loop, assembled once: what `echoplan run`, `echoplan trials`, the ROS planner node and
 // a campaign's workers all call.
 //
-//   LoopSettings settings;  // the problem, the world, the classifier, the planner
+//   LoopSettings settings;  // the problem, the world, the observation model, the planner
 //   auto spec = std::make_shared<const LoopSpec>(std::move(settings));  // checked: InputError now
 //   Loop loop(spec);        // a world and a planner of its own (one per thread)
 //   std::optional<Trial> trial = loop.run({.index = 0, .object = 2, .seed = 7}, print_step);
@@ -33,7 +33,8 @@ struct LoopSettings {
   // A campaign's calibrated arm plans on its own table in the world problem's world.
   std::shared_ptr<const pomdp::Problem> world_problem;
   WorldSpec world = TableWorldSpec{};
-  std::shared_ptr<const perception::ObservationModel> classifier;  // simulator and replay worlds
+  std::shared_ptr<const perception::ObservationModel>
+      observation_model;  // simulator and replay worlds
   // The world's object when a problem object is the truth (e.g. coffee_mug -> coffee_mug_weighted).
   std::map<std::string, std::string> world_objects;
   solvers::PlannerOverrides planner;  // the solver and budget; empty fields: the problem file's

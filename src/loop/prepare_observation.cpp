@@ -24,7 +24,7 @@ bool complete(const SimulatedTraining& training) {
 
 // Trains on `recordings` and saves the model to `save_to` (when named); null when stopped.
 std::shared_ptr<const perception::ObservationModel> train(const std::string& recordings,
-                                                          const perception::TrainOptions& options,
+                                                          const perception::FitOptions& options,
                                                           const std::string& save_to,
                                                           const ProgressFn& progress,
                                                           const std::atomic<bool>& stop) {

@@ -28,7 +28,7 @@ struct ModelFile {
 // Recordings DIR/<object>/<action>/*.wav (and DIR/manifest.csv) to train on.
 struct RecordingsTraining {
   std::string recordings;
-  perception::TrainOptions train;
+  perception::FitOptions train;
   std::string save_to;  // non-empty: the trained model is saved there for the user
 };
 
@@ -43,7 +43,7 @@ struct SimulatedTraining {
   int per_pair = 10;                 // recordings per (object, action); the report used 10
   std::uint64_t seed = 0;            // the dataset's seed (sim::write_simulated_recordings)
   std::filesystem::path directory;   // where the recordings are written
-  perception::TrainOptions train;
+  perception::FitOptions train;
   bool reuse_complete = false;
   std::string save_to;  // non-empty: the trained model is saved there for the user
 };

@@ -90,19 +90,20 @@ WorldFactory make_world_factory(WorldInputs in) {
       return std::make_unique<DatasetWorld>(object_problem(*problem), spec);
     };
   }
-  if (!in.classifier) throw std::invalid_argument("make_world_factory: no observation model");
+  if (!in.observation_model)
+    throw std::invalid_argument("make_world_factory: no observation model");
   const pomdp::ObjectProblemData& data = object_problem(*in.problem).data();
-  auto classifier = in.classifier;
+  auto model = in.observation_model;
   std::function<RobotParts()> make_parts;
   if (const auto* simulated = std::get_if<SimulatedWorldSpec>(&in.spec)) {
     check_simulator(in, *simulated, data);
     const SimulatedWorldSpec spec = *simulated;
     const std::vector<std::string> sorting = data.sorting;
-    make_parts = [spec, sorting, classifier] {
+    make_parts = [spec, sorting, model] {
       auto world = std::make_shared<robot::SimulatedWorld>(*spec.catalogue, *spec.config, sorting);
       return RobotParts{std::make_unique<robot::SimulatedArm>(world),
                         std::make_unique<robot::SimulatedMicrophone>(world),
-                        std::make_unique<robot::ClassifierService>(classifier),
+                        std::make_unique<robot::ClassifierService>(model),
                         RecordingChecks{}};  // exact recordings: no level or length checks
     };
   } else {
@@ -112,10 +113,10 @@ WorldFactory make_world_factory(WorldInputs in) {
     for (const std::string& object : data.objects)
       for (const auto& act : data.sensing) replay->check(world_object(in, object), act.name);
     const std::vector<std::string> actions = in.problem->spec().action_names;
-    make_parts = [replay, actions, classifier] {
+    make_parts = [replay, actions, model] {
       return RobotParts{std::make_unique<robot::ReplayRobot>(actions),
                         std::make_unique<robot::ReplayRecorder>(*replay),
-                        std::make_unique<robot::ClassifierService>(classifier),
+                        std::make_unique<robot::ClassifierService>(model),
                         RecordingChecks{}};  // recorded files: heard as they are
     };
   }

@@ -54,7 +54,8 @@ std::string world_name(const WorldSpec& world);
 struct WorldInputs {
   WorldSpec spec;
   pomdp::ModelPtr problem;  // scores the world: rewards, observation symbols, the table world's
-  std::shared_ptr<const perception::ObservationModel> classifier;  // simulator and replay worlds
+  std::shared_ptr<const perception::ObservationModel>
+      observation_model;  // simulator and replay worlds
   // The world's object when a problem object is the truth (e.g. coffee_mug -> coffee_mug_weighted);
   // objects not listed are themselves. A table world plays the problem object.
   std::map<std::string, std::string> world_objects;

@@ -58,6 +58,12 @@ const std::map<std::string, std::string>& classifier_aliases() {
   return aliases;
 }
 
+bool is_audio_preset(std::string_view name) {
+  const auto names = classifier_names();
+  return std::find(names.begin(), names.end(), name) != names.end() ||
+         classifier_aliases().count(std::string(name)) > 0;
+}
+
 std::unique_ptr<Classifier> make_classifier(std::string_view name) {
   if (const auto alias = classifier_aliases().find(std::string(name));
       alias != classifier_aliases().end())

@@ -68,6 +68,9 @@ std::vector<std::string> classifier_names();
 // files and scripts written with them keep working.
 const std::map<std::string, std::string>& classifier_aliases();
 
+// `name` is an audio preset or one of its aliases (else, perhaps, a row classifier).
+bool is_audio_preset(std::string_view name);
+
 // A new unfitted audio classifier, by preset name or alias (its name() is always the current one).
 // Throws InputError listing the names for an unknown one.
 std::unique_ptr<Classifier> make_classifier(std::string_view name);

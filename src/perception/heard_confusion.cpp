@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "perception/evaluate_observation_model.h"
-#include "perception/train_observation_model.h"
+#include "perception/fit_observation_model.h"
 
 namespace echoplan::perception {
 
@@ -13,7 +13,7 @@ namespace {
 // off); its calibration keeps the counts, and the model itself is fitted on every recording.
 ObservationModel leave_one_out(const RecordingSet& set, const std::string& classifier,
                                const AnalysisSettings& analysis, const ProgressFn& progress) {
-  TrainOptions options;
+  FitOptions options;
   options.classifier = classifier;
   options.analysis = analysis;
   options.reject = false;

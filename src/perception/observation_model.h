@@ -3,14 +3,12 @@
 // extractor, or rows a sensor gives), their fusion weights and calibration, and the table
 // P(o | object, action) the planner plans with.
 //
-// Two recipes fit it (both in perception/): from clips, each recording a unit of cross-validation
-// (train_observation_model.h: one audio modality, temperature, reject option, counts or soft
-// table); from sessions, each exploration of an object a unit (fit_feature_model in
-// feature_model.h: any modalities fused, the table shrunk and tempered for correlated repeats).
-// Either way the result is this class and one file (observation_model_json.h).
+// One pipeline fits it on any recorded data, a recordings tree or a feature set, its choices
+// options (fit_observation_model.h); the result is this class and one file
+// (observation_model_json.h).
 //
-// This header holds the model and its classification. Training it (cross-validation and
-// calibration) is train_observation_model.h, its JSON file observation_model_json.h, and held-out
+// This header holds the model and its classification. Fitting it (cross-validation and
+// calibration) is fit_observation_model.h, its JSON file observation_model_json.h, and held-out
 // evaluation evaluate_observation_model.h; they are included at the end of this header so code that
 // includes only this one keeps compiling.
 #pragma once
@@ -43,20 +41,15 @@ struct ModelDescription {
   bool reject = true;  // the `unknown` symbol and a reject threshold per action
   double dirichlet_alpha = 1.0;
   TableEstimate table_estimate = TableEstimate::counts;
-  // The share of objects unlike their class (typicality.h), per observation kind: what a dataset
-  // problem's atypical copies of the classes start with. 0 (none) for the clips recipe and in
-  // files without it.
-  double atypical_share = 0.0;
-  double graded_atypical_share = 0.0;
   // The share of objects that sound like another class (typicality.h, lookalikes), per kind: what
-  // a dataset problem's lookalike copies start with. 0 (none) for the clips recipe and in files
-  // without it.
+  // a dataset problem's lookalike copies start with. 0 (none) for a model cross-validated by
+  // performance and in files without it.
   double lookalike_share = 0.0;
   double graded_lookalike_share = 0.0;
 };
 
-// What session-grouped (inner) cross-validation measured about one action of a model fitted on
-// sessions: for reports and the fusion claim.
+// What cross-validation measured about one action: for reports and the fusion claim. Absent in
+// model files written before every model had it.
 struct ActionFit {
   std::vector<double> modality_accuracy;  // held-out accuracy of each modality alone
   std::vector<double> modality_nll;       // its held-out mean NLL (temperature-calibrated)
@@ -74,7 +67,7 @@ struct ActionCalibration {
   double reject_threshold = 0.0;           // infinity when reject is off
   ConfusionMatrix confusion;               // cross-validated counts, objects x symbols
   std::vector<std::vector<double>> table;  // P(symbol | object), the model's table_estimate()
-  std::optional<ActionFit> fit;            // models fitted on sessions
+  std::optional<ActionFit> fit;
   // Graded observations (observation_grades.h): the grades and P(graded symbol | object). Absent in
   // a model file written before grades existed: such a model serves labels only.
   std::optional<GradeCalibration> grades;
@@ -114,11 +107,6 @@ class ObservationModel {
   bool reject() const { return description_.reject; }
   double dirichlet_alpha() const { return description_.dirichlet_alpha; }
   TableEstimate table_estimate() const { return description_.table_estimate; }
-  // The share of objects unlike their class for observations of `kind` (ModelDescription).
-  double atypical_share(ObservationKind kind) const {
-    return kind == ObservationKind::graded ? description_.graded_atypical_share
-                                           : description_.atypical_share;
-  }
   // The share of objects that sound like another class, for observations of `kind`.
   double lookalike_share(ObservationKind kind) const {
     return kind == ObservationKind::graded ? description_.graded_lookalike_share
@@ -173,5 +161,5 @@ std::vector<std::string> observation_symbols(const ModelDescription& description
 // Forwarding includes: training, the model file and evaluation, for code that includes only this
 // header (after the class, since each of them includes this header).
 #include "perception/evaluate_observation_model.h"
+#include "perception/fit_observation_model.h"
 #include "perception/observation_model_json.h"
-#include "perception/train_observation_model.h"

@@ -91,9 +91,6 @@ nlohmann::json observation_model_to_json(const ObservationModel& model) {
           {"reject", model.reject()},
           {"dirichlet_alpha", model.dirichlet_alpha()},
           {"table_estimate", table_estimate_name(model.table_estimate())},
-          {"atypical_share",
-           {{"labels", model.atypical_share(ObservationKind::labels)},
-            {"graded", model.atypical_share(ObservationKind::graded)}}},
           {"lookalike_share",
            {{"labels", model.lookalike_share(ObservationKind::labels)},
             {"graded", model.lookalike_share(ObservationKind::graded)}}},
@@ -152,16 +149,11 @@ AnalysisSettings read_analysis(const nlohmann::json& doc, const std::string& sou
   return s;
 }
 
-bool is_audio_preset(const std::string& name) {
-  const auto names = classifier_names();
-  return std::find(names.begin(), names.end(), name) != names.end() ||
-         classifier_aliases().count(name) > 0;
-}
-
 // Everything but the per-action entries; the classifier name is checked against the registry,
 // and an old name (classifier_aliases()) becomes the current one.
-// A share of objects `key` (`atypical_share`, `lookalike_share`): {labels, graded}, each in
-// [0, kMostAtypical]. Absent in files written before such objects were modelled: none.
+// A share of objects `key` (`lookalike_share`): {labels, graded}, each in [0, kLargestShare].
+// Absent in files written before such objects were modelled: none. (Files that also hold an
+// `atypical_share`, written when the class-blind copies existed, read as ever: it is ignored.)
 void read_shares(const nlohmann::json& doc, const char* key, const std::string& source,
                  double& labels, double& graded) {
   if (!doc.contains(key)) return;
@@ -169,9 +161,9 @@ void read_shares(const nlohmann::json& doc, const char* key, const std::string& 
   const auto share = [&](const char* kind) {
     const std::string where = std::string(key) + "." + kind;
     const double rho = jf::number(jf::member(shares, kind, key, source), where, source);
-    if (!(rho >= 0.0 && rho <= kMostAtypical))
+    if (!(rho >= 0.0 && rho <= kLargestShare))
       throw InputError(source, 0,
-                       fmt::format("{}: {} is not in [0, {}]", where, rho, kMostAtypical));
+                       fmt::format("{}: {} is not in [0, {}]", where, rho, kLargestShare));
     return rho;
   };
   labels = share("labels");
@@ -193,7 +185,6 @@ ModelDescription read_description(const nlohmann::json& doc, const std::string& 
                                  classifier, fmt::join(classifier_names(), ", "),
                                  fmt::join(row_classifier_names(), ", ")));
   }
-  read_shares(doc, "atypical_share", source, d.atypical_share, d.graded_atypical_share);
   read_shares(doc, "lookalike_share", source, d.lookalike_share, d.graded_lookalike_share);
   d.classes = jf::names(jf::member(doc, "classes", "", source), -1, "classes", source);
   if (d.classes.size() < 2)

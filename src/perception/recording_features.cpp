@@ -5,7 +5,7 @@
 
 #include "common/error.h"
 #include "common/file_io.h"
-#include "perception/summary_features.h"
+#include "perception/clip_extractor.h"
 
 namespace echoplan::perception {
 
@@ -21,13 +21,14 @@ std::string session_of(const Recording& r, const RecordingSet& set) {
 }  // namespace
 
 FeatureSet feature_set_from_recordings(const RecordingSet& set, const AnalysisSettings& settings,
-                                       const ProgressFn& progress) {
+                                       const ProgressFn& progress, std::string_view extractor) {
+  const ClipExtractor& rows_of = clip_extractor(extractor);
   FeatureSet features;
   features.root = set.root;
   features.objects = set.objects;
   for (const std::string& action : set.actions)
     features.actions.push_back(
-        {action, {}, {Modality{"audio", summary_feature_names(), {}, "summary"}}});
+        {action, {}, {Modality{"audio", rows_of.feature_names(), {}, rows_of.name}}});
   ClipAnalyzer analyzer(settings);
   ClipAnalysis analysis;
   for (std::size_t i = 0; i < set.recordings.size(); ++i) {
@@ -37,8 +38,12 @@ FeatureSet feature_set_from_recordings(const RecordingSet& set, const AnalysisSe
         std::find(set.actions.begin(), set.actions.end(), r.action) - set.actions.begin())];
     action.rows.push_back({object, features.add_session(object, session_of(r, set))});
     analyzer.analyse(read_recording(r.path, settings.sample_rate), r.path, analysis);
-    const auto summary = summary_features(analysis);
-    action.modalities.front().rows.emplace_back(summary.begin(), summary.end());
+    Modality& audio = action.modalities.front();
+    audio.rows.push_back(rows_of.extract(analysis));
+    // An extractor whose row length follows the analysis names its features by their place.
+    if (audio.feature_names.empty())
+      for (std::size_t f = 1; f <= audio.rows.back().size(); ++f)
+        audio.feature_names.push_back("f" + std::to_string(f));
     if (progress)
       progress("analyse", static_cast<int>(i + 1), static_cast<int>(set.recordings.size()));
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "common/progress.h"
 #include "perception/clip_analysis.h"
@@ -12,15 +13,18 @@
 namespace echoplan::perception {
 
 // The feature set of `set`: its objects and actions in set order, one modality "audio" per action
-// whose rows are the action's recordings in set order and whose features are the summary features
-// the default classifier (summary-lda) embeds: summary_features() of each clip analysed with
-// `settings`, named by summary_feature_names(). A recording's session is its manifest `session`;
-// when that is empty (no session column, or no manifest) each recording is its own session, named
-// by its path relative to the set's folder. Throws InputError naming a recording that is not
-// readable audio. `progress` (optional) hears ("analyse", done, total) per recording.
+// whose rows are the action's recordings in set order, each clip analysed with `settings` and
+// turned into a row by the clip extractor `extractor` (clip_extractor.h; "summary", the default
+// classifier's, by default), whose name the modality keeps, so a model fitted on it classifies live
+// clips the same way. Feature names are the extractor's (f1, f2, ... where it has none). A
+// recording's session is its manifest `session`; when that is empty (no session column, or no
+// manifest) each recording is its own session, named by its path relative to the set's folder.
+// Throws InputError naming a recording that is not readable audio, or listing the extractors for an
+// unknown one. `progress` (optional) hears ("analyse", done, total) per recording.
 FeatureSet feature_set_from_recordings(const RecordingSet& set,
                                        const AnalysisSettings& settings = {},
-                                       const ProgressFn& progress = {});
+                                       const ProgressFn& progress = {},
+                                       std::string_view extractor = "summary");
 
 // What a data folder holds: a recordings tree (DIR/manifest.csv, or folders two levels down,
 // DIR/<object>/<action>/) or a feature set (anything else; load_feature_set says what is wrong

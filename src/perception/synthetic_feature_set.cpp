@@ -26,12 +26,12 @@ void check_spec(const SyntheticSpec& spec) {
     if (m.features < 1 || m.name.empty())
       throw InputError("every synthetic modality needs a name and at least one feature");
   if (spec.group_size < 0) throw InputError("the group size cannot be negative");
-  if (!(spec.atypical_share >= 0 && spec.atypical_share <= 1) ||
-      !(spec.atypical_pull >= 0 && spec.atypical_pull <= 1))
-    throw InputError(fmt::format("the atypical share ({}) and pull ({}) must lie in [0, 1]",
-                                 spec.atypical_share, spec.atypical_pull));
-  if (spec.atypical_share > 0 && (spec.group_size < 1 || spec.objects <= spec.group_size))
-    throw InputError("atypical objects look like another group: they need at least two groups");
+  if (!(spec.lookalike_share >= 0 && spec.lookalike_share <= 1) ||
+      !(spec.lookalike_pull >= 0 && spec.lookalike_pull <= 1))
+    throw InputError(fmt::format("the lookalike share ({}) and pull ({}) must lie in [0, 1]",
+                                 spec.lookalike_share, spec.lookalike_pull));
+  if (spec.lookalike_share > 0 && (spec.group_size < 1 || spec.objects <= spec.group_size))
+    throw InputError("lookalike objects look like another group: they need at least two groups");
 }
 
 int group_count(const SyntheticSpec& spec) {
@@ -55,12 +55,12 @@ std::vector<int> synthetic_lookalikes(const SyntheticSpec& spec) {
   std::vector<int> lookalike(static_cast<std::size_t>(spec.objects));
   for (int o = 0; o < spec.objects; ++o)
     lookalike[static_cast<std::size_t>(o)] = spec.group_size > 0 ? o / spec.group_size : 0;
-  if (spec.atypical_share <= 0) return lookalike;
+  if (spec.lookalike_share <= 0) return lookalike;
   std::mt19937_64 rng(spec.seed + 1);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::uniform_int_distribution<int> other(1, group_count(spec) - 1);
   for (int& group : lookalike) {
-    const bool atypical = uniform(rng) < spec.atypical_share;
+    const bool atypical = uniform(rng) < spec.lookalike_share;
     const int shift = other(rng);  // drawn for every object, so the draws keep one order
     if (atypical) group = (group + shift) % group_count(spec);
   }
@@ -99,7 +99,7 @@ void write_synthetic_feature_set(const fs::path& dir, const SyntheticSpec& spec)
           const auto session = draw(1)[0];
           const int g = spec.group_size > 0 ? o / spec.group_size : 0;
           const int h = lookalike[static_cast<std::size_t>(o)];
-          const double pull = h == g ? 0.0 : spec.atypical_pull;
+          const double pull = h == g ? 0.0 : spec.lookalike_pull;
           for (int r = 0; r < spec.repeats; ++r) {
             out << synthetic_object_name(o) << ",s" << s;
             for (int j = 0; j < m.features; ++j)

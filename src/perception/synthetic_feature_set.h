@@ -9,7 +9,7 @@
 // repeats) plus a standard normal. A modality with separation 0 and group_separation 0 is pure
 // noise; actions with different scales differ in how informative they are.
 //
-// Atypical objects (atypical_share > 0, with groups): a share of the objects look like another
+// Atypical objects (lookalike_share > 0, with groups): a share of the objects look like another
 // group in every action at once, as a real object unlike its category does (a weighted can, a
 // foam-filled bottle): their group term is (1 - pull) G[group(o)] + pull G[lookalike(o)], the same
 // lookalike group for all actions. So their errors are correlated across behaviours, which the
@@ -40,8 +40,8 @@ struct SyntheticSpec {
   int group_size = 0;  // objects per group (object o is in group o / group_size); 0: no groups
   double group_separation = 0.0;
   double session_sd = 0.0;
-  double atypical_share = 0.0;  // in [0, 1]: the chance that an object is atypical
-  double atypical_pull = 0.6;   // in [0, 1]: how far towards its lookalike group it sits
+  double lookalike_share = 0.0;  // in [0, 1]: the chance that an object looks like another group
+  double lookalike_pull = 0.6;   // in [0, 1]: how far towards its lookalike group it sits
   unsigned long long seed = 1;
 };
 

@@ -17,54 +17,26 @@ struct Performance {
   int symbol = 0;
 };
 
-// log(exp(a) + exp(b)), stably.
-double log_add(double a, double b) {
-  const double top = std::max(a, b);
-  if (top == -INFINITY) return top;
-  return top + std::log(std::exp(a - top) + std::exp(b - top));
-}
-
-// A sequence's log-likelihoods that do not depend on rho: per class, log prod_i P_ai(o_i | k);
-// and the class-blind log prod_i m_ai(o_i).
+// A sequence's log-likelihoods, which do not depend on rho: per class, log prod_i P_ai(o_i | k).
 struct ScoredSequence {
-  std::vector<double> log_typical;
-  double log_blind = 0.0;
+  std::vector<double> log_likelihood;
   int true_class = 0;
 };
 
 std::vector<ScoredSequence> score(std::span<const Table> tables,
                                   std::span<const Sequence> sequences) {
-  std::vector<std::vector<double>> blind;
-  for (const Table& table : tables) blind.push_back(class_blind_row(table));
   const std::size_t classes = tables.front().size();
   std::vector<ScoredSequence> scored;
   for (const Sequence& sequence : sequences) {
-    ScoredSequence s{std::vector<double>(classes, 0.0), 0.0, sequence.true_class};
+    ScoredSequence s{std::vector<double>(classes, 0.0), sequence.true_class};
     for (std::size_t i = 0; i < sequence.symbols.size(); ++i) {
       const auto t = static_cast<std::size_t>(sequence.tables.at(i));
       const auto o = static_cast<std::size_t>(sequence.symbols[i]);
-      for (std::size_t c = 0; c < classes; ++c) s.log_typical[c] += std::log(tables[t][c][o]);
-      s.log_blind += std::log(blind[t][o]);
+      for (std::size_t c = 0; c < classes; ++c) s.log_likelihood[c] += std::log(tables[t][c][o]);
     }
     scored.push_back(std::move(s));
   }
   return scored;
-}
-
-// Sum of -log P(true class | sequence) under the mixture with share rho, uniform class prior.
-double mixture_nll(const std::vector<ScoredSequence>& scored, double rho) {
-  const double log_typical = std::log1p(-rho);
-  const double log_atypical = rho > 0 ? std::log(rho) : -INFINITY;
-  double total = 0.0;
-  for (const ScoredSequence& s : scored) {
-    const double blind = log_atypical + s.log_blind;
-    double log_evidence = -INFINITY;
-    for (double l : s.log_typical)
-      log_evidence = log_add(log_evidence, log_add(log_typical + l, blind));
-    total += log_evidence -
-             log_add(log_typical + s.log_typical[static_cast<std::size_t>(s.true_class)], blind);
-  }
-  return total;
 }
 
 }  // namespace
@@ -112,18 +84,6 @@ std::vector<Sequence> whole_session_sequences(std::span<const HeldOutPerformance
   return whole;
 }
 
-std::vector<double> class_blind_row(const Table& table) {
-  std::vector<double> row(table.front().size(), 0.0);
-  for (const auto& r : table)
-    for (std::size_t o = 0; o < row.size(); ++o) row[o] += r[o] / static_cast<double>(table.size());
-  return row;
-}
-
-double typicality_nll(std::span<const Table> tables, double rho,
-                      std::span<const Sequence> sequences) {
-  return mixture_nll(score(tables, sequences), rho);
-}
-
 namespace {
 
 // Per sequence, the posterior of its true class without lookalikes, L(true) / sum_j L(j) (uniform
@@ -136,12 +96,12 @@ struct TruthPosterior {
 std::vector<TruthPosterior> truth_posteriors(const std::vector<ScoredSequence>& scored) {
   std::vector<TruthPosterior> posteriors;
   for (const ScoredSequence& s : scored) {
-    const double top = *std::max_element(s.log_typical.begin(), s.log_typical.end());
+    const double top = *std::max_element(s.log_likelihood.begin(), s.log_likelihood.end());
     double evidence = 0.0;
-    for (double l : s.log_typical) evidence += std::exp(l - top);
+    for (double l : s.log_likelihood) evidence += std::exp(l - top);
     posteriors.push_back(
-        {std::exp(s.log_typical[static_cast<std::size_t>(s.true_class)] - top) / evidence,
-         static_cast<double>(s.log_typical.size())});
+        {std::exp(s.log_likelihood[static_cast<std::size_t>(s.true_class)] - top) / evidence,
+         static_cast<double>(s.log_likelihood.size())});
   }
   return posteriors;
 }
@@ -157,10 +117,10 @@ double lookalike_nll(const std::vector<TruthPosterior>& posteriors, double rho) 
   return total;
 }
 
-// The share in [0, kMostAtypical] minimising `nll`, or 0 when none lowers it.
+// The share in [0, kLargestShare] minimising `nll`, or 0 when none lowers it.
 template <class Nll>
 double fit_share(const Nll& nll) {
-  const double rho = golden_section_minimum(nll, 0.0, kMostAtypical);
+  const double rho = golden_section_minimum(nll, 0.0, kLargestShare);
   // The search never evaluates the end points; keep 0 (the tables as they are) unless rho helps.
   return nll(rho) < nll(0.0) ? rho : 0.0;
 }
@@ -186,16 +146,9 @@ double lookalike_nll(std::span<const Table> tables, double rho,
 double fit_lookalike_share(std::span<const HeldOutPerformances> actions) {
   const std::vector<ScoredSequence> scored =
       scored_sequences(actions, whole_session_sequences(actions));
-  if (scored.empty() || scored.front().log_typical.size() < 2) return 0.0;
+  if (scored.empty() || scored.front().log_likelihood.size() < 2) return 0.0;
   const std::vector<TruthPosterior> posteriors = truth_posteriors(scored);
   return fit_share([&](double rho) { return lookalike_nll(posteriors, rho); });
-}
-
-double fit_atypical_share(std::span<const HeldOutPerformances> actions) {
-  const std::vector<ScoredSequence> scored =
-      scored_sequences(actions, cross_behaviour_sequences(actions));
-  if (scored.empty()) return 0.0;
-  return fit_share([&](double rho) { return mixture_nll(scored, rho); });
 }
 
 }  // namespace echoplan::perception

@@ -56,7 +56,7 @@ PY
 # Bad input: exit 2 with a message naming the problem.
 expect_input_error "missing data" "does not exist" train --data "$work/nope" --out "$work/m.json"
 expect_input_error "unknown classifier" "classifier" train --data "$work/data" --out "$work/m.json" --classifier magic
-expect_input_error "unknown table estimate" "--table: hard not in {counts,soft}" train --data "$work/data" --out "$work/m.json" --table hard
+expect_input_error "unknown table estimate" "--table: hard not in {counts,soft,shrunk}" train --data "$work/data" --out "$work/m.json" --table hard
 expect_input_error "problem base of another kind" "not an object-identification problem" train --data "$work/held" \
   --out "$work/m.json" --problem-out "$work/p.yaml" --problem-base "$src/problems/tiger.pomdp"
 mkdir -p "$work/two" && cp -r "$work/held/coffee_mug" "$work/held/plastic_cup" "$work/two/"

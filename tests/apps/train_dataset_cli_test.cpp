@@ -116,14 +116,23 @@ TEST(TrainDatasetCli, BadInputExitsWithTwoAndSaysWhy) {
   r = run("train" + data + " --groups '" + partial.string() + "' --out model.json");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("'obj1'"), std::string::npos) << r.err;
-  // An option of the other recipe is named, not ignored.
-  r = run("train" + data + " --out /tmp/x.json --no-reject");
+  // Every option is open to every kind of data; a combination without meaning is named.
+  r = run("train" + data + " --out /tmp/x.json --reject --table counts");
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("--no-reject is an option of the clips recipe"), std::string::npos) << r.err;
-  r = run("train" + data + " --recipe clips --out /tmp/x.json --hold-out object");
-  EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("--hold-out is an option of the sessions recipe"), std::string::npos)
+  EXPECT_NE(r.err.find("the reject option needs one modality per action"), std::string::npos)
       << r.err;
+  r = run("train" + data + " --out /tmp/x.json --cross-validation performance --temper");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("tempering fits how a session's repeats err together"), std::string::npos)
+      << r.err;
+  r = run("train" + data + " --out /tmp/x.json --cross-validation performance --table shrunk");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("turn the reject option off"), std::string::npos) << r.err;
+  r = run("train" + data +
+          " --problem-out /tmp/x.yaml --problem-base problems/audio_objects.yaml "
+          "--reward-right 5");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--reward-right prices the data's own problem"), std::string::npos) << r.err;
 }
 
 }  // namespace

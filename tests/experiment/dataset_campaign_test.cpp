@@ -175,22 +175,21 @@ TEST(DatasetCampaign, HoldingOutObjectsSortsNovelObjectsByGroup) {
   }
 }
 
-// One arm planning with objects unlike their class: every arm's problem names the atypical copies
-// (so all beliefs name the same states), the other arms' copies have no prior and they decide
-// exactly as in a campaign without that arm, and each kind of arm has its fold problem.
-TEST(DatasetCampaign, AnArmWithAtypicalObjectsLeavesTheOtherArmsAsTheyWere) {
-  const fs::path data = separable_data("dataset_atypical");
-  auto config = [&](bool with_atypical) {
+// One arm planning with lookalikes: every arm's problem names the copies (so all beliefs name the
+// same states), the other arms' copies have no prior and they decide exactly as in a campaign
+// without that arm, and each kind of arm has its fold problem.
+TEST(DatasetCampaign, AnArmWithLookalikesLeavesTheOtherArmsAsTheyWere) {
+  const fs::path data = separable_data("dataset_with_lookalike_arm");
+  auto config = [&](bool with_lookalike) {
     std::string arms = "  - {name: plan, strategy: plan, lookalike: false}\n";
-    if (with_atypical)
-      arms += "  - {name: plan_atypical, strategy: plan, atypical: true, lookalike: false}\n";
+    if (with_lookalike) arms += "  - {name: plan_lookalike, strategy: plan, lookalike: true}\n";
     return novel_object_config(data, arms);
   };
   const fs::path with_dir = data.parent_path() / "with";
   const CampaignResults with = run(config(true), with_dir);
   const CampaignResults without = run(config(false), data.parent_path() / "without");
   EXPECT_EQ(with.spec.state.discrete_value_names.at(0),
-            (std::vector<std::string>{"group0", "group1", "group0~atypical", "group1~atypical"}));
+            (std::vector<std::string>{"group0", "group1", "group0~lookalike", "group1~lookalike"}));
   EXPECT_EQ(without.spec.state.discrete_value_names.at(0).size(), 2u);
   std::map<std::string, TrialResult> plan_without;
   for (const JournalEntry& e : without.entries) plan_without[e.object + "/" + e.session] = e.result;
@@ -204,7 +203,7 @@ TEST(DatasetCampaign, AnArmWithAtypicalObjectsLeavesTheOtherArmsAsTheyWere) {
   }
   EXPECT_EQ(compared, 18);
   EXPECT_TRUE(fs::is_regular_file(with_dir / "folds/1/problem.yaml"));
-  EXPECT_TRUE(fs::is_regular_file(with_dir / "folds/1/problem-atypical.yaml"));
+  EXPECT_TRUE(fs::is_regular_file(with_dir / "folds/1/problem-lookalike.yaml"));
 }
 
 // An arm planning with lookalikes: every arm's problem names them after the classes, the arm has

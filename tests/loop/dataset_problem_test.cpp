@@ -5,7 +5,7 @@
 #include "../perception/synthetic_feature_set.h"
 #include "common/error.h"
 #include "perception/dataset_folds.h"
-#include "perception/feature_model.h"
+#include "perception/fit_observation_model.h"
 #include "pomdp/object_identification_model.h"
 
 namespace echoplan::loop {
@@ -36,7 +36,8 @@ Fitted fitted() {
   f.task = perception::make_dataset_task(f.set, &groups, perception::HoldOut::session);
   std::vector<int> all(f.set.sessions.size());
   for (std::size_t s = 0; s < all.size(); ++s) all[s] = static_cast<int>(s);
-  f.model = perception::fit_feature_model(f.set, f.task, all);
+  f.model =
+      perception::fit_observation_model(f.set, f.task, all, perception::session_fit_options());
   return f;
 }
 
@@ -99,69 +100,37 @@ TEST(DatasetProblem, CostsPriceBehavioursOneByOneAndTheOthersStayAtSense) {
   EXPECT_THROW(dataset_problem(f.task, f.model, rewards, {1, 2}), InputError);
 }
 
-// Objects unlike their class: an atypical copy of every class after the classes, with the model's
-// share of the prior, its class's sorting rewards and the action's class-blind observation row.
-TEST(DatasetProblem, AtypicalCopiesOfTheClassesCarryTheModelsShare) {
-  Fitted f = fitted();
-  perception::ModelDescription d = f.model.description();
-  d.atypical_share = 0.2;
-  std::vector<perception::ActionModel> actions;
-  for (const std::string& a : f.model.actions()) {
-    perception::ActionModel m{f.model.modalities(a), f.model.weights(a), f.model.calibration(a)};
-    actions.push_back(std::move(m));
-  }
-  const perception::ObservationModel model(d, std::move(actions));
-  const pomdp::ObjectProblemData p =
-      dataset_problem(f.task, model, {}, default_uses(f.set), perception::ObservationKind::labels,
-                      {.atypical = model.atypical_share(perception::ObservationKind::labels),
-                       .lookalike = std::nullopt});
-  ASSERT_EQ(p.objects.size(), 12u);
-  EXPECT_EQ(p.objects[0], "obj0");
-  EXPECT_EQ(p.objects[6], "obj0~atypical");
-  EXPECT_EQ(p.objects[11], "obj5~atypical");
-  for (std::size_t k = 0; k < 6; ++k) {
-    EXPECT_DOUBLE_EQ(p.prior[k], 0.8 / 6);
-    EXPECT_DOUBLE_EQ(p.prior[k + 6], 0.2 / 6);
-    for (std::size_t j = 0; j < p.sorting.size(); ++j)
-      EXPECT_EQ(p.sorting_reward[j][k + 6], p.sorting_reward[j][k]);
-  }
-  const auto& press = model.observation_table("press");
-  for (std::size_t o = 0; o < p.observation_symbols.size(); ++o) {
-    double mean = 0.0;
-    for (const auto& row : press) mean += row[o] / 6.0;
-    for (std::size_t k = 6; k < 12; ++k) EXPECT_NEAR(p.observation_table[0][k][o], mean, 1e-12);
-    EXPECT_EQ(p.observation_table[0][2][o], press[2][o]);
-  }
-  // Without: the classes alone.
-  EXPECT_EQ(dataset_problem(f.task, model, {}, default_uses(f.set)).objects.size(), 6u);
-  // The shape names the copies too, for a campaign's report.
-  EXPECT_EQ(dataset_problem_shape(f.task, f.set, {}, true).objects, p.objects);
-}
-
 TEST(DatasetProblem, LookalikeCopiesSoundLikeTheirClassAndAreAnyOther) {
   Fitted f = fitted();
   const double rho = 0.1;
-  const pomdp::ObjectProblemData p =
-      dataset_problem(f.task, f.model, {}, default_uses(f.set), perception::ObservationKind::labels,
-                      {.atypical = 0.2, .lookalike = rho});
-  ASSERT_EQ(p.objects.size(), 18u);  // 6 classes, their atypical copies, then their lookalikes
-  EXPECT_EQ(p.objects[12], "obj0~lookalike");
-  EXPECT_EQ(p.objects[17], "obj5~lookalike");
+  const pomdp::ObjectProblemData p = dataset_problem(f.task, f.model, {}, default_uses(f.set),
+                                                     perception::ObservationKind::labels, rho);
+  ASSERT_EQ(p.objects.size(), 12u);  // 6 classes, then their lookalikes
+  EXPECT_EQ(p.objects[0], "obj0");
+  EXPECT_EQ(p.objects[6], "obj0~lookalike");
+  EXPECT_EQ(p.objects[11], "obj5~lookalike");
   // Groups of 3: a lookalike of obj0 is one of the 5 others, 2 in obj0's bin and 3 in the other.
   const int bin0 = f.task.bin_of_class[0];
   for (std::size_t j = 0; j < p.sorting.size(); ++j) {
     const int in_bin = static_cast<int>(j) == bin0 ? 2 : 3;
-    EXPECT_DOUBLE_EQ(p.sorting_reward[j][12], (in_bin * 10.0 + (5 - in_bin) * -100.0) / 5);
+    EXPECT_DOUBLE_EQ(p.sorting_reward[j][6], (in_bin * 10.0 + (5 - in_bin) * -100.0) / 5);
   }
   for (std::size_t k = 0; k < 6; ++k) {
-    EXPECT_DOUBLE_EQ(p.prior[k], 0.8 * (1 - rho) / 6);
-    EXPECT_DOUBLE_EQ(p.prior[k + 6], 0.2 / 6);
-    EXPECT_DOUBLE_EQ(p.prior[k + 12], 0.8 * rho / 6);
+    EXPECT_DOUBLE_EQ(p.prior[k], (1 - rho) / 6);
+    EXPECT_DOUBLE_EQ(p.prior[k + 6], rho / 6);
     for (std::size_t a = 0; a < p.sensing.size(); ++a)
-      EXPECT_EQ(p.observation_table[a][k + 12], p.observation_table[a][k]);
+      EXPECT_EQ(p.observation_table[a][k + 6], p.observation_table[a][k]);
   }
-  EXPECT_EQ(dataset_problem_shape(f.task, f.set, {}, true, true).objects, p.objects);
-  EXPECT_EQ(dataset_problem_shape(f.task, f.set, {}, false, true).objects[6], "obj0~lookalike");
+  // Without: the classes alone; a share of 0 names the copies and plans as without them.
+  EXPECT_EQ(dataset_problem(f.task, f.model, {}, default_uses(f.set)).objects.size(), 6u);
+  const pomdp::ObjectProblemData none = dataset_problem(f.task, f.model, {}, default_uses(f.set),
+                                                        perception::ObservationKind::labels, 0.0);
+  for (std::size_t k = 0; k < 6; ++k) {
+    EXPECT_DOUBLE_EQ(none.prior[k], 1.0 / 6);
+    EXPECT_EQ(none.prior[k + 6], 0.0);
+  }
+  // The shape names the copies too, for a campaign's report.
+  EXPECT_EQ(dataset_problem_shape(f.task, f.set, {}, true).objects, p.objects);
 }
 
 }  // namespace

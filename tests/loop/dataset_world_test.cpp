@@ -45,8 +45,8 @@ Replay replay(int held_out) {
   std::vector<int> training;
   for (std::size_t s = 0; s < r.set->sessions.size(); ++s)
     if (static_cast<int>(s) != held_out) training.push_back(static_cast<int>(s));
-  r.model = std::make_shared<const perception::ObservationModel>(
-      perception::fit_feature_model(*r.set, r.task, training));
+  r.model = std::make_shared<const perception::ObservationModel>(perception::fit_observation_model(
+      *r.set, r.task, training, perception::session_fit_options()));
   return r;
 }
 

@@ -42,7 +42,7 @@ std::vector<Trial> run_each_object(std::shared_ptr<const pomdp::Problem> problem
   LoopSettings settings;
   settings.problem = std::move(problem);
   settings.world = std::move(world);
-  settings.classifier = model();
+  settings.observation_model = model();
   settings.planner.solver = "abt";
   settings.planner.episodes = 300;
   settings.max_steps = max_steps;

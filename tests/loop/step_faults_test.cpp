@@ -278,7 +278,7 @@ Loop faulty_loop(Faults faults, int max_steps = 30) {
   LoopSettings settings;
   settings.problem = problem();
   settings.world = PartsWorldSpec{[faults] { return faulty_parts(identification(), faults); }};
-  settings.classifier = model();
+  settings.observation_model = model();
   settings.planner.solver = "abt";
   settings.planner.episodes = 300;
   settings.max_steps = max_steps;

@@ -44,7 +44,7 @@ TEST(WorldFactory, AModelTrainedForOtherActionsOrObjectsIsAnError) {
   // Trained on strikes only, asked to classify slides too.
   const auto strikes_only = testing::train_small_model(kObjects, {"strike"}, 2);
   WorldInputs settings = simulator_inputs(calibrated(mug_or_cup())->model);
-  settings.classifier = strikes_only;
+  settings.observation_model = strikes_only;
   std::string e = input_error_message([&] { make_world_factory(settings); });
   EXPECT_TRUE(mentions(e, "no classifier for sensing action 'slide'")) << e;
 

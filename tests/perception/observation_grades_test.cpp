@@ -9,7 +9,7 @@
 
 #include "common/error.h"
 #include "perception/dataset_folds.h"
-#include "perception/feature_model.h"
+#include "perception/fit_observation_model.h"
 #include "perception/observation_model_json.h"
 #include "synthetic_feature_set.h"
 #include "trained_model.h"
@@ -134,7 +134,8 @@ TEST(ObservationGrades, OnSessionsWrongDecisionsAreHeardLessSureThanRightOnes) {
   const FeatureSet set = load_feature_set(dir.string());
   const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
   const auto folds = make_folds(set, task);
-  const ObservationModel model = fit_feature_model(set, task, training_sessions(set, folds[0]));
+  const ObservationModel model =
+      fit_observation_model(set, task, training_sessions(set, folds[0]), session_fit_options());
   ASSERT_TRUE(model.graded());
   const ActionCalibration& c = model.calibration(set.actions[0].name);
   ASSERT_TRUE(c.fit.has_value());

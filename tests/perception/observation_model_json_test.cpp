@@ -37,7 +37,7 @@ TEST(ObservationModelJson, RoundTripsThroughTheFile) {
 
 TEST(ObservationModelJson, RecordsTheTableEstimateAndReadsOldFilesAsCounts) {
   EXPECT_EQ(observation_model_to_json(trained().model)["table_estimate"], "counts");
-  TrainOptions options;
+  FitOptions options;
   options.table = TableEstimate::soft;
   const ObservationModel soft = train_observation_model(trained().set, options);
   const fs::path file = trained().dir / "soft.json";
@@ -51,22 +51,22 @@ TEST(ObservationModelJson, RecordsTheTableEstimateAndReadsOldFilesAsCounts) {
   EXPECT_EQ(observation_model_from_json(old, "old.json").table_estimate(), TableEstimate::counts);
 }
 
-// The shares of objects unlike their class and of lookalikes round-trip; a file written before
-// them has none.
-TEST(ObservationModelJson, KeepsTheAtypicalAndLookalikeSharesAndReadsOldFilesAsNone) {
+// The lookalike shares round-trip; a file written before them has none; a file written when the
+// class-blind `atypical_share` existed reads as ever, without it.
+TEST(ObservationModelJson, KeepsTheLookalikeSharesAndReadsOldFilesAsNone) {
   nlohmann::json doc = observation_model_to_json(trained().model);
-  doc["atypical_share"] = {{"labels", 0.125}, {"graded", 0.25}};
   doc["lookalike_share"] = {{"labels", 0.0625}, {"graded", 0.375}};
   const ObservationModel model = observation_model_from_json(doc, "shares.json");
-  EXPECT_EQ(model.atypical_share(ObservationKind::labels), 0.125);
-  EXPECT_EQ(model.atypical_share(ObservationKind::graded), 0.25);
   EXPECT_EQ(model.lookalike_share(ObservationKind::labels), 0.0625);
   EXPECT_EQ(model.lookalike_share(ObservationKind::graded), 0.375);
   EXPECT_EQ(observation_model_to_json(model), doc);
-  doc.erase("atypical_share");
+  nlohmann::json with_atypical = doc;
+  with_atypical["atypical_share"] = {{"labels", 0.125}, {"graded", 0.25}};
+  EXPECT_EQ(observation_model_to_json(observation_model_from_json(with_atypical, "older.json")),
+            doc);
   doc.erase("lookalike_share");
   const ObservationModel old = observation_model_from_json(doc, "old.json");
-  EXPECT_EQ(old.atypical_share(ObservationKind::labels), 0.0);
+  EXPECT_EQ(old.lookalike_share(ObservationKind::labels), 0.0);
   EXPECT_EQ(old.lookalike_share(ObservationKind::graded), 0.0);
 }
 
@@ -106,7 +106,7 @@ TEST(ObservationModelJson, ReadsVersionOneFiles) {
 }
 
 TEST(ObservationModelJson, WithoutRejectTheThresholdIsNull) {
-  TrainOptions options;
+  FitOptions options;
   options.reject = false;
   const ObservationModel model = train_observation_model(trained().set, options);
   nlohmann::json doc = observation_model_to_json(model);
@@ -154,10 +154,10 @@ TEST(ObservationModelJson, EveryBrokenModelFileIsAClearError) {
   expect_error(with([](auto& d) { d["version"] = 0; }), "version 0 is not supported");
   expect_error(with([](auto& d) { d["format"] = "other"; }), "not an observation model");
   expect_error(with([](auto& d) { d.erase("classes"); }), "classes: missing");
-  expect_error(with([](auto& d) { d["atypical_share"]["graded"] = 0.9; }),
-               "atypical_share.graded: 0.9 is not in [0, 0.5]");
-  expect_error(with([](auto& d) { d["atypical_share"].erase("labels"); }),
-               "atypical_share.labels: missing");
+  expect_error(with([](auto& d) { d["lookalike_share"]["graded"] = 0.9; }),
+               "lookalike_share.graded: 0.9 is not in [0, 0.5]");
+  expect_error(with([](auto& d) { d["lookalike_share"].erase("labels"); }),
+               "lookalike_share.labels: missing");
   expect_error(with([](auto& d) { d["lookalike_share"]["labels"] = -0.1; }),
                "lookalike_share.labels: -0.1 is not in [0, 0.5]");
   expect_error(with([](auto& d) { d["classifier"] = "magic"; }),

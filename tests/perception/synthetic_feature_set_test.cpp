@@ -121,8 +121,8 @@ TEST(SyntheticFeatureSet, AnAtypicalObjectLooksLikeTheSameOtherGroupInEveryActio
   spec.actions = {"press", "shake"};
   spec.modalities = {{"audio", 3, 0.0}};
   spec.group_separation = 4.0;
-  spec.atypical_share = 0.5;
-  spec.atypical_pull = 1.0;
+  spec.lookalike_share = 0.5;
+  spec.lookalike_pull = 1.0;
   write_synthetic_feature_set(dir, spec);
   const std::vector<int> lookalike = synthetic_lookalikes(spec);
   int atypical = 0;
@@ -157,10 +157,10 @@ TEST(SyntheticFeatureSet, RefusesASpecThatCannotMakeAFeatureSet) {
   spec.objects = 0;
   EXPECT_THROW(write_synthetic_feature_set(dir, spec), InputError);
   spec.objects = 4;
-  spec.atypical_share = 0.5;  // without groups an object has no other group to look like
+  spec.lookalike_share = 0.5;  // without groups an object has no other group to look like
   EXPECT_THROW(write_synthetic_feature_set(dir, spec), InputError);
   spec.group_size = 2;
-  spec.atypical_pull = 1.5;
+  spec.lookalike_pull = 1.5;
   EXPECT_THROW(write_synthetic_feature_set(dir, spec), InputError);
 }
 

@@ -53,7 +53,7 @@ struct TrainedModel {
   std::filesystem::path dir = write_training_set("model");
   // Loaded before any test writes into the folder (which then is no recording set).
   RecordingSet set = load_recording_set(dir.string());
-  ObservationModel model = train_observation_model(set, TrainOptions{});
+  ObservationModel model = train_observation_model(set, FitOptions{});
   ~TrainedModel() { std::filesystem::remove_all(dir); }
 };
 

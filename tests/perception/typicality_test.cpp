@@ -12,23 +12,18 @@ namespace {
 const Table kTable{{0.8, 0.2}, {0.2, 0.8}};
 
 // `sessions` sessions of a random class; each action's symbol drawn from kTable, except that a
-// share `blind` of the sessions are atypical: both actions hear a fair coin (the class-blind row
-// of kTable is {0.5, 0.5}), the mixture typicality.h models, so the fit should find rho = blind;
-// and a share `lookalike` sound like the other class: both actions hear it through the other
-// class's row, so the lookalike fit should find that share.
-std::vector<HeldOutPerformances> sessions_of(int sessions, double blind, unsigned seed,
-                                             double lookalike = 0.0) {
+// share `lookalike` sound like the other class: both actions hear it through the other class's
+// row, the mixture typicality.h models, so the fit should find that share.
+std::vector<HeldOutPerformances> sessions_of(int sessions, unsigned seed, double lookalike) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<HeldOutPerformances> actions(2);
   for (auto& a : actions) a.cross_fitted = {kTable};
   for (int s = 0; s < sessions; ++s) {
     const int truth = u(rng) < 0.5 ? 0 : 1;
-    const double kind = u(rng);
-    const bool atypical = kind < blind;
-    const bool sounds_other = !atypical && kind < blind + lookalike;
+    const bool sounds_other = u(rng) < lookalike;
     for (auto& a : actions) {
-      const double right = atypical ? 0.5 : sounds_other ? 0.2 : 0.8;
+      const double right = sounds_other ? 0.2 : 0.8;
       a.session.push_back(s);
       a.fold.push_back(0);
       a.label.push_back(truth);
@@ -60,29 +55,6 @@ TEST(Typicality, SequencesArePrefixesOfEachSessionsPerformancesInRoundsOfItsBeha
   EXPECT_EQ(s[3].true_class, 0);
 }
 
-// The mixture's posterior by hand for one sequence of two agreeing symbols.
-TEST(Typicality, TheNllIsTheMixturesPosteriorOfTheTrueClass) {
-  Sequence s;
-  s.true_class = 0;
-  s.symbols = {0, 0};
-  s.tables = {0, 0};
-  const double rho = 0.2;
-  const double right = (1 - rho) * 0.8 * 0.8 + rho * 0.25;  // class-blind row {0.5, 0.5}
-  const double wrong = (1 - rho) * 0.2 * 0.2 + rho * 0.25;
-  const std::vector<Sequence> one{s};
-  EXPECT_NEAR(typicality_nll(std::vector<Table>{kTable}, rho, one),
-              -std::log(right / (right + wrong)), 1e-12);
-  // rho 0: the product of the tables.
-  EXPECT_NEAR(typicality_nll(std::vector<Table>{kTable}, 0.0, one), -std::log(0.64 / (0.64 + 0.04)),
-              1e-12);
-}
-
-TEST(Typicality, IndependentBehavioursGetNoShareAndClassBlindOnesTheirShare) {
-  EXPECT_LT(fit_atypical_share(sessions_of(4000, 0.0, 1)), 0.03);
-  EXPECT_NEAR(fit_atypical_share(sessions_of(4000, 0.3, 2)), 0.3, 0.08);
-  EXPECT_EQ(fit_atypical_share({}), 0.0);
-}
-
 // A lookalike of class 0 is class 1 (the only other) heard through class 0's row: by hand for two
 // agreeing symbols.
 TEST(Typicality, TheLookalikeNllIsItsMixturesPosteriorOfTheTrueClass) {
@@ -96,13 +68,14 @@ TEST(Typicality, TheLookalikeNllIsItsMixturesPosteriorOfTheTrueClass) {
   const std::vector<Sequence> one{s};
   EXPECT_NEAR(lookalike_nll(std::vector<Table>{kTable}, rho, one),
               -std::log(right / (right + wrong)), 1e-12);
-  EXPECT_NEAR(lookalike_nll(std::vector<Table>{kTable}, 0.0, one),
-              typicality_nll(std::vector<Table>{kTable}, 0.0, one), 1e-12);
+  // rho 0: the product of the tables.
+  EXPECT_NEAR(lookalike_nll(std::vector<Table>{kTable}, 0.0, one), -std::log(0.64 / (0.64 + 0.04)),
+              1e-12);
 }
 
 TEST(Typicality, ObjectsThatSoundLikeTheOtherClassGetTheirShare) {
-  EXPECT_LT(fit_lookalike_share(sessions_of(4000, 0.0, 3)), 0.03);
-  EXPECT_NEAR(fit_lookalike_share(sessions_of(4000, 0.0, 4, 0.15)), 0.15, 0.05);
+  EXPECT_LT(fit_lookalike_share(sessions_of(4000, 3, 0.0)), 0.03);
+  EXPECT_NEAR(fit_lookalike_share(sessions_of(4000, 4, 0.15)), 0.15, 0.05);
   EXPECT_EQ(fit_lookalike_share({}), 0.0);
 }
 
@@ -133,25 +106,6 @@ TEST(Typicality, TheLookalikeShareIsFittedOnEachSessionsWholeSequence) {
   const std::vector<Table> tables{sharp, sharp, sharp};
   const std::vector<Sequence> prefixes = cross_behaviour_sequences(actions);
   EXPECT_LT(lookalike_nll(tables, 0.3, prefixes), lookalike_nll(tables, 0.25, prefixes));
-}
-
-// Each mixture, at its fitted share, explains its own kind of data better than the other does.
-TEST(Typicality, ClassBlindAndLookalikeObjectsAreToldApartByTheirLikelihood) {
-  const std::vector<Table> tables{kTable, kTable};  // one fold of each of the two actions
-  const auto nlls = [&](const std::vector<HeldOutPerformances>& actions) {
-    const std::vector<Sequence> sequences = cross_behaviour_sequences(actions);
-    return std::pair{typicality_nll(tables, fit_atypical_share(actions), sequences),
-                     lookalike_nll(tables, fit_lookalike_share(actions), sequences)};
-  };
-  const auto [blind_on_blind, lookalike_on_blind] = nlls(sessions_of(4000, 0.3, 5));
-  EXPECT_LT(blind_on_blind, lookalike_on_blind);
-  const auto [blind_on_lookalike, lookalike_on_lookalike] = nlls(sessions_of(4000, 0.0, 6, 0.15));
-  EXPECT_LT(lookalike_on_lookalike, blind_on_lookalike);
-}
-
-TEST(Typicality, TheClassBlindRowIsTheMeanOfTheClassRows) {
-  EXPECT_EQ(class_blind_row({{0.8, 0.2, 0.0}, {0.2, 0.6, 0.2}}),
-            (std::vector<double>{0.5, 0.4, 0.1}));
 }
 
 }  // namespace

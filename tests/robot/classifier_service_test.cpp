@@ -11,8 +11,9 @@
 #include "common/error.h"
 #include "common/rng.h"
 #include "perception/dataset_task.h"
-#include "perception/feature_model.h"
 #include "perception/feature_set.h"
+#include "perception/fit_observation_model.h"
+#include "perception/performance_reader.h"
 #include "perception/recording_features.h"
 #include "sim/recording.h"
 #include "sim/simulated_robot.h"
@@ -108,8 +109,9 @@ std::shared_ptr<const perception::ObservationModel> sensor_model() {
         echoplan::testing::source_dir() + "/experiments/data/synthetic_objects");
     std::vector<int> sessions(set.sessions.size());
     std::iota(sessions.begin(), sessions.end(), 0);
-    return std::make_shared<const perception::ObservationModel>(perception::fit_feature_model(
-        set, perception::make_dataset_task(set, nullptr, perception::HoldOut::session), sessions));
+    return std::make_shared<const perception::ObservationModel>(perception::fit_observation_model(
+        set, perception::make_dataset_task(set, nullptr, perception::HoldOut::session), sessions,
+        perception::session_fit_options()));
   }();
   return m;
 }
@@ -172,8 +174,9 @@ std::shared_ptr<const perception::ObservationModel> mixed_model() {
     strike.modalities.push_back(haptic);  // after "audio": the names' order
     std::vector<int> sessions(set.sessions.size());
     std::iota(sessions.begin(), sessions.end(), 0);
-    return std::make_shared<const perception::ObservationModel>(perception::fit_feature_model(
-        set, perception::make_dataset_task(set, nullptr, perception::HoldOut::session), sessions));
+    return std::make_shared<const perception::ObservationModel>(perception::fit_observation_model(
+        set, perception::make_dataset_task(set, nullptr, perception::HoldOut::session), sessions,
+        perception::session_fit_options()));
   }();
   return m;
 }

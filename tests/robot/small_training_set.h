@@ -55,7 +55,7 @@ inline std::shared_ptr<const perception::ObservationModel> train_small_model(
     bool reject = true) {
   const auto dir = unique_temp_dir("training");
   write_small_dataset(dir, objects, actions, per_pair, 1);
-  perception::TrainOptions options;
+  perception::FitOptions options;
   options.reject = reject;
   auto model = std::make_shared<const perception::ObservationModel>(
       perception::train_observation_model(perception::load_recording_set(dir.string()), options));

@@ -1,13 +1,13 @@
 // Training: cross-validated confusion, its smoothed table, calibration, fold assignment, bad input.
-#include "perception/train_observation_model.h"
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <numeric>
 
 #include "common/error.h"
+#include "perception/fit_observation_model.h"
 #include "trained_model.h"
 
 namespace echoplan::perception {
@@ -19,7 +19,7 @@ using test_model::recording;
 using test_model::trained;
 using ::testing::HasSubstr;
 
-TEST(TrainObservationModel, CalibratedTableFollowsTheCrossValidatedConfusion) {
+TEST(FitOnRecordings, CalibratedTableFollowsTheCrossValidatedConfusion) {
   const ObservationModel& m = trained().model;
   EXPECT_EQ(m.classifier_name(), std::string(kDefaultClassifier));
   EXPECT_EQ(m.classes(), (std::vector<std::string>{"click", "ring", "thud"}));
@@ -40,10 +40,10 @@ TEST(TrainObservationModel, CalibratedTableFollowsTheCrossValidatedConfusion) {
   EXPECT_THROW(m.calibration("shake"), InputError);
 }
 
-TEST(TrainObservationModel, SoftTableKeepsTheDecisionsAndSoftensTheRows) {
+TEST(FitOnRecordings, SoftTableKeepsTheDecisionsAndSoftensTheRows) {
   const ObservationModel& counts = trained().model;
   EXPECT_EQ(counts.table_estimate(), TableEstimate::counts);
-  TrainOptions options;
+  FitOptions options;
   options.table = TableEstimate::soft;
   const ObservationModel soft = train_observation_model(trained().set, options);
   EXPECT_EQ(soft.table_estimate(), TableEstimate::soft);
@@ -64,8 +64,8 @@ TEST(TrainObservationModel, SoftTableKeepsTheDecisionsAndSoftensTheRows) {
   }
 }
 
-TEST(TrainObservationModel, KFoldsCoverEveryRecordingOnceAndRepeatWithTheSeed) {
-  TrainOptions options;
+TEST(FitOnRecordings, KFoldsCoverEveryRecordingOnceAndRepeatWithTheSeed) {
+  FitOptions options;
   options.folds = 2;
   options.seed = 7;
   const ObservationModel a = train_observation_model(trained().set, options);
@@ -74,6 +74,32 @@ TEST(TrainObservationModel, KFoldsCoverEveryRecordingOnceAndRepeatWithTheSeed) {
     EXPECT_EQ(a.calibration(action).confusion.total(), 12) << action;
     EXPECT_EQ(a.calibration(action).confusion.counts, b.calibration(action).confusion.counts);
     EXPECT_EQ(a.calibration(action).temperature, b.calibration(action).temperature);
+  }
+}
+
+// A clip is a session of one performance with one modality: a recordings tree takes the feature
+// sets' options too (here all of session_fit_options, with the default audio preset): folds by
+// session, fusion, the shrunk table tempered for repeats, no `unknown`, and a lookalike share.
+TEST(FitOnRecordings, ARecordingsTreeTakesTheFeatureSetsOptions) {
+  const ObservationModel m =
+      train_observation_model(trained().set, session_fit_options(std::string(kDefaultClassifier)));
+  EXPECT_EQ(m.classifier_name(), std::string(kDefaultClassifier));
+  EXPECT_FALSE(m.reject());
+  EXPECT_EQ(m.observation_symbols(), m.classes());
+  EXPECT_EQ(m.table_estimate(), TableEstimate::shrunk);
+  EXPECT_GE(m.lookalike_share(ObservationKind::labels), 0.0);
+  for (const auto& action : m.actions()) {
+    const ActionCalibration& c = m.calibration(action);
+    EXPECT_EQ(c.confusion.total(), 12);
+    EXPECT_EQ(c.fit->fused_accuracy, 1.0) << action;  // the clips are told apart
+    EXPECT_GT(c.fit->shrinkage_strength, 0.0);
+    EXPECT_GT(c.fit->temper, 0.0);
+    EXPECT_LE(c.fit->temper, 1.0);
+    for (std::size_t k = 0; k < 3; ++k) {
+      EXPECT_NEAR(std::accumulate(c.table[k].begin(), c.table[k].end(), 0.0), 1.0, 1e-12);
+      EXPECT_EQ(std::max_element(c.table[k].begin(), c.table[k].end()) - c.table[k].begin(),
+                static_cast<long>(k));
+    }
   }
 }
 
@@ -107,7 +133,7 @@ TEST(CrossValidationFolds, AreTheSameOnEveryPlatform) {
             (std::vector<int>{0, 0, 1, 1, 2, 2, 0, 0, 1, 1}));
 }
 
-TEST(TrainObservationModel, BadSetsAndOptions) {
+TEST(FitOnRecordings, BadSetsAndOptions) {
   const fs::path dir = test_sounds::fresh_dir("train_bad");
   // One recording per (object, action): leave-one-out cannot hold a class out.
   for (std::size_t k = 0; k < 2; ++k) {
@@ -117,12 +143,13 @@ TEST(TrainObservationModel, BadSetsAndOptions) {
   }
   const RecordingSet set = load_recording_set(dir.string());
   try {
-    train_observation_model(set, TrainOptions{});
+    train_observation_model(set, FitOptions{});
     ADD_FAILURE();
   } catch (const InputError& e) {
-    EXPECT_THAT(std::string(e.what()), HasSubstr("at least 2 recordings per (object, action)"));
+    EXPECT_THAT(std::string(e.what()),
+                HasSubstr("at least 2 performances of each class per action, found 1"));
   }
-  TrainOptions magic, one_fold, small_margin;
+  FitOptions magic, one_fold, small_margin;
   magic.classifier = "magic";
   one_fold.folds = 1;
   small_margin.reject_margin = 0.5;
@@ -131,7 +158,7 @@ TEST(TrainObservationModel, BadSetsAndOptions) {
   // A corrupt recording is named.
   std::ofstream(dir / kObjects[0] / "strike" / "1.wav") << "RIFF garbage";
   try {
-    train_observation_model(load_recording_set(dir.string()), TrainOptions{});
+    train_observation_model(load_recording_set(dir.string()), FitOptions{});
     ADD_FAILURE();
   } catch (const InputError& e) {
     EXPECT_THAT(std::string(e.what()), HasSubstr("1.wav"));

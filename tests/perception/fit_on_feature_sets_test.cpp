@@ -1,14 +1,16 @@
-#include "perception/feature_model.h"
-
 #include <gtest/gtest.h>
 
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <numeric>
+#include <span>
 
 #include "common/error.h"
 #include "perception/dataset_folds.h"
+#include "perception/fit_observation_model.h"
 #include "perception/observation_table.h"
+#include "perception/performance_reader.h"
 #include "synthetic_feature_set.h"
 
 namespace echoplan::perception {
@@ -37,14 +39,15 @@ double test_accuracy(const ObservationModel& model, const FeatureSet& set, const
   return static_cast<double>(right) / total;
 }
 
-TEST(FeatureModel, WellSeparatedObjectsAreRecognisedAndTheTableSaysSo) {
+TEST(FitOnFeatureSets, WellSeparatedObjectsAreRecognisedAndTheTableSaysSo) {
   SyntheticSpec spec;
   spec.objects = 8;
   spec.modalities = {{"audio", 8, 10.0}};  // object means ~40 noise sd apart: near-certain
   const FeatureSet set = synthetic(spec, "fm_separated");
   const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
   const auto folds = make_folds(set, task);
-  const ObservationModel model = fit_feature_model(set, task, training_sessions(set, folds[0]));
+  const ObservationModel model =
+      fit_observation_model(set, task, training_sessions(set, folds[0]), session_fit_options());
   EXPECT_EQ(model.classes(), set.objects);
   EXPECT_EQ(model.calibration(set.actions[0].name).fit->fused_accuracy, 1.0);
   EXPECT_EQ(test_accuracy(model, set, task, folds[0]), 1.0);
@@ -59,14 +62,15 @@ TEST(FeatureModel, WellSeparatedObjectsAreRecognisedAndTheTableSaysSo) {
   }
 }
 
-TEST(FeatureModel, ANoiseModalityIsWeighedOutAndFusionIsNoWorseThanTheBestModality) {
+TEST(FitOnFeatureSets, ANoiseModalityIsWeighedOutAndFusionIsNoWorseThanTheBestModality) {
   SyntheticSpec spec;
   spec.objects = 20;
   spec.modalities = {{"audio", 5, 1.0}, {"haptic", 20, 0.0}};  // haptic: pure noise
   const FeatureSet set = synthetic(spec, "fm_noise");
   const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
   const auto folds = make_folds(set, task);
-  const ObservationModel model = fit_feature_model(set, task, training_sessions(set, folds[0]));
+  const ObservationModel model =
+      fit_observation_model(set, task, training_sessions(set, folds[0]), session_fit_options());
   const ActionFit& fit = (*model.calibration(set.actions[0].name).fit);
   const auto& modalities = model.modalities(set.actions[0].name);
   ASSERT_EQ(modalities.size(), 2u);
@@ -82,7 +86,7 @@ TEST(FeatureModel, ANoiseModalityIsWeighedOutAndFusionIsNoWorseThanTheBestModali
   EXPECT_GE(fit.fused_accuracy, fit.modality_accuracy[0] - 0.02);
 }
 
-TEST(FeatureModel, TemperingKeepsCorrelatedRepeatsFromBecomingOverconfident) {
+TEST(FitOnFeatureSets, TemperingKeepsCorrelatedRepeatsFromBecomingOverconfident) {
   SyntheticSpec spec;
   spec.objects = 20;
   spec.repeats = 6;
@@ -93,7 +97,8 @@ TEST(FeatureModel, TemperingKeepsCorrelatedRepeatsFromBecomingOverconfident) {
   double tempered_nll = 0.0, untempered_nll = 0.0;
   double untempered_confidence = 0.0, tempered_confidence = 0.0, right = 0.0, n = 0.0;
   for (const Fold& fold : make_folds(set, task)) {
-    const ObservationModel model = fit_feature_model(set, task, training_sessions(set, fold));
+    const ObservationModel model =
+        fit_observation_model(set, task, training_sessions(set, fold), session_fit_options());
     const double beta = (*model.calibration(set.actions[0].name).fit).temper;
     EXPECT_LT(beta, 0.7);
     const Table& tempered = model.observation_table(set.actions[0].name);
@@ -129,7 +134,7 @@ TEST(FeatureModel, TemperingKeepsCorrelatedRepeatsFromBecomingOverconfident) {
   EXPECT_NEAR(tempered_confidence / n, accuracy, 0.1) << "tempered is calibrated";
 }
 
-TEST(FeatureModel, NovelObjectsAreRecognisedByTheirGroup) {
+TEST(FitOnFeatureSets, NovelObjectsAreRecognisedByTheirGroup) {
   SyntheticSpec spec;
   spec.objects = 20;
   spec.sessions = 2;
@@ -146,8 +151,8 @@ TEST(FeatureModel, NovelObjectsAreRecognisedByTheirGroup) {
   for (const char* classifier : {"lda", "nearest-neighbour"}) {
     double accuracy = 0.0;
     for (const Fold& fold : folds) {
-      const ObservationModel model =
-          fit_feature_model(set, task, training_sessions(set, fold), {classifier});
+      const ObservationModel model = fit_observation_model(set, task, training_sessions(set, fold),
+                                                           session_fit_options(classifier));
       EXPECT_EQ(model.classes().size(), 4u);
       accuracy += test_accuracy(model, set, task, fold) / 5.0;
     }
@@ -156,10 +161,10 @@ TEST(FeatureModel, NovelObjectsAreRecognisedByTheirGroup) {
 }
 
 // Objects that look like another group in every behaviour (the stand-in of
-// bench/honest_confidence.sh) give the model a share of objects unlike their class; the same set
-// without them gives a much smaller one.
-TEST(FeatureModel, ObjectsUnlikeTheirClassInEveryBehaviourGiveAnAtypicalShare) {
-  auto share = [](double atypical, const char* name) {
+// bench/honest_confidence.sh) give the model a share of lookalikes; the same set without them
+// gives a much smaller one.
+TEST(FitOnFeatureSets, ObjectsThatSoundLikeAnotherGroupInEveryBehaviourGiveALookalikeShare) {
+  auto share = [](double lookalike, const char* name) {
     SyntheticSpec spec;
     spec.objects = 40;
     spec.group_size = 5;
@@ -168,46 +173,133 @@ TEST(FeatureModel, ObjectsUnlikeTheirClassInEveryBehaviourGiveAnAtypicalShare) {
     spec.modalities = {{"audio", 6, 1.5}, {"haptic", 3, 1.0}};
     spec.group_separation = 1.5;
     spec.session_sd = 0.3;
-    spec.atypical_share = atypical;
-    spec.atypical_pull = 0.6;
+    spec.lookalike_share = lookalike;
+    spec.lookalike_pull = 0.6;
     const auto dir = test_features::fresh_folder(name);
     test_features::write_synthetic_feature_set(dir, spec);
     const FeatureSet set = load_feature_set(dir.string());
     const ObjectGroups groups = load_groups((dir / "groups.csv").string());
     const DatasetTask task = make_dataset_task(set, &groups, HoldOut::object);
-    const ObservationModel model =
-        fit_feature_model(set, task, training_sessions(set, make_folds(set, task).front()));
-    EXPECT_EQ(model.atypical_share(ObservationKind::labels), model.description().atypical_share);
+    const ObservationModel model = fit_observation_model(
+        set, task, training_sessions(set, make_folds(set, task).front()), session_fit_options());
     EXPECT_EQ(model.lookalike_share(ObservationKind::labels), model.description().lookalike_share);
-    return std::array{model.atypical_share(ObservationKind::labels),
-                      model.atypical_share(ObservationKind::graded),
-                      model.lookalike_share(ObservationKind::labels),
+    return std::array{model.lookalike_share(ObservationKind::labels),
                       model.lookalike_share(ObservationKind::graded)};
   };
   const auto typical = share(0.0, "fm_typical");
-  const auto atypical = share(0.25, "fm_atypical");
-  // Every share (atypical, lookalike; labels, graded) is well above 0 with them and less than
-  // half that without. Measured: atypical 0.042 (graded 0.026), lookalike 0.000 (0.000) without;
-  // 0.213 (0.216) and 0.124 (0.114) with a quarter of the objects pulled towards another group.
+  const auto lookalike = share(0.25, "fm_lookalike");
+  // Each share (labels, graded) is well above 0 with them and less than half that without.
+  // Measured: 0.000 (graded 0.000) without; 0.124 (0.114) with a quarter of the objects pulled
+  // towards another group.
   for (std::size_t i = 0; i < typical.size(); ++i) {
-    EXPECT_GT(atypical[i], 0.05) << i;
-    EXPECT_LT(typical[i], atypical[i] / 2) << i;
+    EXPECT_GT(lookalike[i], 0.05) << i;
+    EXPECT_LT(typical[i], lookalike[i] / 2) << i;
   }
 }
 
-TEST(FeatureModel, TrainingWithoutAClassIsAnError) {
+TEST(FitOnFeatureSets, TrainingWithoutAClassIsAnError) {
   SyntheticSpec spec;
   spec.objects = 3;
   const FeatureSet set = synthetic(spec, "fm_missing");
   const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
   const std::vector<int> only_first_two{0, 1, 2, 5, 6, 7};  // object 2's sessions are 10-14
-  EXPECT_THROW(fit_feature_model(set, task, only_first_two), InputError);
+  EXPECT_THROW(fit_observation_model(set, task, only_first_two, session_fit_options()), InputError);
+}
+
+// The reject option is open to rows a sensor gave: one modality, cross-validated by performance
+// (the recordings defaults, FitOptions{}). A row far from every class is `unknown`, the table has
+// its column, and the set's own rows keep their classes.
+TEST(FitOnFeatureSets, RowsASensorGaveCanBeRejectedAsUnknown) {
+  SyntheticSpec spec;
+  spec.objects = 4;
+  spec.sessions = 4;
+  spec.modalities = {{"haptic", 4, 6.0}};
+  const FeatureSet set = synthetic(spec, "fm_reject");
+  const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
+  std::vector<int> all(set.sessions.size());
+  std::iota(all.begin(), all.end(), 0);
+  FitOptions options;
+  options.classifier = "lda";
+  const ObservationModel model = fit_observation_model(set, task, all, options);
+  ASSERT_TRUE(model.reject());
+  EXPECT_EQ(model.observation_symbols().back(), kUnknownSymbol);
+  EXPECT_EQ(model.observation_table("strike").front().size(), 5u);  // 4 classes, unknown
+  const ActionCalibration& c = model.calibration("strike");
+  EXPECT_TRUE(std::isfinite(c.reject_threshold));
+  EXPECT_NE(c.temperature, 1.0);  // fitted, not fusion's
+  const std::vector<double> far(4, 1e4);
+  const std::vector<std::span<const double>> rows{far};
+  EXPECT_EQ(model.classify_rows(0, rows).label, kUnknownSymbol);
+  int right = 0;
+  for (int r = 0; r < static_cast<int>(set.actions[0].rows.size()); ++r)
+    right += classify_row(model, 0, set, r) == set.actions[0].rows[r].object;
+  EXPECT_EQ(right, static_cast<int>(set.actions[0].rows.size()));
+  // Several modalities cannot share one reject threshold: the option is refused, naming the action.
+  spec.modalities = {{"audio", 3, 6.0}, {"haptic", 3, 6.0}};
+  const FeatureSet two = synthetic(spec, "fm_reject_two");
+  try {
+    fit_observation_model(two, make_dataset_task(two, nullptr, HoldOut::session), all, options);
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(e.problem().find("one modality per action, and 'strike' has 2"), std::string::npos)
+        << e.problem();
+  }
+}
+
+// Without fusion the modalities' scores are summed at weight 1 and one temperature calibrates
+// them: on two informative modalities the summed decision is still right where each is, and the
+// fusion weights, fitted instead, weigh both in.
+TEST(FitOnFeatureSets, ModalitiesCanBeSummedUnderOneTemperatureInsteadOfFused) {
+  SyntheticSpec spec;
+  spec.objects = 10;
+  spec.modalities = {{"audio", 5, 2.0}, {"haptic", 5, 2.0}};
+  const FeatureSet set = synthetic(spec, "fm_summed");
+  const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
+  const auto folds = make_folds(set, task);
+  FitOptions summed = session_fit_options();
+  summed.fuse = false;
+  const ObservationModel plain =
+      fit_observation_model(set, task, training_sessions(set, folds[0]), summed);
+  const ObservationModel fused =
+      fit_observation_model(set, task, training_sessions(set, folds[0]), session_fit_options());
+  EXPECT_EQ(plain.weights("strike"), (std::vector<double>{1.0, 1.0}));
+  EXPECT_NE(plain.calibration("strike").temperature, 1.0);
+  EXPECT_EQ(fused.calibration("strike").temperature, 1.0);
+  for (double w : fused.weights("strike")) EXPECT_GT(w, 0.0);
+  const ActionFit& fit = *plain.calibration("strike").fit;
+  for (double alone : fit.modality_accuracy) EXPECT_GE(fit.fused_accuracy, alone);
+}
+
+TEST(FitOnFeatureSets, CombinationsWithoutMeaningAreRefused) {
+  FitOptions temper_alone;
+  temper_alone.temper = true;  // by performance: no sessions to temper over
+  EXPECT_THROW(check_fit_options(temper_alone), InputError);
+  FitOptions shrunk_rejecting;
+  shrunk_rejecting.table = TableEstimate::shrunk;  // reject is on by default
+  EXPECT_THROW(check_fit_options(shrunk_rejecting), InputError);
+  FitOptions preset_on_rows = session_fit_options("summary-lda");
+  SyntheticSpec spec;
+  spec.objects = 3;
+  const FeatureSet set = synthetic(spec, "fm_preset");
+  std::vector<int> all(set.sessions.size());
+  std::iota(all.begin(), all.end(), 0);
+  try {
+    fit_observation_model(set, make_dataset_task(set, nullptr, HoldOut::session), all,
+                          preset_on_rows);
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(e.problem().find("is an audio preset over 'summary' rows of clips"),
+              std::string::npos)
+        << e.problem();
+  }
+  EXPECT_NO_THROW(check_fit_options(FitOptions{}));
+  EXPECT_NO_THROW(check_fit_options(session_fit_options()));
 }
 
 // The scale of the largest recorded set: 100 objects x 9 behaviours x 5 sessions, two modalities
 // of 50 features, one fold fitted. How long it takes is a benchmark figure (docs/BENCHMARKS.md),
 // not asserted here: a loaded machine or a sanitizer build would make a time limit flaky.
-TEST(FeatureModel, OneFoldAtFullScaleFits) {
+TEST(FitOnFeatureSets, OneFoldAtFullScaleFits) {
   SyntheticSpec spec;
   spec.objects = 100;
   spec.actions = {"a1", "a2", "a3", "a4", "a5", "a6", "a7", "a8", "a9"};
@@ -216,7 +308,8 @@ TEST(FeatureModel, OneFoldAtFullScaleFits) {
   const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
   const auto folds = make_folds(set, task);
   const auto start = std::chrono::steady_clock::now();
-  const ObservationModel model = fit_feature_model(set, task, training_sessions(set, folds[0]));
+  const ObservationModel model =
+      fit_observation_model(set, task, training_sessions(set, folds[0]), session_fit_options());
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("one fold, 100 objects x 9 actions x 4 training sessions x 2 x 50 features: %.2f s\n",

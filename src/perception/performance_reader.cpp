@@ -1,0 +1,46 @@
+#include "perception/performance_reader.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "common/error.h"
+
+namespace echoplan::perception {
+
+PerformanceReader::PerformanceReader(const ObservationModel& model, const std::string& action,
+                                     const FeatureSet& set)
+    : model_(&model), model_action_(model.action_index(action)), data_(set.action(action)) {
+  if (model_action_ < 0)
+    throw InputError(set.root, 0,
+                     fmt::format("the model has no action '{}' (it was trained for: {})", action,
+                                 fmt::join(model.actions(), ", ")));
+  if (data_ == nullptr)
+    throw InputError(set.root, 0, fmt::format("the data has no action '{}'", action));
+  for (const ModalityModel& m : model.modalities(action)) {
+    const Modality* column = nullptr;
+    for (const Modality& candidate : data_->modalities)
+      if (candidate.name == m.name) column = &candidate;
+    if (column == nullptr)
+      throw InputError(
+          set.root, 0,
+          fmt::format("action '{}' has no modality '{}', which the model needs", action, m.name));
+    columns_.push_back(column);
+  }
+}
+
+Prediction PerformanceReader::classify(int row) const {
+  std::vector<std::span<const double>> rows;
+  for (const Modality* column : columns_)
+    rows.emplace_back(column->rows.at(static_cast<std::size_t>(row)));
+  return model_->classify_rows(model_action_, rows);
+}
+
+int classify_row(const ObservationModel& model, int action, const FeatureSet& set, int row) {
+  const ActionData& data = set.actions.at(static_cast<std::size_t>(action));
+  std::vector<std::span<const double>> rows;
+  for (const Modality& m : data.modalities)
+    rows.emplace_back(m.rows.at(static_cast<std::size_t>(row)));
+  return model.classify_rows(action, rows).best_class;
+}
+
+}  // namespace echoplan::perception
