@@ -32,7 +32,7 @@
 // of table rows becomes overconfident over a session's sequence. Rows are replaced by p^beta
 // renormalised, beta in [0.02, 1] minimising the NLL of the true class under the uniform-prior
 // posterior after each held-out sequence (golden-section search). Each sequence is scored with a
-// table that did not count its own decisions (fit_feature_model: the table of the other inner
+// table that did not count its own decisions (fit_observation_model: the table of the other inner
 // folds): a table counting them has learnt the very confusions a session repeated, and looks
 // calibrated when it is not.
 #pragma once
@@ -54,7 +54,7 @@ using Table = std::vector<std::vector<double>>;  // [class][symbol], rows sum to
 //           object's row (a rejected clip still adds its whole unit to `unknown`): the expected
 //           confusion under the calibrated classifier, so an action that wins by narrow margins
 //           gets a softer row than one that wins by wide margins.
-//   shrunk: the sessions recipe's: counts of fused decisions shrunk by empirical Bayes towards a
+//   shrunk: a feature set's default: counts of fused decisions shrunk by empirical Bayes towards a
 //           pooled structure, then tempered for repeats (below).
 enum class TableEstimate { counts, soft, shrunk };
 const char* table_estimate_name(TableEstimate estimate);

@@ -29,7 +29,7 @@ CommandResult run(const std::string& args) {
   const fs::path dir =
       fs::temp_directory_path() / ("echoplan_cli_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  const std::string command = std::string("'") + ECHOPLAN_BINARY + "' " + args + " > '" +
+  const std::string command = "'" + echoplan::testing::echoplan_binary() + "' " + args + " > '" +
                               (dir / "out").string() + "' 2> '" + (dir / "err").string() + "'";
   CommandResult r;
   const int raw = std::system(command.c_str());

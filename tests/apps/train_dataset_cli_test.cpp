@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "../common/source_dir.h"
 #include "../perception/synthetic_feature_set.h"
 #include "pomdp/object_identification_model.h"
 #include "pomdp/problem.h"
@@ -25,7 +26,7 @@ struct CommandResult {
 
 CommandResult run(const std::string& args) {
   const fs::path dir = perception::test_features::fresh_folder("train_cli_out");
-  const std::string command = std::string("'") + ECHOPLAN_BINARY + "' " + args + " > '" +
+  const std::string command = "'" + echoplan::testing::echoplan_binary() + "' " + args + " > '" +
                               (dir / "out").string() + "' 2> '" + (dir / "err").string() + "'";
   const auto start = std::chrono::steady_clock::now();
   const int raw = std::system(command.c_str());

@@ -1,5 +1,5 @@
 // Graded observations: grades cut at the held-out terciles, counted on right and wrong decisions,
-// a graded table whose grades only split the label table's cells; both recipes fit them, and the
+// a graded table whose grades only split the label table's cells; every fit grades, and the
 // model file keeps them (and still reads files without them).
 #include "perception/observation_grades.h"
 
@@ -81,7 +81,7 @@ TEST(ObservationGrades, SymbolsAreNamedClassAtGradeAndIndexedClassMajor) {
   EXPECT_THROW(parse_observation_kind("soft"), InputError);
 }
 
-// The clip recipe grades every action, a prediction carries its grade, and the model file keeps the
+// A fit on recordings grades every action, a prediction carries its grade, and the model file keeps the
 // grades; a file written before them loads, serves labels and refuses graded with a clear error.
 TEST(ObservationGrades, TheClipModelGradesAndItsFileKeepsTheGrades) {
   const ObservationModel& model = test_model::trained().model;

@@ -169,7 +169,7 @@ TEST(SensingPolicyLarge, ChoosesWhatTheDefinitionChoosesAndRemembersIt) {
   expect_choices_of_the_definition(large_problem(rng), rng);
 }
 
-// Rows as the sessions recipe writes them (a flat value, the true class and three others above it):
+// Rows as a feature set's shrunk table has them (a flat value, the true class and three others above it):
 // the sparse sum.
 TEST(SensingPolicyLarge, ChoosesWhatTheDefinitionChoosesOnRowsOfOneValue) {
   Rng rng(11);

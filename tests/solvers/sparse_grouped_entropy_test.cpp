@@ -15,7 +15,7 @@ namespace {
 constexpr int kActions = 3, kStates = 12, kOutcomes = 20, kGroups = 4;
 
 // Rows of a base value with `exceptions` outcomes of their own (one of them impossible, 0), as
-// the sessions recipe's tables are: [(i * states + l) * outcomes + o].
+// a feature set's shrunk tables are: [(i * states + l) * outcomes + o].
 std::vector<double> sparse_rows(int exceptions, Rng& rng) {
   std::vector<double> rows;
   for (int r = 0; r < kActions * kStates; ++r) {
