@@ -1,7 +1,7 @@
 // The policy leaf's expected decision entropy (sensing_policy.h) on tables whose rows are mostly
 // one value: a state's row of P(o | s, a) is a base value on every outcome plus a few exceptions.
-// The shrunk tables of a feature set's fit are so (docs/feature-sets.md: counts from a few held-out sessions
-// shrunk towards a flat row; about 7 exceptions in 100 outcomes). Then
+// The shrunk tables of a feature set's fit are so (docs/feature-sets.md: counts from a few held-out
+// sessions shrunk towards a flat row; about 7 exceptions in 100 outcomes). Then
 //   g[k][o] = Σ_{s in group k} b(s) P(o | s, a) = C[k] + Σ_{s in k} b(s) d(s, o)
 // with C[k] = Σ_{s in k} b(s) base(s) and d = P − base, 0 but on the state's exceptions: a group's
 // row is C[k] except on the union of its states' exceptions, so Σ_o g log g needs a log there only.

@@ -81,8 +81,9 @@ TEST(ObservationGrades, SymbolsAreNamedClassAtGradeAndIndexedClassMajor) {
   EXPECT_THROW(parse_observation_kind("soft"), InputError);
 }
 
-// A fit on recordings grades every action, a prediction carries its grade, and the model file keeps the
-// grades; a file written before them loads, serves labels and refuses graded with a clear error.
+// A fit on recordings grades every action, a prediction carries its grade, and the model file keeps
+// the grades; a file written before them loads, serves labels and refuses graded with a clear
+// error.
 TEST(ObservationGrades, TheClipModelGradesAndItsFileKeepsTheGrades) {
   const ObservationModel& model = test_model::trained().model;
   ASSERT_TRUE(model.graded());

@@ -169,8 +169,8 @@ TEST(SensingPolicyLarge, ChoosesWhatTheDefinitionChoosesAndRemembersIt) {
   expect_choices_of_the_definition(large_problem(rng), rng);
 }
 
-// Rows as a feature set's shrunk table has them (a flat value, the true class and three others above it):
-// the sparse sum.
+// Rows as a feature set's shrunk table has them (a flat value, the true class and three others
+// above it): the sparse sum.
 TEST(SensingPolicyLarge, ChoosesWhatTheDefinitionChoosesOnRowsOfOneValue) {
   Rng rng(11);
   pomdp::ObjectProblemData data = large_problem(rng);
