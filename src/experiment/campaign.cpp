@@ -57,7 +57,7 @@ void apply_folder_choices(Campaign& c) {
 }
 
 // The folder holds this campaign or none: claims it by writing campaign.json (with the choices
-// of an earlier run in it, if any).
+// of an earlier run in it, if any), and keeps there a recordings tree's audio analysed on opening.
 void claim_folder(Campaign& c, InputFiles& files) {
   check_writable(c.directory);
   const fs::path described = c.directory / kDescription;
@@ -74,22 +74,30 @@ void claim_folder(Campaign& c, InputFiles& files) {
     apply_folder_choices(c);
   }
   write_description(c);
+  files.keep_analysed();
 }
 
-}  // namespace
-
-Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) {
+// open_campaign, reading a recordings tree's analysed audio back from the first of `kept_in` that
+// kept it (the campaign's folder; a merge's shards too) instead of analysing it again.
+Campaign open_in(const CampaignConfig& config, const fs::path& directory,
+                 std::vector<fs::path> kept_in) {
   Campaign c;
   c.config = config;
   c.results.arms = resolve_arms(config);
   c.directory = directory;
   c.world = make_campaign_world(config, directory);
-  InputFiles files;
+  InputFiles files(std::move(kept_in));
   c.world->open(c.config, c.results.arms, c.results, files);
   c.results.config = c.config;
   c.results.planned_trials = c.config.total_trials();
   claim_folder(c, files);
   return c;
+}
+
+}  // namespace
+
+Campaign open_campaign(const CampaignConfig& config, const fs::path& directory) {
+  return open_in(config, directory, {directory});
 }
 
 bool prepare_training(Campaign& campaign, const ProgressFn& progress, const std::atomic<bool>& stop,
@@ -164,7 +172,9 @@ std::string merge_campaigns(const fs::path& directory, const std::vector<fs::pat
       throw InputError(directory.string(), 0, "the merged folder must not be one of the shards");
   const CampaignConfig config =
       campaign_config_from_json(first["config"], (shards[0] / kDescription).string());
-  Campaign campaign = open_campaign(config, directory);
+  std::vector<fs::path> kept_in{directory};
+  kept_in.insert(kept_in.end(), shards.begin(), shards.end());
+  Campaign campaign = open_in(config, directory, std::move(kept_in));
 
   // The training set of the first shard that has one (every shard synthesised the same one).
   if (config.training.recordings.empty())

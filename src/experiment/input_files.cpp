@@ -1,9 +1,11 @@
 #include "experiment/input_files.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "common/file_io.h"
 #include "common/stable_hash.h"
+#include "experiment/analysed_recordings.h"
 #include "perception/recording_features.h"
 
 namespace echoplan::experiment {
@@ -48,15 +50,36 @@ std::shared_ptr<const pomdp::Problem> InputFiles::problem(const std::string& pat
   return it->second;
 }
 
+InputFiles::InputFiles(std::vector<std::filesystem::path> campaign_folders)
+    : campaign_folders_(std::move(campaign_folders)) {}
+
+std::shared_ptr<const perception::FeatureSet> InputFiles::load(const std::string& folder,
+                                                               const ProgressFn& progress) {
+  if (campaign_folders_.empty() ||
+      perception::data_kind(folder) != perception::DataKind::recordings)
+    return std::make_shared<const perception::FeatureSet>(perception::load_data(folder, progress));
+  const perception::RecordingSet set = perception::load_recording_set(folder);
+  const std::string listing = recordings_listing(set);
+  for (const std::filesystem::path& campaign : campaign_folders_)
+    if (auto kept = read_analysed_recordings(campaign / kAnalysedRecordings, folder, listing))
+      return std::make_shared<const perception::FeatureSet>(std::move(*kept));
+  auto data = std::make_shared<const perception::FeatureSet>(
+      perception::feature_set_from_recordings(set, {}, progress));
+  analysed_ = Analysed{folder, listing, data};
+  return data;
+}
+
 std::shared_ptr<const perception::FeatureSet> InputFiles::data(const std::string& folder,
                                                                const ProgressFn& progress) {
   auto it = data_.find(folder);
-  if (it == data_.end())
-    it = data_
-             .emplace(folder, std::make_shared<const perception::FeatureSet>(
-                                  perception::load_data(folder, progress)))
-             .first;
+  if (it == data_.end()) it = data_.emplace(folder, load(folder, progress)).first;
   return it->second;
+}
+
+void InputFiles::keep_analysed() const {
+  if (!analysed_ || campaign_folders_.empty()) return;
+  write_analysed_recordings(campaign_folders_.front() / kAnalysedRecordings, analysed_->folder,
+                            analysed_->listing, *analysed_->data);
 }
 
 std::string InputFiles::fingerprint(const std::string& path) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include "common/error.h"
 #include "common/file_io.h"
 #include "perception/recording_set.h"
+#include "../perception/trained_model.h"
 
 namespace echoplan::experiment {
 namespace {
@@ -60,7 +62,7 @@ int run(const CampaignConfig& config, const fs::path& dir, int workers, Shard sh
   options.on_trial = [&](const JournalEntry&) {
     if (++finished == stop_after) stop = true;
   };
-  const int n = run_campaign_trials(config, campaign.loops, remaining_jobs(campaign, shard),
+  const int n = run_campaign_trials(campaign.config, campaign.loops, remaining_jobs(campaign, shard),
                                     journal, options);
   rebuild_report(campaign, false);
   return n;
@@ -300,6 +302,74 @@ TEST(Campaign, RebuildingTheReportOpensNoRecordingAndFitsNoModel) {
   const nlohmann::json summary =
       nlohmann::json::parse(read_text_file((dir / "summary.json").string(), "summary"));
   EXPECT_EQ(summary["heard"]["simulated"].size(), 2u);
+}
+
+// A recordings tree replayed as a dataset world: its three objects struck and tapped in three
+// sessions each (manifest.csv names the sessions).
+fs::path recorded_sessions(const std::string& name) {
+  const fs::path dir = fresh_dir(name) / "data";
+  fs::create_directories(dir);
+  std::ofstream manifest(dir / "manifest.csv");
+  manifest << "file,object,action,session\n";
+  for (std::size_t k = 0; k < perception::test_model::kObjects.size(); ++k)
+    for (const std::string action : {"strike", "tap"})
+      for (unsigned session = 1; session <= 3; ++session) {
+        const std::string object = perception::test_model::kObjects[k];
+        const fs::path file = fs::path(object) / action / (std::to_string(session) + ".wav");
+        fs::create_directories(dir / file.parent_path());
+        audio::write_audio((dir / file).string(),
+                           perception::test_model::recording(
+                               k, 7 * session + static_cast<unsigned>(k) * 100 +
+                                      (action == "tap" ? 1000 : 0)));
+        manifest << file.generic_string() << ',' << object << ',' << action << ',' << session
+                 << '\n';
+      }
+  return dir;
+}
+
+// Every recording overwritten with bytes that are no audio, its size and time kept: opening one
+// would fail.
+void garble_recordings(const fs::path& dir) {
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (entry.path().extension() != ".wav") continue;
+    const auto size = fs::file_size(entry.path());
+    const auto written = fs::last_write_time(entry.path());
+    std::ofstream(entry.path(), std::ios::binary) << std::string(size, 'x');
+    fs::last_write_time(entry.path(), written);
+  }
+}
+
+// A dataset campaign over recordings analyses them once: reopening it to rebuild its report, or to
+// merge it as a shard, reads the kept analysis (analysed_recordings.json) and opens no recording;
+// a recording changed since makes the tree analysed again (here, all garbage: the first is named).
+TEST(Campaign, ADatasetCampaignOverRecordingsAnalysesThemOnce) {
+  const fs::path data = recorded_sessions("analysed_once");
+  const fs::path dir = data.parent_path() / "campaign", merged = data.parent_path() / "merged";
+  const CampaignConfig config = parse_campaign_config(
+      "seed: 2\nworld: {type: dataset, data: " + data.string() +
+          ", hold_out: session}\narms:\n  - {name: plan, strategy: plan}\n"
+          "  - {name: all_actions, strategy: all_actions}\n"
+          "planner: {solver: abt, episodes: 200, max_steps: 20}\n",
+      (data.parent_path() / "campaign.yaml").string());
+  run(config, dir, 1);
+  ASSERT_TRUE(fs::exists(dir / "analysed_recordings.json"));
+  const auto before = files_of(dir);
+  garble_recordings(data);
+  rebuild_report(open_campaign(config, dir), false);
+  expect_same(before, files_of(dir));
+  merge_campaigns(merged, {dir});
+  EXPECT_EQ(read_text_file((merged / "trials.csv").string(), "trials"),
+            read_text_file((dir / "trials.csv").string(), "trials"));
+  // Touched: the listing no longer matches, so the tree is analysed again.
+  const fs::path touched = data / "ring" / "tap" / "2.wav";
+  fs::last_write_time(touched, fs::last_write_time(touched) + std::chrono::seconds(5));
+  try {
+    open_campaign(config, dir);
+    ADD_FAILURE() << "a changed recording was not analysed again";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(".wav: cannot decode as audio"), std::string::npos)
+        << e.what();
+  }
 }
 
 // The InputError message of opening `config` in `dir`.
