@@ -30,10 +30,8 @@ nlohmann::json to_json(const perception::FeatureSet& data) {
                             {"rows", m.rows}});
     actions.push_back({{"name", action.name}, {"rows", rows}, {"modalities", modalities}});
   }
-  return {{"root", data.root},
-          {"objects", data.objects},
-          {"sessions", sessions},
-          {"actions", actions}};
+  return {
+      {"root", data.root}, {"objects", data.objects}, {"sessions", sessions}, {"actions", actions}};
 }
 
 // The rows' labels and lengths agree with the set (a damaged file must not reach the campaign).

@@ -11,10 +11,10 @@
 #include <sstream>
 
 #include "../common/source_dir.h"
+#include "../perception/trained_model.h"
 #include "common/error.h"
 #include "common/file_io.h"
 #include "perception/recording_set.h"
-#include "../perception/trained_model.h"
 
 namespace echoplan::experiment {
 namespace {
@@ -62,8 +62,8 @@ int run(const CampaignConfig& config, const fs::path& dir, int workers, Shard sh
   options.on_trial = [&](const JournalEntry&) {
     if (++finished == stop_after) stop = true;
   };
-  const int n = run_campaign_trials(campaign.config, campaign.loops, remaining_jobs(campaign, shard),
-                                    journal, options);
+  const int n = run_campaign_trials(campaign.config, campaign.loops,
+                                    remaining_jobs(campaign, shard), journal, options);
   rebuild_report(campaign, false);
   return n;
 }
@@ -317,10 +317,10 @@ fs::path recorded_sessions(const std::string& name) {
         const std::string object = perception::test_model::kObjects[k];
         const fs::path file = fs::path(object) / action / (std::to_string(session) + ".wav");
         fs::create_directories(dir / file.parent_path());
-        audio::write_audio((dir / file).string(),
-                           perception::test_model::recording(
-                               k, 7 * session + static_cast<unsigned>(k) * 100 +
-                                      (action == "tap" ? 1000 : 0)));
+        audio::write_audio(
+            (dir / file).string(),
+            perception::test_model::recording(
+                k, 7 * session + static_cast<unsigned>(k) * 100 + (action == "tap" ? 1000 : 0)));
         manifest << file.generic_string() << ',' << object << ',' << action << ',' << session
                  << '\n';
       }
@@ -345,12 +345,12 @@ void garble_recordings(const fs::path& dir) {
 TEST(Campaign, ADatasetCampaignOverRecordingsAnalysesThemOnce) {
   const fs::path data = recorded_sessions("analysed_once");
   const fs::path dir = data.parent_path() / "campaign", merged = data.parent_path() / "merged";
-  const CampaignConfig config = parse_campaign_config(
-      "seed: 2\nworld: {type: dataset, data: " + data.string() +
-          ", hold_out: session}\narms:\n  - {name: plan, strategy: plan}\n"
-          "  - {name: all_actions, strategy: all_actions}\n"
-          "planner: {solver: abt, episodes: 200, max_steps: 20}\n",
-      (data.parent_path() / "campaign.yaml").string());
+  const CampaignConfig config =
+      parse_campaign_config("seed: 2\nworld: {type: dataset, data: " + data.string() +
+                                ", hold_out: session}\narms:\n  - {name: plan, strategy: plan}\n"
+                                "  - {name: all_actions, strategy: all_actions}\n"
+                                "planner: {solver: abt, episodes: 200, max_steps: 20}\n",
+                            (data.parent_path() / "campaign.yaml").string());
   run(config, dir, 1);
   ASSERT_TRUE(fs::exists(dir / "analysed_recordings.json"));
   const auto before = files_of(dir);
