@@ -36,7 +36,8 @@ std::string run_campaign(const std::string& config_path, const std::string& out,
     experiment::TrialJournal journal(campaign.directory / "journal.jsonl");
     options.stop = &stop;
     if (!jobs.empty())
-      experiment::run_campaign_trials(campaign.config, campaign.loops, jobs, journal, options);
+      experiment::run_campaign_trials(campaign.config, campaign.results.groups, campaign.loops,
+                                      jobs, journal, options);
     return experiment::rebuild_report(campaign, figures);
   });
 }

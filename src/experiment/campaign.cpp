@@ -61,7 +61,7 @@ void apply_folder_choices(Campaign& c) {
 void claim_folder(Campaign& c, InputFiles& files) {
   check_writable(c.directory);
   const fs::path described = c.directory / kDescription;
-  c.results.identity = c.config.identity(files);
+  c.results.identity = c.config.identity(files, c.results.groups);
   if (fs::exists(described)) {
     const nlohmann::json theirs = nlohmann::json::parse(
         read_text_file(described.string(), "campaign description"), nullptr, false);
@@ -89,7 +89,8 @@ Campaign open_in(const CampaignConfig& config, const fs::path& directory,
   InputFiles files(std::move(kept_in));
   c.world->open(c.config, c.results.arms, c.results, files);
   c.results.config = c.config;
-  c.results.planned_trials = c.config.total_trials();
+  c.results.planned_trials = static_cast<int>(
+      campaign_jobs(static_cast<int>(c.config.arms.size()), c.results.groups).size());
   claim_folder(c, files);
   return c;
 }
@@ -117,7 +118,8 @@ std::vector<TrialJob> remaining_jobs(const Campaign& campaign, const Shard& shar
   std::set<int> done;
   for (const JournalEntry& e : read_journal(campaign.directory / kJournal)) done.insert(e.id);
   std::vector<TrialJob> jobs;
-  for (const TrialJob& job : campaign_jobs(campaign.config))
+  for (const TrialJob& job :
+       campaign_jobs(static_cast<int>(campaign.config.arms.size()), campaign.results.groups))
     if (shard.contains(job.id) && !done.count(job.id)) jobs.push_back(job);
   return jobs;
 }

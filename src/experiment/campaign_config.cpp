@@ -273,12 +273,6 @@ perception::ObservationKind CampaignArm::observation_kind() const {
   return perception::parse_observation_kind(observations);
 }
 
-int CampaignConfig::total_trials() const {
-  int per_arm = 0;
-  for (const ObjectGroup& g : groups) per_arm += g.trials;
-  return per_arm * static_cast<int>(arms.size());
-}
-
 namespace {
 
 // The campaign's sections as JSON, each section by `write(fields, value)`: the one shape of
@@ -306,22 +300,24 @@ nlohmann::json campaign_json(const CampaignConfig& c, Write&& write) {
 
 nlohmann::json CampaignConfig::identity() const {
   InputFiles files;
-  return identity(files);
+  return identity(files, groups);
 }
 
-nlohmann::json CampaignConfig::identity(InputFiles& files) const {
+nlohmann::json CampaignConfig::identity(InputFiles& files,
+                                        const std::vector<ObjectGroup>& groups) const {
   const config_fields::Fingerprints fingerprints{
       [&](const std::string& path) { return path.empty() ? "" : files.fingerprint(path); },
       [&](const std::string& folder) { return files.data_fingerprint(folder); }};
   // The arms as they run, in the file's words: a default that changes what an arm does changes
   // the identity, and a file that spells a default out is the same campaign as one that does not.
   CampaignConfig as_run = *this;
+  as_run.groups = groups;
   as_run.arms.clear();
   for (const ResolvedArm& arm : resolve_arms(*this)) as_run.arms.push_back(as_written(arm));
   nlohmann::json j = campaign_json(as_run, [&](const auto& fields, const auto& value) {
     return config_fields::write_identity(fields, value, world.recorded_data(), fingerprints);
   });
-  // A campaign without trial groups (identity before a dataset world's open) lists none.
+  // Without trial groups (a configuration's before its dataset world is opened) it lists none.
   if (j["trials"].empty()) j.erase("trials");
   return j;
 }

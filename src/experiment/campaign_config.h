@@ -157,13 +157,13 @@ struct CampaignConfig {
   // columns. Not part of the identity: it changes the report's comparison, not the trials.
   std::optional<ReferenceResults> reference;
 
-  int total_trials() const;  // arms x sum of the groups' trials
-
   // Everything that decides the results, as JSON with files and data folders replaced by their
-  // fingerprints, so a resumed or merged run can check it continues the same campaign.
+  // fingerprints, so a resumed or merged run can check it continues the same campaign: the
+  // configuration with the world's trial `groups` (a dataset world's come from its data).
+  nlohmann::json identity(InputFiles& files, const std::vector<ObjectGroup>& groups) const;
+  // The identity with the file's own trial groups (a model or simulated world's), its files read
+  // here.
   nlohmann::json identity() const;
-  // The same from the files and data `files` has read (a caller that has read them already).
-  nlohmann::json identity(InputFiles& files) const;
 };
 
 // Reads a campaign file; throws InputError naming the file, the line and the problem.

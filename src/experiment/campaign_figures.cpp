@@ -427,7 +427,7 @@ std::vector<Figure> draw_figures(const fs::path& directory, const CampaignResult
   }
   for (const ResolvedArm& arm : results.arms) {
     if (!results.world.per_object) break;
-    for (const ObjectGroup& group : results.config.groups) {
+    for (const ObjectGroup& group : results.groups) {
       const bool any = std::any_of(
           results.entries.begin(), results.entries.end(),
           [&](const JournalEntry& e) { return e.arm == arm.name && e.object == group.object; });

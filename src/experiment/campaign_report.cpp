@@ -49,7 +49,7 @@ std::optional<ReferenceResult> reference_for(const std::optional<ReferenceResult
 std::vector<TrialRecord> records_where(const CampaignResults& results, const std::string& arm,
                                        const GroupFilter& keep) {
   std::map<std::string, const ObjectGroup*> groups;
-  for (const ObjectGroup& g : results.config.groups) groups[g.object] = &g;
+  for (const ObjectGroup& g : results.groups) groups[g.object] = &g;
   std::vector<TrialRecord> records;
   for (const JournalEntry& e : results.entries) {
     auto it = groups.find(e.object);
@@ -64,7 +64,8 @@ std::string percent(double fraction) { return fmt::format("{:.0f}%", 100.0 * fra
 // and index saw the same true object and world noise. Summarised like rewards (mean and 95% CI).
 TrialSummary paired_difference(const CampaignResults& results, const std::string& a,
                                const std::string& b) {
-  const std::vector<TrialJob> jobs = campaign_jobs(results.config);
+  const std::vector<TrialJob> jobs =
+      campaign_jobs(static_cast<int>(results.config.arms.size()), results.groups);
   std::vector<TrialRecord> differences;
   std::map<std::pair<std::string, int>, double> reward_a;
   std::map<std::pair<std::string, int>, double> reward_b;
@@ -87,7 +88,7 @@ TrialSummary paired_difference(const CampaignResults& results, const std::string
 
 std::vector<SummaryRow> summary_rows(const CampaignResults& results) {
   const int num_actions = static_cast<int>(results.spec.action_names.size());
-  const std::vector<ObjectGroup>& groups = results.config.groups;
+  const std::vector<ObjectGroup>& groups = results.groups;
   const bool originals = std::any_of(groups.begin(), groups.end(), plays_itself);
   const bool variants = !std::all_of(groups.begin(), groups.end(), plays_itself);
   std::vector<SummaryRow> rows;
@@ -157,7 +158,7 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
       c.arm = arm.name;
       c.action = results.spec.action_names[a];
       c.columns = classes;
-      for (const ObjectGroup& g : results.config.groups) c.rows.push_back(g.object);
+      for (const ObjectGroup& g : results.groups) c.rows.push_back(g.object);
       c.counts.assign(c.rows.size(), std::vector<int>(classes.size(), 0));
       bool any = false;
       for (const JournalEntry& e : results.entries) {
@@ -180,10 +181,9 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
 
 // The seed a trial's random streams came from, with its number among its object's trials (a
 // dataset world: its session's place among the object's sessions): `echoplan run --seed`.
-std::string trial_seed(const CampaignConfig& config, const std::string& object) {
-  for (std::size_t g = 0; g < config.groups.size(); ++g)
-    if (config.groups[g].object == object)
-      return std::to_string(group_seed(config, static_cast<int>(g)));
+std::string trial_seed(const CampaignResults& results, const std::string& object) {
+  for (const ObjectGroup& group : results.groups)
+    if (group.object == object) return std::to_string(group_seed(results.config.seed, group));
   return {};
 }
 
@@ -200,7 +200,7 @@ void write_arm_tables(const fs::path& directory, const CampaignResults& results,
     for (const JournalEntry& e : results.entries)
       if (e.arm == arm.name && keep(e))
         per_arm.write_trial(e.result.record, e.result.steps, {e.object, e.session},
-                            {trial_seed(results.config, e.object)});
+                            {trial_seed(results, e.object)});
   }
 }
 
@@ -212,7 +212,7 @@ void write_tables(const fs::path& directory, const CampaignResults& results) {
   const auto names = observation_names(results);
   for (const JournalEntry& e : results.entries)
     all.write_trial(e.result.record, e.result.steps, {e.arm, e.object, e.session},
-                    {trial_seed(results.config, e.object)}, &names.at(e.arm));
+                    {trial_seed(results, e.object)}, &names.at(e.arm));
   write_arm_tables(directory, results, [](const JournalEntry&) { return true; });
   std::set<std::string> folds;
   for (const auto& [session, fold] : results.fold_of_session) folds.insert(fold);

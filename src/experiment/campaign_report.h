@@ -41,14 +41,17 @@ struct WorldPresentation {
 };
 
 struct CampaignResults {
-  CampaignConfig config;
+  CampaignConfig config;          // as the file wrote it
   std::vector<ResolvedArm> arms;  // what each arm of config ran (campaign_arms.h)
+  // The world's trial groups: the file's, or a dataset world's, one per object (a trial per
+  // session).
+  std::vector<ObjectGroup> groups;
   WorldPresentation world;
   pomdp::ModelSpec spec;     // objects, actions and observation names, the same for every arm
   int belief_particles = 0;  // > 0: steps.csv shows particle counts (Table 5.2); 0: probabilities
   std::vector<JournalEntry> entries;  // sorted by id, at most one per id
   int planned_trials = 0;             // what the campaign (all shards) asks for
-  nlohmann::json identity;            // config.identity(), taken once from the files read
+  nlohmann::json identity;            // config.identity() with the groups, from the files read
   // A dataset world's sorting: right_action[s] sorts true state s right (summarize()); empty for
   // other worlds, whose accuracy is the final belief's mode.
   std::vector<int> right_action;

@@ -39,12 +39,13 @@ class Worker {
 
 }  // namespace
 
-std::vector<TrialJob> campaign_jobs(const CampaignConfig& config) {
+std::vector<TrialJob> campaign_jobs(int arms, const std::vector<ObjectGroup>& groups) {
   std::vector<TrialJob> jobs;
   int id = 0;
-  for (int a = 0; a < static_cast<int>(config.arms.size()); ++a)
-    for (int g = 0; g < static_cast<int>(config.groups.size()); ++g)
-      for (int i = 0; i < config.groups[g].trials; ++i) jobs.push_back({id++, a, g, i});
+  for (int a = 0; a < arms; ++a)
+    for (int g = 0; g < static_cast<int>(groups.size()); ++g)
+      for (int i = 0; i < groups[static_cast<std::size_t>(g)].trials; ++i)
+        jobs.push_back({id++, a, g, i});
   return jobs;
 }
 
@@ -53,8 +54,8 @@ const TrialLoop& trial_loop(const ArmLoops& loops, const TrialJob& job) {
   return group.size() == 1 ? group[0] : group.at(job.index);
 }
 
-std::uint64_t group_seed(const CampaignConfig& config, int group) {
-  return derive_seed(config.seed, {stable_hash(config.groups[group].object)});
+std::uint64_t group_seed(std::uint64_t seed, const ObjectGroup& group) {
+  return derive_seed(seed, {stable_hash(group.object)});
 }
 
 Shard parse_shard(const std::string& text) {
@@ -72,9 +73,9 @@ Shard parse_shard(const std::string& text) {
   return shard;
 }
 
-int run_campaign_trials(const CampaignConfig& config, const ArmLoops& loops,
-                        const std::vector<TrialJob>& jobs, TrialJournal& journal,
-                        const CampaignRunOptions& options) {
+int run_campaign_trials(const CampaignConfig& config, const std::vector<ObjectGroup>& groups,
+                        const ArmLoops& loops, const std::vector<TrialJob>& jobs,
+                        TrialJournal& journal, const CampaignRunOptions& options) {
   std::mutex report_mutex;
   int finished = 0;
   run_jobs(
@@ -84,14 +85,14 @@ int run_campaign_trials(const CampaignConfig& config, const ArmLoops& loops,
         return [&, worker](std::size_t k) {
           const TrialJob& job = jobs[k];
           const std::optional<loop::Trial> trial =
-              worker->run(job, group_seed(config, job.group), options.stop);
+              worker->run(job, group_seed(config.seed, groups.at(job.group)), options.stop);
           if (!trial) return false;
           // Trials are numbered by campaign id in every file (the runner numbers them within the
           // group).
           TrialResult result = records_of(*trial);
           result.record.trial = job.id;
           for (StepRecord& s : result.steps) s.trial = job.id;
-          JournalEntry entry{job.id, config.arms[job.arm].name, config.groups[job.group].object,
+          JournalEntry entry{job.id, config.arms[job.arm].name, groups[job.group].object,
                              trial_loop(loops, job).session, std::move(result)};
           journal.append(entry);
           std::lock_guard<std::mutex> lock(report_mutex);

@@ -1,8 +1,8 @@
 // Running a campaign's trials: numbering them, sharing them out (threads on this machine, shards
 // across machines), and journalling each as it finishes.
 //
-// Trial `id` numbers the campaign's trials arm by arm, then group by group (config order), then
-// 0..trials-1 within the group. A trial's random streams depend only on the campaign seed, its
+// Trial `id` numbers the campaign's trials arm by arm, then group by group (the world's order),
+// then 0..trials-1 within the group. A trial's random streams depend only on the campaign seed, its
 // group's object and its index in the group, not on the arm, the worker, the shard or what ran
 // before: both arms see the same true objects and the same world noise (a paired comparison), and
 // any split of the work gives the same results.
@@ -24,16 +24,16 @@ namespace echoplan::experiment {
 struct TrialJob {
   int id = 0;
   int arm = 0;    // index into CampaignConfig::arms
-  int group = 0;  // index into CampaignConfig::groups
+  int group = 0;  // index into the world's trial groups (CampaignResults::groups)
   int index = 0;  // 0-based within the group
 };
 
-// Every trial of the campaign, in id order.
-std::vector<TrialJob> campaign_jobs(const CampaignConfig& config);
+// Every trial of `arms` arms over the world's trial `groups`, in id order.
+std::vector<TrialJob> campaign_jobs(int arms, const std::vector<ObjectGroup>& groups);
 
-// The seed of the trial streams of group `group` (trial_runner.h derives each trial's streams from
-// it).
-std::uint64_t group_seed(const CampaignConfig& config, int group);
+// The seed of the trial streams of `group` in a campaign of seed `seed` (trial_runner.h derives
+// each trial's streams from it).
+std::uint64_t group_seed(std::uint64_t seed, const ObjectGroup& group);
 
 // One share of the trials: `--shard I/N` takes ids with id % N == I - 1 (I in 1..N), so shards are
 // balanced across arms and objects.
@@ -73,9 +73,9 @@ struct CampaignRunOptions {
 // trial to `journal`. Each worker builds a loop (a world and a planner) of its own per arm and
 // group it meets; the specs and what they hold are shared read-only. Returns the number of trials
 // finished; fewer than asked when stopped. Rethrows the first error of any worker after the others
-// have finished their trial in progress.
-int run_campaign_trials(const CampaignConfig& config, const ArmLoops& loops,
-                        const std::vector<TrialJob>& jobs, TrialJournal& journal,
-                        const CampaignRunOptions& options);
+// have finished their trial in progress. `groups`: the world's trial groups.
+int run_campaign_trials(const CampaignConfig& config, const std::vector<ObjectGroup>& groups,
+                        const ArmLoops& loops, const std::vector<TrialJob>& jobs,
+                        TrialJournal& journal, const CampaignRunOptions& options);
 
 }  // namespace echoplan::experiment

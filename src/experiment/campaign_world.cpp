@@ -35,8 +35,8 @@ class ProblemFileWorld final : public CampaignWorld {
   ProblemFileWorld(bool simulates, fs::path directory)
       : simulates_(simulates), training_(std::move(directory) / "training") {}
 
-  void open(CampaignConfig& config, const std::vector<ResolvedArm>& arms, CampaignResults& results,
-            InputFiles& files) override;
+  void open(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+            CampaignResults& results, InputFiles& files) override;
   std::optional<ArmLoops> prepare(const CampaignConfig& config, std::vector<ResolvedArm>& arms,
                                   const ProgressFn& progress, const std::atomic<bool>& stop,
                                   int workers) override;
@@ -173,7 +173,7 @@ WorldPresentation ProblemFileWorld::presentation(const CampaignConfig& config) c
   return p;
 }
 
-void ProblemFileWorld::open(CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+void ProblemFileWorld::open(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
                             CampaignResults& results, InputFiles& files) {
   recordings_ = config.training.recordings.empty() ? training_ / "recordings"
                                                    : fs::path(config.training.recordings);
@@ -181,6 +181,7 @@ void ProblemFileWorld::open(CampaignConfig& config, const std::vector<ResolvedAr
   load_simulator(config, files);
   check_objects(config, results.spec);
   results.world = presentation(config);
+  results.groups = config.groups;
   if (!config.training.recordings.empty() && !fs::is_directory(config.training.recordings))
     throw InputError(config.training.recordings, 0, "the recordings folder does not exist");
   if (!config.training.model.empty() && needs_classifier(arms))
@@ -348,8 +349,8 @@ std::optional<std::vector<HeardCounts>> ProblemFileWorld::heard(
 class RecordedDataWorld final : public CampaignWorld {
  public:
   explicit RecordedDataWorld(fs::path directory) : directory_(std::move(directory)) {}
-  void open(CampaignConfig& config, const std::vector<ResolvedArm>& arms, CampaignResults& results,
-            InputFiles& files) override;
+  void open(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+            CampaignResults& results, InputFiles& files) override;
   std::optional<ArmLoops> prepare(const CampaignConfig& config, std::vector<ResolvedArm>& arms,
                                   const ProgressFn& progress, const std::atomic<bool>& stop,
                                   int workers) override {
@@ -366,10 +367,10 @@ class RecordedDataWorld final : public CampaignWorld {
   std::shared_ptr<DatasetFolds> trials_;
 };
 
-void RecordedDataWorld::open(CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+void RecordedDataWorld::open(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
                              CampaignResults& results, InputFiles& files) {
   trials_ = std::make_shared<DatasetFolds>(open_dataset(config, arms, files));
-  config.groups = dataset_groups(*trials_);
+  results.groups = dataset_groups(*trials_);
   // Every arm against the names problem now, not in a worker.
   for (const ResolvedArm& arm : arms) check_arm_problem(config, arm, *trials_->names);
   results.spec = trials_->names->model->spec();

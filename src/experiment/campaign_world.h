@@ -29,10 +29,10 @@ class CampaignWorld {
   virtual ~CampaignWorld() = default;
   // Loads and checks everything the world needs before any work (files read once through
   // `files`), each arm against the problem it plans on (check_arm_problem): InputError naming the
-  // file and the problem. Fills the groups the world decides (recorded data: one per object, a
-  // trial per session) and the report's skeleton in `results` (spec, planned trials,
-  // presentation).
-  virtual void open(CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+  // file and the problem. Fills the world's facts and the report's skeleton in `results`: the trial
+  // groups (the file's, or for recorded data one per object, a trial per session), spec and
+  // presentation. The configuration stays as the file wrote it.
+  virtual void open(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
                     CampaignResults& results, InputFiles& files) = 0;
   // Trains or fits each fold's model (progress: "synthesise", the trainer's stages, "fit folds",
   // "choose unheard"), puts what self-play chose in the arms' planners, writes what the report

@@ -310,7 +310,7 @@ std::string heard_section(const CampaignResults& results) {
       escape(fmt::format("{}", fmt::join(results.heard.front().columns, ", "))));
   if (!lab.note.empty()) h += "<p>" + escape(lab.note) + "</p>\n";
   std::map<std::string, std::string> plays;  // a variant's row is right when heard as its original
-  for (const ObjectGroup& group : results.config.groups) plays[group.object] = group.plays;
+  for (const ObjectGroup& group : results.groups) plays[group.object] = group.plays;
   for (const HeardCounts& simulated : results.heard) {
     const HeardCounts* measured = of_action(lab.actions, simulated.action);
     std::vector<std::string> objects = simulated.rows;

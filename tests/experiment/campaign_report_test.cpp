@@ -57,7 +57,7 @@ TEST(CampaignReport, RowsPerArmWithTheirStatistics) {
 
 TEST(CampaignReport, NoTotalsWithoutBothKindsOfObject) {
   CampaignResults results = small_campaign();
-  results.config.groups.pop_back();  // only a: no variants, so no original/variant split
+  results.groups.pop_back();  // only a: no variants, so no original/variant split
   std::vector<RowScope> scopes;
   for (const SummaryRow& row : summary_rows(results))
     if (row.arm == "one") scopes.push_back(row.scope);
@@ -79,7 +79,7 @@ TEST(CampaignReport, ReferenceMatchedByObjectAndCoveredObjects) {
     EXPECT_EQ(rows[arm + 4].reference->correct, 25);
   }
   // Labels do not matter, structure does: an object named like a total gets no total's numbers.
-  results.config.groups[0] = {"all", "all", 2};
+  results.groups[0] = {"all", "all", 2};
   for (auto& e : results.entries)
     if (e.object == "a") e.object = "all";
   EXPECT_FALSE(summary_rows(results)[0].reference);

@@ -67,6 +67,7 @@ inline CampaignResults small_campaign() {
   c.groups = {{"a", "a", 2}, {"b_heavy", "b", 1}};
   c.planner.episodes = 100;
   results.arms = resolve_arms(c);
+  results.groups = c.groups;  // a model world's are the file's
   pomdp::ModelSpec& spec = results.spec;
   spec.action_names = {"listen", "pick_a", "pick_b"};
   spec.state.discrete_names = {"object"};

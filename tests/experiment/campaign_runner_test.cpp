@@ -50,12 +50,10 @@ TEST(CampaignRunner, AStrategyArmDecidesByItsStrategyNotTheCampaignsSolver) {
 }
 
 TEST(CampaignRunner, JobsNumberArmsThenGroupsThenTrials) {
-  CampaignConfig config;
-  config.arms.resize(2);
-  config.groups.resize(2);
-  config.groups[0].trials = 2;
-  config.groups[1].trials = 1;
-  const std::vector<TrialJob> jobs = campaign_jobs(config);
+  std::vector<ObjectGroup> groups(2);
+  groups[0].trials = 2;
+  groups[1].trials = 1;
+  const std::vector<TrialJob> jobs = campaign_jobs(2, groups);
   // (arm, group, index) in id order.
   const std::vector<std::array<int, 3>> expected = {{0, 0, 0}, {0, 0, 1}, {0, 1, 0},
                                                     {1, 0, 0}, {1, 0, 1}, {1, 1, 0}};

@@ -62,7 +62,7 @@ int run(const CampaignConfig& config, const fs::path& dir, int workers, Shard sh
   options.on_trial = [&](const JournalEntry&) {
     if (++finished == stop_after) stop = true;
   };
-  const int n = run_campaign_trials(campaign.config, campaign.loops,
+  const int n = run_campaign_trials(campaign.config, campaign.results.groups, campaign.loops,
                                     remaining_jobs(campaign, shard), journal, options);
   rebuild_report(campaign, false);
   return n;
@@ -427,7 +427,9 @@ TEST(Campaign, ShardsParseAndPartitionTheTrials) {
   EXPECT_EQ(parse_shard("2/5").count, 5);
   for (const char* bad : {"0/3", "4/3", "1", "a/b", "1/0", "1/3x", "-1/3"})
     EXPECT_THROW(parse_shard(bad), InputError) << bad;
-  const std::vector<TrialJob> jobs = campaign_jobs(tiny_config(2));
+  const CampaignConfig config = tiny_config(2);
+  const std::vector<TrialJob> jobs =
+      campaign_jobs(static_cast<int>(config.arms.size()), config.groups);
   std::vector<int> owners(jobs.size(), 0);
   for (int i = 1; i <= 4; ++i)
     for (const TrialJob& job : jobs) owners[job.id] += Shard{i, 4}.contains(job.id);

@@ -57,8 +57,8 @@ CampaignResults run(const CampaignConfig& config, const fs::path& dir) {
   EXPECT_TRUE(prepare_training(campaign, {}, stop));
   TrialJournal journal(dir / "journal.jsonl");
   CampaignRunOptions options;
-  run_campaign_trials(campaign.config, campaign.loops, remaining_jobs(campaign, {}), journal,
-                      options);
+  run_campaign_trials(campaign.config, campaign.results.groups, campaign.loops,
+                      remaining_jobs(campaign, {}), journal, options);
   rebuild_report(campaign, false);
   CampaignResults results = campaign.results;
   results.entries = read_journal(dir / "journal.jsonl");
@@ -107,7 +107,7 @@ TEST(DatasetCampaign, EverySessionIsATrialOfEveryArmPairedAndSortedRightIsCounte
   std::getline(csv, first);
   EXPECT_TRUE(header.ends_with(",arm,object,session,seed")) << header;
   // The seed the trial's streams came from: the campaign's, derived for the object's trials.
-  const std::string seed = std::to_string(group_seed(results.config, 0));
+  const std::string seed = std::to_string(group_seed(results.config.seed, results.groups.at(0)));
   EXPECT_TRUE(first.ends_with(",plan,obj0,s0," + seed)) << first;
 
   // Sensing actions are 0..2 (press, shake, tap), sorting 3..4.

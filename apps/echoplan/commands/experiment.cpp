@@ -43,7 +43,7 @@ void run_experiment(const ExperimentFlags& f) {
 
   const auto start = std::chrono::steady_clock::now();
   spdlog::info("campaign {} -> {} ({} trials{}, {} workers)", config_path, f.out,
-               campaign.config.total_trials(),
+               campaign.results.planned_trials,
                shard.count > 1 ? fmt::format(", shard {}/{}", shard.index, shard.count) : "",
                workers);
   {
@@ -74,7 +74,8 @@ void run_experiment(const ExperimentFlags& f) {
 
   const std::vector<experiment::TrialJob> jobs = experiment::remaining_jobs(campaign, shard);
   int shard_total = 0;
-  for (const experiment::TrialJob& job : experiment::campaign_jobs(campaign.config))
+  for (const experiment::TrialJob& job : experiment::campaign_jobs(
+           static_cast<int>(campaign.config.arms.size()), campaign.results.groups))
     shard_total += shard.contains(job.id);
   const int already = shard_total - static_cast<int>(jobs.size());
   if (already > 0)
@@ -90,7 +91,8 @@ void run_experiment(const ExperimentFlags& f) {
   const auto trials_start = std::chrono::steady_clock::now();
   if (!jobs.empty()) {
     bar.update(done);
-    experiment::run_campaign_trials(campaign.config, campaign.loops, jobs, journal, options);
+    experiment::run_campaign_trials(campaign.config, campaign.results.groups, campaign.loops, jobs,
+                                    journal, options);
     bar.finish();
   }
   const double trial_seconds =
