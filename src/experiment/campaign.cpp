@@ -85,9 +85,10 @@ Campaign open_in(const CampaignConfig& config, const fs::path& directory,
   c.config = config;
   c.results.arms = resolve_arms(config);
   c.directory = directory;
-  c.world = make_campaign_world(config, directory);
+  std::unique_ptr<CampaignWorld> world = make_campaign_world(config, directory);
   InputFiles files(std::move(kept_in));
-  c.world->open(c.config, c.results.arms, c.results, files);
+  world->open(c.config, c.results.arms, c.results, files);
+  c.world = std::move(world);  // from now on what it opened is only read
   c.results.config = c.config;
   c.results.planned_trials = static_cast<int>(
       campaign_jobs(static_cast<int>(c.config.arms.size()), c.results.groups).size());

@@ -33,12 +33,12 @@ namespace echoplan::experiment {
 // report's skeleton) and its world, with every input loaded once and shared read-only by the
 // workers. The journal on disk is the only state that changes as trials finish.
 struct Campaign {
-  CampaignConfig config;  // the file as written, and the trial groups of its world
+  CampaignConfig config;  // the file as written (the world's trial groups: results.groups)
   std::filesystem::path directory;
   // spec, particles, planned trials, presentation (entries: none yet) and what each arm runs
   // (results.arms: resolve_arms, with what self-play chose once prepare_training() has run)
   CampaignResults results;
-  std::shared_ptr<CampaignWorld> world;
+  std::shared_ptr<const CampaignWorld> world;  // as open() left it: prepare() only reads it
   // Filled by prepare_training(): the checked loop of each arm and group, what the workers run.
   ArmLoops loops;
 };

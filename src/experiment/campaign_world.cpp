@@ -39,7 +39,7 @@ class ProblemFileWorld final : public CampaignWorld {
             CampaignResults& results, InputFiles& files) override;
   std::optional<ArmLoops> prepare(const CampaignConfig& config, std::vector<ResolvedArm>& arms,
                                   const ProgressFn& progress, const std::atomic<bool>& stop,
-                                  int workers) override;
+                                  int workers) const override;
 
  private:
   // A trained classifier is needed: an arm calibrates, or the simulator's sound is heard.
@@ -52,10 +52,17 @@ class ProblemFileWorld final : public CampaignWorld {
                         InputFiles& files);
   WorldPresentation presentation(const CampaignConfig& config) const;
   loop::SimulatedTraining simulated_training(const CampaignConfig& config) const;
-  std::shared_ptr<const perception::ObservationModel> classifier(const CampaignConfig& config,
-                                                                 const ProgressFn& progress,
-                                                                 const std::atomic<bool>& stop);
-  ArmLoops make_loops(const CampaignConfig& config, const std::vector<ResolvedArm>& arms) const;
+  std::shared_ptr<const perception::ObservationModel> classifier(
+      const CampaignConfig& config, const ProgressFn& progress,
+      const std::atomic<bool>& stop) const;
+  // The arms' problems and the classifier as prepare() made them: each arm's problem as its file
+  // says, a calibrating arm's calibrated.
+  struct Prepared {
+    std::vector<std::shared_ptr<const pomdp::Problem>> arm_problems;
+    std::shared_ptr<const perception::ObservationModel> model;
+  };
+  ArmLoops make_loops(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+                      const Prepared& prepared) const;
   std::optional<std::vector<HeardCounts>> heard(const CampaignConfig& config,
                                                 const std::atomic<bool>& stop) const;
   bool keep_report_inputs(const CampaignConfig& config, const std::atomic<bool>& stop) const;
@@ -65,12 +72,10 @@ class ProblemFileWorld final : public CampaignWorld {
   fs::path recordings_;  // the training set: training_set.recordings or DIR/training/recordings
   std::vector<std::string> training_objects_, training_actions_;
   std::shared_ptr<const pomdp::Problem> world_problem_;
-  // Each arm's problem as its file says; prepare() puts a calibrating arm's calibrated problem in
-  // its place.
-  std::vector<std::shared_ptr<const pomdp::Problem>> arm_problems_;
+  std::vector<std::shared_ptr<const pomdp::Problem>> arm_problems_;  // as their files say
   std::shared_ptr<const sim::Catalogue> catalogue_;
   std::shared_ptr<const sim::SimConfig> sim_config_;
-  std::shared_ptr<const perception::ObservationModel> model_;  // given, or trained by prepare()
+  std::shared_ptr<const perception::ObservationModel> given_model_;  // training_set.model
 };
 
 bool ProblemFileWorld::needs_classifier(const std::vector<ResolvedArm>& arms) const {
@@ -144,12 +149,13 @@ void ProblemFileWorld::load_simulator(const CampaignConfig& config, InputFiles& 
 // and every loop now.
 void ProblemFileWorld::load_given_model(const CampaignConfig& config,
                                         const std::vector<ResolvedArm>& arms, InputFiles& files) {
-  model_ = std::make_shared<const perception::ObservationModel>(perception::parse_observation_model(
-      files.text(config.training.model), config.training.model));
+  given_model_ =
+      std::make_shared<const perception::ObservationModel>(perception::parse_observation_model(
+          files.text(config.training.model), config.training.model));
   for (std::size_t a = 0; a < arms.size(); ++a)
     if (arms[a].calibrate)
-      loop::calibrate_problem(*arm_problems_[a], *model_, "", arms[a].hearing());
-  make_loops(config, arms);
+      loop::calibrate_problem(*arm_problems_[a], *given_model_, "", arms[a].hearing());
+  make_loops(config, arms, Prepared{arm_problems_, given_model_});
 }
 
 WorldPresentation ProblemFileWorld::presentation(const CampaignConfig& config) const {
@@ -211,8 +217,8 @@ loop::SimulatedTraining ProblemFileWorld::simulated_training(const CampaignConfi
 // The classifier: training_set.model (loaded already), DIR/training/model.json of an earlier run,
 // or trained now on the training set (and saved there for the user). Null when stopped.
 std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier(
-    const CampaignConfig& config, const ProgressFn& progress, const std::atomic<bool>& stop) {
-  if (model_) return model_;
+    const CampaignConfig& config, const ProgressFn& progress, const std::atomic<bool>& stop) const {
+  if (given_model_) return given_model_;
   const fs::path saved = training_ / "model.json";
   if (fs::exists(saved))
     return loop::prepare_observation(loop::ModelFile{saved.string()}, nullptr, "", progress, stop)
@@ -230,35 +236,37 @@ std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier
 std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
                                                   std::vector<ResolvedArm>& arms,
                                                   const ProgressFn& progress,
-                                                  const std::atomic<bool>& stop, int workers) {
+                                                  const std::atomic<bool>& stop,
+                                                  int workers) const {
   if (config.training.recordings.empty() && config.training.recordings_per_pair > 0 &&
       !loop::synthesise_training_set(simulated_training(config), progress, stop))
     return std::nullopt;
+  Prepared prepared{arm_problems_, nullptr};
   if (needs_classifier(arms)) {
     fs::create_directories(training_);
-    model_ = classifier(config, progress, stop);
-    if (!model_) return std::nullopt;
+    prepared.model = classifier(config, progress, stop);
+    if (!prepared.model) return std::nullopt;
     for (std::size_t a = 0; a < arms.size(); ++a) {
       if (!arms[a].calibrate) continue;
       const std::string file = (training_ / (arms[a].name + ".problem.yaml")).string();
-      arm_problems_[a] =
-          loop::calibrate_problem(*arm_problems_[a], *model_, file, arms[a].hearing());
-      loop::save_problem(*arm_problems_[a], file);
+      prepared.arm_problems[a] =
+          loop::calibrate_problem(*arm_problems_[a], *prepared.model, file, arms[a].hearing());
+      loop::save_problem(*prepared.arm_problems[a], file);
     }
   }
   // Arms that leave the unheard estimate to self-play play their own (calibrated) problem, its
   // belief tracked exactly; arms of one problem share the copy, and so one choice.
   std::map<const pomdp::Problem*, std::shared_ptr<const pomdp::Problem>> exact;
   const auto problems_of = [&](std::size_t arm) {
-    auto& p = exact[arm_problems_[arm].get()];
-    if (!p) p = with_exact_belief(arm_problems_[arm]);
+    auto& p = exact[prepared.arm_problems[arm].get()];
+    if (!p) p = with_exact_belief(prepared.arm_problems[arm]);
     return std::vector<std::shared_ptr<const pomdp::Problem>>{p};
   };
   if (!choose_arms_unheard(config, arms, problems_of, training_.parent_path(), progress, stop,
                            workers) ||
       !keep_report_inputs(config, stop))
     return std::nullopt;
-  return make_loops(config, arms);
+  return make_loops(config, arms, prepared);
 }
 
 // The page's view of the training set (heard counts, templates), worked out once per campaign
@@ -280,24 +288,26 @@ bool ProblemFileWorld::keep_report_inputs(const CampaignConfig& config,
 
 // The checked loop of every arm and group; InputError when a part does not fit.
 ArmLoops ProblemFileWorld::make_loops(const CampaignConfig& config,
-                                      const std::vector<ResolvedArm>& arms) const {
+                                      const std::vector<ResolvedArm>& arms,
+                                      const Prepared& prepared) const {
   ArmLoops loops(arms.size());
   // A graded arm's world hears graded symbols: the world's problem with the model's graded table
   // (its rewards and kinematics as they are; the simulator, not the table, makes observations).
   std::shared_ptr<const pomdp::Problem> graded_world;
   for (const ResolvedArm& arm : arms)
     if (arm.hearing() == perception::ObservationKind::graded && !graded_world)
-      graded_world = loop::calibrate_problem(*world_problem_, *model_, world_problem_->source_path,
-                                             perception::ObservationKind::graded);
+      graded_world =
+          loop::calibrate_problem(*world_problem_, *prepared.model, world_problem_->source_path,
+                                  perception::ObservationKind::graded);
   for (std::size_t a = 0; a < arms.size(); ++a)
     for (const ObjectGroup& group : config.groups) {
       loop::LoopSettings s;
-      s.problem = arm_problems_[a];
+      s.problem = prepared.arm_problems[a];
       s.world_problem =
           arms[a].hearing() == perception::ObservationKind::graded ? graded_world : world_problem_;
       if (simulates_) {
         s.world = loop::SimulatedWorldSpec{catalogue_, sim_config_};
-        s.observation_model = model_;
+        s.observation_model = prepared.model;
         if (group.object != group.plays) s.world_objects[group.plays] = group.object;
       }
       s.planner = arms[a].planner;
@@ -353,18 +363,19 @@ class RecordedDataWorld final : public CampaignWorld {
             CampaignResults& results, InputFiles& files) override;
   std::optional<ArmLoops> prepare(const CampaignConfig& config, std::vector<ResolvedArm>& arms,
                                   const ProgressFn& progress, const std::atomic<bool>& stop,
-                                  int workers) override {
-    if (!fit_dataset_folds(*trials_, config, progress, stop)) return std::nullopt;
-    const FoldProblems problems = fold_problems(config, arms, *trials_);
+                                  int workers) const override {
+    DatasetFolds fitted = *trials_;  // the data and folds shared; the models are this run's
+    if (!fit_dataset_folds(fitted, config, progress, stop)) return std::nullopt;
+    const FoldProblems problems = fold_problems(config, arms, fitted);
     write_fold_problems(directory_, config, problems);
     if (!choose_dataset_unheard(directory_, config, arms, problems, progress, stop, workers))
       return std::nullopt;
-    return dataset_loops(config, arms, *trials_);
+    return dataset_loops(config, arms, fitted);
   }
 
  private:
   fs::path directory_;  // the campaign's folder: each fold's problem goes to folds/<fold>/
-  std::shared_ptr<DatasetFolds> trials_;
+  std::shared_ptr<const DatasetFolds> trials_;
 };
 
 void RecordedDataWorld::open(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,

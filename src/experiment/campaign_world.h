@@ -38,11 +38,12 @@ class CampaignWorld {
   // "choose unheard"), puts what self-play chose in the arms' planners, writes what the report
   // shows of the world besides the trials (report_inputs.h), and returns the checked loop of every
   // arm, group and trial; nothing when stopped. `workers` threads share what can run in parallel
-  // (results do not depend on it).
+  // (results do not depend on it). What it fits or trains goes into the loops and the folder: the
+  // world stays as open() left it, so preparing again starts from the same place.
   virtual std::optional<ArmLoops> prepare(const CampaignConfig& config,
                                           std::vector<ResolvedArm>& arms,
                                           const ProgressFn& progress, const std::atomic<bool>& stop,
-                                          int workers) = 0;
+                                          int workers) const = 0;
 };
 
 // The world of `config`; what it writes (a synthesised training set, the trained model, the
