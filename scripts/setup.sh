@@ -57,6 +57,7 @@ packages=(
   python3-numpy python3-scipy python3-soundfile python3-yaml  # bench/*.py (with /usr/bin/python3)
   pybind11-dev python3-dev python3-pytest  # the Python module (python/) and its tests
   portaudio19-dev            # live capture: echoplan devices/record, the ROS listener
+  asterisk-core-sounds-en-wav  # real speech (CC-BY-SA-3.0) for background noise: docs/noise.md
   # ROS 1 from Debian (docs/real-robot.md): nodes, their services, a master and roslaunch for the ros_* tests
   libroscpp-dev catkin ros-message-generation libstd-msgs-dev
   python3-roslaunch python3-rosparam python3-rosservice python3-rostest librostest-dev

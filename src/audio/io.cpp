@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 #include "common/error.h"
@@ -167,6 +168,13 @@ AudioClip convert_clip(const AudioClip& clip, const ReadOptions& options, const 
   if (options.target_sample_rate > 0 && options.target_sample_rate != out.sample_rate)
     out = resample(out, options.target_sample_rate);
   return out;
+}
+
+bool is_audio_file(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".wav" || ext == ".flac" || ext == ".aiff" || ext == ".aif";
 }
 
 AudioClip resample(const AudioClip& clip, int target_rate) {

@@ -56,6 +56,9 @@ AudioClip convert_clip(const AudioClip& clip, const ReadOptions& options, const 
 // match.
 AudioClip resample(const AudioClip& clip, int target_rate);
 
+// A file name read as audio (its extension, any case): .wav, .flac, .aiff, .aif.
+bool is_audio_file(const std::string& path);
+
 enum class FileFormat { wav, flac };
 enum class SampleEncoding { pcm16, pcm24, float32 };  // float32 only for WAV (FLAC is integer only)
 

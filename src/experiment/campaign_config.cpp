@@ -304,14 +304,14 @@ nlohmann::json CampaignConfig::identity() const {
 }
 
 nlohmann::json CampaignConfig::identity(InputFiles& files,
-                                        const std::vector<ObjectGroup>& groups) const {
+                                        const std::vector<ObjectGroup>& trial_groups) const {
   const config_fields::Fingerprints fingerprints{
       [&](const std::string& path) { return path.empty() ? "" : files.fingerprint(path); },
       [&](const std::string& folder) { return files.data_fingerprint(folder); }};
   // The arms as they run, in the file's words: a default that changes what an arm does changes
   // the identity, and a file that spells a default out is the same campaign as one that does not.
   CampaignConfig as_run = *this;
-  as_run.groups = groups;
+  as_run.groups = trial_groups;
   as_run.arms.clear();
   for (const ResolvedArm& arm : resolve_arms(*this)) as_run.arms.push_back(as_written(arm));
   nlohmann::json j = campaign_json(as_run, [&](const auto& fields, const auto& value) {

@@ -159,8 +159,8 @@ struct CampaignConfig {
 
   // Everything that decides the results, as JSON with files and data folders replaced by their
   // fingerprints, so a resumed or merged run can check it continues the same campaign: the
-  // configuration with the world's trial `groups` (a dataset world's come from its data).
-  nlohmann::json identity(InputFiles& files, const std::vector<ObjectGroup>& groups) const;
+  // configuration with the world's `trial_groups` (a dataset world's come from its data).
+  nlohmann::json identity(InputFiles& files, const std::vector<ObjectGroup>& trial_groups) const;
   // The identity with the file's own trial groups (a model or simulated world's), its files read
   // here.
   nlohmann::json identity() const;

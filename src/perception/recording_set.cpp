@@ -35,7 +35,7 @@ Layout scan_folders(const fs::path& root) {
       for (const fs::path& file : visible_entries(action_dir)) {
         if (fs::is_directory(file))
           throw InputError(file.string(), 0, "unexpected folder inside an action folder");
-        if (!is_recording_file(file.string()))
+        if (!audio::is_audio_file(file.string()))
           throw InputError(file.string(), 0,
                            "not a recording: expected a .wav, .flac, .aiff or .aif file");
         files.push_back(fs::relative(file, root).generic_string());
@@ -115,13 +115,6 @@ Layout read_manifest(const fs::path& root, const fs::path& manifest_path, Record
 }
 
 }  // namespace
-
-bool is_recording_file(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".wav" || ext == ".flac" || ext == ".aiff" || ext == ".aif";
-}
 
 std::vector<const Recording*> RecordingSet::of_action(const std::string& action) const {
   std::vector<const Recording*> out;

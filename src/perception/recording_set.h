@@ -39,9 +39,6 @@ struct RecordingSet {
   int object_index(const std::string& object) const;
 };
 
-// File extensions read as recordings (lower case, with the dot): .wav, .flac, .aiff, .aif.
-bool is_recording_file(const std::string& path);
-
 // Reads DIR. With DIR/manifest.csv (header with at least the columns file, object and action), the
 // set is the manifest's rows: each row's file must exist and lie in <object>/<action>/; a recording
 // file on disk that the manifest does not list is an error. Without a manifest, every file under

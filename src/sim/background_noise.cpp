@@ -1,0 +1,175 @@
+#include "sim/background_noise.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+
+#include "audio/io.h"
+#include "common/error.h"
+#include "sim/sound_noise.h"
+
+namespace echoplan::sim {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kRoomCornerHz = 500.0;
+
+// The clip's channels averaged.
+std::vector<double> mono(const audio::AudioClip& clip) {
+  std::vector<double> out(clip.frames(), 0.0);
+  const auto channels = static_cast<std::size_t>(clip.channels);
+  for (std::size_t f = 0; f < out.size(); ++f) {
+    for (std::size_t c = 0; c < channels; ++c) out[f] += clip.samples[f * channels + c];
+    out[f] /= static_cast<double>(channels);
+  }
+  return out;
+}
+
+double parse_db(const std::string& part, const std::string& text) {
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+  if (error != std::errc() || end != part.data() + part.size() || !(value >= -60 && value <= 60))
+    throw InputError(fmt::format("EBR '{}': give a number of dB in [-60, 60], or LO:HI", text));
+  return value;
+}
+
+// Built-in noise of `frames` at `rate`, unit RMS.
+std::vector<double> builtin(const std::string& name, std::size_t frames, int rate, Rng& rng) {
+  NoiseSource unit(rng);
+  std::vector<double> out(frames);
+  if (name == "room") {
+    const std::vector<float> room = room_noise(frames, rate, kRoomCornerHz, 1.0, unit);
+    std::copy(room.begin(), room.end(), out.begin());
+  } else {
+    for (double& x : out) x = unit.next();
+  }
+  return out;
+}
+
+// `frames` of `source` (mono) at `rate`, from a drawn offset, looped.
+std::vector<double> segment(const audio::AudioClip& source, std::size_t frames, int rate,
+                            Rng& rng) {
+  // Enough of the source at its own rate to cover the clip once resampled.
+  const auto needed =
+      static_cast<std::size_t>(std::ceil(static_cast<double>(frames) * source.sample_rate / rate)) +
+      16;
+  const std::size_t length = source.samples.size();
+  const auto start = static_cast<std::size_t>(uniform01(rng) * static_cast<double>(length));
+  audio::AudioClip piece{source.sample_rate, 1, std::vector<float>(needed)};
+  for (std::size_t i = 0; i < needed; ++i) piece.samples[i] = source.samples[(start + i) % length];
+  const audio::AudioClip at_rate = audio::resample(piece, rate);
+  std::vector<double> out(frames, 0.0);
+  for (std::size_t i = 0; i < frames && i < at_rate.samples.size(); ++i)
+    out[i] = at_rate.samples[i];
+  return out;
+}
+
+double rms(const std::vector<double>& x) {
+  double sum = 0.0;
+  for (double v : x) sum += v * v;
+  return x.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(x.size()));
+}
+
+// The recordings of a folder, recursively, in name order.
+std::vector<std::string> recordings_in(const fs::path& folder) {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(folder))
+    if (entry.is_regular_file() && audio::is_audio_file(entry.path().string()))
+      files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  if (files.empty())
+    throw InputError(folder.string(), 0, "noise folder holds no recordings (.wav, .flac, .aiff)");
+  return files;
+}
+
+}  // namespace
+
+double event_level(const audio::AudioClip& clip) {
+  const std::vector<double> x = mono(clip);
+  if (x.empty()) return 0.0;
+  const auto window = std::min<std::size_t>(
+      x.size(), std::max<std::size_t>(1, static_cast<std::size_t>(0.05 * clip.sample_rate)));
+  const auto hop = std::max<std::size_t>(1, static_cast<std::size_t>(0.005 * clip.sample_rate));
+  double loudest = 0.0;
+  for (std::size_t begin = 0;; begin += hop) {
+    const std::size_t from = std::min(begin, x.size() - window);
+    double sum = 0.0;
+    for (std::size_t i = from; i < from + window; ++i) sum += x[i] * x[i];
+    loudest = std::max(loudest, sum / static_cast<double>(window));
+    if (from + window >= x.size()) break;
+  }
+  return std::sqrt(loudest);
+}
+
+EbrRange parse_ebr(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  if (colon == std::string::npos) {
+    const double db = parse_db(text, text);
+    return {db, db};
+  }
+  const EbrRange range{parse_db(text.substr(0, colon), text),
+                       parse_db(text.substr(colon + 1), text)};
+  if (range.low > range.high)
+    throw InputError(fmt::format("EBR '{}': the range's low end is above its high end", text));
+  return range;
+}
+
+const std::vector<std::string>& builtin_noise_names() {
+  static const std::vector<std::string> names{"white", "room"};
+  return names;
+}
+
+BackgroundNoise::BackgroundNoise(const std::vector<std::string>& sources) {
+  if (sources.empty()) throw InputError("background noise: name at least one source");
+  const auto& builtins = builtin_noise_names();
+  for (const std::string& source : sources) {
+    if (std::find(builtins.begin(), builtins.end(), source) != builtins.end()) {
+      names_.push_back(source);
+      recordings_.emplace_back();
+      continue;
+    }
+    std::error_code error;
+    if (!fs::exists(source, error))
+      throw InputError(source, 0,
+                       fmt::format("noise source is neither a file, a folder nor built-in ({})",
+                                   fmt::join(builtins, ", ")));
+    const std::vector<std::string> files =
+        fs::is_directory(source, error) ? recordings_in(source) : std::vector{source};
+    for (const std::string& file : files) {
+      audio::ReadOptions options;
+      options.channel_policy = audio::ChannelPolicy::mean;
+      names_.push_back(file);
+      recordings_.push_back(audio::read_audio(file, options));
+    }
+  }
+}
+
+BackgroundNoise::Mixed BackgroundNoise::mix(const audio::AudioClip& recording, const EbrRange& ebr,
+                                            Rng& rng) const {
+  const auto which =
+      std::min(names_.size() - 1, static_cast<std::size_t>(uniform01(rng) * names_.size()));
+  Mixed mixed{recording, names_[which], ebr.low + uniform01(rng) * (ebr.high - ebr.low)};
+  const std::size_t frames = recording.frames();
+  const std::vector<double> noise =
+      recordings_[which].samples.empty()
+          ? builtin(names_[which], frames, recording.sample_rate, rng)
+          : segment(recordings_[which], frames, recording.sample_rate, rng);
+  const double event = event_level(recording), level = rms(noise);
+  if (event <= 0.0 || level <= 0.0) return mixed;
+  const double gain = event / std::pow(10.0, mixed.ebr_db / 20.0) / level;
+  const auto channels = static_cast<std::size_t>(recording.channels);
+  for (std::size_t f = 0; f < frames; ++f)
+    for (std::size_t c = 0; c < channels; ++c) {
+      float& x = mixed.clip.samples[f * channels + c];
+      x = static_cast<float>(std::clamp(x + gain * noise[f], -1.0, 1.0));
+    }
+  return mixed;
+}
+
+}  // namespace echoplan::sim

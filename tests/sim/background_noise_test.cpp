@@ -1,0 +1,140 @@
+// Background noise at an event-to-background ratio: the levels as defined (checked against clips
+// whose levels are known in closed form), the ratio kept for every kind of source, the seed's
+// draws, and bad sources named.
+#include "sim/background_noise.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "audio/io.h"
+#include "common/error.h"
+
+namespace echoplan::sim {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A clip of `seconds` at 44.1 kHz, silent but for a tone of amplitude `a` at `hz` from `from_s`
+// to `to_s`.
+audio::AudioClip tone(double seconds, double a, double hz, double from_s, double to_s) {
+  audio::AudioClip clip{44100, 1, std::vector<float>(static_cast<std::size_t>(seconds * 44100))};
+  for (std::size_t i = 0; i < clip.samples.size(); ++i) {
+    const double t = static_cast<double>(i) / 44100;
+    if (t >= from_s && t < to_s)
+      clip.samples[i] = static_cast<float>(a * std::sin(2 * std::numbers::pi * hz * t));
+  }
+  return clip;
+}
+
+// The RMS of what `mix` added to `clip`, over the whole clip.
+double added_rms(const audio::AudioClip& clip, const audio::AudioClip& mixed) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < clip.samples.size(); ++i) {
+    const double d = static_cast<double>(mixed.samples[i]) - clip.samples[i];
+    sum += d * d;
+  }
+  return std::sqrt(sum / static_cast<double>(clip.samples.size()));
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / "echoplan_background_noise" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+TEST(BackgroundNoise, TheEventLevelIsTheLoudest50Milliseconds) {
+  // A 1 kHz tone of amplitude 0.4 for 0.2 s in 1 s: its 50 ms windows hold whole periods, so the
+  // loudest is the tone's RMS, 0.4 / sqrt(2); the silence around it does not dilute it.
+  EXPECT_NEAR(event_level(tone(1.0, 0.4, 1000, 0.3, 0.5)), 0.4 / std::sqrt(2.0), 2e-3);
+  EXPECT_EQ(event_level(tone(1.0, 0.0, 1000, 0.0, 1.0)), 0.0);
+  // Shorter than a window: the whole clip.
+  EXPECT_NEAR(event_level(tone(0.02, 0.5, 1000, 0.0, 0.02)), 0.5 / std::sqrt(2.0), 1e-3);
+}
+
+// Every kind of source is mixed at the ratio asked: the added noise's RMS is the event level over
+// 10^(EBR/20).
+TEST(BackgroundNoise, EverySourceIsMixedAtTheRatioAsked) {
+  const fs::path dir = fresh_dir("ratio");
+  // A recorded source at another rate and shorter than the clip: resampled and looped.
+  audio::AudioClip hum = tone(0.3, 0.3, 120, 0.0, 0.3);
+  hum = audio::resample(hum, 8000);
+  audio::write_audio((dir / "hum.wav").string(), hum);
+  const audio::AudioClip strike = tone(1.5, 0.05, 700, 0.4, 0.45);  // quiet: nothing clips
+  const double event = event_level(strike);
+  for (const std::string& source :
+       std::vector<std::string>{"white", "room", (dir / "hum.wav").string()})
+    for (double ebr : {12.0, 0.0, -6.0}) {
+      const BackgroundNoise noise({source});
+      Rng rng(3);
+      const BackgroundNoise::Mixed mixed = noise.mix(strike, {ebr, ebr}, rng);
+      EXPECT_EQ(mixed.source, source);
+      EXPECT_EQ(mixed.ebr_db, ebr);
+      EXPECT_NEAR(20 * std::log10(event / added_rms(strike, mixed.clip)), ebr, 0.01)
+          << source << " at " << ebr;
+    }
+}
+
+TEST(BackgroundNoise, DrawsFollowTheRng) {
+  const audio::AudioClip strike = tone(0.5, 0.5, 700, 0.1, 0.15);
+  const BackgroundNoise noise({"white", "room"});
+  Rng a(7), b(7), c(8);
+  const auto first = noise.mix(strike, {-6, 12}, a);
+  EXPECT_EQ(first.clip.samples, noise.mix(strike, {-6, 12}, b).clip.samples);
+  EXPECT_NE(first.clip.samples, noise.mix(strike, {-6, 12}, c).clip.samples);
+  // A range: every draw inside it, and not all the same.
+  Rng d(1);
+  double low = 60, high = -60;
+  for (int i = 0; i < 50; ++i) {
+    const double ebr = noise.mix(strike, {-6, 12}, d).ebr_db;
+    low = std::min(low, ebr);
+    high = std::max(high, ebr);
+  }
+  EXPECT_GE(low, -6.0);
+  EXPECT_LE(high, 12.0);
+  EXPECT_GT(high - low, 9.0);
+  // A silent recording has no level to keep a ratio to: it stays silent.
+  const audio::AudioClip silent = tone(0.5, 0.0, 700, 0.0, 0.5);
+  EXPECT_EQ(noise.mix(silent, {0, 0}, d).clip.samples, silent.samples);
+}
+
+// Real speech as Debian ships it (asterisk-core-sounds-en-wav, installed by scripts/setup.sh): a
+// folder of 8 kHz recordings, one drawn per mix, at the ratio asked.
+TEST(BackgroundNoise, RealSpeechFromAFolderOfRecordings) {
+  const fs::path speech = "/usr/share/asterisk/sounds/en_US_f_Allison";
+  ASSERT_TRUE(fs::is_directory(speech)) << "scripts/setup.sh deps installs it";
+  const BackgroundNoise noise({speech.string()});
+  EXPECT_GT(noise.sources().size(), 100u);
+  const audio::AudioClip strike = tone(1.5, 0.05, 700, 0.4, 0.45);  // quiet: nothing clips
+  Rng rng(5);
+  const auto mixed = noise.mix(strike, {0, 0}, rng);
+  EXPECT_EQ(fs::path(mixed.source).parent_path(), speech);
+  EXPECT_NEAR(20 * std::log10(event_level(strike) / added_rms(strike, mixed.clip)), 0.0, 0.01);
+}
+
+TEST(BackgroundNoise, BadSourcesAndRatiosAreNamed) {
+  const fs::path dir = fresh_dir("bad");
+  try {
+    BackgroundNoise({(dir / "missing.wav").string()});
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), (dir / "missing.wav").string());
+  }
+  try {
+    BackgroundNoise({dir.string()});  // a folder without recordings
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), dir.string());
+  }
+  EXPECT_THROW(BackgroundNoise({}), InputError);
+  EXPECT_EQ(parse_ebr("6").low, 6.0);
+  EXPECT_EQ(parse_ebr("-6:12").high, 12.0);
+  for (const char* bad : {"", "x", "6:", "12:-6", "90", "1:2:3"})
+    EXPECT_THROW(parse_ebr(bad), InputError) << bad;
+}
+
+}  // namespace
+}  // namespace echoplan::sim
