@@ -254,40 +254,12 @@ perception::DatasetTask task_of(const FeatureSet& set, py::handle groups,
   return task_of(set, groups_of(groups), hold_out);
 }
 
-// The options `echoplan train` makes of its flags: the defaults of the cross-validation (given,
-// or following the data and the task), then every option given (None: the default).
-struct FitArguments {
-  std::optional<std::string> cross_validation, classifier, table;
-  std::optional<int> folds, sample_rate;
-  std::optional<std::uint64_t> seed;
-  std::optional<bool> reject, fuse, temper;
-  std::optional<double> reject_margin, alpha;
-
-  perception::FitOptions options(perception::DataKind kind, bool task_named) const {
-    perception::FitOptions o = perception::fit_defaults(
-        cross_validation ? perception::parse_cross_validation(*cross_validation)
-                         : perception::default_cross_validation(kind, task_named));
-    if (classifier) o.classifier = *classifier;
-    if (table) o.table = perception::parse_table_estimate(*table);
-    if (folds) o.folds = *folds;
-    if (sample_rate) o.analysis.sample_rate = *sample_rate;
-    if (seed) o.seed = *seed;
-    if (reject) o.reject = *reject;
-    if (fuse) o.fuse = *fuse;
-    if (temper) o.temper = *temper;
-    if (reject_margin) o.reject_margin = *reject_margin;
-    if (alpha) o.dirichlet_alpha = *alpha;
-    perception::check_fit_options(o);
-    return o;
-  }
-};
-
 // `data`: a FeatureSet, or the path of a recordings tree or a feature set. Python objects are read
 // here, with the GIL held; the work runs interruptibly without it.
 std::shared_ptr<perception::ObservationModel> fit(py::handle data, py::handle groups,
                                                   std::optional<std::string> hold_out,
                                                   std::optional<std::vector<int>> sessions,
-                                                  const FitArguments& arguments) {
+                                                  const perception::FitChoices& choices) {
   const GroupsArgument g = groups_of(groups);
   const bool task_named = g.groups.has_value() || hold_out.has_value();
   SetPtr given;
@@ -299,7 +271,7 @@ std::shared_ptr<perception::ObservationModel> fit(py::handle data, py::handle gr
     dir = py::str(data).cast<std::string>();
     kind = perception::data_kind(dir);
   }
-  const perception::FitOptions options = arguments.options(kind, task_named);
+  const perception::FitOptions options = perception::choose_fit_options(choices, kind, task_named);
   return run_interruptibly([&](const std::atomic<bool>& stop) {
     const auto progress = [&](const std::string&, int, int) {
       if (stop) throw Stopped{};
@@ -353,8 +325,8 @@ void bind_feature_sets(py::module_& m) {
          std::optional<std::string> table, std::optional<bool> fuse, std::optional<bool> temper,
          std::optional<int> sample_rate) {
         return fit(data, groups, std::move(hold_out), std::move(training_sessions),
-                   {cv, classifier, table, folds, sample_rate, seed, reject, fuse, temper,
-                    reject_margin, alpha});
+                   perception::FitChoices{cv, classifier, table, folds, sample_rate, seed, reject,
+                                          fuse, temper, reject_margin, alpha});
       },
       py::arg("data"), py::kw_only(), py::arg("groups") = py::none(),
       py::arg("hold_out") = py::none(), py::arg("training_sessions") = py::none(),

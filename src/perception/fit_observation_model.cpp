@@ -354,13 +354,24 @@ FitOptions session_fit_options(std::string classifier) {
   return o;
 }
 
-CrossValidation default_cross_validation(DataKind kind, bool task_named) {
-  return kind == DataKind::features || task_named ? CrossValidation::by_session
-                                                  : CrossValidation::by_performance;
-}
-
-FitOptions fit_defaults(CrossValidation cv) {
-  return cv == CrossValidation::by_session ? session_fit_options() : FitOptions{};
+FitOptions choose_fit_options(const FitChoices& c, DataKind kind, bool task_named) {
+  const CrossValidation cv = c.cross_validation ? parse_cross_validation(*c.cross_validation)
+                             : kind == DataKind::features || task_named
+                                 ? CrossValidation::by_session
+                                 : CrossValidation::by_performance;
+  FitOptions o = cv == CrossValidation::by_session ? session_fit_options() : FitOptions{};
+  if (c.classifier) o.classifier = *c.classifier;
+  if (c.table) o.table = parse_table_estimate(*c.table);
+  if (c.folds) o.folds = *c.folds;
+  if (c.sample_rate) o.analysis.sample_rate = *c.sample_rate;
+  if (c.seed) o.seed = *c.seed;
+  if (c.reject) o.reject = *c.reject;
+  if (c.fuse) o.fuse = *c.fuse;
+  if (c.temper) o.temper = *c.temper;
+  if (c.reject_margin) o.reject_margin = *c.reject_margin;
+  if (c.alpha) o.dirichlet_alpha = *c.alpha;
+  check_fit_options(o);
+  return o;
 }
 
 void check_fit_options(const FitOptions& o) {

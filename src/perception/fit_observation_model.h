@@ -39,6 +39,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -82,11 +83,21 @@ struct FitOptions {
 // repeats, no reject, no Dirichlet prior; `classifier` a row classifier.
 FitOptions session_fit_options(std::string classifier = std::string(kDefaultRowClassifier));
 
-// The cross-validation `echoplan train` and Python's fit_observation_model default to: by session
-// for a feature set, or when the task is named (groups or a hold-out); by performance for a
-// recordings tree. And the defaults that follow it: FitOptions{} or session_fit_options().
-CrossValidation default_cross_validation(DataKind kind, bool task_named);
-FitOptions fit_defaults(CrossValidation cv);
+// The options a user names (`echoplan train`'s flags, Python's fit_observation_model keywords);
+// absent: the default.
+struct FitChoices {
+  std::optional<std::string> cross_validation, classifier, table;
+  std::optional<int> folds, sample_rate;
+  std::optional<std::uint64_t> seed;
+  std::optional<bool> reject, fuse, temper;
+  std::optional<double> reject_margin, alpha;
+};
+
+// The defaults of the cross-validation, FitOptions{} or session_fit_options(), then every choice
+// made. The cross-validation is the one named, else by session for a feature set or when the task
+// is named (groups or a hold-out), by performance for a recordings tree. InputError for a bad name
+// or as check_fit_options.
+FitOptions choose_fit_options(const FitChoices& choices, DataKind kind, bool task_named);
 
 // InputError naming the option for values out of range or combinations without meaning: folds 1
 // or negative; a margin outside 1..100 or alpha outside 0..1000; tempering without folds by

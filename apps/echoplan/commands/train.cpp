@@ -48,28 +48,23 @@ struct TrainFlags {
 
 bool given(const CLI::App& cmd, const char* name) { return cmd.count(name) > 0; }
 
-// The defaults of the cross-validation (by session for a feature set or a task of groups or
-// held-out objects, else by performance), then every option the user gave.
+// The fitting options the user gave, over the defaults (perception::choose_fit_options).
 perception::FitOptions fit_options(const TrainFlags& f, const CLI::App& cmd,
                                    perception::DataKind kind) {
-  const perception::CrossValidation cv =
-      given(cmd, "--cross-validation")
-          ? perception::parse_cross_validation(f.cross_validation)
-          : perception::default_cross_validation(
-                kind, given(cmd, "--groups") || given(cmd, "--hold-out"));
-  perception::FitOptions o = perception::fit_defaults(cv);
-  if (given(cmd, "--classifier")) o.classifier = f.given.classifier;
-  if (given(cmd, "--sample-rate")) o.analysis.sample_rate = f.given.analysis.sample_rate;
-  if (given(cmd, "--folds")) o.folds = f.given.folds;
-  if (given(cmd, "--seed")) o.seed = f.given.seed;
-  if (given(cmd, "--reject")) o.reject = f.reject;
-  if (given(cmd, "--reject-margin")) o.reject_margin = f.given.reject_margin;
-  if (given(cmd, "--alpha")) o.dirichlet_alpha = f.given.dirichlet_alpha;
-  if (given(cmd, "--table")) o.table = perception::parse_table_estimate(f.table);
-  if (given(cmd, "--fuse")) o.fuse = f.fuse;
-  if (given(cmd, "--temper")) o.temper = f.temper;
-  perception::check_fit_options(o);
-  return o;
+  perception::FitChoices c;
+  if (given(cmd, "--cross-validation")) c.cross_validation = f.cross_validation;
+  if (given(cmd, "--classifier")) c.classifier = f.given.classifier;
+  if (given(cmd, "--sample-rate")) c.sample_rate = f.given.analysis.sample_rate;
+  if (given(cmd, "--folds")) c.folds = f.given.folds;
+  if (given(cmd, "--seed")) c.seed = f.given.seed;
+  if (given(cmd, "--reject")) c.reject = f.reject;
+  if (given(cmd, "--reject-margin")) c.reject_margin = f.given.reject_margin;
+  if (given(cmd, "--alpha")) c.alpha = f.given.dirichlet_alpha;
+  if (given(cmd, "--table")) c.table = f.table;
+  if (given(cmd, "--fuse")) c.fuse = f.fuse;
+  if (given(cmd, "--temper")) c.temper = f.temper;
+  return perception::choose_fit_options(c, kind,
+                                        given(cmd, "--groups") || given(cmd, "--hold-out"));
 }
 
 // --problem-out keeps --problem-base when it is named, or for a recordings tree whose classes are
