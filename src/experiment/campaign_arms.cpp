@@ -32,6 +32,10 @@ void check_words(const CampaignConfig& config, const CampaignArm& arm) {
              "unheard: only an arm that plans (strategy: plan) searches; '" + arm.strategy +
                  "' is a fixed strategy");
   }
+  if (arm.trained_in_noise && config.world.type != WorldType::simulated)
+    refuse(config, arm,
+           "trained_in_noise: the classifier trained in noise hears a simulated world's "
+           "recordings; a model world hears none, a dataset world fits its own");
   if (arm.observation_kind() != perception::ObservationKind::graded) return;
   if (!config.world.recorded_data() && !arm.calibrate)
     refuse(config, arm,
@@ -69,6 +73,7 @@ ResolvedArm resolve_arm(const CampaignConfig& config, const CampaignArm& arm) {
   r.strategy = arm.strategy;
   r.problem = arm.problem;
   r.calibrate = arm.calibrate;
+  r.trained_in_noise = arm.trained_in_noise;
   r.line = arm.line;
   r.plans_with = {arm.observation_kind(), arm.lookalike.value_or(false)};
   r.planner.solver = r.plans() ? config.planner.solver : arm.strategy;
@@ -118,6 +123,7 @@ CampaignArm as_written(const ResolvedArm& arm) {
   a.name = arm.name;
   a.problem = arm.problem;
   a.calibrate = arm.calibrate;
+  a.trained_in_noise = arm.trained_in_noise;
   a.strategy = arm.strategy;
   a.observations = perception::observation_kind_name(arm.plans_with.kind);
   // Written only when it plans with them (a `lookalike: false` reads as the file not naming it).
@@ -137,6 +143,7 @@ nlohmann::json to_json(const ResolvedArm& arm, bool recorded_data) {
   nlohmann::json j = {{"name", arm.name}, {"strategy", arm.strategy}};
   if (!arm.problem.empty()) j["problem"] = arm.problem;
   if (arm.calibrate) j["calibrate"] = true;
+  if (arm.trained_in_noise) j["trained_in_noise"] = true;
   j["solver"] = arm.planner.solver;
   if (arm.planner.episodes > 0) j["episodes"] = arm.planner.episodes;
   if (arm.planner.step_ms > 0) j["step_ms"] = arm.planner.step_ms;

@@ -16,6 +16,7 @@
 #include "experiment/campaign_arms.h"
 #include "experiment/config_fields.h"
 #include "perception/fit_observation_model.h"
+#include "sim/background_noise.h"
 #include "solvers/baseline_strategies.h"
 #include "solvers/leaf_value.h"
 #include "solvers/make_solver.h"
@@ -73,6 +74,12 @@ const std::vector<Field<CampaignArm>>& arm_fields() {
        .member = &CampaignArm::calibrate,
        .worlds = Worlds::problem_files,
        .elsewhere = kFoldProblem},
+      // Left out of the identity at its default: campaigns written before it existed.
+      {.key = "trained_in_noise",
+       .member = &CampaignArm::trained_in_noise,
+       .identity = Identity::unless_default,
+       .worlds = Worlds::problem_files,
+       .elsewhere = kFitsPerFold},
       // Left out of the identity for the planner: campaigns written before strategies existed.
       {.key = "strategy",
        .member = &CampaignArm::strategy,
@@ -100,6 +107,15 @@ const std::vector<Field<CampaignArm>>& arm_fields() {
        .member = &CampaignArm::unheard,
        .identity = Identity::unless_default,
        .choices = unheard_choices},
+  };
+  return fields;
+}
+
+// `noise: {sources: [...], ebr_db: X}` in the world or the training set.
+const std::vector<Field<NoiseConfig>>& noise_fields() {
+  static const std::vector<Field<NoiseConfig>> fields{
+      {.key = "sources", .member = &NoiseConfig::sources, .required = true},
+      {.key = "ebr_db", .member = &NoiseConfig::ebr_db},
   };
   return fields;
 }
@@ -285,11 +301,14 @@ nlohmann::json campaign_json(const CampaignConfig& c, Write&& write) {
   for (const CampaignArm& arm : c.arms) j["arms"].push_back(write(arm_fields(), arm));
   j["world"] = write(world_fields(), c.world);
   j["world"]["type"] = to_string(c.world.type);
+  // Only when given: campaigns written before noise existed keep their identities.
+  if (c.world.noise.given()) j["world"]["noise"] = write(noise_fields(), c.world.noise);
   if (recorded) {
     j["task"] = write(task_fields(), c.rewards);
     j["task"]["rewards"] = write(reward_fields(), c.rewards);
   }
   j["training_set"] = write(training_fields(), c.training);
+  if (c.training.noise.given()) j["training_set"]["noise"] = write(noise_fields(), c.training.noise);
   j["trials"] = nlohmann::json::array();  // a dataset world's file has none (the data has them)
   for (const ObjectGroup& g : c.groups) j["trials"].push_back(write(group_fields(), g));
   j["planner"] = write(planner_fields(), c.planner);
@@ -351,6 +370,29 @@ std::vector<CampaignArm> read_arms(const YamlReader& f, const YAML::Node& root,
   return read;
 }
 
+// A noise section: its keys, each source a built-in name or a path (relative to the campaign file)
+// that exists, and a ratio parse_ebr reads.
+NoiseConfig read_noise(const YamlReader& f, const YAML::Node& n, const config_fields::Place& at) {
+  f.expect_map(n, at.section);
+  NoiseConfig noise;
+  config_fields::read_yaml(f, n, noise_fields(), at, noise);
+  const auto& builtins = sim::builtin_noise_names();
+  for (std::string& s : noise.sources) {
+    if (std::find(builtins.begin(), builtins.end(), s) != builtins.end()) continue;
+    s = config_fields::resolve(at.source, s);
+    std::error_code error;
+    if (!fs::exists(s, error))
+      f.fail(n, fmt::format("{}: source '{}' is neither built-in ({}) nor a file or folder",
+                            at.section, s, fmt::join(builtins, ", ")));
+  }
+  if (!noise.ebr_db.empty()) try {
+      sim::parse_ebr(noise.ebr_db);
+    } catch (const InputError& e) {
+      f.fail(n, at.section + ": " + e.problem());
+    }
+  return noise;
+}
+
 WorldConfig read_world(const YamlReader& f, const YAML::Node& root, const std::string& source) {
   const YAML::Node world = f.require(root, "world", "the campaign");
   f.expect_map(world, "world");
@@ -362,7 +404,15 @@ WorldConfig read_world(const YamlReader& f, const YAML::Node& root, const std::s
     f.fail(type, e.problem());
   }
   config_fields::read_yaml(f, world, world_fields(), {source, "world", w.recorded_data()}, w,
-                           {"type"});
+                           {"type", "noise"});
+  if (const YAML::Node n = f.optional(world, "noise", "world")) {
+    if (w.type != WorldType::simulated)
+      f.fail(n,
+             "noise: a simulated world's recordings are heard through it (recorded data: write a "
+             "noisy copy with `echoplan add-noise` and replay that)");
+    w.noise = read_noise(f, n, {source, "world.noise", false});
+    if (w.noise.ebr_db.empty()) f.fail(n, "world.noise needs ebr_db: the ratio of each recording");
+  }
   if (w.hold_out == perception::HoldOut::object && w.groups.empty())
     f.fail(world, "hold_out: object needs groups: a novel object can only be sorted by its group");
   return w;
@@ -390,7 +440,11 @@ TrainingSetConfig read_training_set(const YamlReader& f, const YAML::Node& t,
   if (frozen_model)
     f.fail(t, "training_set: the world's model is frozen (world.model); nothing is trained");
   TrainingSetConfig training;
-  config_fields::read_yaml(f, t, training_fields(), at, training);
+  config_fields::read_yaml(f, t, training_fields(), at, training, {"noise"});
+  if (const YAML::Node n = f.optional(t, "noise", "training_set")) {
+    if (at.recorded_data) f.fail(n, std::string("noise: ") + kFitsPerFold);
+    training.noise = read_noise(f, n, {at.source, "training_set.noise", false});
+  }
   // Keys that say how this campaign trains mean nothing next to a trained model: an error, not
   // a silently ignored setting.
   if (!training.model.empty())
@@ -535,6 +589,8 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
   config_fields::read_json(j, top_fields(), "", from, recorded, c);
   c.arms = list_from_json(j, "arms", arm_fields(), from, recorded);
   config_fields::read_json(section("world"), world_fields(), "world", from, recorded, c.world);
+  if (const nlohmann::json* n = jf::optional_member(section("world"), "noise", "world", from))
+    config_fields::read_json(*n, noise_fields(), "world.noise", from, recorded, c.world.noise);
   if (const nlohmann::json* task = jf::optional_member(j, "task", "", from)) {
     config_fields::read_json(*task, task_fields(), "task", from, recorded, c.rewards);
     config_fields::read_json(jf::member(*task, "rewards", "task", from), reward_fields(),
@@ -542,6 +598,10 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
   }
   config_fields::read_json(section("training_set"), training_fields(), "training_set", from,
                            recorded, c.training);
+  if (const nlohmann::json* n =
+          jf::optional_member(section("training_set"), "noise", "training_set", from))
+    config_fields::read_json(*n, noise_fields(), "training_set.noise", from, recorded,
+                             c.training.noise);
   c.groups = list_from_json(j, "trials", group_fields(), from, recorded);
   config_fields::read_json(section("planner"), planner_fields(), "planner", from, recorded,
                            c.planner);

@@ -63,6 +63,9 @@ struct CampaignArm {
   // (experiment/unheard_choice.h); empty: share. An arm that plans with ABT and a leaf that can
   // commit, in a world that holds out objects, has commit unless it names another.
   std::string unheard{};
+  // Hears with the classifier trained on the training set and on a noisy copy of it
+  // (training_set.noise: multi-condition training), not the one trained in quiet alone.
+  bool trained_in_noise = false;
   int line = 0;  // where the file gives the arm (0: not read from a file); not a setting
 };
 
@@ -104,6 +107,15 @@ const WorldKind& world_kind(std::string_view word);
 // world_kind(type).word.
 const char* to_string(WorldType type);
 
+// Background noise recordings are heard with (robot/noisy_recorder.h, docs/noise.md): its sources
+// (built-in names, recordings, folders of them; paths relative to the campaign file) and the
+// event-to-background ratio of each recording, "X" or a range "LO:HI" in dB drawn per recording.
+struct NoiseConfig {
+  std::vector<std::string> sources;  // empty: none
+  std::string ebr_db;
+  bool given() const { return !sources.empty(); }
+};
+
 struct WorldConfig {
   WorldType type = WorldType::model;
   std::string problem;  // model and simulated worlds
@@ -115,6 +127,9 @@ struct WorldConfig {
   // A frozen observation model file (`echoplan train --out`): no folds, every session replayed
   // with it (a model trained one day, judged on data recorded another). Empty: fit per fold.
   std::string model;
+  // A simulated world's background noise: every recording of every trial heard through it, the
+  // same noise on every arm (none: the lab's quiet).
+  NoiseConfig noise;
   // The world replays recorded data (world_kind(type).recorded_data).
   bool recorded_data() const;
 };
@@ -132,6 +147,9 @@ struct TrainingSetConfig {
   std::string table;       // perception's table estimate ("counts" or "soft"); empty: its default
   std::string catalogue;   // empty: the shipped catalogue
   std::string sim_config;  // empty: built-in defaults
+  // The noise of the noisy copy of the training set that an arm `trained_in_noise` also learns
+  // from (multi-condition training); sources default to the world's, the ratio to "-6:24".
+  NoiseConfig noise;
 };
 
 struct PlannerConfig {

@@ -11,6 +11,7 @@
 #include "experiment/unheard_choice.h"
 #include "loop/calibrated_problem.h"
 #include "loop/loop.h"
+#include "loop/noisy_copy.h"
 #include "loop/object_problem.h"
 #include "loop/prepare_observation.h"
 #include "loop/streams.h"
@@ -52,14 +53,23 @@ class ProblemFileWorld final : public CampaignWorld {
                         InputFiles& files);
   WorldPresentation presentation(const CampaignConfig& config) const;
   loop::SimulatedTraining simulated_training(const CampaignConfig& config) const;
+  void load_noise(const CampaignConfig& config, const std::vector<ResolvedArm>& arms);
   std::shared_ptr<const perception::ObservationModel> classifier(
       const CampaignConfig& config, const ProgressFn& progress,
       const std::atomic<bool>& stop) const;
-  // The arms' problems and the classifier as prepare() made them: each arm's problem as its file
-  // says, a calibrating arm's calibrated.
+  std::shared_ptr<const perception::ObservationModel> classifier_in_noise(
+      const CampaignConfig& config, const ProgressFn& progress,
+      const std::atomic<bool>& stop) const;
+  // The arms' problems and the classifiers as prepare() made them: each arm's problem as its file
+  // says, a calibrating arm's calibrated; the classifier trained in quiet and, when an arm is
+  // trained in noise, the one trained in noise too.
   struct Prepared {
     std::vector<std::shared_ptr<const pomdp::Problem>> arm_problems;
     std::shared_ptr<const perception::ObservationModel> model;
+    std::shared_ptr<const perception::ObservationModel> model_in_noise;
+    const std::shared_ptr<const perception::ObservationModel>& of(const ResolvedArm& arm) const {
+      return arm.trained_in_noise ? model_in_noise : model;
+    }
   };
   ArmLoops make_loops(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
                       const Prepared& prepared) const;
@@ -76,7 +86,23 @@ class ProblemFileWorld final : public CampaignWorld {
   std::shared_ptr<const sim::Catalogue> catalogue_;
   std::shared_ptr<const sim::SimConfig> sim_config_;
   std::shared_ptr<const perception::ObservationModel> given_model_;  // training_set.model
+  std::optional<robot::WorldNoise> world_noise_;     // world.noise: what the trials hear
+  std::optional<robot::WorldNoise> training_noise_;  // what an arm trained in noise learns from
 };
+
+bool any_trained_in_noise(const std::vector<ResolvedArm>& arms) {
+  return std::any_of(arms.begin(), arms.end(),
+                     [](const ResolvedArm& a) { return a.trained_in_noise; });
+}
+
+// A noise section's sources read now (InputError naming a file that does not decode).
+robot::WorldNoise read_noise(const std::vector<std::string>& sources, const std::string& ebr_db) {
+  return {std::make_shared<const sim::BackgroundNoise>(sources), sim::parse_ebr(ebr_db)};
+}
+
+// The ratios the classifier trained in noise hears by default: from louder than the lab's quiet
+// events to noise above them, so that no one level of the trials is the only one it knows.
+constexpr const char* kTrainingEbr = "-6:24";
 
 bool ProblemFileWorld::needs_classifier(const std::vector<ResolvedArm>& arms) const {
   return simulates_ ||
@@ -155,7 +181,7 @@ void ProblemFileWorld::load_given_model(const CampaignConfig& config,
   for (std::size_t a = 0; a < arms.size(); ++a)
     if (arms[a].calibrate)
       loop::calibrate_problem(*arm_problems_[a], *given_model_, "", arms[a].hearing());
-  make_loops(config, arms, Prepared{arm_problems_, given_model_});
+  make_loops(config, arms, Prepared{arm_problems_, given_model_, nullptr});
 }
 
 WorldPresentation ProblemFileWorld::presentation(const CampaignConfig& config) const {
@@ -167,7 +193,12 @@ WorldPresentation ProblemFileWorld::presentation(const CampaignConfig& config) c
         "weighted variant with its added mass), the simulated recorder records, and the "
         "classifier trained on the synthesised training set reports what it heard. If simulated "
         "objects are easier to tell apart than the lab's real ones, the numbers here are better "
-        "than the report's for that reason, not because of the planner.";
+        "than the report's for that reason, not because of the planner." +
+        (config.world.noise.given()
+             ? fmt::format(" Every recording is heard through background noise ({}) at {} dB "
+                           "event-to-background ratio, the same noise on every arm.",
+                           fmt::join(config.world.noise.sources, ", "), config.world.noise.ebr_db)
+             : std::string());
   else
     p.note = fmt::format(
         "The world here is a problem file's own observation table ({}): "
@@ -179,6 +210,33 @@ WorldPresentation ProblemFileWorld::presentation(const CampaignConfig& config) c
   return p;
 }
 
+// The trials' noise (world.noise) and, for an arm trained in noise, its training noise
+// (training_set.noise, its sources by default the world's).
+void ProblemFileWorld::load_noise(const CampaignConfig& config,
+                                  const std::vector<ResolvedArm>& arms) {
+  const NoiseConfig& world = config.world.noise;
+  if (world.given()) world_noise_ = read_noise(world.sources, world.ebr_db);
+  const NoiseConfig& training = config.training.noise;
+  if (!any_trained_in_noise(arms)) {
+    if (training.given())
+      throw InputError(config.source, 0,
+                       "training_set.noise is what an arm `trained_in_noise` learns from, and no "
+                       "arm is");
+    return;
+  }
+  if (!config.training.model.empty())
+    throw InputError(config.source, 0,
+                     "an arm trained_in_noise is trained on the training set; training_set.model "
+                     "gives one trained model instead: remove one of them");
+  const std::vector<std::string>& sources = training.given() ? training.sources : world.sources;
+  if (sources.empty())
+    throw InputError(config.source, 0,
+                     "an arm trained_in_noise needs noise to train in: give world.noise or "
+                     "training_set.noise");
+  training_noise_ =
+      read_noise(sources, training.ebr_db.empty() ? std::string(kTrainingEbr) : training.ebr_db);
+}
+
 void ProblemFileWorld::open(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
                             CampaignResults& results, InputFiles& files) {
   recordings_ = config.training.recordings.empty() ? training_ / "recordings"
@@ -186,6 +244,7 @@ void ProblemFileWorld::open(const CampaignConfig& config, const std::vector<Reso
   load_problems(config, arms, results, files);
   load_simulator(config, files);
   check_objects(config, results.spec);
+  load_noise(config, arms);
   results.world = presentation(config);
   results.groups = config.groups;
   if (!config.training.recordings.empty() && !fs::is_directory(config.training.recordings))
@@ -233,6 +292,32 @@ std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier
   return loop::prepare_observation(training, nullptr, "", progress, stop).model;
 }
 
+// The classifier an arm trained in noise hears with: DIR/training/model_in_noise.json of an
+// earlier run, or trained now on the training set and its noisy twins (DIR/training/
+// recordings_in_noise), cross-validated by twin so that no recording is tested against its own.
+std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier_in_noise(
+    const CampaignConfig& config, const ProgressFn& progress, const std::atomic<bool>& stop) const {
+  const fs::path saved = training_ / "model_in_noise.json";
+  if (fs::exists(saved))
+    return loop::prepare_observation(loop::ModelFile{saved.string()}, nullptr, "", progress, stop)
+        .model;
+  const fs::path copy = training_ / "recordings_in_noise";
+  const perception::RecordingSet quiet = perception::load_recording_set(recordings_.string());
+  const loop::NoisyCopyOptions options{
+      .seed = loop::stream_seed(config.seed, loop::Stream::campaign_noise), .keep_quiet = true};
+  if (loop::write_noisy_copy(quiet, *training_noise_, copy, options, progress, stop) <
+      quiet.recordings.size())
+    return nullptr;
+  loop::RecordingsTraining training{copy.string(), {}, saved.string()};
+  if (!config.training.classifier.empty()) training.train.classifier = config.training.classifier;
+  if (!config.training.table.empty())
+    training.train.table = perception::parse_table_estimate(config.training.table);
+  training.train.reject = false;  // as the quiet classifier: the arms hear the same symbols
+  training.train.cross_validation = perception::CrossValidation::by_session;
+  training.train.seed = loop::stream_seed(config.seed, loop::Stream::campaign_folds);
+  return loop::prepare_observation(training, nullptr, "", progress, stop).model;
+}
+
 std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
                                                   std::vector<ResolvedArm>& arms,
                                                   const ProgressFn& progress,
@@ -241,16 +326,20 @@ std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
   if (config.training.recordings.empty() && config.training.recordings_per_pair > 0 &&
       !loop::synthesise_training_set(simulated_training(config), progress, stop))
     return std::nullopt;
-  Prepared prepared{arm_problems_, nullptr};
+  Prepared prepared{arm_problems_, nullptr, nullptr};
   if (needs_classifier(arms)) {
     fs::create_directories(training_);
     prepared.model = classifier(config, progress, stop);
     if (!prepared.model) return std::nullopt;
+    if (any_trained_in_noise(arms)) {
+      prepared.model_in_noise = classifier_in_noise(config, progress, stop);
+      if (!prepared.model_in_noise) return std::nullopt;
+    }
     for (std::size_t a = 0; a < arms.size(); ++a) {
       if (!arms[a].calibrate) continue;
       const std::string file = (training_ / (arms[a].name + ".problem.yaml")).string();
-      prepared.arm_problems[a] =
-          loop::calibrate_problem(*arm_problems_[a], *prepared.model, file, arms[a].hearing());
+      prepared.arm_problems[a] = loop::calibrate_problem(
+          *arm_problems_[a], *prepared.of(arms[a]), file, arms[a].hearing());
       loop::save_problem(*prepared.arm_problems[a], file);
     }
   }
@@ -291,23 +380,28 @@ ArmLoops ProblemFileWorld::make_loops(const CampaignConfig& config,
                                       const std::vector<ResolvedArm>& arms,
                                       const Prepared& prepared) const {
   ArmLoops loops(arms.size());
-  // A graded arm's world hears graded symbols: the world's problem with the model's graded table
+  // A graded arm's world hears graded symbols: the world's problem with its model's graded table
   // (its rewards and kinematics as they are; the simulator, not the table, makes observations).
-  std::shared_ptr<const pomdp::Problem> graded_world;
+  std::map<const perception::ObservationModel*, std::shared_ptr<const pomdp::Problem>> graded_world;
   for (const ResolvedArm& arm : arms)
-    if (arm.hearing() == perception::ObservationKind::graded && !graded_world)
-      graded_world =
-          loop::calibrate_problem(*world_problem_, *prepared.model, world_problem_->source_path,
-                                  perception::ObservationKind::graded);
+    if (arm.hearing() == perception::ObservationKind::graded) {
+      auto& world = graded_world[prepared.of(arm).get()];
+      if (!world)
+        world = loop::calibrate_problem(*world_problem_, *prepared.of(arm),
+                                        world_problem_->source_path,
+                                        perception::ObservationKind::graded);
+    }
   for (std::size_t a = 0; a < arms.size(); ++a)
     for (const ObjectGroup& group : config.groups) {
       loop::LoopSettings s;
       s.problem = prepared.arm_problems[a];
-      s.world_problem =
-          arms[a].hearing() == perception::ObservationKind::graded ? graded_world : world_problem_;
+      s.world_problem = arms[a].hearing() == perception::ObservationKind::graded
+                            ? graded_world.at(prepared.of(arms[a]).get())
+                            : world_problem_;
       if (simulates_) {
         s.world = loop::SimulatedWorldSpec{catalogue_, sim_config_};
-        s.observation_model = prepared.model;
+        s.observation_model = prepared.of(arms[a]);
+        s.noise = world_noise_;
         if (group.object != group.plays) s.world_objects[group.plays] = group.object;
       }
       s.planner = arms[a].planner;

@@ -38,6 +38,7 @@ nlohmann::json to_json(const JournalEntry& entry) {
                            {"reward", s.reward},
                            {"episodes", s.episodes}};
     if (s.heard_probability) step["heard_probability"] = *s.heard_probability;
+    if (s.heard_ebr_db) step["heard_ebr_db"] = *s.heard_ebr_db;
     steps.push_back(std::move(step));
   }
   nlohmann::json j = {{"id", entry.id},
@@ -87,6 +88,8 @@ StepRecord step_from_json(const nlohmann::json& js, const std::string& path,
       jf::integer64(jf::member(js, "episodes", path, source), jf::child(path, "episodes"), source);
   if (const nlohmann::json* p = jf::optional_member(js, "heard_probability", path, source))
     s.heard_probability = jf::number(*p, jf::child(path, "heard_probability"), source);
+  if (const nlohmann::json* p = jf::optional_member(js, "heard_ebr_db", path, source))
+    s.heard_ebr_db = jf::number(*p, jf::child(path, "heard_ebr_db"), source);
   return s;
 }
 

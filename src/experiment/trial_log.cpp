@@ -143,7 +143,7 @@ TrialLog::TrialLog(const std::filesystem::path& directory, const pomdp::ModelSpe
   if (!spec_.state.discrete_value_names.empty())
     for (const auto& value : spec_.state.discrete_value_names[0])
       steps_ << ',' << csv_field(prefix + value);
-  steps_ << ",reward,episodes,heard_probability";
+  steps_ << ",reward,episodes,heard_probability,heard_ebr_db";
   for (const auto& column : extra_columns_) steps_ << ',' << csv_field(column);
   steps_ << '\n';
   trials_.flush();
@@ -195,7 +195,8 @@ void TrialLog::write_trial(const TrialRecord& trial, const std::vector<StepRecor
         steps_ << ',' << number(p);
     }
     steps_ << ',' << number(s.reward) << ',' << s.episodes << ','
-           << (s.heard_probability ? number(*s.heard_probability) : std::string()) << extras
+           << (s.heard_probability ? number(*s.heard_probability) : std::string()) << ','
+           << (s.heard_ebr_db ? number(*s.heard_ebr_db) : std::string()) << extras
            << '\n';
   }
   trials_ << trial.trial << ',' << state_name(trial.true_state) << ','

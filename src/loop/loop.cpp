@@ -50,7 +50,8 @@ LoopSpec::LoopSpec(LoopSettings settings) : settings_(std::move(settings)) {
   if (settings_.world_problem != settings_.problem)
     check_same_names(*settings_.problem, *settings_.world_problem);
   world_factory_ = make_world_factory({settings_.world, settings_.world_problem->model,
-                                       settings_.observation_model, settings_.world_objects});
+                                       settings_.observation_model, settings_.world_objects,
+                                       settings_.noise});
 }
 
 Loop::Loop(std::shared_ptr<const LoopSpec> spec)

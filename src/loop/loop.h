@@ -37,6 +37,8 @@ struct LoopSettings {
       observation_model;  // simulator and replay worlds
   // The world's object when a problem object is the truth (e.g. coffee_mug -> coffee_mug_weighted).
   std::map<std::string, std::string> world_objects;
+  // Background noise the simulator's or replay's recordings are heard with; none: as recorded.
+  std::optional<robot::WorldNoise> noise;
   solvers::PlannerOverrides planner;  // the solver and budget; empty fields: the problem file's
   int max_steps = 100;                // a trial stops after this many steps; >= 1
 };

@@ -63,7 +63,7 @@ LoopLog::LoopLog(const fs::path& directory, const pomdp::ObjectIdentificationMod
   jsonl_ = open_for_writing(directory_ / "loop_steps.jsonl");
   csv_ << "trial,step,action,status,heard,probability,observation";
   for (const auto& o : objects_) csv_ << ",p_" << o;
-  csv_ << ",reward,clip\n" << std::flush;
+  csv_ << ",reward,heard_ebr_db,clip\n" << std::flush;
 }
 
 nlohmann::json LoopLog::write_step(const Step& s) {
@@ -96,7 +96,9 @@ nlohmann::json LoopLog::write_step(const Step& s) {
        << observation;
   for (std::size_t k = 0; k < objects_.size(); ++k)
     csv_ << ',' << (belief_after ? fmt::format("{:.4f}", (*belief_after)[k]) : "");
-  csv_ << ',' << fmt::format("{:g}", r.reward) << ',' << clip << '\n' << std::flush;
+  csv_ << ',' << fmt::format("{:g}", r.reward) << ','
+       << (r.heard_ebr_db ? fmt::format("{:.1f}", *r.heard_ebr_db) : "") << ',' << clip << '\n'
+       << std::flush;
 
   nlohmann::json j = {
       {"trial", r.trial},
@@ -113,6 +115,7 @@ nlohmann::json LoopLog::write_step(const Step& s) {
       {"belief_after",
        belief_after ? named_values(objects_, *belief_after) : nlohmann::json(nullptr)},
       {"clip", clip.empty() ? nlohmann::json(nullptr) : nlohmann::json(clip)},
+      {"heard_ebr_db", r.heard_ebr_db ? nlohmann::json(*r.heard_ebr_db) : nlohmann::json(nullptr)},
   };
   if (s.robot) {
     j["report"]["attempts"] = step.attempts;

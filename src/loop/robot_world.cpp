@@ -7,6 +7,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "audio/levels.h"
 #include "common/error.h"
 #include "loop/object_problem.h"
 #include "perception/observation_grades.h"
@@ -226,6 +227,7 @@ void RobotWorld::hear(RobotStep& acted, const std::string& action, pomdp::Outcom
           .count();
   acted.classified = true;
   outcome.heard_probability = acted.heard.probability;
+  if (acted.clip.frames() > 0) outcome.heard_ebr_db = audio::measured_ebr_db(acted.clip);
 }
 
 }  // namespace echoplan::loop

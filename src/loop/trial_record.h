@@ -24,6 +24,9 @@ struct StepRecord {
   // The observation service's calibrated probability of the heard class; absent when the world
   // has no classifier (the model as the world samples its table).
   std::optional<double> heard_probability;
+  // The event-to-background ratio measured from the heard recording (audio/levels.h), in dB;
+  // absent without one.
+  std::optional<double> heard_ebr_db;
 };
 
 // One finished trial. `believed_state` is the most likely value of discrete variable 0 under the

@@ -108,6 +108,7 @@ std::optional<Trial> run_trial(const TrialParts& parts, const TrialOptions& opti
     r.observation = outcome.observation;
     r.reward = outcome.reward;
     r.heard_probability = outcome.heard_probability;
+    r.heard_ebr_db = outcome.heard_ebr_db;
     s.robot = std::move(happened.robot);
     s.terminal = outcome.terminal || outcome.collision;
     count_step(record, r, weight, gamma);

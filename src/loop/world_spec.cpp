@@ -62,6 +62,17 @@ WorldFactory robot_world_factory(const WorldInputs& in, std::function<RobotParts
   return make;
 }
 
+// `make_parts` with the world's background noise in every recording.
+std::function<RobotParts()> heard_through(std::function<RobotParts()> make_parts,
+                                          const std::optional<robot::WorldNoise>& noise) {
+  if (!noise) return make_parts;
+  return [make_parts = std::move(make_parts), noise = *noise] {
+    RobotParts parts = make_parts();
+    parts.recorder = std::make_unique<robot::NoisyRecorder>(std::move(parts.recorder), noise);
+    return parts;
+  };
+}
+
 }  // namespace
 
 std::string world_name(const WorldSpec& world) {
@@ -75,6 +86,12 @@ std::string world_name(const WorldSpec& world) {
 
 WorldFactory make_world_factory(WorldInputs in) {
   if (!in.problem) throw std::invalid_argument("make_world_factory: no problem model");
+  if (in.noise && !std::holds_alternative<SimulatedWorldSpec>(in.spec) &&
+      !std::holds_alternative<ReplayWorldSpec>(in.spec))
+    throw InputError(fmt::format(
+        "background noise is heard by the simulated and the replayed worlds, not by the {} world "
+        "(for recorded data, write a noisy copy with `echoplan add-noise` and replay that)",
+        world_name(in.spec)));
   if (const auto* parts = std::get_if<PartsWorldSpec>(&in.spec))
     return robot_world_factory(in, parts->make);
   if (std::holds_alternative<TableWorldSpec>(in.spec)) {
@@ -120,7 +137,7 @@ WorldFactory make_world_factory(WorldInputs in) {
                         RecordingChecks{}};  // recorded files: heard as they are
     };
   }
-  WorldFactory factory = robot_world_factory(in, std::move(make_parts));
+  WorldFactory factory = robot_world_factory(in, heard_through(std::move(make_parts), in.noise));
   factory();  // RobotWorld checks the classifier against the problem: an InputError stops all work
   return factory;
 }

@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -16,6 +17,7 @@
 #include "loop/world.h"
 #include "perception/observation_model.h"
 #include "pomdp/model.h"
+#include "robot/noisy_recorder.h"
 #include "sim/catalogue.h"
 #include "sim/sim_config.h"
 
@@ -59,6 +61,9 @@ struct WorldInputs {
   // The world's object when a problem object is the truth (e.g. coffee_mug -> coffee_mug_weighted);
   // objects not listed are themselves. A table world plays the problem object.
   std::map<std::string, std::string> world_objects;
+  // Background noise the simulator's and replay's recordings are heard with (robot/noisy_recorder.h);
+  // none: as recorded.
+  std::optional<robot::WorldNoise> noise;
 };
 
 // Builds a new, independent world each call; safe to call from several threads at once (except for

@@ -21,6 +21,9 @@ struct Outcome {
   // The observation service's calibrated probability of the heard class, for worlds that classify a
   // recording; absent when the observation is drawn from a table.
   std::optional<double> heard_probability;
+  // The event-to-background ratio measured from that recording (audio/levels.h), in dB: how noisy
+  // what was heard was. Absent without a recording.
+  std::optional<double> heard_ebr_db;
 };
 
 class Environment {

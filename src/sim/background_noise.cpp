@@ -9,7 +9,9 @@
 #include <filesystem>
 
 #include "audio/io.h"
+#include "audio/levels.h"
 #include "common/error.h"
+#include "sim/sim_config.h"
 #include "sim/sound_noise.h"
 
 namespace echoplan::sim {
@@ -20,23 +22,18 @@ namespace fs = std::filesystem;
 
 constexpr double kRoomCornerHz = 500.0;
 
-// The clip's channels averaged.
-std::vector<double> mono(const audio::AudioClip& clip) {
-  std::vector<double> out(clip.frames(), 0.0);
-  const auto channels = static_cast<std::size_t>(clip.channels);
-  for (std::size_t f = 0; f < out.size(); ++f) {
-    for (std::size_t c = 0; c < channels; ++c) out[f] += clip.samples[f * channels + c];
-    out[f] /= static_cast<double>(channels);
-  }
-  return out;
-}
-
 double parse_db(const std::string& part, const std::string& text) {
   double value = 0.0;
   const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
   if (error != std::errc() || end != part.data() + part.size() || !(value >= -60 && value <= 60))
     throw InputError(fmt::format("EBR '{}': give a number of dB in [-60, 60], or LO:HI", text));
   return value;
+}
+
+double rms(const std::vector<double>& x) {
+  double sum = 0.0;
+  for (double v : x) sum += v * v;
+  return x.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(x.size()));
 }
 
 // Built-in noise of `frames` at `rate`, unit RMS.
@@ -46,6 +43,15 @@ std::vector<double> builtin(const std::string& name, std::size_t frames, int rat
   if (name == "room") {
     const std::vector<float> room = room_noise(frames, rate, kRoomCornerHz, 1.0, unit);
     std::copy(room.begin(), room.end(), out.begin());
+  } else if (name == "motor") {
+    // The simulated arm's motors running steadily (sim/sound_motor.h's band at the default
+    // recording's centre and Q): another arm at work nearby, or this one's drives held on.
+    const RecordingConfig defaults;
+    BandPass band(defaults.motor_noise_hz, defaults.motor_noise_q, rate);
+    for (double& x : out) x = band.filter(unit.next());
+    const double level = rms(out);
+    if (level > 0.0)
+      for (double& x : out) x /= level;
   } else {
     for (double& x : out) x = unit.next();
   }
@@ -70,12 +76,6 @@ std::vector<double> segment(const audio::AudioClip& source, std::size_t frames, 
   return out;
 }
 
-double rms(const std::vector<double>& x) {
-  double sum = 0.0;
-  for (double v : x) sum += v * v;
-  return x.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(x.size()));
-}
-
 // The recordings of a folder, recursively, in name order.
 std::vector<std::string> recordings_in(const fs::path& folder) {
   std::vector<std::string> files;
@@ -89,23 +89,6 @@ std::vector<std::string> recordings_in(const fs::path& folder) {
 }
 
 }  // namespace
-
-double event_level(const audio::AudioClip& clip) {
-  const std::vector<double> x = mono(clip);
-  if (x.empty()) return 0.0;
-  const auto window = std::min<std::size_t>(
-      x.size(), std::max<std::size_t>(1, static_cast<std::size_t>(0.05 * clip.sample_rate)));
-  const auto hop = std::max<std::size_t>(1, static_cast<std::size_t>(0.005 * clip.sample_rate));
-  double loudest = 0.0;
-  for (std::size_t begin = 0;; begin += hop) {
-    const std::size_t from = std::min(begin, x.size() - window);
-    double sum = 0.0;
-    for (std::size_t i = from; i < from + window; ++i) sum += x[i] * x[i];
-    loudest = std::max(loudest, sum / static_cast<double>(window));
-    if (from + window >= x.size()) break;
-  }
-  return std::sqrt(loudest);
-}
 
 EbrRange parse_ebr(const std::string& text) {
   const std::size_t colon = text.find(':');
@@ -121,7 +104,7 @@ EbrRange parse_ebr(const std::string& text) {
 }
 
 const std::vector<std::string>& builtin_noise_names() {
-  static const std::vector<std::string> names{"white", "room"};
+  static const std::vector<std::string> names{"white", "room", "motor"};
   return names;
 }
 
@@ -160,7 +143,7 @@ BackgroundNoise::Mixed BackgroundNoise::mix(const audio::AudioClip& recording, c
       recordings_[which].samples.empty()
           ? builtin(names_[which], frames, recording.sample_rate, rng)
           : segment(recordings_[which], frames, recording.sample_rate, rng);
-  const double event = event_level(recording), level = rms(noise);
+  const double event = audio::event_level(recording), level = rms(noise);
   if (event <= 0.0 || level <= 0.0) return mixed;
   const double gain = event / std::pow(10.0, mixed.ebr_db / 20.0) / level;
   const auto channels = static_cast<std::size_t>(recording.channels);

@@ -10,8 +10,9 @@
 // caller's Rng, so the same seed gives the same noise.
 //
 // Sources: recordings (files, or folders read recursively for .wav/.flac/.aiff files in name
-// order), or built-in noise made at the clip's rate from the Rng: "white" (unit white noise) and
-// "room" (the simulator's room noise, flat below 500 Hz and falling 6 dB per octave above).
+// order), or built-in noise made at the clip's rate from the Rng: "white" (unit white noise), "room"
+// (the simulator's room noise, flat below 500 Hz and falling 6 dB per octave above) and "motor" (the
+// simulated arm's motor band, sim/sound_motor.h, running steadily). The levels are audio/levels.h's.
 #pragma once
 
 #include <string>
@@ -22,10 +23,6 @@
 
 namespace echoplan::sim {
 
-// The RMS of the clip's loudest 50 ms window (hop 5 ms; the whole clip when shorter), channels
-// averaged; 0 for a silent or empty clip.
-double event_level(const audio::AudioClip& clip);
-
 // An EBR in dB, one number or a range drawn uniformly per recording.
 struct EbrRange {
   double low = 0.0;
@@ -34,7 +31,7 @@ struct EbrRange {
 // "X" or "LO:HI" (LO <= HI), each in [-60, 60]; InputError naming the text otherwise.
 EbrRange parse_ebr(const std::string& text);
 
-// The built-in sources' names: white, room.
+// The built-in sources' names: white, room, motor.
 const std::vector<std::string>& builtin_noise_names();
 
 class BackgroundNoise {

@@ -2,6 +2,7 @@
 // and the room's low-frequency background made from it.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <numbers>
@@ -26,6 +27,33 @@ class NoiseSource {
 
  private:
   std::uint64_t state_;
+};
+
+// A band-pass biquad (RBJ's cookbook, constant 0 dB peak gain) centred on `hz` with quality `q`,
+// at `rate`: the band of the arm's motors.
+class BandPass {
+ public:
+  BandPass(double hz, double q, int rate) {
+    const double w0 = 2.0 * std::numbers::pi * hz / rate;
+    const double bandwidth = std::sin(w0) / (2.0 * q);
+    const double a0 = 1 + bandwidth;
+    b0_ = bandwidth / a0;
+    b2_ = -bandwidth / a0;
+    a1_ = -2 * std::cos(w0) / a0;
+    a2_ = (1 - bandwidth) / a0;
+  }
+  double filter(double x) {
+    const double y = b0_ * x + b2_ * x2_ - a1_ * y1_ - a2_ * y2_;
+    x2_ = x1_;
+    x1_ = x;
+    y2_ = y1_;
+    y1_ = y;
+    return y;
+  }
+
+ private:
+  double b0_ = 0, b2_ = 0, a1_ = 0, a2_ = 0;
+  double x1_ = 0, x2_ = 0, y1_ = 0, y2_ = 0;
 };
 
 // The room's noise at `rms`, flat below `corner_hz` and falling 6 dB per octave above it (white

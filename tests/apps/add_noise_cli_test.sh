@@ -34,7 +34,7 @@ expect_input_error "a missing source" "$work/nope.wav" \
   add-noise --data "$work/clean" --noise "$work/nope.wav" --ebr 0 -o "$work/x"
 expect_input_error "a bad ratio" "EBR '12:-6'" \
   add-noise --data "$work/clean" --noise white --ebr 12:-6 -o "$work/x"
-expect_input_error "the copy over its source" "another folder than --data" \
+expect_input_error "the copy over its source" "another folder than the data" \
   add-noise --data "$work/clean" --noise white --ebr 0 -o "$work/clean"
 
 finish "add-noise"

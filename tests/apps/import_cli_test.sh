@@ -58,12 +58,12 @@ grep -q "mean discounted reward: 8.3555 with the problem's discount 0.99 (logged
   || { fail "summary's mean discounted reward:"; cat "$work/out"; }
 grep -q "beliefs: 2 from logged particles, 2 the problem's initial belief, 1 the problem's exact belief" "$work/out" \
   || { fail "summary's belief sources:"; cat "$work/out"; }
-expected_steps="trial,step,action,observation,particles_pringles_can,particles_coffee_mug,particles_plastic_cup,particles_paper_base,reward,episodes,heard_probability
-0,0,strike,coffee_mug,250,250,250,250,-1,900,
-0,1,move_to_B,none,0,2,1,0,10,900,
-1,0,strike,plastic_cup,250,250,250,250,-1,900,
-1,1,strike,plastic_cup,217,217,486,80,-1,900,
-1,2,move_to_A,none,0,1,3,0,10,900,"
+expected_steps="trial,step,action,observation,particles_pringles_can,particles_coffee_mug,particles_plastic_cup,particles_paper_base,reward,episodes,heard_probability,heard_ebr_db
+0,0,strike,coffee_mug,250,250,250,250,-1,900,,
+0,1,move_to_B,none,0,2,1,0,10,900,,
+1,0,strike,plastic_cup,250,250,250,250,-1,900,,
+1,1,strike,plastic_cup,217,217,486,80,-1,900,,
+1,2,move_to_A,none,0,1,3,0,10,900,,"
 # Step 0 holds the problem's uniform prior as 1000 particles. Step 1 of run 2 follows an empty block:
 # the exact belief after a strike heard as the cup, the strike table's plastic_cup column
 # (0.3, 0.3, 0.67, 0.11) / 1.38, times 1000 particles: 217, 217, 486, 80.

@@ -118,7 +118,7 @@ TEST(Campaign, ParallelRunWritesTheFilesOfAOneCoreRun) {
   EXPECT_EQ(header,
             "trial,step,action,observation,particles_pringles_can,particles_coffee_mug,particles_"
             "plastic_cup,"
-            "particles_paper_base,reward,episodes,heard_probability,arm,object,session");
+            "particles_paper_base,reward,episodes,heard_probability,heard_ebr_db,arm,object,session");
 }
 
 TEST(Campaign, StoppedAndResumedRunWritesTheFilesOfOneRun) {

@@ -51,6 +51,7 @@ std::vector<StepRecord> two_steps() {
   listen.reward = -1;
   listen.episodes = 300;
   listen.heard_probability = 0.875;
+  listen.heard_ebr_db = 24.5;
   StepRecord open = listen;
   open.step = 1;
   open.action = 1;
@@ -59,6 +60,7 @@ std::vector<StepRecord> two_steps() {
   open.reward = 10;
   open.episodes = 200;
   open.heard_probability.reset();
+  open.heard_ebr_db.reset();
   return {listen, open};
 }
 
@@ -100,9 +102,9 @@ TEST_F(TrialLogTest, ParticleCountsAndQuotedNames) {
             "0,right,right,2,1,1,8.5,0\n");
   EXPECT_EQ(slurp(dir_ / "steps.csv"),
             "trial,step,action,observation,particles_left,particles_right,reward,episodes,"
-            "heard_probability\n"
-            "0,0,listen,hear_right,250,750,-1,300,0.875\n"
-            "0,1,\"open,left\",hear_left,125,875,10,200,\n");
+            "heard_probability,heard_ebr_db\n"
+            "0,0,listen,hear_right,250,750,-1,300,0.875,24.5\n"
+            "0,1,\"open,left\",hear_left,125,875,10,200,,\n");
 }
 
 TEST_F(TrialLogTest, ProbabilitiesWithoutParticlesAndExtraColumnsOnEveryRow) {
@@ -118,10 +120,10 @@ TEST_F(TrialLogTest, ProbabilitiesWithoutParticlesAndExtraColumnsOnEveryRow) {
             "collision,arm,object\n"
             "0,right,left,2,1,1,8.5,1,abt,\"mug \"\"tall\"\"\"\n");
   EXPECT_EQ(slurp(dir_ / "steps.csv"),
-            "trial,step,action,observation,p_left,p_right,reward,episodes,heard_probability,arm,"
-            "object\n"
-            "0,0,listen,hear_right,0.25,0.75,-1,300,0.875,abt,\"mug \"\"tall\"\"\"\n"
-            "0,1,\"open,left\",hear_left,0.125,0.875,10,200,,abt,\"mug \"\"tall\"\"\"\n");
+            "trial,step,action,observation,p_left,p_right,reward,episodes,heard_probability,"
+            "heard_ebr_db,arm,object\n"
+            "0,0,listen,hear_right,0.25,0.75,-1,300,0.875,24.5,abt,\"mug \"\"tall\"\"\"\n"
+            "0,1,\"open,left\",hear_left,0.125,0.875,10,200,,,abt,\"mug \"\"tall\"\"\"\n");
 }
 
 TEST_F(TrialLogTest, OneValuePerExtraColumnIsRequired) {
@@ -145,7 +147,7 @@ TEST_F(TrialLogTest, ContinuousObservationsAreItsValuesInOneField) {
     log.trial_finished(t, steps);
   }
   const std::string text = slurp(dir_ / "steps.csv");
-  EXPECT_EQ(text.substr(text.find('\n') + 1), "0,0,listen,0.5 -2,0.25,0.75,-1,300,\n");
+  EXPECT_EQ(text.substr(text.find('\n') + 1), "0,0,listen,0.5 -2,0.25,0.75,-1,300,,24.5\n");
 }
 
 TEST_F(TrialLogTest, AFolderThatCannotBeCreatedIsAnInputError) {

@@ -47,6 +47,7 @@ Step strike_step() {
   s.record.belief = {0.25, 0.25, 0.25, 0.25};
   s.record.observation.index = symbol("coffee_mug");
   s.record.reward = -1;
+  s.record.heard_ebr_db = 12.25;
   s.belief_after = {0.125, 0.5, 0.3125, 0.0625};
   RobotStep& r = s.robot.emplace();
   r.report = {"strike", robot::ActionStatus::done, "", 0.5};
@@ -89,10 +90,10 @@ TEST_F(LoopLogTest, CsvRowsClipsAndJsonOfATrial) {
   }
   EXPECT_EQ(slurp(dir_ / "loop_steps.csv"),
             "trial,step,action,status,heard,probability,observation,p_pringles_can,p_coffee_mug,"
-            "p_plastic_cup,p_paper_base,reward,clip\n"
-            "2,0,strike,done,coffee_mug,0.8125,coffee_mug,0.1250,0.5000,0.3125,0.0625,-1,"
+            "p_plastic_cup,p_paper_base,reward,heard_ebr_db,clip\n"
+            "2,0,strike,done,coffee_mug,0.8125,coffee_mug,0.1250,0.5000,0.3125,0.0625,-1,12.2,"
             "clips/002_00_strike.wav\n"
-            "2,1,move_to_B,done,,,none,,,,,100,\n");
+            "2,1,move_to_B,done,,,none,,,,,100,,\n");
 
   // The clip as recorded (16-bit PCM: these samples are exact multiples of 2^-15).
   const audio::AudioClip clip = audio::read_audio((dir_ / "clips/002_00_strike.wav").string());
@@ -117,12 +118,14 @@ TEST_F(LoopLogTest, CsvRowsClipsAndJsonOfATrial) {
   EXPECT_EQ(strike["belief_before"]["coffee_mug"], 0.25);
   EXPECT_EQ(strike["belief_after"]["plastic_cup"], 0.3125);
   EXPECT_EQ(strike["clip"], "clips/002_00_strike.wav");
+  EXPECT_EQ(strike["heard_ebr_db"], 12.25);
   EXPECT_EQ(strike["heard"]["probabilities"],
             nlohmann::json({{"coffee_mug", 0.8125}, {"plastic_cup", 0.1875}}));
   EXPECT_EQ(strike["heard"]["observe_ms"], 3.5);
   EXPECT_EQ(strike["features"], nlohmann::json({{"onset_s", 0.25}}));
   EXPECT_TRUE(sort["belief_after"].is_null());
   EXPECT_TRUE(sort["clip"].is_null());
+  EXPECT_TRUE(sort["heard_ebr_db"].is_null());
   EXPECT_FALSE(sort.contains("heard"));
   EXPECT_EQ(sort["terminal"], true);
 }
@@ -140,7 +143,7 @@ TEST_F(LoopLogTest, ACollisionIsLoggedWithItsReason) {
     EXPECT_EQ(j["report"]["reason"], "the arm touched the table");
   }
   const std::string text = slurp(dir_ / "loop_steps.csv");
-  EXPECT_EQ(text.substr(text.find('\n') + 1), "2,1,slide,collision,,,none,,,,,-200,\n");
+  EXPECT_EQ(text.substr(text.find('\n') + 1), "2,1,slide,collision,,,none,,,,,-200,,\n");
 }
 
 // A full disk under the step log (loop_steps.jsonl is /dev/full, where every write fails with

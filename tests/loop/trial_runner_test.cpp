@@ -152,11 +152,12 @@ TEST(Trials, FilesHoldOneRowPerTrialAndPerStep) {
   std::getline(lines, first);
   EXPECT_EQ(header,
             "trial,step,action,observation,particles_pringles_can,particles_coffee_mug,"
-            "particles_plastic_cup,particles_paper_base,reward,episodes,heard_probability");
+            "particles_plastic_cup,particles_paper_base,reward,episodes,heard_probability,"
+            "heard_ebr_db");
   std::vector<std::string> fields;
   std::stringstream row(first);
   for (std::string f; std::getline(row, f, ',');) fields.push_back(f);
-  ASSERT_EQ(fields.size(), 10u);
+  ASSERT_EQ(fields.size(), 11u);  // getline drops the last (empty) field
   int total = 0;
   for (int k = 4; k < 8; ++k) {
     EXPECT_NEAR(std::stoi(fields[k]), 250, 55);

@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 using namespace test;
 
 WorldInputs simulator_inputs(pomdp::ModelPtr problem) {
-  return {simulator(), problem, model(), {}};
+  return {simulator(), problem, model(), {}, std::nullopt};
 }
 
 bool mentions(const std::string& message, const std::string& what) {
@@ -112,7 +112,7 @@ TEST(WorldFactory, NamesEachWorld) {
 
 TEST(WorldFactory, ATableWorldNeedsNoClassifierAndDrawsFromTheProblem) {
   const auto problem = calibrated(mug_or_cup());
-  const auto world = make_world_factory({TableWorldSpec{}, problem->model, nullptr, {}})();
+  const auto world = make_world_factory({TableWorldSpec{}, problem->model, nullptr, {}, std::nullopt})();
   Rng rng(3);
   world->reset(problem->model->sample_initial_state(rng), rng);
   const WorldStep step = world->execute(1, rng);

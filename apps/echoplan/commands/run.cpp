@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands/commands.h"
+#include "commands/noise_options.h"
 #include "commands/planner_options.h"
 #include "commands/sim_options.h"
 #include "common/data_dir.h"
@@ -46,6 +47,7 @@ struct RunFlags {
   int train_per_pair = 10;
   std::string out;
   SimFiles sim;
+  NoiseFlags noise;
   solvers::PlannerOverrides planner;
 };
 
@@ -98,11 +100,13 @@ loop::PreparedObservation prepare(const RunFlags& f, const pomdp::Problem& base,
 loop::LoopSettings loop_settings(const RunFlags& f, const loop::PreparedObservation& prepared,
                                  std::shared_ptr<const pomdp::Problem> base,
                                  const loop::SimulatedWorldSpec& sim,
-                                 const loop::TrueObject& truth) {
+                                 const loop::TrueObject& truth,
+                                 std::optional<robot::WorldNoise> noise) {
   loop::LoopSettings s;
   s.problem = prepared.problem ? prepared.problem : std::move(base);
   s.world = f.recordings.empty() ? loop::WorldSpec{sim} : loop::ReplayWorldSpec{f.recordings};
   s.observation_model = prepared.model;
+  s.noise = std::move(noise);
   s.world_objects = loop::world_objects_for(truth, loop::object_problem(*s.problem->model).data());
   s.planner = f.planner;
   s.max_steps = f.max_steps;
@@ -122,6 +126,7 @@ nlohmann::json run_settings(const RunFlags& f, const loop::Loop& run,
             {"model", f.model.empty() ? (fs::path(f.out) / "model.json").string() : f.model},
             {"seed", f.seed},
             {"max_steps", f.max_steps}});
+  if (!f.noise.sources.empty()) j["noise"] = {{"sources", f.noise.sources}, {"ebr_db", f.noise.ebr}};
   return j;
 }
 
@@ -247,6 +252,10 @@ void replay_session(const RunFlags& f) {
 // --data: one recorded session instead of the simulator or a recordings folder.
 void run_recorded(const RunFlags& f) {
   if (!f.recordings.empty()) throw InputError("--data and --recordings are two worlds: give one");
+  if (!f.noise.sources.empty())
+    throw InputError(
+        "--noise is heard by the simulator and --recordings; recorded features are heard as "
+        "recorded (for a recordings tree, write a noisy copy with `echoplan add-noise`)");
   if (f.session.empty()) throw InputError("--data needs --session: the session to replay");
   replay_session(f);
 }
@@ -256,6 +265,7 @@ void run_command(const RunFlags& f) {
   if (!f.session.empty() || !f.groups.empty())
     throw InputError("--session and --groups replay recorded data: give --data too");
   check_flags(f);
+  std::optional<robot::WorldNoise> noise = world_noise(f.noise);  // read before any training
   const loop::SimulatedWorldSpec sim = load_simulated_world(f.sim);
   const auto base = std::make_shared<const pomdp::Problem>(pomdp::load_problem(
       f.problem.empty() ? shipped_file("problems/audio_objects.yaml") : f.problem));
@@ -265,14 +275,18 @@ void run_command(const RunFlags& f) {
   const StopSignal stop;
   const loop::PreparedObservation prepared = prepare(f, *base, sim, stop);
   loop::Loop run(
-      std::make_shared<const loop::LoopSpec>(loop_settings(f, prepared, base, sim, truth)));
+      std::make_shared<const loop::LoopSpec>(loop_settings(f, prepared, base, sim, truth, std::move(noise))));
   const pomdp::Problem& problem = run.spec().problem();
   // Only now that everything fits are files written.
   if (prepared.problem) loop::save_problem(problem, problem.source_path);
   loop::LoopLog log(f.out, loop::object_problem(*problem.model));
 
-  fmt::print("{} {}, planning on {} ({}), seed {}\n", truth.world,
+  fmt::print("{} {}{}, planning on {} ({}), seed {}\n", truth.world,
              f.recordings.empty() ? "in the simulator" : "replayed from " + f.recordings,
+             f.noise.sources.empty()
+                 ? ""
+                 : fmt::format(" through {} at {} dB EBR", fmt::join(f.noise.sources, " and "),
+                               f.noise.ebr),
              problem.source_path, run.planner().describe(), f.seed);
   const auto trial = run.run(
       {0, truth.index, loop::stream_seed(f.seed, loop::Stream::run_trial)},
@@ -305,6 +319,7 @@ Examples:
   echoplan run --object coffee_mug --out runs/mug
   echoplan run --object coffee_mug_weighted --model runs/mug/model.json --out runs/heavy_mug
   echoplan run --object plastic_cup --model model.json --recordings recordings/ --out runs/replay
+  echoplan run --object coffee_mug --model model.json --noise /usr/share/asterisk/sounds/en_US_f_Allison --ebr 0 --out runs/talk
   echoplan run --data features --object mug3 --session 2 --model model.json --problem dataset.yaml --out runs/mug3
 With --data, the session's recorded performances are replayed as a dataset campaign replays
 them, and --seed is the trial's seed (a campaign's trials.csv `seed` column).)");
@@ -339,6 +354,7 @@ them, and --seed is the trial's seed (a campaign's trials.csv `seed` column).)")
   cmd->add_option("--out", flags->out, "Folder for the clips, loop_steps.csv/.jsonl, trial.json")
       ->required();
   add_sim_file_options(*cmd, flags->sim);
+  add_noise_options(*cmd, flags->noise, false);
   add_planner_options(*cmd, flags->planner);
   cmd->callback([flags] { run_command(*flags); });
 }

@@ -76,7 +76,7 @@ trial_seed=$("$build/tests/robot/ros/feature_rows_reference" trial-seed $seed)
 "$build/echoplan" run --data "$data" --object $object --session $session --model "$work/model.json" \
   --problem "$work/problem.yaml" --seed "$trial_seed" --episodes $episodes --out "$work/replay" \
   >"$work/replay.log" 2>&1 || { fail "echoplan run --data"; cat "$work/replay.log"; }
-# Columns: trial,step,action,status,heard,probability,observation,p_<object>...,reward,clip. A replay
+# Columns: trial,step,action,status,heard,probability,observation,p_<object>...,reward,heard_ebr_db,clip. A replay
 # has no robot: no status, heard class or probability (compared above instead).
 trial0() { grep -v '^1,' "$1" | cut -d, -f1-3,7-; }
 if ! cmp -s <(trial0 "$work/ros_run/loop_steps.csv") <(trial0 "$work/replay/loop_steps.csv"); then
