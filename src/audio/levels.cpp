@@ -47,7 +47,8 @@ double event_level(const AudioClip& clip) {
 double background_level(const AudioClip& clip) {
   std::vector<double> powers = window_powers(clip, 0.025);
   if (powers.empty()) return 0.0;
-  const auto k = static_cast<std::size_t>(kBackgroundPercentile * static_cast<double>(powers.size()));
+  const auto k =
+      static_cast<std::size_t>(kBackgroundPercentile * static_cast<double>(powers.size()));
   std::nth_element(powers.begin(), powers.begin() + static_cast<std::ptrdiff_t>(k), powers.end());
   return std::sqrt(powers[k]);
 }

@@ -4,8 +4,9 @@
 //
 // The background is measured from the recording itself, so a clip says how noisy it is without
 // knowing what was added: the quiet around the contact (before the slide starts, after the strike
-// has rung out) is the room. Its level is the 10th percentile of the RMS of the clip's 50 ms windows
-// (hop 25 ms): the quietest tenth of the clip, robust to a single silent window (a gap, a fade).
+// has rung out) is the room. Its level is the 10th percentile of the RMS of the clip's 50 ms
+// windows (hop 25 ms): the quietest tenth of the clip, robust to a single silent window (a gap, a
+// fade).
 #pragma once
 
 #include "audio/clip.h"

@@ -308,7 +308,8 @@ nlohmann::json campaign_json(const CampaignConfig& c, Write&& write) {
     j["task"]["rewards"] = write(reward_fields(), c.rewards);
   }
   j["training_set"] = write(training_fields(), c.training);
-  if (c.training.noise.given()) j["training_set"]["noise"] = write(noise_fields(), c.training.noise);
+  if (c.training.noise.given())
+    j["training_set"]["noise"] = write(noise_fields(), c.training.noise);
   j["trials"] = nlohmann::json::array();  // a dataset world's file has none (the data has them)
   for (const ObjectGroup& g : c.groups) j["trials"].push_back(write(group_fields(), g));
   j["planner"] = write(planner_fields(), c.planner);

@@ -338,8 +338,8 @@ std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
     for (std::size_t a = 0; a < arms.size(); ++a) {
       if (!arms[a].calibrate) continue;
       const std::string file = (training_ / (arms[a].name + ".problem.yaml")).string();
-      prepared.arm_problems[a] = loop::calibrate_problem(
-          *arm_problems_[a], *prepared.of(arms[a]), file, arms[a].hearing());
+      prepared.arm_problems[a] = loop::calibrate_problem(*arm_problems_[a], *prepared.of(arms[a]),
+                                                         file, arms[a].hearing());
       loop::save_problem(*prepared.arm_problems[a], file);
     }
   }
@@ -387,9 +387,9 @@ ArmLoops ProblemFileWorld::make_loops(const CampaignConfig& config,
     if (arm.hearing() == perception::ObservationKind::graded) {
       auto& world = graded_world[prepared.of(arm).get()];
       if (!world)
-        world = loop::calibrate_problem(*world_problem_, *prepared.of(arm),
-                                        world_problem_->source_path,
-                                        perception::ObservationKind::graded);
+        world =
+            loop::calibrate_problem(*world_problem_, *prepared.of(arm), world_problem_->source_path,
+                                    perception::ObservationKind::graded);
     }
   for (std::size_t a = 0; a < arms.size(); ++a)
     for (const ObjectGroup& group : config.groups) {

@@ -196,8 +196,7 @@ void TrialLog::write_trial(const TrialRecord& trial, const std::vector<StepRecor
     }
     steps_ << ',' << number(s.reward) << ',' << s.episodes << ','
            << (s.heard_probability ? number(*s.heard_probability) : std::string()) << ','
-           << (s.heard_ebr_db ? number(*s.heard_ebr_db) : std::string()) << extras
-           << '\n';
+           << (s.heard_ebr_db ? number(*s.heard_ebr_db) : std::string()) << extras << '\n';
   }
   trials_ << trial.trial << ',' << state_name(trial.true_state) << ','
           << state_name(trial.believed_state) << ',' << trial.steps;

@@ -49,9 +49,9 @@ LoopSpec::LoopSpec(LoopSettings settings) : settings_(std::move(settings)) {
   check_planner(settings_.planner, *settings_.problem);
   if (settings_.world_problem != settings_.problem)
     check_same_names(*settings_.problem, *settings_.world_problem);
-  world_factory_ = make_world_factory({settings_.world, settings_.world_problem->model,
-                                       settings_.observation_model, settings_.world_objects,
-                                       settings_.noise});
+  world_factory_ =
+      make_world_factory({settings_.world, settings_.world_problem->model,
+                          settings_.observation_model, settings_.world_objects, settings_.noise});
 }
 
 Loop::Loop(std::shared_ptr<const LoopSpec> spec)

@@ -36,8 +36,8 @@ std::size_t write_noisy_copy(const perception::RecordingSet& set, const robot::W
     throw InputError(out.string(), 0, "the noisy copy must go to another folder than the data");
   bool sessions = options.keep_quiet;
   for (const perception::Recording& r : set.recordings) sessions = sessions || !r.session.empty();
-  std::string manifest = sessions ? "file,object,action,session,ebr_db,noise\n"
-                                  : "file,object,action,ebr_db,noise\n";
+  std::string manifest =
+      sessions ? "file,object,action,session,ebr_db,noise\n" : "file,object,action,ebr_db,noise\n";
   const auto row = [&](const std::string& file, const perception::Recording& r,
                        const std::string& session, const std::string& ebr,
                        const std::string& source) {

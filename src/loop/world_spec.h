@@ -61,8 +61,8 @@ struct WorldInputs {
   // The world's object when a problem object is the truth (e.g. coffee_mug -> coffee_mug_weighted);
   // objects not listed are themselves. A table world plays the problem object.
   std::map<std::string, std::string> world_objects;
-  // Background noise the simulator's and replay's recordings are heard with (robot/noisy_recorder.h);
-  // none: as recorded.
+  // Background noise the simulator's and replay's recordings are heard with
+  // (robot/noisy_recorder.h); none: as recorded.
   std::optional<robot::WorldNoise> noise;
 };
 

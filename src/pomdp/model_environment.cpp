@@ -17,8 +17,8 @@ Outcome ModelEnvironment::execute(int action, Rng& rng) {
   StepResult r = model_->step(state_, action, rng);
   state_ = std::move(r.next);
   ended_ = r.terminal;
-  return Outcome{std::move(r.observation), r.reward, r.terminal, r.collision, std::nullopt,
-                 std::nullopt};
+  return Outcome{
+      std::move(r.observation), r.reward, r.terminal, r.collision, std::nullopt, std::nullopt};
 }
 
 }  // namespace echoplan::pomdp

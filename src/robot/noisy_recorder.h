@@ -1,10 +1,10 @@
 // A recorder that hears the world through background noise: whatever another recorder returns (the
 // simulated microphone, replayed files, a live microphone) with noise mixed in at an
-// event-to-background ratio (sim/background_noise.h), so a trial can be heard as a room where people
-// talk or a machine runs would hear it.
+// event-to-background ratio (sim/background_noise.h), so a trial can be heard as a room where
+// people talk or a machine runs would hear it.
 //
-// The noise is drawn per performance from the trial's seed, the action's name and how many times the
-// trial performed it before: the first slide of a trial hears the same noise on every arm of a
+// The noise is drawn per performance from the trial's seed, the action's name and how many times
+// the trial performed it before: the first slide of a trial hears the same noise on every arm of a
 // campaign, whatever the arm did before it, as replayed files are dealt the same way
 // (robot/replay_recorder.h). Which source, where in it and, for a range, which ratio follow from
 // that alone.
@@ -19,7 +19,8 @@
 
 namespace echoplan::robot {
 
-// Background noise a world's recordings are heard with: its sources and the ratio of each recording.
+// Background noise a world's recordings are heard with: its sources and the ratio of each
+// recording.
 struct WorldNoise {
   std::shared_ptr<const sim::BackgroundNoise> sources;
   sim::EbrRange ebr_db;

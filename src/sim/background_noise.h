@@ -10,9 +10,10 @@
 // caller's Rng, so the same seed gives the same noise.
 //
 // Sources: recordings (files, or folders read recursively for .wav/.flac/.aiff files in name
-// order), or built-in noise made at the clip's rate from the Rng: "white" (unit white noise), "room"
-// (the simulator's room noise, flat below 500 Hz and falling 6 dB per octave above) and "motor" (the
-// simulated arm's motor band, sim/sound_motor.h, running steadily). The levels are audio/levels.h's.
+// order), or built-in noise made at the clip's rate from the Rng: "white" (unit white noise),
+// "room" (the simulator's room noise, flat below 500 Hz and falling 6 dB per octave above) and
+// "motor" (the simulated arm's motor band, sim/sound_motor.h, running steadily). The levels are
+// audio/levels.h's.
 #pragma once
 
 #include <string>

@@ -65,6 +65,24 @@ TEST(CampaignConfig, ShippedDefaultIsTheReportsChapter5) {
   EXPECT_EQ(trials, 60);
 }
 
+// The shipped noise campaign: its speech is where setup.sh installs it, and the arm trained in
+// noise learns from words the trials never play.
+TEST(CampaignConfig, ShippedNoiseCampaignTrainsOnSpeechItsTrialsNeverPlay) {
+  const CampaignConfig c =
+      load_campaign_config(echoplan::testing::source_dir() + "/experiments/noise.yaml");
+  ASSERT_TRUE(c.world.noise.given());
+  EXPECT_EQ(c.world.noise.ebr_db, "0");
+  const std::vector<ResolvedArm> arms = resolve_arms(c);
+  ASSERT_EQ(arms.size(), 2u);
+  EXPECT_FALSE(arms[0].trained_in_noise);
+  EXPECT_TRUE(arms[1].trained_in_noise);
+  for (const std::string& heard : c.world.noise.sources)
+    for (const std::string& trained : c.training.noise.sources)
+      if (heard != "room") {
+        EXPECT_NE(heard, trained);
+      }
+}
+
 TEST(CampaignConfig, RelativePathsAreRelativeToTheFile) {
   const CampaignConfig c = parse_campaign_config(kMinimal, "/dir/c.yaml");
   EXPECT_EQ(c.arms.at(0).problem, "/dir/p.yaml");
@@ -175,6 +193,53 @@ TEST(CampaignConfig, ClassifierWithModelIsAnError) {
   EXPECT_EQ(error_of(kMinimal + "training_set:\n  model: m.json\n  classifier: report-template\n"),
             "10: classifier chooses how this campaign trains; with model: the model file has its "
             "own");
+}
+
+// A simulated world's noise: built-in sources stay names, files are relative to the campaign file,
+// and the sections appear in the JSON (and so the identity) only when given.
+class CampaignNoiseConfig : public TestFolder {};
+
+TEST_F(CampaignNoiseConfig, ASimulatedWorldHearsThroughTheNoiseItNames) {
+  std::string simulated = kMinimal;
+  simulated.replace(simulated.find("type: model"), 11, "type: simulated");
+  const CampaignConfig quiet = parse_campaign_config(simulated, "/dir/c.yaml");
+  EXPECT_FALSE(quiet.world.noise.given());
+  EXPECT_FALSE(to_json(quiet)["world"].contains("noise"));
+  const std::string noisy =
+      "world:\n  type: simulated\n  problem: w.yaml\n  noise: {sources: [room, speech], ebr_db: "
+      "\"-6:12\"}\n" +
+      simulated.substr(simulated.find("trials:"));
+  const std::string arms = "arms:\n  - {name: a, problem: p.yaml}\n";
+  std::filesystem::create_directories(dir_ / "speech");
+  const std::string file = (dir_ / "c.yaml").string();
+  const CampaignConfig c = parse_campaign_config(arms + noisy, file);
+  EXPECT_EQ(c.world.noise.sources, (std::vector<std::string>{"room", (dir_ / "speech").string()}));
+  EXPECT_EQ(c.world.noise.ebr_db, "-6:12");
+  const CampaignConfig back = campaign_config_from_json(to_json(c), "campaign.json");
+  EXPECT_EQ(back.world.noise.sources, c.world.noise.sources);
+  EXPECT_EQ(to_json(back), to_json(c));
+  EXPECT_EQ(to_json(c)["world"]["noise"]["ebr_db"], "-6:12");
+}
+
+TEST(CampaignConfig, NoiseMistakesNameTheLine) {
+  const std::string head = "arms:\n  - {name: a, problem: p.yaml}\nworld:\n  type: ";
+  const std::string tail = "\ntrials:\n  - {object: mug}\nplanner: {episodes: 100}\n";
+  const auto world = [&](const std::string& type, const std::string& noise) {
+    return error_of(head + type + "\n  problem: w.yaml\n  noise: " + noise + tail);
+  };
+  EXPECT_EQ(world("model", "{sources: [room], ebr_db: 0}").substr(0, 20), "6: noise: a simulate");
+  EXPECT_EQ(world("simulated", "{sources: [room], ebr_db: 70}"),
+            "6: world.noise: EBR '70': give a number of dB in [-60, 60], or LO:HI");
+  EXPECT_EQ(world("simulated", "{sources: [room]}"),
+            "6: world.noise needs ebr_db: the ratio of each recording");
+  EXPECT_EQ(world("simulated", "{sources: [nowhere.wav], ebr_db: 0}"),
+            "6: world.noise: source '/dir/nowhere.wav' is neither built-in (white, room, motor) "
+            "nor a file or folder");
+  EXPECT_NE(world("simulated", "{ebr_db: 0}").find("sources"), std::string::npos);
+  // An arm trained in noise hears a simulated world; a model world hears nothing.
+  EXPECT_NE(arm_error_of(with_arm("{name: a, problem: p.yaml, trained_in_noise: true}"))
+                .find("trained_in_noise: the classifier trained in noise hears a simulated"),
+            std::string::npos);
 }
 
 TEST(CampaignConfig, ShippedDefaultNamesTheReportsNumbers) {

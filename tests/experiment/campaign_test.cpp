@@ -115,10 +115,11 @@ TEST(Campaign, ParallelRunWritesTheFilesOfAOneCoreRun) {
   std::ifstream steps(one / "steps.csv");
   std::string header;
   std::getline(steps, header);
-  EXPECT_EQ(header,
-            "trial,step,action,observation,particles_pringles_can,particles_coffee_mug,particles_"
-            "plastic_cup,"
-            "particles_paper_base,reward,episodes,heard_probability,heard_ebr_db,arm,object,session");
+  EXPECT_EQ(
+      header,
+      "trial,step,action,observation,particles_pringles_can,particles_coffee_mug,particles_"
+      "plastic_cup,"
+      "particles_paper_base,reward,episodes,heard_probability,heard_ebr_db,arm,object,session");
 }
 
 TEST(Campaign, StoppedAndResumedRunWritesTheFilesOfOneRun) {

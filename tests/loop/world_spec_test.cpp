@@ -112,7 +112,8 @@ TEST(WorldFactory, NamesEachWorld) {
 
 TEST(WorldFactory, ATableWorldNeedsNoClassifierAndDrawsFromTheProblem) {
   const auto problem = calibrated(mug_or_cup());
-  const auto world = make_world_factory({TableWorldSpec{}, problem->model, nullptr, {}, std::nullopt})();
+  const auto world =
+      make_world_factory({TableWorldSpec{}, problem->model, nullptr, {}, std::nullopt})();
   Rng rng(3);
   world->reset(problem->model->sample_initial_state(rng), rng);
   const WorldStep step = world->execute(1, rng);

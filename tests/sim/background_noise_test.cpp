@@ -1,5 +1,5 @@
-// Background noise at an event-to-background ratio: the ratio kept for every kind of source, the seed's
-// draws, and bad sources named.
+// Background noise at an event-to-background ratio: the ratio kept for every kind of source, the
+// seed's draws, and bad sources named.
 #include "sim/background_noise.h"
 
 #include <gtest/gtest.h>
@@ -103,7 +103,8 @@ TEST(BackgroundNoise, RealSpeechFromAFolderOfRecordings) {
   Rng rng(5);
   const auto mixed = noise.mix(strike, {0, 0}, rng);
   EXPECT_EQ(fs::path(mixed.source).parent_path(), speech);
-  EXPECT_NEAR(20 * std::log10(audio::event_level(strike) / added_rms(strike, mixed.clip)), 0.0, 0.01);
+  EXPECT_NEAR(20 * std::log10(audio::event_level(strike) / added_rms(strike, mixed.clip)), 0.0,
+              0.01);
 }
 
 TEST(BackgroundNoise, BadSourcesAndRatiosAreNamed) {

@@ -99,8 +99,7 @@ loop::PreparedObservation prepare(const RunFlags& f, const pomdp::Problem& base,
 // The loop: the planning problem in the simulator or replaying --recordings.
 loop::LoopSettings loop_settings(const RunFlags& f, const loop::PreparedObservation& prepared,
                                  std::shared_ptr<const pomdp::Problem> base,
-                                 const loop::SimulatedWorldSpec& sim,
-                                 const loop::TrueObject& truth,
+                                 const loop::SimulatedWorldSpec& sim, const loop::TrueObject& truth,
                                  std::optional<robot::WorldNoise> noise) {
   loop::LoopSettings s;
   s.problem = prepared.problem ? prepared.problem : std::move(base);
@@ -126,7 +125,8 @@ nlohmann::json run_settings(const RunFlags& f, const loop::Loop& run,
             {"model", f.model.empty() ? (fs::path(f.out) / "model.json").string() : f.model},
             {"seed", f.seed},
             {"max_steps", f.max_steps}});
-  if (!f.noise.sources.empty()) j["noise"] = {{"sources", f.noise.sources}, {"ebr_db", f.noise.ebr}};
+  if (!f.noise.sources.empty())
+    j["noise"] = {{"sources", f.noise.sources}, {"ebr_db", f.noise.ebr}};
   return j;
 }
 
@@ -274,8 +274,8 @@ void run_command(const RunFlags& f) {
 
   const StopSignal stop;
   const loop::PreparedObservation prepared = prepare(f, *base, sim, stop);
-  loop::Loop run(
-      std::make_shared<const loop::LoopSpec>(loop_settings(f, prepared, base, sim, truth, std::move(noise))));
+  loop::Loop run(std::make_shared<const loop::LoopSpec>(
+      loop_settings(f, prepared, base, sim, truth, std::move(noise))));
   const pomdp::Problem& problem = run.spec().problem();
   // Only now that everything fits are files written.
   if (prepared.problem) loop::save_problem(problem, problem.source_path);
