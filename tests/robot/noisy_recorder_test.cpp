@@ -32,10 +32,10 @@ class NoisyFolder : public TestFolder {
     }
   }
   NoisyRecorder recorder(const std::string& ebr) const {
-    return NoisyRecorder(std::make_unique<ReplayRecorder>(dir_),
-                         {std::make_shared<const sim::BackgroundNoise>(
-                              std::vector<std::string>{"white", "room"}),
-                          sim::parse_ebr(ebr)});
+    return NoisyRecorder(
+        std::make_unique<ReplayRecorder>(dir_),
+        {std::make_shared<const sim::BackgroundNoise>(std::vector<std::string>{"white", "room"}),
+         sim::parse_ebr(ebr)});
   }
   audio::AudioClip hear(NoisyRecorder& r, const std::string& action) const {
     r.start(action);
@@ -100,9 +100,10 @@ TEST_F(NoisyFolder, TheNoiseIsAtTheRatioAskedOverTheRecordedEvent) {
 TEST_F(NoisyFolder, TheMeasuredRatioFollowsTheRatioMixedIn) {
   double last = 1e9;
   for (const char* ebr : {"24", "12", "0"}) {
-    NoisyRecorder r(std::make_unique<ReplayRecorder>(dir_),
-                    {std::make_shared<const sim::BackgroundNoise>(std::vector<std::string>{"white"}),
-                     sim::parse_ebr(ebr)});
+    NoisyRecorder r(
+        std::make_unique<ReplayRecorder>(dir_),
+        {std::make_shared<const sim::BackgroundNoise>(std::vector<std::string>{"white"}),
+         sim::parse_ebr(ebr)});
     r.begin_trial({0, "mug", 11});
     const double measured = audio::measured_ebr_db(hear(r, "strike"));
     EXPECT_NEAR(measured, std::stod(ebr), 4.0) << ebr;
