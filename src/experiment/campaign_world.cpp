@@ -96,8 +96,31 @@ bool any_trained_in_noise(const std::vector<ResolvedArm>& arms) {
 }
 
 // A noise section's sources read now (InputError naming a file that does not decode).
-robot::WorldNoise read_noise(const std::vector<std::string>& sources, const std::string& ebr_db) {
+robot::WorldNoise noise_sources(const std::vector<std::string>& sources,
+                                const std::string& ebr_db) {
   return {std::make_shared<const sim::BackgroundNoise>(sources), sim::parse_ebr(ebr_db)};
+}
+
+// Training on `recordings` as the campaign trains (training_set's classifier and table), the model
+// saved to `saved` for the user.
+loop::RecordingsTraining campaign_training(const CampaignConfig& config, const fs::path& recordings,
+                                           const fs::path& saved) {
+  loop::RecordingsTraining training{recordings.string(), {}, saved.string()};
+  if (!config.training.classifier.empty()) training.train.classifier = config.training.classifier;
+  if (!config.training.table.empty())
+    training.train.table = perception::parse_table_estimate(config.training.table);
+  // Every arm must hear the same symbols to be compared trial by trial: no reject option.
+  training.train.reject = false;
+  training.train.seed = loop::stream_seed(config.seed, loop::Stream::campaign_folds);
+  return training;
+}
+
+// The model an earlier run of the campaign trained and saved.
+std::shared_ptr<const perception::ObservationModel> saved_model(const fs::path& saved,
+                                                                const ProgressFn& progress,
+                                                                const std::atomic<bool>& stop) {
+  return loop::prepare_observation(loop::ModelFile{saved.string()}, nullptr, "", progress, stop)
+      .model;
 }
 
 // The ratios the classifier trained in noise hears by default: from louder than the lab's quiet
@@ -215,7 +238,7 @@ WorldPresentation ProblemFileWorld::presentation(const CampaignConfig& config) c
 void ProblemFileWorld::load_noise(const CampaignConfig& config,
                                   const std::vector<ResolvedArm>& arms) {
   const NoiseConfig& world = config.world.noise;
-  if (world.given()) world_noise_ = read_noise(world.sources, world.ebr_db);
+  if (world.given()) world_noise_ = noise_sources(world.sources, world.ebr_db);
   const NoiseConfig& training = config.training.noise;
   if (!any_trained_in_noise(arms)) {
     if (training.given())
@@ -234,7 +257,7 @@ void ProblemFileWorld::load_noise(const CampaignConfig& config,
                      "an arm trained_in_noise needs noise to train in: give world.noise or "
                      "training_set.noise");
   training_noise_ =
-      read_noise(sources, training.ebr_db.empty() ? std::string(kTrainingEbr) : training.ebr_db);
+      noise_sources(sources, training.ebr_db.empty() ? std::string(kTrainingEbr) : training.ebr_db);
 }
 
 void ProblemFileWorld::open(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
@@ -279,17 +302,10 @@ std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier
     const CampaignConfig& config, const ProgressFn& progress, const std::atomic<bool>& stop) const {
   if (given_model_) return given_model_;
   const fs::path saved = training_ / "model.json";
-  if (fs::exists(saved))
-    return loop::prepare_observation(loop::ModelFile{saved.string()}, nullptr, "", progress, stop)
-        .model;
-  loop::RecordingsTraining training{recordings_.string(), {}, saved.string()};
-  if (!config.training.classifier.empty()) training.train.classifier = config.training.classifier;
-  if (!config.training.table.empty())
-    training.train.table = perception::parse_table_estimate(config.training.table);
-  // Both arms must hear the same symbols to be compared trial by trial: no reject option.
-  training.train.reject = false;
-  training.train.seed = loop::stream_seed(config.seed, loop::Stream::campaign_folds);
-  return loop::prepare_observation(training, nullptr, "", progress, stop).model;
+  if (fs::exists(saved)) return saved_model(saved, progress, stop);
+  return loop::prepare_observation(campaign_training(config, recordings_, saved), nullptr, "",
+                                   progress, stop)
+      .model;
 }
 
 // The classifier an arm trained in noise hears with: DIR/training/model_in_noise.json of an
@@ -298,9 +314,7 @@ std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier
 std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier_in_noise(
     const CampaignConfig& config, const ProgressFn& progress, const std::atomic<bool>& stop) const {
   const fs::path saved = training_ / "model_in_noise.json";
-  if (fs::exists(saved))
-    return loop::prepare_observation(loop::ModelFile{saved.string()}, nullptr, "", progress, stop)
-        .model;
+  if (fs::exists(saved)) return saved_model(saved, progress, stop);
   const fs::path copy = training_ / "recordings_in_noise";
   const perception::RecordingSet quiet = perception::load_recording_set(recordings_.string());
   const loop::NoisyCopyOptions options{
@@ -308,13 +322,8 @@ std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier
   if (loop::write_noisy_copy(quiet, *training_noise_, copy, options, progress, stop) <
       quiet.recordings.size())
     return nullptr;
-  loop::RecordingsTraining training{copy.string(), {}, saved.string()};
-  if (!config.training.classifier.empty()) training.train.classifier = config.training.classifier;
-  if (!config.training.table.empty())
-    training.train.table = perception::parse_table_estimate(config.training.table);
-  training.train.reject = false;  // as the quiet classifier: the arms hear the same symbols
+  loop::RecordingsTraining training = campaign_training(config, copy, saved);
   training.train.cross_validation = perception::CrossValidation::by_session;
-  training.train.seed = loop::stream_seed(config.seed, loop::Stream::campaign_folds);
   return loop::prepare_observation(training, nullptr, "", progress, stop).model;
 }
 
