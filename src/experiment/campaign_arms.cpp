@@ -32,10 +32,13 @@ void check_words(const CampaignConfig& config, const CampaignArm& arm) {
              "unheard: only an arm that plans (strategy: plan) searches; '" + arm.strategy +
                  "' is a fixed strategy");
   }
-  if (arm.trained_in_noise && config.world.type != WorldType::simulated)
+  if (arm.trained_in_noise && config.world.type == WorldType::model)
     refuse(config, arm,
-           "trained_in_noise: the classifier trained in noise hears a simulated world's "
-           "recordings; a model world hears none, a dataset world fits its own");
+           "trained_in_noise: the classifier trained in noise hears recordings; a model world "
+           "hears none");
+  if (arm.trained_in_noise && !config.world.model.empty())
+    refuse(config, arm,
+           "trained_in_noise: the world's model is frozen (world.model); nothing is trained");
   if (arm.observation_kind() != perception::ObservationKind::graded) return;
   if (!config.world.recorded_data() && !arm.calibrate)
     refuse(config, arm,
@@ -73,9 +76,8 @@ ResolvedArm resolve_arm(const CampaignConfig& config, const CampaignArm& arm) {
   r.strategy = arm.strategy;
   r.problem = arm.problem;
   r.calibrate = arm.calibrate;
-  r.trained_in_noise = arm.trained_in_noise;
   r.line = arm.line;
-  r.plans_with = {arm.observation_kind(), arm.lookalike.value_or(false)};
+  r.plans_with = {arm.observation_kind(), arm.lookalike.value_or(false), arm.trained_in_noise};
   r.planner.solver = r.plans() ? config.planner.solver : arm.strategy;
   r.planner.episodes = config.planner.episodes;
   r.planner.step_ms = config.planner.step_ms;
@@ -123,7 +125,7 @@ CampaignArm as_written(const ResolvedArm& arm) {
   a.name = arm.name;
   a.problem = arm.problem;
   a.calibrate = arm.calibrate;
-  a.trained_in_noise = arm.trained_in_noise;
+  a.trained_in_noise = arm.trained_in_noise();
   a.strategy = arm.strategy;
   a.observations = perception::observation_kind_name(arm.plans_with.kind);
   // Written only when it plans with them (a `lookalike: false` reads as the file not naming it).
@@ -143,7 +145,7 @@ nlohmann::json to_json(const ResolvedArm& arm, bool recorded_data) {
   nlohmann::json j = {{"name", arm.name}, {"strategy", arm.strategy}};
   if (!arm.problem.empty()) j["problem"] = arm.problem;
   if (arm.calibrate) j["calibrate"] = true;
-  if (arm.trained_in_noise) j["trained_in_noise"] = true;
+  if (arm.trained_in_noise()) j["trained_in_noise"] = true;
   j["solver"] = arm.planner.solver;
   if (arm.planner.episodes > 0) j["episodes"] = arm.planner.episodes;
   if (arm.planner.step_ms > 0) j["step_ms"] = arm.planner.step_ms;
@@ -162,9 +164,9 @@ nlohmann::json to_json(const ResolvedArm& arm, bool recorded_data) {
 }
 
 std::string fold_problem_name(const ArmProblemKind& kind) {
-  return fmt::format("problem{}{}.yaml",
+  return fmt::format("problem{}{}{}.yaml",
                      kind.kind == perception::ObservationKind::graded ? "-graded" : "",
-                     kind.lookalike ? "-lookalike" : "");
+                     kind.lookalike ? "-lookalike" : "", kind.in_noise ? "-in-noise" : "");
 }
 
 }  // namespace echoplan::experiment

@@ -26,10 +26,12 @@
 namespace echoplan::experiment {
 
 // What an arm's problem depends on besides the world (a dataset world: besides the fold): what it
-// hears and whether it plans with objects that sound like another class (lookalikes).
+// hears, whether it plans with objects that sound like another class (lookalikes) and whether its
+// classifier was trained in noise too (its table is that classifier's).
 struct ArmProblemKind {
   perception::ObservationKind kind = perception::ObservationKind::labels;
   bool lookalike = false;
+  bool in_noise = false;
   friend auto operator<=>(const ArmProblemKind&, const ArmProblemKind&) = default;
 };
 
@@ -38,7 +40,6 @@ struct ResolvedArm {
   std::string strategy = kPlanStrategy;  // kPlanStrategy or a fixed strategy's solver name
   std::string problem;                   // a problem-file world's arm problem; empty: the data's
   bool calibrate = false;                // plans with the trained classifier's table
-  bool trained_in_noise = false;         // hears with the classifier trained in noise too
   ArmProblemKind plans_with;             // hearing and copies of its problem (defaults applied)
   // What its planner runs: the campaign's solver (or the fixed strategy) and budget, the leaf, the
   // unheard estimate as defaulted, or as self-play chose it once the campaign is prepared.
@@ -48,6 +49,8 @@ struct ResolvedArm {
 
   bool plans() const { return strategy == kPlanStrategy; }
   perception::ObservationKind hearing() const { return plans_with.kind; }
+  // Hears with the classifier trained in noise too (training_set.noise), not the quiet one.
+  bool trained_in_noise() const { return plans_with.in_noise; }
 };
 
 // Every arm of `config` resolved, in the file's order. Throws InputError(config.source, line,

@@ -77,9 +77,7 @@ const std::vector<Field<CampaignArm>>& arm_fields() {
       // Left out of the identity at its default: campaigns written before it existed.
       {.key = "trained_in_noise",
        .member = &CampaignArm::trained_in_noise,
-       .identity = Identity::unless_default,
-       .worlds = Worlds::problem_files,
-       .elsewhere = kFitsPerFold},
+       .identity = Identity::unless_default},
       // Left out of the identity for the planner: campaigns written before strategies existed.
       {.key = "strategy",
        .member = &CampaignArm::strategy,
@@ -407,10 +405,14 @@ WorldConfig read_world(const YamlReader& f, const YAML::Node& root, const std::s
   config_fields::read_yaml(f, world, world_fields(), {source, "world", w.recorded_data()}, w,
                            {"type", "noise"});
   if (const YAML::Node n = f.optional(world, "noise", "world")) {
-    if (w.type != WorldType::simulated)
+    if (w.type == WorldType::model)
       f.fail(n,
-             "noise: a simulated world's recordings are heard through it (recorded data: write a "
-             "noisy copy with `echoplan add-noise` and replay that)");
+             "noise: a model world hears no recordings (a simulated world or a dataset world "
+             "over a recordings tree does)");
+    if (!w.model.empty())
+      f.fail(n,
+             "noise: a dataset world with a frozen model (world.model) replays its data as it is; "
+             "write a noisy copy with `echoplan add-noise` and give that as world.data");
     w.noise = read_noise(f, n, {source, "world.noise", false});
     if (w.noise.ebr_db.empty()) f.fail(n, "world.noise needs ebr_db: the ratio of each recording");
   }
@@ -443,7 +445,6 @@ TrainingSetConfig read_training_set(const YamlReader& f, const YAML::Node& t,
   TrainingSetConfig training;
   config_fields::read_yaml(f, t, training_fields(), at, training, {"noise"});
   if (const YAML::Node n = f.optional(t, "noise", "training_set")) {
-    if (at.recorded_data) f.fail(n, std::string("noise: ") + kFitsPerFold);
     training.noise = read_noise(f, n, {at.source, "training_set.noise", false});
   }
   // Keys that say how this campaign trains mean nothing next to a trained model: an error, not

@@ -127,8 +127,9 @@ struct WorldConfig {
   // A frozen observation model file (`echoplan train --out`): no folds, every session replayed
   // with it (a model trained one day, judged on data recorded another). Empty: fit per fold.
   std::string model;
-  // A simulated world's background noise: every recording of every trial heard through it, the
-  // same noise on every arm (none: the lab's quiet).
+  // The background noise every recording of every trial is heard through, the same on every arm
+  // (none: as recorded, or the simulated lab's quiet): a simulated world's, or a dataset world's
+  // over a recordings tree (a noisy copy of the tree, each recording's noise its own).
   NoiseConfig noise;
   // The world replays recorded data (world_kind(type).recorded_data).
   bool recorded_data() const;

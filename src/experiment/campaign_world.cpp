@@ -6,12 +6,12 @@
 #include <algorithm>
 
 #include "common/error.h"
+#include "experiment/campaign_noise.h"
 #include "experiment/dataset_campaign.h"
 #include "experiment/report_inputs.h"
 #include "experiment/unheard_choice.h"
 #include "loop/calibrated_problem.h"
 #include "loop/loop.h"
-#include "loop/noisy_copy.h"
 #include "loop/object_problem.h"
 #include "loop/prepare_observation.h"
 #include "loop/streams.h"
@@ -27,6 +27,15 @@ namespace {
 // The file's name without its folder and extension, for the page's title.
 std::string title_of(const CampaignConfig& config) {
   return "echoplan campaign: " + fs::path(config.source).stem().string();
+}
+
+// The page's sentence on the noise every recording is heard through ("" for none).
+std::string heard_through(const NoiseConfig& noise) {
+  if (!noise.given()) return "";
+  return fmt::format(
+      " Every recording is heard through background noise ({}) at {} dB event-to-background "
+      "ratio, the same noise on every arm.",
+      fmt::join(noise.sources, ", "), noise.ebr_db);
 }
 
 // Problem files decide the objects, actions and rewards; the world is the world problem's table
@@ -53,7 +62,6 @@ class ProblemFileWorld final : public CampaignWorld {
                         InputFiles& files);
   WorldPresentation presentation(const CampaignConfig& config) const;
   loop::SimulatedTraining simulated_training(const CampaignConfig& config) const;
-  void load_noise(const CampaignConfig& config, const std::vector<ResolvedArm>& arms);
   std::shared_ptr<const perception::ObservationModel> classifier(
       const CampaignConfig& config, const ProgressFn& progress,
       const std::atomic<bool>& stop) const;
@@ -68,7 +76,7 @@ class ProblemFileWorld final : public CampaignWorld {
     std::shared_ptr<const perception::ObservationModel> model;
     std::shared_ptr<const perception::ObservationModel> model_in_noise;
     const std::shared_ptr<const perception::ObservationModel>& of(const ResolvedArm& arm) const {
-      return arm.trained_in_noise ? model_in_noise : model;
+      return arm.trained_in_noise() ? model_in_noise : model;
     }
   };
   ArmLoops make_loops(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
@@ -86,20 +94,8 @@ class ProblemFileWorld final : public CampaignWorld {
   std::shared_ptr<const sim::Catalogue> catalogue_;
   std::shared_ptr<const sim::SimConfig> sim_config_;
   std::shared_ptr<const perception::ObservationModel> given_model_;  // training_set.model
-  std::optional<robot::WorldNoise> world_noise_;     // world.noise: what the trials hear
-  std::optional<robot::WorldNoise> training_noise_;  // what an arm trained in noise learns from
+  CampaignNoise noise_;
 };
-
-bool any_trained_in_noise(const std::vector<ResolvedArm>& arms) {
-  return std::any_of(arms.begin(), arms.end(),
-                     [](const ResolvedArm& a) { return a.trained_in_noise; });
-}
-
-// A noise section's sources read now (InputError naming a file that does not decode).
-robot::WorldNoise noise_sources(const std::vector<std::string>& sources,
-                                const std::string& ebr_db) {
-  return {std::make_shared<const sim::BackgroundNoise>(sources), sim::parse_ebr(ebr_db)};
-}
 
 // Training on `recordings` as the campaign trains (training_set's classifier and table), the model
 // saved to `saved` for the user.
@@ -122,10 +118,6 @@ std::shared_ptr<const perception::ObservationModel> saved_model(const fs::path& 
   return loop::prepare_observation(loop::ModelFile{saved.string()}, nullptr, "", progress, stop)
       .model;
 }
-
-// The ratios the classifier trained in noise hears by default: from louder than the lab's quiet
-// events to noise above them, so that no one level of the trials is the only one it knows.
-constexpr const char* kTrainingEbr = "-6:24";
 
 bool ProblemFileWorld::needs_classifier(const std::vector<ResolvedArm>& arms) const {
   return simulates_ ||
@@ -217,11 +209,7 @@ WorldPresentation ProblemFileWorld::presentation(const CampaignConfig& config) c
         "classifier trained on the synthesised training set reports what it heard. If simulated "
         "objects are easier to tell apart than the lab's real ones, the numbers here are better "
         "than the report's for that reason, not because of the planner." +
-        (config.world.noise.given()
-             ? fmt::format(" Every recording is heard through background noise ({}) at {} dB "
-                           "event-to-background ratio, the same noise on every arm.",
-                           fmt::join(config.world.noise.sources, ", "), config.world.noise.ebr_db)
-             : std::string());
+        heard_through(config.world.noise);
   else
     p.note = fmt::format(
         "The world here is a problem file's own observation table ({}): "
@@ -233,33 +221,6 @@ WorldPresentation ProblemFileWorld::presentation(const CampaignConfig& config) c
   return p;
 }
 
-// The trials' noise (world.noise) and, for an arm trained in noise, its training noise
-// (training_set.noise, its sources by default the world's).
-void ProblemFileWorld::load_noise(const CampaignConfig& config,
-                                  const std::vector<ResolvedArm>& arms) {
-  const NoiseConfig& world = config.world.noise;
-  if (world.given()) world_noise_ = noise_sources(world.sources, world.ebr_db);
-  const NoiseConfig& training = config.training.noise;
-  if (!any_trained_in_noise(arms)) {
-    if (training.given())
-      throw InputError(config.source, 0,
-                       "training_set.noise is what an arm `trained_in_noise` learns from, and no "
-                       "arm is");
-    return;
-  }
-  if (!config.training.model.empty())
-    throw InputError(config.source, 0,
-                     "an arm trained_in_noise is trained on the training set; training_set.model "
-                     "gives one trained model instead: remove one of them");
-  const std::vector<std::string>& sources = training.given() ? training.sources : world.sources;
-  if (sources.empty())
-    throw InputError(config.source, 0,
-                     "an arm trained_in_noise needs noise to train in: give world.noise or "
-                     "training_set.noise");
-  training_noise_ =
-      noise_sources(sources, training.ebr_db.empty() ? std::string(kTrainingEbr) : training.ebr_db);
-}
-
 void ProblemFileWorld::open(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
                             CampaignResults& results, InputFiles& files) {
   recordings_ = config.training.recordings.empty() ? training_ / "recordings"
@@ -267,7 +228,7 @@ void ProblemFileWorld::open(const CampaignConfig& config, const std::vector<Reso
   load_problems(config, arms, results, files);
   load_simulator(config, files);
   check_objects(config, results.spec);
-  load_noise(config, arms);
+  noise_ = load_campaign_noise(config, arms);
   results.world = presentation(config);
   results.groups = config.groups;
   if (!config.training.recordings.empty() && !fs::is_directory(config.training.recordings))
@@ -316,11 +277,8 @@ std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier
   const fs::path saved = training_ / "model_in_noise.json";
   if (fs::exists(saved)) return saved_model(saved, progress, stop);
   const fs::path copy = training_ / "recordings_in_noise";
-  const perception::RecordingSet quiet = perception::load_recording_set(recordings_.string());
-  const loop::NoisyCopyOptions options{
-      .seed = loop::stream_seed(config.seed, loop::Stream::campaign_noise), .keep_quiet = true};
-  if (loop::write_noisy_copy(quiet, *training_noise_, copy, options, progress, stop) <
-      quiet.recordings.size())
+  if (!write_campaign_copy(config, recordings_, *noise_.training, copy,
+                           loop::Stream::campaign_noise, /*keep_quiet=*/true, progress, stop))
     return nullptr;
   loop::RecordingsTraining training = campaign_training(config, copy, saved);
   training.train.cross_validation = perception::CrossValidation::by_session;
@@ -410,7 +368,7 @@ ArmLoops ProblemFileWorld::make_loops(const CampaignConfig& config,
       if (simulates_) {
         s.world = loop::SimulatedWorldSpec{catalogue_, sim_config_};
         s.observation_model = prepared.of(arms[a]);
-        s.noise = world_noise_;
+        s.noise = noise_.world;
         if (group.object != group.plays) s.world_objects[group.plays] = group.object;
       }
       s.planner = arms[a].planner;
@@ -468,7 +426,9 @@ class RecordedDataWorld final : public CampaignWorld {
                                   const ProgressFn& progress, const std::atomic<bool>& stop,
                                   int workers) const override {
     DatasetFolds fitted = *trials_;  // the data and folds shared; the models are this run's
-    if (!fit_dataset_folds(fitted, config, progress, stop)) return std::nullopt;
+    if (!hear_dataset_in_noise(fitted, config, noise_, directory_, progress, stop) ||
+        !fit_dataset_folds(fitted, config, progress, stop))
+      return std::nullopt;
     const FoldProblems problems = fold_problems(config, arms, fitted);
     write_fold_problems(directory_, config, problems);
     if (!choose_dataset_unheard(directory_, config, arms, problems, progress, stop, workers))
@@ -479,11 +439,13 @@ class RecordedDataWorld final : public CampaignWorld {
  private:
   fs::path directory_;  // the campaign's folder: each fold's problem goes to folds/<fold>/
   std::shared_ptr<const DatasetFolds> trials_;
+  CampaignNoise noise_;
 };
 
 void RecordedDataWorld::open(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
                              CampaignResults& results, InputFiles& files) {
   trials_ = std::make_shared<DatasetFolds>(open_dataset(config, arms, files));
+  noise_ = load_campaign_noise(config, arms);
   results.groups = dataset_groups(*trials_);
   // Every arm against the names problem now, not in a worker.
   for (const ResolvedArm& arm : arms) check_arm_problem(config, arm, *trials_->names);
@@ -501,7 +463,8 @@ void RecordedDataWorld::open(const CampaignConfig& config, const std::vector<Res
   results.world.note = config.world.model.empty()
                            ? "The world here is recorded data replayed: each trial is one "
                              "session of one object, heard by the model fitted on the folds "
-                             "that do not hold it."
+                             "that do not hold it." +
+                                 heard_through(config.world.noise)
                            : "The world here is recorded data replayed: each trial is one "
                              "session of one object, heard by a frozen model trained beforehand.";
   results.world.arm_problem =

@@ -9,6 +9,7 @@
 
 #include "common/error.h"
 #include "common/file_io.h"
+#include "experiment/campaign_noise.h"
 #include "experiment/unheard_choice.h"
 #include "loop/dataset_problem.h"
 #include "loop/dataset_world.h"
@@ -84,12 +85,57 @@ void open_frozen_model(DatasetFolds& t, const std::string& path, InputFiles& fil
   t.models = {std::move(model)};
 }
 
+// The data's sessions by object and name.
+std::map<std::pair<int, std::string>, int> session_index(const perception::FeatureSet& data) {
+  std::map<std::pair<int, std::string>, int> index;
+  for (std::size_t s = 0; s < data.sessions.size(); ++s)
+    index[{data.sessions[s].object, data.sessions[s].name}] = static_cast<int>(s);
+  return index;
+}
+
+// A noisy copy replays in place of the data: the same objects, sessions and rows, in order.
+void check_same_rows(const perception::FeatureSet& data, const perception::FeatureSet& copy) {
+  bool same = copy.objects == data.objects && copy.sessions.size() == data.sessions.size() &&
+              copy.actions.size() == data.actions.size();
+  for (std::size_t s = 0; same && s < data.sessions.size(); ++s)
+    same = copy.sessions[s].object == data.sessions[s].object &&
+           copy.sessions[s].name == data.sessions[s].name;
+  for (std::size_t a = 0; same && a < data.actions.size(); ++a) {
+    const auto &x = data.actions[a], &y = copy.actions[a];
+    same = x.name == y.name && x.rows.size() == y.rows.size();
+    for (std::size_t r = 0; same && r < x.rows.size(); ++r)
+      same = x.rows[r].object == y.rows[r].object && x.rows[r].session == y.rows[r].session;
+  }
+  if (!same) throw std::logic_error("a noisy copy of the data does not list the data's rows");
+}
+
+// The noisy copy of the world's recordings tree in `copy`, analysed. Null when stopped.
+std::shared_ptr<const perception::FeatureSet> analysed_copy(const CampaignConfig& config,
+                                                            const robot::WorldNoise& noise,
+                                                            const std::filesystem::path& copy,
+                                                            loop::Stream stream, bool keep_quiet,
+                                                            const ProgressFn& progress,
+                                                            const std::atomic<bool>& stop) {
+  if (!write_campaign_copy(config, config.world.data, noise, copy, stream, keep_quiet, progress,
+                           stop))
+    return nullptr;
+  return std::make_shared<const perception::FeatureSet>(perception::feature_set_from_recordings(
+      perception::load_recording_set(copy.string()), {}, progress));
+}
+
 }  // namespace
 
 DatasetFolds open_dataset(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
                           InputFiles& files, const ProgressFn& progress) {
   DatasetFolds t;
+  if ((config.world.noise.given() || any_trained_in_noise(arms)) &&
+      perception::data_kind(config.world.data) != perception::DataKind::recordings)
+    throw InputError(config.source, 0,
+                     fmt::format("background noise is mixed into recordings, and world.data ({}) "
+                                 "is a feature set: give a recordings tree, or no noise",
+                                 config.world.data));
   t.data = files.data(config.world.data, progress);
+  t.heard = t.data;
   std::optional<perception::ObjectGroups> groups;
   if (!config.world.groups.empty())
     groups = perception::parse_groups(files.text(config.world.groups), config.world.groups);
@@ -147,12 +193,36 @@ std::vector<std::vector<double>> right_shares(const DatasetFolds& trials,
   return shares;
 }
 
+bool hear_dataset_in_noise(DatasetFolds& trials, const CampaignConfig& config,
+                           const CampaignNoise& noise, const std::filesystem::path& directory,
+                           const ProgressFn& progress, const std::atomic<bool>& stop) {
+  if (noise.world) {
+    auto heard = analysed_copy(config, *noise.world, directory / "heard_recordings",
+                               loop::Stream::campaign_heard, false, progress, stop);
+    if (!heard) return false;
+    check_same_rows(*trials.data, *heard);
+    trials.heard = std::move(heard);
+  }
+  if (noise.training) {
+    auto twins =
+        analysed_copy(config, *noise.training, directory / "training" / "recordings_in_noise",
+                      loop::Stream::campaign_noise, true, progress, stop);
+    if (!twins) return false;
+    if (twins->objects != trials.data->objects)
+      throw std::logic_error("the noisy twins of the data do not list the data's objects");
+    trials.twins = std::move(twins);
+  }
+  return true;
+}
+
 bool fit_dataset_folds(DatasetFolds& trials, const CampaignConfig& config,
                        const ProgressFn& progress, const std::atomic<bool>& stop) {
   if (!config.world.model.empty()) return true;  // frozen: open_dataset loaded it
   perception::FitOptions options = perception::session_fit_options();
   if (!config.training.classifier.empty()) options.classifier = config.training.classifier;
   trials.models.clear();
+  trials.models_in_noise.clear();
+  const auto index = session_index(*trials.data);
   const int folds = static_cast<int>(trials.folds.size());
   for (int f = 0; f < folds; ++f) {
     if (stop.load()) return false;
@@ -162,6 +232,16 @@ bool fit_dataset_folds(DatasetFolds& trials, const CampaignConfig& config,
       if (trials.fold_of_session[s] != f) training.push_back(static_cast<int>(s));
     trials.models.push_back(std::make_shared<const perception::ObservationModel>(
         perception::fit_observation_model(*trials.data, trials.task, training, options)));
+    if (!trials.twins) continue;
+    // A twin's session is its quiet recording's: the fold's held-out sessions stay unheard.
+    std::vector<int> twins;
+    for (std::size_t s = 0; s < trials.twins->sessions.size(); ++s) {
+      const perception::Session& session = trials.twins->sessions[s];
+      if (trials.fold_of_session.at(index.at({session.object, session.name})) != f)
+        twins.push_back(static_cast<int>(s));
+    }
+    trials.models_in_noise.push_back(std::make_shared<const perception::ObservationModel>(
+        perception::fit_observation_model(*trials.twins, trials.task, twins, options)));
   }
   if (progress) progress("fit folds", folds, folds);
   return true;
@@ -175,7 +255,7 @@ pomdp::ObjectProblemData fold_problem(const CampaignConfig& config,
                                       const std::vector<ResolvedArm>& arms,
                                       const DatasetFolds& trials, int fold,
                                       const std::vector<int>& uses, const ArmProblemKind& kind) {
-  const perception::ObservationModel& model = *trials.models.at(fold);
+  const perception::ObservationModel& model = *trials.model(fold, kind.in_noise);
   std::optional<double> lookalike_share;
   if (any_lookalike(arms))
     lookalike_share = kind.lookalike ? model.lookalike_share(kind.kind) : 0.0;
@@ -255,7 +335,8 @@ ArmLoops dataset_loops(const CampaignConfig& config, const std::vector<ResolvedA
         const int fold = trials.fold_of_session.at(session);
         loop::LoopSettings s;
         s.problem = problem_for(fold, loop::session_uses(names, *trials.data, session), arms[a]);
-        s.world = loop::DatasetWorldSpec{trials.data, trials.models.at(fold), session};
+        s.world = loop::DatasetWorldSpec{trials.heard,
+                                         trials.model(fold, arms[a].trained_in_noise()), session};
         s.planner = arms[a].planner;
         s.max_steps = config.planner.max_steps;
         group.push_back({std::make_shared<const loop::LoopSpec>(std::move(s)),

@@ -19,6 +19,7 @@
 #include "common/progress.h"
 #include "experiment/campaign_arms.h"
 #include "experiment/campaign_config.h"
+#include "experiment/campaign_noise.h"
 #include "experiment/campaign_runner.h"
 #include "experiment/input_files.h"
 #include "perception/dataset_folds.h"
@@ -37,14 +38,26 @@ struct DatasetFolds {
   std::vector<int> fold_of_session;  // [session] -> fold
   // The fitted model of each fold (empty until fit_dataset_folds()).
   std::vector<std::shared_ptr<const perception::ObservationModel>> models;
+  // What the trials hear: `data`, or with world.noise its noisy copy (the same sessions and rows,
+  // once hear_dataset_in_noise() made it).
+  std::shared_ptr<const perception::FeatureSet> heard;
+  // With an arm trained in noise: the data with a noisy twin of each performance in its session
+  // (hear_dataset_in_noise()), and each fold's model fitted on the twins of its training sessions.
+  std::shared_ptr<const perception::FeatureSet> twins;
+  std::vector<std::shared_ptr<const perception::ObservationModel>> models_in_noise;
+
+  // The model that an arm trained in noise or not hears fold `fold` with.
+  const std::shared_ptr<const perception::ObservationModel>& model(int fold, bool in_noise) const {
+    return in_noise ? models_in_noise.at(fold) : models.at(fold);
+  }
   // Names only (objects, actions, symbols): what the report needs before any fit.
   std::shared_ptr<const pomdp::Problem> names;
 };
 
 // Loads (through `files`, each input read once) and checks the world's data, groups and frozen
-// model (InputError naming the file and line) and deals the folds; the names problem has the
-// copies of a class some arm plans with. A recordings tree's audio is analysed now (`progress`
-// hears "analyse").
+// model (InputError naming the file and line; a feature set with noise to hear) and deals the
+// folds; the names problem has the copies of a class some arm plans with. A recordings tree's
+// audio is analysed now (`progress` hears "analyse").
 DatasetFolds open_dataset(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
                           InputFiles& files, const ProgressFn& progress = {});
 
@@ -61,7 +74,16 @@ std::vector<int> right_actions(const DatasetFolds& trials);
 std::vector<std::vector<double>> right_shares(const DatasetFolds& trials,
                                               const loop::TaskRewards& rewards);
 
-// Fits every fold's model (`progress` hears "fit folds"). Returns false when stopped.
+// With world.noise or an arm trained in noise: writes the noisy copies of the world's recordings
+// tree into `directory` (the trials' in heard_recordings/, the training twins in
+// training/recordings_in_noise/) and analyses them into `trials.heard` and `trials.twins`.
+// (open_dataset refused a feature set: noise is mixed into recordings). False when stopped.
+bool hear_dataset_in_noise(DatasetFolds& trials, const CampaignConfig& config,
+                           const CampaignNoise& noise, const std::filesystem::path& directory,
+                           const ProgressFn& progress, const std::atomic<bool>& stop);
+
+// Fits every fold's model, and with the twins its model trained in noise (`progress` hears "fit
+// folds"). Returns false when stopped.
 bool fit_dataset_folds(DatasetFolds& trials, const CampaignConfig& config,
                        const ProgressFn& progress, const std::atomic<bool>& stop);
 

@@ -16,6 +16,7 @@ enum class Stream : std::uint64_t {
   campaign_variants = 0x7661726961,  // "varia": recordings of a campaign's variants, for its page
   campaign_unheard = 0x756e686561,   // "unhea": a dataset arm's self-play choosing `unheard: auto`
   campaign_noise = 0x6e6f697365,  // "noise": the noisy copy an arm `trained_in_noise` learns from
+  campaign_heard = 0x6865617264,  // "heard": the noisy copy a dataset world's trials hear
 };
 
 inline std::uint64_t stream_seed(std::uint64_t seed, Stream stream) {

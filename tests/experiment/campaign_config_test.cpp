@@ -74,8 +74,8 @@ TEST(CampaignConfig, ShippedNoiseCampaignTrainsOnSpeechItsTrialsNeverPlay) {
   EXPECT_EQ(c.world.noise.ebr_db, "0");
   const std::vector<ResolvedArm> arms = resolve_arms(c);
   ASSERT_EQ(arms.size(), 2u);
-  EXPECT_FALSE(arms[0].trained_in_noise);
-  EXPECT_TRUE(arms[1].trained_in_noise);
+  EXPECT_FALSE(arms[0].trained_in_noise());
+  EXPECT_TRUE(arms[1].trained_in_noise());
   for (const std::string& heard : c.world.noise.sources)
     for (const std::string& trained : c.training.noise.sources)
       if (heard != "room") {
