@@ -227,7 +227,9 @@ TEST(CampaignConfig, NoiseMistakesNameTheLine) {
   const auto world = [&](const std::string& type, const std::string& noise) {
     return error_of(head + type + "\n  problem: w.yaml\n  noise: " + noise + tail);
   };
-  EXPECT_EQ(world("model", "{sources: [room], ebr_db: 0}").substr(0, 20), "6: noise: a simulate");
+  EXPECT_EQ(world("model", "{sources: [room], ebr_db: 0}"),
+            "6: noise: a model world hears no recordings (a simulated world or a dataset world "
+            "over a recordings tree does)");
   EXPECT_EQ(world("simulated", "{sources: [room], ebr_db: 70}"),
             "6: world.noise: EBR '70': give a number of dB in [-60, 60], or LO:HI");
   EXPECT_EQ(world("simulated", "{sources: [room]}"),
@@ -236,9 +238,55 @@ TEST(CampaignConfig, NoiseMistakesNameTheLine) {
             "6: world.noise: source '/dir/nowhere.wav' is neither built-in (white, room, motor) "
             "nor a file or folder");
   EXPECT_NE(world("simulated", "{ebr_db: 0}").find("sources"), std::string::npos);
-  // An arm trained in noise hears a simulated world; a model world hears nothing.
+  // An arm trained in noise hears recordings; a model world hears none.
   EXPECT_NE(arm_error_of(with_arm("{name: a, problem: p.yaml, trained_in_noise: true}"))
-                .find("trained_in_noise: the classifier trained in noise hears a simulated"),
+                .find("trained_in_noise: the classifier trained in noise hears recordings; a "
+                      "model world hears none"),
+            std::string::npos);
+}
+
+// A dataset world hears its recordings through noise, and an arm may be trained in noise on each
+// fold; with a frozen model nothing is trained and the data is replayed as it is.
+TEST_F(CampaignNoiseConfig, ADatasetWorldTakesNoiseAndArmsTrainedInIt) {
+  std::filesystem::create_directories(dir_ / "recordings");
+  std::filesystem::create_directories(dir_ / "speech");
+  std::ofstream(dir_ / "m.json") << "{}";
+  const std::string source = (dir_ / "c.yaml").string();
+  const auto error = [&](const std::string& text) {
+    try {
+      resolve_arms(parse_campaign_config(text, source));
+    } catch (const InputError& e) {
+      return std::to_string(e.line()) + ": " + e.problem();
+    }
+    return std::string("no error");
+  };
+  const std::string world = "world:\n  type: dataset\n  data: recordings\n";
+  const std::string noise = "  noise: {sources: [room, speech], ebr_db: \"0\"}\n";
+  const std::string task = "task: {rewards: {right: 10, wrong: -100, sense: -1}}\n";
+  const std::string arms =
+      "arms:\n  - {name: quiet, strategy: plan}\n  - {name: in_noise, strategy: plan, "
+      "trained_in_noise: true}\nplanner: {episodes: 100}\n";
+  const std::string training = "training_set: {noise: {sources: [white], ebr_db: \"-6:24\"}}\n";
+  const CampaignConfig c = parse_campaign_config(world + noise + training + task + arms, source);
+  EXPECT_EQ(c.world.noise.sources, (std::vector<std::string>{"room", (dir_ / "speech").string()}));
+  EXPECT_EQ(c.training.noise.sources, std::vector<std::string>{"white"});
+  const std::vector<ResolvedArm> resolved = resolve_arms(c);
+  EXPECT_FALSE(resolved[0].trained_in_noise());
+  EXPECT_TRUE(resolved[1].trained_in_noise());
+  // Its fold problems are the noise-trained classifier's, in a file of their own.
+  EXPECT_EQ(fold_problem_name(resolved[0].plans_with), "problem.yaml");
+  EXPECT_EQ(fold_problem_name(resolved[1].plans_with), "problem-in-noise.yaml");
+  const CampaignConfig back = campaign_config_from_json(to_json(c), "campaign.json");
+  EXPECT_EQ(back.world.noise.sources, c.world.noise.sources);
+  EXPECT_EQ(back.training.noise.ebr_db, "-6:24");
+
+  const std::string frozen = world + "  model: m.json\n";
+  EXPECT_EQ(error(frozen + noise + task + arms),
+            "5: noise: a dataset world with a frozen model (world.model) replays its data as it "
+            "is; write a noisy copy with `echoplan add-noise` and give that as world.data");
+  EXPECT_NE(error(frozen + task + arms)
+                .find("trained_in_noise: the world's model is frozen (world.model); nothing is "
+                      "trained"),
             std::string::npos);
 }
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <map>
@@ -381,6 +382,70 @@ std::string open_error(const CampaignConfig& config, const fs::path& dir) {
     return e.what();
   }
   return "no error";
+}
+
+// The rows of a manifest.csv after its header.
+std::vector<std::string> manifest_rows(const fs::path& file) {
+  std::istringstream text(read_text_file(file.string(), "manifest"));
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(text, line);) rows.push_back(line);
+  rows.erase(rows.begin());
+  return rows;
+}
+
+// A dataset world over recordings heard through noise: every arm's trials hear one noisy copy of
+// the tree (each recording at the world's ratio), the arm trained in noise fits each fold on the
+// recordings and their noisy twins, each twin in its quiet recording's session, and plans with a
+// table of its own.
+TEST(Campaign, ADatasetWorldOverRecordingsIsHeardThroughItsNoise) {
+  const fs::path data = recorded_sessions("dataset_noise");
+  const fs::path dir = data.parent_path() / "campaign";
+  const CampaignConfig config =
+      parse_campaign_config("seed: 2\nworld: {type: dataset, data: " + data.string() +
+                                ", hold_out: session, noise: {sources: [white], ebr_db: \"0\"}}\n"
+                                "training_set: {noise: {sources: [room], ebr_db: \"-6:6\"}}\n"
+                                "arms:\n  - {name: quiet, strategy: plan}\n"
+                                "  - {name: in_noise, strategy: plan, trained_in_noise: true}\n"
+                                "planner: {solver: abt, episodes: 200, max_steps: 20}\n",
+                            (data.parent_path() / "campaign.yaml").string());
+  run(config, dir, 1);
+  std::vector<std::string> quiet = manifest_rows(data / "manifest.csv");
+  std::sort(quiet.begin(), quiet.end());
+  std::vector<std::string> heard = manifest_rows(dir / "heard_recordings" / "manifest.csv");
+  std::sort(heard.begin(), heard.end());
+  ASSERT_EQ(heard.size(), quiet.size());
+  for (std::size_t r = 0; r < quiet.size(); ++r) EXPECT_EQ(heard[r], quiet[r] + ",0,white");
+  const std::vector<std::string> twins =
+      manifest_rows(dir / "training" / "recordings_in_noise" / "manifest.csv");
+  ASSERT_EQ(twins.size(), 2 * quiet.size());
+  EXPECT_NE(std::find(quiet.begin(), quiet.end(), twins[0].substr(0, twins[0].rfind(",,none"))),
+            quiet.end());
+  EXPECT_TRUE(twins[0].ends_with(",,none")) << twins[0];
+  std::string twin = twins[0].substr(0, twins[0].size() - std::string(",,none").size());
+  twin.replace(twin.find(".wav"), 4, ".noisy.wav");
+  EXPECT_EQ(twins[1].substr(0, twin.size() + 1), twin + ",");  // the same object, action, session
+  EXPECT_TRUE(twins[1].ends_with(",room")) << twins[1];
+  for (int fold = 1; fold <= 3; ++fold) {
+    const fs::path folder = dir / "folds" / std::to_string(fold);
+    ASSERT_TRUE(fs::exists(folder / "problem-in-noise.yaml"));
+    EXPECT_NE(read_text_file((folder / "problem.yaml").string(), "problem"),
+              read_text_file((folder / "problem-in-noise.yaml").string(), "problem"));
+  }
+  EXPECT_EQ(lines_of(dir / "trials.csv"), 1 + 2 * 9);
+
+  // A feature set's features are computed already: no noise can be mixed into them.
+  const std::string features =
+      echoplan::testing::source_dir() + "/experiments/data/synthetic_objects";
+  const CampaignConfig on_features = parse_campaign_config(
+      "world: {type: dataset, data: " + features +
+          ", noise: {sources: [white], ebr_db: \"0\"}}\narms:\n  - {name: plan, strategy: plan}\n"
+          "planner: {episodes: 100}\n",
+      (data.parent_path() / "features.yaml").string());
+  EXPECT_NE(open_error(on_features, data.parent_path() / "on_features")
+                .find("background noise is mixed into recordings, and world.data (" + features +
+                      ") is a feature set"),
+            std::string::npos)
+      << open_error(on_features, data.parent_path() / "on_features");
 }
 
 TEST(Campaign, RefusesBadInputBeforeAnyWork) {
