@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""Background noise on real recorded strikes (docs/BENCHMARKS.md, "Background noise"; issue 52).
+
+Each Hydrogen drum kit that Debian ships (package hydrogen-drumkits, read where it installs them,
+never copied into the repository) with at least 3 instruments of at least MIN_LAYERS velocity
+layers is a task: each instrument an object, each velocity layer a session of one strike. A dataset
+campaign replays every held-out session heard through real speech (Debian's asterisk prompts, the
+digits) over room noise at each event-to-background ratio in turn, with two paired arms: the folds'
+classifier trained on the quiet strikes, and the one trained on them and their noisy twins (other
+words of the speaker, white noise, -6:24 dB). Prints, per ratio, each arm's share sorted right, its
+belief at the sort and the paired difference.
+
+Usage: bench/noise_real_strikes.py ECHOPLAN [--levels quiet,12,6,0] [--kits NAME,...] [--episodes N]
+Needs: apt-get install hydrogen-drumkits asterisk-core-sounds-en-wav.
+"""
+import argparse
+import json
+import shutil
+import os
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from perception_accuracy import KITS_DIR, kit_instruments  # noqa: E402
+import subprocess  # noqa: E402
+
+SPEECH = "/usr/share/asterisk/sounds/en_US_f_Allison"
+MIN_LAYERS = 5
+
+
+def strike_tree(root, kit):
+    """The kit as a recordings tree with one session per velocity layer; the instrument count."""
+    instruments = [(n, f) for n, f in kit_instruments(os.path.join(KITS_DIR, kit)) if len(f) >= MIN_LAYERS]
+    rows = ["file,object,action,session"]
+    names = set()
+    for name, files in instruments:
+        obj = "".join(c if c.isalnum() else "_" for c in name)
+        while obj in names:
+            obj += "_"
+        names.add(obj)
+        os.makedirs(os.path.join(root, obj, "strike"))
+        for layer, source in enumerate(files[:MIN_LAYERS]):
+            file = "%s/strike/%d%s" % (obj, layer, os.path.splitext(source)[1])
+            shutil.copy(source, os.path.join(root, file))
+            rows.append("%s,%s,strike,%d" % (file, obj, layer + 1))
+    with open(os.path.join(root, "manifest.csv"), "w") as out:
+        out.write("\n".join(rows) + "\n")
+    return len(instruments)
+
+
+def campaign(data, level, episodes):
+    """The campaign at ratio `level` ("quiet": no noise in the trials)."""
+    noise = "" if level == "quiet" else f"""  noise: {{sources: [{SPEECH}/digits, room], ebr_db: "{level}"}}\n"""
+    return f"""seed: 1
+world:
+  type: dataset
+  data: {data}
+  hold_out: session
+{noise}training_set:
+  noise: {{sources: [{SPEECH}/letters, {SPEECH}/phonetic, white], ebr_db: "-6:24"}}
+task:
+  rewards: {{right: 10, wrong: -100, sense: -1}}
+arms:
+  - {{name: quiet, strategy: plan}}
+  - {{name: in_noise, strategy: plan, trained_in_noise: true}}
+planner: {{solver: abt, episodes: {episodes}, max_steps: 10}}
+"""
+
+
+def row(kit, level, summary):
+    """| kit | level | per arm: right @ belief (strikes) | in_noise minus quiet |"""
+    cells = [kit, level]
+    strikes = {r["arm"]: r["mean_action_counts"]["strike"] for r in summary["results"] if r["objects"] == "all"}
+    for c in summary["sort_confidence"]:
+        if c["arm"] in ("quiet", "in_noise"):
+            cells.append("%.3f @ %.3f (%.2f)" % (c["share_right"], c["mean_belief"], strikes.get(c["arm"], 0)))
+    for d in summary["paired_differences"]:
+        cells.append("%+.2f ± %.2f" % (d["mean_discounted_reward_difference"], d["ci95"]))
+    return "| " + " | ".join(cells) + " |"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("echoplan")
+    parser.add_argument("--levels", default="quiet,12,6,0")
+    parser.add_argument("--kits", default="")
+    parser.add_argument("--episodes", type=int, default=2000)
+    args = parser.parse_args()
+    if not os.path.isdir(KITS_DIR) or not os.path.isdir(SPEECH):
+        sys.exit("needs hydrogen-drumkits and asterisk-core-sounds-en-wav: apt-get install them")
+    kits = args.kits.split(",") if args.kits else sorted(os.listdir(KITS_DIR))
+    with tempfile.TemporaryDirectory() as work:
+        for kit in kits:
+            data = os.path.join(work, kit.replace(" ", "_"))
+            os.makedirs(data)
+            if strike_tree(data, kit) < 3:
+                continue
+            for level in args.levels.split(","):
+                config = os.path.join(work, "c.yaml")
+                with open(config, "w") as out:
+                    out.write(campaign(data, level, args.episodes))
+                out_dir = os.path.join(work, "out_%s_%s" % (kit.replace(" ", "_"), level))
+                subprocess.run([args.echoplan, "experiment", "--config", config, "--out", out_dir],
+                               check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                with open(os.path.join(out_dir, "summary.json")) as f:
+                    summary = json.load(f)
+                print(row(kit, level, summary), flush=True)
+
+
+if __name__ == "__main__":
+    main()
