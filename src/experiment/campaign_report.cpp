@@ -8,6 +8,7 @@
 #include <set>
 
 #include "experiment/campaign_runner.h"
+#include "experiment/noise_levels.h"
 #include "experiment/trial_log.h"
 #include "perception/observation_model.h"
 #include "pomdp/object_identification_model.h"
@@ -261,6 +262,34 @@ nlohmann::json sort_confidence_json(const CampaignResults& results) {
   return all;
 }
 
+// A campaign heard through background noise: each arm's trials per band of their measured level.
+std::vector<ArmNoiseBands> noise_bands(const CampaignResults& results) {
+  if (!results.config.world.noise.given()) return {};
+  std::vector<std::string> arms;
+  for (const ResolvedArm& arm : results.arms) arms.push_back(arm.name);
+  return arm_noise_bands(arms, results.entries, results.right_share);
+}
+
+nlohmann::json noise_bands_json(const std::vector<ArmNoiseBands>& all) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const ArmNoiseBands& a : all) {
+    nlohmann::json bands = nlohmann::json::array();
+    for (const NoiseBand& b : a.bands) {
+      nlohmann::json band = {{"band", b.label()},
+                             {"trials", b.trials},
+                             {"sorts", b.sorts},
+                             {"share_right", b.share_right},
+                             {"mean_belief", b.mean_belief},
+                             {"mean_recordings_heard", b.mean_heard}};
+      band["low_db"] = b.low ? nlohmann::json(*b.low) : nlohmann::json();
+      band["high_db"] = b.high ? nlohmann::json(*b.high) : nlohmann::json();
+      bands.push_back(std::move(band));
+    }
+    j.push_back({{"arm", a.arm}, {"bands", std::move(bands)}});
+  }
+  return j;
+}
+
 }  // namespace
 
 nlohmann::json summary_json(const CampaignResults& results) {
@@ -306,6 +335,9 @@ nlohmann::json summary_json(const CampaignResults& results) {
                          {"counts", c.counts}});
   j["confusion"] = std::move(confusion);
   j["sort_confidence"] = sort_confidence_json(results);
+  // Only when the world is heard through noise: other campaigns' summaries stay as they were.
+  if (const auto bands = noise_bands(results); !bands.empty())
+    j["by_noise_level"] = noise_bands_json(bands);
   const std::optional<ReferenceResults>& reference = results.config.reference;
   if (!results.heard.empty() && reference && reference->heard) {
     nlohmann::json heard = {{"classifier", reference->heard->classifier},
@@ -392,6 +424,16 @@ std::string summary_text(const CampaignResults& results) {
       out += fmt::format("  {:<24} belief {:.3f}, sorted right {:.3f} ({:+.1f} points, {} sorts)\n",
                          c.arm, c.mean_belief, c.share_right,
                          100.0 * (c.mean_belief - c.share_right), c.sorts);
+  const std::vector<ArmNoiseBands> bands = noise_bands(results);
+  if (!bands.empty())
+    out +=
+        "\nper noise level (each trial's median measured event-to-background ratio): sorted "
+        "right at belief, recordings heard per trial\n";
+  for (const ArmNoiseBands& a : bands)
+    for (const NoiseBand& b : a.bands)
+      if (b.trials > 0)
+        out += fmt::format("  {:<24} {:<12} {:>4} trials  right {:.3f} at {:.3f}  heard {:.2f}\n",
+                           a.arm, b.label(), b.trials, b.share_right, b.mean_belief, b.mean_heard);
   if (!results.unheard_choices.empty())
     out +=
         "\nhow each arm with unheard: auto counts outcomes it has not heard (self-play on its own "

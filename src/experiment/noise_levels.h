@@ -1,0 +1,43 @@
+// Each arm's trials by how noisy they sounded: the ratio measured from the trial's own recordings
+// (the median of its steps' heard_ebr_db, audio/levels.h), in fixed bands, and per band the share
+// sorted right beside the belief at the sort (sort_confidence.h) and the recordings heard per
+// trial. What a campaign heard through background noise reports per noise level; the bands come
+// from the recordings, not from the configured ratio, so a range of ratios is split as heard.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "experiment/sort_confidence.h"
+#include "experiment/trial_journal.h"
+
+namespace echoplan::experiment {
+
+// The bands' inner edges in dB: below 0, 0 to 6, 6 to 12, 12 to 24, 24 and above.
+inline const std::vector<double> kNoiseBandEdges{0.0, 6.0, 12.0, 24.0};
+
+struct NoiseBand {
+  std::optional<double> low, high;  // dB; none: unbounded
+  int trials = 0;
+  int sorts = 0;              // trials that sorted (not capped)
+  double share_right = 0.0;   // of the sorts; 0 when none
+  double mean_belief = 0.0;   // at the sort; 0 when none
+  double mean_heard = 0.0;    // recordings heard per trial; 0 when no trial
+  std::string label() const;  // "< 0 dB", "0 to 6 dB", ">= 24 dB"
+};
+
+struct ArmNoiseBands {
+  std::string arm;
+  std::vector<NoiseBand> bands;  // one per band of kNoiseBandEdges, low to high
+};
+
+// The trial's heard level: the median of its steps' heard_ebr_db; none when it heard no recording.
+std::optional<double> trial_heard_level(const TrialResult& trial);
+
+// Per arm, in the given order, over every journal entry of that arm that heard a recording.
+std::vector<ArmNoiseBands> arm_noise_bands(const std::vector<std::string>& arms,
+                                           const std::vector<JournalEntry>& entries,
+                                           const RightShares& right_share);
+
+}  // namespace echoplan::experiment
