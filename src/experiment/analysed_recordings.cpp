@@ -15,14 +15,18 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kFormat = "echoplan analysed recordings";
-constexpr int kVersion = 1;
+// 2: each row with its measured level (RowLabel::ebr_db); a kept analysis of version 1 is analysed
+// again.
+constexpr int kVersion = 2;
 
 nlohmann::json to_json(const perception::FeatureSet& data) {
   nlohmann::json sessions = nlohmann::json::array(), actions = nlohmann::json::array();
   for (const perception::Session& s : data.sessions) sessions.push_back({s.object, s.name});
   for (const perception::ActionData& action : data.actions) {
     nlohmann::json rows = nlohmann::json::array(), modalities = nlohmann::json::array();
-    for (const perception::RowLabel& row : action.rows) rows.push_back({row.object, row.session});
+    for (const perception::RowLabel& row : action.rows)
+      rows.push_back(row.ebr_db ? nlohmann::json{row.object, row.session, *row.ebr_db}
+                                : nlohmann::json{row.object, row.session});
     for (const perception::Modality& m : action.modalities)
       modalities.push_back({{"name", m.name},
                             {"extractor", m.extractor},
@@ -62,7 +66,9 @@ perception::FeatureSet from_json(const nlohmann::json& j) {
     perception::ActionData action;
     action.name = a.at("name").get<std::string>();
     for (const auto& row : a.at("rows"))
-      action.rows.push_back({row.at(0).get<int>(), row.at(1).get<int>()});
+      action.rows.push_back(
+          {row.at(0).get<int>(), row.at(1).get<int>(),
+           row.size() > 2 ? std::optional<double>(row.at(2).get<double>()) : std::nullopt});
     for (const auto& m : a.at("modalities"))
       action.modalities.push_back({m.at("name").get<std::string>(),
                                    m.at("feature_names").get<std::vector<std::string>>(),

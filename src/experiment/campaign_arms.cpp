@@ -39,15 +39,19 @@ void check_words(const CampaignConfig& config, const CampaignArm& arm) {
   if (arm.trained_in_noise && !config.world.model.empty())
     refuse(config, arm,
            "trained_in_noise: the world's model is frozen (world.model); nothing is trained");
-  if (arm.observation_kind() != perception::ObservationKind::graded) return;
+  const perception::ObservationKind kind = arm.observation_kind();
+  if (kind == perception::ObservationKind::labels) return;
+  const char* name = perception::observation_kind_name(kind);
   if (!config.world.recorded_data() && !arm.calibrate)
     refuse(config, arm,
-           "observations: graded needs calibrate: true (grades come from the trained classifier; "
-           "a problem file's own table has none)");
+           fmt::format("observations: {} needs calibrate: true (grades come from the trained "
+                       "classifier; a problem file's own table has none)",
+                       name));
   if (config.world.type == WorldType::model)
     refuse(config, arm,
-           "observations: graded needs a world that hears (a simulated or dataset world); a "
-           "model world draws labels from its problem's table");
+           fmt::format("observations: {} needs a world that hears (a simulated or dataset "
+                       "world); a model world draws labels from its problem's table",
+                       name));
 }
 
 // A planner sorting novel objects (a dataset world holding out objects) plans with lookalikes and
@@ -165,7 +169,9 @@ nlohmann::json to_json(const ResolvedArm& arm, bool recorded_data) {
 
 std::string fold_problem_name(const ArmProblemKind& kind) {
   return fmt::format("problem{}{}{}.yaml",
-                     kind.kind == perception::ObservationKind::graded ? "-graded" : "",
+                     kind.kind == perception::ObservationKind::labels
+                         ? ""
+                         : "-" + std::string(perception::observation_kind_name(kind.kind)),
                      kind.lookalike ? "-lookalike" : "", kind.in_noise ? "-in-noise" : "");
 }
 

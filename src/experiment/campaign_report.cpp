@@ -121,7 +121,7 @@ std::vector<std::string> observation_names(const CampaignResults& results, const
   const std::vector<std::string>& names = results.spec.observation.names;
   const auto it = std::find_if(results.arms.begin(), results.arms.end(),
                                [&](const ResolvedArm& a) { return a.name == arm; });
-  if (it == results.arms.end() || it->hearing() != perception::ObservationKind::graded)
+  if (it == results.arms.end() || it->hearing() == perception::ObservationKind::labels)
     return names;
   std::vector<std::string> graded;
   for (const std::string& name : names) {
@@ -130,7 +130,7 @@ std::vector<std::string> observation_names(const CampaignResults& results, const
       continue;
     }
     for (int g = 0; g < perception::kGrades; ++g)
-      graded.push_back(perception::graded_name(name, g));
+      graded.push_back(perception::graded_name(name, g, it->hearing()));
   }
   return graded;
 }
@@ -151,7 +151,7 @@ std::vector<ConfusionCounts> confusion_counts(const CampaignResults& results) {
   for (const ResolvedArm& arm : results.arms) {
     // A graded arm's symbol o is class o / kGrades (its grades are counted together).
     const int per_class =
-        arm.hearing() == perception::ObservationKind::graded ? perception::kGrades : 1;
+        arm.hearing() == perception::ObservationKind::labels ? 1 : perception::kGrades;
     // Sensing actions: those that were ever followed by a heard class in this campaign, in action
     // order.
     for (std::size_t a = 0; a < results.spec.action_names.size(); ++a) {
@@ -360,6 +360,8 @@ std::string arm_text(const CampaignResults& results, const ResolvedArm& arm) {
                            : arm.problem);
   if (arm.hearing() == perception::ObservationKind::graded)
     problem += ", hearing graded observations (the class and how sure the classifier was)";
+  if (arm.hearing() == perception::ObservationKind::levels)
+    problem += ", hearing observations graded by level (the class and how noisy its recording was)";
   if (arm.plans()) return "plans with " + problem;
   return fmt::format("fixed strategy {} with {}", arm.strategy, problem);
 }

@@ -347,24 +347,28 @@ ArmLoops ProblemFileWorld::make_loops(const CampaignConfig& config,
                                       const std::vector<ResolvedArm>& arms,
                                       const Prepared& prepared) const {
   ArmLoops loops(arms.size());
-  // A graded arm's world hears graded symbols: the world's problem with its model's graded table
-  // (its rewards and kinematics as they are; the simulator, not the table, makes observations).
-  std::map<const perception::ObservationModel*, std::shared_ptr<const pomdp::Problem>> graded_world;
+  // A graded (or levels) arm's world hears graded symbols: the world's problem with its model's
+  // graded table (its rewards and kinematics as they are; the simulator, not the table, makes
+  // observations).
+  using GradedKey = std::pair<const perception::ObservationModel*, perception::ObservationKind>;
+  std::map<GradedKey, std::shared_ptr<const pomdp::Problem>> graded_world;
+  const auto key = [&](const ResolvedArm& arm) {
+    return GradedKey{prepared.of(arm).get(), arm.hearing()};
+  };
   for (const ResolvedArm& arm : arms)
-    if (arm.hearing() == perception::ObservationKind::graded) {
-      auto& world = graded_world[prepared.of(arm).get()];
+    if (arm.hearing() != perception::ObservationKind::labels) {
+      auto& world = graded_world[key(arm)];
       if (!world)
-        world =
-            loop::calibrate_problem(*world_problem_, *prepared.of(arm), world_problem_->source_path,
-                                    perception::ObservationKind::graded);
+        world = loop::calibrate_problem(*world_problem_, *prepared.of(arm),
+                                        world_problem_->source_path, arm.hearing());
     }
   for (std::size_t a = 0; a < arms.size(); ++a)
     for (const ObjectGroup& group : config.groups) {
       loop::LoopSettings s;
       s.problem = prepared.arm_problems[a];
-      s.world_problem = arms[a].hearing() == perception::ObservationKind::graded
-                            ? graded_world.at(prepared.of(arms[a]).get())
-                            : world_problem_;
+      s.world_problem = arms[a].hearing() == perception::ObservationKind::labels
+                            ? world_problem_
+                            : graded_world.at(key(arms[a]));
       if (simulates_) {
         s.world = loop::SimulatedWorldSpec{catalogue_, sim_config_};
         s.observation_model = prepared.of(arms[a]);

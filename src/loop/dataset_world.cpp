@@ -60,6 +60,9 @@ DatasetWorld::DatasetWorld(const pomdp::ObjectIdentificationModel& problem, Data
   if (spec_.model->graded() &&
       symbols == spec_.model->observation_symbols(perception::ObservationKind::graded))
     kind_ = perception::ObservationKind::graded;
+  else if (spec_.model->levelled() &&
+           symbols == spec_.model->observation_symbols(perception::ObservationKind::levels))
+    kind_ = perception::ObservationKind::levels;
   else if (spec_.model->observation_symbols() != symbols)
     throw InputError(
         spec_.data->root, 0,
@@ -93,6 +96,8 @@ WorldStep DatasetWorld::execute(int action, Rng& /*rng*/) {
     outcome.observation.index = spec_.model->symbol(heard, kind_);
     // As a robot world logs it: the calibrated probability of the heard (or nearest) class.
     outcome.heard_probability = heard.probabilities.at(static_cast<std::size_t>(heard.best_class));
+    // The level measured from the performance's recording, as a robot world logs its clip's.
+    outcome.heard_ebr_db = readers_[action].level(row);
     outcome.reward = data.sensing[action].reward;
     return {outcome, {}};
   }

@@ -66,7 +66,9 @@ RobotWorld::RobotWorld(pomdp::ModelPtr model, RobotParts parts,
           "'{}' (it was trained for: {}); train it on recordings of every sensing action",
           act.name, data.name, fmt::join(trained, ", ")));
     for (const std::string& label : it->second)
-      if (!symbol_index_.count(label) && !symbol_index_.count(perception::graded_name(label, 0)))
+      if (!symbol_index_.count(label) && !symbol_index_.count(perception::graded_name(label, 0)) &&
+          !symbol_index_.count(
+              perception::graded_name(label, 0, perception::ObservationKind::levels)))
         throw InputError(
             fmt::format("the observation model reports '{}' for '{}', which is not an observation "
                         "symbol of problem '{}' (symbols: {}); the model was trained for other "
@@ -79,7 +81,8 @@ RobotWorld::RobotWorld(pomdp::ModelPtr model, RobotParts parts,
             "not trained for it (its classes: {}); train it on recordings of the "
             "problem's objects",
             data.name, symbol, act.name, fmt::join(it->second, ", ")));
-      if (symbol != perception::class_of_symbol(symbol) && !vocabulary->grades)
+      if (symbol != perception::class_of_symbol(symbol) && !vocabulary->grades &&
+          !vocabulary->levels)
         throw InputError(fmt::format(
             "problem '{}' plans with graded observations ('{}'), but the observation model does "
             "not grade what it hears (trained before grades existed): train it again, or plan "
@@ -117,9 +120,14 @@ void RobotWorld::reset(const pomdp::State& true_state, Rng& rng) {
 std::optional<pomdp::Observation> RobotWorld::symbol_for(
     const robot::HeardObservation& heard) const {
   const std::string label = heard.unknown ? std::string(kUnknownSymbol) : heard.label;
-  // A graded problem hears `<label>@<grade>`; a problem of labels the label alone.
+  // A graded problem hears `<label>@<grade>`, a levels problem `<label>@<level>`; a problem of
+  // labels the label alone.
   auto it = symbol_index_.end();
-  if (!heard.unknown && heard.grade >= 0 && heard.grade < perception::kGrades)
+  if (!heard.unknown && heard.level_grade >= 0 && heard.level_grade < perception::kGrades)
+    it = symbol_index_.find(
+        perception::graded_name(label, heard.level_grade, perception::ObservationKind::levels));
+  if (it == symbol_index_.end() && !heard.unknown && heard.grade >= 0 &&
+      heard.grade < perception::kGrades)
     it = symbol_index_.find(perception::graded_name(label, heard.grade));
   if (it == symbol_index_.end()) it = symbol_index_.find(label);
   if (it == symbol_index_.end()) return std::nullopt;

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "audio/io.h"
+#include "audio/levels.h"
 #include "common/error.h"
 
 namespace echoplan::perception {
@@ -58,7 +59,9 @@ void ClipAnalyzer::analyse_mono(std::vector<float> mono, const std::string& name
                                 ClipAnalysis& out) {
   if (mono.empty()) throw InputError(name, 0, "the clip has no audio frames");
   out.sample_rate = settings_.sample_rate;
-  out.mono = std::move(mono);
+  audio::AudioClip clip{settings_.sample_rate, 1, std::move(mono)};
+  out.ebr_db = audio::measured_ebr_db(clip);
+  out.mono = std::move(clip.samples);
   try {
     extractor_.compute(out.mono, out.features);
   } catch (const InputError& e) {

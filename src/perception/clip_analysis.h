@@ -37,6 +37,9 @@ struct ClipAnalysis {
   std::size_t first_sound_frame = 0;  // first frame after the leading digital silence
   std::size_t onset_frame = 0;        // the strongest onset at or after first_sound_frame
   double hop_seconds = 0.01;          // seconds between frames
+  // The clip's event-to-background ratio as measured from it (audio/levels.h), in dB: how noisy it
+  // is, what an observation of kind `levels` is graded by.
+  double ebr_db = 0.0;
 };
 
 // Turns clips into ClipAnalysis. Holds a configured audio::FeatureExtractor and its buffers, so one

@@ -9,6 +9,7 @@
 // data, with one modality "audio" computed by echoplan's own pipeline.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,9 @@ struct Session {
 struct RowLabel {
   int object = 0;   // index into FeatureSet::objects
   int session = 0;  // index into FeatureSet::sessions
+  // The event-to-background ratio measured from the performance's recording (audio/levels.h), in
+  // dB: a recordings tree's rows have it, a feature set's none.
+  std::optional<double> ebr_db;
 };
 
 // One action's data: the row labels it shares with all its modalities.

@@ -424,41 +424,61 @@ struct ObservationModelFitter {
 
   int num_classes() const { return static_cast<int>(task.classes.size()); }
 
-  // The grades and the graded table (observation_grades.h), tempered for repeats as the label table
-  // is: each inner fold's graded sequences scored with the table of the other folds' decisions.
-  // Returns the graded symbols of the training rows.
-  std::vector<int> grade(ActionCalibration& c, ActionFit& fit, const ActionData& action,
-                         const TrainingRows& t, const Decisions& d, const Table& untempered,
-                         const std::vector<Table>& cross_fitted,
-                         std::vector<Table>& graded_cross_fitted) const {
-    std::vector<double> confidence;
-    std::vector<bool> right;
-    for (std::size_t i = 0; i < t.rows.size(); ++i)
-      if (!d.rejected[i]) {
-        confidence.push_back(d.confidence[i]);
-        right.push_back(d.right[i]);
-      }
-    c.grades = fit_grades(confidence, right);
-    const GradeCalibration& grades = *c.grades;
-    std::vector<int> graded(t.rows.size());
-    for (std::size_t i = 0; i < t.rows.size(); ++i)
-      graded[i] = graded_symbol(d.heard[i], grade_of(grades, d.confidence[i]), num_classes());
-    for (std::size_t f = 0; f < cross_fitted.size(); ++f) {
-      std::vector<double> fold_confidence;
-      std::vector<bool> fold_right;
+  // Grades and their table (observation_grades.h) by `score`, one per training row (the heard
+  // class's confidence, or the recording's measured level), tempered for repeats as the label
+  // table is: each inner fold's graded sequences scored with the table of the other folds'
+  // decisions.
+  struct Graded {
+    GradeCalibration grades;
+    Table table;
+    double temper = 1.0;
+    std::vector<int> symbols;  // the graded symbol of each training row
+    std::vector<Table> cross_fitted;
+  };
+  Graded grade(const ActionData& action, const TrainingRows& t, const Decisions& d,
+               const std::vector<double>& score, const Table& untempered,
+               const std::vector<Table>& cross_fitted) const {
+    const auto kept = [&](std::size_t i, int except_fold) {
+      return !d.rejected[i] && t.fold[i] != except_fold;
+    };
+    const auto decisions = [&](int except_fold, std::vector<double>& scores,
+                               std::vector<bool>& right) {
       for (std::size_t i = 0; i < t.rows.size(); ++i)
-        if (t.fold[i] != static_cast<int>(f) && !d.rejected[i]) {
-          fold_confidence.push_back(d.confidence[i]);
-          fold_right.push_back(d.right[i]);
+        if (kept(i, except_fold)) {
+          scores.push_back(score[i]);
+          right.push_back(d.right[i]);
         }
-      graded_cross_fitted.push_back(graded_table(
-          cross_fitted[f], fit_grades(fold_confidence, fold_right, grades.edges), num_classes()));
+    };
+    Graded g;
+    std::vector<double> all_scores;
+    std::vector<bool> all_right;
+    decisions(-1, all_scores, all_right);
+    g.grades = fit_grades(all_scores, all_right);
+    for (std::size_t i = 0; i < t.rows.size(); ++i)
+      g.symbols.push_back(graded_symbol(d.heard[i], grade_of(g.grades, score[i]), num_classes()));
+    for (std::size_t f = 0; f < cross_fitted.size(); ++f) {
+      std::vector<double> fold_scores;
+      std::vector<bool> fold_right;
+      decisions(static_cast<int>(f), fold_scores, fold_right);
+      g.cross_fitted.push_back(graded_table(
+          cross_fitted[f], fit_grades(fold_scores, fold_right, g.grades.edges), num_classes()));
     }
-    if (options.temper)
-      fit.graded_temper = fit_temper(graded_cross_fitted, sequences_of(action, t, graded));
-    c.graded_table = graded_table(untempered, grades, num_classes());
-    if (options.temper) c.graded_table = temper(c.graded_table, fit.graded_temper);
-    return graded;
+    if (options.temper) g.temper = fit_temper(g.cross_fitted, sequences_of(action, t, g.symbols));
+    g.table = graded_table(untempered, g.grades, num_classes());
+    if (options.temper) g.table = temper(g.table, g.temper);
+    return g;
+  }
+
+  // Each training row's measured level, when every one has one (a recordings tree's).
+  static std::optional<std::vector<double>> levels_of(const ActionData& action,
+                                                      const TrainingRows& t) {
+    std::vector<double> levels;
+    for (int row : t.rows) {
+      const std::optional<double>& level = action.rows.at(static_cast<std::size_t>(row)).ebr_db;
+      if (!level) return std::nullopt;
+      levels.push_back(*level);
+    }
+    return levels;
   }
 
   // Temperature or fusion, reject, table, grades and, by session, tempering and the performances
@@ -482,15 +502,24 @@ struct ObservationModelFitter {
     measure(fit, held, t, d);
     fit.shrinkage_strength = table.strength;
     // The other folds' tables score each fold's sequences: needed by session only.
-    std::vector<Table> cross_fitted, graded_cross_fitted;
+    std::vector<Table> cross_fitted;
     if (by_session) cross_fitted = tables.cross_fitted(t, d, table.strength);
     if (options.temper) fit.temper = fit_temper(cross_fitted, sequences_of(action, t, d.heard));
     c.table = options.temper ? temper(table.table, fit.temper) : table.table;
-    const std::vector<int> graded =
-        grade(c, fit, action, t, d, table.table, cross_fitted, graded_cross_fitted);
+    Graded graded = grade(action, t, d, d.confidence, table.table, cross_fitted);
+    c.grades = graded.grades;
+    c.graded_table = graded.table;
+    fit.graded_temper = graded.temper;
+    if (const auto levels = levels_of(action, t)) {
+      Graded by_level = grade(action, t, d, *levels, table.table, cross_fitted);
+      c.level_grades = by_level.grades;
+      c.level_table = std::move(by_level.table);
+      fit.level_temper = by_level.temper;
+    }
     if (by_session) {
       shares.labels.push_back(held_out(action, t, d.heard, cross_fitted, fit.temper));
-      shares.graded.push_back(held_out(action, t, graded, graded_cross_fitted, fit.graded_temper));
+      shares.graded.push_back(
+          held_out(action, t, graded.symbols, graded.cross_fitted, fit.graded_temper));
     }
     c.fit = std::move(fit);
     return c;

@@ -11,17 +11,26 @@
 namespace echoplan::perception {
 
 const char* observation_kind_name(ObservationKind kind) {
-  return kind == ObservationKind::graded ? "graded" : "labels";
+  switch (kind) {
+    case ObservationKind::graded:
+      return "graded";
+    case ObservationKind::levels:
+      return "levels";
+    case ObservationKind::labels:
+      break;
+  }
+  return "labels";
 }
 
 const std::vector<std::string>& observation_kind_names() {
-  static const std::vector<std::string> names{"labels", "graded"};
+  static const std::vector<std::string> names{"labels", "graded", "levels"};
   return names;
 }
 
 ObservationKind parse_observation_kind(const std::string& name) {
   if (name == "labels") return ObservationKind::labels;
   if (name == "graded") return ObservationKind::graded;
+  if (name == "levels") return ObservationKind::levels;
   throw InputError(fmt::format("observations '{}' is not one of: {}", name,
                                fmt::join(observation_kind_names(), ", ")));
 }
@@ -102,10 +111,11 @@ std::vector<std::vector<double>> graded_table(const std::vector<std::vector<doub
   return table;
 }
 
-std::vector<std::string> graded_symbols(const std::vector<std::string>& classes, bool reject) {
+std::vector<std::string> graded_symbols(const std::vector<std::string>& classes, bool reject,
+                                        ObservationKind kind) {
   std::vector<std::string> symbols;
   for (const std::string& c : classes)
-    for (int g = 0; g < kGrades; ++g) symbols.push_back(graded_name(c, g));
+    for (int g = 0; g < kGrades; ++g) symbols.push_back(graded_name(c, g, kind));
   if (reject) symbols.emplace_back("unknown");
   return symbols;
 }
@@ -114,16 +124,18 @@ int graded_symbol(int symbol, int grade, int num_classes) {
   return symbol >= num_classes ? num_classes * kGrades : symbol * kGrades + grade;
 }
 
-std::string graded_name(const std::string& label, int grade) {
-  return label + "@" + kGradeNames.at(static_cast<std::size_t>(grade));
+std::string graded_name(const std::string& label, int grade, ObservationKind kind) {
+  const auto& names = kind == ObservationKind::levels ? kLevelNames : kGradeNames;
+  return label + "@" + names.at(static_cast<std::size_t>(grade));
 }
 
 std::string class_of_symbol(const std::string& symbol) {
-  for (int g = 0; g < kGrades; ++g) {
-    const std::string suffix = graded_name("", g);
-    if (symbol.size() > suffix.size() && symbol.ends_with(suffix))
-      return symbol.substr(0, symbol.size() - suffix.size());
-  }
+  for (const ObservationKind kind : {ObservationKind::graded, ObservationKind::levels})
+    for (int g = 0; g < kGrades; ++g) {
+      const std::string suffix = graded_name("", g, kind);
+      if (symbol.size() > suffix.size() && symbol.ends_with(suffix))
+        return symbol.substr(0, symbol.size() - suffix.size());
+    }
   return symbol;
 }
 

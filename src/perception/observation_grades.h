@@ -15,6 +15,12 @@
 //
 // It is an ordinary discrete observation alphabet of kGrades times the classes (plus `unknown`):
 // the problem file, the exact solver and `certify` take a graded problem as they take any other.
+//
+// Observations of kind `levels` are graded the same way by how noisy the recording was instead of
+// how sure the classifier was: `mug@noisy`, `mug@fair` or `mug@clear`, by the event-to-background
+// ratio measured from the recording (audio/levels.h) against the terciles of the training
+// recordings' ratios. A reading heard in noise is wrong more often, so P(noisy | wrong) >
+// P(noisy | right): the table says a noisy reading tells less, and a planner listens again.
 #pragma once
 
 #include <array>
@@ -25,15 +31,16 @@
 namespace echoplan::perception {
 
 // What an arm plans with: the heard class alone, or the class and its grade.
-enum class ObservationKind { labels, graded };
+enum class ObservationKind { labels, graded, levels };
 const char* observation_kind_name(ObservationKind kind);
 const std::vector<std::string>& observation_kind_names();
 // Throws InputError("observations '<name>' is not one of: labels, graded").
 ObservationKind parse_observation_kind(const std::string& name);
 
 inline constexpr int kGrades = 3;
-// The grade names, least sure first.
+// The grade names, least sure first; a `levels` grade's, noisiest first.
 inline constexpr std::array<const char*, kGrades> kGradeNames{"low", "mid", "high"};
+inline constexpr std::array<const char*, kGrades> kLevelNames{"noisy", "fair", "clear"};
 
 // How an action's confidences become grades, and how often each grade comes with a right and a
 // wrong decision.
@@ -61,14 +68,16 @@ std::vector<std::vector<double>> graded_table(const std::vector<std::vector<doub
                                               const GradeCalibration& grades, int num_classes);
 
 // The graded symbols: "<class>@<grade>" for each class and grade (class-major), then "unknown"
-// when `reject`.
-std::vector<std::string> graded_symbols(const std::vector<std::string>& classes, bool reject);
+// when `reject`; `kind` graded (confidence grades) or levels (level grades).
+std::vector<std::string> graded_symbols(const std::vector<std::string>& classes, bool reject,
+                                        ObservationKind kind = ObservationKind::graded);
 // The index of (label symbol, grade) among graded_symbols: symbol * kGrades + grade for a class,
 // the last one for `unknown` (symbol == num_classes).
 int graded_symbol(int symbol, int grade, int num_classes);
-// "<label>@<grade name>".
-std::string graded_name(const std::string& label, int grade);
-// The class a symbol names: "mug@high" and "mug" both name "mug".
+// "<label>@<grade name>", a confidence grade's or (`kind` levels) a level grade's.
+std::string graded_name(const std::string& label, int grade,
+                        ObservationKind kind = ObservationKind::graded);
+// The class a symbol names: "mug@high", "mug@noisy" and "mug" all name "mug".
 std::string class_of_symbol(const std::string& symbol);
 
 }  // namespace echoplan::perception

@@ -46,34 +46,51 @@ bool ObservationModel::graded() const {
                      [](const ActionModel& a) { return a.calibration.grades.has_value(); });
 }
 
+bool ObservationModel::levelled() const {
+  return std::all_of(per_action_.begin(), per_action_.end(),
+                     [](const ActionModel& a) { return a.calibration.level_grades.has_value(); });
+}
+
 namespace {
 
-void require_grades(const ObservationModel& model) {
-  if (!model.graded())
+void require_grades(const ObservationModel& model, ObservationKind kind) {
+  if (kind == ObservationKind::graded && !model.graded())
     throw InputError(
         "the observation model has no graded observations (it was trained before they existed): "
         "train it again, or plan with `observations: labels`");
+  if (kind == ObservationKind::levels && !model.levelled())
+    throw InputError(
+        "the observation model has no observations graded by level: it was trained on features "
+        "without the recordings' measured levels (or before levels existed); train it on a "
+        "recordings tree, or plan with `observations: labels`");
 }
 
 }  // namespace
 
 std::vector<std::string> ObservationModel::observation_symbols(ObservationKind kind) const {
   if (kind == ObservationKind::labels) return observation_symbols();
-  require_grades(*this);
-  return graded_symbols(classes(), reject());
+  require_grades(*this, kind);
+  return graded_symbols(classes(), reject(), kind);
 }
 
 int ObservationModel::symbol(const Prediction& heard, ObservationKind kind) const {
   if (kind == ObservationKind::labels) return heard.symbol;
-  require_grades(*this);
-  return graded_symbol(heard.symbol, heard.grade, static_cast<int>(classes().size()));
+  require_grades(*this, kind);
+  const int grade = kind == ObservationKind::levels ? heard.level_grade : heard.grade;
+  if (grade < 0)
+    throw InputError(fmt::format(
+        "the performance of '{}' has no measured level to grade it by (it was not recorded as "
+        "audio)",
+        heard.action));
+  return graded_symbol(heard.symbol, grade, static_cast<int>(classes().size()));
 }
 
 const std::vector<std::vector<double>>& ObservationModel::observation_table(
     const std::string& action, ObservationKind kind) const {
   if (kind == ObservationKind::labels) return observation_table(action);
-  require_grades(*this);
-  return calibration(action).graded_table;
+  require_grades(*this, kind);
+  return kind == ObservationKind::levels ? calibration(action).level_table
+                                         : calibration(action).graded_table;
 }
 
 int ObservationModel::action_index(const std::string& action) const {
@@ -111,7 +128,8 @@ const std::vector<std::vector<double>>& ObservationModel::observation_table(
   return calibration(action).table;
 }
 
-Prediction ObservationModel::predict(int action, const std::vector<ClassScores>& scores) const {
+Prediction ObservationModel::predict(int action, const std::vector<ClassScores>& scores,
+                                     std::optional<double> ebr_db) const {
   const ActionModel& a = per_action_[static_cast<std::size_t>(action)];
   std::vector<std::vector<double>> log_scores;
   for (const ClassScores& s : scores) log_scores.push_back(s.log_scores);
@@ -129,6 +147,8 @@ Prediction ObservationModel::predict(int action, const std::vector<ClassScores>&
   if (a.calibration.grades)
     p.grade =
         grade_of(*a.calibration.grades, p.probabilities[static_cast<std::size_t>(p.best_class)]);
+  if (a.calibration.level_grades && ebr_db)
+    p.level_grade = grade_of(*a.calibration.level_grades, *ebr_db);
   return p;
 }
 
@@ -143,11 +163,12 @@ Prediction ObservationModel::classify(const ClipAnalysis& analysed,
           action, m.name));
     scores.push_back(m.classifier->score_clip(analysed));
   }
-  return predict(action_index(action), scores);
+  return predict(action_index(action), scores, analysed.ebr_db);
 }
 
 Prediction ObservationModel::classify_rows(int action,
-                                           std::span<const std::span<const double>> rows) const {
+                                           std::span<const std::span<const double>> rows,
+                                           std::optional<double> ebr_db) const {
   const ActionModel& a = per_action_.at(static_cast<std::size_t>(action));
   if (rows.size() != a.modalities.size())
     throw InputError(fmt::format("action '{}' has {} modalities, got {} rows",
@@ -156,7 +177,7 @@ Prediction ObservationModel::classify_rows(int action,
   std::vector<ClassScores> scores;
   for (std::size_t m = 0; m < rows.size(); ++m)
     scores.push_back(a.modalities[m].classifier->score(rows[m]));
-  return predict(action, scores);
+  return predict(action, scores, ebr_db);
 }
 
 }  // namespace echoplan::perception

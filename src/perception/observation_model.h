@@ -58,6 +58,7 @@ struct ActionFit {
   double shrinkage_strength = 0.0;        // empirical-Bayes prior count per table row
   double temper = 1.0;                    // beta: table rows are p^beta renormalised
   double graded_temper = 1.0;             // the graded table's beta, fitted the same way
+  double level_temper = 1.0;              // the levels table's beta, fitted the same way
 };
 
 // Per action: what cross-validation measured and what the planner gets.
@@ -72,6 +73,10 @@ struct ActionCalibration {
   // a model file written before grades existed: such a model serves labels only.
   std::optional<GradeCalibration> grades;
   std::vector<std::vector<double>> graded_table;
+  // Observations of kind `levels`: the grades by measured event-to-background ratio and P(level
+  // symbol | object). Absent when the training data had no measured levels (a feature set).
+  std::optional<GradeCalibration> level_grades;
+  std::vector<std::vector<double>> level_table;
 };
 
 // One sensor's part of an action: its name ("audio", "haptic", ...) and its fitted classifier.
@@ -109,6 +114,7 @@ class ObservationModel {
   TableEstimate table_estimate() const { return description_.table_estimate; }
   // The share of objects that sound like another class, for observations of `kind`.
   double lookalike_share(ObservationKind kind) const {
+    // A levels problem's copies start with the labels' share (none is fitted for it).
     return kind == ObservationKind::graded ? description_.graded_lookalike_share
                                            : description_.lookalike_share;
   }
@@ -116,8 +122,10 @@ class ObservationModel {
   std::vector<std::string> observation_symbols() const;
   // Every action has graded observations (a model trained since they exist).
   bool graded() const;
-  // The symbols of `kind`: observation_symbols(), or graded_symbols(). InputError for graded when
-  // the model has no grades.
+  // Every action has observations graded by level (a model trained on recordings).
+  bool levelled() const;
+  // The symbols of `kind`: observation_symbols(), or graded_symbols(). InputError for graded or
+  // levels when the model has no such grades.
   std::vector<std::string> observation_symbols(ObservationKind kind) const;
   // The index of what `heard` says among observation_symbols(kind).
   int symbol(const Prediction& heard, ObservationKind kind) const;
@@ -142,12 +150,15 @@ class ObservationModel {
   // modality of the action is not computed from clips (its rows come from another sensor).
   Prediction classify(const ClipAnalysis& analysed, const std::string& action) const;
   // Classifies one performance of actions()[action] given as one row per modality, in
-  // modalities() order. InputError for a missing row or one of the wrong length.
-  Prediction classify_rows(int action, std::span<const std::span<const double>> rows) const;
+  // modalities() order, recorded at `ebr_db` when measured (its level grade; none: -1).
+  // InputError for a missing row or one of the wrong length.
+  Prediction classify_rows(int action, std::span<const std::span<const double>> rows,
+                           std::optional<double> ebr_db = std::nullopt) const;
 
  private:
   const ActionModel& of(const std::string& action) const;
-  Prediction predict(int action, const std::vector<ClassScores>& scores) const;
+  Prediction predict(int action, const std::vector<ClassScores>& scores,
+                     std::optional<double> ebr_db) const;
 
   ModelDescription description_;
   std::vector<ActionModel> per_action_;  // description_.actions order

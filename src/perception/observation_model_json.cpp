@@ -41,13 +41,10 @@ nlohmann::json analysis_json(const AnalysisSettings& analysis) {
 }  // namespace
 
 nlohmann::json fit_json(const ActionFit& fit) {
-  return {{"modality_accuracy", fit.modality_accuracy},
-          {"modality_nll", fit.modality_nll},
-          {"fused_accuracy", fit.fused_accuracy},
-          {"fused_nll", fit.fused_nll},
-          {"shrinkage_strength", fit.shrinkage_strength},
-          {"temper", fit.temper},
-          {"graded_temper", fit.graded_temper}};
+  return {{"modality_accuracy", fit.modality_accuracy},   {"modality_nll", fit.modality_nll},
+          {"fused_accuracy", fit.fused_accuracy},         {"fused_nll", fit.fused_nll},
+          {"shrinkage_strength", fit.shrinkage_strength}, {"temper", fit.temper},
+          {"graded_temper", fit.graded_temper},           {"level_temper", fit.level_temper}};
 }
 
 nlohmann::json modalities_json(const std::vector<ModalityModel>& modalities) {
@@ -76,11 +73,15 @@ nlohmann::json observation_model_to_json(const ObservationModel& model) {
         {"table", c.table},
     };
     if (c.fit) per_action[action]["fit"] = fit_json(*c.fit);
-    if (c.grades)
-      per_action[action]["grades"] = {{"edges", c.grades->edges},
-                                      {"given_right", c.grades->given_right},
-                                      {"given_wrong", c.grades->given_wrong},
-                                      {"table", c.graded_table}};
+    const auto grades_json = [](const GradeCalibration& g, const Table& table) {
+      return nlohmann::json{{"edges", g.edges},
+                            {"given_right", g.given_right},
+                            {"given_wrong", g.given_wrong},
+                            {"table", table}};
+    };
+    if (c.grades) per_action[action]["grades"] = grades_json(*c.grades, c.graded_table);
+    if (c.level_grades)
+      per_action[action]["level_grades"] = grades_json(*c.level_grades, c.level_table);
   }
   return {{"format", kFormatName},
           {"version", kModelFormatVersion},
@@ -303,6 +304,7 @@ std::optional<ActionFit> read_fit_report(const ActionEntry& e, std::size_t modal
   fit.temper = number("temper");
   // Absent in files written before graded observations.
   if (j.contains("graded_temper")) fit.graded_temper = number("graded_temper");
+  if (j.contains("level_temper")) fit.level_temper = number("level_temper");
   return fit;
 }
 
@@ -375,11 +377,14 @@ std::vector<double> read_grade_distribution(const ActionEntry& e, const char* ke
   return p;
 }
 
-// The optional `grades` entry (observation_grades.h): absent in files written before them.
-void read_grades(const ActionEntry& action, const ModelDescription& d, ActionCalibration& c) {
-  if (!action.json.contains("grades")) return;
-  const std::string where = action.where + ".grades";
-  const ActionEntry e{action.json["grades"], where, action.source};
+// The optional `grades` entry (observation_grades.h; absent in files written before them) or
+// `level_grades` (kind levels; absent for a model trained on features without levels).
+void read_grades(const ActionEntry& action, const ModelDescription& d, ObservationKind kind,
+                 std::optional<GradeCalibration>& out, Table& table) {
+  const char* key = kind == ObservationKind::levels ? "level_grades" : "grades";
+  if (!action.json.contains(key)) return;
+  const std::string where = action.where + "." + key;
+  const ActionEntry e{action.json[key], where, action.source};
   GradeCalibration grades;
   grades.edges = jf::numbers(jf::member(e.json, "edges", where, e.source), kGrades - 1,
                              where + ".edges", e.source);
@@ -387,8 +392,8 @@ void read_grades(const ActionEntry& action, const ModelDescription& d, ActionCal
     throw InputError(e.source, 0, where + ".edges: must be ascending");
   grades.given_right = read_grade_distribution(e, "given_right");
   grades.given_wrong = read_grade_distribution(e, "given_wrong");
-  c.graded_table = read_table(e, d.classes.size(), graded_symbols(d.classes, d.reject).size());
-  c.grades = std::move(grades);
+  table = read_table(e, d.classes.size(), graded_symbols(d.classes, d.reject, kind).size());
+  out = std::move(grades);
 }
 
 ActionModel read_action(const ActionEntry& e, const std::string& action, const ModelDescription& d,
@@ -415,7 +420,9 @@ ActionModel read_action(const ActionEntry& e, const std::string& action, const M
   a.calibration.confusion = read_confusion(e, d, symbols);
   a.calibration.table = read_table(e, d.classes.size(), symbols.size());
   a.calibration.fit = read_fit_report(e, a.modalities.size());
-  read_grades(e, d, a.calibration);
+  ActionCalibration& c = a.calibration;
+  read_grades(e, d, ObservationKind::graded, c.grades, c.graded_table);
+  read_grades(e, d, ObservationKind::levels, c.level_grades, c.level_table);
   return a;
 }
 

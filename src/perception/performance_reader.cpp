@@ -32,7 +32,7 @@ Prediction PerformanceReader::classify(int row) const {
   std::vector<std::span<const double>> rows;
   for (const Modality* column : columns_)
     rows.emplace_back(column->rows.at(static_cast<std::size_t>(row)));
-  return model_->classify_rows(model_action_, rows);
+  return model_->classify_rows(model_action_, rows, level(row));
 }
 
 int classify_row(const ObservationModel& model, int action, const FeatureSet& set, int row) {

@@ -20,6 +20,10 @@ class PerformanceReader {
                     const FeatureSet& set);
   // What the model makes of row `row` of the set's action.
   Prediction classify(int row) const;
+  // The level measured from the row's recording (RowLabel::ebr_db), if it had one.
+  std::optional<double> level(int row) const {
+    return data_->rows.at(static_cast<std::size_t>(row)).ebr_db;
+  }
 
  private:
   const ObservationModel* model_;

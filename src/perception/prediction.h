@@ -17,6 +17,9 @@ struct Prediction {
   // The confidence grade of the heard class (observation_grades.h: 0 = low), or -1 when the model
   // has no grades.
   int grade = -1;
+  // The level grade of the recording (observation_grades.h, kind levels: 0 = noisy), or -1 when
+  // the model has no level grades or the performance no measured level.
+  int level_grade = -1;
   // Calibrated P(class | clip) over the model's classes (classes() order, sums to 1), assuming the
   // clip is one of them and all were equally likely before it was heard. Soft observations use
   // these.

@@ -21,6 +21,7 @@ std::optional<ServiceVocabulary> ClassifierService::vocabulary() const {
   for (const std::string& action : model_->actions()) v.labels[action] = model_->classes();
   v.may_report_unknown = model_->reject();
   v.grades = model_->graded();
+  v.levels = model_->levelled();
   return v;
 }
 
@@ -41,6 +42,7 @@ HeardObservation ClassifierService::heard(const perception::Prediction& p) const
   h.unknown = p.unknown;
   h.probability = p.probabilities.at(static_cast<std::size_t>(p.best_class));
   h.grade = p.grade;
+  h.level_grade = p.level_grade;
   const auto& classes = model_->classes();
   for (std::size_t k = 0; k < classes.size(); ++k)
     h.probabilities.emplace_back(classes[k], p.probabilities[k]);
@@ -84,7 +86,9 @@ HeardObservation ClassifierService::observe_performance(
     computed.push_back(m.classifier->embed(analysis_));
     rows.emplace_back(computed.back());
   }
-  HeardObservation h = heard(model_->classify_rows(model_->action_index(action), rows));
+  HeardObservation h = heard(
+      model_->classify_rows(model_->action_index(action), rows,
+                            analysed ? std::optional<double>(analysis_.ebr_db) : std::nullopt));
   if (analysed) h.features = clip_summary(analysis_, analyzer_.settings().sample_rate);
   return h;
 }

@@ -20,6 +20,9 @@ struct HeardObservation {
   // The confidence grade of `label` (perception/observation_grades.h: 0 = low), or -1 when the
   // service does not grade: what a graded problem's symbol `<label>@<grade>` is made of.
   int grade = -1;
+  // The level grade of the recording (kind levels: 0 = noisy), or -1: what a levels problem's
+  // symbol `<label>@<level>` is made of.
+  int level_grade = -1;
   std::vector<std::pair<std::string, double>> probabilities;  // per class, calibrated, sums to 1
   double distance = 0;  // the classifier's distance to the chosen class (for the reject option)
   // A few named numbers that describe the clip as the service analysed it (onset, level, ...), for
@@ -34,6 +37,7 @@ struct ServiceVocabulary {
   std::map<std::string, std::vector<std::string>> labels;
   bool may_report_unknown = false;  // the reject option is on
   bool grades = false;              // it grades what it hears (HeardObservation::grade)
+  bool levels = false;              // it grades recordings by level (HeardObservation::level_grade)
 };
 
 class ObservationService {
