@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "common/error.h"
+#include "sim/table_choice.h"
 
 namespace echoplan::robot {
 
@@ -27,6 +28,7 @@ SimulatedWorld::SimulatedWorld(sim::Catalogue catalogue, sim::SimConfig config,
     if (sim::find_sound_action(a))
       throw InputError("sorting action '" + a +
                        "' has the name of one of the simulator's sensing actions");
+  sim::check_tables(catalogue_, config_);
 }
 
 SimulatedWorld::~SimulatedWorld() = default;
@@ -51,16 +53,18 @@ void SimulatedWorld::throw_unknown_action(const std::string& action) const {
 }
 
 void SimulatedWorld::begin_trial(const TrialContext& context) {
-  auto it = rigs_.find(context.object);
+  const sim::TableSpec& table = catalogue_.table_named(sim::table_of_trial(config_, context.seed));
+  auto it = rigs_.find({context.object, table.name});
   if (it == rigs_.end()) {
     // Compiling a MuJoCo scene takes milliseconds; trials of the same object reuse it.
     ObjectRig rig;
-    rig.robot = std::make_unique<sim::SimulatedRobot>(catalogue_, context.object, config_);
+    rig.robot = std::make_unique<sim::SimulatedRobot>(catalogue_, context.object, config_, table);
     rig.renderer =
         std::make_unique<sim::SoundRenderer>(rig.robot->object(), rig.robot->table(), config_);
-    it = rigs_.emplace(context.object, std::move(rig)).first;
+    it = rigs_.emplace(std::pair{context.object, table.name}, std::move(rig)).first;
   }
   rig_ = &it->second;
+  surface_ = table.name;
   physics_rng_.seed(derive_seed(context.seed, {physics}));
   sound_rng_.seed(derive_seed(context.seed, {sound}));
   // The lab's reset: arm home, object at its place (with the trial's placement drawn); every action
