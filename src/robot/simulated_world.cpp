@@ -53,7 +53,8 @@ void SimulatedWorld::throw_unknown_action(const std::string& action) const {
 }
 
 void SimulatedWorld::begin_trial(const TrialContext& context) {
-  const sim::TableSpec& table = catalogue_.table_named(sim::table_of_trial(config_, context.seed));
+  named_ = sim::table_of_trial(config_, context.seed);
+  const sim::TableSpec& table = catalogue_.table_named(named_);
   auto it = rigs_.find({context.object, table.name});
   if (it == rigs_.end()) {
     // Compiling a MuJoCo scene takes milliseconds; trials of the same object reuse it.
@@ -77,7 +78,7 @@ void SimulatedWorld::begin_trial(const TrialContext& context) {
 
 ActionReport SimulatedWorld::execute(const std::string& action) {
   if (!rig_) throw std::logic_error("SimulatedWorld::execute before begin_trial()");
-  if (is_sorting(action)) return ActionReport{action, ActionStatus::done, "", 0.0};
+  if (is_sorting(action)) return ActionReport{action, ActionStatus::done, "", 0.0, false, named_};
   // The name is resolved here, once; the simulator takes the action itself.
   const std::optional<sim::SoundAction> sound = sim::find_sound_action(action);
   if (!sound) throw_unknown_action(action);
@@ -87,7 +88,7 @@ ActionReport SimulatedWorld::execute(const std::string& action) {
 ActionReport SimulatedWorld::execute_sensing(const std::string& name, sim::SoundAction action) {
   sim::ActionOutcome outcome = rig_->robot->execute(action, physics_rng_);
   if (listening_) hear(rig_->renderer->render(outcome.trace, outcome.duration_s, sound_rng_));
-  ActionReport report{name, outcome.status, outcome.reason, outcome.duration_s};
+  ActionReport report{name, outcome.status, outcome.reason, outcome.duration_s, false, named_};
   last_outcome_ = std::move(outcome);
   return report;
 }

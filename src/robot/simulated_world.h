@@ -99,6 +99,7 @@ class SimulatedWorld {
   std::map<std::pair<std::string, std::string>, ObjectRig> rigs_;
   ObjectRig* rig_ = nullptr;  // the trial's object on its table
   std::string surface_;       // the trial's table
+  std::string named_;         // the same when the config chose it, empty on the default
   Rng physics_rng_{0};                     // the trial's variability (speeds, placement, ...)
   Rng sound_rng_{0};                       // the trial's room, surface profile and noise
   bool listening_ = false;
