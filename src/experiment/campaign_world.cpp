@@ -294,9 +294,9 @@ std::shared_ptr<const sim::SimConfig> on_tables(const sim::SimConfig& base,
 void ProblemFileWorld::load_surfaces(const CampaignConfig& config,
                                      const std::vector<ResolvedArm>& arms) {
   const std::vector<std::string>& world = config.world.surfaces;
-  world_sim_config_ =
-      world.empty() ? sim_config_
-                    : on_tables(*sim_config_, *catalogue_, world, config, config.world.surface_line);
+  world_sim_config_ = world.empty() ? sim_config_
+                                    : on_tables(*sim_config_, *catalogue_, world, config,
+                                                config.world.surface_line);
   const TrainingSetConfig& t = config.training;
   if (any_trained_on_surfaces(arms) == t.surfaces.empty())
     throw InputError(config.source, t.surfaces_line,
@@ -392,8 +392,8 @@ std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier
   on_surfaces.config = surfaces_sim_config_;
   on_surfaces.directory = training_ / "recordings_on_surfaces";
   if (!loop::synthesise_training_set(on_surfaces, progress, stop)) return nullptr;
-  return loop::prepare_observation(campaign_training(config, on_surfaces.directory, saved),
-                                   nullptr, "", progress, stop)
+  return loop::prepare_observation(campaign_training(config, on_surfaces.directory, saved), nullptr,
+                                   "", progress, stop)
       .model;
 }
 

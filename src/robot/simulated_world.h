@@ -100,8 +100,8 @@ class SimulatedWorld {
   ObjectRig* rig_ = nullptr;  // the trial's object on its table
   std::string surface_;       // the trial's table
   std::string named_;         // the same when the config chose it, empty on the default
-  Rng physics_rng_{0};                     // the trial's variability (speeds, placement, ...)
-  Rng sound_rng_{0};                       // the trial's room, surface profile and noise
+  Rng physics_rng_{0};        // the trial's variability (speeds, placement, ...)
+  Rng sound_rng_{0};          // the trial's room, surface profile and noise
   bool listening_ = false;
   audio::AudioClip heard_;  // everything emitted since start_listening()
   std::optional<sim::ActionOutcome> last_outcome_;

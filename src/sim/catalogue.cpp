@@ -212,16 +212,15 @@ TableSpec read_table(const Catalogue& c, const YamlMapping& r, const std::string
 // whole table, not a change to the default, so nothing is inherited silently).
 void read_named_tables(Catalogue& c, const YamlMapping& top) {
   const YAML::Node tables = top.node()["tables"];
-  if (!tables.IsMap() || tables.size() == 0)
-    top.fail(tables, "'tables' must map names to tables");
+  if (!tables.IsMap() || tables.size() == 0) top.fail(tables, "'tables' must map names to tables");
   for (const auto& kv : tables) {
     const std::string name = top.reader().name(kv.first, "each key of 'tables'");
     const YamlMapping r(top.reader(), "tables." + name, kv.second);
     if (r.has("name")) r.fail(r.node()["name"], "a named table's name is its key");
     for (const char* key : {"friction", "thickness", "contact_loss_factor"}) r.required(key);
     if (c.tables.count(name))
-      top.reader().fail(kv.first, "table '" + name + "' is named twice (the default is '" +
-                                      c.table.name + "')");
+      top.reader().fail(
+          kv.first, "table '" + name + "' is named twice (the default is '" + c.table.name + "')");
     c.tables[name] = read_table(c, r, name);
   }
 }

@@ -26,7 +26,8 @@ std::string table_of_trial(const SimConfig& config, std::uint64_t trial_seed) {
   if (config.tables.empty()) return {};
   if (config.tables.size() == 1) return config.tables.front();
   Rng rng(derive_seed(trial_seed, {kTableStream}));
-  const auto k = static_cast<std::size_t>(uniform01(rng) * static_cast<double>(config.tables.size()));
+  const auto k =
+      static_cast<std::size_t>(uniform01(rng) * static_cast<double>(config.tables.size()));
   return config.tables[std::min(k, config.tables.size() - 1)];
 }
 

@@ -21,8 +21,7 @@ namespace echoplan::sim {
 void check_tables(const Catalogue& catalogue, const SimConfig& config);
 
 // The table of recording `index` of a pair: config.tables[index mod n], the default without any.
-const TableSpec& table_of_recording(const Catalogue& catalogue, const SimConfig& config,
-                                    int index);
+const TableSpec& table_of_recording(const Catalogue& catalogue, const SimConfig& config, int index);
 
 // The name of the table of the trial seeded `trial_seed`: the only one named, or one of the list
 // drawn uniformly from the trial's seed; empty (the default table) when the config names none.

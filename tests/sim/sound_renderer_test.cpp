@@ -613,5 +613,55 @@ TEST(SoundRenderer, LoudnessIsNotAnObjectCue) {
   }
 }
 
+// The power-weighted mean frequency of the 100 ms from `impact_s` (channel 0).
+double centroid_after_impact(const audio::AudioClip& clip, double impact_s) {
+  double bin = 0;
+  const auto start = static_cast<std::size_t>(impact_s * clip.sample_rate);
+  const auto mag = spectrum(clip, 0, start, clip.sample_rate / 10, &bin);
+  double weighted = 0, total = 0;
+  for (std::size_t k = 0; k < mag.size(); ++k) {
+    weighted += k * bin * mag[k] * mag[k];
+    total += mag[k] * mag[k];
+  }
+  return weighted / total;
+}
+
+TEST(SoundRenderer, ASteelTopsStrikeIsBrighterAndARubberMatsDuller) {
+  // Hertz: the contact lasts ~ (m^2 / (R E*^2 v))^(1/5), so the 200 GPa steel top shortens the
+  // mug's contact against the 9 GPa laminate and puts more of the strike's energy high; a 5 MPa
+  // rubber mat lengthens it some tenfold and its loss damps the contact's ring: a duller strike.
+  // The same strike (nominal variation, same rng) on each table.
+  SimConfig config = quiet();
+  config.recording.friction_gain = 0;
+  std::map<std::string, double> centroid_hz;
+  for (const char* table : {"lab_laminate", "steel_bench", "rubber_mat"}) {
+    SimulatedRobot robot(shipped_catalogue(), "coffee_mug", config,
+                         shipped_catalogue().table_named(table));
+    SoundRenderer renderer(robot.object(), robot.table(), config);
+    const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
+    ASSERT_EQ(out.trace.impacts.size(), 1u) << table;
+    Rng rng(5);
+    const audio::AudioClip clip = renderer.render(out.trace, out.duration_s, rng);
+    centroid_hz[table] = centroid_after_impact(clip, out.trace.impacts.front().time_s);
+  }
+  EXPECT_GT(centroid_hz["steel_bench"], centroid_hz["lab_laminate"]);
+  EXPECT_LT(centroid_hz["rubber_mat"], centroid_hz["lab_laminate"]);
+}
+
+TEST(SoundRenderer, TheLabsTableByNameIsTheDefault) {
+  // Naming the default table changes nothing: the same clip, sample for sample.
+  SimConfig config;
+  SimConfig named = config;
+  named.tables = {"lab_laminate"};
+  std::vector<std::vector<float>> samples;
+  for (const SimConfig* c : {&config, &named}) {
+    SimulatedRobot robot(shipped_catalogue(), "plastic_cup", *c);
+    SoundRenderer renderer(robot.object(), robot.table(), *c);
+    Rng rng(11);
+    samples.push_back(simulate_recording(robot, renderer, SoundAction::strike, rng).clip.samples);
+  }
+  EXPECT_EQ(samples[0], samples[1]);
+}
+
 }  // namespace
 }  // namespace echoplan::sim
