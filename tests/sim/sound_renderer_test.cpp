@@ -473,11 +473,13 @@ TEST(SoundRenderer, RoomNoiseFallsSixDecibelsPerOctaveAboveItsCorner) {
   EXPECT_NEAR(band_power(flat, 0, 400, 800) / band_power(flat, 0, 800, 1600), 0.5, 0.05);
 }
 
-// One strike of `object` with `config` (nominal trial, small tilt): its clip and the impact's time
-// in the clip (s).
+// One strike of `object` with `config` (nominal trial, small tilt) on `table` (the config's if
+// none): its clip and the impact's time in the clip (s).
 std::pair<audio::AudioClip, double> strike_of(const char* object, const SimConfig& config,
-                                              std::uint64_t seed) {
-  SimulatedRobot robot(shipped_catalogue(), object, config);
+                                              std::uint64_t seed, const char* table = nullptr) {
+  SimulatedRobot robot = table ? SimulatedRobot(shipped_catalogue(), object, config,
+                                                shipped_catalogue().table_named(table))
+                               : SimulatedRobot(shipped_catalogue(), object, config);
   SoundRenderer renderer(robot.object(), robot.table(), config);
   const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
   EXPECT_EQ(out.trace.impacts.size(), 1u) << object;
@@ -635,14 +637,8 @@ TEST(SoundRenderer, ASteelTopsStrikeIsBrighterAndARubberMatsDuller) {
   config.recording.friction_gain = 0;
   std::map<std::string, double> centroid_hz;
   for (const char* table : {"lab_laminate", "steel_bench", "rubber_mat"}) {
-    SimulatedRobot robot(shipped_catalogue(), "coffee_mug", config,
-                         shipped_catalogue().table_named(table));
-    SoundRenderer renderer(robot.object(), robot.table(), config);
-    const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
-    ASSERT_EQ(out.trace.impacts.size(), 1u) << table;
-    Rng rng(5);
-    const audio::AudioClip clip = renderer.render(out.trace, out.duration_s, rng);
-    centroid_hz[table] = centroid_after_impact(clip, out.trace.impacts.front().time_s);
+    const auto [clip, impact_s] = strike_of("coffee_mug", config, 5, table);
+    centroid_hz[table] = centroid_after_impact(clip, impact_s);
   }
   EXPECT_GT(centroid_hz["steel_bench"], centroid_hz["lab_laminate"]);
   EXPECT_LT(centroid_hz["rubber_mat"], centroid_hz["lab_laminate"]);
