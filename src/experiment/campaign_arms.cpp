@@ -39,6 +39,13 @@ void check_words(const CampaignConfig& config, const CampaignArm& arm) {
   if (arm.trained_in_noise && !config.world.model.empty())
     refuse(config, arm,
            "trained_in_noise: the world's model is frozen (world.model); nothing is trained");
+  if (arm.trained_on_surfaces && config.world.type != WorldType::simulated)
+    refuse(config, arm,
+           "trained_on_surfaces: the classifier trained on other tables hears a simulated "
+           "world's recordings; a model world hears none, a dataset world fits its own");
+  if (arm.trained_on_surfaces && arm.trained_in_noise)
+    refuse(config, arm,
+           "trained_on_surfaces and trained_in_noise are two classifiers: an arm hears with one");
   const perception::ObservationKind kind = arm.observation_kind();
   if (kind == perception::ObservationKind::labels) return;
   const char* name = perception::observation_kind_name(kind);
@@ -80,6 +87,7 @@ ResolvedArm resolve_arm(const CampaignConfig& config, const CampaignArm& arm) {
   r.strategy = arm.strategy;
   r.problem = arm.problem;
   r.calibrate = arm.calibrate;
+  r.trained_on_surfaces = arm.trained_on_surfaces;
   r.line = arm.line;
   r.plans_with = {arm.observation_kind(), arm.lookalike.value_or(false), arm.trained_in_noise};
   r.planner.solver = r.plans() ? config.planner.solver : arm.strategy;
@@ -130,6 +138,7 @@ CampaignArm as_written(const ResolvedArm& arm) {
   a.problem = arm.problem;
   a.calibrate = arm.calibrate;
   a.trained_in_noise = arm.trained_in_noise();
+  a.trained_on_surfaces = arm.trained_on_surfaces;
   a.strategy = arm.strategy;
   a.observations = perception::observation_kind_name(arm.plans_with.kind);
   // Written only when it plans with them (a `lookalike: false` reads as the file not naming it).
@@ -150,6 +159,7 @@ nlohmann::json to_json(const ResolvedArm& arm, bool recorded_data) {
   if (!arm.problem.empty()) j["problem"] = arm.problem;
   if (arm.calibrate) j["calibrate"] = true;
   if (arm.trained_in_noise()) j["trained_in_noise"] = true;
+  if (arm.trained_on_surfaces) j["trained_on_surfaces"] = true;
   j["solver"] = arm.planner.solver;
   if (arm.planner.episodes > 0) j["episodes"] = arm.planner.episodes;
   if (arm.planner.step_ms > 0) j["step_ms"] = arm.planner.step_ms;

@@ -40,6 +40,7 @@ struct ResolvedArm {
   std::string strategy = kPlanStrategy;  // kPlanStrategy or a fixed strategy's solver name
   std::string problem;                   // a problem-file world's arm problem; empty: the data's
   bool calibrate = false;                // plans with the trained classifier's table
+  bool trained_on_surfaces = false;      // hears with the classifier trained on other tables
   ArmProblemKind plans_with;             // hearing and copies of its problem (defaults applied)
   // What its planner runs: the campaign's solver (or the fixed strategy) and budget, the leaf, the
   // unheard estimate as defaulted, or as self-play chose it once the campaign is prepared.

@@ -78,6 +78,12 @@ const std::vector<Field<CampaignArm>>& arm_fields() {
       {.key = "trained_in_noise",
        .member = &CampaignArm::trained_in_noise,
        .identity = Identity::unless_default},
+      // Left out of the identity at its default: campaigns written before it existed.
+      {.key = "trained_on_surfaces",
+       .member = &CampaignArm::trained_on_surfaces,
+       .identity = Identity::unless_default,
+       .worlds = Worlds::problem_files,
+       .elsewhere = kFitsPerFold},
       // Left out of the identity for the planner: campaigns written before strategies existed.
       {.key = "strategy",
        .member = &CampaignArm::strategy,
@@ -308,6 +314,9 @@ nlohmann::json campaign_json(const CampaignConfig& c, Write&& write) {
   j["training_set"] = write(training_fields(), c.training);
   if (c.training.noise.given())
     j["training_set"]["noise"] = write(noise_fields(), c.training.noise);
+  // Only when given: campaigns written before surfaces existed keep their identities.
+  if (!c.world.surfaces.empty()) j["world"]["surface"] = c.world.surfaces;
+  if (!c.training.surfaces.empty()) j["training_set"]["surfaces"] = c.training.surfaces;
   j["trials"] = nlohmann::json::array();  // a dataset world's file has none (the data has them)
   for (const ObjectGroup& g : c.groups) j["trials"].push_back(write(group_fields(), g));
   j["planner"] = write(planner_fields(), c.planner);
@@ -392,6 +401,12 @@ NoiseConfig read_noise(const YamlReader& f, const YAML::Node& n, const config_fi
   return noise;
 }
 
+// Tables by name: one, or a list (which the catalogue has is checked when the world opens it).
+std::vector<std::string> read_surfaces(const YamlReader& f, const YAML::Node& n,
+                                       const std::string& what) {
+  return n.IsSequence() ? f.names(n, what) : std::vector<std::string>{f.name(n, what)};
+}
+
 WorldConfig read_world(const YamlReader& f, const YAML::Node& root, const std::string& source) {
   const YAML::Node world = f.require(root, "world", "the campaign");
   f.expect_map(world, "world");
@@ -403,7 +418,13 @@ WorldConfig read_world(const YamlReader& f, const YAML::Node& root, const std::s
     f.fail(type, e.problem());
   }
   config_fields::read_yaml(f, world, world_fields(), {source, "world", w.recorded_data()}, w,
-                           {"type", "noise"});
+                           {"type", "noise", "surface"});
+  if (const YAML::Node n = f.optional(world, "surface", "world")) {
+    if (w.type != WorldType::simulated)
+      f.fail(n, "surface: the table a simulated world's robot acts on");
+    w.surfaces = read_surfaces(f, n, "world.surface");
+    w.surface_line = YamlReader::line_of(n);
+  }
   if (const YAML::Node n = f.optional(world, "noise", "world")) {
     if (w.type == WorldType::model)
       f.fail(n,
@@ -443,7 +464,12 @@ TrainingSetConfig read_training_set(const YamlReader& f, const YAML::Node& t,
   if (frozen_model)
     f.fail(t, "training_set: the world's model is frozen (world.model); nothing is trained");
   TrainingSetConfig training;
-  config_fields::read_yaml(f, t, training_fields(), at, training, {"noise"});
+  config_fields::read_yaml(f, t, training_fields(), at, training, {"noise", "surfaces"});
+  if (const YAML::Node n = f.optional(t, "surfaces", "training_set")) {
+    if (at.recorded_data) f.fail(n, std::string("surfaces: ") + kFitsPerFold);
+    training.surfaces = read_surfaces(f, n, "training_set.surfaces");
+    training.surfaces_line = YamlReader::line_of(n);
+  }
   if (const YAML::Node n = f.optional(t, "noise", "training_set")) {
     training.noise = read_noise(f, n, {at.source, "training_set.noise", false});
   }
@@ -593,6 +619,8 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
   config_fields::read_json(section("world"), world_fields(), "world", from, recorded, c.world);
   if (const nlohmann::json* n = jf::optional_member(section("world"), "noise", "world", from))
     config_fields::read_json(*n, noise_fields(), "world.noise", from, recorded, c.world.noise);
+  if (const nlohmann::json* n = jf::optional_member(section("world"), "surface", "world", from))
+    c.world.surfaces = jf::strings(*n, "world.surface", from);
   if (const nlohmann::json* task = jf::optional_member(j, "task", "", from)) {
     config_fields::read_json(*task, task_fields(), "task", from, recorded, c.rewards);
     config_fields::read_json(jf::member(*task, "rewards", "task", from), reward_fields(),
@@ -604,6 +632,9 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
           jf::optional_member(section("training_set"), "noise", "training_set", from))
     config_fields::read_json(*n, noise_fields(), "training_set.noise", from, recorded,
                              c.training.noise);
+  if (const nlohmann::json* n =
+          jf::optional_member(section("training_set"), "surfaces", "training_set", from))
+    c.training.surfaces = jf::strings(*n, "training_set.surfaces", from);
   c.groups = list_from_json(j, "trials", group_fields(), from, recorded);
   config_fields::read_json(section("planner"), planner_fields(), "planner", from, recorded,
                            c.planner);

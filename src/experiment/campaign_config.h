@@ -66,6 +66,9 @@ struct CampaignArm {
   // Hears with the classifier trained on the training set and on a noisy copy of it
   // (training_set.noise: multi-condition training), not the one trained in quiet alone.
   bool trained_in_noise = false;
+  // Hears with the classifier trained on the training set recorded on training_set.surfaces (the
+  // catalogue's other tables), not the one trained on the sim config's table alone.
+  bool trained_on_surfaces = false;
   int line = 0;  // where the file gives the arm (0: not read from a file); not a setting
 };
 
@@ -131,6 +134,11 @@ struct WorldConfig {
   // (none: as recorded, or the simulated lab's quiet): a simulated world's, or a dataset world's
   // over a recordings tree (a noisy copy of the tree, each recording's noise its own).
   NoiseConfig noise;
+  // A simulated world's tables (`surface:`, catalogue names): one for every trial, or a list, one
+  // drawn per trial from its seed (the same on every arm; sim/table_choice.h). Empty: the sim
+  // config's. `surface_line`: where the file gives it (0: not read from a file).
+  std::vector<std::string> surfaces;
+  int surface_line = 0;
   // The world replays recorded data (world_kind(type).recorded_data).
   bool recorded_data() const;
 };
@@ -151,6 +159,11 @@ struct TrainingSetConfig {
   // The noise of the noisy copy of the training set that an arm `trained_in_noise` also learns
   // from (multi-condition training); sources default to the world's, the ratio to "-6:24".
   NoiseConfig noise;
+  // The tables (catalogue names) of the training set an arm `trained_on_surfaces` learns from,
+  // synthesised beside the first on the same seeds, recording i of each pair on table i mod n.
+  // `surfaces_line`: where the file gives them.
+  std::vector<std::string> surfaces;
+  int surfaces_line = 0;
 };
 
 struct PlannerConfig {

@@ -17,6 +17,7 @@
 #include "loop/streams.h"
 #include "perception/heard_confusion.h"
 #include "sim/sound_action.h"
+#include "sim/table_choice.h"
 
 namespace echoplan::experiment {
 
@@ -62,10 +63,14 @@ class ProblemFileWorld final : public CampaignWorld {
                         InputFiles& files);
   WorldPresentation presentation(const CampaignConfig& config) const;
   loop::SimulatedTraining simulated_training(const CampaignConfig& config) const;
+  void load_surfaces(const CampaignConfig& config, const std::vector<ResolvedArm>& arms);
   std::shared_ptr<const perception::ObservationModel> classifier(
       const CampaignConfig& config, const ProgressFn& progress,
       const std::atomic<bool>& stop) const;
   std::shared_ptr<const perception::ObservationModel> classifier_in_noise(
+      const CampaignConfig& config, const ProgressFn& progress,
+      const std::atomic<bool>& stop) const;
+  std::shared_ptr<const perception::ObservationModel> classifier_on_surfaces(
       const CampaignConfig& config, const ProgressFn& progress,
       const std::atomic<bool>& stop) const;
   // The arms' problems and the classifiers as prepare() made them: each arm's problem as its file
@@ -75,7 +80,9 @@ class ProblemFileWorld final : public CampaignWorld {
     std::vector<std::shared_ptr<const pomdp::Problem>> arm_problems;
     std::shared_ptr<const perception::ObservationModel> model;
     std::shared_ptr<const perception::ObservationModel> model_in_noise;
+    std::shared_ptr<const perception::ObservationModel> model_on_surfaces = nullptr;
     const std::shared_ptr<const perception::ObservationModel>& of(const ResolvedArm& arm) const {
+      if (arm.trained_on_surfaces) return model_on_surfaces;
       return arm.trained_in_noise() ? model_in_noise : model;
     }
   };
@@ -93,9 +100,16 @@ class ProblemFileWorld final : public CampaignWorld {
   std::vector<std::shared_ptr<const pomdp::Problem>> arm_problems_;  // as their files say
   std::shared_ptr<const sim::Catalogue> catalogue_;
   std::shared_ptr<const sim::SimConfig> sim_config_;
+  std::shared_ptr<const sim::SimConfig> world_sim_config_;     // the trials': on world.surface
+  std::shared_ptr<const sim::SimConfig> surfaces_sim_config_;  // training_set.surfaces'
   std::shared_ptr<const perception::ObservationModel> given_model_;  // training_set.model
   CampaignNoise noise_;
 };
+
+bool any_trained_on_surfaces(const std::vector<ResolvedArm>& arms) {
+  return std::any_of(arms.begin(), arms.end(),
+                     [](const ResolvedArm& a) { return a.trained_on_surfaces; });
+}
 
 // Training on `recordings` as the campaign trains (training_set's classifier and table), the model
 // saved to `saved` for the user.
@@ -221,6 +235,45 @@ WorldPresentation ProblemFileWorld::presentation(const CampaignConfig& config) c
   return p;
 }
 
+// The sim config on `tables` (InputError at `line` of the campaign for one the catalogue lacks).
+std::shared_ptr<const sim::SimConfig> on_tables(const sim::SimConfig& base,
+                                                const sim::Catalogue& catalogue,
+                                                const std::vector<std::string>& tables,
+                                                const CampaignConfig& config, int line) {
+  sim::SimConfig on = base;
+  on.tables = tables;
+  try {
+    sim::check_tables(catalogue, on);
+  } catch (const InputError& e) {
+    throw InputError(config.source, line, e.problem());
+  }
+  return std::make_shared<const sim::SimConfig>(std::move(on));
+}
+
+// The trials' tables (world.surface) and, for an arm trained on surfaces, its training set's
+// (training_set.surfaces).
+void ProblemFileWorld::load_surfaces(const CampaignConfig& config,
+                                     const std::vector<ResolvedArm>& arms) {
+  const std::vector<std::string>& world = config.world.surfaces;
+  world_sim_config_ = world.empty() ? sim_config_
+                                    : on_tables(*sim_config_, *catalogue_, world, config,
+                                                config.world.surface_line);
+  const TrainingSetConfig& t = config.training;
+  if (any_trained_on_surfaces(arms) == t.surfaces.empty())
+    throw InputError(config.source, t.surfaces_line,
+                     t.surfaces.empty()
+                         ? "an arm trained_on_surfaces needs training_set.surfaces: the tables "
+                           "its training set is recorded on"
+                         : "training_set.surfaces is what an arm `trained_on_surfaces` learns "
+                           "from, and no arm is");
+  if (t.surfaces.empty()) return;
+  if (!t.model.empty() || !t.recordings.empty() || t.recordings_per_pair == 0)
+    throw InputError(config.source, t.surfaces_line,
+                     "training_set.surfaces records a training set: it needs recordings_per_pair "
+                     "> 0 and no training_set.model or recordings");
+  surfaces_sim_config_ = on_tables(*sim_config_, *catalogue_, t.surfaces, config, t.surfaces_line);
+}
+
 void ProblemFileWorld::open(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
                             CampaignResults& results, InputFiles& files) {
   recordings_ = config.training.recordings.empty() ? training_ / "recordings"
@@ -229,6 +282,7 @@ void ProblemFileWorld::open(const CampaignConfig& config, const std::vector<Reso
   load_simulator(config, files);
   check_objects(config, results.spec);
   noise_ = load_campaign_noise(config, arms);
+  load_surfaces(config, arms);
   results.world = presentation(config);
   results.groups = config.groups;
   if (!config.training.recordings.empty() && !fs::is_directory(config.training.recordings))
@@ -285,6 +339,22 @@ std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier
   return loop::prepare_observation(training, nullptr, "", progress, stop).model;
 }
 
+// The classifier an arm trained on surfaces hears with: DIR/training/model_on_surfaces.json of an
+// earlier run, or trained now on its own training set (DIR/training/recordings_on_surfaces), the
+// first's seeds recorded on training_set.surfaces.
+std::shared_ptr<const perception::ObservationModel> ProblemFileWorld::classifier_on_surfaces(
+    const CampaignConfig& config, const ProgressFn& progress, const std::atomic<bool>& stop) const {
+  const fs::path saved = training_ / "model_on_surfaces.json";
+  if (fs::exists(saved)) return saved_model(saved, progress, stop);
+  loop::SimulatedTraining on_surfaces = simulated_training(config);
+  on_surfaces.config = surfaces_sim_config_;
+  on_surfaces.directory = training_ / "recordings_on_surfaces";
+  if (!loop::synthesise_training_set(on_surfaces, progress, stop)) return nullptr;
+  return loop::prepare_observation(campaign_training(config, on_surfaces.directory, saved), nullptr,
+                                   "", progress, stop)
+      .model;
+}
+
 std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
                                                   std::vector<ResolvedArm>& arms,
                                                   const ProgressFn& progress,
@@ -301,6 +371,10 @@ std::optional<ArmLoops> ProblemFileWorld::prepare(const CampaignConfig& config,
     if (any_trained_in_noise(arms)) {
       prepared.model_in_noise = classifier_in_noise(config, progress, stop);
       if (!prepared.model_in_noise) return std::nullopt;
+    }
+    if (any_trained_on_surfaces(arms)) {
+      prepared.model_on_surfaces = classifier_on_surfaces(config, progress, stop);
+      if (!prepared.model_on_surfaces) return std::nullopt;
     }
     for (std::size_t a = 0; a < arms.size(); ++a) {
       if (!arms[a].calibrate) continue;
@@ -370,7 +444,7 @@ ArmLoops ProblemFileWorld::make_loops(const CampaignConfig& config,
                             ? world_problem_
                             : graded_world.at(key(arms[a]));
       if (simulates_) {
-        s.world = loop::SimulatedWorldSpec{catalogue_, sim_config_};
+        s.world = loop::SimulatedWorldSpec{catalogue_, world_sim_config_};
         s.observation_model = prepared.of(arms[a]);
         s.noise = noise_.world;
         if (group.object != group.plays) s.world_objects[group.plays] = group.object;

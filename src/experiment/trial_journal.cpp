@@ -55,6 +55,8 @@ nlohmann::json to_json(const JournalEntry& entry) {
                       {"step_log", std::move(steps)}};
   // Only a dataset world's trials have one (journals of other worlds keep their bytes).
   if (!entry.session.empty()) j["session"] = entry.session;
+  // Only a world that chose a surface names it (journals of the lab's table keep their bytes).
+  if (!r.surface.empty()) j["surface"] = r.surface;
   return j;
 }
 
@@ -114,6 +116,8 @@ JournalEntry journal_entry_from_json(const nlohmann::json& j, const std::string&
       jf::number(jf::member(j, "discounted_reward", "", source), "discounted_reward", source);
   r.collision = jf::boolean(jf::member(j, "collision", "", source), "collision", source);
   r.capped = jf::boolean(jf::member(j, "capped", "", source), "capped", source);
+  if (const auto* surface = jf::optional_member(j, "surface", "", source))
+    r.surface = jf::string(*surface, "surface", source);
   const nlohmann::json& log = jf::array(jf::member(j, "step_log", "", source), "step_log", source);
   for (std::size_t i = 0; i < log.size(); ++i) {
     StepRecord s = step_from_json(log[i], jf::element("step_log", i), source);

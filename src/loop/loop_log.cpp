@@ -159,6 +159,7 @@ void LoopLog::write_trial(nlohmann::json settings, const std::optional<Trial>& t
          {"collision", r.collision},
          {"capped", r.capped},
          {"final_action", model_.spec().action_names[trial->steps.back().record.action]}});
+    if (!r.surface.empty()) settings["surface"] = r.surface;
     add_capture_and_faults(settings, *trial);
   }
   write_file_atomically(directory_ / "trial.json", settings.dump(2) + "\n");

@@ -40,6 +40,9 @@ struct TrialRecord {
   double discounted_reward = 0.0;  // sum_t gamma^t r_t
   bool collision = false;
   bool capped = false;  // stopped by max_steps rather than by a terminal step
+  // The surface the world's robot acted on (robot::ActionReport::surface); empty when it names
+  // none.
+  std::string surface;
 };
 
 }  // namespace echoplan::loop

@@ -110,6 +110,7 @@ std::optional<Trial> run_trial(const TrialParts& parts, const TrialOptions& opti
     r.heard_probability = outcome.heard_probability;
     r.heard_ebr_db = outcome.heard_ebr_db;
     s.robot = std::move(happened.robot);
+    if (s.robot && !s.robot->report.surface.empty()) record.surface = s.robot->report.surface;
     s.terminal = outcome.terminal || outcome.collision;
     count_step(record, r, weight, gamma);
     if (s.robot && s.robot->fault)

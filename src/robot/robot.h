@@ -36,6 +36,9 @@ struct ActionReport {
   // was), so the same action may be repeated. The loop then retries it (loop/robot_world.h); a
   // failure the arm does not call safe ends the trial.
   bool retry_safe = false;
+  // The surface the robot acted on, when it knows and it was chosen (the simulator's table when
+  // its config names one: sim/table_choice.h); empty otherwise.
+  std::string surface;
 };
 
 class Robot {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "common/error.h"
+#include "sim/table_choice.h"
 
 namespace echoplan::robot {
 
@@ -27,6 +28,7 @@ SimulatedWorld::SimulatedWorld(sim::Catalogue catalogue, sim::SimConfig config,
     if (sim::find_sound_action(a))
       throw InputError("sorting action '" + a +
                        "' has the name of one of the simulator's sensing actions");
+  sim::check_tables(catalogue_, config_);
 }
 
 SimulatedWorld::~SimulatedWorld() = default;
@@ -51,16 +53,19 @@ void SimulatedWorld::throw_unknown_action(const std::string& action) const {
 }
 
 void SimulatedWorld::begin_trial(const TrialContext& context) {
-  auto it = rigs_.find(context.object);
+  named_ = sim::table_of_trial(config_, context.seed);
+  const sim::TableSpec& table = catalogue_.table_named(named_);
+  auto it = rigs_.find({context.object, table.name});
   if (it == rigs_.end()) {
     // Compiling a MuJoCo scene takes milliseconds; trials of the same object reuse it.
     ObjectRig rig;
-    rig.robot = std::make_unique<sim::SimulatedRobot>(catalogue_, context.object, config_);
+    rig.robot = std::make_unique<sim::SimulatedRobot>(catalogue_, context.object, config_, table);
     rig.renderer =
         std::make_unique<sim::SoundRenderer>(rig.robot->object(), rig.robot->table(), config_);
-    it = rigs_.emplace(context.object, std::move(rig)).first;
+    it = rigs_.emplace(std::pair{context.object, table.name}, std::move(rig)).first;
   }
   rig_ = &it->second;
+  surface_ = table.name;
   physics_rng_.seed(derive_seed(context.seed, {physics}));
   sound_rng_.seed(derive_seed(context.seed, {sound}));
   // The lab's reset: arm home, object at its place (with the trial's placement drawn); every action
@@ -73,7 +78,7 @@ void SimulatedWorld::begin_trial(const TrialContext& context) {
 
 ActionReport SimulatedWorld::execute(const std::string& action) {
   if (!rig_) throw std::logic_error("SimulatedWorld::execute before begin_trial()");
-  if (is_sorting(action)) return ActionReport{action, ActionStatus::done, "", 0.0};
+  if (is_sorting(action)) return ActionReport{action, ActionStatus::done, "", 0.0, false, named_};
   // The name is resolved here, once; the simulator takes the action itself.
   const std::optional<sim::SoundAction> sound = sim::find_sound_action(action);
   if (!sound) throw_unknown_action(action);
@@ -83,7 +88,7 @@ ActionReport SimulatedWorld::execute(const std::string& action) {
 ActionReport SimulatedWorld::execute_sensing(const std::string& name, sim::SoundAction action) {
   sim::ActionOutcome outcome = rig_->robot->execute(action, physics_rng_);
   if (listening_) hear(rig_->renderer->render(outcome.trace, outcome.duration_s, sound_rng_));
-  ActionReport report{name, outcome.status, outcome.reason, outcome.duration_s};
+  ActionReport report{name, outcome.status, outcome.reason, outcome.duration_s, false, named_};
   last_outcome_ = std::move(outcome);
   return report;
 }

@@ -41,7 +41,8 @@ namespace echoplan::robot {
 class SimulatedWorld {
  public:
   // `sorting_actions` are the names this world accepts as sorting actions. Throws InputError when a
-  // sorting action is named like a sensing action.
+  // sorting action is named like a sensing action, or the config names a table the catalogue does
+  // not have.
   SimulatedWorld(sim::Catalogue catalogue, sim::SimConfig config,
                  std::vector<std::string> sorting_actions);
   ~SimulatedWorld();
@@ -57,9 +58,10 @@ class SimulatedWorld {
   // (sim::SoundAction) nor one of this world's sorting actions.
   void check_action(const std::string& action) const;
 
-  // Resets the scene of `context.object` (the MuJoCo model of each object is compiled once per
-  // world and reused), seeds the trial's physics and sound streams from `context.seed` and draws
-  // the trial's placement from the physics stream. Stops listening.
+  // Resets the scene of `context.object` on the trial's table (the config's table, or one of its
+  // list drawn from `context.seed`: sim/table_choice.h; the MuJoCo model of each object and table
+  // is compiled once per world and reused), seeds the trial's physics and sound streams from
+  // `context.seed` and draws the trial's placement from the physics stream. Stops listening.
   void begin_trial(const TrialContext& context);
 
   // Executes `action` (see the file comment). Throws InputError for an unknown action and
@@ -74,6 +76,8 @@ class SimulatedWorld {
   // The simulator's account of the last sensing action (for logs); empty before the first one and
   // after begin_trial().
   const std::optional<sim::ActionOutcome>& last_outcome() const { return last_outcome_; }
+  // The name of the table the trial is on (empty before the first begin_trial()).
+  const std::string& surface() const { return surface_; }
   const sim::Catalogue& catalogue() const { return catalogue_; }
   const sim::SimConfig& config() const { return config_; }
 
@@ -91,10 +95,13 @@ class SimulatedWorld {
   sim::Catalogue catalogue_;
   sim::SimConfig config_;
   std::vector<std::string> sorting_actions_;
-  std::map<std::string, ObjectRig> rigs_;  // by object name, built on first use
-  ObjectRig* rig_ = nullptr;               // the trial's object
-  Rng physics_rng_{0};                     // the trial's variability (speeds, placement, ...)
-  Rng sound_rng_{0};                       // the trial's room, surface profile and noise
+  // By object and table name, built on first use.
+  std::map<std::pair<std::string, std::string>, ObjectRig> rigs_;
+  ObjectRig* rig_ = nullptr;  // the trial's object on its table
+  std::string surface_;       // the trial's table
+  std::string named_;         // the same when the config chose it, empty on the default
+  Rng physics_rng_{0};        // the trial's variability (speeds, placement, ...)
+  Rng sound_rng_{0};          // the trial's room, surface profile and noise
   bool listening_ = false;
   audio::AudioClip heard_;  // everything emitted since start_listening()
   std::optional<sim::ActionOutcome> last_outcome_;

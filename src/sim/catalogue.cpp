@@ -121,6 +121,21 @@ std::vector<std::string> Catalogue::object_names() const {
   return names;
 }
 
+const TableSpec& Catalogue::table_named(const std::string& name) const {
+  if (name.empty()) return table;
+  auto it = tables.find(name);
+  if (it != tables.end()) return it->second;
+  std::string known;
+  for (const auto& n : table_names()) known += (known.empty() ? "" : ", ") + n;
+  throw InputError(source, 0, "unknown table '" + name + "' (the catalogue has: " + known + ")");
+}
+
+std::vector<std::string> Catalogue::table_names() const {
+  std::vector<std::string> names;
+  for (const auto& [name, spec] : tables) names.push_back(name);
+  return names;
+}
+
 namespace {
 
 Material read_material(const YamlReader& f, const std::string& name, const YAML::Node& node) {
@@ -157,6 +172,57 @@ const Material& find_material(const Catalogue& c, const YamlMapping& r) {
   auto it = c.materials.find(name);
   if (it == c.materials.end()) r.fail(r.node()["material"], "unknown material '" + name + "'");
   return it->second;
+}
+
+// The default table's name when `table:` gives none.
+constexpr const char* kDefaultTableName = "table";
+
+const Material& find_surface(const Catalogue& c, const YamlMapping& r) {
+  const std::string name = r.name("surface");
+  auto it = c.materials.find(name);
+  if (it == c.materials.end()) r.fail(r.node()["surface"], "unknown material '" + name + "'");
+  return it->second;
+}
+
+// A table's fields (the default's under `table:` or a named one under `tables:`); `name` unless
+// the mapping gives its own.
+TableSpec read_table(const Catalogue& c, const YamlMapping& r, const std::string& name) {
+  r.only_keys({"name", "material", "surface", "friction", "modes", "dense_modes", "thickness",
+               "contact_loss_factor"});
+  TableSpec t;
+  t.name = r.has("name") ? r.name("name") : name;
+  t.material = find_material(c, r);
+  t.surface = r.has("surface") ? find_surface(c, r) : t.material;
+  t.friction = r.number_or("friction", 0.45, NumberRange::above(0));
+  if (r.has("modes")) t.modes = read_modes(r.reader(), r.entry(), r.node()["modes"]);
+  if (r.has("dense_modes")) {
+    const YamlMapping dense(r.reader(), r.entry() + ".dense_modes", r.node()["dense_modes"]);
+    dense.only_keys({"from", "to", "count"});
+    t.dense.from_hz = dense.number("from", NumberRange::above(0));
+    t.dense.to_hz = dense.number("to", NumberRange::above(t.dense.from_hz));
+    t.dense.count = static_cast<int>(dense.number("count", NumberRange::at_least(1).below(1000)));
+  }
+  t.thickness = r.number_or("thickness", 0.025, NumberRange::above(0));
+  t.contact_loss_factor =
+      r.number_or("contact_loss_factor", 0.0, NumberRange::at_least(0).below(1.0));
+  return t;
+}
+
+// `tables:`: the other tables by name, each with every field of its own (a named table is a
+// whole table, not a change to the default, so nothing is inherited silently).
+void read_named_tables(Catalogue& c, const YamlMapping& top) {
+  const YAML::Node tables = top.node()["tables"];
+  if (!tables.IsMap() || tables.size() == 0) top.fail(tables, "'tables' must map names to tables");
+  for (const auto& kv : tables) {
+    const std::string name = top.reader().name(kv.first, "each key of 'tables'");
+    const YamlMapping r(top.reader(), "tables." + name, kv.second);
+    if (r.has("name")) r.fail(r.node()["name"], "a named table's name is its key");
+    for (const char* key : {"friction", "thickness", "contact_loss_factor"}) r.required(key);
+    if (c.tables.count(name))
+      top.reader().fail(
+          kv.first, "table '" + name + "' is named twice (the default is '" + c.table.name + "')");
+    c.tables[name] = read_table(c, r, name);
+  }
 }
 
 ObjectSpec read_original(const Catalogue& c, const std::string& name, const YamlMapping& r) {
@@ -215,7 +281,7 @@ Catalogue read_catalogue(const YamlReader& f, const YAML::Node& root) {
   Catalogue c;
   c.source = f.file();
   const YamlMapping top(f, "the catalogue", root);
-  top.only_keys({"materials", "table", "objects"});
+  top.only_keys({"materials", "table", "tables", "objects"});
 
   const YAML::Node materials = top.required("materials");
   if (!materials.IsMap()) top.fail(materials, "'materials' must map names to materials");
@@ -224,31 +290,9 @@ Catalogue read_catalogue(const YamlReader& f, const YAML::Node& root) {
     c.materials[name] = read_material(f, name, kv.second);
   }
 
-  const YamlMapping table(f, "table", top.required("table"));
-  table.only_keys({"material", "surface", "friction", "modes", "dense_modes", "thickness",
-                   "contact_loss_factor"});
-  c.table.material = find_material(c, table);
-  c.table.surface = c.table.material;
-  if (table.has("surface")) {
-    const std::string name = table.name("surface");
-    auto it = c.materials.find(name);
-    if (it == c.materials.end())
-      table.fail(table.node()["surface"], "unknown material '" + name + "'");
-    c.table.surface = it->second;
-  }
-  c.table.friction = table.number_or("friction", 0.45, NumberRange::above(0));
-  if (table.has("modes")) c.table.modes = read_modes(f, "table", table.node()["modes"]);
-  if (table.has("dense_modes")) {
-    const YamlMapping dense(f, "table.dense_modes", table.node()["dense_modes"]);
-    dense.only_keys({"from", "to", "count"});
-    c.table.dense.from_hz = dense.number("from", NumberRange::above(0));
-    c.table.dense.to_hz = dense.number("to", NumberRange::above(c.table.dense.from_hz));
-    c.table.dense.count =
-        static_cast<int>(dense.number("count", NumberRange::at_least(1).below(1000)));
-  }
-  c.table.thickness = table.number_or("thickness", 0.025, NumberRange::above(0));
-  c.table.contact_loss_factor =
-      table.number_or("contact_loss_factor", 0.0, NumberRange::at_least(0).below(1.0));
+  c.table = read_table(c, YamlMapping(f, "table", top.required("table")), kDefaultTableName);
+  c.tables[c.table.name] = c.table;
+  if (top.has("tables")) read_named_tables(c, top);
 
   // Originals first, so a modified object can name any original regardless of order in the file.
   const YAML::Node objects = top.required("objects");

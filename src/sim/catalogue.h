@@ -97,6 +97,7 @@ struct DenseModes {
 // The table: its material (for contact stiffness and its modes' damping), friction, its own listed
 // modes and its dense modal field, and the damping of an object held against it.
 struct TableSpec {
+  std::string name;  // the catalogue's name for it (a world or a training set chooses by name)
   Material material;
   // The top's surface layer that a contact presses on (a laminate on an MDF core): a Hertz contact
   // a fraction of a millimetre wide stresses the top millimetre, so its modulus sets the contact's
@@ -115,12 +116,16 @@ struct TableSpec {
 struct Catalogue {
   std::string source;  // the file it was read from (for messages)
   std::map<std::string, Material> materials;
-  TableSpec table;
+  TableSpec table;                          // the default: the lab's (`table:`)
+  std::map<std::string, TableSpec> tables;  // every table by name, the default's too (`tables:`)
   std::map<std::string, ObjectSpec> objects;
 
   // The object called `name`; throws InputError listing the known names if there is none.
   const ObjectSpec& object(const std::string& name) const;
   std::vector<std::string> object_names() const;  // sorted
+  // The table called `name` (empty: the default); throws InputError listing the known names.
+  const TableSpec& table_named(const std::string& name) const;
+  std::vector<std::string> table_names() const;  // sorted
 };
 
 // Reads a catalogue file. Throws echoplan::InputError naming the file, the line and the entry for a

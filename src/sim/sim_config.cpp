@@ -57,9 +57,12 @@ SimConfig read_sim_config(const YamlReader& f, const YAML::Node& root) {
   SimConfig c;
   if (root.IsNull()) return c;
   f.expect_map(root, "the sim config");
-  const std::vector<std::string> sections{"variability", "microphone", "room",
-                                          "recording",   "arm",        "physics"};
+  const std::vector<std::string> sections{"table",     "variability", "microphone", "room",
+                                          "recording", "arm",         "physics"};
   f.only_keys(root, sections, "the sim config");
+  // Checked against the catalogue where both are known (sim/table_choice.h).
+  if (const YAML::Node t = root["table"])
+    c.tables = t.IsSequence() ? f.names(t, "table") : std::vector<std::string>{f.name(t, "table")};
   auto& v = c.variability;
   read_section(
       f, root, "variability",

@@ -156,6 +156,9 @@ struct PhysicsConfig {
 };
 
 struct SimConfig {
+  // The catalogue's tables the recordings and trials are made on (`table:`, a name or a list;
+  // sim/table_choice.h says which gets which); empty: the catalogue's default table.
+  std::vector<std::string> tables;
   VariabilityConfig variability;
   MicrophoneConfig microphone;
   RoomConfig room;

@@ -17,6 +17,7 @@
 #include "sim/recording.h"
 #include "sim/simulated_robot.h"
 #include "sim/sound_action.h"
+#include "sim/table_choice.h"
 
 namespace echoplan::sim {
 
@@ -51,8 +52,9 @@ std::vector<Job> list_jobs(const std::filesystem::path& root,
   return jobs;
 }
 
-// The manifest at `path`, truncated, with its header row written.
-std::ofstream open_manifest(const std::filesystem::path& path) {
+// The manifest at `path`, truncated, with its header row written; a `surface` column when the
+// config names tables (sets recorded on the default table keep their manifest as it was).
+std::ofstream open_manifest(const std::filesystem::path& path, bool surfaces) {
   std::ofstream manifest(path, std::ios::trunc);
   if (!manifest) throw InputError(path.string(), 0, "cannot write the manifest");
   manifest << "file,object,action,seed,collision,duration_s,impacts";
@@ -62,6 +64,7 @@ std::ofstream open_manifest(const std::filesystem::path& path) {
   // action of an object is its exploration (session) i + 1, so the set is a dataset world's data
   // as it stands (docs/feature-sets.md).
   manifest << ",session";
+  if (surfaces) manifest << ",surface";
   manifest << '\n' << std::flush;
   return manifest;
 }
@@ -100,7 +103,8 @@ SimulatedRecordingsSummary write_simulated_recordings(const Catalogue& catalogue
   if (ec)
     throw InputError(options.output_dir, 0, "cannot create the output folder: " + ec.message());
   const fs::path manifest_path = root / "manifest.csv";
-  std::ofstream manifest = open_manifest(manifest_path);
+  check_tables(catalogue, config);  // before any file
+  std::ofstream manifest = open_manifest(manifest_path, !config.tables.empty());
 
   // The clips in manifest order. Workers take the next clip in turn; each keeps one robot and
   // renderer for the object it is on (compiling the MuJoCo scene is the expensive part). Every clip
@@ -122,9 +126,10 @@ SimulatedRecordingsSummary write_simulated_recordings(const Catalogue& catalogue
     ++summary.written;
     if (d.collision) ++summary.collisions;
   };
-  // What a thread keeps between its clips: the robot and renderer of the object it is on.
+  // What a thread keeps between its clips: the robot and renderer of the object and table it is
+  // on.
   struct CurrentObject {
-    std::string object;
+    std::string object, table;
     std::unique_ptr<SimulatedRobot> robot;
     std::unique_ptr<SoundRenderer> renderer;
   };
@@ -134,11 +139,13 @@ SimulatedRecordingsSummary write_simulated_recordings(const Catalogue& catalogue
         auto scene = std::make_shared<CurrentObject>();
         return [&, scene](std::size_t k) {
           const Job& job = jobs[k];
-          if (job.object != scene->object) {
-            scene->robot = std::make_unique<SimulatedRobot>(catalogue, job.object, config);
+          const TableSpec& table = table_of_recording(catalogue, config, job.index);
+          if (job.object != scene->object || table.name != scene->table) {
+            scene->robot = std::make_unique<SimulatedRobot>(catalogue, job.object, config, table);
             scene->renderer = std::make_unique<SoundRenderer>(scene->robot->object(),
                                                               scene->robot->table(), config);
             scene->object = job.object;
+            scene->table = table.name;
           }
           const std::string action = to_string(job.action);
           const std::uint64_t seed = clip_seed(options.seed, job.object, action, job.index);
@@ -151,6 +158,7 @@ SimulatedRecordingsSummary write_simulated_recordings(const Catalogue& catalogue
           audio::write_audio(partial.string(), r.clip, audio::WriteOptions{});
           move_into_place(partial, final_path);
           std::string row = manifest_row(relative, job.object, action, job.index, seed, r.outcome);
+          if (!config.tables.empty()) row += "," + table.name;
           std::lock_guard lock(mutex);
           done[k] = Done{relative, std::move(row), r.outcome.collision()};
           for (; next_row < done.size() && done[next_row]; ++next_row) {

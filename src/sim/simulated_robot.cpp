@@ -10,6 +10,7 @@
 #include "sim/approach.h"
 #include "sim/arm_kinematics.h"
 #include "sim/scene.h"
+#include "sim/table_choice.h"
 
 namespace echoplan::sim {
 
@@ -22,8 +23,12 @@ constexpr double kFallenCosine =
 
 SimulatedRobot::SimulatedRobot(const Catalogue& catalogue, const std::string& object,
                                const SimConfig& config)
+    : SimulatedRobot(catalogue, object, config, table_of_recording(catalogue, config, 0)) {}
+
+SimulatedRobot::SimulatedRobot(const Catalogue& catalogue, const std::string& object,
+                               const SimConfig& config, const TableSpec& table)
     : object_(catalogue.object(object)),
-      table_(catalogue.table),
+      table_(table),
       config_(config),
       scene_(std::make_unique<Scene>(object_, table_, config.physics)) {}
 

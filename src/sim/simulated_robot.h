@@ -57,7 +57,11 @@ class SimulatedRobot {
   // Builds the scene for `object` (compiling the MuJoCo model once). The catalogue and config are
   // copied. No trial has begun: the first execute() begins one (drawing its placement from its
   // rng).
+  // On the first of the config's tables (the catalogue's default when it names none).
   SimulatedRobot(const Catalogue& catalogue, const std::string& object, const SimConfig& config);
+  // On `table`.
+  SimulatedRobot(const Catalogue& catalogue, const std::string& object, const SimConfig& config,
+                 const TableSpec& table);
   ~SimulatedRobot();
   SimulatedRobot(const SimulatedRobot&) = delete;
   SimulatedRobot& operator=(const SimulatedRobot&) = delete;

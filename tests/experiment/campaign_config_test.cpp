@@ -290,6 +290,80 @@ TEST_F(CampaignNoiseConfig, ADatasetWorldTakesNoiseAndArmsTrainedInIt) {
             std::string::npos);
 }
 
+TEST(CampaignConfig, ShippedSurfacesCampaignHoldsItsTrialsTableOutOfTraining) {
+  const CampaignConfig c =
+      load_campaign_config(echoplan::testing::source_dir() + "/experiments/surfaces.yaml");
+  ASSERT_EQ(c.world.surfaces.size(), 1u);
+  ASSERT_FALSE(c.training.surfaces.empty());
+  for (const std::string& heard : c.training.surfaces) EXPECT_NE(heard, c.world.surfaces[0]);
+  ASSERT_EQ(c.arms.size(), 2u);
+  EXPECT_FALSE(c.arms[0].trained_on_surfaces);
+  EXPECT_TRUE(c.arms[1].trained_on_surfaces);
+  ASSERT_EQ(c.groups.size(), 4u);  // the main job's four objects
+}
+
+TEST(CampaignConfig, SurfacesAreANameOrAListAndRoundTrip) {
+  const std::string head = "arms:\n  - {name: a, problem: p.yaml, trained_on_surfaces: true}\n";
+  const std::string tail = "trials:\n  - {object: mug}\nplanner: {episodes: 100}\n";
+  const CampaignConfig one = parse_campaign_config(
+      head + "world: {type: simulated, problem: w.yaml, surface: steel_bench}\n" + tail,
+      "/dir/c.yaml");
+  EXPECT_EQ(one.world.surfaces, (std::vector<std::string>{"steel_bench"}));
+  EXPECT_EQ(one.world.surface_line, 3);
+  const CampaignConfig list = parse_campaign_config(
+      head + "world: {type: simulated, problem: w.yaml, surface: [oak_top, glass_top]}\n" +
+          "training_set: {surfaces: [lab_laminate, rubber_mat]}\n" + tail,
+      "/dir/c.yaml");
+  EXPECT_EQ(list.world.surfaces, (std::vector<std::string>{"oak_top", "glass_top"}));
+  EXPECT_EQ(list.training.surfaces, (std::vector<std::string>{"lab_laminate", "rubber_mat"}));
+  EXPECT_EQ(list.training.surfaces_line, 4);
+  const CampaignConfig back = campaign_config_from_json(to_json(list), "campaign.json");
+  EXPECT_EQ(back.world.surfaces, list.world.surfaces);
+  EXPECT_EQ(back.training.surfaces, list.training.surfaces);
+  EXPECT_TRUE(back.arms[0].trained_on_surfaces);
+  EXPECT_EQ(to_json(back), to_json(list));
+}
+
+TEST(CampaignConfig, SurfacesEnterTheIdentityOnlyWhenGiven) {
+  // Campaigns written before surfaces existed keep their identities: no key at all without them.
+  const CampaignConfig c =
+      load_campaign_config(echoplan::testing::source_dir() + "/experiments/surfaces.yaml");
+  CampaignConfig without = c;
+  without.world.surfaces.clear();
+  without.training.surfaces.clear();
+  for (CampaignArm& arm : without.arms) arm.trained_on_surfaces = false;
+  without.arms[1].name = "other";
+  // campaign.json lists every arm key (as it does trained_in_noise); the identity only those given.
+  const std::string plain = without.identity().dump();
+  for (const char* key : {"\"surface\"", "\"surfaces\"", "\"trained_on_surfaces\""})
+    EXPECT_EQ(plain.find(key), std::string::npos) << key;
+  const nlohmann::json json = to_json(without);
+  EXPECT_FALSE(json["world"].contains("surface"));
+  EXPECT_FALSE(json["training_set"].contains("surfaces"));
+  const std::string given = c.identity().dump();
+  EXPECT_NE(given.find("\"surface\":[\"steel_bench\"]"), std::string::npos) << given;
+  EXPECT_NE(given.find("\"trained_on_surfaces\":true"), std::string::npos) << given;
+  CampaignConfig other = c;
+  other.world.surfaces = {"glass_top"};
+  EXPECT_NE(other.identity(), c.identity());
+}
+
+TEST(CampaignConfig, SurfaceMistakesNameTheLine) {
+  const std::string head = "arms:\n  - {name: a, problem: p.yaml}\nworld:\n  type: ";
+  const std::string tail = "\ntrials:\n  - {object: mug}\nplanner: {episodes: 100}\n";
+  EXPECT_EQ(error_of(head + "model\n  problem: w.yaml\n  surface: steel_bench" + tail),
+            "6: surface: the table a simulated world's robot acts on");
+  EXPECT_EQ(error_of(head + "simulated\n  problem: w.yaml\n  surface: [oak_top, oak_top]" + tail)
+                .substr(0, 2),
+            "6:");
+  EXPECT_EQ(error_of(head + "simulated\n  problem: w.yaml\n  surface: []" + tail),
+            "6: world.surface must not be empty");
+  EXPECT_NE(arm_error_of(with_arm("{name: a, problem: p.yaml, trained_on_surfaces: true}"))
+                .find("trained_on_surfaces: the classifier trained on other tables hears a "
+                      "simulated"),
+            std::string::npos);
+}
+
 TEST(CampaignConfig, ShippedDefaultNamesTheReportsNumbers) {
   const CampaignConfig c =
       load_campaign_config(echoplan::testing::source_dir() + "/experiments/chapter5.yaml");

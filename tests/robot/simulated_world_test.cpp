@@ -4,10 +4,12 @@
 
 #include <cmath>
 #include <memory>
+#include <set>
 #include <stdexcept>
 
 #include "../common/source_dir.h"
 #include "common/error.h"
+#include "sim/table_choice.h"
 
 namespace echoplan::robot {
 namespace {
@@ -144,6 +146,47 @@ TEST(SimulatedWorld, RejectsUnknownObjectsAndActions) {
   SimulatedMicrophone mic(world);
   EXPECT_THROW(mic.stop(), std::logic_error);  // stop without start
   EXPECT_THROW(SimulatedWorld(shipped_catalogue(), sim::SimConfig{}, {"strike"}), InputError);
+}
+
+TEST(SimulatedWorld, ATrialsTableIsDrawnFromItsSeedTheSameForEveryWorld) {
+  // Two worlds stand for two arms of a campaign: given the trial's seed, each meets the same table
+  // and hears the same strike, whatever the other trials before it were.
+  sim::SimConfig config;
+  config.tables = {"lab_laminate", "steel_bench", "rubber_mat"};
+  const std::vector<std::string> sorting{"move_to_A", "move_to_B"};
+  SimulatedWorld first(shipped_catalogue(), config, sorting);
+  SimulatedWorld second(shipped_catalogue(), config, sorting);
+  std::set<std::string> met;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    first.begin_trial({0, "plastic_cup", seed});
+    second.begin_trial({0, "plastic_cup", 100 + seed});  // another trial first on this arm
+    second.begin_trial({0, "plastic_cup", seed});
+    EXPECT_EQ(first.surface(), second.surface()) << seed;
+    EXPECT_EQ(first.surface(), sim::table_of_trial(config, seed));
+    met.insert(first.surface());
+    if (seed > 2) continue;
+    first.start_listening();
+    second.start_listening();
+    const ActionReport report = first.execute("strike");
+    EXPECT_EQ(report.surface, first.surface());
+    second.execute("strike");
+    EXPECT_EQ(first.stop_listening().samples, second.stop_listening().samples) << seed;
+  }
+  EXPECT_EQ(met.size(), 3u);  // 12 trials meet every table of three
+}
+
+TEST(SimulatedWorld, OnTheDefaultTableTheReportNamesNoSurface) {
+  auto world = make_world();
+  SimulatedArm arm(world);
+  arm.begin_trial({0, "coffee_mug", 7});
+  EXPECT_EQ(world->surface(), "lab_laminate");
+  EXPECT_EQ(arm.execute("strike").surface, "");  // logs of the lab's table keep their bytes
+}
+
+TEST(SimulatedWorld, AnUnknownTableIsRefusedWhenTheWorldIsBuilt) {
+  sim::SimConfig config;
+  config.tables = {"marble"};
+  EXPECT_THROW(SimulatedWorld(shipped_catalogue(), config, {"move_to_A"}), InputError);
 }
 
 }  // namespace

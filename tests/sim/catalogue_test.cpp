@@ -237,5 +237,84 @@ TEST(Catalogue, MissingFileIsAnInputError) {
   EXPECT_THROW(load_catalogue("/nonexistent/catalogue.yaml"), InputError);
 }
 
+// kValid with a named table under `tables:` (its key on line 22, its fields from line 23).
+std::string with_named_table(const std::string& table_body) {
+  return kValid + "tables:\n  steel_top:\n" + table_body;
+}
+
+const std::string kSteelTop =
+    "    material: wood\n    friction: 0.5\n    thickness: 0.006\n    contact_loss_factor: 0.02\n";
+
+TEST(Catalogue, ShippedTablesAreTheLabsDefaultAndFourOthers) {
+  const Catalogue c = load_catalogue(kCatalogue);
+  EXPECT_EQ(c.table.name, "lab_laminate");
+  EXPECT_EQ(c.table_names(), (std::vector<std::string>{"glass_top", "lab_laminate", "oak_top",
+                                                       "rubber_mat", "steel_bench"}));
+  EXPECT_EQ(c.table_named("").name, "lab_laminate");
+  EXPECT_EQ(c.table_named("steel_bench").material.name, "steel");
+  EXPECT_EQ(c.table_named("glass_top").material.name, "float_glass");
+  EXPECT_EQ(c.table_named("oak_top").material.name, "oak");
+  // The mat lies on the lab's top: the MDF rings, the contact presses on rubber (E ~1-10 MPa, a
+  // loss factor of 0.1-0.5 near 1 kHz).
+  const TableSpec& mat = c.table_named("rubber_mat");
+  EXPECT_EQ(mat.material.name, "mdf");
+  EXPECT_EQ(mat.surface.name, "rubber");
+  EXPECT_GE(mat.surface.youngs_modulus, 1e6);
+  EXPECT_LE(mat.surface.youngs_modulus, 1e7);
+  const double omega = 2 * 3.141592653589793 * 1000;
+  const double eta = mat.surface.alpha / omega + mat.surface.beta * omega;
+  EXPECT_GE(eta, 0.1);
+  EXPECT_LE(eta, 0.5);
+}
+
+TEST(Catalogue, TheDefaultTableIsNamedAndListedWithTheOthers) {
+  const Catalogue c = parse_catalogue(with_named_table(kSteelTop), "test.yaml");
+  EXPECT_EQ(c.table.name, "table");  // the default's name when `table:` gives none
+  EXPECT_EQ(c.table_names(), (std::vector<std::string>{"steel_top", "table"}));
+  const TableSpec& steel = c.table_named("steel_top");
+  EXPECT_DOUBLE_EQ(steel.thickness, 0.006);
+  EXPECT_DOUBLE_EQ(steel.contact_loss_factor, 0.02);
+  EXPECT_EQ(steel.surface.name, "wood");  // no surface: the top's material
+  EXPECT_TRUE(steel.modes.empty());       // nothing inherited from the default's modes
+}
+
+TEST(Catalogue, ANamedTableMissingAFieldNamesItsLine) {
+  for (const char* field : {"friction", "thickness", "contact_loss_factor", "material"}) {
+    std::string body = kSteelTop;
+    const auto at = body.find(std::string("    ") + field);
+    body.erase(at, body.find('\n', at) + 1 - at);
+    const InputError e = parse_error(with_named_table(body));
+    EXPECT_EQ(e.file(), "test.yaml");
+    EXPECT_EQ(e.line(), 23) << e.what();
+    EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("tables.steel_top"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Catalogue, ANamedTablesUnknownMaterialOrKeyNamesItsLine) {
+  const InputError material =
+      parse_error(with_named_table(replace(kSteelTop, "material: wood", "material: granite")));
+  EXPECT_EQ(material.line(), 23);
+  EXPECT_NE(std::string(material.what()).find("unknown material 'granite'"), std::string::npos);
+  const InputError surface = parse_error(with_named_table(kSteelTop + "    surface: cork\n"));
+  EXPECT_EQ(surface.line(), 27);
+  EXPECT_NE(std::string(surface.what()).find("unknown material 'cork'"), std::string::npos);
+  const InputError key = parse_error(with_named_table(kSteelTop + "    frction: 1\n"));
+  EXPECT_EQ(key.line(), 27);
+  EXPECT_NE(std::string(key.what()).find("frction"), std::string::npos);
+}
+
+TEST(Catalogue, ATableNamedTwiceOrAnUnknownTableIsAnInputError) {
+  const std::string twice = replace(with_named_table(kSteelTop), "steel_top:", "table:");
+  EXPECT_EQ(parse_error(twice).line(), 22);
+  const Catalogue c = parse_catalogue(with_named_table(kSteelTop), "test.yaml");
+  try {
+    c.table_named("marble");
+    ADD_FAILURE() << "no error for an unknown table";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("steel_top, table"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace echoplan::sim

@@ -96,6 +96,20 @@ physics:
                    SimConfig{}.variability.push_speed.mean);  // untouched
 }
 
+TEST(SimConfig, TableIsANameOrAList) {
+  EXPECT_TRUE(parse_sim_config("", "c.yaml").tables.empty());
+  EXPECT_EQ(parse_sim_config("table: steel_bench\n", "c.yaml").tables,
+            (std::vector<std::string>{"steel_bench"}));
+  EXPECT_EQ(parse_sim_config("table: [oak_top, rubber_mat]\n", "c.yaml").tables,
+            (std::vector<std::string>{"oak_top", "rubber_mat"}));
+  try {
+    parse_sim_config("room: {rt60_s: 0.3}\ntable: [oak_top, oak_top]\n", "c.yaml");
+    ADD_FAILURE() << "no error for a table named twice";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 2) << e.what();
+  }
+}
+
 TEST(SimConfig, ErrorsNameFileLineAndField) {
   auto error_of = [](const std::string& text) {
     try {

@@ -473,11 +473,13 @@ TEST(SoundRenderer, RoomNoiseFallsSixDecibelsPerOctaveAboveItsCorner) {
   EXPECT_NEAR(band_power(flat, 0, 400, 800) / band_power(flat, 0, 800, 1600), 0.5, 0.05);
 }
 
-// One strike of `object` with `config` (nominal trial, small tilt): its clip and the impact's time
-// in the clip (s).
+// One strike of `object` with `config` (nominal trial, small tilt) on `table` (the config's if
+// none): its clip and the impact's time in the clip (s).
 std::pair<audio::AudioClip, double> strike_of(const char* object, const SimConfig& config,
-                                              std::uint64_t seed) {
-  SimulatedRobot robot(shipped_catalogue(), object, config);
+                                              std::uint64_t seed, const char* table = nullptr) {
+  SimulatedRobot robot = table ? SimulatedRobot(shipped_catalogue(), object, config,
+                                                shipped_catalogue().table_named(table))
+                               : SimulatedRobot(shipped_catalogue(), object, config);
   SoundRenderer renderer(robot.object(), robot.table(), config);
   const ActionOutcome out = robot.execute(SoundAction::strike, nominal());
   EXPECT_EQ(out.trace.impacts.size(), 1u) << object;
@@ -611,6 +613,50 @@ TEST(SoundRenderer, LoudnessIsNotAnObjectCue) {
     for (float x : clip.samples) peak = std::max(peak, std::abs(x));
     EXPECT_NEAR(20 * std::log10(peak), config.recording.limiter_ceiling_dbfs, 0.3) << name;
   }
+}
+
+// The power-weighted mean frequency of the 100 ms from `impact_s` (channel 0).
+double centroid_after_impact(const audio::AudioClip& clip, double impact_s) {
+  double bin = 0;
+  const auto start = static_cast<std::size_t>(impact_s * clip.sample_rate);
+  const auto mag = spectrum(clip, 0, start, clip.sample_rate / 10, &bin);
+  double weighted = 0, total = 0;
+  for (std::size_t k = 0; k < mag.size(); ++k) {
+    weighted += k * bin * mag[k] * mag[k];
+    total += mag[k] * mag[k];
+  }
+  return weighted / total;
+}
+
+TEST(SoundRenderer, ASteelTopsStrikeIsBrighterAndARubberMatsDuller) {
+  // Hertz: the contact lasts ~ (m^2 / (R E*^2 v))^(1/5), so the 200 GPa steel top shortens the
+  // mug's contact against the 9 GPa laminate and puts more of the strike's energy high; a 5 MPa
+  // rubber mat lengthens it some tenfold and its loss damps the contact's ring: a duller strike.
+  // The same strike (nominal variation, same rng) on each table.
+  SimConfig config = quiet();
+  config.recording.friction_gain = 0;
+  std::map<std::string, double> centroid_hz;
+  for (const char* table : {"lab_laminate", "steel_bench", "rubber_mat"}) {
+    const auto [clip, impact_s] = strike_of("coffee_mug", config, 5, table);
+    centroid_hz[table] = centroid_after_impact(clip, impact_s);
+  }
+  EXPECT_GT(centroid_hz["steel_bench"], centroid_hz["lab_laminate"]);
+  EXPECT_LT(centroid_hz["rubber_mat"], centroid_hz["lab_laminate"]);
+}
+
+TEST(SoundRenderer, TheLabsTableByNameIsTheDefault) {
+  // Naming the default table changes nothing: the same clip, sample for sample.
+  SimConfig config;
+  SimConfig named = config;
+  named.tables = {"lab_laminate"};
+  std::vector<std::vector<float>> samples;
+  for (const SimConfig* c : {&config, &named}) {
+    SimulatedRobot robot(shipped_catalogue(), "plastic_cup", *c);
+    SoundRenderer renderer(robot.object(), robot.table(), *c);
+    Rng rng(11);
+    samples.push_back(simulate_recording(robot, renderer, SoundAction::strike, rng).clip.samples);
+  }
+  EXPECT_EQ(samples[0], samples[1]);
 }
 
 }  // namespace

@@ -113,8 +113,8 @@ loop::LoopSettings loop_settings(const RunFlags& f, const loop::PreparedObservat
 }
 
 // What trial.json says the run was asked to do.
-nlohmann::json run_settings(const RunFlags& f, const loop::Loop& run,
-                            const loop::TrueObject& truth) {
+nlohmann::json run_settings(const RunFlags& f, const loop::Loop& run, const loop::TrueObject& truth,
+                            const loop::SimulatedWorldSpec& sim) {
   const pomdp::Problem& problem = run.spec().problem();
   nlohmann::json j = run.planner().to_json();
   j.update({{"object", truth.world},
@@ -127,6 +127,8 @@ nlohmann::json run_settings(const RunFlags& f, const loop::Loop& run,
             {"max_steps", f.max_steps}});
   if (!f.noise.sources.empty())
     j["noise"] = {{"sources", f.noise.sources}, {"ebr_db", f.noise.ebr}};
+  // The simulator's table: the lab's unless one was chosen (the trial then names it itself).
+  if (f.recordings.empty()) j["surface"] = sim.catalogue->table.name;
   return j;
 }
 
@@ -295,7 +297,7 @@ void run_command(const RunFlags& f) {
         log.write_step(s);
       },
       &stop.flag());
-  log.write_trial(run_settings(f, run, truth), trial);
+  log.write_trial(run_settings(f, run, truth, sim), trial);
   if (!trial) {
     spdlog::warn("interrupted: {} finished steps are in {}", log.steps_written(), f.out);
     throw Interrupted{};

@@ -1,5 +1,7 @@
 #include "commands/sim_options.h"
 
+#include "sim/table_choice.h"
+
 namespace echoplan::cli {
 
 void add_sim_file_options(CLI::App& cmd, SimFiles& files) {
@@ -9,6 +11,10 @@ void add_sim_file_options(CLI::App& cmd, SimFiles& files) {
   cmd.add_option("--sim-config", files.config,
                  "Simulation config YAML: variability, microphone, room, recording, physics "
                  "(default: built-in)");
+  cmd.add_option("--surface", files.surface,
+                 "Table to act on, from the catalogue's tables (default: the sim config's, else "
+                 "the lab's); a comma-separated list: spread over recordings, drawn per trial")
+      ->delimiter(',');
 }
 
 SimSetup load_sim_setup(const SimFiles& files) {
@@ -16,6 +22,8 @@ SimSetup load_sim_setup(const SimFiles& files) {
                                                              : files.catalogue),
                  {}};
   if (!files.config.empty()) setup.config = sim::load_sim_config(files.config);
+  if (!files.surface.empty()) setup.config.tables = files.surface;
+  sim::check_tables(setup.catalogue, setup.config);
   return setup;
 }
 

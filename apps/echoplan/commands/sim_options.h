@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "loop/world_spec.h"
 #include "sim/catalogue.h"
@@ -14,6 +15,9 @@ namespace echoplan::cli {
 struct SimFiles {
   std::string catalogue;  // empty: sim::default_catalogue_path()
   std::string config;     // empty: built-in defaults
+  // --surface: the catalogue tables to record on, comma-separated (the sim config's `table:`);
+  // empty: the sim config's.
+  std::vector<std::string> surface;
 };
 
 struct SimSetup {
@@ -21,10 +25,11 @@ struct SimSetup {
   sim::SimConfig config;
 };
 
-// Adds --catalogue and --sim-config to `cmd`.
+// Adds --catalogue, --sim-config and --surface to `cmd`.
 void add_sim_file_options(CLI::App& cmd, SimFiles& files);
 
-// Loads both; throws InputError for a bad file.
+// Loads both, with --surface as the config's tables; throws InputError for a bad file or a table
+// the catalogue does not have.
 SimSetup load_sim_setup(const SimFiles& files);
 // The same as a loop's simulated world (shared, read-only).
 loop::SimulatedWorldSpec load_simulated_world(const SimFiles& files);
