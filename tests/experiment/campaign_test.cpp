@@ -406,6 +406,8 @@ TEST(Campaign, ADatasetWorldOverRecordingsIsHeardThroughItsNoise) {
                                 "training_set: {noise: {sources: [room], ebr_db: \"-6:6\"}}\n"
                                 "arms:\n  - {name: quiet, strategy: plan}\n"
                                 "  - {name: in_noise, strategy: plan, trained_in_noise: true}\n"
+                                "  - {name: levels, strategy: plan, trained_in_noise: true, "
+                                "observations: levels}\n"
                                 "planner: {solver: abt, episodes: 200, max_steps: 20}\n",
                             (data.parent_path() / "campaign.yaml").string());
   run(config, dir, 1);
@@ -431,7 +433,27 @@ TEST(Campaign, ADatasetWorldOverRecordingsIsHeardThroughItsNoise) {
     EXPECT_NE(read_text_file((folder / "problem.yaml").string(), "problem"),
               read_text_file((folder / "problem-in-noise.yaml").string(), "problem"));
   }
-  EXPECT_EQ(lines_of(dir / "trials.csv"), 1 + 2 * 9);
+  EXPECT_EQ(lines_of(dir / "trials.csv"), 1 + 3 * 9);
+  // The arm hearing levels plans with the noise-trained classifier's level table, and every step
+  // that heard a performance logs the level measured from its noisy recording.
+  const std::string levels =
+      read_text_file((dir / "folds" / "1" / "problem-levels-in-noise.yaml").string(), "problem");
+  EXPECT_NE(levels.find("ring@noisy"), std::string::npos);
+  std::istringstream steps(read_text_file((dir / "steps.csv").string(), "steps"));
+  std::string header, line;
+  std::getline(steps, header);
+  const auto column = std::count(header.begin(), header.begin() + header.find("heard_ebr_db"), ',');
+  int sensed = 0;
+  while (std::getline(steps, line)) {
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    if (cells.at(2) != "strike" && cells.at(2) != "tap") continue;
+    ++sensed;
+    // White noise mixed at 0 dB measures within a few dB of it.
+    EXPECT_NEAR(std::stod(cells.at(static_cast<std::size_t>(column))), 0.0, 6.0) << line;
+  }
+  EXPECT_GT(sensed, 0);
 
   // A feature set's features are computed already: no noise can be mixed into them.
   const std::string features =
