@@ -7,8 +7,9 @@ layers is a task: each instrument an object, each velocity layer a session of on
 campaign replays every held-out session heard through real speech (Debian's asterisk prompts, the
 digits) over room noise at each event-to-background ratio in turn, with two paired arms: the folds'
 classifier trained on the quiet strikes, and the one trained on them and their noisy twins (other
-words of the speaker, white noise, -6:24 dB). Prints, per ratio, each arm's share sorted right, its
-belief at the sort and the paired difference.
+words of the speaker, white noise, -6:24 dB), hearing labels or observations graded by the measured
+level of each recording. Prints, per ratio, each arm's share sorted right, its belief at the sort and
+the strikes per trial, and each noise-trained arm's paired difference from the quiet one.
 
 Usage: bench/noise_real_strikes.py ECHOPLAN [--levels quiet,12,6,0] [--kits NAME,...] [--episodes N]
 Needs: apt-get install hydrogen-drumkits asterisk-core-sounds-en-wav.
@@ -63,16 +64,17 @@ task:
 arms:
   - {{name: quiet, strategy: plan}}
   - {{name: in_noise, strategy: plan, trained_in_noise: true}}
+  - {{name: in_noise_levels, strategy: plan, trained_in_noise: true, observations: levels}}
 planner: {{solver: abt, episodes: {episodes}, max_steps: 10}}
 """
 
 
 def row(kit, level, summary):
-    """| kit | level | per arm: right @ belief (strikes) | in_noise minus quiet |"""
+    """| kit | level | per arm: right @ belief (strikes) | each noise-trained arm minus quiet |"""
     cells = [kit, level]
     strikes = {r["arm"]: r["mean_action_counts"]["strike"] for r in summary["results"] if r["objects"] == "all"}
     for c in summary["sort_confidence"]:
-        if c["arm"] in ("quiet", "in_noise"):
+        if c["arm"] in ("quiet", "in_noise", "in_noise_levels"):
             cells.append("%.3f @ %.3f (%.2f)" % (c["share_right"], c["mean_belief"], strikes.get(c["arm"], 0)))
     for d in summary["paired_differences"]:
         cells.append("%+.2f ± %.2f" % (d["mean_discounted_reward_difference"], d["ci95"]))

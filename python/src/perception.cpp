@@ -105,6 +105,9 @@ void bind_prediction(py::module_& m) {
       .def_readonly("grade", &Prediction::grade,
                     "The confidence grade of the heard class (0 low, 1 mid, 2 high), -1 without "
                     "grades.")
+      .def_readonly("level_grade", &Prediction::level_grade,
+                    "The level grade of the recording (0 noisy, 1 fair, 2 clear), -1 without "
+                    "level grades or a measured level.")
       .def_property_readonly(
           "probabilities", [](const Prediction& p) { return to_array(p.probabilities); },
           "Calibrated P(class), in the model's class order.")
@@ -167,6 +170,16 @@ void bind_model(py::module_& m) {
             return x.observation_symbols(perception::ObservationKind::graded);
           },
           "The graded observation symbols ('mug@low', ...), the alphabet of a graded problem.")
+      .def_property_readonly("levelled", &ObservationModel::levelled,
+                             "Every action has observations graded by the recording's measured "
+                             "level (class@noisy/fair/clear): a model trained on recordings.")
+      .def_property_readonly(
+          "level_symbols",
+          [](const ObservationModel& x) {
+            return x.observation_symbols(perception::ObservationKind::levels);
+          },
+          "The level-graded observation symbols ('mug@noisy', ...), the alphabet of a problem "
+          "with `observations: levels`.")
       .def(
           "lookalike_share",
           [](const ObservationModel& x, bool graded) {

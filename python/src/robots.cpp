@@ -216,6 +216,7 @@ void bind_values(py::module_& m) {
       .def_readonly("unknown", &HeardObservation::unknown)
       .def_readonly("probability", &HeardObservation::probability)
       .def_readonly("grade", &HeardObservation::grade)
+      .def_readonly("level_grade", &HeardObservation::level_grade)
       .def_readonly("probabilities", &HeardObservation::probabilities)
       .def_readonly("distance", &HeardObservation::distance)
       .def_readonly("features", &HeardObservation::features);

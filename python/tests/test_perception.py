@@ -144,3 +144,14 @@ def test_classify_a_clip_as_the_command_does(tmp_path, strike):
     assert heard.label == command["class"]
     assert heard.distance == command["distance"]
     assert dict(zip(mine.classes, heard.probabilities)) == command["probabilities"]
+
+
+def test_a_feature_set_model_has_no_level_grades():
+    # A feature set's rows carry no measured level: the model says so instead of inventing one.
+    model = echoplan.fit_observation_model(echoplan.load_feature_set(FEATURE_SET))
+    assert not model.levelled
+    with pytest.raises(echoplan.InputError, match="no observations graded by level"):
+        model.level_symbols
+    feature_set = echoplan.load_feature_set(FEATURE_SET)
+    rows = {m: feature_set.rows("tap", m)[5] for m in feature_set.modalities("tap")}
+    assert model.classify_rows("tap", rows).level_grade == -1
