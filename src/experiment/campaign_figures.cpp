@@ -239,6 +239,45 @@ Drawing reliability_drawing(const CampaignResults& results, const fs::path& data
   return d;
 }
 
+// A campaign heard through noise: per arm and band of the trials' measured noise level
+// (noise_levels.h), the share sorted right (solid) and the mean belief at the sort (dashed); an
+// honest arm's two lines lie on each other.
+Drawing noise_levels_drawing(const std::vector<ArmNoiseBands>& all, const fs::path& data_dir) {
+  Drawing d;
+  d.figure.stem = "noise_levels";
+  d.figure.title = "Sorted right and how sure, by how noisy the trial's recordings were";
+  d.figure.caption =
+      "Each arm's trials banded by the median event-to-background ratio measured from their own "
+      "recordings: the share sorted right (solid) and the mean belief in the chosen bin at the "
+      "sort "
+      "(dashed). Where the dashed line is above the solid one the arm was surer than right.";
+  d.width = 800;
+  d.height = 500;
+  std::string data, plot, tics;
+  int index = 0;
+  for (const ArmNoiseBands& a : all) {
+    for (std::size_t b = 0; b < a.bands.size(); ++b)
+      if (a.bands[b].sorts > 0)
+        data += fmt::format("{} {} {}\n", b, a.bands[b].share_right, a.bands[b].mean_belief);
+    data += "\n\n";
+    plot += fmt::format(
+        "{}'noise_levels.dat' index {} using 1:2 with linespoints lw 2 pt 7 lc {} title {}, "
+        "'' index {} using 1:3 with linespoints dt 2 pt 6 lc {} notitle",
+        index ? ", " : "plot ", index, index + 1, gnuplot_text(a.arm + ": right"), index,
+        index + 1);
+    ++index;
+  }
+  for (std::size_t b = 0; !all.empty() && b < all.front().bands.size(); ++b)
+    tics += fmt::format("{}{} {}", b ? ", " : "", gnuplot_text(all.front().bands[b].label()), b);
+  std::ofstream(data_dir / "noise_levels.dat") << data;
+  d.commands = fmt::format(
+      "set xlabel 'measured event-to-background ratio of the trial'\nset ylabel 'share'\n"
+      "set xtics ({})\nset xrange [-0.3:{}]\nset yrange [0:1.05]\nset grid\n"
+      "set key bottom right noenhanced\n{}\n",
+      tics, all.empty() ? 1.0 : all.front().bands.size() - 0.7, plot);
+  return d;
+}
+
 // Accuracy against the sensing actions performed, and, when actions have costs, against the cost.
 std::vector<Drawing> tradeoff_drawings(const CampaignResults& results, const fs::path& data_dir) {
   const int sensing = results.sensing_actions;
@@ -437,6 +476,8 @@ std::vector<Figure> draw_figures(const fs::path& directory, const CampaignResult
     if (!confusion.commands.empty()) drawings.push_back(std::move(confusion));
   }
   drawings.push_back(reliability_drawing(results, work.path()));
+  if (const auto bands = noise_bands(results); !bands.empty())
+    drawings.push_back(noise_levels_drawing(bands, work.path()));
 
   std::vector<Figure> drawn;
   for (const char* format : {"png", "svg"}) {

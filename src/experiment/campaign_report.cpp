@@ -234,6 +234,18 @@ std::vector<double> action_costs(const pomdp::Model& model) {
   return costs;
 }
 
+std::vector<ArmNoiseBands> noise_bands(const CampaignResults& results) {
+  if (!results.config.world.noise.given()) return {};
+  std::vector<std::string> arms;
+  for (const ResolvedArm& arm : results.arms) arms.push_back(arm.name);
+  std::vector<ArmNoiseBands> bands = arm_noise_bands(arms, results.entries, results.right_share);
+  const bool heard = std::any_of(bands.begin(), bands.end(), [](const ArmNoiseBands& a) {
+    return std::any_of(a.bands.begin(), a.bands.end(),
+                       [](const NoiseBand& b) { return b.trials > 0; });
+  });
+  return heard ? bands : std::vector<ArmNoiseBands>{};
+}
+
 std::vector<ArmConfidence> arm_confidence(const CampaignResults& results) {
   std::vector<std::string> arms;
   for (const ResolvedArm& arm : results.arms) arms.push_back(arm.name);
@@ -260,14 +272,6 @@ nlohmann::json sort_confidence_json(const CampaignResults& results) {
                    {"reliability", std::move(bins)}});
   }
   return all;
-}
-
-// A campaign heard through background noise: each arm's trials per band of their measured level.
-std::vector<ArmNoiseBands> noise_bands(const CampaignResults& results) {
-  if (!results.config.world.noise.given()) return {};
-  std::vector<std::string> arms;
-  for (const ResolvedArm& arm : results.arms) arms.push_back(arm.name);
-  return arm_noise_bands(arms, results.entries, results.right_share);
 }
 
 nlohmann::json noise_bands_json(const std::vector<ArmNoiseBands>& all) {

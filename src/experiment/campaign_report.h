@@ -17,6 +17,7 @@
 
 #include "experiment/campaign_arms.h"
 #include "experiment/campaign_config.h"
+#include "experiment/noise_levels.h"
 #include "experiment/sort_confidence.h"
 #include "experiment/trial_journal.h"
 #include "experiment/trial_summary.h"
@@ -128,6 +129,9 @@ std::map<std::string, std::vector<std::string>> observation_names(const Campaign
 
 // How sure each arm was when it sorted (sort_confidence.h), in the configuration's arm order.
 std::vector<ArmConfidence> arm_confidence(const CampaignResults& results);
+// With world.noise, each arm's trials per band of their measured noise level (noise_levels.h);
+// otherwise, or when no trial heard a recording, none.
+std::vector<ArmNoiseBands> noise_bands(const CampaignResults& results);
 
 // Writes trials.csv, steps.csv and arms/<arm>/{trials,steps}.csv into `directory`; with
 // fold_of_session, also each fold's folds/<fold>/arms/<arm>/{trials,steps}.csv.

@@ -67,6 +67,27 @@ TEST(CampaignFigures, DrawsEachFigureAsPngAndSvgInPageOrder) {
   fs::remove_all(dir);
 }
 
+// A campaign heard through noise whose steps measured their recordings draws each arm by noise
+// level last; without world.noise the figure is not drawn (above).
+TEST(CampaignFigures, ACampaignHeardThroughNoiseDrawsItsArmsByNoiseLevel) {
+  try {
+    find_gnuplot();
+  } catch (const InputError&) {
+    GTEST_SKIP() << "gnuplot is not installed";
+  }
+  CampaignResults results = small_campaign();
+  results.config.world.noise = {{"white"}, "0"};
+  for (JournalEntry& e : results.entries)
+    for (StepRecord& s : e.result.steps) s.heard_ebr_db = 3.0 + e.id;
+  const fs::path dir = fs::temp_directory_path() / "echoplan_campaign_noise_figure_test";
+  fs::remove_all(dir);
+  const std::vector<Figure> figures = draw_figures(dir, results, {});
+  ASSERT_FALSE(figures.empty());
+  EXPECT_EQ(figures.back().stem, "noise_levels");
+  EXPECT_EQ(head_of(dir / "figures" / "noise_levels.png", 4), "\x89PNG");
+  fs::remove_all(dir);
+}
+
 // A 0.5 s mono clip at 16 kHz: silence, then a decaying tone from 0.1 s.
 audio::AudioClip tone(double hz, double amplitude) {
   audio::AudioClip clip;
