@@ -83,6 +83,25 @@ TEST(CampaignConfig, ShippedNoiseCampaignTrainsOnSpeechItsTrialsNeverPlay) {
       }
 }
 
+// The shipped campaign outside the lab: noise over a range of ratios and tables drawn per trial,
+// the arm hearing levels trained in noise, and its speech words the trials never play.
+TEST(CampaignConfig, ShippedOutsideCampaignDrawsNoiseLevelsAndTables) {
+  const CampaignConfig c =
+      load_campaign_config(echoplan::testing::source_dir() + "/experiments/outside.yaml");
+  EXPECT_EQ(c.world.noise.ebr_db, "-6:24");
+  EXPECT_EQ(c.world.surfaces, (std::vector<std::string>{"lab_laminate", "oak_top", "glass_top"}));
+  const std::vector<ResolvedArm> arms = resolve_arms(c);
+  ASSERT_EQ(arms.size(), 3u);
+  EXPECT_FALSE(arms[0].trained_in_noise());
+  EXPECT_EQ(arms[2].hearing(), perception::ObservationKind::levels);
+  EXPECT_TRUE(arms[2].trained_in_noise());
+  for (const std::string& heard : c.world.noise.sources)
+    for (const std::string& trained : c.training.noise.sources)
+      if (heard != "room") {
+        EXPECT_NE(heard, trained);
+      }
+}
+
 TEST(CampaignConfig, RelativePathsAreRelativeToTheFile) {
   const CampaignConfig c = parse_campaign_config(kMinimal, "/dir/c.yaml");
   EXPECT_EQ(c.arms.at(0).problem, "/dir/p.yaml");
