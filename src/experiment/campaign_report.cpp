@@ -246,6 +246,12 @@ std::vector<ArmNoiseBands> noise_bands(const CampaignResults& results) {
   return heard ? bands : std::vector<ArmNoiseBands>{};
 }
 
+std::vector<ArmSurfaces> surface_shares(const CampaignResults& results) {
+  std::vector<std::string> arms;
+  for (const ResolvedArm& arm : results.arms) arms.push_back(arm.name);
+  return arm_surfaces(arms, results.entries, results.right_share);
+}
+
 std::vector<ArmConfidence> arm_confidence(const CampaignResults& results) {
   std::vector<std::string> arms;
   for (const ResolvedArm& arm : results.arms) arms.push_back(arm.name);
@@ -274,17 +280,35 @@ nlohmann::json sort_confidence_json(const CampaignResults& results) {
   return all;
 }
 
+nlohmann::json shares_json(const ConditionShares& c) {
+  return {{"trials", c.trials},
+          {"sorts", c.sorts},
+          {"share_right", c.share_right},
+          {"mean_belief", c.mean_belief},
+          {"mean_recordings_heard", c.mean_heard}};
+}
+
+nlohmann::json surfaces_json(const std::vector<ArmSurfaces>& all) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const ArmSurfaces& a : all) {
+    nlohmann::json surfaces = nlohmann::json::array();
+    for (const SurfaceShares& s : a.surfaces) {
+      nlohmann::json one = shares_json(s);
+      one["surface"] = s.surface;
+      surfaces.push_back(std::move(one));
+    }
+    j.push_back({{"arm", a.arm}, {"surfaces", std::move(surfaces)}});
+  }
+  return j;
+}
+
 nlohmann::json noise_bands_json(const std::vector<ArmNoiseBands>& all) {
   nlohmann::json j = nlohmann::json::array();
   for (const ArmNoiseBands& a : all) {
     nlohmann::json bands = nlohmann::json::array();
     for (const NoiseBand& b : a.bands) {
-      nlohmann::json band = {{"band", b.label()},
-                             {"trials", b.trials},
-                             {"sorts", b.sorts},
-                             {"share_right", b.share_right},
-                             {"mean_belief", b.mean_belief},
-                             {"mean_recordings_heard", b.mean_heard}};
+      nlohmann::json band = shares_json(b);
+      band["band"] = b.label();
       band["low_db"] = b.low ? nlohmann::json(*b.low) : nlohmann::json();
       band["high_db"] = b.high ? nlohmann::json(*b.high) : nlohmann::json();
       bands.push_back(std::move(band));
@@ -342,6 +366,9 @@ nlohmann::json summary_json(const CampaignResults& results) {
   // Only when the world is heard through noise: other campaigns' summaries stay as they were.
   if (const auto bands = noise_bands(results); !bands.empty())
     j["by_noise_level"] = noise_bands_json(bands);
+  // Only when the world chose tables: the lab's campaigns keep their summaries.
+  if (const auto surfaces = surface_shares(results); !surfaces.empty())
+    j["by_surface"] = surfaces_json(surfaces);
   const std::optional<ReferenceResults>& reference = results.config.reference;
   if (!results.heard.empty() && reference && reference->heard) {
     nlohmann::json heard = {{"classifier", reference->heard->classifier},
@@ -440,6 +467,14 @@ std::string summary_text(const CampaignResults& results) {
       if (b.trials > 0)
         out += fmt::format("  {:<24} {:<12} {:>4} trials  right {:.3f} at {:.3f}  heard {:.2f}\n",
                            a.arm, b.label(), b.trials, b.share_right, b.mean_belief, b.mean_heard);
+  const std::vector<ArmSurfaces> surfaces = surface_shares(results);
+  if (!surfaces.empty())
+    out += "\nper table the trials stood on: sorted right at belief, recordings heard per trial\n";
+  for (const ArmSurfaces& a : surfaces)
+    for (const SurfaceShares& s : a.surfaces)
+      if (s.trials > 0)
+        out += fmt::format("  {:<24} {:<14} {:>4} trials  right {:.3f} at {:.3f}  heard {:.2f}\n",
+                           a.arm, s.surface, s.trials, s.share_right, s.mean_belief, s.mean_heard);
   if (!results.unheard_choices.empty())
     out +=
         "\nhow each arm with unheard: auto counts outcomes it has not heard (self-play on its own "

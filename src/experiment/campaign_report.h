@@ -132,6 +132,8 @@ std::vector<ArmConfidence> arm_confidence(const CampaignResults& results);
 // With world.noise, each arm's trials per band of their measured noise level (noise_levels.h);
 // otherwise, or when no trial heard a recording, none.
 std::vector<ArmNoiseBands> noise_bands(const CampaignResults& results);
+// Each arm's trials per table, when the world chose tables (noise_levels.h); otherwise none.
+std::vector<ArmSurfaces> surface_shares(const CampaignResults& results);
 
 // Writes trials.csv, steps.csv and arms/<arm>/{trials,steps}.csv into `directory`; with
 // fold_of_session, also each fold's folds/<fold>/arms/<arm>/{trials,steps}.csv.

@@ -48,21 +48,33 @@ std::vector<ArmNoiseBands> arm_noise_bands(const std::vector<std::string>& arms,
     ArmNoiseBands a{arm, empty_bands()};
     for (const JournalEntry& e : entries) {
       const std::optional<double> level = trial_heard_level(e.result);
-      if (e.arm != arm || !level) continue;
-      NoiseBand& band = band_of(a.bands, *level);
-      ++band.trials;
-      band.mean_heard += static_cast<double>(
-          std::count_if(e.result.steps.begin(), e.result.steps.end(),
-                        [](const loop::StepRecord& s) { return s.heard_ebr_db.has_value(); }));
-      if (const std::optional<SortConfidence> sort = sort_confidence(e.result, right_share)) {
-        ++band.sorts;
-        band.mean_belief += sort->belief;
-        band.share_right += sort->right;
-      }
+      if (e.arm == arm && level) band_of(a.bands, *level).add(e.result, right_share);
     }
-    for (NoiseBand& band : a.bands) {
-      if (band.trials) band.mean_heard /= band.trials;
-      if (band.sorts) band.mean_belief /= band.sorts, band.share_right /= band.sorts;
+    for (NoiseBand& band : a.bands) band.finish();
+    all.push_back(std::move(a));
+  }
+  return all;
+}
+
+std::vector<ArmSurfaces> arm_surfaces(const std::vector<std::string>& arms,
+                                      const std::vector<JournalEntry>& entries,
+                                      const RightShares& right_share) {
+  std::vector<std::string> surfaces;
+  for (const JournalEntry& e : entries)
+    if (!e.result.record.surface.empty() &&
+        std::find(surfaces.begin(), surfaces.end(), e.result.record.surface) == surfaces.end())
+      surfaces.push_back(e.result.record.surface);
+  if (surfaces.empty()) return {};
+  std::vector<ArmSurfaces> all;
+  for (const std::string& arm : arms) {
+    ArmSurfaces a{arm, {}};
+    for (const std::string& surface : surfaces) {
+      SurfaceShares shares;
+      shares.surface = surface;
+      for (const JournalEntry& e : entries)
+        if (e.arm == arm && e.result.record.surface == surface) shares.add(e.result, right_share);
+      shares.finish();
+      a.surfaces.push_back(std::move(shares));
     }
     all.push_back(std::move(a));
   }

@@ -1,4 +1,5 @@
-// Each arm's trials by how noisy they sounded: the ratio measured from the trial's own recordings
+// Each arm's trials by the conditions they were heard in: per table they stood on, and by how
+// noisy they sounded: the ratio measured from the trial's own recordings
 // (the median of its steps' heard_ebr_db, audio/levels.h), in fixed bands, and per band the share
 // sorted right beside the belief at the sort (sort_confidence.h) and the recordings heard per
 // trial. What a campaign heard through background noise reports per noise level; the bands come
@@ -9,22 +10,16 @@
 #include <string>
 #include <vector>
 
-#include "experiment/sort_confidence.h"
-#include "experiment/trial_journal.h"
+#include "experiment/condition_shares.h"
 
 namespace echoplan::experiment {
 
 // The bands' inner edges in dB: below 0, 0 to 6, 6 to 12, 12 to 24, 24 and above.
 inline const std::vector<double> kNoiseBandEdges{0.0, 6.0, 12.0, 24.0};
 
-struct NoiseBand {
+struct NoiseBand : ConditionShares {
   std::optional<double> low, high;  // dB; none: unbounded
-  int trials = 0;
-  int sorts = 0;              // trials that sorted (not capped)
-  double share_right = 0.0;   // of the sorts; 0 when none
-  double mean_belief = 0.0;   // at the sort; 0 when none
-  double mean_heard = 0.0;    // recordings heard per trial; 0 when no trial
-  std::string label() const;  // "< 0 dB", "0 to 6 dB", ">= 24 dB"
+  std::string label() const;        // "< 0 dB", "0 to 6 dB", ">= 24 dB"
 };
 
 struct ArmNoiseBands {
@@ -39,5 +34,20 @@ std::optional<double> trial_heard_level(const TrialResult& trial);
 std::vector<ArmNoiseBands> arm_noise_bands(const std::vector<std::string>& arms,
                                            const std::vector<JournalEntry>& entries,
                                            const RightShares& right_share);
+
+// One arm's trials on one table (TrialRecord::surface).
+struct SurfaceShares : ConditionShares {
+  std::string surface;
+};
+struct ArmSurfaces {
+  std::string arm;
+  std::vector<SurfaceShares> surfaces;  // in order of first appearance in the journal
+};
+
+// Per arm, in the given order, over every journal entry of that arm whose world chose a table;
+// empty when none did (the lab's table).
+std::vector<ArmSurfaces> arm_surfaces(const std::vector<std::string>& arms,
+                                      const std::vector<JournalEntry>& entries,
+                                      const RightShares& right_share);
 
 }  // namespace echoplan::experiment

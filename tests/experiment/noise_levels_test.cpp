@@ -80,5 +80,31 @@ TEST(NoiseLevels, ACappedTrialCountsButNeverSorted) {
   EXPECT_DOUBLE_EQ(band.share_right, 0.0);
 }
 
+// Per table: each arm's trials on it, in the order the journal first names the tables; none when
+// no world chose a table.
+TEST(NoiseLevels, EachTableHoldsTheSharesOfItsTrials) {
+  std::vector<JournalEntry> entries{
+      heard("a", {10}, 0, 2, {0.9, 0.1}),      // steel: right at 0.9
+      heard("a", {10, 20}, 1, 2, {0.7, 0.3}),  // oak: wrong at 0.7
+      heard("a", {5}, 1, 3, {0.2, 0.8}),       // steel: right at 0.8
+      heard("b", {5}, 1, 2, {0.6, 0.4}),       // b on oak: wrong at 0.6
+  };
+  EXPECT_TRUE(arm_surfaces({"a", "b"}, entries, kRight).empty());  // the lab's table
+  for (std::size_t i : {0u, 2u}) entries[i].result.record.surface = "steel_bench";
+  for (std::size_t i : {1u, 3u}) entries[i].result.record.surface = "oak_top";
+  const std::vector<ArmSurfaces> arms = arm_surfaces({"a", "b"}, entries, kRight);
+  ASSERT_EQ(arms.size(), 2u);
+  ASSERT_EQ(arms[0].surfaces.size(), 2u);
+  EXPECT_EQ(arms[0].surfaces[0].surface, "steel_bench");
+  EXPECT_EQ(arms[0].surfaces[0].trials, 2);
+  EXPECT_DOUBLE_EQ(arms[0].surfaces[0].share_right, 1.0);
+  EXPECT_DOUBLE_EQ(arms[0].surfaces[0].mean_belief, 0.85);
+  EXPECT_EQ(arms[0].surfaces[1].surface, "oak_top");
+  EXPECT_DOUBLE_EQ(arms[0].surfaces[1].share_right, 0.0);
+  EXPECT_DOUBLE_EQ(arms[0].surfaces[1].mean_heard, 2.0);
+  EXPECT_EQ(arms[1].surfaces[0].trials, 0);  // b never stood on steel
+  EXPECT_DOUBLE_EQ(arms[1].surfaces[1].mean_belief, 0.6);
+}
+
 }  // namespace
 }  // namespace echoplan::experiment
