@@ -38,7 +38,7 @@ struct ActionReport {
   bool retry_safe = false;
   // The surface the robot acted on, when it knows and it was chosen (the simulator's table when
   // its config names one: sim/table_choice.h); empty otherwise.
-  std::string surface;
+  std::string surface{};
 };
 
 class Robot {

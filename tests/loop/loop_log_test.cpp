@@ -50,7 +50,8 @@ Step strike_step() {
   s.record.heard_ebr_db = 12.25;
   s.belief_after = {0.125, 0.5, 0.3125, 0.0625};
   RobotStep& r = s.robot.emplace();
-  r.report = {"strike", robot::ActionStatus::done, "", 0.5};
+  r.report = {
+      .action = "strike", .status = robot::ActionStatus::done, .reason = "", .duration_s = 0.5};
   r.recorded = true;
   r.clip.sample_rate = 8000;
   r.clip.channels = 2;
@@ -75,7 +76,8 @@ Step sort_step() {
   s.record.observation.index = report_model().none_symbol();
   s.record.reward = 100;
   s.terminal = true;
-  s.robot.emplace().report = {"move_to_B", robot::ActionStatus::done, "", 0.0};
+  s.robot.emplace().report = {
+      .action = "move_to_B", .status = robot::ActionStatus::done, .reason = "", .duration_s = 0.0};
   return s;
 }
 
@@ -133,7 +135,10 @@ TEST_F(LoopLogTest, CsvRowsClipsAndJsonOfATrial) {
 TEST_F(LoopLogTest, ACollisionIsLoggedWithItsReason) {
   Step s = sort_step();
   s.record.action = 0;  // slide
-  s.robot->report = {"slide", robot::ActionStatus::collision, "the arm touched the table", 0.25};
+  s.robot->report = {.action = "slide",
+                     .status = robot::ActionStatus::collision,
+                     .reason = "the arm touched the table",
+                     .duration_s = 0.25};
   s.robot->recorded = false;
   s.record.reward = -200;
   {

@@ -19,7 +19,8 @@ Step heard(const std::string& label, bool unknown) {
   s.record.action = 1;
   s.record.reward = -1;
   RobotStep& r = s.robot.emplace();
-  r.report = {"strike", robot::ActionStatus::done, "", 0.5};
+  r.report = {
+      .action = "strike", .status = robot::ActionStatus::done, .reason = "", .duration_s = 0.5};
   r.classified = true;
   r.heard.label = label;
   r.heard.unknown = unknown;
@@ -39,7 +40,10 @@ TEST(StepText, SaysWhatWasHeardWithItsProbabilityAndTime) {
 
 TEST(StepText, SaysHowAFailedActionWentAndWhatATableWorldObserved) {
   Step s = heard("coffee_mug", false);
-  s.robot->report = {"strike", robot::ActionStatus::collision, "the arm touched the table", 0.2};
+  s.robot->report = {.action = "strike",
+                     .status = robot::ActionStatus::collision,
+                     .reason = "the arm touched the table",
+                     .duration_s = 0.2};
   s.record.reward = -100;
   EXPECT_EQ(step_text(s, spec()),
             "step 2: strike -> collision: the arm touched the table, reward -100");
