@@ -39,7 +39,7 @@ struct RowLabel {
   int session = 0;  // index into FeatureSet::sessions
   // The event-to-background ratio measured from the performance's recording (audio/levels.h), in
   // dB: a recordings tree's rows have it, a feature set's none.
-  std::optional<double> ebr_db;
+  std::optional<double> ebr_db{};
 };
 
 // One action's data: the row labels it shares with all its modalities.
