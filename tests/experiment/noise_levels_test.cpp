@@ -74,7 +74,8 @@ TEST(NoiseLevels, EachBandHoldsTheSharesOfItsTrials) {
 TEST(NoiseLevels, ACappedTrialCountsButNeverSorted) {
   JournalEntry e = heard("a", {10}, 0, 2, {1.0, 0.0});
   e.result.record.capped = true;
-  const NoiseBand& band = arm_noise_bands({"a"}, {e}, kRight)[0].bands[2];
+  const std::vector<ArmNoiseBands> arms = arm_noise_bands({"a"}, {e}, kRight);
+  const NoiseBand& band = arms[0].bands[2];
   EXPECT_EQ(band.trials, 1);
   EXPECT_EQ(band.sorts, 0);
   EXPECT_DOUBLE_EQ(band.share_right, 0.0);
