@@ -234,11 +234,28 @@ std::vector<double> action_costs(const pomdp::Model& model) {
   return costs;
 }
 
+namespace {
+
+// The arms' names, in the configuration's order.
+std::vector<std::string> arm_names(const CampaignResults& results) {
+  std::vector<std::string> names;
+  for (const ResolvedArm& arm : results.arms) names.push_back(arm.name);
+  return names;
+}
+
+// One arm's trials under one condition, as summary.txt lists them.
+std::string shares_line(const std::string& arm, const std::string& condition,
+                        const ConditionShares& c) {
+  return fmt::format("  {:<24} {:<14} {:>4} trials  right {:.3f} at {:.3f}  heard {:.2f}\n", arm,
+                     condition, c.trials, c.share_right, c.mean_belief, c.mean_heard);
+}
+
+}  // namespace
+
 std::vector<ArmNoiseBands> noise_bands(const CampaignResults& results) {
   if (!results.config.world.noise.given()) return {};
-  std::vector<std::string> arms;
-  for (const ResolvedArm& arm : results.arms) arms.push_back(arm.name);
-  std::vector<ArmNoiseBands> bands = arm_noise_bands(arms, results.entries, results.right_share);
+  std::vector<ArmNoiseBands> bands =
+      arm_noise_bands(arm_names(results), results.entries, results.right_share);
   const bool heard = std::any_of(bands.begin(), bands.end(), [](const ArmNoiseBands& a) {
     return std::any_of(a.bands.begin(), a.bands.end(),
                        [](const NoiseBand& b) { return b.trials > 0; });
@@ -247,15 +264,11 @@ std::vector<ArmNoiseBands> noise_bands(const CampaignResults& results) {
 }
 
 std::vector<ArmSurfaces> surface_shares(const CampaignResults& results) {
-  std::vector<std::string> arms;
-  for (const ResolvedArm& arm : results.arms) arms.push_back(arm.name);
-  return arm_surfaces(arms, results.entries, results.right_share);
+  return arm_surfaces(arm_names(results), results.entries, results.right_share);
 }
 
 std::vector<ArmConfidence> arm_confidence(const CampaignResults& results) {
-  std::vector<std::string> arms;
-  for (const ResolvedArm& arm : results.arms) arms.push_back(arm.name);
-  return arm_confidence(arms, results.entries, results.right_share);
+  return arm_confidence(arm_names(results), results.entries, results.right_share);
 }
 
 namespace {
@@ -464,17 +477,13 @@ std::string summary_text(const CampaignResults& results) {
         "right at belief, recordings heard per trial\n";
   for (const ArmNoiseBands& a : bands)
     for (const NoiseBand& b : a.bands)
-      if (b.trials > 0)
-        out += fmt::format("  {:<24} {:<12} {:>4} trials  right {:.3f} at {:.3f}  heard {:.2f}\n",
-                           a.arm, b.label(), b.trials, b.share_right, b.mean_belief, b.mean_heard);
+      if (b.trials > 0) out += shares_line(a.arm, b.label(), b);
   const std::vector<ArmSurfaces> surfaces = surface_shares(results);
   if (!surfaces.empty())
     out += "\nper table the trials stood on: sorted right at belief, recordings heard per trial\n";
   for (const ArmSurfaces& a : surfaces)
     for (const SurfaceShares& s : a.surfaces)
-      if (s.trials > 0)
-        out += fmt::format("  {:<24} {:<14} {:>4} trials  right {:.3f} at {:.3f}  heard {:.2f}\n",
-                           a.arm, s.surface, s.trials, s.share_right, s.mean_belief, s.mean_heard);
+      if (s.trials > 0) out += shares_line(a.arm, s.surface, s);
   if (!results.unheard_choices.empty())
     out +=
         "\nhow each arm with unheard: auto counts outcomes it has not heard (self-play on its own "
