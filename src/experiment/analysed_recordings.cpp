@@ -15,9 +15,9 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kFormat = "echoplan analysed recordings";
-// 2: each row with its measured level (RowLabel::ebr_db); a kept analysis of version 1 is analysed
-// again.
-constexpr int kVersion = 2;
+// 2: each row with its measured level (RowLabel::ebr_db); 3: and whether it is a noisy copy
+// (RowLabel::noisy_copy). A kept analysis of an earlier version is analysed again.
+constexpr int kVersion = 3;
 
 nlohmann::json to_json(const perception::FeatureSet& data) {
   nlohmann::json sessions = nlohmann::json::array(), actions = nlohmann::json::array();
@@ -25,8 +25,9 @@ nlohmann::json to_json(const perception::FeatureSet& data) {
   for (const perception::ActionData& action : data.actions) {
     nlohmann::json rows = nlohmann::json::array(), modalities = nlohmann::json::array();
     for (const perception::RowLabel& row : action.rows)
-      rows.push_back(row.ebr_db ? nlohmann::json{row.object, row.session, *row.ebr_db}
-                                : nlohmann::json{row.object, row.session});
+      rows.push_back({row.object, row.session,
+                      row.ebr_db ? nlohmann::json(*row.ebr_db) : nlohmann::json(nullptr),
+                      row.noisy_copy});
     for (const perception::Modality& m : action.modalities)
       modalities.push_back({{"name", m.name},
                             {"extractor", m.extractor},
@@ -68,7 +69,8 @@ perception::FeatureSet from_json(const nlohmann::json& j) {
     for (const auto& row : a.at("rows"))
       action.rows.push_back(
           {row.at(0).get<int>(), row.at(1).get<int>(),
-           row.size() > 2 ? std::optional<double>(row.at(2).get<double>()) : std::nullopt});
+           row.at(2).is_null() ? std::nullopt : std::optional<double>(row.at(2).get<double>()),
+           row.at(3).get<bool>()});
     for (const auto& m : a.at("modalities"))
       action.modalities.push_back({m.at("name").get<std::string>(),
                                    m.at("feature_names").get<std::vector<std::string>>(),
@@ -87,9 +89,9 @@ std::string recordings_listing(const perception::RecordingSet& set) {
     std::error_code error;
     const auto size = fs::file_size(r.path, error);
     const auto written = fs::last_write_time(r.path, error).time_since_epoch().count();
-    text += fmt::format("{}\n{}\n{}\n{}\n{} {}\n",
+    text += fmt::format("{}\n{}\n{}\n{}\n{}\n{} {}\n",
                         fs::path(r.path).lexically_relative(set.root).generic_string(), r.object,
-                        r.action, r.session, error ? 0 : size, error ? 0 : written);
+                        r.action, r.session, r.noisy_copy, error ? 0 : size, error ? 0 : written);
   }
   return fmt::format("{:016x}", stable_hash(text));
 }

@@ -115,11 +115,12 @@ const std::vector<Field<CampaignArm>>& arm_fields() {
   return fields;
 }
 
-// `noise: {sources: [...], ebr_db: X}` in the world or the training set.
+// `noise: {sources: [...], ebr_db: X, talkers: N}` in the world or the training set.
 const std::vector<Field<NoiseConfig>>& noise_fields() {
   static const std::vector<Field<NoiseConfig>> fields{
       {.key = "sources", .member = &NoiseConfig::sources, .required = true},
       {.key = "ebr_db", .member = &NoiseConfig::ebr_db},
+      {.key = "talkers", .member = &NoiseConfig::talkers, .identity = Identity::unless_default},
   };
   return fields;
 }
@@ -398,6 +399,9 @@ NoiseConfig read_noise(const YamlReader& f, const YAML::Node& n, const config_fi
     } catch (const InputError& e) {
       f.fail(n, at.section + ": " + e.problem());
     }
+  if (noise.talkers < 1 || noise.talkers > sim::BackgroundNoise::kMostTalkers)
+    f.fail(n, fmt::format("{}: talkers must be 1 to {} (people heard at once), not {}", at.section,
+                          sim::BackgroundNoise::kMostTalkers, noise.talkers));
   return noise;
 }
 

@@ -116,6 +116,7 @@ const char* to_string(WorldType type);
 struct NoiseConfig {
   std::vector<std::string> sources;  // empty: none
   std::string ebr_db;
+  int talkers = 1;  // recorded sources heard at once (sim/background_noise.h: babble)
   bool given() const { return !sources.empty(); }
 };
 

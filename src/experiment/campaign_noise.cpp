@@ -13,7 +13,8 @@ namespace {
 constexpr const char* kTrainingEbr = "-6:24";
 
 robot::WorldNoise noise_sources(const NoiseConfig& noise, const std::string& ebr_db) {
-  return {std::make_shared<const sim::BackgroundNoise>(noise.sources), sim::parse_ebr(ebr_db)};
+  return {std::make_shared<const sim::BackgroundNoise>(noise.sources, noise.talkers),
+          sim::parse_ebr(ebr_db)};
 }
 
 }  // namespace

@@ -40,6 +40,9 @@ struct RowLabel {
   // The event-to-background ratio measured from the performance's recording (audio/levels.h), in
   // dB: a recordings tree's rows have it, a feature set's none.
   std::optional<double> ebr_db{};
+  // A noisy copy of another row's performance (a recordings tree's Recording::noisy_copy): in its
+  // quiet recording's session for the folds, but not a repeat of it (sequences_of_rows()).
+  bool noisy_copy = false;
 };
 
 // One action's data: the row labels it shares with all its modalities.

@@ -280,12 +280,21 @@ struct TableFitter {
   }
 };
 
-// Each inner-held-out session's sequence of `symbols` for this action.
+// The repeats row i is one of: its session's performances, as recorded or (a noisy copy) as heard
+// through added noise. A noisy copy is the same performance as its quiet recording, so the two
+// must not count as two readings of the object: the tempering and the lookalike shares fitted on
+// them would take the copy's agreement for the agreement of repeats.
+int sequence_of_row(const ActionData& action, const TrainingRows& t, std::size_t i) {
+  const RowLabel& row = action.rows[static_cast<std::size_t>(t.rows[i])];
+  return 2 * row.session + (row.noisy_copy ? 1 : 0);
+}
+
+// Each inner-held-out sequence of repeats (sequence_of_row()) of `symbols` for this action.
 std::vector<Sequence> sequences_of(const ActionData& action, const TrainingRows& t,
                                    const std::vector<int>& symbols) {
   std::map<int, Sequence> by_session;
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
-    Sequence& s = by_session[action.rows[static_cast<std::size_t>(t.rows[i])].session];
+    Sequence& s = by_session[sequence_of_row(action, t, i)];
     s.true_class = t.labels[i];
     s.table = t.fold[i];
     s.symbols.push_back(symbols[i]);
@@ -301,7 +310,8 @@ HeldOutPerformances held_out(const ActionData& action, const TrainingRows& t,
                              const std::vector<int>& symbols,
                              const std::vector<Table>& cross_fitted, double beta) {
   HeldOutPerformances held{{}, t.fold, t.labels, symbols, {}};
-  for (int row : t.rows) held.session.push_back(action.rows[static_cast<std::size_t>(row)].session);
+  for (std::size_t i = 0; i < t.rows.size(); ++i)
+    held.session.push_back(sequence_of_row(action, t, i));
   for (const Table& table : cross_fitted) held.cross_fitted.push_back(temper(table, beta));
   return held;
 }
@@ -435,9 +445,10 @@ struct ObservationModelFitter {
     std::vector<int> symbols;  // the graded symbol of each training row
     std::vector<Table> cross_fitted;
   };
+  // Edges by terciles (confidences) or by informative_edges() (levels: `informative`).
   Graded grade(const ActionData& action, const TrainingRows& t, const Decisions& d,
                const std::vector<double>& score, const Table& untempered,
-               const std::vector<Table>& cross_fitted) const {
+               const std::vector<Table>& cross_fitted, bool informative = false) const {
     const auto kept = [&](std::size_t i, int except_fold) {
       return !d.rejected[i] && t.fold[i] != except_fold;
     };
@@ -453,7 +464,9 @@ struct ObservationModelFitter {
     std::vector<double> all_scores;
     std::vector<bool> all_right;
     decisions(-1, all_scores, all_right);
-    g.grades = fit_grades(all_scores, all_right);
+    g.grades = informative
+                   ? fit_grades(all_scores, all_right, informative_edges(all_scores, all_right))
+                   : fit_grades(all_scores, all_right);
     for (std::size_t i = 0; i < t.rows.size(); ++i)
       g.symbols.push_back(graded_symbol(d.heard[i], grade_of(g.grades, score[i]), num_classes()));
     for (std::size_t f = 0; f < cross_fitted.size(); ++f) {
@@ -511,7 +524,7 @@ struct ObservationModelFitter {
     c.graded_table = graded.table;
     fit.graded_temper = graded.temper;
     if (const auto levels = levels_of(action, t)) {
-      Graded by_level = grade(action, t, d, *levels, table.table, cross_fitted);
+      Graded by_level = grade(action, t, d, *levels, table.table, cross_fitted, true);
       c.level_grades = by_level.grades;
       c.level_table = std::move(by_level.table);
       fit.level_temper = by_level.temper;

@@ -4,6 +4,8 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "common/error.h"
@@ -62,6 +64,15 @@ std::vector<double> quantile_edges(std::span<const double> confidence) {
   return edges;
 }
 
+// The log-likelihood of `right` right and `wrong` wrong decisions under their own share right.
+double band_log_likelihood(double right, double wrong) {
+  const double n = right + wrong;
+  double ll = 0.0;
+  if (right > 0.0) ll += right * std::log(right / n);
+  if (wrong > 0.0) ll += wrong * std::log(wrong / n);
+  return ll;
+}
+
 // (counts + 1) / (n + kGrades): one pseudo-count per grade, so no grade rules a class out.
 std::vector<double> smoothed(const std::vector<double>& counts) {
   double total = 0.0;
@@ -75,6 +86,44 @@ std::vector<double> smoothed(const std::vector<double>& counts) {
 
 GradeCalibration fit_grades(std::span<const double> confidence, const std::vector<bool>& right) {
   return fit_grades(confidence, right, quantile_edges(confidence));
+}
+
+std::vector<double> informative_edges(std::span<const double> score,
+                                      const std::vector<bool>& right) {
+  static_assert(kGrades == 3, "two cuts");
+  if (score.size() != right.size())
+    throw std::invalid_argument("informative_edges: one rightness flag per score");
+  const std::size_t n = score.size();
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return score[a] < score[b]; });
+  // rights_before[k]: right decisions among the k lowest scores.
+  std::vector<double> rights_before(n + 1, 0.0);
+  for (std::size_t k = 0; k < n; ++k) rights_before[k + 1] = rights_before[k] + right[order[k]];
+  const std::size_t least = std::max<std::size_t>(5, n / 20);
+  constexpr std::size_t kMostCuts = 128;
+  // A cut at rank k puts the k lowest scores below it; only between distinct scores.
+  std::vector<std::size_t> cuts;
+  for (std::size_t c = 1; c < kMostCuts; ++c) {
+    const std::size_t k = c * n / kMostCuts;
+    if (k >= least && n - k >= least && score[order[k - 1]] < score[order[k]] &&
+        (cuts.empty() || cuts.back() != k))
+      cuts.push_back(k);
+  }
+  const auto band = [&](std::size_t from, std::size_t to) {
+    const double r = rights_before[to] - rights_before[from];
+    return band_log_likelihood(r, static_cast<double>(to - from) - r);
+  };
+  double best = -std::numeric_limits<double>::infinity();
+  std::vector<double> edges;
+  for (std::size_t i = 0; i < cuts.size(); ++i)
+    for (std::size_t j = i + 1; j < cuts.size(); ++j) {
+      if (cuts[j] - cuts[i] < least) continue;
+      const double ll = band(0, cuts[i]) + band(cuts[i], cuts[j]) + band(cuts[j], n);
+      if (ll > best) best = ll, edges = {score[order[cuts[i]]], score[order[cuts[j]]]};
+    }
+  return edges.empty() ? quantile_edges(score) : edges;
 }
 
 GradeCalibration fit_grades(std::span<const double> confidence, const std::vector<bool>& right,

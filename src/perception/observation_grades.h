@@ -18,9 +18,10 @@
 //
 // Observations of kind `levels` are graded the same way by how noisy the recording was instead of
 // how sure the classifier was: `mug@noisy`, `mug@fair` or `mug@clear`, by the event-to-background
-// ratio measured from the recording (audio/levels.h) against the terciles of the training
-// recordings' ratios. A reading heard in noise is wrong more often, so P(noisy | wrong) >
-// P(noisy | right): the table says a noisy reading tells less, and a planner listens again.
+// ratio measured from the recording (audio/levels.h) against the two cuts of the training
+// recordings' ratios that best tell right readings from wrong (informative_edges()). A reading
+// heard in noise is wrong more often, so P(noisy | wrong) > P(noisy | right): the table says a
+// noisy reading tells less, and a planner listens again.
 #pragma once
 
 #include <array>
@@ -58,6 +59,14 @@ int grade_of(const GradeCalibration& grades, double confidence);
 // class) and whether each was right. Rejected decisions are left out by the caller. Throws
 // std::invalid_argument when the spans differ in length.
 GradeCalibration fit_grades(std::span<const double> confidence, const std::vector<bool>& right);
+// The kGrades - 1 edges that best tell the right decisions from the wrong ones: the cuts of the
+// scores into kGrades bands of at least max(5, n/20) decisions each that maximise the likelihood of
+// right and wrong under each band's own share right (cuts tried at up to 128 ranks). Levels are
+// graded so: where the training set spans quiet and noisy recordings, terciles would spend two
+// grades on the quiet ones. The terciles when no such cuts exist (fewer than 15 decisions, or too
+// few distinct scores).
+std::vector<double> informative_edges(std::span<const double> score,
+                                      const std::vector<bool>& right);
 // The same decisions graded with given edges (for a table fitted on some folds).
 GradeCalibration fit_grades(std::span<const double> confidence, const std::vector<bool>& right,
                             std::vector<double> edges);

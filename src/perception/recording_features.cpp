@@ -38,7 +38,7 @@ FeatureSet feature_set_from_recordings(const RecordingSet& set, const AnalysisSe
         std::find(set.actions.begin(), set.actions.end(), r.action) - set.actions.begin())];
     analyzer.analyse(read_recording(r.path, settings.sample_rate), r.path, analysis);
     action.rows.push_back(
-        {object, features.add_session(object, session_of(r, set)), analysis.ebr_db});
+        {object, features.add_session(object, session_of(r, set)), analysis.ebr_db, r.noisy_copy});
     Modality& audio = action.modalities.front();
     audio.rows.push_back(rows_of.extract(analysis));
     // An extractor whose row length follows the analysis names its features by their place.

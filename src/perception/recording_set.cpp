@@ -51,11 +51,17 @@ void add_unique(std::vector<std::string>& list, const std::string& name) {
   if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
 }
 
-// Reads DIR/manifest.csv into `set`'s objects and actions (manifest order) and `sessions` (each
-// listed file -> its session column, "" when there is none). Returns (object, action) -> files in
-// manifest order.
+// What a manifest row says of its file beyond where it is.
+struct ManifestEntry {
+  std::string session;  // "" when the manifest has no session column
+  bool noisy_copy = false;
+};
+
+// Reads DIR/manifest.csv into `set`'s objects and actions (manifest order) and `entries` (each
+// listed file -> its row's session and noise). Returns (object, action) -> files in manifest
+// order.
 Layout read_manifest(const fs::path& root, const fs::path& manifest_path, RecordingSet& set,
-                     std::map<std::string, std::string>& sessions) {
+                     std::map<std::string, ManifestEntry>& entries) {
   const std::string name = manifest_path.string();
   CsvReader csv(read_text_file(name, "manifest"), name);
   std::vector<std::string> header, cells;
@@ -72,6 +78,7 @@ Layout read_manifest(const fs::path& root, const fs::path& manifest_path, Record
   const std::size_t file_col = column("file"), object_col = column("object"),
                     action_col = column("action");
   const std::size_t session_col = column("session");  // header.size(): no session column
+  const std::size_t noise_col = column("noise");      // the same
   Layout chosen;
   while (csv.next(cells)) {
     const int line_no = csv.line();
@@ -105,7 +112,9 @@ Layout read_manifest(const fs::path& root, const fs::path& manifest_path, Record
                        fmt::format("file '{}' has an empty session (the manifest has a session "
                                    "column, so every row needs one)",
                                    file));
-    if (!sessions.emplace(file, has_session ? cells[session_col] : std::string()).second)
+    const bool noisy =
+        noise_col < header.size() && !cells[noise_col].empty() && cells[noise_col] != "none";
+    if (!entries.emplace(file, ManifestEntry{has_session ? cells[session_col] : "", noisy}).second)
       throw InputError(name, line_no, fmt::format("file '{}' is listed twice", file));
     add_unique(set.objects, object);
     add_unique(set.actions, action);
@@ -142,13 +151,13 @@ RecordingSet load_recording_set(const std::string& dir) {
   set.root = dir;
   // (object, action) -> files in set order.
   Layout chosen;
-  std::map<std::string, std::string> sessions;  // manifest file -> its session ("" without column)
+  std::map<std::string, ManifestEntry> entries;  // manifest file -> its row's session and noise
   const fs::path manifest_path = root / "manifest.csv";
   if (fs::exists(manifest_path)) {
-    chosen = read_manifest(root, manifest_path, set, sessions);
+    chosen = read_manifest(root, manifest_path, set, entries);
     for (const auto& [key, files] : layout)
       for (const auto& file : files)
-        if (!sessions.contains(file))
+        if (!entries.contains(file))
           throw InputError(
               (root / file).string(), 0,
               "recording is not listed in manifest.csv (add a row or remove the file)");
@@ -174,9 +183,12 @@ RecordingSet load_recording_set(const std::string& dir) {
                 object, action));
   for (const auto& action : set.actions)
     for (const auto& object : set.objects)
-      for (const auto& file : chosen.at({object, action}))
-        set.recordings.push_back({(root / file).string(), object, action,
-                                  sessions.contains(file) ? sessions.at(file) : std::string()});
+      for (const auto& file : chosen.at({object, action})) {
+        const auto entry = entries.find(file);
+        const ManifestEntry listed = entry == entries.end() ? ManifestEntry{} : entry->second;
+        set.recordings.push_back(
+            {(root / file).string(), object, action, listed.session, listed.noisy_copy});
+      }
   return set;
 }
 

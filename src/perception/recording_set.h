@@ -21,6 +21,9 @@ struct Recording {
   // The manifest's `session` column (one exploration of one object); empty when the manifest has
   // no such column or there is no manifest, meaning each recording is its own session.
   std::string session;
+  // True when the manifest's `noise` column names a source (not empty, not "none"): a copy of a
+  // performance mixed with background noise (loop/noisy_copy.h), not a performance of its own.
+  bool noisy_copy = false;
 };
 
 // Every recording of a folder, grouped by (object, action). Invariants (load_recording_set checks
@@ -43,7 +46,8 @@ struct RecordingSet {
 // set is the manifest's rows: each row's file must exist and lie in <object>/<action>/; a recording
 // file on disk that the manifest does not list is an error. Without a manifest, every file under
 // DIR/<object>/<action>/ is a recording. An optional manifest column `session` names each
-// recording's session (then required on every row). Errors (InputError naming the path, and the
+// recording's session (then required on every row), and an optional column `noise` the source a
+// noisy copy was mixed with (Recording::noisy_copy). Errors (InputError naming the path, and the
 // manifest line where there is one): DIR missing or not a folder; a file where an action folder
 // belongs (files directly in DIR, such as a groups file or a README, are ignored); a file that is
 // not a recording (hidden files are skipped); an (object, action) folder with no recordings; an

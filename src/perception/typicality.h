@@ -36,7 +36,7 @@ namespace echoplan::perception {
 
 // One action's inner-held-out performances, in any order.
 struct HeldOutPerformances {
-  std::vector<int> session;  // the session each performance belongs to
+  std::vector<int> session;  // the sequence of repeats each performance is one of (its session)
   std::vector<int> fold;     // its inner fold (the same for all of a session's performances)
   std::vector<int> label;    // its true class
   std::vector<int> symbol;   // what it was heard as

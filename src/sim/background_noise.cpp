@@ -108,8 +108,14 @@ const std::vector<std::string>& builtin_noise_names() {
   return names;
 }
 
-BackgroundNoise::BackgroundNoise(const std::vector<std::string>& sources) {
+BackgroundNoise::BackgroundNoise(const std::vector<std::string>& sources, int talkers)
+    : talkers_(talkers) {
   if (sources.empty()) throw InputError("background noise: name at least one source");
+  if (talkers < 1 || talkers > kMostTalkers)
+    throw InputError(
+        fmt::format("background noise: talkers must be 1 to {} (people heard at once), "
+                    "not {}",
+                    kMostTalkers, talkers));
   const auto& builtins = builtin_noise_names();
   for (const std::string& source : sources) {
     if (std::find(builtins.begin(), builtins.end(), source) != builtins.end()) {
@@ -128,8 +134,19 @@ BackgroundNoise::BackgroundNoise(const std::vector<std::string>& sources) {
       audio::ReadOptions options;
       options.channel_policy = audio::ChannelPolicy::mean;
       names_.push_back(file);
+      recorded_.push_back(recordings_.size());
       recordings_.push_back(audio::read_audio(file, options));
     }
+  }
+}
+
+void BackgroundNoise::add_other_talkers(std::vector<double>& noise, int rate, Rng& rng) const {
+  for (int t = 1; t < talkers_; ++t) {
+    const std::size_t which = recorded_[std::min(
+        recorded_.size() - 1, static_cast<std::size_t>(uniform01(rng) * recorded_.size()))];
+    const std::vector<double> other = segment(recordings_[which], noise.size(), rate, rng);
+    // Each talker at the level of its own recording, as people talk: the loud and the soft.
+    for (std::size_t i = 0; i < noise.size(); ++i) noise[i] += other[i];
   }
 }
 
@@ -139,10 +156,14 @@ BackgroundNoise::Mixed BackgroundNoise::mix(const audio::AudioClip& recording, c
       std::min(names_.size() - 1, static_cast<std::size_t>(uniform01(rng) * names_.size()));
   Mixed mixed{recording, names_[which], ebr.low + uniform01(rng) * (ebr.high - ebr.low)};
   const std::size_t frames = recording.frames();
-  const std::vector<double> noise =
-      recordings_[which].samples.empty()
-          ? builtin(names_[which], frames, recording.sample_rate, rng)
-          : segment(recordings_[which], frames, recording.sample_rate, rng);
+  const bool recorded = !recordings_[which].samples.empty();
+  std::vector<double> noise = recorded
+                                  ? segment(recordings_[which], frames, recording.sample_rate, rng)
+                                  : builtin(names_[which], frames, recording.sample_rate, rng);
+  if (recorded && talkers_ > 1) {
+    add_other_talkers(noise, recording.sample_rate, rng);
+    mixed.source += fmt::format(" and {} others", talkers_ - 1);
+  }
   const double event = audio::event_level(recording), level = rms(noise);
   if (event <= 0.0 || level <= 0.0) return mixed;
   const double gain = event / std::pow(10.0, mixed.ebr_db / 20.0) / level;

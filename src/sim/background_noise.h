@@ -9,6 +9,12 @@
 // every channel; which source, where in it and (for a range of EBRs) which ratio are drawn from the
 // caller's Rng, so the same seed gives the same noise.
 //
+// Babble: with `talkers` N > 1, a drawn recording is heard with N - 1 more segments of recordings
+// drawn the same way, each at its own level, summed before the ratio is set: N people talking at
+// once. One talker leaves gaps (a prompt's silences, the pauses between words) where the strike is
+// heard clean and where a level measured from the clip sees no background (audio/levels.h);
+// babble of many, as a canteen or an open office, fills them. A built-in source is one stream.
+//
 // Sources: recordings (files, or folders read recursively for .wav/.flac/.aiff files in name
 // order), or built-in noise made at the clip's rate from the Rng: "white" (unit white noise),
 // "room" (the simulator's room noise, flat below 500 Hz and falling 6 dB per octave above) and
@@ -39,11 +45,14 @@ class BackgroundNoise {
  public:
   // Each entry a built-in name, a recording or a folder of them. InputError naming an entry that is
   // none of those, a folder without recordings, or a recording that does not decode.
-  explicit BackgroundNoise(const std::vector<std::string>& sources);
+  // InputError also for `talkers` outside [1, kMostTalkers].
+  explicit BackgroundNoise(const std::vector<std::string>& sources, int talkers = 1);
+  static constexpr int kMostTalkers = 64;
 
   struct Mixed {
     audio::AudioClip clip;  // the recording with the noise added, clamped to [-1, 1]
-    std::string source;     // the built-in name or the file the noise came from
+    std::string source;     // the built-in name or the file the noise came from (babble: the
+                            // first talker's, "and N others")
     double ebr_db = 0.0;    // the ratio it was mixed at
   };
   // `recording` with noise at an EBR drawn from `ebr`. A silent recording gets no noise (its event
@@ -52,10 +61,17 @@ class BackgroundNoise {
 
   // The sources after folders are listed: built-in names and files, in order.
   const std::vector<std::string>& sources() const { return names_; }
+  int talkers() const { return talkers_; }
 
  private:
+  // The sum of talkers_ - 1 segments of recordings drawn from the recorded sources, added to
+  // `noise`: the babble around the first talker.
+  void add_other_talkers(std::vector<double>& noise, int rate, Rng& rng) const;
+
   std::vector<std::string> names_;
   std::vector<audio::AudioClip> recordings_;  // [source]: mono; empty for a built-in
+  std::vector<std::size_t> recorded_;         // the indices of the recorded sources
+  int talkers_ = 1;
 };
 
 }  // namespace echoplan::sim

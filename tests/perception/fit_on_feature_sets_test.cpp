@@ -134,6 +134,51 @@ TEST(FitOnFeatureSets, TemperingKeepsCorrelatedRepeatsFromBecomingOverconfident)
   EXPECT_NEAR(tempered_confidence / n, accuracy, 0.1) << "tempered is calibrated";
 }
 
+// `set` with every performance heard twice: each row followed by an exact copy, marked as a noisy
+// copy (RowLabel::noisy_copy) or not.
+FeatureSet with_copies(const FeatureSet& set, bool marked) {
+  FeatureSet copied = set;
+  for (ActionData& action : copied.actions) {
+    action.rows.clear();
+    for (Modality& m : action.modalities) m.rows.clear();
+  }
+  for (std::size_t a = 0; a < set.actions.size(); ++a)
+    for (std::size_t r = 0; r < set.actions[a].rows.size(); ++r)
+      for (bool copy : {false, true}) {
+        RowLabel row = set.actions[a].rows[r];
+        row.noisy_copy = copy && marked;
+        copied.actions[a].rows.push_back(row);
+        for (std::size_t m = 0; m < set.actions[a].modalities.size(); ++m)
+          copied.actions[a].modalities[m].rows.push_back(set.actions[a].modalities[m].rows[r]);
+      }
+  return copied;
+}
+
+// A noisy copy is the same performance heard again, not a repeat: tempering must not take a
+// copy's agreement with its recording for the agreement of two performances. The tables are the
+// same whether the copies are marked or not (they count every row); only the sequences differ.
+// Marked, the copies form sequences of their own, the recordings' again, so the fitted temper is
+// the one the recordings' sequences ask for. Taken as repeats, every sequence holds each symbol
+// twice, which a temper of half (up to the tempered rows' normalisation) scores as the marked
+// temper scores it once: the temper about halves.
+TEST(FitOnFeatureSets, NoisyCopiesAreNotTakenForRepeats) {
+  SyntheticSpec spec;
+  spec.objects = 20;
+  spec.repeats = 3;
+  spec.modalities = {{"audio", 4, 1.5}};
+  const FeatureSet set = synthetic(spec, "fm_copies");
+  const DatasetTask task = make_dataset_task(set, nullptr, HoldOut::session);
+  const Fold fold = make_folds(set, task)[0];
+  const auto temper_of = [&](const FeatureSet& data) {
+    return fit_observation_model(data, task, training_sessions(data, fold), session_fit_options())
+        .calibration(set.actions[0].name)
+        .fit->temper;
+  };
+  const double marked = temper_of(with_copies(set, true)),
+               unmarked = temper_of(with_copies(set, false));
+  EXPECT_NEAR(unmarked, marked / 2, 0.1 * marked) << marked;
+}
+
 TEST(FitOnFeatureSets, NovelObjectsAreRecognisedByTheirGroup) {
   SyntheticSpec spec;
   spec.objects = 20;

@@ -31,6 +31,26 @@ TEST(ObservationGrades, EdgesAreTheTercilesAndAConfidenceOnAnEdgeTakesTheHigherG
   EXPECT_EQ(grade_of(g, 1.0), 2);
 }
 
+// Levels are cut where right and wrong decisions part: 100 decisions scored 0..99, the ten lowest
+// wrong, the next twenty right every other one, the rest right. The cuts at 10 and 30 leave two
+// pure bands and one half right; any other pair of cuts mixes more (e.g. 10 and 31: 11 right and
+// 10 wrong in the middle, a lower likelihood than 10 and 10). The terciles would be 33 and 66.
+TEST(ObservationGrades, InformativeEdgesCutWhereRightAndWrongPart) {
+  std::vector<double> score;
+  std::vector<bool> right;
+  for (int i = 0; i < 100; ++i) {
+    score.push_back(i);
+    right.push_back(i >= 30 || (i >= 10 && i % 2 == 0));
+  }
+  EXPECT_EQ(informative_edges(score, right), (std::vector<double>{10, 30}));
+  EXPECT_EQ(fit_grades(score, right).edges, (std::vector<double>{33, 66}));
+  // Too few decisions for bands of five: the terciles.
+  const std::vector<double> few{1, 2, 3, 4, 5, 6};
+  EXPECT_EQ(informative_edges(few, {false, false, true, true, true, true}),
+            fit_grades(few, {false, false, true, true, true, true}).edges);
+  EXPECT_THROW(informative_edges(few, {true}), std::invalid_argument);
+}
+
 TEST(ObservationGrades, RightAndWrongDecisionsAreCountedWithOnePseudoCountPerGrade) {
   // Right decisions: confidences in grades high, high, mid; wrong ones: low, low.
   const std::vector<double> confidence{0.95, 0.9, 0.6, 0.2, 0.3};

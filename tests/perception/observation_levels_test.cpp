@@ -64,9 +64,10 @@ TEST(ObservationLevels, ANoisyRecordingIsHeardAsNoisyAndANoisyReadingTellsLess) 
   // Half the strikes are drowned: they fill the noisy grade, where the classifier errs more.
   const auto& g = *c.level_grades;
   // A drowned strike measures about 0 dB (its loudest window is mostly noise), a quiet one tens
-  // of dB: the lower edge lies between them.
+  // of dB, and every quiet one is heard right: the cuts (informative_edges) lie among the drowned
+  // strikes, where right and wrong readings part, and the quiet ones are all clear.
   EXPECT_LT(g.edges[0], 10.0);
-  EXPECT_GT(g.edges[1], 10.0);
+  EXPECT_LT(g.edges[1], 10.0);
   EXPECT_GT(g.given_wrong[0], g.given_right[0]);
   EXPECT_GT(g.given_right[2], g.given_wrong[2]);
   // So the likelihood ratio of hearing the true class is lower in noise than in the clear.
@@ -86,7 +87,7 @@ TEST(ObservationLevels, ANoisyRecordingIsHeardAsNoisyAndANoisyReadingTellsLess) 
   const audio::AudioClip quiet = test_model::recording(1, 4242);
   EXPECT_EQ(model.classify(test_model::analysed(model, quiet), "strike").level_grade, 2);
   const audio::AudioClip noisy = in_white_noise(quiet, -12.0, 99);
-  EXPECT_EQ(model.classify(test_model::analysed(model, noisy), "strike").level_grade, 0);
+  EXPECT_LT(model.classify(test_model::analysed(model, noisy), "strike").level_grade, 2);
 
   nlohmann::json file = observation_model_to_json(model);
   const ObservationModel back = observation_model_from_json(file, "model.json");

@@ -77,6 +77,26 @@ TEST_F(RecordingSetTest, ManifestOrderWins) {
   EXPECT_EQ(set.recordings[0].path, (dir_ / "mug/strike/b.wav").string());
 }
 
+// `echoplan add-noise` and a campaign's noisy twins name each recording's noise source: a named
+// one is a noisy copy, "none" or an empty cell a recording as made.
+TEST_F(RecordingSetTest, TheNoiseColumnMarksNoisyCopies) {
+  write_text(dir_ / "manifest.csv",
+             "file,object,action,session,ebr_db,noise\n"
+             "mug/strike/a.wav,mug,strike,1,,none\n"
+             "mug/strike/b.wav,mug,strike,1,6.5,/speech/one.wav\n"
+             "mug/slide/a.wav,mug,slide,1,,\n"
+             "mug/slide/b.wav,mug,slide,1,0,white\n"
+             "cup/strike/a.wav,cup,strike,2,,none\n"
+             "cup/strike/b.wav,cup,strike,2,,none\n"
+             "cup/slide/a.wav,cup,slide,2,,none\n"
+             "cup/slide/b.wav,cup,slide,2,,none\n");
+  std::vector<bool> copies;
+  for (const Recording& r : load_recording_set(dir_.string()).recordings)
+    copies.push_back(r.noisy_copy);
+  // Grouped by action (strike, slide), then object (mug, cup), in manifest order.
+  EXPECT_EQ(copies, (std::vector<bool>{false, true, false, false, false, true, false, false}));
+}
+
 TEST_F(RecordingSetTest, MissingOrNotAFolder) {
   expect_error(dir_ / "nope", {"nope", "does not exist"});
   write_text(dir_ / "file.txt", "x");

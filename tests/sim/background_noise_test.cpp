@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <numbers>
 
 #include "audio/io.h"
@@ -107,7 +108,33 @@ TEST(BackgroundNoise, RealSpeechFromAFolderOfRecordings) {
               0.01);
 }
 
+// Babble: a talker with gaps (a tone for half of every second), heard alone, leaves half of
+// the clip quiet, so the level measured from the clip (audio/levels.h) is far above the ratio it
+// was mixed at; sixteen of them at once fill the gaps and the measure comes near the truth. Each
+// mix keeps the ratio asked, and names its first talker and how many others.
+TEST(BackgroundNoise, BabbleOfManyTalkersFillsTheGapsOfOne) {
+  const fs::path dir = fresh_dir("babble");
+  audio::write_audio((dir / "talker.wav").string(), tone(1.0, 0.3, 230, 0.0, 0.5));
+  const audio::AudioClip strike = tone(2.0, 0.05, 700, 0.4, 0.45);
+  const double event = audio::event_level(strike);
+  std::map<int, double> measured_minus_mixed;
+  for (int talkers : {1, 16}) {
+    const BackgroundNoise noise({(dir / "talker.wav").string()}, talkers);
+    EXPECT_EQ(noise.talkers(), talkers);
+    Rng rng(11);
+    const BackgroundNoise::Mixed mixed = noise.mix(strike, {6, 6}, rng);
+    EXPECT_EQ(mixed.source, talkers == 1 ? (dir / "talker.wav").string()
+                                         : (dir / "talker.wav").string() + " and 15 others");
+    EXPECT_NEAR(20 * std::log10(event / added_rms(strike, mixed.clip)), 6.0, 0.01);
+    measured_minus_mixed[talkers] = audio::measured_ebr_db(mixed.clip) - 6.0;
+  }
+  EXPECT_GT(measured_minus_mixed[1], 20.0);  // the gaps: nearly the quiet clip's ratio
+  EXPECT_LT(std::abs(measured_minus_mixed[16]), 6.0);
+}
+
 TEST(BackgroundNoise, BadSourcesAndRatiosAreNamed) {
+  for (int talkers : {0, -1, BackgroundNoise::kMostTalkers + 1})
+    EXPECT_THROW(BackgroundNoise({"white"}, talkers), InputError) << talkers;
   const fs::path dir = fresh_dir("bad");
   try {
     BackgroundNoise({(dir / "missing.wav").string()});

@@ -18,6 +18,11 @@ void add_noise_options(CLI::App& cmd, NoiseFlags& flags, bool required) {
   auto* ebr = cmd.add_option("--ebr", flags.ebr,
                              "Event-to-background ratio in dB, X or a range LO:HI drawn per "
                              "recording, in [-60, 60]");
+  cmd.add_option("--talkers", flags.talkers,
+                 fmt::format("Babble: how many segments of the recorded sources are heard at once "
+                             "(1 to {}; one talker leaves gaps, many fill them)",
+                             sim::BackgroundNoise::kMostTalkers))
+      ->default_val(1);
   if (required) {
     noise->required();
     ebr->required();
@@ -25,11 +30,14 @@ void add_noise_options(CLI::App& cmd, NoiseFlags& flags, bool required) {
 }
 
 std::optional<robot::WorldNoise> world_noise(const NoiseFlags& flags) {
+  if (flags.sources.empty() && flags.talkers != 1)
+    throw InputError("--talkers needs --noise: the recordings the talkers are drawn from");
   if (flags.sources.empty() && flags.ebr.empty()) return std::nullopt;
   if (flags.sources.empty()) throw InputError("--ebr needs --noise: the sources to mix in");
   if (flags.ebr.empty()) throw InputError("--noise needs --ebr: the ratio to mix them at");
   const sim::EbrRange ebr = sim::parse_ebr(flags.ebr);
-  return robot::WorldNoise{std::make_shared<const sim::BackgroundNoise>(flags.sources), ebr};
+  return robot::WorldNoise{
+      std::make_shared<const sim::BackgroundNoise>(flags.sources, flags.talkers), ebr};
 }
 
 }  // namespace echoplan::cli

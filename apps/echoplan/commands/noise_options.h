@@ -14,10 +14,11 @@ namespace echoplan::cli {
 struct NoiseFlags {
   std::vector<std::string> sources;  // empty: no noise
   std::string ebr;                   // "X" or "LO:HI" dB
+  int talkers = 1;                   // recorded sources heard at once (babble)
 };
 
-// Adds --noise and --ebr to `cmd`; `required`: both must be given (add-noise), else both or
-// neither.
+// Adds --noise, --ebr and --talkers to `cmd`; `required`: both must be given (add-noise), else both
+// or neither.
 void add_noise_options(CLI::App& cmd, NoiseFlags& flags, bool required);
 
 // The noise the flags name, its sources read now; none without --noise. InputError for --ebr
