@@ -43,10 +43,11 @@ solvers::PlannerOverrides planner_overrides(const py::kwargs& settings) {
 const char* planner_settings_doc() {
   return "Planner settings (keywords; left out or None: the problem file's, as the flags of "
          "`echoplan trials`): solver ('abt', 'pomcp', 'offline' or a strategy: all_actions, "
-         "best_single, information_gain, random), policy (offline: policy.json), episodes or "
-         "step_ms (search per step), exploration, depth, leaf ('policy', 'exact', "
-         "'exact-offline', 'lookahead', 'heuristic', 'rollout'), unheard ('share' or 'commit'), "
-         "expand_after, exact_share, offline_expansions, root_particles, branch_threshold.";
+         "best_single, decision_region, information_gain, random), policy (offline: "
+         "policy.json), episodes or step_ms (search per step), exploration, depth, leaf ('policy', "
+         "'exact', 'exact-offline', 'lookahead', 'heuristic', 'rollout'), unheard ('share' or "
+         "'commit'), expand_after, exact_share, offline_expansions, root_particles, "
+         "branch_threshold.";
 }
 
 }  // namespace echoplan::python

@@ -72,7 +72,7 @@ def test_the_planner_step_by_step_makes_the_commands_decisions(report_problem, c
     assert logged == command_steps(step_rows, model)
 
 
-@pytest.mark.parametrize("solver", ["information_gain", "pomcp"])
+@pytest.mark.parametrize("solver", ["information_gain", "decision_region", "pomcp"])
 def test_any_solver_by_name_makes_the_commands_decisions(report_problem, tmp_path, solver):
     echoplan_command("trials", "--problem", REPORT_PROBLEM, "--solver", solver, "--trials", 6,
                      "--episodes", 300, "--seed", 3, "--out", tmp_path)

@@ -40,8 +40,8 @@ struct CampaignArm {
   // (what calibration buys is this arm against one planning with the file's own table).
   bool calibrate = false;
   // "plan": the campaign's planner; else a fixed strategy by its solver name (all_actions,
-  // best_single, information_gain, random: solvers/solver_factory.h), the baselines a planner is
-  // measured against.
+  // best_single, decision_region, information_gain, random: solvers/solver_factory.h), the
+  // baselines a planner is measured against.
   std::string strategy = kPlanStrategy;
   // What the arm hears (perception/observation_grades.h): "labels", the class a performance was
   // heard as; or "graded", the class and how sure the classifier was (a calibrating arm of a

@@ -55,10 +55,15 @@ class BestSingle final : public FixedStrategy {
   int action_ = 0;
 };
 
-class InformationGain final : public FixedStrategy {
- public:
-  explicit InformationGain(pomdp::ModelPtr model)
-      : FixedStrategy("information_gain", std::move(model)), lookahead_(problem()) {}
+// information_gain and decision_region: the same commit rule and cost normalisation, so the two
+// differ only in gain(), what one performance of a sensing action is expected to tell.
+class GreedyPerCost : public FixedStrategy {
+ protected:
+  GreedyPerCost(const std::string& name, pomdp::ModelPtr model)
+      : FixedStrategy(name, std::move(model)), lookahead_(problem()) {}
+
+  virtual double gain(int a) const = 0;  // at objects()
+  const OneStepLookahead& lookahead() const { return lookahead_; }
 
  private:
   int decide(Rng& /*rng*/) override {
@@ -73,22 +78,41 @@ class InformationGain final : public FixedStrategy {
       best_look =
           std::max(best_look, values()[a] = lookahead_.sense_then_commit_value(objects(), a));
     if (commit >= best_look) return sort_action();
-    return most_informative_per_cost(sensing);
+    return greatest_gain_per_cost(sensing);
   }
 
-  int most_informative_per_cost(const std::vector<int>& sensing) const {
+  int greatest_gain_per_cost(const std::vector<int>& sensing) const {
     int chosen = sensing.front();
     double chosen_rate = -std::numeric_limits<double>::infinity();
     for (int a : sensing) {
       const double cost = std::abs(problem().data().sensing[a].reward);
-      const double gain = lookahead_.expected_entropy_reduction(objects(), a);
-      const double rate = cost > 0.0 ? gain / cost : gain;
+      const double rate = cost > 0.0 ? gain(a) / cost : gain(a);
       if (rate > chosen_rate) chosen = a, chosen_rate = rate;
     }
     return chosen;
   }
 
   OneStepLookahead lookahead_;
+};
+
+class InformationGain final : public GreedyPerCost {
+ public:
+  explicit InformationGain(pomdp::ModelPtr model)
+      : GreedyPerCost("information_gain", std::move(model)) {}
+
+ private:
+  double gain(int a) const override { return lookahead().expected_entropy_reduction(objects(), a); }
+};
+
+class DecisionRegion final : public GreedyPerCost {
+ public:
+  explicit DecisionRegion(pomdp::ModelPtr model)
+      : GreedyPerCost("decision_region", std::move(model)), cut_(problem().data()) {}
+
+ private:
+  double gain(int a) const override { return cut_.expected_cut(objects(), a); }
+
+  EdgeCut cut_;
 };
 
 class RandomChoice final : public FixedStrategy {
@@ -109,7 +133,7 @@ class RandomChoice final : public FixedStrategy {
 }  // namespace
 
 std::vector<std::string> strategy_names() {
-  return {"all_actions", "best_single", "information_gain", "random"};
+  return {"all_actions", "best_single", "decision_region", "information_gain", "random"};
 }
 
 bool is_strategy(const std::string& name) {
@@ -120,6 +144,7 @@ bool is_strategy(const std::string& name) {
 std::unique_ptr<Solver> make_strategy(const std::string& name, pomdp::ModelPtr model) {
   if (name == "all_actions") return std::make_unique<AllActions>(std::move(model));
   if (name == "best_single") return std::make_unique<BestSingle>(std::move(model));
+  if (name == "decision_region") return std::make_unique<DecisionRegion>(std::move(model));
   if (name == "information_gain") return std::make_unique<InformationGain>(std::move(model));
   if (name == "random") return std::make_unique<RandomChoice>(std::move(model));
   throw InputError(

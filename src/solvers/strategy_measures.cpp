@@ -100,4 +100,67 @@ double OneStepLookahead::expected_entropy_reduction(const std::vector<double>& o
   return entropy(b) - after;
 }
 
+std::vector<int> decision_regions(const pomdp::ObjectProblemData& data) {
+  std::vector<int> region(data.objects.size(), 0);
+  for (std::size_t k = 0; k < region.size(); ++k)
+    for (std::size_t j = 1; j < data.sorting_reward.size(); ++j)
+      if (data.sorting_reward[j][k] > data.sorting_reward[region[k]][k])
+        region[k] = static_cast<int>(j);
+  return region;
+}
+
+EdgeCut::EdgeCut(const pomdp::ObjectProblemData& data)
+    : region_(decision_regions(data)),
+      num_regions_(static_cast<int>(data.sorting.size())),
+      num_symbols_(static_cast<int>(data.observation_symbols.size())) {
+  const int K = static_cast<int>(data.objects.size()), C = num_symbols_;
+  for (std::size_t a = 0; a < data.sensing.size(); ++a) {
+    std::vector<double> table(K * C), consistency(K * C), offset(C, 0.0);
+    for (int k = 0; k < K; ++k) {
+      const std::vector<double>& row = data.observation_table[a][k];
+      const double likeliest = *std::max_element(row.begin(), row.end());
+      for (int o = 0; o < C; ++o) {
+        table[k * C + o] = row[o];
+        consistency[k * C + o] = likeliest > 0.0 ? row[o] / likeliest : 0.0;
+        offset[o] = std::max(offset[o], consistency[k * C + o]);
+      }
+    }
+    for (double& m : offset) m *= m;
+    table_.push_back(std::move(table));
+    consistency_.push_back(std::move(consistency));
+    offset_.push_back(std::move(offset));
+    always_collides_.push_back(data.sensing[a].collision_probability >= 1.0);
+  }
+}
+
+double EdgeCut::cross_mass(const std::vector<double>& w) const {
+  region_sum_.assign(num_regions_, 0.0);
+  double total = 0.0;
+  for (std::size_t k = 0; k < w.size(); ++k) region_sum_[region_[k]] += w[k], total += w[k];
+  double within = 0.0;
+  for (double r : region_sum_) within += r * r;
+  return std::max(0.0, 0.5 * (total * total - within));
+}
+
+double EdgeCut::edge_mass(const std::vector<double>& objects) const { return cross_mass(objects); }
+
+double EdgeCut::expected_cut(const std::vector<double>& objects, int a) const {
+  if (always_collides_.at(a)) return 0.0;
+  const std::vector<double>& table = table_[a];
+  const std::vector<double>& consistency = consistency_[a];
+  const std::size_t K = objects.size(), C = num_symbols_;
+  const double mass = cross_mass(objects);
+  double cut = 0.0;
+  weighted_.resize(K);
+  for (std::size_t o = 0; o < C; ++o) {
+    double p = 0.0;  // P(o | b, a)
+    for (std::size_t k = 0; k < K; ++k) {
+      p += objects[k] * table[k * C + o];
+      weighted_[k] = objects[k] * consistency[k * C + o];
+    }
+    if (p > 0.0) cut += p * (offset_[a][o] * mass - cross_mass(weighted_));
+  }
+  return cut;
+}
+
 }  // namespace echoplan::solvers

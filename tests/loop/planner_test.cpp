@@ -101,7 +101,7 @@ TEST(Planner, TheBaselineStrategiesArePlannersByName) {
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(),
                  "solver 'greedy' is not one of abt, pomcp, offline, all_actions, best_single, "
-                 "information_gain, random");
+                 "decision_region, information_gain, random");
   }
 }
 

@@ -1,6 +1,7 @@
-// The four baseline strategies' decisions on the two-object problem
+// The five baseline strategies' decisions on the two-object problem
 // (tiny_identification_problems.h: tap 0, press 1, shake 2 with accuracies 0.60, 0.85, 0.70; to_a
-// 3, to_b 4), worked out by hand.
+// 3, to_b 4) and, where the sort is coarser than the identity, the four-object one (split 0, bins
+// 1, to_A 2, to_B 3), worked out by hand.
 #include "solvers/baseline_strategies.h"
 
 #include <gtest/gtest.h>
@@ -41,7 +42,8 @@ struct StrategyRun {
 
 TEST(BaselineStrategies, NamesAndFactory) {
   EXPECT_EQ(strategy_names(),
-            (std::vector<std::string>{"all_actions", "best_single", "information_gain", "random"}));
+            (std::vector<std::string>{"all_actions", "best_single", "decision_region",
+                                      "information_gain", "random"}));
   EXPECT_TRUE(is_strategy("random"));
   EXPECT_FALSE(is_strategy("abt"));
   for (const std::string& name : strategy_names())
@@ -50,9 +52,9 @@ TEST(BaselineStrategies, NamesAndFactory) {
     make_strategy("greedy", model_of(testing::two_objects()));
     FAIL() << "no InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(
-        e.what(),
-        "strategy 'greedy' is not one of all_actions, best_single, information_gain, random");
+    EXPECT_STREQ(e.what(),
+                 "strategy 'greedy' is not one of all_actions, best_single, decision_region, "
+                 "information_gain, random");
   }
 }
 
@@ -186,6 +188,76 @@ TEST(InformationGain, SortsWhenEverySensingActionIsSpent) {
   EXPECT_EQ(run.decide(), kTap);
   run.heard(kTap, {0.4, 0.6});
   EXPECT_EQ(run.decide(), kToB);
+}
+
+// The four-object problem at its uniform prior, by hand (strategy_measures_test for the cuts):
+//   commit now: to_A or to_B, 0.5·10 - 0.5·100 = -45 (to_A, the first on ties).
+//   bins, then commit: either symbol (P 0.5) leaves the heard bin at 0.8: 0.8·10 - 0.2·100 = -12;
+//     -1 + 0.99·(-12) = -12.88.
+//   split, then commit: either symbol leaves each bin at 0.5: -1 + 0.99·(-45) = -45.55.
+//   entropy reduction (nats): split, ln 4 - H(0.5, 0, 0.25, 0.25) = 1.386294 - 1.039721 = 0.346574;
+//     bins, ln 2 - H(0.2) = 0.693147 - 0.500402 = 0.192745.
+//   edge mass cut: split 0.125, bins 0.1875.
+// Both sense (-12.88 > -45); information_gain takes split, decision_region bins.
+constexpr int kSplit = 0, kBins = 1, kToBinA = 2, kToBinB = 3;
+const std::vector<double> kUniform4{0.25, 0.25, 0.25, 0.25};
+
+TEST(DecisionRegion, CutsBetweenBinsWhereInformationGainTellsObjectsApart) {
+  StrategyRun by_region("decision_region", testing::four_objects(), kUniform4);
+  StrategyRun by_entropy("information_gain", testing::four_objects(), kUniform4);
+  EXPECT_EQ(by_region.decide(), kBins);
+  EXPECT_EQ(by_entropy.decide(), kSplit);
+  // The same commit rule, so the same values recorded.
+  const std::vector<double> values = by_region.strategy->root_action_values();
+  EXPECT_NEAR(values[kSplit], -45.55, 1e-12);
+  EXPECT_NEAR(values[kBins], -12.88, 1e-12);
+  EXPECT_DOUBLE_EQ(values[kToBinA], -45.0);
+  EXPECT_DOUBLE_EQ(values[kToBinB], -45.0);
+  const std::vector<double> entropy_values = by_entropy.strategy->root_action_values();
+  for (int a = 0; a < 4; ++a) EXPECT_EQ(values[a], entropy_values[a]) << a;
+}
+
+TEST(DecisionRegion, WeighsTheCutPerUnitCost) {
+  // Bins at cost c: 0.1875 / c against split's 0.125, bins while c < 1.5 (its lookahead,
+  // -c - 11.88, still beats -45).
+  pomdp::ObjectProblemData d = testing::four_objects();
+  d.sensing[kBins].reward = -1.4;
+  EXPECT_EQ(StrategyRun("decision_region", d, kUniform4).decide(), kBins);
+  d.sensing[kBins].reward = -1.6;
+  EXPECT_EQ(StrategyRun("decision_region", d, kUniform4).decide(), kSplit);
+  // A zero cost counts as 1: free split's 0.125 loses to bins at 1.4 (0.133929); read as free it
+  // would always win.
+  d.sensing[kSplit].reward = 0.0;
+  d.sensing[kBins].reward = -1.4;
+  EXPECT_EQ(StrategyRun("decision_region", d, kUniform4).decide(), kBins);
+}
+
+TEST(DecisionRegion, CommitsWhenTheBinIsKnownThoughTheObjectIsNot) {
+  // (0.5, 0.5, 0, 0): to_A is right for sure, 10; any sensing then to_A, -1 + 0.99·10 = 8.9. Split
+  // would still tell a1 from a2 (ln 2 nats), but nothing is left to cut.
+  StrategyRun run("decision_region", testing::four_objects(), {0.5, 0.5, 0.0, 0.0});
+  EXPECT_EQ(run.decide(), kToBinA);
+  EXPECT_DOUBLE_EQ(run.strategy->root_action_values()[kToBinA], 10.0);
+  EXPECT_NEAR(run.strategy->root_action_values()[kSplit], 8.9, 1e-12);
+}
+
+TEST(DecisionRegion, HonoursUseLimits) {
+  pomdp::ObjectProblemData d = testing::four_objects();
+  d.sensing[kBins].uses = 1;
+  StrategyRun run("decision_region", d, kUniform4);
+  EXPECT_EQ(run.decide(), kBins);
+  // Bins spent, the belief (as the test gives it) still uniform: only split is available, and
+  // split then commit (-45.55) is worth less than committing now (-45).
+  run.heard(kBins, kUniform4);
+  EXPECT_EQ(run.decide(), kToBinA);
+  EXPECT_NEAR(run.strategy->root_action_values()[kSplit], -45.55, 1e-12);
+  EXPECT_TRUE(std::isnan(run.strategy->root_action_values()[kBins]));
+  // Both spent: sort without weighing anything.
+  d.sensing[kSplit].uses = 1;
+  StrategyRun spent("decision_region", d, kUniform4);
+  spent.heard(kSplit, kUniform4);
+  spent.heard(kBins, {0.1, 0.1, 0.4, 0.4});
+  EXPECT_EQ(spent.decide(), kToBinB);
 }
 
 // Decisions of `random` at a fixed belief, with no update (so the choices stay the same).

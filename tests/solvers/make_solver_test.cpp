@@ -55,7 +55,7 @@ TEST(MakeSolver, UnknownNamesAndBadOptionsAreInputErrors) {
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(),
                  "solver 'ABT' is not one of abt, pomcp, all_actions, best_single, "
-                 "information_gain, random");
+                 "decision_region, information_gain, random");
   }
   SearchOptions bad;
   bad.max_depth = 0;

@@ -47,6 +47,28 @@ inline pomdp::ObjectProblemData three_objects() {
   return d;
 }
 
+// Four objects a1, a2 (bin A) and b1, b2 (bin B), uniform prior, symbols x, y, discount 0.99,
+// where the sort is coarser than the identity. Sensing actions (reward -1 each, no collisions):
+//   0 split  tells a1 from a2 for sure, says nothing of b1, b2:
+//            a1 [1, 0]  a2 [0, 1]  b1 [0.5, 0.5]  b2 [0.5, 0.5]
+//   1 bins   tells the bins apart, wrong one time in five:
+//            a1, a2 [0.8, 0.2]  b1, b2 [0.2, 0.8]
+// Sorting: 2 to_A (+10 for a1, a2; -100 for b1, b2), 3 to_B (the other way round).
+inline pomdp::ObjectProblemData four_objects() {
+  pomdp::ObjectProblemData d;
+  d.name = "four_objects";
+  d.discount = 0.99;
+  d.objects = {"a1", "a2", "b1", "b2"};
+  d.prior = {0.25, 0.25, 0.25, 0.25};
+  d.sensing = {{"split", -1.0}, {"bins", -1.0}};
+  d.sorting = {"to_A", "to_B"};
+  d.observation_symbols = {"x", "y"};
+  d.observation_table = {{{1, 0}, {0, 1}, {0.5, 0.5}, {0.5, 0.5}},
+                         {{0.8, 0.2}, {0.8, 0.2}, {0.2, 0.8}, {0.2, 0.8}}};
+  d.sorting_reward = {{10, 10, -100, -100}, {-100, -100, 10, 10}};
+  return d;
+}
+
 inline pomdp::ModelPtr model_of(pomdp::ObjectProblemData data) {
   return std::make_shared<pomdp::ObjectIdentificationModel>(std::move(data));
 }
