@@ -89,6 +89,7 @@ class ObservationNode {
       response.unknown = heard.unknown;
       response.probability = heard.probability;
       response.grade = heard.grade;
+      response.level_grade = heard.level_grade;
       response.distance = heard.distance;
       for (const auto& [name, p] : heard.probabilities) {
         response.classes.push_back(name);

@@ -54,6 +54,7 @@ HeardObservation RosObservationService::observe(const audio::AudioClip& clip,
   heard.unknown = r.unknown;
   heard.probability = r.probability;
   heard.grade = r.grade;
+  heard.level_grade = r.level_grade;
   heard.distance = r.distance;
   for (std::size_t i = 0; i < r.classes.size(); ++i)
     heard.probabilities.emplace_back(r.classes[i], r.probabilities[i]);

@@ -1,7 +1,8 @@
 // Helper of the ros_* tests (not a test by itself):
 //   ros_loop_reference prepare DIR
 //       trains a small observation model on simulated recordings (DIR/model.json) and writes the
-//       shipped problem with that model's calibrated table (DIR/problem.yaml);
+//       shipped problem with that model's calibrated table (DIR/problem.yaml) and with its table
+//       graded by the recordings' levels (DIR/problem-levels.yaml);
 //   ros_loop_reference run DIR OUT sim|mic SEED EPISODES TRIALS [MAX_SECONDS]
 //       runs the loop in process - the simulated arm, the simulated microphone (sim) or PortAudio
 //       on the default capture device (mic, recording exactly MAX_SECONDS per action), the
@@ -35,6 +36,9 @@ int prepare(const std::string& dir) {
   const auto model = testing::train_small_model(data.objects, {"slide", "strike"}, 3);
   perception::save_observation_model(*model, dir + "/model.json");
   loop::save_problem(*loop::calibrate_problem(base, *model), dir + "/problem.yaml");
+  loop::save_problem(
+      *loop::calibrate_problem(base, *model, "", perception::ObservationKind::levels),
+      dir + "/problem-levels.yaml");
   return 0;
 }
 

@@ -14,6 +14,9 @@
 #                     every clip, an aborted action's too, must be the same bytes
 #   run               the all-simulated layout with the planner told the true object: its log equals
 #                     `echoplan run --object` (the in-process loop's command), byte for byte
+#   levels            as run, planning with observations graded by each recording's level
+#                     (problem-levels.yaml): the level grade crosses the observation service, every
+#                     heard observation is `<class>@<level>`, and the log equals `echoplan run`'s
 #   launch            the all-simulated layout started by simulated_layout.launch: same comparison
 #   kill_observation  the observation node is killed mid-trial and not restarted: the performance it
 #                     was hearing goes unheard, and the planner stops once the service has not come
@@ -60,10 +63,12 @@ if [ "$case_name" = mic ]; then
 fi
 case "$case_name" in kill_* | restart_* | retry_safe | fail_unsafe) trials=3 ;; esac
 object_param=()
-if [ "$case_name" = run ]; then
+problem=$work/problem.yaml
+if [ "$case_name" = run ] || [ "$case_name" = levels ]; then
   trials=1
   object_param=(_object:=coffee_mug)
 fi
+[ "$case_name" = levels ] && problem=$work/problem-levels.yaml
 
 if [ "$case_name" = launch ]; then
   # The all-simulated layout as its launch file starts it (the package the build makes in build/ros).
@@ -96,7 +101,7 @@ else
     start observation "$build/echoplan_observation" _model:="$work/model.json"
   fi
   observation_pid=$started
-  start planner timeout 120 "$build/echoplan_planner" _problem:="$work/problem.yaml" _out:="$work/ros_run" \
+  start planner timeout 120 "$build/echoplan_planner" _problem:="$problem" _out:="$work/ros_run" \
     _seed:=$seed _episodes:=$episodes _trials:=$trials _wait_timeout_s:=10 "${object_param[@]}"
   planner_pid=$started
 fi
@@ -173,12 +178,12 @@ wait "$planner_pid"
 status=$?
 
 case "$case_name" in
-  sim | mic | launch | run)
+  sim | mic | launch | run | levels)
     [ "$status" -eq 0 ] || { fail "echoplan_planner exited $status"; cat "$work/planner.log"; }
     ref_source=sim
     [ "$case_name" = mic ] && ref_source=mic
-    if [ "$case_name" = run ]; then
-      "$build/echoplan" run --object coffee_mug --problem "$work/problem.yaml" --model "$work/model.json" \
+    if [ "$case_name" = run ] || [ "$case_name" = levels ]; then
+      "$build/echoplan" run --object coffee_mug --problem "$problem" --model "$work/model.json" \
         --seed $seed --episodes $episodes --out "$work/in_process" >"$work/reference.log" 2>&1 \
         || { fail "echoplan run failed"; cat "$work/reference.log"; }
     else
@@ -188,6 +193,13 @@ case "$case_name" in
     if ! cmp -s "$work/ros_run/loop_steps.csv" "$work/in_process/loop_steps.csv"; then
       fail "loop_steps.csv over ROS differs from the in-process loop's"
       diff "$work/ros_run/loop_steps.csv" "$work/in_process/loop_steps.csv"
+    fi
+    if [ "$case_name" = levels ]; then
+      # Column 7 is the planner's observation (trial,step,action,status,heard,probability,observation):
+      # every sensing step's is a class at a level.
+      unlevelled=$(awk -F, 'NR > 1 && $3 !~ /^move_to_/ && $7 !~ /@(noisy|fair|clear)$/ {n++} END {print n + 0}' \
+        "$work/ros_run/loop_steps.csv")
+      [ "$unlevelled" -eq 0 ] || { fail "$unlevelled heard observations carry no level"; cat "$work/ros_run/loop_steps.csv"; }
     fi
     # Every trial ends in a sorting action. The file-backed microphone plays one strike recording on, 0.5 s
     # per capture, whatever the action: it carries no evidence of the object, so there a trial may also end

@@ -85,8 +85,9 @@ TEST(RosMessages, StringArrayLongerThanTheBodyIsAnOverrunBeforeAllocating) {
   response.label = "mug";
   response.classes = {"mug"};
   std::vector<std::uint8_t> body = serialize(response);
-  // label (4 + 3), unknown (1), probability (8), grade (4), then the classes' count.
-  set_u32(body, 20, 0x7fffffffu);
+  // label (4 + 3), unknown (1), probability (8), grade (4), level_grade (4), then the classes'
+  // count.
+  set_u32(body, 24, 0x7fffffffu);
   echoplan_ros::Observe::Response read;
   EXPECT_THROW(deserialize(body, read), ros::serialization::StreamOverrunException);
   EXPECT_TRUE(read.classes.empty());
