@@ -257,6 +257,8 @@ TEST(CampaignConfig, NoiseMistakesNameTheLine) {
             "6: world.noise: source '/dir/nowhere.wav' is neither built-in (white, room, motor) "
             "nor a file or folder");
   EXPECT_NE(world("simulated", "{ebr_db: 0}").find("sources"), std::string::npos);
+  EXPECT_EQ(world("simulated", "{sources: [room], ebr_db: 0, talkers: 0}"),
+            "6: world.noise: talkers must be 1 to 64 (people heard at once), not 0");
   // An arm trained in noise hears recordings; a model world hears none.
   EXPECT_NE(arm_error_of(with_arm("{name: a, problem: p.yaml, trained_in_noise: true}"))
                 .find("trained_in_noise: the classifier trained in noise hears recordings; a "
