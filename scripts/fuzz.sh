@@ -22,6 +22,7 @@
 #   oppt_log_fuzz          OPPT run logs (`echoplan import oppt`)
 #   feature_set_fuzz       a feature set's modality file and the groups file
 #   recording_set_fuzz     a recording set's manifest.csv
+#   series_file_fuzz       a sensor's series file, then every kind of series features
 #   ros_audio_fuzz         ROS message bodies: Clip, Observe, FeatureRow, AudioData chunks (needs roscpp)
 #
 # Seeds: the committed corpus fuzz/corpus/<target>/ (and, for audio, the reference inputs). What a run
@@ -33,7 +34,8 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(cd "$root" && mkdir -p "${FUZZ_BUILD_DIR:-build-fuzz}" && cd "${FUZZ_BUILD_DIR:-build-fuzz}" && pwd)"
 all_targets=(audio_decode_fuzz problem_file_fuzz sim_files_fuzz perception_model_fuzz policy_file_fuzz
-             experiment_files_fuzz oppt_log_fuzz feature_set_fuzz recording_set_fuzz ros_audio_fuzz)
+             experiment_files_fuzz oppt_log_fuzz feature_set_fuzz recording_set_fuzz series_file_fuzz
+             ros_audio_fuzz)
 
 usage() { awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; }
 die() { echo "fuzz.sh: $1" >&2; exit 2; }

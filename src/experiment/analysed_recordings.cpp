@@ -16,8 +16,9 @@ namespace fs = std::filesystem;
 
 constexpr const char* kFormat = "echoplan analysed recordings";
 // 2: each row with its measured level (RowLabel::ebr_db); 3: and whether it is a noisy copy
-// (RowLabel::noisy_copy). A kept analysis of an earlier version is analysed again.
-constexpr int kVersion = 3;
+// (RowLabel::noisy_copy); 4: series modalities with their features (Modality::series). A kept
+// analysis of an earlier version is analysed again.
+constexpr int kVersion = 4;
 
 nlohmann::json to_json(const perception::FeatureSet& data) {
   nlohmann::json sessions = nlohmann::json::array(), actions = nlohmann::json::array();
@@ -31,6 +32,7 @@ nlohmann::json to_json(const perception::FeatureSet& data) {
     for (const perception::Modality& m : action.modalities)
       modalities.push_back({{"name", m.name},
                             {"extractor", m.extractor},
+                            {"series", m.series},
                             {"feature_names", m.feature_names},
                             {"rows", m.rows}});
     actions.push_back({{"name", action.name}, {"rows", rows}, {"modalities", modalities}});
@@ -72,10 +74,10 @@ perception::FeatureSet from_json(const nlohmann::json& j) {
            row.at(2).is_null() ? std::nullopt : std::optional<double>(row.at(2).get<double>()),
            row.at(3).get<bool>()});
     for (const auto& m : a.at("modalities"))
-      action.modalities.push_back({m.at("name").get<std::string>(),
-                                   m.at("feature_names").get<std::vector<std::string>>(),
-                                   m.at("rows").get<std::vector<std::vector<double>>>(),
-                                   m.at("extractor").get<std::string>()});
+      action.modalities.push_back(
+          {m.at("name").get<std::string>(), m.at("feature_names").get<std::vector<std::string>>(),
+           m.at("rows").get<std::vector<std::vector<double>>>(),
+           m.at("extractor").get<std::string>(), m.at("series").get<std::string>()});
     data.actions.push_back(std::move(action));
   }
   return data;
@@ -85,13 +87,18 @@ perception::FeatureSet from_json(const nlohmann::json& j) {
 
 std::string recordings_listing(const perception::RecordingSet& set) {
   std::string text;
-  for (const perception::Recording& r : set.recordings) {
+  // A file's name, size and time of writing: a changed file gives another listing.
+  const auto file_text = [&](const std::string& path) {
     std::error_code error;
-    const auto size = fs::file_size(r.path, error);
-    const auto written = fs::last_write_time(r.path, error).time_since_epoch().count();
-    text += fmt::format("{}\n{}\n{}\n{}\n{}\n{} {}\n",
-                        fs::path(r.path).lexically_relative(set.root).generic_string(), r.object,
-                        r.action, r.session, r.noisy_copy, error ? 0 : size, error ? 0 : written);
+    const auto size = fs::file_size(path, error);
+    const auto written = fs::last_write_time(path, error).time_since_epoch().count();
+    return fmt::format("{}\n{} {}\n", fs::path(path).lexically_relative(set.root).generic_string(),
+                       error ? 0 : size, error ? 0 : written);
+  };
+  for (const perception::Recording& r : set.recordings) {
+    text += fmt::format("{}{}\n{}\n{}\n{}\n", file_text(r.path), r.object, r.action, r.session,
+                        r.noisy_copy);
+    for (const perception::SeriesFile& s : r.series) text += s.modality + '\n' + file_text(s.path);
   }
   return fmt::format("{:016x}", stable_hash(text));
 }

@@ -24,6 +24,8 @@ std::string data_text(const perception::FeatureSet& data) {
       text += fmt::format("{} {}\n", row.object, row.session);
     for (const perception::Modality& m : action.modalities) {
       text += fmt::format("{} {} {}\n", m.name, m.extractor, fmt::join(m.feature_names, ","));
+      // Only where there is one, so the data of sets without series keeps its name.
+      if (!m.series.empty()) text += m.series + '\n';
       for (const std::vector<double>& row : m.rows)
         text += fmt::format("{}\n", fmt::join(row, ","));
     }

@@ -84,4 +84,13 @@ std::unique_ptr<Classifier> make_modality_classifier(std::string_view row_classi
       std::move(name), extractor.empty() ? nullptr : &clip_extractor(extractor), std::move(rows));
 }
 
+std::unique_ptr<Classifier> make_series_classifier(std::string_view name) {
+  if (const auto alias = classifier_aliases().find(std::string(name));
+      alias != classifier_aliases().end())
+    name = alias->second;
+  for (const Preset& p : kPresets)
+    if (name == p.name) return make_modality_classifier(p.rows);
+  return make_modality_classifier(name);
+}
+
 }  // namespace echoplan::perception

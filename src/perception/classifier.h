@@ -75,6 +75,11 @@ bool is_audio_preset(std::string_view name);
 // Throws InputError listing the names for an unknown one.
 std::unique_ptr<Classifier> make_classifier(std::string_view name);
 
+// A new unfitted classifier of a modality computed from series (series_features.h) under the
+// model's classifier `name`: that row classifier, or an audio preset's own row classifier (the
+// preset's clip extractor has nothing to do with series). InputError for an unknown name.
+std::unique_ptr<Classifier> make_series_classifier(std::string_view name);
+
 // A new unfitted classifier of one modality by row classifier name, named after it, with the clip
 // extractor `extractor` (empty: rows are given). InputError for an unknown name.
 std::unique_ptr<Classifier> make_modality_classifier(std::string_view row_classifier,

@@ -24,6 +24,10 @@ struct Modality {
   // recordings tree's audio), or empty when a sensor gave them: a model fitted on them then
   // classifies live clips the same way.
   std::string extractor;
+  // The series features (signal/series_features.h, canonical spec) that computed the rows from a
+  // recordings tree's series files, or empty: a model fitted on them computes a replayed or live
+  // series' row the same way.
+  std::string series{};
 };
 
 // A session: one exploration of one object. Names are per object: (mug, "1") and (cup, "1") are

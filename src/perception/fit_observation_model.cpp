@@ -24,9 +24,11 @@ namespace echoplan::perception {
 namespace {
 
 // The classifier of one modality: an audio preset over the clips its extractor turned into rows,
-// or a row classifier (with the modality's extractor, if a clip extractor computed its rows).
+// or a row classifier (with the modality's extractor, if a clip extractor computed its rows; for
+// a modality of series, an audio preset's own row classifier).
 std::unique_ptr<Classifier> modality_classifier(const std::string& name, const Modality& modality,
                                                 const std::string& action) {
+  if (!modality.series.empty()) return make_series_classifier(name);
   if (!is_audio_preset(name)) return make_modality_classifier(name, modality.extractor);
   std::unique_ptr<Classifier> classifier = make_classifier(name);
   if (classifier->extractor()->name != modality.extractor)
@@ -364,7 +366,8 @@ FitOptions session_fit_options(std::string classifier) {
   return o;
 }
 
-FitOptions choose_fit_options(const FitChoices& c, DataKind kind, bool task_named) {
+FitOptions choose_fit_options(const FitChoices& c, DataKind kind, bool task_named,
+                              bool several_modalities) {
   const CrossValidation cv = c.cross_validation ? parse_cross_validation(*c.cross_validation)
                              : kind == DataKind::features || task_named
                                  ? CrossValidation::by_session
@@ -375,7 +378,14 @@ FitOptions choose_fit_options(const FitChoices& c, DataKind kind, bool task_name
   if (c.folds) o.folds = *c.folds;
   if (c.sample_rate) o.analysis.sample_rate = *c.sample_rate;
   if (c.seed) o.seed = *c.seed;
+  if (several_modalities) o.reject = false;
   if (c.reject) o.reject = *c.reject;
+  if (!c.series.empty() && kind == DataKind::features)
+    throw InputError(
+        fmt::format("series features chosen for '{}', but a feature set's rows are "
+                    "given, not computed from series",
+                    c.series.begin()->first));
+  o.series = c.series;
   if (c.fuse) o.fuse = *c.fuse;
   if (c.temper) o.temper = *c.temper;
   if (c.reject_margin) o.reject_margin = *c.reject_margin;
@@ -542,7 +552,7 @@ struct ObservationModelFitter {
     if (options.reject && action.modalities.size() > 1)
       throw InputError(set.root, 0,
                        fmt::format("the reject option needs one modality per action, and '{}' "
-                                   "has {}: turn it off",
+                                   "has {}: turn it off (--no-reject)",
                                    action.name, action.modalities.size()));
     const TrainingRows t =
         training_rows(set, task, action, in_training, by_session ? &*by_session : nullptr, options);
@@ -553,7 +563,7 @@ struct ObservationModelFitter {
     model.calibration = calibrate(action, t, held, d, shares);
     for (const Modality& m : action.modalities)
       model.modalities.push_back(
-          {m.name, fit_on(options.classifier, m, action.name, t, num_classes(), -1)});
+          {m.name, fit_on(options.classifier, m, action.name, t, num_classes(), -1), m.series});
     return model;
   }
 
@@ -635,7 +645,8 @@ FeatureSet recordings_as_features(const RecordingSet& set, const FitOptions& opt
   const std::string classifier = classifier_name(options.classifier);
   return feature_set_from_recordings(
       set, options.analysis, progress,
-      is_audio_preset(classifier) ? make_classifier(classifier)->extractor()->name : "summary");
+      is_audio_preset(classifier) ? make_classifier(classifier)->extractor()->name : "summary",
+      options.series);
 }
 
 ObservationModel train_observation_model(const RecordingSet& set, const FitOptions& options,

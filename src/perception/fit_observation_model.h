@@ -68,6 +68,7 @@ struct FitOptions {
   // the default "summary" extractor).
   std::string classifier{kDefaultClassifier};
   AnalysisSettings analysis;  // how a recordings tree's clips are analysed (and live ones)
+  SeriesChoices series;       // how a recordings tree's series become rows (recording_features.h)
   CrossValidation cross_validation = CrossValidation::by_performance;
   int folds = 0;           // by performance: 0 = leave-one-out, else at least 2
   std::uint64_t seed = 0;  // by performance with folds > 0: the shuffle (cross_validation_folds)
@@ -91,13 +92,17 @@ struct FitChoices {
   std::optional<std::uint64_t> seed;
   std::optional<bool> reject, fuse, temper;
   std::optional<double> reject_margin, alpha;
+  SeriesChoices series;  // empty: every series by signal::kDefaultSeriesFeatures
 };
 
 // The defaults of the cross-validation, FitOptions{} or session_fit_options(), then every choice
 // made. The cross-validation is the one named, else by session for a feature set or when the task
-// is named (groups or a hold-out), by performance for a recordings tree. InputError for a bad name
-// or as check_fit_options.
-FitOptions choose_fit_options(const FitChoices& choices, DataKind kind, bool task_named);
+// is named (groups or a hold-out), by performance for a recordings tree. Data of several
+// modalities per action (a recordings tree with series) has no reject option unless it is chosen
+// (it needs one modality). InputError for a bad name, series chosen for a feature set, or as
+// check_fit_options.
+FitOptions choose_fit_options(const FitChoices& choices, DataKind kind, bool task_named,
+                              bool several_modalities = false);
 
 // InputError naming the option for values out of range or combinations without meaning: folds 1
 // or negative; a margin outside 1..100 or alpha outside 0..1000; tempering without folds by

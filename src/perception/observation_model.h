@@ -83,6 +83,9 @@ struct ActionCalibration {
 struct ModalityModel {
   std::string name;
   std::shared_ptr<const Classifier> classifier;
+  // The series features (signal/series_features.h spec) that turn this modality's series into a
+  // row, or empty: rows computed from clips or given by a sensor.
+  std::string series{};
 };
 
 // One action's part of a model: a classifier per modality, fitted on every training example of the

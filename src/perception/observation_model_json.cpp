@@ -15,6 +15,7 @@
 #include "common/json_fields.h"
 #include "common/json_parse.h"
 #include "perception/typicality.h"
+#include "signal/series_features.h"
 
 namespace echoplan::perception {
 
@@ -51,9 +52,12 @@ nlohmann::json modalities_json(const std::vector<ModalityModel>& modalities) {
   nlohmann::json list = nlohmann::json::array();
   for (const ModalityModel& m : modalities) {
     const ClipExtractor* extractor = m.classifier->extractor();
-    list.push_back({{"name", m.name},
-                    {"extractor", extractor ? nlohmann::json(extractor->name) : nlohmann::json()},
-                    {"classifier", m.classifier->save()}});
+    nlohmann::json entry = {
+        {"name", m.name},
+        {"extractor", extractor ? nlohmann::json(extractor->name) : nlohmann::json()},
+        {"classifier", m.classifier->save()}};
+    if (!m.series.empty()) entry["series"] = m.series;
+    list.push_back(std::move(entry));
   }
   return list;
 }
@@ -254,7 +258,10 @@ ModalityModel read_modality(const nlohmann::json& entry, const std::string& wher
       extractor.is_null() ? "" : jf::string(extractor, where + ".extractor", e.source);
   std::unique_ptr<Classifier> classifier;
   try {
-    if (is_audio_preset(d.classifier_name)) {
+    if (entry.contains("series")) {
+      if (!extractor_name.empty()) throw InputError("a modality of series has no clip extractor");
+      classifier = make_series_classifier(d.classifier_name);
+    } else if (is_audio_preset(d.classifier_name)) {
       classifier = make_classifier(d.classifier_name);
       if (classifier->extractor()->name != extractor_name)
         throw InputError(fmt::format("the '{}' preset computes its rows with '{}'",
@@ -267,6 +274,14 @@ ModalityModel read_modality(const nlohmann::json& entry, const std::string& wher
   }
   m.classifier = read_fit(std::move(classifier), jf::member(entry, "classifier", where, e.source),
                           where, e, d);
+  if (entry.contains("series")) {
+    m.series = jf::string(entry["series"], where + ".series", e.source);
+    try {
+      m.series = signal::parse_series_features(m.series).spec();
+    } catch (const InputError& error) {
+      throw InputError(e.source, 0, where + ".series: " + error.problem());
+    }
+  }
   return m;
 }
 

@@ -7,7 +7,8 @@
 //     "classes": [...], "actions": [...], "reject": bool, "dirichlet_alpha",
 //     "table_estimate": "counts" | "soft" | "shrunk",
 //     "per_action": { action: {
-//         "modalities": [ {"name", "extractor": clip extractor or null, "classifier": {fit}} ],
+//         "modalities": [ {"name", "extractor": clip extractor or null, "classifier": {fit},
+//                          "series": series features spec (only for a modality of series)} ],
 //         "weights": [one per modality], "temperature", "reject_threshold" (null without reject),
 //         "symbols": [...], "confusion": [[counts]], "table": [[P(o|k)]],
 //         "fit": {modality_accuracy, modality_nll, fused_accuracy, fused_nll,

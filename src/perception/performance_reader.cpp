@@ -24,6 +24,17 @@ PerformanceReader::PerformanceReader(const ObservationModel& model, const std::s
       throw InputError(
           set.root, 0,
           fmt::format("action '{}' has no modality '{}', which the model needs", action, m.name));
+    // Rows of the same length may still be other features: a series binned by sums where the
+    // model learnt means.
+    if (column->series != m.series)
+      throw InputError(
+          set.root, 0,
+          fmt::format("modality '{}' of '{}' was computed {} where the model's was {}: compute "
+                      "the data's rows as the model's (--series {}={})",
+                      m.name, action,
+                      column->series.empty() ? "not from series" : "by " + column->series,
+                      m.series.empty() ? "not computed from series" : "computed by " + m.series,
+                      m.name, m.series.empty() ? "..." : m.series));
     columns_.push_back(column);
   }
 }

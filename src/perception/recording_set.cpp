@@ -1,6 +1,7 @@
 #include "perception/recording_set.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -16,10 +17,73 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Files of DIR/<object>/<action>/ as found on disk: (object, action) -> relative paths, sorted.
+// Files of DIR/<object>/<action>/ as found on disk: (object, action) -> each performance's file
+// (its audio file, else its first series file), relative paths, sorted.
 using Layout = std::map<std::pair<std::string, std::string>, std::vector<std::string>>;
 
-Layout scan_folders(const fs::path& root) {
+// A performance's signals as found on disk, by its file (relative path).
+struct Signals {
+  bool audio = false;
+  std::vector<SeriesFile> series;  // relative paths, sorted by modality
+};
+using Performances = std::map<std::string, Signals>;
+
+constexpr std::string_view kSeriesSuffix = ".csv";
+
+// Adds one file of an action folder to the performances of that folder (by name).
+void add_file(const fs::path& file, const fs::path& root, std::map<std::string, Signals>& by_name,
+              std::map<std::string, std::string>& audio_of) {
+  const std::string filename = file.filename().string();
+  const std::string relative = fs::relative(file, root).generic_string();
+  if (audio::is_audio_file(file.string())) {
+    const std::string name = file.stem().string();
+    if (!audio_of.emplace(name, relative).second)
+      throw InputError(file.string(), 0,
+                       fmt::format("a second audio file named '{}' (beside {}): a performance has "
+                                   "one recording",
+                                   name, audio_of.at(name)));
+    by_name[name].audio = true;
+    return;
+  }
+  if (!filename.ends_with(kSeriesSuffix))
+    throw InputError(file.string(), 0,
+                     "not a recording: expected a .wav, .flac, .aiff or .aif file, or a sensor's "
+                     "series <name>.<modality>.csv");
+  const std::string stem = filename.substr(0, filename.size() - kSeriesSuffix.size());
+  const auto dot = stem.rfind('.');
+  if (dot == std::string::npos || dot == 0 || dot + 1 == stem.size())
+    throw InputError(file.string(), 0,
+                     "a series file is named <name>.<modality>.csv (the performance, then the "
+                     "sensor: take1.effort.csv)");
+  const std::string modality = stem.substr(dot + 1);
+  if (modality == "audio")
+    throw InputError(file.string(), 0,
+                     "'audio' is the modality of a performance's audio file; name the series "
+                     "after its sensor");
+  by_name[stem.substr(0, dot)].series.push_back({modality, relative});
+}
+
+// The performances of one action folder into `layout` and `performances`.
+void scan_action(const fs::path& action_dir, const fs::path& root, std::vector<std::string>& files,
+                 Performances& performances) {
+  std::map<std::string, Signals> by_name;
+  std::map<std::string, std::string> audio_of;  // name -> its audio file
+  for (const fs::path& file : visible_entries(action_dir)) {
+    if (fs::is_directory(file))
+      throw InputError(file.string(), 0, "unexpected folder inside an action folder");
+    add_file(file, root, by_name, audio_of);
+  }
+  for (auto& [name, signals] : by_name) {
+    std::sort(signals.series.begin(), signals.series.end(),
+              [](const SeriesFile& a, const SeriesFile& b) { return a.modality < b.modality; });
+    const std::string file = signals.audio ? audio_of.at(name) : signals.series.front().path;
+    files.push_back(file);
+    performances.emplace(file, std::move(signals));
+  }
+  std::sort(files.begin(), files.end());
+}
+
+Layout scan_folders(const fs::path& root, Performances& performances) {
   Layout layout;
   for (const fs::path& object_dir : visible_entries(root)) {
     // Files beside the object folders (manifest.csv, a groups file, a README) are not recordings.
@@ -32,19 +96,64 @@ Layout scan_folders(const fs::path& root) {
             "expected a folder per action (DIR/<object>/<action>/<recording>), found a file");
       const std::string action = action_dir.filename().string();
       auto& files = layout[{object, action}];
-      for (const fs::path& file : visible_entries(action_dir)) {
-        if (fs::is_directory(file))
-          throw InputError(file.string(), 0, "unexpected folder inside an action folder");
-        if (!audio::is_audio_file(file.string()))
-          throw InputError(file.string(), 0,
-                           "not a recording: expected a .wav, .flac, .aiff or .aif file");
-        files.push_back(fs::relative(file, root).generic_string());
-      }
+      scan_action(action_dir, root, files, performances);
       if (files.empty())
         throw InputError(action_dir.string(), 0, "no recordings in this (object, action) folder");
     }
   }
   return layout;
+}
+
+// The manifest's `file` as the performance it lists: its audio file, or (no audio) any of its
+// series. InputError at `line` for a series file of a performance that has audio.
+std::string performance_of(const std::string& file, const Performances& performances,
+                           const std::string& manifest, int line) {
+  if (performances.contains(file)) return file;
+  for (const auto& [listed, signals] : performances)
+    for (const SeriesFile& s : signals.series)
+      if (s.path == file) {
+        if (signals.audio)
+          throw InputError(manifest, line,
+                           fmt::format("file '{}' is a series of the performance recorded in "
+                                       "'{}': list the audio file",
+                                       file, listed));
+        return listed;
+      }
+  return file;
+}
+
+// What a performance's signals are, in words, for messages.
+std::string signals_text(const Signals& s) {
+  std::vector<std::string> names;
+  if (s.audio) names.emplace_back("audio");
+  for (const SeriesFile& f : s.series) names.push_back(f.modality);
+  return fmt::format("{}", fmt::join(names, ", "));
+}
+
+// Every performance of an action has the same signals, so every row of its feature set has every
+// modality.
+void check_same_signals(const RecordingSet& set) {
+  for (const std::string& action : set.actions) {
+    const Recording* first = nullptr;
+    for (const Recording& r : set.recordings) {
+      if (r.action != action) continue;
+      if (first == nullptr) {
+        first = &r;
+        continue;
+      }
+      const auto modalities = [](const Recording& x) {
+        std::vector<std::string> names;
+        for (const SeriesFile& f : x.series) names.push_back(f.modality);
+        return std::pair(x.audio, names);
+      };
+      if (modalities(r) != modalities(*first))
+        throw InputError(r.path, 0,
+                         fmt::format("this performance has {} where {} has {}: every performance "
+                                     "of an action needs the same signals",
+                                     signals_text({r.audio, r.series}), first->path,
+                                     signals_text({first->audio, first->series})));
+    }
+  }
 }
 
 void add_unique(std::vector<std::string>& list, const std::string& name) {
@@ -60,7 +169,8 @@ struct ManifestEntry {
 // Reads DIR/manifest.csv into `set`'s objects and actions (manifest order) and `entries` (each
 // listed file -> its row's session and noise). Returns (object, action) -> files in manifest
 // order.
-Layout read_manifest(const fs::path& root, const fs::path& manifest_path, RecordingSet& set,
+Layout read_manifest(const fs::path& root, const fs::path& manifest_path,
+                     const Performances& performances, RecordingSet& set,
                      std::map<std::string, ManifestEntry>& entries) {
   const std::string name = manifest_path.string();
   CsvReader csv(read_text_file(name, "manifest"), name);
@@ -86,7 +196,7 @@ Layout read_manifest(const fs::path& root, const fs::path& manifest_path, Record
       throw InputError(
           name, line_no,
           fmt::format("{} cells, but the header has {} columns", cells.size(), header.size()));
-    const std::string& file = cells[file_col];
+    const std::string file = performance_of(cells[file_col], performances, name, line_no);
     const std::string& object = cells[object_col];
     const std::string& action = cells[action_col];
     // One folder each, so that the file lies inside DIR: "..", "/" or an empty name would let a
@@ -115,7 +225,8 @@ Layout read_manifest(const fs::path& root, const fs::path& manifest_path, Record
     const bool noisy =
         noise_col < header.size() && !cells[noise_col].empty() && cells[noise_col] != "none";
     if (!entries.emplace(file, ManifestEntry{has_session ? cells[session_col] : "", noisy}).second)
-      throw InputError(name, line_no, fmt::format("file '{}' is listed twice", file));
+      throw InputError(name, line_no,
+                       fmt::format("the performance of '{}' is listed twice", cells[file_col]));
     add_unique(set.objects, object);
     add_unique(set.actions, action);
     chosen[{object, action}].push_back(file);
@@ -143,7 +254,8 @@ RecordingSet load_recording_set(const std::string& dir) {
   if (!fs::exists(root, ec)) throw InputError(dir, 0, "recording folder does not exist");
   if (!fs::is_directory(root, ec))
     throw InputError(dir, 0, "not a folder; expected DIR/<object>/<action>/<recording>");
-  const Layout layout = scan_folders(root);
+  Performances performances;
+  const Layout layout = scan_folders(root, performances);
   if (layout.empty())
     throw InputError(dir, 0, "no recordings: expected DIR/<object>/<action>/<recording>");
 
@@ -154,7 +266,7 @@ RecordingSet load_recording_set(const std::string& dir) {
   std::map<std::string, ManifestEntry> entries;  // manifest file -> its row's session and noise
   const fs::path manifest_path = root / "manifest.csv";
   if (fs::exists(manifest_path)) {
-    chosen = read_manifest(root, manifest_path, set, entries);
+    chosen = read_manifest(root, manifest_path, performances, set, entries);
     for (const auto& [key, files] : layout)
       for (const auto& file : files)
         if (!entries.contains(file))
@@ -186,9 +298,14 @@ RecordingSet load_recording_set(const std::string& dir) {
       for (const auto& file : chosen.at({object, action})) {
         const auto entry = entries.find(file);
         const ManifestEntry listed = entry == entries.end() ? ManifestEntry{} : entry->second;
-        set.recordings.push_back(
-            {(root / file).string(), object, action, listed.session, listed.noisy_copy});
+        const Signals& signals = performances.at(file);
+        std::vector<SeriesFile> series;
+        for (const SeriesFile& s : signals.series)
+          series.push_back({s.modality, (root / s.path).string()});
+        set.recordings.push_back({(root / file).string(), signals.audio, std::move(series), object,
+                                  action, listed.session, listed.noisy_copy});
       }
+  check_same_signals(set);
   return set;
 }
 

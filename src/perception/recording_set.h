@@ -1,5 +1,7 @@
 // A labelled set of recordings on disk: DIR/<object>/<action>/<file>, optionally with the
-// manifest.csv that `echoplan synth-recordings` writes.
+// manifest.csv that `echoplan synth-recordings` writes. A performance is an audio file
+// <name>.wav (or .flac, .aiff, .aif), the series of other sensors beside it,
+// <name>.<modality>.csv (signal/series.h), or both (docs/feature-sets.md, "Raw signals").
 //
 // Training and evaluation read recordings through this one loader so that every tool sees the same
 // objects, actions and files in the same order, and every malformed folder gets the same clear
@@ -13,11 +15,21 @@
 
 namespace echoplan::perception {
 
+// One sensor's series of a performance: DIR/<object>/<action>/<name>.<modality>.csv.
+struct SeriesFile {
+  std::string modality;  // from the file name; never "audio"
+  std::string path;      // as opened
+};
+
 // One recording: where it is and what it is a recording of.
 struct Recording {
-  std::string path;    // as opened (DIR joined with the relative path)
-  std::string object;  // the class label
-  std::string action;  // the sensing action that made the sound
+  // As opened (DIR joined with the relative path): the performance's audio file, or its first
+  // series file when it has no audio (a haptic-only robot's).
+  std::string path;
+  bool audio = true;               // `path` is an audio file
+  std::vector<SeriesFile> series;  // sorted by modality; empty for audio alone
+  std::string object;              // the class label
+  std::string action;              // the sensing action that made the sound
   // The manifest's `session` column (one exploration of one object); empty when the manifest has
   // no such column or there is no manifest, meaning each recording is its own session.
   std::string session;
@@ -43,16 +55,19 @@ struct RecordingSet {
 };
 
 // Reads DIR. With DIR/manifest.csv (header with at least the columns file, object and action), the
-// set is the manifest's rows: each row's file must exist and lie in <object>/<action>/; a recording
-// file on disk that the manifest does not list is an error. Without a manifest, every file under
-// DIR/<object>/<action>/ is a recording. An optional manifest column `session` names each
-// recording's session (then required on every row), and an optional column `noise` the source a
-// noisy copy was mixed with (Recording::noisy_copy). Errors (InputError naming the path, and the
-// manifest line where there is one): DIR missing or not a folder; a file where an action folder
-// belongs (files directly in DIR, such as a groups file or a README, are ignored); a file that is
-// not a recording (hidden files are skipped); an (object, action) folder with no recordings; an
-// action recorded for some objects and not others; a manifest row naming a missing file or a file
-// outside its folder; an empty session.
+// set is the manifest's rows, one per performance: each row's file must exist and lie in
+// <object>/<action>/, and is the performance's audio file where it has one, else one of its series
+// files; a performance on disk that the manifest does not list is an error. Without a manifest,
+// every performance under DIR/<object>/<action>/ is a recording. An optional manifest column
+// `session` names each recording's session (then required on every row), and an optional column
+// `noise` the source a noisy copy was mixed with (Recording::noisy_copy). Errors (InputError naming
+// the path, and the manifest line where there is one): DIR missing or not a folder; a file where an
+// action folder belongs (files directly in DIR, such as a groups file or a README, are ignored); a
+// file that is neither a recording nor a series file (hidden files are skipped); two audio files of
+// one name; a series file named `<name>.csv` or `<name>.audio.csv`; a manifest row naming a series
+// file of a performance that has audio; performances of one action with different signals; an
+// (object, action) folder with no recordings; an action recorded for some objects and not others; a
+// manifest row naming a missing file or a file outside its folder; an empty session.
 RecordingSet load_recording_set(const std::string& dir);
 
 // Decodes one recording as the classifiers see it: channels averaged into one, resampled to

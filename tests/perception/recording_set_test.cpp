@@ -1,6 +1,7 @@
 // Tests of the recording-set loader: layouts, the manifest, and every malformed folder's error.
 #include "perception/recording_set.h"
 
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -171,6 +172,71 @@ TEST_F(RecordingSetTest, ManifestRowsCannotLeaveTheSet) {
   expect_error(dir_, {"manifest.csv:2", "'' is not a folder name"});
   write_text(dir_ / "manifest.csv", "file,object,action\n./strike/a.wav,.,strike\n");
   expect_error(dir_, {"manifest.csv:2", "'.' is not a folder name"});
+}
+
+// A performance's series beside its audio file belong to it; a tree of series alone needs no audio.
+TEST_F(RecordingSetTest, SeriesBesideARecordingAreItsSignals) {
+  for (const char* object : {"mug", "cup"})
+    for (const char* action : {"strike", "slide"})
+      for (const char* name : {"a", "b"})
+        for (const char* modality : {"force", "effort"})
+          write_text(dir_ / object / action / fmt::format("{}.{}.csv", name, modality),
+                     "t,x\n0,1\n");
+  const RecordingSet set = load_recording_set(dir_.string());
+  ASSERT_EQ(set.recordings.size(), 8u);
+  const Recording& first = set.recordings[0];
+  EXPECT_EQ(first.path, (dir_ / "cup/slide/a.wav").string());
+  EXPECT_TRUE(first.audio);
+  ASSERT_EQ(first.series.size(), 2u);
+  EXPECT_EQ(first.series[0].modality, "effort");
+  EXPECT_EQ(first.series[0].path, (dir_ / "cup/slide/a.effort.csv").string());
+  EXPECT_EQ(first.series[1].modality, "force");
+}
+
+TEST(RecordingSetSeries, ATreeOfSeriesAloneListsEachPerformanceOnce) {
+  const fs::path dir = test_sounds::fresh_dir("series-only");
+  for (const char* object : {"mug", "cup"})
+    for (const char* name : {"1", "2"}) {
+      write_text(dir / object / "lift" / fmt::format("{}.effort.csv", name), "t,j1\n0,1\n");
+      write_text(dir / object / "lift" / fmt::format("{}.force.csv", name), "t,fz\n0,1\n");
+    }
+  RecordingSet set = load_recording_set(dir.string());
+  ASSERT_EQ(set.recordings.size(), 4u);
+  EXPECT_FALSE(set.recordings[0].audio);
+  EXPECT_EQ(set.recordings[0].path, (dir / "cup/lift/1.effort.csv").string());
+  EXPECT_EQ(set.recordings[0].series.size(), 2u);
+  // A manifest lists each performance by any one of its series.
+  write_text(dir / "manifest.csv",
+             "file,object,action,session\nmug/lift/1.force.csv,mug,lift,s1\n"
+             "mug/lift/2.effort.csv,mug,lift,s2\ncup/lift/1.effort.csv,cup,lift,s1\n"
+             "cup/lift/2.force.csv,cup,lift,s2\n");
+  set = load_recording_set(dir.string());
+  ASSERT_EQ(set.recordings.size(), 4u);
+  EXPECT_EQ(set.recordings[0].object, "mug");
+  EXPECT_EQ(set.recordings[0].session, "s1");
+  EXPECT_EQ(set.recordings[0].series.size(), 2u);
+  write_text(dir / "manifest.csv",
+             "file,object,action\nmug/lift/1.force.csv,mug,lift\nmug/lift/1.effort.csv,mug,lift\n");
+  expect_error(dir, {"manifest.csv:3", "listed twice"});
+  fs::remove_all(dir);
+}
+
+TEST_F(RecordingSetTest, BadSeriesFilesAreNamed) {
+  write_text(dir_ / "mug/strike/a.csv", "t,x\n0,1\n");
+  expect_error(dir_, {"mug/strike/a.csv", "<name>.<modality>.csv"});
+  fs::remove(dir_ / "mug/strike/a.csv");
+  write_text(dir_ / "mug/strike/a.audio.csv", "t,x\n0,1\n");
+  expect_error(dir_, {"a.audio.csv", "'audio'"});
+  fs::remove(dir_ / "mug/strike/a.audio.csv");
+  write_clip(dir_ / "mug/strike/a.flac");
+  expect_error(dir_, {"second audio file named 'a'"});
+  fs::remove(dir_ / "mug/strike/a.flac");
+  // One performance of an action with a series the others lack.
+  write_text(dir_ / "mug/strike/a.effort.csv", "t,x\n0,1\n");
+  expect_error(dir_, {"audio, effort", "every performance of an action needs the same signals"});
+  // The manifest names the audio file of a performance that has one.
+  write_text(dir_ / "manifest.csv", "file,object,action\nmug/strike/a.effort.csv,mug,strike\n");
+  expect_error(dir_, {"manifest.csv:2", "list the audio file"});
 }
 
 TEST(ReadRecording, MixesChannelsAndResamples) {

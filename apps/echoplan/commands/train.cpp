@@ -15,6 +15,7 @@
 
 #include "commands/commands.h"
 #include "commands/perception_report.h"
+#include "commands/series_options.h"
 #include "common/error.h"
 #include "common/file_io.h"
 #include "loop/behaviour_costs.h"
@@ -43,7 +44,8 @@ struct TrainFlags {
   bool reject = true;
   bool fuse = false;
   bool temper = false;
-  perception::FitOptions given;  // the numbers and names as given (classifier, folds, ...)
+  perception::FitOptions given;     // the numbers and names as given (classifier, folds, ...)
+  std::vector<std::string> series;  // MODALITY=SPEC, as typed
 };
 
 bool given(const CLI::App& cmd, const char* name) { return cmd.count(name) > 0; }
@@ -52,6 +54,7 @@ bool given(const CLI::App& cmd, const char* name) { return cmd.count(name) > 0; 
 perception::FitOptions fit_options(const TrainFlags& f, const CLI::App& cmd,
                                    perception::DataKind kind) {
   perception::FitChoices c;
+  c.series = parse_series_choices(f.series);
   if (given(cmd, "--cross-validation")) c.cross_validation = f.cross_validation;
   if (given(cmd, "--classifier")) c.classifier = f.given.classifier;
   if (given(cmd, "--sample-rate")) c.sample_rate = f.given.analysis.sample_rate;
@@ -63,8 +66,14 @@ perception::FitOptions fit_options(const TrainFlags& f, const CLI::App& cmd,
   if (given(cmd, "--table")) c.table = f.table;
   if (given(cmd, "--fuse")) c.fuse = f.fuse;
   if (given(cmd, "--temper")) c.temper = f.temper;
-  return perception::choose_fit_options(c, kind,
-                                        given(cmd, "--groups") || given(cmd, "--hold-out"));
+  // A recordings tree with series has several modalities per behaviour (read before training:
+  // listing the tree is cheap).
+  bool several = false;
+  if (kind == perception::DataKind::recordings)
+    for (const auto& r : perception::load_recording_set(f.data).recordings)
+      several = several || !r.series.empty();
+  return perception::choose_fit_options(c, kind, given(cmd, "--groups") || given(cmd, "--hold-out"),
+                                        several);
 }
 
 // --problem-out keeps --problem-base when it is named, or for a recordings tree whose classes are
@@ -107,7 +116,7 @@ perception::FeatureSet load_data(const TrainFlags& f, perception::DataKind kind,
                                  const perception::FitOptions& o) {
   if (kind == perception::DataKind::features) return perception::load_feature_set(f.data);
   const perception::RecordingSet recordings = perception::load_recording_set(f.data);
-  spdlog::info("{}: {} recordings, {} objects x {} actions; computing their audio features", f.data,
+  spdlog::info("{}: {} recordings, {} objects x {} actions; computing their features", f.data,
                recordings.recordings.size(), recordings.objects.size(), recordings.actions.size());
   return perception::recordings_as_features(recordings, o,
                                             [](const std::string& stage, int done, int total) {
@@ -257,6 +266,7 @@ void add_fit_options(CLI::App& cmd, TrainFlags& f) {
                              fmt::join(perception::row_classifier_names(), ", "), clips.classifier,
                              sessions.classifier))
       ->check(CLI::IsMember(accepted));
+  add_series_option(cmd, f.series);
   cmd.add_option("--sample-rate", f.given.analysis.sample_rate,
                  fmt::format("Rate (Hz) every recording is resampled to. Default: {}",
                              clips.analysis.sample_rate));
