@@ -46,6 +46,21 @@ Prediction PerformanceReader::classify(int row) const {
   return model_->classify_rows(model_action_, rows, level(row));
 }
 
+SeriesChoices series_choices(const ObservationModel& model) {
+  SeriesChoices choices;
+  for (const std::string& action : model.actions())
+    for (const ModalityModel& m : model.modalities(action)) {
+      if (m.series.empty()) continue;
+      const auto [it, added] = choices.emplace(m.name, m.series);
+      if (!added && it->second != m.series)
+        throw InputError(
+            fmt::format("the model computes modality '{}' as {} for one action and "
+                        "as {} for another ('{}'): a recordings tree gives it one way",
+                        m.name, it->second, m.series, action));
+    }
+  return choices;
+}
+
 int classify_row(const ObservationModel& model, int action, const FeatureSet& set, int row) {
   const ActionData& data = set.actions.at(static_cast<std::size_t>(action));
   std::vector<std::span<const double>> rows;

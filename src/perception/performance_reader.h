@@ -6,6 +6,7 @@
 
 #include "perception/feature_set.h"
 #include "perception/observation_model.h"
+#include "perception/recording_features.h"
 
 namespace echoplan::perception {
 
@@ -31,6 +32,11 @@ class PerformanceReader {
   const ActionData* data_ = nullptr;
   std::vector<const Modality*> columns_;  // [model modality] -> the set's modality
 };
+
+// The series features the model's modalities declare (ModalityModel::series), by modality: how a
+// recordings tree must be turned into rows for the model to read it. InputError when two actions
+// compute one modality differently (a tree gives each modality one way).
+SeriesChoices series_choices(const ObservationModel& model);
 
 // The model's fused decision on row `row` of the set's action `action` (a model fitted on `set`:
 // the same actions and modalities in the same order).

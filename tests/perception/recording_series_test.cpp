@@ -84,6 +84,7 @@ TEST_F(RecordingSeriesTest, TheModelFileKeepsHowSeriesBecameRows) {
   const PerformanceReader reader(back, "lift", same);
   EXPECT_EQ(reader.classify(0).best_class, 0);
   EXPECT_EQ(reader.classify(7).best_class, 1);
+  EXPECT_EQ(series_choices(back), (SeriesChoices{{"effort", "bins(2,sum)"}}));
   // Rows of the same length computed by means are other features: refused, saying how to fix it.
   const FeatureSet means = load_data(dir_.string(), {}, {{"effort", "bins(2,mean)"}});
   EXPECT_THAT(input_error_message([&] { PerformanceReader(back, "lift", means); }),

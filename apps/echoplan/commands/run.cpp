@@ -25,6 +25,7 @@
 #include "loop/streams.h"
 #include "perception/feature_set.h"
 #include "perception/observation_model_json.h"
+#include "perception/performance_reader.h"
 #include "perception/recording_features.h"
 #include "pomdp/problem.h"
 
@@ -220,7 +221,10 @@ void replay_session(const RunFlags& f) {
   const pomdp::Problem base = pomdp::load_problem(f.problem);
   auto model = std::make_shared<const perception::ObservationModel>(
       perception::load_observation_model(f.model));
-  auto data = std::make_shared<const perception::FeatureSet>(perception::load_data(f.data));
+  // A recordings tree's series become rows as the model's did.
+  const bool tree = perception::data_kind(f.data) == perception::DataKind::recordings;
+  auto data = std::make_shared<const perception::FeatureSet>(perception::load_data(
+      f.data, {}, tree ? perception::series_choices(*model) : perception::SeriesChoices{}));
   const SessionChoice choice = find_session(*data, f);
   loop::LoopSettings s;
   s.problem = session_problem(base, *data, choice.session);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <ros/connection_manager.h>
 #include <ros/master.h>
+#include <ros/names.h>
 #include <ros/network.h>
 #include <ros/publication.h>
 #include <ros/service_manager.h>
@@ -30,6 +31,14 @@ std::optional<int> master_pid() {
 }
 
 }  // namespace
+
+bool set_param_once(const std::string& key, const XmlRpc::XmlRpcValue& value) {
+  XmlRpc::XmlRpcValue request, response, payload;
+  request[0] = ros::this_node::getName();
+  request[1] = ros::names::resolve(key);
+  request[2] = value;
+  return ros::master::execute("setParam", request, response, payload, false);
+}
 
 MasterWatch::MasterWatch(std::vector<std::string> services)
     : services_(std::move(services)), pid_(master_pid()), spinner_(1, &queue_) {

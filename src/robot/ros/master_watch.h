@@ -62,6 +62,11 @@ class MasterWatch {
 // did not. For a client about to call the master, which must neither hang nor fail at once.
 bool wait_for_master(double timeout_s);
 
+// Sets parameter `key` (resolved in the node's namespace) on the master once: false when the master
+// did not answer or refused. ros::param::set instead retries for ever, so a master that dies
+// between a check and the call would hang the node.
+bool set_param_once(const std::string& key, const XmlRpc::XmlRpcValue& value);
+
 // " (the ROS master at URI does not answer)" when it does not, else "": for the messages of a
 // call or a wait that failed, so that a user whose master died is told so rather than sent after
 // the node.

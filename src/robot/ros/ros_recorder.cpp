@@ -50,14 +50,25 @@ void RosRecorder::require_master(const std::string& action) const {
         action, ros::master::getURI(), wait_timeout_s_, ros_names::kRecordParam));
 }
 
+namespace {
+// Sets the record parameters once (set_param_once: never ros::param::set, which retries for ever
+// when the master died after require_master); false when the master did not take them. An empty
+// `action` leaves the action parameter as it is.
+bool set_record_params(const std::string& action, bool record) {
+  return (action.empty() || set_param_once(ros_names::kRecordActionParam, action)) &&
+         set_param_once(ros_names::kRecordParam, record);
+}
+}  // namespace
+
 void RosRecorder::start(const std::string& action) {
   if (recording_) throw std::logic_error("RosRecorder::start: a recording is already running");
   require_master(action);
   std::unique_lock lock(mutex_);
   const std::uint64_t states_before = states_received_;
   const auto t0 = std::chrono::steady_clock::now();
-  ros::param::set(ros_names::kRecordActionParam, action);
-  ros::param::set(ros_names::kRecordParam, true);
+  if (!set_record_params(action, true))
+    throw std::runtime_error(fmt::format("recording '{}': {} could not be set{}", action,
+                                         ros_names::kRecordParam, master_unreachable_note()));
   action_ = action;
   recording_ = true;
   // Wait for a state published after our parameter change that says capture started (or failed).
@@ -75,10 +86,7 @@ void RosRecorder::start(const std::string& action) {
     // A master killed just after the parameters were set took them with it, and its successor
     // never had them: set them again (the same values, which a listener that saw them ignores).
     lock.unlock();
-    if (wait_for_master(0.2)) {
-      ros::param::set(ros_names::kRecordActionParam, action);
-      ros::param::set(ros_names::kRecordParam, true);
-    }
+    if (wait_for_master(0.2)) set_record_params(action, true);
     lock.lock();
   }
   if (!answered || !last_state_.error.empty()) {
@@ -88,7 +96,7 @@ void RosRecorder::start(const std::string& action) {
                        "the listener did not report recording within {:g} s after {} was "
                        "set (is echoplan_listener running?){}",
                        wait_timeout_s_, ros_names::kRecordParam, master_unreachable_note());
-    ros::param::set(ros_names::kRecordParam, false);
+    set_record_params("", false);  // best effort: the failure is the message
     recording_ = false;
     throw std::runtime_error(fmt::format("recording '{}': {}", action, why));
   }
@@ -103,7 +111,9 @@ audio::AudioClip RosRecorder::stop() {
   require_master(action_);
   std::unique_lock lock(mutex_);
   const std::uint64_t clips_before = clips_received_;
-  ros::param::set(ros_names::kRecordParam, false);
+  if (!set_record_params("", false))
+    throw std::runtime_error(fmt::format("recording '{}': {} could not be cleared{}", action_,
+                                         ros_names::kRecordParam, master_unreachable_note()));
   const bool answered = changed_.wait_for(lock, std::chrono::duration<double>(wait_timeout_s_),
                                           [&] { return clips_received_ > clips_before; });
   // The listener died mid-recording, or its device vanished: this performance goes unheard, and
