@@ -86,7 +86,7 @@ Campaign open_in(const CampaignConfig& config, const fs::path& directory,
   c.results.arms = resolve_arms(config);
   c.directory = directory;
   std::unique_ptr<CampaignWorld> world = make_campaign_world(config, directory);
-  InputFiles files(std::move(kept_in));
+  InputFiles files(std::move(kept_in), config.world.series);
   world->open(c.config, c.results.arms, c.results, files);
   c.world = std::move(world);  // from now on what it opened is only read
   c.results.config = c.config;

@@ -1,8 +1,10 @@
 #include "experiment/campaign_arms.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <set>
 
 #include "common/error.h"
 #include "loop/object_problem.h"
@@ -43,6 +45,13 @@ void check_words(const CampaignConfig& config, const CampaignArm& arm) {
     refuse(config, arm,
            "trained_on_surfaces: the classifier trained on other tables hears a simulated "
            "world's recordings; a model world hears none, a dataset world fits its own");
+  if (!arm.modalities.empty() && !config.world.model.empty())
+    refuse(config, arm,
+           "modalities: the world's model is frozen (world.model); nothing is fitted on some "
+           "modalities");
+  if (std::set<std::string>(arm.modalities.begin(), arm.modalities.end()).size() !=
+      arm.modalities.size())
+    refuse(config, arm, "modalities: a modality is named twice");
   if (arm.trained_on_surfaces && arm.trained_in_noise)
     refuse(config, arm,
            "trained_on_surfaces and trained_in_noise are two classifiers: an arm hears with one");
@@ -89,7 +98,10 @@ ResolvedArm resolve_arm(const CampaignConfig& config, const CampaignArm& arm) {
   r.calibrate = arm.calibrate;
   r.trained_on_surfaces = arm.trained_on_surfaces;
   r.line = arm.line;
-  r.plans_with = {arm.observation_kind(), arm.lookalike.value_or(false), arm.trained_in_noise};
+  std::vector<std::string> modalities = arm.modalities;
+  std::sort(modalities.begin(), modalities.end());
+  r.plans_with = {arm.observation_kind(), arm.lookalike.value_or(false), arm.trained_in_noise,
+                  std::move(modalities)};
   r.planner.solver = r.plans() ? config.planner.solver : arm.strategy;
   r.planner.episodes = config.planner.episodes;
   r.planner.step_ms = config.planner.step_ms;
@@ -139,6 +151,7 @@ CampaignArm as_written(const ResolvedArm& arm) {
   a.calibrate = arm.calibrate;
   a.trained_in_noise = arm.trained_in_noise();
   a.trained_on_surfaces = arm.trained_on_surfaces;
+  a.modalities = arm.plans_with.modalities;
   a.strategy = arm.strategy;
   a.observations = perception::observation_kind_name(arm.plans_with.kind);
   // Written only when it plans with them (a `lookalike: false` reads as the file not naming it).
@@ -160,6 +173,7 @@ nlohmann::json to_json(const ResolvedArm& arm, bool recorded_data) {
   if (arm.calibrate) j["calibrate"] = true;
   if (arm.trained_in_noise()) j["trained_in_noise"] = true;
   if (arm.trained_on_surfaces) j["trained_on_surfaces"] = true;
+  if (!arm.plans_with.modalities.empty()) j["modalities"] = arm.plans_with.modalities;
   j["solver"] = arm.planner.solver;
   if (arm.planner.episodes > 0) j["episodes"] = arm.planner.episodes;
   if (arm.planner.step_ms > 0) j["step_ms"] = arm.planner.step_ms;
@@ -178,11 +192,13 @@ nlohmann::json to_json(const ResolvedArm& arm, bool recorded_data) {
 }
 
 std::string fold_problem_name(const ArmProblemKind& kind) {
-  return fmt::format("problem{}{}{}.yaml",
-                     kind.kind == perception::ObservationKind::labels
-                         ? ""
-                         : "-" + std::string(perception::observation_kind_name(kind.kind)),
-                     kind.lookalike ? "-lookalike" : "", kind.in_noise ? "-in-noise" : "");
+  return fmt::format(
+      "problem{}{}{}{}.yaml",
+      kind.kind == perception::ObservationKind::labels
+          ? ""
+          : "-" + std::string(perception::observation_kind_name(kind.kind)),
+      kind.lookalike ? "-lookalike" : "", kind.in_noise ? "-in-noise" : "",
+      kind.modalities.empty() ? "" : fmt::format("-hears-{}", fmt::join(kind.modalities, "-")));
 }
 
 }  // namespace echoplan::experiment

@@ -27,11 +27,13 @@ namespace echoplan::experiment {
 
 // What an arm's problem depends on besides the world (a dataset world: besides the fold): what it
 // hears, whether it plans with objects that sound like another class (lookalikes) and whether its
-// classifier was trained in noise too (its table is that classifier's).
+// classifier was trained in noise too (its table is that classifier's), and which of the data's
+// modalities that classifier was fitted on.
 struct ArmProblemKind {
   perception::ObservationKind kind = perception::ObservationKind::labels;
   bool lookalike = false;
   bool in_noise = false;
+  std::vector<std::string> modalities{};  // sorted, distinct; empty: every modality
   friend auto operator<=>(const ArmProblemKind&, const ArmProblemKind&) = default;
 };
 
@@ -78,7 +80,7 @@ bool any_lookalike(const std::vector<ResolvedArm>& arms);
 nlohmann::json to_json(const ResolvedArm& arm, bool recorded_data);
 
 // The file name of a dataset world's fold problem of that kind:
-// problem[-graded][-lookalike].yaml.
+// problem[-graded|-levels][-lookalike][-in-noise][-hears-<modality>-...].yaml.
 std::string fold_problem_name(const ArmProblemKind& kind);
 
 }  // namespace echoplan::experiment

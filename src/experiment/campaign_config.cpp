@@ -16,6 +16,7 @@
 #include "experiment/campaign_arms.h"
 #include "experiment/config_fields.h"
 #include "perception/fit_observation_model.h"
+#include "signal/series_features.h"
 #include "sim/background_noise.h"
 #include "solvers/baseline_strategies.h"
 #include "solvers/leaf_value.h"
@@ -53,6 +54,11 @@ std::vector<std::string> strategy_choices() {
   std::vector<std::string> choices{kPlanStrategy};
   for (const std::string& name : solvers::strategy_names()) choices.push_back(name);
   return choices;
+}
+
+// A series features spec in its canonical form (presets spelled out).
+std::string series_spec(const std::string& text) {
+  return signal::parse_series_features(text).spec();
 }
 
 const char* const kFoldProblem =
@@ -102,6 +108,13 @@ const std::vector<Field<CampaignArm>>& arm_fields() {
        .elsewhere = "only for a dataset world: its folds' models fit the share of objects that "
                     "sound like another class"},
       // Left out of the identity at its default: campaigns written before it existed.
+      {.key = "modalities",
+       .member = &CampaignArm::modalities,
+       .identity = Identity::unless_default,
+       .worlds = Worlds::recorded_data,
+       .elsewhere = "only for a dataset world: its folds' models are fitted on the data's "
+                    "modalities"},
+      // Left out of the identity at its default: campaigns written before it existed.
       {.key = "leaf",
        .member = &CampaignArm::leaf,
        .identity = Identity::unless_default,
@@ -150,6 +163,13 @@ const std::vector<Field<WorldConfig>>& world_fields() {
        .identity = Identity::file_hash,
        .worlds = Worlds::recorded_data,
        .text = Text::file,
+       .elsewhere = kRecordedOnly},
+      // Left out of the identity at its default: campaigns written before it existed.
+      {.key = "series",
+       .member = &WorldConfig::series,
+       .identity = Identity::unless_default,
+       .worlds = Worlds::recorded_data,
+       .canonical = series_spec,
        .elsewhere = kRecordedOnly},
       {.key = "model",
        .member = &WorldConfig::model,
@@ -327,7 +347,7 @@ nlohmann::json campaign_json(const CampaignConfig& c, Write&& write) {
 }  // namespace
 
 nlohmann::json CampaignConfig::identity() const {
-  InputFiles files;
+  InputFiles files({}, world.series);
   return identity(files, groups);
 }
 

@@ -20,6 +20,7 @@
 #include "loop/dataset_problem.h"
 #include "perception/dataset_task.h"
 #include "perception/observation_grades.h"
+#include "perception/recording_features.h"
 
 namespace echoplan::experiment {
 
@@ -69,6 +70,9 @@ struct CampaignArm {
   // Hears with the classifier trained on the training set recorded on training_set.surfaces (the
   // catalogue's other tables), not the one trained on the sim config's table alone.
   bool trained_on_surfaces = false;
+  // A dataset world's arm that hears with a model fitted on these modalities of the data only
+  // (audio alone, a torque sensor alone, ...); empty: every modality.
+  std::vector<std::string> modalities{};
   int line = 0;  // where the file gives the arm (0: not read from a file); not a setting
 };
 
@@ -128,6 +132,9 @@ struct WorldConfig {
   std::string data;
   perception::HoldOut hold_out = perception::HoldOut::session;
   std::string groups;
+  // How a recordings tree's series become rows, by modality (signal/series_features.h specs; a
+  // modality not named: bins(10,mean)).
+  perception::SeriesChoices series;
   // A frozen observation model file (`echoplan train --out`): no folds, every session replayed
   // with it (a model trained one day, judged on data recorded another). Empty: fit per fold.
   std::string model;

@@ -505,7 +505,7 @@ class RecordedDataWorld final : public CampaignWorld {
                                   int workers) const override {
     DatasetFolds fitted = *trials_;  // the data and folds shared; the models are this run's
     if (!hear_dataset_in_noise(fitted, config, noise_, directory_, progress, stop) ||
-        !fit_dataset_folds(fitted, config, progress, stop))
+        !fit_dataset_folds(fitted, config, arms, progress, stop))
       return std::nullopt;
     const FoldProblems problems = fold_problems(config, arms, fitted);
     write_fold_problems(directory_, config, problems);

@@ -54,7 +54,8 @@ template <class T>
 using Member =
     std::variant<std::string T::*, bool T::*, std::optional<bool> T::*, int T::*, std::int64_t T::*,
                  std::uint64_t T::*, double T::*, std::vector<std::string> T::*,
-                 perception::HoldOut T::*, std::map<std::string, double> T::*>;
+                 perception::HoldOut T::*, std::map<std::string, double> T::*,
+                 std::map<std::string, std::string> T::*>;
 
 template <class T>
 struct Field {
@@ -66,6 +67,8 @@ struct Field {
   bool required = false;   // the YAML must give it (where its world applies)
   int min = 0;             // whole numbers, and a map's values: the least allowed
   std::vector<std::string> (*choices)() = nullptr;  // words: the allowed ones
+  // A map of words' values: each value's canonical form (InputError for a bad one); null: as read.
+  std::string (*canonical)(const std::string&) = nullptr;
   const char* elsewhere = "";  // why the key is refused in the worlds it does not belong to
 };
 
@@ -138,6 +141,18 @@ void read_yaml_field(const YamlReader& f, const YAML::Node& map, const Field<T>&
             value = perception::parse_hold_out(f.name(n, field.key));
           } catch (const InputError& e) {
             f.fail(n, e.problem());
+          }
+        } else if constexpr (std::is_same_v<V, std::map<std::string, std::string>>) {
+          f.expect_map(n, field.key);
+          value.clear();
+          for (const auto& entry : n) {
+            const std::string name = f.name(entry.first, field.key);
+            value[name] = f.name(entry.second, std::string(field.key) + "." + name);
+            if (field.canonical) try {
+                value[name] = field.canonical(value[name]);
+              } catch (const InputError& e) {
+                f.fail(entry.second, std::string(field.key) + "." + name + ": " + e.problem());
+              }
           }
         } else {
           f.expect_map(n, field.key);
@@ -225,6 +240,9 @@ void read_json(const nlohmann::json& j, const std::vector<Field<T>>& fields,
             }
           else if (!n->is_object())
             throw InputError(source.file, source.line, where + " must be an object");
+          else if constexpr (std::is_same_v<V, std::map<std::string, std::string>>)
+            for (const auto& [name, text] : n->items())
+              value[name] = jf::string(text, jf::child(where, name), source);
           else
             for (const auto& [name, number] : n->items())
               value[name] = jf::number(number, jf::child(where, name), source);

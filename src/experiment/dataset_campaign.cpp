@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <map>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -120,7 +121,7 @@ std::shared_ptr<const perception::FeatureSet> analysed_copy(const CampaignConfig
                            stop))
     return nullptr;
   return std::make_shared<const perception::FeatureSet>(perception::feature_set_from_recordings(
-      perception::load_recording_set(copy.string()), {}, progress));
+      perception::load_recording_set(copy.string()), {}, progress, "summary", config.world.series));
 }
 
 }  // namespace
@@ -215,33 +216,83 @@ bool hear_dataset_in_noise(DatasetFolds& trials, const CampaignConfig& config,
   return true;
 }
 
+namespace {
+
+// Which data a fold model is fitted on: the data or its noisy twins, and the modalities (empty:
+// all).
+using ModelKey = std::pair<bool, std::vector<std::string>>;
+
+// The fold models the arms hear with: the data's always, the twins' with an arm trained in noise,
+// and each set of modalities some arm hears alone.
+std::set<ModelKey> model_keys(const DatasetFolds& trials, const std::vector<ResolvedArm>& arms) {
+  std::set<ModelKey> keys{{false, {}}};
+  if (trials.twins) keys.insert({true, {}});
+  for (const ResolvedArm& arm : arms)
+    if (!arm.plans_with.modalities.empty())
+      keys.insert({arm.plans_with.in_noise, arm.plans_with.modalities});
+  return keys;
+}
+
+// The data each key's models are fitted on. InputError naming the arm whose modalities the data
+// lacks.
+std::map<ModelKey, std::shared_ptr<const perception::FeatureSet>> model_data(
+    const DatasetFolds& trials, const CampaignConfig& config, const std::vector<ResolvedArm>& arms,
+    const std::set<ModelKey>& keys) {
+  std::map<ModelKey, std::shared_ptr<const perception::FeatureSet>> data;
+  for (const ModelKey& key : keys) {
+    const auto& all = key.first ? trials.twins : trials.data;
+    if (key.second.empty()) {
+      data[key] = all;
+      continue;
+    }
+    try {
+      data[key] = std::make_shared<const perception::FeatureSet>(
+          perception::keep_modalities(*all, key.second));
+    } catch (const InputError& e) {
+      const auto arm = std::find_if(arms.begin(), arms.end(), [&](const ResolvedArm& a) {
+        return a.plans_with.in_noise == key.first && a.plans_with.modalities == key.second;
+      });
+      throw InputError(config.source, arm->line,
+                       fmt::format("arm '{}': modalities: {}", arm->name, e.problem()));
+    }
+  }
+  return data;
+}
+
+}  // namespace
+
 bool fit_dataset_folds(DatasetFolds& trials, const CampaignConfig& config,
-                       const ProgressFn& progress, const std::atomic<bool>& stop) {
+                       const std::vector<ResolvedArm>& arms, const ProgressFn& progress,
+                       const std::atomic<bool>& stop) {
   if (!config.world.model.empty()) return true;  // frozen: open_dataset loaded it
   perception::FitOptions options = perception::session_fit_options();
   if (!config.training.classifier.empty()) options.classifier = config.training.classifier;
+  const std::set<ModelKey> keys = model_keys(trials, arms);
+  const auto data = model_data(trials, config, arms, keys);
   trials.models.clear();
   trials.models_in_noise.clear();
+  trials.models_of_modalities.clear();
   const auto index = session_index(*trials.data);
   const int folds = static_cast<int>(trials.folds.size());
   for (int f = 0; f < folds; ++f) {
     if (stop.load()) return false;
     if (progress) progress("fit folds", f, folds);
-    std::vector<int> training;
-    for (std::size_t s = 0; s < trials.data->sessions.size(); ++s)
-      if (trials.fold_of_session[s] != f) training.push_back(static_cast<int>(s));
-    trials.models.push_back(std::make_shared<const perception::ObservationModel>(
-        perception::fit_observation_model(*trials.data, trials.task, training, options)));
-    if (!trials.twins) continue;
-    // A twin's session is its quiet recording's: the fold's held-out sessions stay unheard.
-    std::vector<int> twins;
-    for (std::size_t s = 0; s < trials.twins->sessions.size(); ++s) {
-      const perception::Session& session = trials.twins->sessions[s];
-      if (trials.fold_of_session.at(index.at({session.object, session.name})) != f)
-        twins.push_back(static_cast<int>(s));
+    for (const ModelKey& key : keys) {
+      const perception::FeatureSet& set = *data.at(key);
+      // A twin's session is its quiet recording's: the fold's held-out sessions stay unheard.
+      std::vector<int> training;
+      for (std::size_t s = 0; s < set.sessions.size(); ++s) {
+        const perception::Session& session = set.sessions[s];
+        if (trials.fold_of_session.at(index.at({session.object, session.name})) != f)
+          training.push_back(static_cast<int>(s));
+      }
+      auto model = std::make_shared<const perception::ObservationModel>(
+          perception::fit_observation_model(set, trials.task, training, options));
+      auto& models = !key.second.empty() ? trials.models_of_modalities[key]
+                     : key.first         ? trials.models_in_noise
+                                         : trials.models;
+      models.push_back(std::move(model));
     }
-    trials.models_in_noise.push_back(std::make_shared<const perception::ObservationModel>(
-        perception::fit_observation_model(*trials.twins, trials.task, twins, options)));
   }
   if (progress) progress("fit folds", folds, folds);
   return true;
@@ -255,7 +306,7 @@ pomdp::ObjectProblemData fold_problem(const CampaignConfig& config,
                                       const std::vector<ResolvedArm>& arms,
                                       const DatasetFolds& trials, int fold,
                                       const std::vector<int>& uses, const ArmProblemKind& kind) {
-  const perception::ObservationModel& model = *trials.model(fold, kind.in_noise);
+  const perception::ObservationModel& model = *trials.model(fold, kind);
   std::optional<double> lookalike_share;
   if (any_lookalike(arms))
     lookalike_share = kind.lookalike ? model.lookalike_share(kind.kind) : 0.0;
@@ -335,8 +386,8 @@ ArmLoops dataset_loops(const CampaignConfig& config, const std::vector<ResolvedA
         const int fold = trials.fold_of_session.at(session);
         loop::LoopSettings s;
         s.problem = problem_for(fold, loop::session_uses(names, *trials.data, session), arms[a]);
-        s.world = loop::DatasetWorldSpec{trials.heard,
-                                         trials.model(fold, arms[a].trained_in_noise()), session};
+        s.world =
+            loop::DatasetWorldSpec{trials.heard, trials.model(fold, arms[a].plans_with), session};
         s.planner = arms[a].planner;
         s.max_steps = config.planner.max_steps;
         group.push_back({std::make_shared<const loop::LoopSpec>(std::move(s)),

@@ -45,10 +45,18 @@ struct DatasetFolds {
   // (hear_dataset_in_noise()), and each fold's model fitted on the twins of its training sessions.
   std::shared_ptr<const perception::FeatureSet> twins;
   std::vector<std::shared_ptr<const perception::ObservationModel>> models_in_noise;
+  // With an arm that hears some modalities only: each fold's model fitted on them, by (trained in
+  // noise, the modalities).
+  std::map<std::pair<bool, std::vector<std::string>>,
+           std::vector<std::shared_ptr<const perception::ObservationModel>>>
+      models_of_modalities;
 
-  // The model that an arm trained in noise or not hears fold `fold` with.
-  const std::shared_ptr<const perception::ObservationModel>& model(int fold, bool in_noise) const {
-    return in_noise ? models_in_noise.at(fold) : models.at(fold);
+  // The model that an arm of `kind` hears fold `fold` with.
+  const std::shared_ptr<const perception::ObservationModel>& model(
+      int fold, const ArmProblemKind& kind) const {
+    if (!kind.modalities.empty())
+      return models_of_modalities.at({kind.in_noise, kind.modalities}).at(fold);
+    return kind.in_noise ? models_in_noise.at(fold) : models.at(fold);
   }
   // Names only (objects, actions, symbols): what the report needs before any fit.
   std::shared_ptr<const pomdp::Problem> names;
@@ -82,10 +90,12 @@ bool hear_dataset_in_noise(DatasetFolds& trials, const CampaignConfig& config,
                            const CampaignNoise& noise, const std::filesystem::path& directory,
                            const ProgressFn& progress, const std::atomic<bool>& stop);
 
-// Fits every fold's model, and with the twins its model trained in noise (`progress` hears "fit
-// folds"). Returns false when stopped.
+// Fits every fold's model, with the twins its model trained in noise, and for the arms that hear
+// some modalities only its model on those (`progress` hears "fit folds"). InputError naming the
+// arm for a modality the data lacks. Returns false when stopped.
 bool fit_dataset_folds(DatasetFolds& trials, const CampaignConfig& config,
-                       const ProgressFn& progress, const std::atomic<bool>& stop);
+                       const std::vector<ResolvedArm>& arms, const ProgressFn& progress,
+                       const std::atomic<bool>& stop);
 
 // Each kind of arm's problem of each fold, [kind][fold]: the fold's fitted table, the task's
 // rewards and costs, each behaviour limited to the most performances any session recorded

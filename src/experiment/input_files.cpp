@@ -52,21 +52,25 @@ std::shared_ptr<const pomdp::Problem> InputFiles::problem(const std::string& pat
   return it->second;
 }
 
-InputFiles::InputFiles(std::vector<std::filesystem::path> campaign_folders)
-    : campaign_folders_(std::move(campaign_folders)) {}
+InputFiles::InputFiles(std::vector<std::filesystem::path> campaign_folders,
+                       perception::SeriesChoices series)
+    : campaign_folders_(std::move(campaign_folders)), series_(std::move(series)) {}
 
 std::shared_ptr<const perception::FeatureSet> InputFiles::load(const std::string& folder,
                                                                const ProgressFn& progress) {
   if (campaign_folders_.empty() ||
       perception::data_kind(folder) != perception::DataKind::recordings)
-    return std::make_shared<const perception::FeatureSet>(perception::load_data(folder, progress));
+    return std::make_shared<const perception::FeatureSet>(
+        perception::load_data(folder, progress, series_));
   const perception::RecordingSet set = perception::load_recording_set(folder);
-  const std::string listing = recordings_listing(set);
+  // A kept analysis is this tree's only if its series were turned into rows the same way.
+  std::string listing = recordings_listing(set);
+  for (const auto& [modality, spec] : series_) listing += fmt::format(" {}={}", modality, spec);
   for (const std::filesystem::path& campaign : campaign_folders_)
     if (auto kept = read_analysed_recordings(campaign / kAnalysedRecordings, folder, listing))
       return std::make_shared<const perception::FeatureSet>(std::move(*kept));
   auto data = std::make_shared<const perception::FeatureSet>(
-      perception::feature_set_from_recordings(set, {}, progress));
+      perception::feature_set_from_recordings(set, {}, progress, "summary", series_));
   analysed_ = Analysed{folder, listing, data};
   return data;
 }

@@ -13,6 +13,7 @@
 
 #include "common/progress.h"
 #include "perception/feature_set.h"
+#include "perception/recording_features.h"
 #include "pomdp/problem.h"
 
 namespace echoplan::experiment {
@@ -20,8 +21,10 @@ namespace echoplan::experiment {
 class InputFiles {
  public:
   // `campaign_folders`: where a recordings tree's analysed audio may be kept; the first is where
-  // keep_analysed() writes it (a campaign's folder, then for a merge its shards').
-  explicit InputFiles(std::vector<std::filesystem::path> campaign_folders = {});
+  // keep_analysed() writes it (a campaign's folder, then for a merge its shards'). `series`: how a
+  // recordings tree's series become rows (the campaign's world.series).
+  explicit InputFiles(std::vector<std::filesystem::path> campaign_folders = {},
+                      perception::SeriesChoices series = {});
 
   // The file's text (InputError naming it when it cannot be read).
   const std::string& text(const std::string& path);
@@ -53,6 +56,7 @@ class InputFiles {
                                                      const ProgressFn& progress);
 
   std::vector<std::filesystem::path> campaign_folders_;
+  perception::SeriesChoices series_;
   std::optional<Analysed> analysed_;
   std::map<std::string, std::string> texts_;
   std::map<std::string, std::shared_ptr<const pomdp::Problem>> problems_;

@@ -28,7 +28,9 @@ struct NoisyCopyOptions {
 
 // Writes the copy of `set` into `out` (refused when it is the set's own folder) and
 // `out`/manifest.csv (file, object, action, session when the set has sessions or keep_quiet,
-// ebr_db, noise: empty and "none" for a quiet recording). `progress("add noise", done, total)`.
+// ebr_db, noise: empty and "none" for a quiet recording). A performance's series files
+// (<name>.<modality>.csv) are copied as they are beside its noisy (and quiet) audio, and one with
+// no audio is copied as it is. `progress("add noise", done, total)`.
 // Returns the recordings written; fewer than the set's when `stop` became true (the manifest then
 // lists those, so an interrupted copy is a recordings tree too).
 std::size_t write_noisy_copy(const perception::RecordingSet& set, const robot::WorldNoise& noise,

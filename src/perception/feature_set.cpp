@@ -1,6 +1,7 @@
 #include "perception/feature_set.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <charconv>
@@ -185,6 +186,29 @@ FeatureSet load_feature_set(const std::string& dir) {
 const std::string* ObjectGroups::group_of(const std::string& object) const {
   const auto it = std::find(objects.begin(), objects.end(), object);
   return it == objects.end() ? nullptr : &groups[static_cast<std::size_t>(it - objects.begin())];
+}
+
+FeatureSet keep_modalities(const FeatureSet& set, const std::vector<std::string>& modalities) {
+  std::set<std::string> present;
+  for (const ActionData& action : set.actions)
+    for (const Modality& m : action.modalities) present.insert(m.name);
+  for (const std::string& name : modalities)
+    if (!present.contains(name))
+      throw InputError(set.root, 0,
+                       fmt::format("no action has a modality '{}' (the data has {})", name,
+                                   fmt::join(present, ", ")));
+  const auto named = [&](const Modality& m) {
+    return std::find(modalities.begin(), modalities.end(), m.name) != modalities.end();
+  };
+  FeatureSet kept = set;
+  for (ActionData& action : kept.actions) {
+    if (std::none_of(action.modalities.begin(), action.modalities.end(), named))
+      throw InputError(set.root, 0,
+                       fmt::format("action '{}' has none of the modalities {}", action.name,
+                                   fmt::join(modalities, ", ")));
+    std::erase_if(action.modalities, [&](const Modality& m) { return !named(m); });
+  }
+  return kept;
 }
 
 ObjectGroups load_groups(const std::string& file) {

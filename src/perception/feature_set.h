@@ -86,6 +86,11 @@ struct FeatureSet {
 // not others (naming the action folder).
 FeatureSet load_feature_set(const std::string& dir);
 
+// `set` with only the modalities named in `modalities` (every action keeps those it has, in its
+// order). InputError naming the set's folder for a name no action has, or an action left with
+// none.
+FeatureSet keep_modalities(const FeatureSet& set, const std::vector<std::string>& modalities);
+
 // Which group each object belongs to (for grouped cross-validation or reporting), in file order.
 struct ObjectGroups {
   std::vector<std::string> objects;  // distinct

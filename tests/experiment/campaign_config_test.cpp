@@ -311,6 +311,49 @@ TEST_F(CampaignNoiseConfig, ADatasetWorldTakesNoiseAndArmsTrainedInIt) {
             std::string::npos);
 }
 
+// A dataset world's series become rows as world.series says (presets spelled out, a bad spec at
+// its line), and an arm may hear some modalities only; both round-trip and enter the identity
+// only when given.
+TEST_F(CampaignNoiseConfig, ADatasetWorldChoosesSeriesFeaturesAndArmsTheirModalities) {
+  // Two objects, one lift each, felt by joint efforts and a wrist force.
+  for (const char* object : {"mug", "cup"}) {
+    std::filesystem::create_directories(dir_ / "recordings" / object / "lift");
+    std::ofstream effort(dir_ / "recordings" / object / "lift" / "1.effort.csv");
+    std::ofstream force(dir_ / "recordings" / object / "lift" / "1.force.csv");
+    effort << "t,j1\n";
+    force << "t,force_z\n";
+    for (int i = 0; i < 10; ++i)
+      effort << i * 0.01 << "," << i << "\n", force << i * 0.01 << ",1\n";
+  }
+  const std::string source = (dir_ / "c.yaml").string();
+  const std::string world = "world:\n  type: dataset\n  data: recordings\n";
+  const std::string arms =
+      "arms:\n  - {name: both, strategy: plan}\n  - {name: torque, strategy: plan, "
+      "modalities: [effort, force]}\nplanner: {episodes: 100}\n";
+  const CampaignConfig c = parse_campaign_config(
+      world + "  series: {effort: cy101-haptic, force: \"stats[force_z]\"}\n" + arms, source);
+  EXPECT_EQ(c.world.series,
+            (perception::SeriesChoices{{"effort", "bins(10,sum)"}, {"force", "stats[force_z]"}}));
+  const std::vector<ResolvedArm> resolved = resolve_arms(c);
+  EXPECT_TRUE(resolved[0].plans_with.modalities.empty());
+  EXPECT_EQ(resolved[1].plans_with.modalities, (std::vector<std::string>{"effort", "force"}));
+  EXPECT_EQ(fold_problem_name(resolved[1].plans_with), "problem-hears-effort-force.yaml");
+  const CampaignConfig back = campaign_config_from_json(to_json(c), "campaign.json");
+  EXPECT_EQ(back.world.series, c.world.series);
+  EXPECT_EQ(back.arms[1].modalities, c.arms[1].modalities);
+  const CampaignConfig plain = parse_campaign_config(world + arms, source);
+  EXPECT_FALSE(plain.identity()["world"].contains("series"));
+  EXPECT_EQ(c.identity()["world"]["series"]["effort"], "bins(10,sum)");
+  try {
+    parse_campaign_config(world + "  series: {effort: \"bins(0,sum)\"}\n" + arms, source);
+    ADD_FAILURE() << "no error for a bad spec";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 4);
+    EXPECT_NE(e.problem().find("series.effort: series features 'bins(0,sum)'"), std::string::npos)
+        << e.problem();
+  }
+}
+
 TEST(CampaignConfig, ShippedSurfacesCampaignHoldsItsTrialsTableOutOfTraining) {
   const CampaignConfig c =
       load_campaign_config(echoplan::testing::source_dir() + "/experiments/surfaces.yaml");

@@ -227,6 +227,51 @@ TEST(DatasetCampaign, AnArmWithLookalikesHasItsCopiesAndItsFoldProblem) {
   EXPECT_EQ(results.entries.size(), 36u);
 }
 
+// Arms that hear some modalities only: each hears with a model fitted on those, so an arm hearing
+// a sensor that says nothing (audio here, pure noise) sorts at chance where the arm hearing the
+// informative one (haptic) and the arm hearing both sort well; each has its fold problem.
+TEST(DatasetCampaign, AnArmHearsOnlyTheModalitiesItNames) {
+  const fs::path data = perception::test_features::fresh_folder("dataset_modalities") / "data";
+  SyntheticSpec spec;
+  spec.objects = 6;
+  spec.sessions = 3;
+  spec.group_size = 3;
+  spec.actions = {"press", "tap"};
+  spec.modalities = {{"audio", 3, 0.0}, {"haptic", 3, 5.0}};
+  perception::test_features::write_synthetic_feature_set(data, spec);
+  const fs::path dir = data.parent_path() / "out";
+  const std::string text = "seed: 3\nworld: {type: dataset, data: " + data.string() +
+                           ", hold_out: session, groups: " + (data / "groups.csv").string() +
+                           "}\ntraining_set: {classifier: lda}\narms:\n"
+                           "  - {name: both, strategy: all_actions}\n"
+                           "  - {name: audio, strategy: all_actions, modalities: [audio]}\n"
+                           "  - {name: haptic, strategy: all_actions, modalities: [haptic]}\n"
+                           "planner: {solver: abt, episodes: 300, max_steps: 20}\n";
+  const CampaignResults results =
+      run(parse_campaign_config(text, (data.parent_path() / "campaign.yaml").string()), dir);
+  const auto rows = summary_rows(results);
+  EXPECT_GT(all_row(rows, "both").summary.accuracy, 0.9);
+  EXPECT_GT(all_row(rows, "haptic").summary.accuracy, 0.9);
+  EXPECT_LT(all_row(rows, "audio").summary.accuracy, 0.8);  // two groups: chance is a half
+  EXPECT_TRUE(fs::is_regular_file(dir / "folds/1/problem-hears-audio.yaml"));
+  EXPECT_TRUE(fs::is_regular_file(dir / "folds/1/problem-hears-haptic.yaml"));
+  // A modality the data does not have is refused naming the arm.
+  const std::string vision = text.substr(0, text.find("arms:")) +
+                             "arms:\n  - {name: both, strategy: all_actions}\n"
+                             "  - {name: sight, strategy: all_actions, modalities: [vision]}\n"
+                             "planner: {solver: abt, episodes: 300, max_steps: 20}\n";
+  try {
+    run(parse_campaign_config(vision, (data.parent_path() / "campaign.yaml").string()),
+        data.parent_path() / "vision");
+    ADD_FAILURE() << "no error for a modality the data lacks";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("arm 'sight': modalities: no action has a modality "
+                                         "'vision'"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // certify --campaign's library half: each fold and arm reported as it is certified, in order and
 // counted against all of them; once stopped, the ones finished are returned and no other is begun.
 TEST(DatasetCampaign, CertifyingACampaignReportsEachFoldAndArmAndStopsWhenAsked) {
