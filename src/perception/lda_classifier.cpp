@@ -108,6 +108,13 @@ void LdaClassifier::fit(std::span<const std::vector<double>> rows, std::span<con
     shrinkage_ = 1.0;
     covariance = Eigen::MatrixXd::Identity(d, d);
   }
+  // Rows identical within every class (a deterministic sensor, copies of one recording) leave no
+  // spread to estimate a metric from: then nothing tells one direction from another, and the
+  // classes' means are compared in the scaled space as they are (the limit of any ridge).
+  if (!(covariance.diagonal().maxCoeff() > 0.0)) {
+    shrinkage_ = 1.0;
+    covariance = Eigen::MatrixXd::Identity(d, d);
+  }
   // Sigma = L L^T, so Sigma^-1 = L^-T L^-1 and W = L^-1 whitens.
   const Eigen::LLT<Eigen::MatrixXd> llt(covariance);
   if (llt.info() != Eigen::Success)

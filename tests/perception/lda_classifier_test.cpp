@@ -104,6 +104,23 @@ TEST(LdaClassScaled, ClassifiesHeldOutRecordingsAndSavesItsFit) {
   }
 }
 
+// Rows identical within each class (a deterministic sensor) have no spread to fit a metric on:
+// the fit still succeeds and names each class's own row, whichever covariance it was asked for.
+TEST(LdaClassScaled, RowsIdenticalWithinEachClassStillClassify) {
+  const std::vector<std::vector<double>> rows = {{1, 5}, {1, 5}, {3, 2}, {3, 2}, {8, 8}, {8, 8}};
+  const std::vector<int> labels = {0, 0, 1, 1, 2, 2};
+  using Lda = LdaClassifier;
+  for (auto scaling : {Lda::Scaling::class_scaled, Lda::Scaling::standardise}) {
+    Lda c(scaling, Lda::Covariance::ledoit_wolf);
+    ASSERT_NO_THROW(c.fit(rows, labels, 3));
+    for (std::size_t i = 0; i < rows.size(); i += 2) {
+      const ClassScores s = c.score(rows[i]);
+      EXPECT_EQ(std::min_element(s.distances.begin(), s.distances.end()) - s.distances.begin(),
+                labels[i]);
+    }
+  }
+}
+
 // The summary-lda preset's LDA fitted on two recordings of each synthetic object (`x`: the rows).
 struct ClassScaledFit {
   std::vector<std::vector<double>> x;
