@@ -162,6 +162,23 @@ std::vector<float> resampled(const std::vector<double>& t, const std::vector<dou
   return out;
 }
 
+// The number of points of the even grid the bands are computed on: at least one per median
+// spacing across the series, rounded up to a length whose factors are 2, 3 and 5 (kissfft's other
+// factors cost a pass per factor: a length twice a large prime would take hours). Samples with
+// gaps far wider than their median spacing are refused: most of the grid would be interpolation.
+std::size_t band_grid(const Series& series, double dt, const std::string& source,
+                      const std::string& spec) {
+  const double natural = series.duration() / dt + 1.0;
+  const double limit = 4.0 * static_cast<double>(series.samples()) + 64.0;
+  if (natural > limit)
+    throw InputError(source, 0,
+                     fmt::format("'{}': the samples have gaps (spanning {} s at a median spacing of "
+                                 "{} s would take {:.0f} points from {} samples)",
+                                 spec, series.duration(), dt, natural, series.samples()));
+  return static_cast<std::size_t>(
+      kiss_fftr_next_fast_size_real(static_cast<int>(std::ceil(natural - 1e-9))));
+}
+
 struct FftDeleter {
   void operator()(kiss_fftr_state* s) const { kiss_fftr_free(s); }
 };
@@ -309,7 +326,8 @@ std::vector<double> SeriesFeatures::extract(const Series& series, const std::str
       throw InputError(source, 0,
                        fmt::format("band edge {} Hz is above half the series' rate ({} Hz)",
                                    band_edges.back(), 1.0 / dt));
-    grid = 2 * static_cast<std::size_t>(std::floor(series.duration() / dt / 2.0)) + 2;
+    grid = band_grid(series, dt, source, spec());
+    dt = series.duration() / static_cast<double>(grid - 1);
   }
   std::vector<double> row;
   for (int c : read) {

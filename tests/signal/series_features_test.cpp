@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "common/error.h"
+#include "signal/series.h"
 
 namespace echoplan::signal {
 namespace {
@@ -118,6 +119,34 @@ TEST(SeriesFeatures, BandPowerOfASine) {
   EXPECT_EQ(parse_series_features("bands(0,8,12,30)").feature_names(s.channels)[1], "accel_8_12hz");
   EXPECT_THAT([&] { parse_series_features("bands(0,60)").extract(s, "x"); },
               ::testing::ThrowsMessage<InputError>(HasSubstr("above half the series' rate")));
+}
+
+// 202 samples (twice a prime) are computed on a 216-point grid over the same 2.01 s (bins 0.495 Hz
+// apart, 8 of them in [8, 12) Hz). Linear interpolation between samples 36 degrees of phase apart
+// keeps 1 - (1 - cos 36)/3 of the sine's power on average over the grid's offsets, so the band's
+// mean is that share of 1/32, less what leaks out of the band (20.1 cycles under a rectangular
+// window: a few percent, none of it gained).
+TEST(SeriesFeatures, BandPowerOnALengthWithALargePrimeFactor) {
+  Series s;
+  s.channels = {"accel"};
+  s.values.resize(1);
+  for (int i = 0; i < 202; ++i) {
+    s.t.push_back(i / 100.0);
+    s.values[0].push_back(std::sin(2 * std::numbers::pi * 10 * i / 100.0));
+  }
+  const std::vector<double> row = parse_series_features("bands(0,8,12,30)").extract(s, "x");
+  const double kept = 1.0 - (1.0 - std::cos(2 * std::numbers::pi / 10)) / 3.0;
+  EXPECT_GT(row[1], 0.92 * kept / 32);
+  EXPECT_LT(row[1], 1.01 * kept / 32);
+  EXPECT_LT(row[0], 0.01 * row[1]);
+}
+
+// Found by series_file_fuzz: samples 0.01 s apart and one 12000 s later would resample to 1.2
+// million points; such gaps are refused, naming them.
+TEST(SeriesFeatures, BandsRefuseSamplesWithGaps) {
+  const Series s = parse_series_csv("t,a\n0,1\n0.01,2\n0.02,3\n0.03,1\n12001,2\n", "gaps.csv");
+  EXPECT_THAT([&] { parse_series_features("bands(0,1,5,20)").extract(s, "gaps.csv"); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr("the samples have gaps")));
 }
 
 TEST(SeriesFeatures, SpecsReadBackCanonically) {
