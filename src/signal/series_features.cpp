@@ -171,10 +171,11 @@ std::size_t band_grid(const Series& series, double dt, const std::string& source
   const double natural = series.duration() / dt + 1.0;
   const double limit = 4.0 * static_cast<double>(series.samples()) + 64.0;
   if (natural > limit)
-    throw InputError(source, 0,
-                     fmt::format("'{}': the samples have gaps (spanning {} s at a median spacing of "
-                                 "{} s would take {:.0f} points from {} samples)",
-                                 spec, series.duration(), dt, natural, series.samples()));
+    throw InputError(
+        source, 0,
+        fmt::format("'{}': the samples have gaps (spanning {} s at a median spacing of "
+                    "{} s would take {:.0f} points from {} samples)",
+                    spec, series.duration(), dt, natural, series.samples()));
   return static_cast<std::size_t>(
       kiss_fftr_next_fast_size_real(static_cast<int>(std::ceil(natural - 1e-9))));
 }
