@@ -40,6 +40,7 @@ struct Run {
   mjData* d;
   mjData* kin;
   ContactRecorder recorder;
+  ArmSensorRecorder& sensors;
   CompliantGrasp grasp;
   const ContactTrace& trace;
   std::array<double, kArmJoints> q;
@@ -84,7 +85,10 @@ bool run_segment(Run& run, std::vector<Segment>& script, std::size_t index) {
           run.grasp.apply(m, d, strength);
           run.recorder.before_forces(m, d, run.time);
         },
-        [&] { run.recorder.after_forces(m, d); });
+        [&] {
+          run.recorder.after_forces(m, d);
+          run.sensors.after_step(m, d, run.time + dt);
+        });
     run.time += dt;
     if (seg.stop_on_contact && !run.trace.impacts.empty()) {
       const double f = seg.progress(seg.duration_s * k / steps);
@@ -113,8 +117,9 @@ void settle_before_action(const mjModel* m, mjData* d, const double* targets) {
 
 ScriptRun run_script(const Scene& s, const mjModel* m, mjData* d, mjData* kin,
                      std::vector<Segment>& script, std::array<double, kArmJoints> q,
-                     double object_radius, ContactTrace& trace) {
-  Run run{s, m, d, kin, ContactRecorder(s, object_radius, trace), CompliantGrasp(s), trace, q};
+                     double object_radius, ContactTrace& trace, ArmSensorRecorder& sensors) {
+  Run run{s,     m, d, kin, ContactRecorder(s, object_radius, trace), sensors, CompliantGrasp(s),
+          trace, q};
   ScriptRun result;
   for (std::size_t index = 0; index < script.size(); ++index) {
     if (!run_segment(run, script, index)) {

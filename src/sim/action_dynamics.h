@@ -9,6 +9,7 @@
 #include <array>
 #include <vector>
 
+#include "sim/arm_sensors.h"
 #include "sim/cartesian_motion.h"
 #include "sim/contact_trace.h"
 #include "sim/scene.h"
@@ -32,10 +33,11 @@ struct ScriptRun {
 };
 
 // Runs `script` from joint targets `q` in `d` (the model `m` of scene `s`), IK solved in `kin`,
-// recording object-table contacts of an object of `object_radius` into `trace`. A segment that
-// stops on contact moves the rest of the script to where it stopped (hence `script` is changed).
+// recording object-table contacts of an object of `object_radius` into `trace` and the arm's
+// sensors into `sensors`. A segment that stops on contact moves the rest of the script to where it
+// stopped (hence `script` is changed).
 ScriptRun run_script(const Scene& s, const mjModel* m, mjData* d, mjData* kin,
                      std::vector<Segment>& script, std::array<double, kArmJoints> q,
-                     double object_radius, ContactTrace& trace);
+                     double object_radius, ContactTrace& trace, ArmSensorRecorder& sensors);
 
 }  // namespace echoplan::sim

@@ -58,7 +58,7 @@ SimConfig read_sim_config(const YamlReader& f, const YAML::Node& root) {
   if (root.IsNull()) return c;
   f.expect_map(root, "the sim config");
   const std::vector<std::string> sections{"table",     "variability", "microphone", "room",
-                                          "recording", "arm",         "physics"};
+                                          "recording", "arm",         "physics",    "sensors"};
   f.only_keys(root, sections, "the sim config");
   // Checked against the catalogue where both are known (sim/table_choice.h).
   if (const YAML::Node t = root["table"])
@@ -140,6 +140,10 @@ SimConfig read_sim_config(const YamlReader& f, const YAML::Node& root) {
   read_section(f, root, "physics",
                {{"timestep_s", number_into(f, c.physics.timestep_s, 0.0005, 0.005)},
                 {"slide_timestep_s", number_into(f, c.physics.slide_timestep_s, 0.0005, 0.005)}});
+  read_section(f, root, "sensors",
+               {{"rate_hz", number_into(f, c.sensors.rate_hz, 10.0, 1000.0)},
+                {"effort_noise_nm", number_into(f, c.sensors.effort_noise_nm, 0.0, 10.0)},
+                {"force_noise_n", number_into(f, c.sensors.force_noise_n, 0.0, 100.0)}});
   return c;
 }
 

@@ -155,6 +155,15 @@ struct PhysicsConfig {
   double slide_timestep_s = 0.003;
 };
 
+// The arm's own sensors beside the microphone (sim/arm_sensors.h): how often they are read and how
+// noisy each reading is. The noise is an assumption of this simulator, not a measurement: the order
+// of a strain-gauge joint torque sensor's and of a wrist force sensor's noise at 100 Hz.
+struct SensorConfig {
+  double rate_hz = 100;           // Hz, in [10, 1000]: the arm controller's feedback rate
+  double effort_noise_nm = 0.05;  // N m, in [0, 10]: standard deviation per joint torque reading
+  double force_noise_n = 0.2;     // N, in [0, 100]: standard deviation per force axis reading
+};
+
 struct SimConfig {
   // The catalogue's tables the recordings and trials are made on (`table:`, a name or a list;
   // sim/table_choice.h says which gets which); empty: the catalogue's default table.
@@ -165,6 +174,7 @@ struct SimConfig {
   RecordingConfig recording;
   ArmConfig arm;
   PhysicsConfig physics;
+  SensorConfig sensors;
 };
 
 // Reads a sim config file; missing fields keep their defaults. Throws InputError naming the file,

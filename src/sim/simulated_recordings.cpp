@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -14,6 +15,8 @@
 #include "common/parallel_jobs.h"
 #include "common/rng.h"
 #include "common/stable_hash.h"
+#include "signal/series.h"
+#include "sim/arm_sensors.h"
 #include "sim/recording.h"
 #include "sim/simulated_robot.h"
 #include "sim/sound_action.h"
@@ -27,7 +30,57 @@ std::uint64_t clip_seed(std::uint64_t seed, const std::string& object, const std
                      {stable_hash(object), stable_hash(action), static_cast<std::uint64_t>(index)});
 }
 
+const std::vector<std::string>& simulated_signals() {
+  static const std::vector<std::string> names{"audio", "effort", "force"};
+  return names;
+}
+
 namespace {
+
+// `signals` checked: known names, each once, at least one.
+void check_signals(const std::vector<std::string>& signals) {
+  if (signals.empty())
+    throw InputError("", 0, "no signals to record: name at least one of audio, effort, force");
+  const auto& known = simulated_signals();
+  for (std::size_t i = 0; i < signals.size(); ++i) {
+    if (std::find(known.begin(), known.end(), signals[i]) == known.end())
+      throw InputError(
+          "", 0, fmt::format("unknown signal '{}' (known: audio, effort, force)", signals[i]));
+    if (std::find(signals.begin(), signals.begin() + static_cast<long>(i), signals[i]) !=
+        signals.begin() + static_cast<long>(i))
+      throw InputError("", 0, fmt::format("signal '{}' named twice", signals[i]));
+  }
+}
+
+bool records(const std::vector<std::string>& signals, const std::string& name) {
+  return std::find(signals.begin(), signals.end(), name) != signals.end();
+}
+
+// Writes clip `index`'s files (audio and the sensors' series, as `signals` asks) into
+// root/<object>/<action>/ and returns the manifest's name for it: its WAV, else its first series
+// in the order `signals` names them.
+std::string write_clip_files(const std::filesystem::path& root, const std::string& stem,
+                             Recording& r, const std::vector<std::string>& signals,
+                             const SensorConfig& sensors, std::uint64_t seed) {
+  std::string listed;
+  if (records(signals, "audio")) {
+    listed = stem + ".wav";
+    const std::filesystem::path partial = (root / listed).string() + ".part";
+    audio::write_audio(partial.string(), r.clip, audio::WriteOptions{});
+    move_into_place(partial, root / listed);
+  }
+  Rng noise(derive_seed(seed, {stable_hash("arm sensors")}));
+  add_sensor_noise(r.outcome.readings, sensors, noise);
+  for (const std::string& name : signals) {
+    if (name == "audio") continue;
+    const std::string relative = fmt::format("{}.{}.csv", stem, name);
+    signal::write_series_csv((root / relative).string(), name == "effort"
+                                                             ? r.outcome.readings.effort
+                                                             : r.outcome.readings.force);
+    if (listed.empty()) listed = relative;
+  }
+  return listed;
+}
 
 // One clip to record.
 struct Job {
@@ -96,6 +149,7 @@ SimulatedRecordingsSummary write_simulated_recordings(const Catalogue& catalogue
   std::vector<SoundAction> actions;                   // throws for an unknown name, before any file
   for (const auto& a : options.actions) actions.push_back(parse_sound_action(a));
   if (options.per_pair < 1) throw InputError("", 0, "--per-pair must be at least 1");
+  check_signals(options.signals);
 
   const fs::path root(options.output_dir);
   std::error_code ec;
@@ -150,13 +204,10 @@ SimulatedRecordingsSummary write_simulated_recordings(const Catalogue& catalogue
           const std::string action = to_string(job.action);
           const std::uint64_t seed = clip_seed(options.seed, job.object, action, job.index);
           Rng rng(seed);
-          const Recording r = simulate_recording(*scene->robot, *scene->renderer, job.action, rng);
+          Recording r = simulate_recording(*scene->robot, *scene->renderer, job.action, rng);
           const std::string relative =
-              fmt::format("{}/{}/{:03d}.wav", job.object, action, job.index);
-          const fs::path final_path = root / relative;
-          const fs::path partial = final_path.string() + ".part";
-          audio::write_audio(partial.string(), r.clip, audio::WriteOptions{});
-          move_into_place(partial, final_path);
+              write_clip_files(root, fmt::format("{}/{}/{:03d}", job.object, action, job.index), r,
+                               options.signals, config.sensors, seed);
           std::string row = manifest_row(relative, job.object, action, job.index, seed, r.outcome);
           if (!config.tables.empty()) row += "," + table.name;
           std::lock_guard lock(mutex);

@@ -86,7 +86,9 @@ ActionOutcome SimulatedRobot::execute(SoundAction action, const ActionVariation&
   const Eigen::Vector3d object_base(d->qpos + s.object_qpos);
   outcome.object_start = {object_base.x(), object_base.y(), object_base.z()};
   outcome.trace.object_position = outcome.object_start;
+  ArmSensorRecorder sensors(s, config_.sensors.rate_hz, outcome.readings);
   auto fail = [&](ActionStatus status, const std::string& reason) {
+    sensors.at_rest(d);
     outcome.status = status;
     outcome.reason = reason;
     return outcome;
@@ -120,7 +122,7 @@ ActionOutcome SimulatedRobot::execute(SoundAction action, const ActionVariation&
 
   // The action proper, dynamically.
   std::vector<Segment> script = action_script(action, p, at_object, upright, config_.arm);
-  const ScriptRun run = run_script(s, m, d, kin, script, q, object_.radius, outcome.trace);
+  const ScriptRun run = run_script(s, m, d, kin, script, q, object_.radius, outcome.trace, sensors);
   joint_targets_ = run.joints;
   mju_zero(d->xfrc_applied, 6 * m->nbody);
   outcome.duration_s = run.time_s;

@@ -26,6 +26,7 @@
 
 #include "common/rng.h"
 #include "sim/action_status.h"
+#include "sim/arm_sensors.h"
 #include "sim/catalogue.h"
 #include "sim/contact_trace.h"
 #include "sim/sim_config.h"
@@ -48,6 +49,8 @@ struct ActionOutcome {
   std::array<double, 3>
       object_displacement{};  // m, world frame: where the object ended minus where it began
   ContactTrace trace;         // object-table contacts
+  ArmReadings readings;  // the arm's joint torques and wrist force, noise-free (no samples when the
+                         // action failed before it began)
 
   bool collision() const { return status == ActionStatus::collision; }
 };

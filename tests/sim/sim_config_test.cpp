@@ -65,7 +65,10 @@ TEST(SimConfig, ShippedExampleStatesTheDefaults) {
       {"push_accelerate_share", c.arm.push_accelerate_share, d.arm.push_accelerate_share},
       {"push_decelerate_share", c.arm.push_decelerate_share, d.arm.push_decelerate_share},
       {"timestep_s", c.physics.timestep_s, d.physics.timestep_s},
-      {"slide_timestep_s", c.physics.slide_timestep_s, d.physics.slide_timestep_s}};
+      {"slide_timestep_s", c.physics.slide_timestep_s, d.physics.slide_timestep_s},
+      {"rate_hz", c.sensors.rate_hz, d.sensors.rate_hz},
+      {"effort_noise_nm", c.sensors.effort_noise_nm, d.sensors.effort_noise_nm},
+      {"force_noise_n", c.sensors.force_noise_n, d.sensors.force_noise_n}};
   for (const auto& [name, shipped, built_in] : fields) EXPECT_DOUBLE_EQ(shipped, built_in) << name;
 }
 
@@ -82,6 +85,7 @@ arm:
 physics:
   timestep_s: 0.001
   slide_timestep_s: 0.0025
+sensors: {rate_hz: 200, force_noise_n: 0}
 )",
                                        "c.yaml");
   EXPECT_DOUBLE_EQ(c.variability.impact_speed.mean, 0.2);
@@ -92,6 +96,9 @@ physics:
   EXPECT_DOUBLE_EQ(c.physics.slide_timestep_s, 0.0025);
   EXPECT_DOUBLE_EQ(c.arm.push_accelerate_share, 0.6);
   EXPECT_DOUBLE_EQ(c.arm.push_decelerate_share, 0.4);
+  EXPECT_DOUBLE_EQ(c.sensors.rate_hz, 200);
+  EXPECT_DOUBLE_EQ(c.sensors.force_noise_n, 0);
+  EXPECT_DOUBLE_EQ(c.sensors.effort_noise_nm, SimConfig{}.sensors.effort_noise_nm);
   EXPECT_DOUBLE_EQ(c.variability.push_speed.mean,
                    SimConfig{}.variability.push_speed.mean);  // untouched
 }
@@ -133,6 +140,9 @@ TEST(SimConfig, ErrorsNameFileLineAndField) {
   EXPECT_EQ(slide_step.line(), 3);
   EXPECT_NE(slide_step.problem().find("physics.slide_timestep_s"), std::string::npos)
       << slide_step.what();
+  const InputError rate = error_of("sensors:\n  effort_noise_nm: 0\n  rate_hz: 5\n");
+  EXPECT_EQ(rate.line(), 3);
+  EXPECT_NE(rate.problem().find("sensors.rate_hz"), std::string::npos) << rate.what();
   const InputError share = error_of("arm:\n  push_accelerate_share: 1.5\n");
   EXPECT_EQ(share.line(), 2);
   EXPECT_NE(share.problem().find("arm.push_accelerate_share"), std::string::npos) << share.what();

@@ -17,7 +17,9 @@ void add_synth_recordings_command(CLI::App& app) {
       "DIR/<object>/<action>/NNN.wav and "
       "DIR/manifest.csv "
       "(file, object, action, seed, collision, duration, impacts, sampled parameters, session: "
-      "recording i of each action is session i + 1).\n"
+      "recording i of each action is session i + 1). With --signals effort,force beside audio, the "
+      "arm's joint torques and wrist force as NNN.effort.csv and NNN.force.csv (raw signals, "
+      "docs/feature-sets.md).\n"
       "Example: echoplan synth-recordings --per-pair 10 --seed 1 -o recordings --objects "
       "coffee_mug,plastic_cup\n"
       "(`echoplan dataset`, its earlier name, still works.)");
@@ -44,6 +46,12 @@ void add_synth_recordings_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   cmd->add_option("--actions", opt->dataset.actions, "Actions, comma-separated")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--signals", opt->dataset.signals,
+                  "What each performance records, comma-separated: audio (NNN.wav), effort (the "
+                  "joint torques j1..j7, NNN.effort.csv), force (the wrist force, NNN.force.csv); "
+                  "the sensors' rate and noise are the sim config's `sensors:`")
       ->delimiter(',')
       ->capture_default_str();
   add_sim_file_options(*cmd, opt->files);
