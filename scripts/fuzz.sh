@@ -24,6 +24,7 @@
 #   recording_set_fuzz     a recording set's manifest.csv
 #   series_file_fuzz       a sensor's series file, then every kind of series features
 #   ros_audio_fuzz         ROS message bodies: Clip, Observe, FeatureRow, AudioData chunks (needs roscpp)
+#   bag_messages_fuzz      the JointState, WrenchStamped and String bodies import-bag decodes (needs rosbag)
 #
 # Seeds: the committed corpus fuzz/corpus/<target>/ (and, for audio, the reference inputs). What a run
 # adds goes to build-fuzz/corpus/<target>/, findings (crash-*, timeout-*, oom-*, leak-*) to
@@ -35,7 +36,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(cd "$root" && mkdir -p "${FUZZ_BUILD_DIR:-build-fuzz}" && cd "${FUZZ_BUILD_DIR:-build-fuzz}" && pwd)"
 all_targets=(audio_decode_fuzz problem_file_fuzz sim_files_fuzz perception_model_fuzz policy_file_fuzz
              experiment_files_fuzz oppt_log_fuzz feature_set_fuzz recording_set_fuzz series_file_fuzz
-             ros_audio_fuzz)
+             ros_audio_fuzz bag_messages_fuzz)
 
 usage() { awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; }
 die() { echo "fuzz.sh: $1" >&2; exit 2; }
@@ -76,15 +77,18 @@ if [ "$build_first" = 1 ]; then
     -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -gline-tables-only -DNDEBUG" \
     -DECHOPLAN_BUILD_TESTS=OFF -DECHOPLAN_BUILD_BENCH=OFF \
     -DECHOPLAN_BUILD_PYTHON=OFF >/dev/null
-  # ros_audio_fuzz exists only where roscpp was found: --all goes on without it, naming it fails.
+  # ros_audio_fuzz exists only where roscpp was found, bag_messages_fuzz only where rosbag storage
+  # was: --all goes on without them, naming one fails.
   # (The list is read whole first: grep -q closing the pipe early would fail make under pipefail.)
   known=$(cmake --build "$build" --target help)
-  if ! grep -qw ros_audio_fuzz <<<"$known"; then
-    [[ " ${positional[*]} " != *" ros_audio_fuzz "* ]] || die "ros_audio_fuzz needs roscpp (scripts/setup.sh deps)"
-    echo "fuzz.sh: roscpp not found, so no ros_audio_fuzz" >&2
-    targets=("${targets[@]/ros_audio_fuzz/}")
+  for optional in ros_audio_fuzz:roscpp bag_messages_fuzz:librosbag-storage-dev; do
+    target=${optional%%:*}
+    grep -qw "$target" <<<"$known" && continue
+    [[ " ${positional[*]} " != *" $target "* ]] || die "$target needs ${optional#*:} (scripts/setup.sh deps)"
+    echo "fuzz.sh: ${optional#*:} not found, so no $target" >&2
+    targets=("${targets[@]/$target/}")
     read -r -a targets <<<"${targets[*]}"
-  fi
+  done
   cmake --build "$build" -j"${JOBS:-2}" --target "${targets[@]}"
 fi
 

@@ -62,6 +62,8 @@ packages=(
   libroscpp-dev catkin ros-message-generation libstd-msgs-dev
   python3-roslaunch python3-rosparam python3-rosservice python3-rostest librostest-dev
   python3-rospy              # tests/robot/ros/audio_capture_stand_in.py: a stand-in audio_capture node
+  librosbag-storage-dev      # echoplan import-bag (robot/ros/bag_import.h)
+  python3-rosbag python3-sensor-msgs python3-geometry-msgs   # its tests write bags with rosbag
 )
 
 # Every compile through ccache (CMake reads these when a build folder is configured the first

@@ -42,6 +42,9 @@ int main(int argc, char** argv) {
   echoplan::cli::add_train_command(app);
   echoplan::cli::add_classify_command(app);
   echoplan::cli::add_evaluate_command(app);
+#ifdef ECHOPLAN_HAVE_ROSBAG
+  echoplan::cli::add_import_bag_command(app);
+#endif
 #ifdef ECHOPLAN_HAVE_PORTAUDIO
   echoplan::cli::add_devices_command(app);
   echoplan::cli::add_record_command(app);

@@ -12,5 +12,7 @@ extern "C" const char* __lsan_default_suppressions() {
          "leak:liblog4cxx.so\n"
          "leak:libxmlrpcpp.so\n"
          "leak:libboost_\n"
-         "leak:libapr-1.so\n";
+         "leak:libapr-1.so\n"
+         "leak:libclass_loader.so\n"
+         "leak:librosbag_storage.so\n";
 }

@@ -30,6 +30,8 @@ void add_merge_command(CLI::App& app);
 void add_train_command(CLI::App& app);
 void add_classify_command(CLI::App& app);
 void add_evaluate_command(CLI::App& app);
+// ROS 1 bags as a recordings tree (built when rosbag storage is found: ECHOPLAN_HAVE_ROSBAG).
+void add_import_bag_command(CLI::App& app);
 // Live capture (built when PortAudio is found: ECHOPLAN_HAVE_PORTAUDIO).
 void add_devices_command(CLI::App& app);
 void add_record_command(CLI::App& app);
