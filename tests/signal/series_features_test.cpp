@@ -101,16 +101,22 @@ TEST(SeriesFeatures, StatsOfAKnownChannel) {
   EXPECT_DOUBLE_EQ(row[4], std::sqrt(7.5));  // RMS: (1 + 4 + 9 + 16) / 4
 }
 
-// A unit sine at 10 Hz, 200 samples at 100 Hz (20 whole cycles): its power 1/2 splits between
-// +-10 Hz, so the one-sided bin at 10 Hz holds 1/4; [8, 12) Hz spans 8 bins of 0.5 Hz, mean 1/32.
-TEST(SeriesFeatures, BandPowerOfASine) {
+// A unit sine at 10 Hz sampled `samples` times at 100 Hz, channel "accel".
+Series sine_at_100_hz(int samples) {
   Series s;
   s.channels = {"accel"};
   s.values.resize(1);
-  for (int i = 0; i < 200; ++i) {
+  for (int i = 0; i < samples; ++i) {
     s.t.push_back(i / 100.0);
     s.values[0].push_back(std::sin(2 * std::numbers::pi * 10 * i / 100.0));
   }
+  return s;
+}
+
+// A unit sine at 10 Hz, 200 samples at 100 Hz (20 whole cycles): its power 1/2 splits between
+// +-10 Hz, so the one-sided bin at 10 Hz holds 1/4; [8, 12) Hz spans 8 bins of 0.5 Hz, mean 1/32.
+TEST(SeriesFeatures, BandPowerOfASine) {
+  const Series s = sine_at_100_hz(200);
   const std::vector<double> row = parse_series_features("bands(0,8,12,30)").extract(s, "x");
   ASSERT_EQ(row.size(), 3u);
   EXPECT_NEAR(row[1], 1.0 / 32, 1e-6);
@@ -127,13 +133,7 @@ TEST(SeriesFeatures, BandPowerOfASine) {
 // mean is that share of 1/32, less what leaks out of the band (20.1 cycles under a rectangular
 // window: a few percent, none of it gained).
 TEST(SeriesFeatures, BandPowerOnALengthWithALargePrimeFactor) {
-  Series s;
-  s.channels = {"accel"};
-  s.values.resize(1);
-  for (int i = 0; i < 202; ++i) {
-    s.t.push_back(i / 100.0);
-    s.values[0].push_back(std::sin(2 * std::numbers::pi * 10 * i / 100.0));
-  }
+  const Series s = sine_at_100_hz(202);
   const std::vector<double> row = parse_series_features("bands(0,8,12,30)").extract(s, "x");
   const double kept = 1.0 - (1.0 - std::cos(2 * std::numbers::pi / 10)) / 3.0;
   EXPECT_GT(row[1], 0.92 * kept / 32);
