@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   echoplan::cli::add_import_command(app);
   echoplan::cli::add_synth_command(app);
   echoplan::cli::add_synth_recordings_command(app);
+  echoplan::cli::add_collect_command(app);
   echoplan::cli::add_add_noise_command(app);
   echoplan::cli::add_features_command(app);
   echoplan::cli::add_heatmap_command(app);

@@ -22,6 +22,7 @@ void add_certify_command(CLI::App& app);
 void add_import_command(CLI::App& app);  // `import oppt`: another planner's logs
 void add_synth_command(CLI::App& app);
 void add_synth_recordings_command(CLI::App& app);
+void add_collect_command(CLI::App& app);    // a training set collected trial by trial
 void add_add_noise_command(CLI::App& app);  // a noisy copy of a recordings tree
 void add_features_command(CLI::App& app);
 void add_heatmap_command(CLI::App& app);
