@@ -20,6 +20,7 @@ namespace echoplan::loop {
 namespace {
 
 namespace fs = std::filesystem;
+using NamedSeries = std::vector<std::pair<std::string, signal::Series>>;
 
 constexpr const char* kHeader = "file,object,action,session,status";
 
@@ -69,8 +70,7 @@ std::ofstream open_manifest(const fs::path& path) {
 // Writes one performance's files and returns the manifest's name for it (its WAV).
 std::string write_performance(const fs::path& root, const std::string& object,
                               const std::string& behaviour, int session,
-                              const audio::AudioClip& clip,
-                              const std::vector<std::pair<std::string, signal::Series>>& series) {
+                              const audio::AudioClip& clip, const NamedSeries& series) {
   const fs::path folder = root / object / behaviour;
   std::error_code ec;
   fs::create_directories(folder, ec);
@@ -123,9 +123,9 @@ CollectionSummary collect(robot::Robot& robot, robot::Recorder& recorder,
         recorder.start(behaviour);
         const robot::ActionReport report = robot.execute(behaviour);
         const audio::AudioClip clip = recorder.stop();
-        const std::string file = write_performance(
-            root, object, behaviour, session, clip,
-            signals ? signals(object, session, behaviour) : decltype(signals({}, 0, {})){});
+        const std::string file =
+            write_performance(root, object, behaviour, session, clip,
+                              signals ? signals(object, session, behaviour) : NamedSeries{});
         manifest << fmt::format("{},{},{},{},{}\n", file, object, behaviour, session,
                                 to_string(report.status))
                  << std::flush;
