@@ -169,6 +169,16 @@ void bind_model(py::module_& m) {
           "max_uses", [](const Model& x, py::handle a) { return x.max_uses(action_index(x, a)); },
           py::arg("action"), "How often `action` may be taken in one episode (0: no limit).")
       .def(
+          "prerequisites",
+          [](const Model& x, py::handle a) {
+            std::vector<std::string> names;
+            for (int r : x.prerequisites(action_index(x, a)))
+              names.push_back(x.spec().action_names[r]);
+            return names;
+          },
+          py::arg("action"),
+          "The actions that must each have been taken before `action` is available (names).")
+      .def(
           "tables",
           [](const Model& x) -> py::object {
             return x.tabular() ? py::object(tables_of(*x.tabular())) : py::object(py::none());

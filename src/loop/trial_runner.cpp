@@ -55,15 +55,21 @@ void count_step(TrialRecord& record, const StepRecord& s, double& weight, double
   record.steps = s.step + 1;
 }
 
-// A solver must never choose an action the trial has used up (pomdp::Model::max_uses): it would
-// ask the world for a performance it does not have. A logic error, not bad input.
-void check_not_used_up(const pomdp::Model& model, const TrialRecord& record, int action) {
+// A solver must never choose an action the trial has used up (pomdp::Model::max_uses) or whose
+// prerequisites it has not taken (pomdp::Model::prerequisites): it would ask the world for a
+// performance it does not have, or one the robot cannot do yet. A logic error, not bad input.
+void check_available(const pomdp::Model& model, const TrialRecord& record, int action) {
+  const auto& names = model.spec().action_names;
   const int limit = model.max_uses(action);
   if (limit > 0 && record.action_counts[action] >= limit)
-    throw std::logic_error("the solver chose '" + model.spec().action_names[action] +
-                           "' in trial " + std::to_string(record.trial) + " after its " +
-                           std::to_string(limit) + " allowed use" + (limit == 1 ? "" : "s") +
-                           " were spent");
+    throw std::logic_error("the solver chose '" + names[action] + "' in trial " +
+                           std::to_string(record.trial) + " after its " + std::to_string(limit) +
+                           " allowed use" + (limit == 1 ? "" : "s") + " were spent");
+  for (int r : model.prerequisites(action))
+    if (record.action_counts[r] == 0)
+      throw std::logic_error("the solver chose '" + names[action] + "' in trial " +
+                             std::to_string(record.trial) + " before '" + names[r] +
+                             "', which it requires");
 }
 
 }  // namespace
@@ -102,7 +108,7 @@ std::optional<Trial> run_trial(const TrialParts& parts, const TrialOptions& opti
     parts.solver->improve(options.budget, planner_rng);
     r.episodes = parts.solver->stats().episodes_last;
     r.action = parts.solver->best_action();
-    check_not_used_up(model, record, r.action);
+    check_available(model, record, r.action);
     WorldStep happened = parts.world->execute(r.action, world_rng);
     const pomdp::Outcome& outcome = happened.outcome;
     r.observation = outcome.observation;

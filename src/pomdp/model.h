@@ -118,6 +118,10 @@ class Model {
   // fact about the episode's history (the actions taken so far), not the state, so solvers count
   // the uses along each path of their trees and beliefs stay what they are.
   virtual int max_uses(int /*action*/) const { return 0; }
+  // The actions that must each have been taken at least once in the episode before `action` is
+  // available (a shake only after a grasp); empty (the default): available from the start. Like a
+  // use limit, a fact about the history, counted by solvers along each path.
+  virtual std::vector<int> prerequisites(int /*action*/) const { return {}; }
 
   int num_actions() const { return static_cast<int>(spec().action_names.size()); }
 };

@@ -30,7 +30,37 @@ bool is_distribution(const std::vector<double>& row) {
   return check_row(row.data(), row.size()).ok();
 }
 
+// Depth first from `a`: the path so far in `path`, each action's state in `mark` (0 unvisited,
+// 1 on the path, 2 done). True when a cycle closes; `path` then ends with it.
+bool closes_cycle(const std::vector<SensingAction>& sensing, int a, std::vector<int>& mark,
+                  std::vector<int>& path) {
+  mark[a] = 1;
+  path.push_back(a);
+  for (int r : sensing[a].prerequisites) {
+    if (r < 0 || r >= static_cast<int>(sensing.size())) continue;
+    if (mark[r] == 1) {
+      path.push_back(r);
+      return true;
+    }
+    if (mark[r] == 0 && closes_cycle(sensing, r, mark, path)) return true;
+  }
+  mark[a] = 2;
+  path.pop_back();
+  return false;
+}
+
 }  // namespace
+
+std::vector<int> prerequisite_cycle(const std::vector<SensingAction>& sensing) {
+  std::vector<int> mark(sensing.size(), 0), path;
+  for (int a = 0; a < static_cast<int>(sensing.size()); ++a) {
+    if (mark[a] != 0 || !closes_cycle(sensing, a, mark, path)) continue;
+    // The path is the walk from `a`; the cycle starts where its last action first appears.
+    const auto start = std::find(path.begin(), path.end(), path.back());
+    return {start, path.end()};
+  }
+  return {};
+}
 
 void validate_object_problem(const ObjectProblemData& d) {
   const std::size_t k = d.objects.size(), m = d.sensing.size(), j = d.sorting.size(),
@@ -55,7 +85,11 @@ void validate_object_problem(const ObjectProblemData& d) {
     require(a.collision_probability >= 0.0 && a.collision_probability <= 1.0,
             "collision probability must be in [0, 1]");
     require(a.uses >= 0, "a sensing action's use limit must be >= 0 (0: no limit)");
+    for (int r : a.prerequisites)
+      require(r >= 0 && r < static_cast<int>(m), "a prerequisite must be a sensing action");
   }
+  require(prerequisite_cycle(d.sensing).empty(),
+          "the sensing actions' prerequisites go round in a circle");
 }
 
 // ---- tabular view ----
@@ -215,6 +249,11 @@ double ObjectIdentificationModel::observation_likelihood(const State& next_state
 
 int ObjectIdentificationModel::max_uses(int action) const {
   return is_sensing(action) ? data_.sensing[action].uses : 0;
+}
+
+std::vector<int> ObjectIdentificationModel::prerequisites(int action) const {
+  // Sensing actions come first, so an index into data_.sensing is the model's action index.
+  return is_sensing(action) ? data_.sensing[action].prerequisites : std::vector<int>{};
 }
 
 double ObjectIdentificationModel::heuristic_value(const State& state) const {

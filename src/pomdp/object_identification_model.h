@@ -31,6 +31,10 @@ struct SensingAction {
   // holds a few performances of each behaviour per session: once they are used up, the action is
   // no longer available (Model::max_uses).
   int uses = 0;
+  // The sensing actions (indices into ObjectProblemData::sensing) that must each have been
+  // performed at least once in the episode before this one is available: a robot shakes or lifts
+  // an object only once it has grasped it (Model::prerequisites). Empty: always available.
+  std::vector<int> prerequisites;
 };
 
 // Everything that defines an object-identification problem. Invariants (checked by
@@ -52,6 +56,12 @@ struct ObjectProblemData {
   std::vector<std::vector<double>> sorting_reward;
   double collision_reward = -100.0;  // replaces the action's reward on a collision
 };
+
+// A chain of prerequisites that leads back to where it started (a requires b, b requires a), as
+// the sensing actions' indices from the first to the one that closes it (that first again); empty
+// when there is none. No action on such a chain could ever be performed. Indices out of range are
+// skipped (validate_object_problem reports them).
+std::vector<int> prerequisite_cycle(const std::vector<SensingAction>& sensing);
 
 // Throws std::invalid_argument naming the first broken invariant (the YAML loader reports the
 // same conditions with file and line before it gets here).
@@ -104,6 +114,7 @@ class ObjectIdentificationModel final : public Model {
   double heuristic_value(const State& state) const override;
   const ObjectIdentificationModel* object_identification() const override { return this; }
   int max_uses(int action) const override;
+  std::vector<int> prerequisites(int action) const override;
   const TabularModel* tabular() const override { return &tabular_; }
   State tabular_state(int s) const override;
 

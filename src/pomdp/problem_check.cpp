@@ -18,11 +18,22 @@ std::string state_name(const ModelSpec& spec, const TabularModel& t, int s) {
   return s == t.num_states() - 1 ? "done" : "state " + std::to_string(s);
 }
 
-void check_tables(const ModelSpec& spec, const TabularModel& t, std::vector<std::string>& out) {
+// True when some action waits for `action` (Model::prerequisites): then it helps by what it opens.
+bool opens_another(const Model& model, int action) {
+  for (int a = 0; a < model.num_actions(); ++a) {
+    const std::vector<int> required = model.prerequisites(a);
+    if (std::find(required.begin(), required.end(), action) != required.end()) return true;
+  }
+  return false;
+}
+
+void check_tables(const Model& model, const TabularModel& t, std::vector<std::string>& out) {
+  const ModelSpec& spec = model.spec();
   const int ns = t.num_states(), na = t.num_actions(), no = t.num_observations();
   const std::vector<double> start = t.initial_belief();
 
   for (int a = 0; a < na; ++a) {
+    if (opens_another(model, a)) continue;
     bool keeps_state = true, same_everywhere = true;
     int first = -1;
     for (int s = 0; s < ns && (keeps_state || same_everywhere); ++s) {
@@ -144,7 +155,7 @@ std::vector<std::string> check_problem(const Problem& problem) {
     check_objects(object_model->data(), out);
   }
   if (const TabularModel* t = problem.model->tabular())
-    check_tables(problem.model->spec(), *t, out);
+    check_tables(*problem.model, *t, out);
   return out;
 }
 

@@ -3,7 +3,7 @@
 //
 // Checks (on the tables when the model has them):
 //   - an action that never changes the state and whose observations are the same in every state
-//     (it can never help);
+//     (it can never help), unless another action requires it (Model::prerequisites);
 //   - a start belief with probability on a terminal state;
 //   - states that cannot be reached from the start belief, observations that can never occur;
 //   - for object problems: objects with zero prior, objects with no sorting action that pays

@@ -137,6 +137,40 @@ void read_use_limits(const YamlReader& f, const YAML::Node& actions, ObjectProbl
   }
 }
 
+// `actions.requires`: a map `sensing action: [sensing action...]`: each listed action must have
+// been performed at least once before the key's action is available (SensingAction::
+// prerequisites). A sorting action, the action itself, a repeat, or a circle of requirements (which
+// no episode could ever enter) is an error at its line.
+void read_prerequisites(const YamlReader& f, const YAML::Node& actions, ObjectProblemData& d) {
+  const YAML::Node requires_map = f.optional(actions, "requires", "actions");
+  if (!requires_map.IsDefined()) return;
+  f.expect_map(requires_map, "actions.requires");
+  std::vector<std::string> sensing_names;
+  for (const auto& a : d.sensing) sensing_names.push_back(a.name);
+  std::vector<YAML::Node> where(d.sensing.size());
+  for (auto it = requires_map.begin(); it != requires_map.end(); ++it) {
+    const int a =
+        index_of(f, it->first, sensing_names, f.name(it->first, "action"), "sensing action");
+    const std::string what = "actions.requires of " + sensing_names[a];
+    if (!it->second.IsSequence()) f.fail(it->second, what + " must be a list of sensing actions");
+    for (const YAML::Node& item : it->second) {
+      const int r = index_of(f, item, sensing_names, f.name(item, "action"), "sensing action");
+      if (r == a) f.fail(item, sensing_names[a] + " cannot require itself");
+      auto& list = d.sensing[a].prerequisites;
+      if (std::find(list.begin(), list.end(), r) != list.end())
+        f.fail(item, sensing_names[r] + " is listed twice in " + what);
+      list.push_back(r);
+    }
+    where[a] = it->first;
+  }
+  const std::vector<int> cycle = prerequisite_cycle(d.sensing);
+  if (cycle.empty()) return;
+  std::string chain;
+  for (int a : cycle) chain += (chain.empty() ? "" : " -> ") + sensing_names[a];
+  f.fail(where[cycle.front()],
+         "actions.requires goes round in a circle (" + chain + "): none of them could ever be done");
+}
+
 void read_observation(const YamlReader& f, const YAML::Node& root, ObjectProblemData& d) {
   const YAML::Node o = f.require(root, "observation", "the problem");
   f.only_keys(o, {"type", "symbols", "table"}, "observation");
@@ -295,7 +329,7 @@ Problem read_problem(const YamlReader& f, const YAML::Node& root) {
   d.objects = f.names(f.require(root, "objects", "the problem"), "objects");
 
   const YAML::Node actions = f.require(root, "actions", "the problem");
-  f.only_keys(actions, {"sensing", "sorting", "uses"}, "actions");
+  f.only_keys(actions, {"sensing", "sorting", "uses", "requires"}, "actions");
   for (const auto& n : f.names(f.require(actions, "sensing", "actions"), "actions.sensing")) {
     d.sensing.push_back(SensingAction{n});
   }
@@ -306,6 +340,7 @@ Problem read_problem(const YamlReader& f, const YAML::Node& root) {
     }
   }
   read_use_limits(f, actions, d);
+  read_prerequisites(f, actions, d);
 
   read_initial_belief(f, root, d);
   read_transition(f, root, d);

@@ -56,6 +56,17 @@ void write_problem_yaml(std::ostream& out, const ObjectProblemData& d, const Bel
     for (const auto& a : d.sensing)
       if (a.uses > 0) out << "    " << a.name << ": " << a.uses << "\n";
   }
+  bool gated = false;
+  for (const auto& a : d.sensing) gated = gated || !a.prerequisites.empty();
+  if (gated) {
+    out << "  requires:\n";
+    for (const auto& a : d.sensing) {
+      if (a.prerequisites.empty()) continue;
+      std::vector<std::string> required;
+      for (int r : a.prerequisites) required.push_back(d.sensing[r].name);
+      out << "    " << a.name << ": " << names(required) << "\n";
+    }
+  }
   out << "initial_belief:\n  type: fixed_configuration\n"
       << "  joints: " << flow_list(d.initial_joints) << "\n"
       << "  offset: " << flow_list(d.initial_offset) << "\n"

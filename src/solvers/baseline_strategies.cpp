@@ -34,8 +34,10 @@ class BestSingle final : public FixedStrategy {
     // By value, cost included; equal values (equal costs and accuracy) go to the more accurate,
     // so that with one cost for every action the choice is the most accurate one.
     double best_value = -std::numeric_limits<double>::infinity(), best_accuracy = -1.0;
+    // A behaviour that waits for others (Model::prerequisites) costs theirs too.
     for (int a = 0; a < problem().num_sensing(); ++a) {
-      const double value = single_action_value(problem().data(), a);
+      double value = single_action_value(problem().data(), a);
+      for (int r : all_prerequisites(a)) value += problem().data().sensing[r].reward;
       const double accuracy = held_out_accuracy(problem().data(), a);
       if (value > best_value || (value == best_value && accuracy > best_accuracy))
         best_value = value, best_accuracy = accuracy, action_ = a;
@@ -44,7 +46,9 @@ class BestSingle final : public FixedStrategy {
 
  private:
   int decide(Rng& /*rng*/) override {
-    if (!available(action_)) return sort_action();
+    const int next = toward(action_);
+    if (next < 0) return sort_action();       // used up
+    if (next != action_) return next;         // a prerequisite on its way
     if (problem().max_uses(action_) > 0) return action_;
     const double look = lookahead_.sense_then_commit_value(objects(), action_);
     values()[action_] = look;

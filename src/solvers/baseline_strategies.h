@@ -3,14 +3,16 @@
 // from the belief over the objects and the actions taken so far (fixed_strategy.h), with no search,
 // and ends by sorting to the bin most likely right (most_likely_right_sort()):
 //   all_actions       every sensing action once, in the problem's order, skipping any whose uses
-//                     have run out; then sort.
+//                     have run out and taking one that waits for a prerequisite once it is open
+//                     (Model::prerequisites); then sort.
 //   best_single       the sensing action of the best value, cost included (single_action_value():
 //                     one performance, then sorting right as often as its held-out accuracy says;
 //                     with equal costs, the most accurate; the first on ties), repeated while its
 //                     uses last; then sort. An action with no
 //                     use limit is repeated while one more performance is worth its cost by
 //                     information_gain's rule (sense_then_commit_value() above commit_value()),
-//                     since repeating it forever never sorts.
+//                     since repeating it forever never sorts. An action that waits for others
+//                     counts their costs in its value and is performed after them.
 //   decision_region   greedy on the sort decision rather than the identity (equivalence-class edge
 //                     cutting: EC2, Golovin, Krause & Ray 2010; decision-region determination,
 //                     Javdani et al. 2014): the commit rule of information_gain below, else the
@@ -38,7 +40,10 @@
 //                     worth at least the best one-step lookahead (sense once, then commit), else
 //                     take the available sensing action with the greatest expected entropy
 //                     reduction per unit cost (cost |r_a|, the action's reward per use; a zero cost
-//                     counts as 1, i.e. the gain itself; the first on ties).
+//                     counts as 1, i.e. the gain itself; the first on ties). Both greedy rules
+//                     weigh only the actions open now: a prerequisite that tells nothing by itself
+//                     (a grasp before a shake) has no gain and is never chosen, so what it opens
+//                     is never reached. That is where looking ahead pays (docs/planning.md).
 //   random            each step, uniformly among the available sensing actions and "sort now" (so
 //                     with M available actions, sorting has chance 1/(M+1)); sorts when none is
 //                     available. Draws from the Rng improve() is given.

@@ -78,6 +78,28 @@ std::vector<int> FixedStrategy::available_sensing() const {
   return actions;
 }
 
+int FixedStrategy::toward(int action) const {
+  if (available(action)) return action;
+  if (limits_.max_uses(action) > 0 && uses_[action] >= limits_.max_uses(action)) return -1;
+  for (int r : limits_.prerequisites(action))
+    if (uses_[r] == 0)
+      if (const int next = toward(r); next >= 0) return next;
+  return -1;
+}
+
+std::vector<int> FixedStrategy::all_prerequisites(int action) const {
+  std::vector<int> found;
+  std::vector<int> open = limits_.prerequisites(action);
+  while (!open.empty()) {
+    const int r = open.back();
+    open.pop_back();
+    if (std::find(found.begin(), found.end(), r) != found.end()) continue;
+    found.push_back(r);
+    for (int q : limits_.prerequisites(r)) open.push_back(q);
+  }
+  return found;
+}
+
 int FixedStrategy::sort_action() const {
   return problem_->num_sensing() + most_likely_right_sort(problem_->data(), objects_);
 }

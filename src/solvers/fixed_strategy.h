@@ -3,7 +3,8 @@
 //
 // A strategy reads P(object k) from belief.discrete_marginal(0) (given in reset() and update()),
 // counts the uses of each action since reset() from update()'s calls (an action is available while
-// Model::max_uses(a) is 0, no limit, or above its uses), and decides in improve() (the budget is
+// Model::max_uses(a) is 0, no limit, or above its uses, and each of its Model::prerequisites has
+// been taken), and decides in improve() (the budget is
 // ignored: nothing is searched). It only works on object-identification problems
 // (Model::object_identification()), since its rules talk about objects, sensing and sorting.
 #pragma once
@@ -52,6 +53,11 @@ class FixedStrategy : public Solver {
   int uses(int action) const { return uses_[action]; }
   bool available(int action) const;
   std::vector<int> available_sensing() const;  // in the problem's order
+  // The next step towards `action`: itself when available, else the first prerequisite on its way
+  // not yet taken that is available (depth first); -1 when none is (used up).
+  int toward(int action) const;
+  // The prerequisites of `action`, theirs, and so on, each once.
+  std::vector<int> all_prerequisites(int action) const;
   int sort_action() const;                     // the model's index of most_likely_right_sort()
   std::vector<double>& values() { return values_; }
 

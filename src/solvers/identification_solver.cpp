@@ -165,9 +165,18 @@ const double* IdentificationSolver::best_plan(const double* b, double& value,
 
 bool IdentificationSolver::plan_fits(std::size_t plan, const std::uint16_t* node_uses) const {
   const std::uint16_t* needs = &plan_uses_matrix_[plan * num_actions_];
+  // A plan found at another node fits this one when its uses fit the remaining ones and every
+  // action it takes is available here from the start, whatever order the plan takes them in:
+  // prerequisites only ever open actions, so a plan whose actions are all open here stays
+  // feasible (one that opens its own, grasp then shake, is not reused here; that only weakens the
+  // bound, never breaks it).
+  const UseLimits& limits = tables_->limits;
   for (int a = 0; a < num_actions_; ++a) {
-    const int limit = tables_->limits.max_uses(a);
+    if (needs[a] == 0) continue;
+    const int limit = limits.max_uses(a);
     if (limit > 0 && node_uses[a] + needs[a] > limit) return false;
+    for (int r : limits.prerequisites(a))
+      if (node_uses[r] == 0) return false;
   }
   return true;
 }
@@ -291,8 +300,12 @@ int IdentificationSolver::uses(NodeId node, int action) const {
 }
 
 bool IdentificationSolver::available(NodeId node, int action) const {
+  if (kind_[action] != ActionKind::sensing) return true;
   const int limit = tables_->limits.max_uses(action);
-  return limit == 0 || kind_[action] != ActionKind::sensing || uses(node, action) < limit;
+  if (limit > 0 && uses(node, action) >= limit) return false;
+  for (int r : tables_->limits.prerequisites(action))
+    if (uses(node, r) == 0) return false;
+  return true;
 }
 
 IdentificationSolver::NodeId IdentificationSolver::child(NodeId node, int action, int observation) {
@@ -301,8 +314,10 @@ IdentificationSolver::NodeId IdentificationSolver::child(NodeId node, int action
   if (action < 0 || action >= num_actions_ || kind_[action] != ActionKind::sensing)
     throw std::invalid_argument(fmt::format("action {} is not a sensing action", action));
   if (!available(node, action))
-    throw std::invalid_argument(fmt::format("action {} is used up here ({} uses allowed)", action,
-                                            tables_->limits.max_uses(action)));
+    throw std::invalid_argument(fmt::format(
+        "action {} is not available here (used up: {} uses allowed; or a prerequisite not yet "
+        "taken)",
+        action, tables_->limits.max_uses(action)));
   if (observation < 0 || observation >= num_observations_)
     throw std::invalid_argument(fmt::format("observation {} is out of range", observation));
   const Key key = child_key(node, action, observation);

@@ -260,6 +260,62 @@ TEST(DecisionRegion, HonoursUseLimits) {
   EXPECT_EQ(spent.decide(), kToBinB);
 }
 
+// The two-object problem where tap tells nothing ([0.5, 0.5] rows: a grasp) and press and shake
+// are possible only after it (Model::prerequisites).
+pomdp::ObjectProblemData press_and_shake_after_a_tap() {
+  pomdp::ObjectProblemData d = testing::two_objects();
+  d.observation_table[kTap] = {{0.5, 0.5}, {0.5, 0.5}};
+  d.sensing[kPress].prerequisites = d.sensing[kShake].prerequisites = {kTap};
+  return d;
+}
+
+TEST(Prerequisites, AllActionsTakesAnActionOnceItIsOpen) {
+  pomdp::ObjectProblemData d = testing::two_objects();
+  d.sensing[kTap].prerequisites = {kShake};  // tap only after shake: shake, then tap, then press
+  StrategyRun run("all_actions", d, {0.5, 0.5});
+  EXPECT_EQ(run.decide(), kPress);
+  run.heard(kPress, {0.8, 0.2});
+  EXPECT_EQ(run.decide(), kShake);
+  run.heard(kShake, {0.8, 0.2});
+  EXPECT_EQ(run.decide(), kTap);
+  run.heard(kTap, {0.8, 0.2});
+  EXPECT_EQ(run.decide(), kToA);
+}
+
+TEST(Prerequisites, BestSingleOpensItsActionFirstAndCountsWhatThatCosts) {
+  // press alone: -1 + 0.99·(0.85·10 - 0.15·100) = -7.435, plus the tap it waits for: -8.435;
+  // shake: -1 + 0.99·(0.7·10 - 0.3·100) = -23.77, plus the tap: -24.77. Press, after a tap.
+  pomdp::ObjectProblemData d = press_and_shake_after_a_tap();
+  d.sensing[kPress].uses = 1;
+  StrategyRun run("best_single", d, {0.5, 0.5});
+  EXPECT_EQ(run.decide(), kTap);
+  run.heard(kTap, {0.5, 0.5});
+  EXPECT_EQ(run.decide(), kPress);
+  run.heard(kPress, {0.9, 0.1});
+  EXPECT_EQ(run.decide(), kToA);
+  // Only press waits for a tap costing 20: press -27.435, shake alone -23.77. Shake, at once.
+  d = testing::two_objects();
+  d.sensing[kTap].reward = -20.0;
+  d.sensing[kPress].prerequisites = {kTap};
+  d.sensing[kShake].uses = 1;
+  StrategyRun priced("best_single", d, {0.5, 0.5});
+  EXPECT_EQ(priced.decide(), kShake);
+}
+
+TEST(Prerequisites, TheGreedyRulesNeverOpenWhatATellNothingActionOpens) {
+  // Only the tap is open and it changes no belief: tap then commit is worth the cost less than
+  // committing now, so both greedy rules sort at once (to_a, the first on ties), though press
+  // after it is worth -1 + 0.99·(-7.435) = -8.36 against -45.
+  for (const char* rule : {"information_gain", "decision_region"}) {
+    StrategyRun run(rule, press_and_shake_after_a_tap(), {0.5, 0.5});
+    EXPECT_EQ(run.decide(), kToA) << rule;
+    EXPECT_TRUE(std::isnan(run.strategy->root_action_values()[kPress])) << rule;
+    // Once tapped (by someone else), press is open and taken.
+    run.heard(kTap, {0.5, 0.5});
+    EXPECT_EQ(run.decide(), kPress) << rule;
+  }
+}
+
 // Decisions of `random` at a fixed belief, with no update (so the choices stay the same).
 std::vector<int> random_decisions(const pomdp::ObjectProblemData& d, std::vector<double> belief,
                                   std::uint64_t seed, int n, int spent = -1) {

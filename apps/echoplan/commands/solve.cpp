@@ -223,9 +223,9 @@ void run_point_based(const SolveArgs& args, const pomdp::Problem& problem,
   namespace off = solvers::offline;
   if (solvers::UseLimits(*problem.model).any())
     throw InputError(args.problem, 0,
-                     "the point-based solver does not support per-action use limits "
-                     "(actions.uses); use --method exact (identification problems) or an online "
-                     "solver");
+                     "the point-based solver does not support per-action use limits or "
+                     "prerequisites (actions.uses, actions.requires); use --method exact "
+                     "(identification problems) or an online solver");
   auto dense = std::make_shared<const off::FlatPomdp>(off::make_flat_pomdp(tables, args.problem));
 
   off::SolverOptions options;

@@ -70,11 +70,12 @@ std::unique_ptr<Solver> make_offline_solver(const pomdp::ModelPtr& model,
                      "the offline solver needs a problem with tables (discrete states, "
                      "actions and observations)");
   }
-  // Its alpha vectors are over beliefs alone; a use limit makes the value depend on the history.
+  // Its alpha vectors are over beliefs alone; a use limit or a prerequisite makes the value
+  // depend on the history.
   if (UseLimits(*model).any())
     throw InputError(source, 0,
-                     "the offline solver does not support per-action use limits (actions.uses); "
-                     "use --solver abt or pomcp");
+                     "the offline solver does not support per-action use limits or prerequisites "
+                     "(actions.uses, actions.requires); use --solver abt or pomcp");
   auto flat = std::make_shared<const FlatPomdp>(make_flat_pomdp(*tables, source));
   if (!policy_path.empty()) {
     return std::make_unique<OfflinePolicySolver>(model, flat, load_policy(policy_path, *flat));
