@@ -83,6 +83,16 @@ TEST(ProblemYaml, UseLimitsAreReadPerSensingAction) {
   EXPECT_EQ(p.model->max_uses(2), 0);  // a sorting action
 }
 
+TEST(ProblemYaml, PrerequisitesAreReadPerSensingAction) {
+  std::string text = repo_text("problems/audio_objects.yaml");
+  const std::string from = "sorting: [move_to_A, move_to_B]";
+  text.replace(text.find(from), from.size(), from + "\n  requires: {strike: [slide]}");
+  const Problem p = parse_problem_yaml(text, "requires.yaml");
+  EXPECT_TRUE(p.model->prerequisites(0).empty());
+  EXPECT_EQ(p.model->prerequisites(1), (std::vector<int>{0}));
+  EXPECT_TRUE(p.model->prerequisites(2).empty());  // a sorting action
+}
+
 // Each bad input: replace one piece of the report's problem file and expect the error's line and
 // message.
 struct BadCase {
@@ -166,7 +176,26 @@ INSTANTIATE_TEST_SUITE_P(
                 "sorting: [move_to_A, move_to_B]\n  uses: {slide: 1.5}", 10, "use limit of slide"},
         BadCase{"uses_of_a_sorting_action", "sorting: [move_to_A, move_to_B]",
                 "sorting: [move_to_A, move_to_B]\n  uses: {move_to_A: 1}", 10,
-                "unknown sensing action 'move_to_A'"}),
+                "unknown sensing action 'move_to_A'"},
+        BadCase{"requires_an_unknown_action", "sorting: [move_to_A, move_to_B]",
+                "sorting: [move_to_A, move_to_B]\n  requires: {strike: [grasp]}", 10,
+                "unknown sensing action 'grasp'"},
+        BadCase{"requires_a_sorting_action", "sorting: [move_to_A, move_to_B]",
+                "sorting: [move_to_A, move_to_B]\n  requires: {strike: [move_to_A]}", 10,
+                "unknown sensing action 'move_to_A'"},
+        BadCase{"requires_itself", "sorting: [move_to_A, move_to_B]",
+                "sorting: [move_to_A, move_to_B]\n  requires: {strike: [strike]}", 10,
+                "strike cannot require itself"},
+        BadCase{"requires_twice", "sorting: [move_to_A, move_to_B]",
+                "sorting: [move_to_A, move_to_B]\n  requires: {strike: [slide, slide]}", 10,
+                "slide is listed twice in actions.requires of strike"},
+        BadCase{"requires_not_a_list", "sorting: [move_to_A, move_to_B]",
+                "sorting: [move_to_A, move_to_B]\n  requires: {strike: slide}", 10,
+                "actions.requires of strike must be a list of sensing actions"},
+        BadCase{"requires_in_a_circle", "sorting: [move_to_A, move_to_B]",
+                "sorting: [move_to_A, move_to_B]\n  requires:\n    slide: [strike]\n    strike: "
+                "[slide]",
+                11, "goes round in a circle (slide -> strike -> slide)"}),
     [](const auto& test_info) { return std::string(test_info.param.label); });
 
 TEST(ProblemYaml, EmptyFileIsAnError) {

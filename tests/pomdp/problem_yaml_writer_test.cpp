@@ -53,6 +53,22 @@ TEST(ProblemYamlWriter, UseLimitsAreWrittenOnlyWhenSetAndReadBack) {
   EXPECT_EQ(again.str(), limited.str());
 }
 
+TEST(ProblemYamlWriter, PrerequisitesAreWrittenOnlyWhenSetAndReadBack) {
+  const Problem p = load_problem(repo_file("problems/grasp_first.yaml"));
+  EXPECT_EQ(object_model(p).data().sensing[2].prerequisites, (std::vector<int>{1}));
+  std::ostringstream out;
+  write_problem_yaml(out, object_model(p).data(), p.belief, p.planner);
+  EXPECT_NE(out.str().find("  requires:\n    shake: [grasp]\n"), std::string::npos) << out.str();
+  const Problem q = parse_problem_yaml(out.str(), "written.yaml");
+  EXPECT_EQ(q.model->prerequisites(2), (std::vector<int>{1}));
+  EXPECT_TRUE(q.model->prerequisites(0).empty());
+  ObjectProblemData plain = object_model(p).data();
+  plain.sensing[2].prerequisites.clear();
+  std::ostringstream none;
+  write_problem_yaml(none, plain, p.belief, p.planner);
+  EXPECT_EQ(none.str().find("requires"), std::string::npos);
+}
+
 // Numbers with no short decimal form (1/3, 0.1 + 0.2) and the settings the report's problem file
 // does not use (exact belief, an episode budget) survive the round trip bit for bit.
 TEST(ProblemYamlWriter, EveryDoubleAndSettingRoundTripsExactly) {
