@@ -34,7 +34,7 @@ struct SensingAction {
   // The sensing actions (indices into ObjectProblemData::sensing) that must each have been
   // performed at least once in the episode before this one is available: a robot shakes or lifts
   // an object only once it has grasped it (Model::prerequisites). Empty: always available.
-  std::vector<int> prerequisites;
+  std::vector<int> prerequisites = {};
 };
 
 // Everything that defines an object-identification problem. Invariants (checked by

@@ -47,8 +47,8 @@ class BestSingle final : public FixedStrategy {
  private:
   int decide(Rng& /*rng*/) override {
     const int next = toward(action_);
-    if (next < 0) return sort_action();       // used up
-    if (next != action_) return next;         // a prerequisite on its way
+    if (next < 0) return sort_action();  // used up
+    if (next != action_) return next;    // a prerequisite on its way
     if (problem().max_uses(action_) > 0) return action_;
     const double look = lookahead_.sense_then_commit_value(objects(), action_);
     values()[action_] = look;

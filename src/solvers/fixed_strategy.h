@@ -58,7 +58,7 @@ class FixedStrategy : public Solver {
   int toward(int action) const;
   // The prerequisites of `action`, theirs, and so on, each once.
   std::vector<int> all_prerequisites(int action) const;
-  int sort_action() const;                     // the model's index of most_likely_right_sort()
+  int sort_action() const;  // the model's index of most_likely_right_sort()
   std::vector<double>& values() { return values_; }
 
  private:

@@ -46,7 +46,8 @@ pomdp::ModelPtr one_noisy_sensor(int uses) {
 }
 
 // The same two objects and sensor, which now hears only what the robot holds: "listen" requires
-// "grasp", which tells nothing (its rows uniform). Each once (`uses`), so that the brute force ends.
+// "grasp", which tells nothing (its rows uniform). Each once (`uses`), so that the brute force
+// ends.
 pomdp::ModelPtr grasp_then_listen() {
   pomdp::ObjectProblemData d;
   d.name = "grasp_then_listen";
@@ -162,7 +163,7 @@ TEST(UseLimits, PrerequisitesOpenAnActionOnceTakenAndCountWithoutLimits) {
   EXPECT_TRUE(gated.allows(uses, 2));  // open for good, no limit
 
   EXPECT_FALSE(UseLimits(std::vector<int>{0, 0}, {{}, {}}).any());  // no list has an entry
-  EXPECT_THROW(UseLimits(std::vector<int>{0, 0}, {{}}), std::invalid_argument);      // one list
+  EXPECT_THROW(UseLimits(std::vector<int>{0, 0}, {{}}), std::invalid_argument);       // one list
   EXPECT_THROW(UseLimits(std::vector<int>{0, 0}, {{}, {2}}), std::invalid_argument);  // no action 2
 }
 
