@@ -154,8 +154,7 @@ std::vector<std::string> check_problem(const Problem& problem) {
   if (const ObjectIdentificationModel* object_model = problem.model->object_identification()) {
     check_objects(object_model->data(), out);
   }
-  if (const TabularModel* t = problem.model->tabular())
-    check_tables(*problem.model, *t, out);
+  if (const TabularModel* t = problem.model->tabular()) check_tables(*problem.model, *t, out);
   return out;
 }
 

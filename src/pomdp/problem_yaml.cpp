@@ -167,8 +167,8 @@ void read_prerequisites(const YamlReader& f, const YAML::Node& actions, ObjectPr
   if (cycle.empty()) return;
   std::string chain;
   for (int a : cycle) chain += (chain.empty() ? "" : " -> ") + sensing_names[a];
-  f.fail(where[cycle.front()],
-         "actions.requires goes round in a circle (" + chain + "): none of them could ever be done");
+  f.fail(where[cycle.front()], "actions.requires goes round in a circle (" + chain +
+                                   "): none of them could ever be done");
 }
 
 void read_observation(const YamlReader& f, const YAML::Node& root, ObjectProblemData& d) {
