@@ -302,18 +302,19 @@ struct SolverCase {
 
 class UseLimitsSearch : public ::testing::TestWithParam<SolverCase> {};
 
+std::unique_ptr<TreeSearchSolver> make_search(const SolverCase& c, const pomdp::ModelPtr& model) {
+  SearchOptions options;
+  options.leaf.mode = c.leaf;
+  if (c.abt) return std::make_unique<AbtSolver>(model, options);
+  return std::make_unique<PomcpSolver>(model, options);
+}
+
 TEST_P(UseLimitsSearch, NeverRepeatsAOnceOnlyActionAndReachesVStar) {
   // The report's problem with each sensing action usable once: V* from the exact solver.
   const pomdp::ModelPtr model = report_with_limits(1, 1);
   IdentificationSolver exact = limited_solver(*model);
   const double vstar = solved_root(exact).lower;
-  SearchOptions options;
-  options.leaf.mode = GetParam().leaf;
-  std::unique_ptr<TreeSearchSolver> solver;
-  if (GetParam().abt)
-    solver = std::make_unique<AbtSolver>(model, options);
-  else
-    solver = std::make_unique<PomcpSolver>(model, options);
+  const std::unique_ptr<TreeSearchSolver> solver = make_search(GetParam(), model);
   const MeanInterval r = mean_ci95(run_episodes(*solver, model, 300, 1000));
   // No planner beats V* in expectation; a good one is within its 95% CI (plus a little: a
   // handful of close decisions can go either way).
@@ -327,13 +328,7 @@ TEST_P(UseLimitsSearch, ListensOnlyAfterAGraspAndReachesVStar) {
   // The grasp tells nothing by itself: only a search that looks past it finds −11.62 (sorting at
   // once: −45).
   const pomdp::ModelPtr model = grasp_then_listen();
-  SearchOptions options;
-  options.leaf.mode = GetParam().leaf;
-  std::unique_ptr<TreeSearchSolver> solver;
-  if (GetParam().abt)
-    solver = std::make_unique<AbtSolver>(model, options);
-  else
-    solver = std::make_unique<PomcpSolver>(model, options);
+  const std::unique_ptr<TreeSearchSolver> solver = make_search(GetParam(), model);
   const MeanInterval r = mean_ci95(run_episodes(*solver, model, 300, 1000));
   EXPECT_LE(r.mean - r.half_width, -11.62) << GetParam().label;
   // ABT's lookahead leaf (one step on a particle, then the known-object value) measured short of
