@@ -152,8 +152,10 @@ void read_prerequisites(const YamlReader& f, const YAML::Node& actions, ObjectPr
     const int a =
         index_of(f, it->first, sensing_names, f.name(it->first, "action"), "sensing action");
     const std::string what = "actions.requires of " + sensing_names[a];
-    if (!it->second.IsSequence()) f.fail(it->second, what + " must be a list of sensing actions");
-    for (const YAML::Node& item : it->second) {
+    // A copy: the iterator's pair is a temporary, and a range-for over its member would outlive it.
+    const YAML::Node required = it->second;
+    if (!required.IsSequence()) f.fail(required, what + " must be a list of sensing actions");
+    for (const YAML::Node& item : required) {
       const int r = index_of(f, item, sensing_names, f.name(item, "action"), "sensing action");
       if (r == a) f.fail(item, sensing_names[a] + " cannot require itself");
       auto& list = d.sensing[a].prerequisites;
