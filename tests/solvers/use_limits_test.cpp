@@ -12,6 +12,7 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -64,12 +65,15 @@ pomdp::ModelPtr grasp_then_listen() {
   return std::make_shared<const pomdp::ObjectIdentificationModel>(std::move(d));
 }
 
-pomdp::ModelPtr report_with_limits(int slide, int strike) {
+// The report's problem with `slide` and `strike` uses; with `waiting` (0 slide, 1 strike) that
+// action also waits for the other one (a prerequisite).
+pomdp::ModelPtr report_with_limits(int slide, int strike, int waiting = -1) {
   const pomdp::Problem p =
       pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml");
   pomdp::ObjectProblemData d = p.model->object_identification()->data();
   d.sensing[0].uses = slide;
   d.sensing[1].uses = strike;
+  if (waiting >= 0) d.sensing[waiting].prerequisites = {1 - waiting};
   return std::make_shared<const pomdp::ObjectIdentificationModel>(std::move(d));
 }
 
@@ -209,36 +213,32 @@ TEST(UseLimitsExact, OneListenIsWorthItsHandComputedValue) {
   EXPECT_GT(solved_root(free_solver).lower, -11.8 + 0.1);
 }
 
+// The exact solver's V* at b0 (both bounds) against brute_force_value(); returns the bounds.
+Bounds expect_brute_force_value(const pomdp::ModelPtr& model, const std::string& label) {
+  IdentificationSolver solver = limited_solver(*model);
+  const Bounds v = solved_root(solver);
+  std::vector<int> uses(model->num_actions(), 0);
+  const double reference = brute_force_value(*model, model->tabular()->initial_belief(), uses);
+  EXPECT_NEAR(v.lower, reference, 1e-7) << label;
+  EXPECT_NEAR(v.upper, reference, 1e-7) << label;
+  return v;
+}
+
 TEST(UseLimitsExact, MatchesABruteForceRecursionOverHistories) {
-  for (const auto& [slide, strike] : std::vector<std::pair<int, int>>{{1, 1}, {1, 2}, {2, 1}}) {
-    const pomdp::ModelPtr model = report_with_limits(slide, strike);
-    IdentificationSolver solver = limited_solver(*model);
-    const Bounds v = solved_root(solver);
-    std::vector<int> uses(model->num_actions(), 0);
-    const double reference = brute_force_value(*model, model->tabular()->initial_belief(), uses);
-    EXPECT_NEAR(v.lower, reference, 1e-7) << slide << " slide, " << strike << " strike";
-    EXPECT_NEAR(v.upper, reference, 1e-7) << slide << " slide, " << strike << " strike";
-  }
+  for (const auto& [slide, strike] : std::vector<std::pair<int, int>>{{1, 1}, {1, 2}, {2, 1}})
+    expect_brute_force_value(
+        report_with_limits(slide, strike),
+        std::to_string(slide) + " slide, " + std::to_string(strike) + " strike");
 }
 
 TEST(UseLimitsExact, PrerequisitesMatchABruteForceRecursionOverHistories) {
   // The report's problem with the strike only after a slide (and each once or twice), and the
   // other way round.
-  for (const auto& [slide, strike, strike_waits] :
-       std::vector<std::tuple<int, int, bool>>{{1, 1, true}, {2, 1, true}, {1, 2, false}}) {
-    const pomdp::Problem p =
-        pomdp::load_problem(echoplan::testing::source_dir() + "/problems/audio_objects.yaml");
-    pomdp::ObjectProblemData d = p.model->object_identification()->data();
-    d.sensing[0].uses = slide;
-    d.sensing[1].uses = strike;
-    d.sensing[strike_waits ? 1 : 0].prerequisites = {strike_waits ? 0 : 1};
-    const auto model = std::make_shared<const pomdp::ObjectIdentificationModel>(std::move(d));
-    IdentificationSolver solver = limited_solver(*model);
-    const Bounds v = solved_root(solver);
-    std::vector<int> uses(model->num_actions(), 0);
-    const double reference = brute_force_value(*model, model->tabular()->initial_belief(), uses);
-    EXPECT_NEAR(v.lower, reference, 1e-7) << slide << " slide, " << strike << " strike";
-    EXPECT_NEAR(v.upper, reference, 1e-7) << slide << " slide, " << strike << " strike";
+  for (const auto& [slide, strike, waiting] :
+       std::vector<std::tuple<int, int, int>>{{1, 1, 1}, {2, 1, 1}, {1, 2, 0}}) {
+    const Bounds v = expect_brute_force_value(
+        report_with_limits(slide, strike, waiting),
+        std::to_string(slide) + " slide, " + std::to_string(strike) + " strike");
     // A prerequisite only removes histories: never above the same limits without it.
     IdentificationSolver free_solver = limited_solver(*report_with_limits(slide, strike));
     EXPECT_LE(v.upper, solved_root(free_solver).lower + 1e-9);
