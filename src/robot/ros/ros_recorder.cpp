@@ -41,34 +41,40 @@ void RosRecorder::on_clip(const echoplan_ros::Clip::ConstPtr& clip) {
   changed_.notify_all();
 }
 
-// The record parameters live on the master: one restarting is waited for, one gone ends the run
-// (no recording can start or stop without it), never a silent failure of ros::param::set.
-void RosRecorder::require_master(const std::string& action) const {
-  if (!wait_for_master(wait_timeout_s_))
-    throw std::runtime_error(fmt::format(
-        "recording '{}': the ROS master at {} does not answer (waited {:g} s), so {} cannot be set",
-        action, ros::master::getURI(), wait_timeout_s_, ros_names::kRecordParam));
-}
-
 namespace {
 // Sets the record parameters once (set_param_once: never ros::param::set, which retries for ever
-// when the master died after require_master); false when the master did not take them. An empty
-// `action` leaves the action parameter as it is.
+// when the master is gone); false when the master did not take them. An empty `action` leaves the
+// action parameter as it is.
 bool set_record_params(const std::string& action, bool record) {
   return (action.empty() || set_param_once(ros_names::kRecordActionParam, action)) &&
          set_param_once(ros_names::kRecordParam, record);
 }
 }  // namespace
 
+// The record parameters live on the master: one restarting is waited for (also when it dies
+// between our check and our set), one gone ends the run (no recording can start or stop without
+// it), never a silent failure of ros::param::set.
+void RosRecorder::set_params_on_master(const std::string& action, bool record) const {
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(wait_timeout_s_);
+  while (true) {
+    const double left = (deadline - ros::WallTime::now()).toSec();
+    if (left <= 0 || !wait_for_master(left)) break;
+    if (set_record_params(record ? action : "", record)) return;
+  }
+  throw std::runtime_error(fmt::format(
+      "recording '{}': the ROS master at {} does not answer (waited {:g} s), so {} cannot be {}",
+      action, ros::master::getURI(), wait_timeout_s_, ros_names::kRecordParam,
+      record ? "set" : "cleared"));
+}
+
 void RosRecorder::start(const std::string& action) {
   if (recording_) throw std::logic_error("RosRecorder::start: a recording is already running");
-  require_master(action);
   std::unique_lock lock(mutex_);
   const std::uint64_t states_before = states_received_;
   const auto t0 = std::chrono::steady_clock::now();
-  if (!set_record_params(action, true))
-    throw std::runtime_error(fmt::format("recording '{}': {} could not be set{}", action,
-                                         ros_names::kRecordParam, master_unreachable_note()));
+  lock.unlock();  // the callbacks keep counting states while the master is waited for
+  set_params_on_master(action, true);
+  lock.lock();
   action_ = action;
   recording_ = true;
   // Wait for a state published after our parameter change that says capture started (or failed).
@@ -108,12 +114,11 @@ audio::AudioClip RosRecorder::stop() {
   if (!recording_) throw std::logic_error("RosRecorder::stop: no recording is running");
   recording_ = false;
   capture_ = CaptureReport{};
-  require_master(action_);
   std::unique_lock lock(mutex_);
   const std::uint64_t clips_before = clips_received_;
-  if (!set_record_params("", false))
-    throw std::runtime_error(fmt::format("recording '{}': {} could not be cleared{}", action_,
-                                         ros_names::kRecordParam, master_unreachable_note()));
+  lock.unlock();  // the callbacks keep counting clips while the master is waited for
+  set_params_on_master(action_, false);
+  lock.lock();
   const bool answered = changed_.wait_for(lock, std::chrono::duration<double>(wait_timeout_s_),
                                           [&] { return clips_received_ > clips_before; });
   // The listener died mid-recording, or its device vanished: this performance goes unheard, and

@@ -41,7 +41,8 @@ class RosRecorder final : public Recorder {
   double last_start_latency_s() const { return last_start_latency_s_; }
 
  private:
-  void require_master(const std::string& action) const;
+  // Sets (record) or clears the record parameters, waiting up to the timeout for the master.
+  void set_params_on_master(const std::string& action, bool record) const;
   void on_state(const echoplan_ros::RecordingState::ConstPtr& state);
   void on_clip(const echoplan_ros::Clip::ConstPtr& clip);
 
