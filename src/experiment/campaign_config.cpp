@@ -181,21 +181,22 @@ const std::vector<Field<WorldConfig>>& world_fields() {
   return fields;
 }
 
-// The task's own keys besides `rewards`: a cost (>= 0) per priced behaviour. Which behaviours the
-// data has is known only once it is read (loop::dataset_problem checks the names then). Left out of
-// the identity when none is priced: campaigns written before costs existed keep theirs.
-const std::vector<Field<loop::TaskRewards>>& task_fields() {
-  static const std::vector<Field<loop::TaskRewards>> fields{
-      {.key = "costs", .member = &loop::TaskRewards::costs, .identity = Identity::unless_default},
+// The task's own keys besides `rewards` and `requires`: a cost (>= 0) per priced behaviour. Which
+// behaviours the data has is known only once it is read (loop::dataset_problem checks the names
+// then). Left out of the identity when none is priced: campaigns written before costs existed keep
+// theirs.
+const std::vector<Field<loop::TaskSpec>>& task_fields() {
+  static const std::vector<Field<loop::TaskSpec>> fields{
+      {.key = "costs", .member = &loop::TaskSpec::costs, .identity = Identity::unless_default},
   };
   return fields;
 }
 
-const std::vector<Field<loop::TaskRewards>>& reward_fields() {
-  static const std::vector<Field<loop::TaskRewards>> fields{
-      {.key = "right", .member = &loop::TaskRewards::right},
-      {.key = "wrong", .member = &loop::TaskRewards::wrong},
-      {.key = "sense", .member = &loop::TaskRewards::sense},
+const std::vector<Field<loop::TaskSpec>>& reward_fields() {
+  static const std::vector<Field<loop::TaskSpec>> fields{
+      {.key = "right", .member = &loop::TaskSpec::right},
+      {.key = "wrong", .member = &loop::TaskSpec::wrong},
+      {.key = "sense", .member = &loop::TaskSpec::sense},
   };
   return fields;
 }
@@ -329,8 +330,10 @@ nlohmann::json campaign_json(const CampaignConfig& c, Write&& write) {
   // Only when given: campaigns written before noise existed keep their identities.
   if (c.world.noise.given()) j["world"]["noise"] = write(noise_fields(), c.world.noise);
   if (recorded) {
-    j["task"] = write(task_fields(), c.rewards);
-    j["task"]["rewards"] = write(reward_fields(), c.rewards);
+    j["task"] = write(task_fields(), c.task);
+    j["task"]["rewards"] = write(reward_fields(), c.task);
+    // Only when given: campaigns written before prerequisites existed keep their identities.
+    if (!c.task.prerequisites.empty()) j["task"]["requires"] = c.task.prerequisites;
   }
   j["training_set"] = write(training_fields(), c.training);
   if (c.training.noise.given())
@@ -466,20 +469,45 @@ WorldConfig read_world(const YamlReader& f, const YAML::Node& root, const std::s
   return w;
 }
 
-// `task: {rewards: {right, wrong, sense}, costs: {BEHAVIOUR: C}}`, a dataset world's rewards (one
-// of the two at least; the other keeps its defaults).
-loop::TaskRewards read_task(const YamlReader& f, const YAML::Node& task,
-                            const config_fields::Place& at) {
-  loop::TaskRewards rewards;
-  config_fields::read_yaml(f, task, task_fields(), {at.source, "task", true}, rewards, {"rewards"});
+// `task.requires: {BEHAVIOUR: [BEHAVIOUR, ...]}`: what each behaviour needs performed first. Which
+// behaviours the data has, and whether the requirements go round in a circle, is known only once
+// it is read (loop::dataset_problem checks them then); here, the shape and a behaviour naming
+// itself.
+std::map<std::string, std::vector<std::string>> read_requires(const YamlReader& f,
+                                                              const YAML::Node& n) {
+  f.expect_map(n, "task.requires");
+  std::map<std::string, std::vector<std::string>> prerequisites;
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    const std::string behaviour = f.name(it->first, "task.requires");
+    const YAML::Node first = it->second;  // a copy: the iterator's pair is a temporary
+    if (!first.IsSequence())
+      f.fail(first, "task.requires." + behaviour + " must be a list of behaviours");
+    prerequisites[behaviour] = f.names(first, "task.requires." + behaviour);
+    for (std::size_t i = 0; i < first.size(); ++i)
+      if (prerequisites[behaviour][i] == behaviour)
+        f.fail(first[i], behaviour + " cannot require itself");
+  }
+  return prerequisites;
+}
+
+// `task: {rewards: {right, wrong, sense}, costs: {BEHAVIOUR: C}, requires: {BEHAVIOUR: [...]}}`, a
+// dataset world's task (one key at least; the others keep their defaults).
+loop::TaskSpec read_task(const YamlReader& f, const YAML::Node& task,
+                         const config_fields::Place& at) {
+  loop::TaskSpec spec;
+  config_fields::read_yaml(f, task, task_fields(), {at.source, "task", true}, spec,
+                           {"rewards", "requires"});
+  if (const YAML::Node n = f.optional(task, "requires", "task"))
+    spec.prerequisites = read_requires(f, n);
   const YAML::Node r = f.optional(task, "rewards", "task");
   if (!r) {
-    if (rewards.costs.empty()) f.fail(task, "task: give rewards, costs or both");
-    return rewards;
+    if (spec.costs.empty() && spec.prerequisites.empty())
+      f.fail(task, "task: give rewards, costs, requires or some of them");
+    return spec;
   }
-  config_fields::read_yaml(f, r, reward_fields(), {at.source, "task.rewards", true}, rewards);
-  if (!(rewards.right > rewards.wrong)) f.fail(r, "task.rewards: right must be greater than wrong");
-  return rewards;
+  config_fields::read_yaml(f, r, reward_fields(), {at.source, "task.rewards", true}, spec);
+  if (!(spec.right > spec.wrong)) f.fail(r, "task.rewards: right must be greater than wrong");
+  return spec;
 }
 
 // How the classifier is trained (or the trained model used instead): the `training_set` mapping.
@@ -554,7 +582,7 @@ void read_world_sections(const YamlReader& f, const YAML::Node& root, CampaignCo
   if (c.world.recorded_data()) {
     if (auto t = f.optional(root, "trials", "campaign"))
       f.fail(t, "a dataset world's trials are the data's (object, session) pairs: remove trials");
-    if (auto t = f.optional(root, "task", "campaign")) c.rewards = read_task(f, t, at);
+    if (auto t = f.optional(root, "task", "campaign")) c.task = read_task(f, t, at);
     return;
   }
   c.groups = read_trial_groups(f, f.require(root, "trials", "the campaign"),
@@ -646,9 +674,15 @@ CampaignConfig campaign_config_from_json(const nlohmann::json& j, const std::str
   if (const nlohmann::json* n = jf::optional_member(section("world"), "surface", "world", from))
     c.world.surfaces = jf::strings(*n, "world.surface", from);
   if (const nlohmann::json* task = jf::optional_member(j, "task", "", from)) {
-    config_fields::read_json(*task, task_fields(), "task", from, recorded, c.rewards);
+    config_fields::read_json(*task, task_fields(), "task", from, recorded, c.task);
     config_fields::read_json(jf::member(*task, "rewards", "task", from), reward_fields(),
-                             "task.rewards", from, recorded, c.rewards);
+                             "task.rewards", from, recorded, c.task);
+    if (const nlohmann::json* n = jf::optional_member(*task, "requires", "task", from)) {
+      if (!n->is_object())
+        throw InputError(from.file, from.line, "task.requires must be an object");
+      for (const auto& [behaviour, first] : n->items())
+        c.task.prerequisites[behaviour] = jf::strings(first, "task.requires." + behaviour, from);
+    }
   }
   config_fields::read_json(section("training_set"), training_fields(), "training_set", from,
                            recorded, c.training);

@@ -529,7 +529,7 @@ void RecordedDataWorld::open(const CampaignConfig& config, const std::vector<Res
   for (const ResolvedArm& arm : arms) check_arm_problem(config, arm, *trials_->names);
   results.spec = trials_->names->model->spec();
   results.right_action = right_actions(*trials_);
-  results.right_share = right_shares(*trials_, config.rewards);
+  results.right_share = right_shares(*trials_, config.task);
   results.sensing_actions = static_cast<int>(trials_->data->actions.size());
   results.action_costs = action_costs(*trials_->names->model);
   for (std::size_t s = 0; s < trials_->data->sessions.size(); ++s) {

@@ -153,7 +153,7 @@ DatasetFolds open_dataset(const CampaignConfig& config, const std::vector<Resolv
   }
   try {
     t.names = std::make_shared<const pomdp::Problem>(dataset_problem_file(
-        loop::dataset_problem_shape(t.task, *t.data, config.rewards, any_lookalike(arms)),
+        loop::dataset_problem_shape(t.task, *t.data, config.task, any_lookalike(arms)),
         config.world.data));
   } catch (const InputError& e) {
     // Only the task can be wrong here (a cost for a behaviour the data does not have).
@@ -182,7 +182,7 @@ std::vector<int> right_actions(const DatasetFolds& trials) {
 }
 
 std::vector<std::vector<double>> right_shares(const DatasetFolds& trials,
-                                              const loop::TaskRewards& rewards) {
+                                              const loop::TaskSpec& rewards) {
   const pomdp::ObjectProblemData& names = trials.names->model->object_identification()->data();
   const std::size_t sensing = names.sensing.size();
   std::vector<std::vector<double>> shares(names.objects.size(),
@@ -310,7 +310,7 @@ pomdp::ObjectProblemData fold_problem(const CampaignConfig& config,
   std::optional<double> lookalike_share;
   if (any_lookalike(arms))
     lookalike_share = kind.lookalike ? model.lookalike_share(kind.kind) : 0.0;
-  return loop::dataset_problem(trials.task, model, config.rewards, uses, kind.kind,
+  return loop::dataset_problem(trials.task, model, config.task, uses, kind.kind,
                                lookalike_share);
 }
 

@@ -80,7 +80,7 @@ std::vector<int> right_actions(const DatasetFolds& trials);
 // action (1 or 0 for a class, the share of the other classes in the bin for
 // a lookalike), 0 for a sensing action. What the belief at a sort is measured with.
 std::vector<std::vector<double>> right_shares(const DatasetFolds& trials,
-                                              const loop::TaskRewards& rewards);
+                                              const loop::TaskSpec& rewards);
 
 // With world.noise or an arm trained in noise: writes the noisy copies of the world's recordings
 // tree into `directory` (the trials' in heard_recordings/, the training twins in

@@ -17,7 +17,7 @@ namespace {
 using Table = std::vector<std::vector<std::vector<double>>>;
 
 // A cost for a behaviour the data does not have is a typing mistake, not a price to ignore.
-void check_costs(const TaskRewards& rewards, const std::vector<std::string>& actions) {
+void check_costs(const TaskSpec& rewards, const std::vector<std::string>& actions) {
   for (const auto& [behaviour, cost] : rewards.costs) {
     if (std::find(actions.begin(), actions.end(), behaviour) == actions.end())
       throw InputError(fmt::format("costs: '{}' is not a behaviour of the data (it has: {})",
@@ -28,10 +28,40 @@ void check_costs(const TaskRewards& rewards, const std::vector<std::string>& act
   }
 }
 
+// The prerequisites of task.prerequisites as indices of `actions`, checked (names the data has,
+// none of its own, no circle) before pomdp::validate_object_problem would refuse them without
+// names.
+void set_prerequisites(const TaskSpec& rewards, const std::vector<std::string>& actions,
+                       std::vector<pomdp::SensingAction>& sensing) {
+  const auto index_of = [&](const std::string& behaviour) {
+    const auto it = std::find(actions.begin(), actions.end(), behaviour);
+    if (it == actions.end())
+      throw InputError(fmt::format("requires: '{}' is not a behaviour of the data (it has: {})",
+                                   behaviour, fmt::join(actions, ", ")));
+    return static_cast<int>(it - actions.begin());
+  };
+  for (const auto& [behaviour, required] : rewards.prerequisites) {
+    const int a = index_of(behaviour);
+    for (const std::string& first : required) {
+      if (first == behaviour)
+        throw InputError(fmt::format("requires: '{}' cannot require itself", behaviour));
+      sensing[a].prerequisites.push_back(index_of(first));
+    }
+  }
+  const std::vector<int> cycle = pomdp::prerequisite_cycle(sensing);
+  if (cycle.empty()) return;
+  std::vector<std::string> chain;
+  for (int a : cycle) chain.push_back(actions[a]);
+  throw InputError(
+      fmt::format("requires goes round in a circle ({}): none of them could ever be "
+                  "performed",
+                  fmt::join(chain, " -> ")));
+}
+
 pomdp::ObjectProblemData problem_of(const perception::DatasetTask& task,
                                     const std::vector<std::string>& actions,
                                     std::vector<std::string> symbols, const Table& table,
-                                    const TaskRewards& rewards, std::vector<int> uses) {
+                                    const TaskSpec& rewards, std::vector<int> uses) {
   if (uses.size() != actions.size())
     throw InputError(fmt::format("{} use limits for {} actions; expected one per action",
                                  uses.size(), actions.size()));
@@ -50,6 +80,7 @@ pomdp::ObjectProblemData problem_of(const perception::DatasetTask& task,
     sensing.uses = uses[a];
     data.sensing.push_back(std::move(sensing));
   }
+  set_prerequisites(rewards, actions, data.sensing);
   data.sorting = task.bins;
   for (std::size_t j = 0; j < task.bins.size(); ++j) {
     std::vector<double> row;
@@ -102,14 +133,14 @@ void add_lookalike_copies(pomdp::ObjectProblemData& data, double rho) {
 
 std::string lookalike_name(const std::string& name) { return name + "~lookalike"; }
 
-double TaskRewards::sensing_reward(const std::string& behaviour) const {
+double TaskSpec::sensing_reward(const std::string& behaviour) const {
   const auto priced = costs.find(behaviour);
   return priced == costs.end() ? sense : -priced->second;
 }
 
 pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
                                          const perception::ObservationModel& model,
-                                         const TaskRewards& rewards, std::vector<int> uses,
+                                         const TaskSpec& rewards, std::vector<int> uses,
                                          perception::ObservationKind kind,
                                          std::optional<double> lookalike_share) {
   if (model.classes() != task.classes || model.reject())
@@ -129,7 +160,7 @@ pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
 
 pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& task,
                                                const perception::FeatureSet& set,
-                                               const TaskRewards& rewards, bool lookalike) {
+                                               const TaskSpec& rewards, bool lookalike) {
   std::vector<std::string> actions;
   for (const perception::ActionData& action : set.actions) actions.push_back(action.name);
   const std::size_t classes = task.classes.size();

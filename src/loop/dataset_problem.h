@@ -15,16 +15,20 @@
 
 namespace echoplan::loop {
 
-// What sorting recorded data earns (a campaign's `task: rewards`, `train --reward-*`): by default
-// the report's +10 for the right bin, -100 for a wrong one, and -1 per behaviour performed.
-// `costs` (a campaign's `task: costs`, `train --costs`) prices behaviours one by one, since on a
-// real robot a look takes half a second and a push or a shake several: a behaviour with cost C
-// earns -C per performance; the others earn `sense`.
-struct TaskRewards {
+// The task of sorting recorded data (a campaign's `task:`), beside what the data itself decides.
+// What it earns (`task: rewards`, `train --reward-*`): by default the report's +10 for the right
+// bin, -100 for a wrong one, and -1 per behaviour performed. `costs` (`task: costs`,
+// `train --costs`) prices behaviours one by one, since on a real robot a look takes half a second
+// and a push or a shake several: a behaviour with cost C earns -C per performance; the others earn
+// `sense`. `prerequisites` (`task: requires`) opens a behaviour only after others were performed in
+// the trial (a shake needs a grasp first; pomdp::SensingAction::prerequisites).
+struct TaskSpec {
   double right = 10.0;
   double wrong = -100.0;
   double sense = -1.0;
-  std::map<std::string, double> costs;  // behaviour -> cost (>= 0)
+  std::map<std::string, double> costs = {};  // behaviour -> cost (>= 0)
+  // behaviour -> the behaviours it needs performed first
+  std::map<std::string, std::vector<std::string>> prerequisites = {};
 
   // The reward of one performance of `behaviour`: -cost when it is priced, else `sense`.
   double sensing_reward(const std::string& behaviour) const;
@@ -37,9 +41,11 @@ struct TaskRewards {
 // otherwise; observation symbols = the model's of `kind` (the classes, or the graded symbols); the
 // table = the model's observation tables of that kind;
 // discount 0.99 (the report's problems). Each sensing action's reward is
-// rewards.sensing_reward(its name). Throws InputError when `uses` is not one entry per action, or
-// negative, when `rewards.costs` prices a behaviour the model does not have, or when the model's
-// classes are not the task's (or it rejects), or `kind` is graded and the model has no grades.
+// rewards.sensing_reward(its name), its prerequisites rewards.prerequisites[its name]. Throws
+// InputError when `uses` is not one entry per action, or negative, when `rewards.costs` prices or
+// `rewards.prerequisites` names a behaviour the model does not have, when the prerequisites go
+// round in a circle, or when the model's classes are not the task's (or it rejects), or `kind` is
+// graded and the model has no grades.
 //
 // With a lookalike share rho, objects that sound like another class are hidden states too
 // (perception/typicality.h): after the classes comes a lookalike copy of every class j, named
@@ -50,7 +56,7 @@ struct TaskRewards {
 // lookalike_share(kind); 0 plans exactly as without copies; none: no copies.
 pomdp::ObjectProblemData dataset_problem(
     const perception::DatasetTask& task, const perception::ObservationModel& model,
-    const TaskRewards& rewards, std::vector<int> uses,
+    const TaskSpec& rewards, std::vector<int> uses,
     perception::ObservationKind kind = perception::ObservationKind::labels,
     std::optional<double> lookalike_share = std::nullopt);
 
@@ -59,7 +65,7 @@ pomdp::ObjectProblemData dataset_problem(
 // fitted, e.g. for a campaign's report.
 pomdp::ObjectProblemData dataset_problem_shape(const perception::DatasetTask& task,
                                                const perception::FeatureSet& set,
-                                               const TaskRewards& rewards, bool lookalike = false);
+                                               const TaskSpec& rewards, bool lookalike = false);
 
 // The hidden state of an object that sounds like class `name` and is another: "<name>~lookalike".
 std::string lookalike_name(const std::string& name);

@@ -9,6 +9,8 @@
 #   - The campaign writes each fold's problem (with the costs) beside the fold's trials; certify
 #     --campaign certifies each fold's arms with it, and agrees with certify --problem --steps on
 #     the same files.
+#   - task.requires (squeeze after a press and a tap): every arm keeps the order, the folds' problems
+#     carry it, and a prerequisite the data lacks or a circle is refused.
 #   - train --costs: the problem it writes carries the costs; bad rows are refused at file:line.
 # Usage: costs_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
 . "$(dirname "$0")/cli_test_lib.sh"
@@ -127,6 +129,39 @@ expect_input_error "a cost for an unknown behaviour" "squish.yaml: task.costs: '
   experiment --config "$work/squish.yaml" --out "$work/squish"
 sed 's/costs: {squeeze: 200}/costs: {squeeze: -2}/' "$work/priced.yaml" >"$work/negative.yaml"
 expect_input_error "a negative cost" "negative.yaml:3" experiment --config "$work/negative.yaml" --out "$work/negative"
+
+# task.requires: squeeze opens only after a press and a tap. Every arm keeps that order in every
+# trial (steps.csv), and each fold's problem carries it (actions.requires).
+campaign gated "{name: plan, strategy: plan}, {name: all_actions, strategy: all_actions}, \
+{name: best_single, strategy: best_single}" "{requires: {squeeze: [press, tap]}}"
+python3 - "$work/gated" <<'PY' || fail "gated campaign: see above"
+import csv, os, sys
+out, bad = sys.argv[1], 0
+for arm in ("plan", "all_actions", "best_single"):
+    done, squeezes = {}, 0
+    for row in csv.DictReader(open(os.path.join(out, "arms", arm, "steps.csv"))):
+        trial = (row["trial"], row["object"], row["session"])
+        seen = done.setdefault(trial, set())
+        if row["action"] == "squeeze":
+            squeezes += 1
+            if not {"press", "tap"} <= seen:
+                print(f"{arm}: trial {trial} squeezed after only {sorted(seen)}"); bad += 1
+        seen.add(row["action"])
+    if arm == "all_actions" and squeezes != 48:
+        print(f"all_actions should squeeze once in each of 48 trials, squeezed {squeezes}"); bad += 1
+    if not squeezes:  # the order above is checked only where squeeze was done
+        print(f"{arm} never squeezed"); bad += 1
+sys.exit(bad)
+PY
+grep -A2 "^  requires:" "$work/gated/folds/1/problem.yaml" | grep -q "squeeze: \[press, tap\]" \
+  || fail "fold 1's problem does not carry squeeze's prerequisites"
+sed 's/requires: {squeeze: \[press, tap\]}/requires: {squeeze: [press, squish]}/' "$work/gated.yaml" >"$work/squish_first.yaml"
+expect_input_error "a prerequisite the data does not have" \
+  "squish_first.yaml: task.requires: 'squish' is not a behaviour" \
+  experiment --config "$work/squish_first.yaml" --out "$work/squish_first"
+sed 's/requires: {squeeze: \[press, tap\]}/requires: {squeeze: [tap], tap: [squeeze]}/' "$work/gated.yaml" >"$work/circle.yaml"
+expect_input_error "prerequisites in a circle" "task.requires goes round in a circle (squeeze -> tap -> squeeze)" \
+  experiment --config "$work/circle.yaml" --out "$work/circle"
 
 # train --costs: the problem carries them; mistakes name the file and line.
 printf 'behaviour,cost\nsqueeze,4.5\ntap,0.5\n' >"$work/costs.csv"

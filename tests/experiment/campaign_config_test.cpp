@@ -520,9 +520,9 @@ TEST_F(DatasetCampaignConfig, ReadsTheDataHoldOutGroupsRewardsAndStrategies) {
   EXPECT_EQ(c.world.data, (dir_ / "data").string());
   EXPECT_EQ(c.world.groups, (dir_ / "groups.csv").string());
   EXPECT_EQ(c.world.hold_out, perception::HoldOut::object);
-  EXPECT_EQ(c.rewards.right, 5);
-  EXPECT_EQ(c.rewards.wrong, -50);
-  EXPECT_EQ(c.rewards.sense, -2);
+  EXPECT_EQ(c.task.right, 5);
+  EXPECT_EQ(c.task.wrong, -50);
+  EXPECT_EQ(c.task.sense, -2);
   ASSERT_EQ(c.arms.size(), 2u);
   EXPECT_EQ(c.arms[0].strategy, "plan");
   EXPECT_EQ(c.arms[1].strategy, "information_gain");
@@ -567,10 +567,10 @@ TEST_F(DatasetCampaignConfig, CostsPriceBehavioursAndEnterTheIdentityOnlyWhenGiv
       text.find(rewards), rewards.size(),
       "task: {rewards: {right: 5, wrong: -50, sense: -2}, costs: {shake: 4.5, look: 0.5}}");
   const CampaignConfig priced = parse_campaign_config(text, source());
-  EXPECT_EQ(priced.rewards.costs, (std::map<std::string, double>{{"look", 0.5}, {"shake", 4.5}}));
-  EXPECT_EQ(priced.rewards.sense, -2);
+  EXPECT_EQ(priced.task.costs, (std::map<std::string, double>{{"look", 0.5}, {"shake", 4.5}}));
+  EXPECT_EQ(priced.task.sense, -2);
   const CampaignConfig back = campaign_config_from_json(to_json(priced), "campaign.json");
-  EXPECT_EQ(back.rewards.costs, priced.rewards.costs);
+  EXPECT_EQ(back.task.costs, priced.task.costs);
   std::filesystem::create_directories(dir_ / "data" / "shake");
   std::ofstream(dir_ / "data" / "shake" / "audio.csv") << "object,session,f\nmug,1,0.5\n";
   EXPECT_EQ(priced.identity()["task"]["costs"]["shake"], 4.5);
@@ -583,8 +583,55 @@ TEST_F(DatasetCampaignConfig, CostsPriceBehavioursAndEnterTheIdentityOnlyWhenGiv
       "world: {type: dataset, data: data}\ntask: {costs: {tap: 3}}\narms: [{name: plan}]\n"
       "planner: {episodes: 10}\n",
       source());
-  EXPECT_EQ(only.rewards.sense, -1);
-  EXPECT_EQ(only.rewards.costs.at("tap"), 3);
+  EXPECT_EQ(only.task.sense, -1);
+  EXPECT_EQ(only.task.costs.at("tap"), 3);
+}
+
+TEST_F(DatasetCampaignConfig, RequiresOpensBehavioursAfterOthersAndEntersTheIdentityOnlyWhenGiven) {
+  std::string text = text_;
+  const std::string rewards = "task: {rewards: {right: 5, wrong: -50, sense: -2}}";
+  text.replace(text.find(rewards), rewards.size(),
+               "task: {rewards: {right: 5, wrong: -50, sense: -2},\n"
+               "       requires: {shake: [grasp], lift: [grasp, look]}}");
+  const CampaignConfig c = parse_campaign_config(text, source());
+  const std::map<std::string, std::vector<std::string>> expected{{"lift", {"grasp", "look"}},
+                                                                 {"shake", {"grasp"}}};
+  EXPECT_EQ(c.task.prerequisites, expected);
+  EXPECT_EQ(c.task.sense, -2);
+  EXPECT_EQ(campaign_config_from_json(to_json(c), "campaign.json").task.prerequisites, expected);
+  std::filesystem::create_directories(dir_ / "data" / "shake");
+  std::ofstream(dir_ / "data" / "shake" / "audio.csv") << "object,session,f\nmug,1,0.5\n";
+  EXPECT_EQ(c.identity()["task"]["requires"]["lift"], (std::vector<std::string>{"grasp", "look"}));
+  // Campaigns without prerequisites keep the identity they had before they existed.
+  const CampaignConfig plain = parse_campaign_config(text_, source());
+  EXPECT_FALSE(plain.identity()["task"].contains("requires"));
+  EXPECT_FALSE(to_json(plain)["task"].contains("requires"));
+  // Requires alone keeps the default rewards.
+  const CampaignConfig only = parse_campaign_config(
+      "world: {type: dataset, data: data}\ntask: {requires: {shake: [grasp]}}\n"
+      "arms: [{name: plan}]\nplanner: {episodes: 10}\n",
+      source());
+  EXPECT_EQ(only.task.right, 10);
+  EXPECT_EQ(only.task.prerequisites.at("shake"), (std::vector<std::string>{"grasp"}));
+}
+
+TEST_F(DatasetCampaignConfig, RequiresMistakesNameTheirLine) {
+  const auto task = [&](const std::string& entries) {
+    return error(
+        "world: {type: dataset, data: data}\narms: [{name: plan}]\n"
+        "planner: {episodes: 10}\ntask:\n  requires:\n" +
+        entries);
+  };
+  const std::string itself = task("    shake: [grasp, shake]\n");
+  EXPECT_EQ(itself.substr(0, 2), "6:") << itself;
+  EXPECT_NE(itself.find("shake cannot require itself"), std::string::npos) << itself;
+  const std::string twice = task("    shake: [grasp, grasp]\n");
+  EXPECT_EQ(twice.substr(0, 2), "6:") << twice;
+  const std::string scalar = task("    shake: grasp\n");
+  EXPECT_NE(scalar.find("task.requires.shake must be a list of behaviours"), std::string::npos)
+      << scalar;
+  const std::string list = task("    - shake\n");
+  EXPECT_EQ(list.substr(0, 2), "6:") << list;
 }
 
 TEST_F(DatasetCampaignConfig, DefaultsAreTheReportsRewardsAndSessions) {
@@ -592,9 +639,9 @@ TEST_F(DatasetCampaignConfig, DefaultsAreTheReportsRewardsAndSessions) {
       "world: {type: dataset, data: data}\narms: [{name: plan}]\nplanner: {episodes: 10}\n",
       source());
   EXPECT_EQ(c.world.hold_out, perception::HoldOut::session);
-  EXPECT_EQ(c.rewards.right, 10);
-  EXPECT_EQ(c.rewards.wrong, -100);
-  EXPECT_EQ(c.rewards.sense, -1);
+  EXPECT_EQ(c.task.right, 10);
+  EXPECT_EQ(c.task.wrong, -100);
+  EXPECT_EQ(c.task.sense, -1);
   EXPECT_EQ(c.arms[0].strategy, "plan");
 }
 

@@ -78,9 +78,38 @@ TEST(DatasetProblem, RewardsAndUsesAreTheCallers) {
   EXPECT_THROW(dataset_problem(f.task, f.model, {}, {1, -1}), InputError);
 }
 
+TEST(DatasetProblem, RequiresSetsPrerequisitesByTheDatasBehaviourNames) {
+  const Fitted f = fitted();  // behaviours: press, strike
+  TaskSpec spec;
+  spec.prerequisites = {{"strike", {"press"}}};
+  const auto p = dataset_problem(f.task, f.model, spec, {1, 2});
+  EXPECT_EQ(p.sensing[0].prerequisites, std::vector<int>{});   // press: open at once
+  EXPECT_EQ(p.sensing[1].prerequisites, std::vector<int>{0});  // strike: after a press
+  const auto problem_error = [&](const TaskSpec& s) {
+    try {
+      dataset_problem(f.task, f.model, s, {1, 2});
+    } catch (const InputError& e) {
+      return e.problem();
+    }
+    return std::string("no InputError");
+  };
+  spec.prerequisites = {{"strike", {"shake"}}};
+  EXPECT_EQ(problem_error(spec),
+            "requires: 'shake' is not a behaviour of the data (it has: press, strike)");
+  spec.prerequisites = {{"shake", {"press"}}};
+  EXPECT_EQ(problem_error(spec),
+            "requires: 'shake' is not a behaviour of the data (it has: press, strike)");
+  spec.prerequisites = {{"strike", {"press"}}, {"press", {"strike"}}};
+  EXPECT_EQ(problem_error(spec),
+            "requires goes round in a circle (press -> strike -> press): none of them could "
+            "ever be performed");
+  spec.prerequisites = {{"press", {"press"}}};
+  EXPECT_EQ(problem_error(spec), "requires: 'press' cannot require itself");
+}
+
 TEST(DatasetProblem, CostsPriceBehavioursOneByOneAndTheOthersStayAtSense) {
   const Fitted f = fitted();
-  TaskRewards rewards;
+  TaskSpec rewards;
   rewards.sense = -0.5;
   rewards.costs = {{"strike", 4.5}};
   const auto p = dataset_problem(f.task, f.model, rewards, {1, 2});

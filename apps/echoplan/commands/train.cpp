@@ -38,7 +38,7 @@ struct TrainFlags {
   std::string groups;
   std::string hold_out;
   std::string costs;
-  loop::TaskRewards rewards;
+  loop::TaskSpec rewards;
   std::string cross_validation;
   std::string table;
   bool reject = true;
