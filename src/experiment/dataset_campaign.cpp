@@ -310,8 +310,7 @@ pomdp::ObjectProblemData fold_problem(const CampaignConfig& config,
   std::optional<double> lookalike_share;
   if (any_lookalike(arms))
     lookalike_share = kind.lookalike ? model.lookalike_share(kind.kind) : 0.0;
-  return loop::dataset_problem(trials.task, model, config.task, uses, kind.kind,
-                               lookalike_share);
+  return loop::dataset_problem(trials.task, model, config.task, uses, kind.kind, lookalike_share);
 }
 
 // "hear labels", "hear grades and plan with lookalikes", ...
