@@ -191,7 +191,7 @@ struct CampaignConfig {
   TrainingSetConfig training;
   std::vector<ObjectGroup> groups;  // trials per object, in report order (a dataset world: one
                                     // group per object of the data, a trial per session)
-  loop::TaskSpec task;           // dataset worlds (a problem file has its own)
+  loop::TaskSpec task;              // dataset worlds (a problem file has its own)
   PlannerConfig planner;
   // What the results are shown beside (the file named by `reference:`); none: no reference
   // columns. Not part of the identity: it changes the report's comparison, not the trials.
