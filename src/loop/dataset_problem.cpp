@@ -16,12 +16,20 @@ namespace {
 
 using Table = std::vector<std::vector<std::vector<double>>>;
 
-// A cost for a behaviour the data does not have is a typing mistake, not a price to ignore.
+// Where `behaviour` is among the data's `actions`; a name the data does not have, given in the
+// task's `key`, is a typing mistake, not a setting to ignore.
+int behaviour_index(const char* key, const std::string& behaviour,
+                    const std::vector<std::string>& actions) {
+  const auto it = std::find(actions.begin(), actions.end(), behaviour);
+  if (it == actions.end())
+    throw InputError(fmt::format("{}: '{}' is not a behaviour of the data (it has: {})", key,
+                                 behaviour, fmt::join(actions, ", ")));
+  return static_cast<int>(it - actions.begin());
+}
+
 void check_costs(const TaskSpec& rewards, const std::vector<std::string>& actions) {
   for (const auto& [behaviour, cost] : rewards.costs) {
-    if (std::find(actions.begin(), actions.end(), behaviour) == actions.end())
-      throw InputError(fmt::format("costs: '{}' is not a behaviour of the data (it has: {})",
-                                   behaviour, fmt::join(actions, ", ")));
+    behaviour_index("costs", behaviour, actions);
     if (!(cost >= 0.0) || !std::isfinite(cost))
       throw InputError(fmt::format("costs: the cost of '{}' is {}; a cost is a finite number >= 0",
                                    behaviour, cost));
@@ -33,19 +41,12 @@ void check_costs(const TaskSpec& rewards, const std::vector<std::string>& action
 // names.
 void set_prerequisites(const TaskSpec& rewards, const std::vector<std::string>& actions,
                        std::vector<pomdp::SensingAction>& sensing) {
-  const auto index_of = [&](const std::string& behaviour) {
-    const auto it = std::find(actions.begin(), actions.end(), behaviour);
-    if (it == actions.end())
-      throw InputError(fmt::format("requires: '{}' is not a behaviour of the data (it has: {})",
-                                   behaviour, fmt::join(actions, ", ")));
-    return static_cast<int>(it - actions.begin());
-  };
   for (const auto& [behaviour, required] : rewards.prerequisites) {
-    const int a = index_of(behaviour);
+    const int a = behaviour_index("requires", behaviour, actions);
     for (const std::string& first : required) {
       if (first == behaviour)
         throw InputError(fmt::format("requires: '{}' cannot require itself", behaviour));
-      sensing[a].prerequisites.push_back(index_of(first));
+      sensing[a].prerequisites.push_back(behaviour_index("requires", first, actions));
     }
   }
   const std::vector<int> cycle = pomdp::prerequisite_cycle(sensing);
