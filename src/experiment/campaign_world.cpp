@@ -207,10 +207,14 @@ void ProblemFileWorld::load_given_model(const CampaignConfig& config,
   given_model_ =
       std::make_shared<const perception::ObservationModel>(perception::parse_observation_model(
           files.text(config.training.model), config.training.model));
+  // The loops are checked with the problems the arms will plan with: a graded arm's calibrated
+  // problem hears the graded symbols its world makes.
+  std::vector<std::shared_ptr<const pomdp::Problem>> problems = arm_problems_;
   for (std::size_t a = 0; a < arms.size(); ++a)
     if (arms[a].calibrate)
-      loop::calibrate_problem(*arm_problems_[a], *given_model_, "", arms[a].hearing());
-  make_loops(config, arms, Prepared{arm_problems_, given_model_, nullptr});
+      problems[a] =
+          loop::calibrate_problem(*arm_problems_[a], *given_model_, "", arms[a].hearing());
+  make_loops(config, arms, Prepared{problems, given_model_, nullptr});
 }
 
 WorldPresentation ProblemFileWorld::presentation(const CampaignConfig& config) const {

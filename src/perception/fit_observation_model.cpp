@@ -345,13 +345,23 @@ struct ActionShares {
 }  // namespace
 
 const char* cross_validation_name(CrossValidation cv) {
-  return cv == CrossValidation::by_session ? "session" : "performance";
+  switch (cv) {
+    case CrossValidation::by_session:
+      return "session";
+    case CrossValidation::by_surface:
+      return "surface";
+    case CrossValidation::by_performance:
+      break;
+  }
+  return "performance";
 }
 
 CrossValidation parse_cross_validation(const std::string& name) {
   if (name == "performance") return CrossValidation::by_performance;
   if (name == "session") return CrossValidation::by_session;
-  throw InputError(fmt::format("cross-validation '{}' is not one of: performance, session", name));
+  if (name == "surface") return CrossValidation::by_surface;
+  throw InputError(
+      fmt::format("cross-validation '{}' is not one of: performance, session, surface", name));
 }
 
 FitOptions session_fit_options(std::string classifier) {
@@ -372,7 +382,15 @@ FitOptions choose_fit_options(const FitChoices& c, DataKind kind, bool task_name
                              : kind == DataKind::features || task_named
                                  ? CrossValidation::by_session
                                  : CrossValidation::by_performance;
+  // By surface: a recordings tree's defaults (the report's setting), its folds the tables.
   FitOptions o = cv == CrossValidation::by_session ? session_fit_options() : FitOptions{};
+  o.cross_validation = cv;
+  if (cv == CrossValidation::by_surface && (kind == DataKind::features || task_named))
+    throw InputError(
+        "cross-validation by surface holds out the tables of a recordings tree recorded on "
+        "several (its manifest's `surface` column); " +
+        std::string(kind == DataKind::features ? "a feature set names no tables"
+                                               : "--groups and --hold-out make folds of objects"));
   if (c.classifier) o.classifier = *c.classifier;
   if (c.table) o.table = parse_table_estimate(*c.table);
   if (c.folds) o.folds = *c.folds;
@@ -401,10 +419,10 @@ void check_fit_options(const FitOptions& o) {
     throw InputError(fmt::format("Dirichlet alpha {} is outside 0..1000", o.dirichlet_alpha));
   if (o.folds < 0 || o.folds == 1)
     throw InputError(fmt::format("folds = {}: use 0 (leave-one-out) or at least 2", o.folds));
-  if (o.temper && o.cross_validation != CrossValidation::by_session)
+  if (o.temper && o.cross_validation == CrossValidation::by_performance)
     throw InputError(
         "tempering fits how a session's repeats err together: it needs cross-validation by "
-        "session");
+        "session (or by surface)");
   if (o.table == TableEstimate::shrunk && o.reject)
     throw InputError(
         "the shrunk table's pooled structure has no `unknown`: turn the reject option off");
@@ -635,7 +653,7 @@ ObservationModel fit_observation_model(const FeatureSet& set, const DatasetTask&
     if (!has_class[c])
       throw InputError(set.root, 0,
                        fmt::format("class '{}' has no training session", task.classes[c]));
-  if (options.cross_validation == CrossValidation::by_session)
+  if (options.cross_validation != CrossValidation::by_performance)
     fitter.by_session = session_folds(set, task, training_sessions);
   return fitter.fit(progress);
 }
@@ -644,7 +662,8 @@ FeatureSet recordings_as_features(const RecordingSet& set, const FitOptions& opt
                                   const ProgressFn& progress) {
   const std::string classifier = classifier_name(options.classifier);
   return feature_set_from_recordings(
-      set, options.analysis, progress,
+      options.cross_validation == CrossValidation::by_surface ? sessions_by_surface(set) : set,
+      options.analysis, progress,
       is_audio_preset(classifier) ? make_classifier(classifier)->extractor()->name : "summary",
       options.series);
 }

@@ -57,8 +57,12 @@ namespace echoplan::perception {
 enum class CrossValidation {
   by_performance,  // leave-one-out (folds 0) or k folds stratified by class, per action
   by_session,      // the task's folds over the training sessions (make_folds), shared by actions
+  // A recordings tree made on several tables (its manifest's `surface` column): each table held
+  // out in turn, its recordings the sessions (sessions_by_surface), so the table and grades say
+  // what a table the model never heard does to its readings; by session otherwise.
+  by_surface,
 };
-const char* cross_validation_name(CrossValidation cv);  // "performance" or "session"
+const char* cross_validation_name(CrossValidation cv);  // "performance", "session" or "surface"
 // InputError naming both for anything else.
 CrossValidation parse_cross_validation(const std::string& name);
 

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <set>
+#include <tuple>
 
 #include "audio/io.h"
 #include "common/csv_reader.h"
@@ -164,6 +166,7 @@ void add_unique(std::vector<std::string>& list, const std::string& name) {
 struct ManifestEntry {
   std::string session;  // "" when the manifest has no session column
   bool noisy_copy = false;
+  std::string surface;  // "" when the manifest has no surface column
 };
 
 // Reads DIR/manifest.csv into `set`'s objects and actions (manifest order) and `entries` (each
@@ -189,6 +192,7 @@ Layout read_manifest(const fs::path& root, const fs::path& manifest_path,
                     action_col = column("action");
   const std::size_t session_col = column("session");  // header.size(): no session column
   const std::size_t noise_col = column("noise");      // the same
+  const std::size_t surface_col = column("surface");  // the same
   Layout chosen;
   while (csv.next(cells)) {
     const int line_no = csv.line();
@@ -224,7 +228,9 @@ Layout read_manifest(const fs::path& root, const fs::path& manifest_path,
                                    file));
     const bool noisy =
         noise_col < header.size() && !cells[noise_col].empty() && cells[noise_col] != "none";
-    if (!entries.emplace(file, ManifestEntry{has_session ? cells[session_col] : "", noisy}).second)
+    const std::string surface = surface_col < header.size() ? cells[surface_col] : "";
+    if (!entries.emplace(file, ManifestEntry{has_session ? cells[session_col] : "", noisy, surface})
+             .second)
       throw InputError(name, line_no,
                        fmt::format("the performance of '{}' is listed twice", cells[file_col]));
     add_unique(set.objects, object);
@@ -235,6 +241,48 @@ Layout read_manifest(const fs::path& root, const fs::path& manifest_path,
 }
 
 }  // namespace
+
+RecordingSet sessions_by_surface(const RecordingSet& set) {
+  std::set<std::string> surfaces;
+  for (const Recording& r : set.recordings) {
+    if (r.surface.empty())
+      throw InputError(set.root, 0,
+                       fmt::format("'{}' names no table: holding out a table needs the manifest's "
+                                   "'surface' column on every row (what `synth-recordings "
+                                   "--surface A,B` writes)",
+                                   r.path));
+    surfaces.insert(r.surface);
+  }
+  if (surfaces.size() < 2)
+    throw InputError(set.root, 0,
+                     fmt::format("every recording is on one table ({}): holding out a table needs "
+                                 "recordings on at least two",
+                                 set.recordings.empty() ? "none" : *surfaces.begin()));
+  RecordingSet out = set;
+  const auto rank = [](const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) - names.begin();
+  };
+  std::stable_sort(
+      out.recordings.begin(), out.recordings.end(), [&](const Recording& a, const Recording& b) {
+        return std::tuple(rank(set.actions, a.action), rank(set.objects, a.object), a.surface) <
+               std::tuple(rank(set.actions, b.action), rank(set.objects, b.object), b.surface);
+      });
+  std::set<std::tuple<std::string, std::string, std::string>> made;  // (action, object, surface)
+  for (Recording& r : out.recordings) {
+    r.session = r.surface;
+    made.emplace(r.action, r.object, r.surface);
+  }
+  for (const std::string& action : set.actions)
+    for (const std::string& object : set.objects)
+      for (const std::string& surface : surfaces)
+        if (!made.contains({action, object, surface}))
+          throw InputError(set.root, 0,
+                           fmt::format("no recording of '{}' with action '{}' on table '{}': each "
+                                       "table is held out in turn, so every object needs every "
+                                       "action on every table",
+                                       object, action, surface));
+  return out;
+}
 
 std::vector<const Recording*> RecordingSet::of_action(const std::string& action) const {
   std::vector<const Recording*> out;
@@ -303,7 +351,7 @@ RecordingSet load_recording_set(const std::string& dir) {
         for (const SeriesFile& s : signals.series)
           series.push_back({s.modality, (root / s.path).string()});
         set.recordings.push_back({(root / file).string(), signals.audio, std::move(series), object,
-                                  action, listed.session, listed.noisy_copy});
+                                  action, listed.session, listed.noisy_copy, listed.surface});
       }
   check_same_signals(set);
   return set;

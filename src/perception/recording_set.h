@@ -36,6 +36,9 @@ struct Recording {
   // True when the manifest's `noise` column names a source (not empty, not "none"): a copy of a
   // performance mixed with background noise (loop/noisy_copy.h), not a performance of its own.
   bool noisy_copy = false;
+  // The manifest's optional `surface` column: the table the performance was made on (a simulated
+  // set recorded on several tables names each); empty when not given.
+  std::string surface;
 };
 
 // Every recording of a folder, grouped by (object, action). Invariants (load_recording_set checks
@@ -60,7 +63,8 @@ struct RecordingSet {
 // files; a performance on disk that the manifest does not list is an error. Without a manifest,
 // every performance under DIR/<object>/<action>/ is a recording. An optional manifest column
 // `session` names each recording's session (then required on every row), and an optional column
-// `noise` the source a noisy copy was mixed with (Recording::noisy_copy). Errors (InputError naming
+// `noise` the source a noisy copy was mixed with (Recording::noisy_copy), and `surface` the table
+// it was made on. Errors (InputError naming
 // the path, and the manifest line where there is one): DIR missing or not a folder; a file where an
 // action folder belongs (files directly in DIR, such as a groups file or a README, are ignored); a
 // file that is neither a recording nor a series file (hidden files are skipped); two audio files of
@@ -69,6 +73,13 @@ struct RecordingSet {
 // (object, action) folder with no recordings; an action recorded for some objects and not others; a
 // manifest row naming a missing file or a file outside its folder; an empty session.
 RecordingSet load_recording_set(const std::string& dir);
+
+// `set` with each recording's session its table (Recording::surface), so that folds by session hold
+// out one table at a time (a table held out like an object); within each (action, object) the
+// recordings are ordered by table name, so every object's sessions come in the same order.
+// InputError naming the set's folder when a recording has no surface, the set has fewer than two,
+// or an object lacks a table on an action that another object was recorded on.
+RecordingSet sessions_by_surface(const RecordingSet& set);
 
 // Decodes one recording as the classifiers see it: channels averaged into one, resampled to
 // `sample_rate` Hz (any file format, rate, channel count and bit depth libsndfile reads). Throws

@@ -93,6 +93,23 @@ sed -e "s|training_set: {recordings_per_pair: 1}|training_set: {model: $work/two
 expect_refused "model trained for other objects" "observation model was trained for" \
   experiment --config "$work/given.yaml" --out "$work/err_out"
 
+# A graded arm hearing a given model plays the trials it played with the model the campaign trained
+# (the same file), in a simulated world: given models once failed the check of a graded arm's loops.
+sed -e 's|training_set: {recordings_per_pair: 1}|training_set: {recordings_per_pair: 2}|' \
+  -e 's|  - {name: hand_tuned, problem: \(.*\)}|  - {name: graded, problem: \1, calibrate: true, observations: graded}|' \
+  -e 's|world: {type: model,|world: {type: simulated,|' -e 's|trials: 4}|trials: 1}|' \
+  "$config" >"$work/graded.yaml"
+"$bin" experiment --config "$work/graded.yaml" --out "$work/graded" >/dev/null 2>"$work/graded.err" \
+  || { fail "graded campaign exited $?"; cat "$work/graded.err"; }
+sed -e "s|training_set: {recordings_per_pair: 2}|training_set: {model: $work/graded/training/model.json}|" \
+  "$work/graded.yaml" >"$work/graded_given.yaml"
+"$bin" experiment --config "$work/graded_given.yaml" --out "$work/graded_given" >/dev/null 2>"$work/given.err" \
+  || { fail "graded arm with a given model exited $?"; cat "$work/given.err"; }
+cmp -s "$work/graded/trials.csv" "$work/graded_given/trials.csv" \
+  && cmp -s "$work/graded/steps.csv" "$work/graded_given/steps.csv" \
+  || fail "a graded arm hearing the given model played other trials than with the model trained"
+grep -q "@high" "$work/graded_given/steps.csv" || fail "the given model's arm heard no graded symbol"
+
 cp -r "$work/shard2" "$work/other"
 sed -i 's/"seed": 4/"seed": 99/' "$work/other/campaign.json"
 expect_refused "merging other campaigns" "holds another campaign" \

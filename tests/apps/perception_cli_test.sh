@@ -72,4 +72,17 @@ echo "not audio" >"$work/bad.wav"
 expect_input_error "corrupt recording" "bad.wav" classify --model "$work/model.json" --action strike "$work/bad.wav"
 expect_input_error "evaluate on missing folder" "does not exist" evaluate --model "$work/model.json" --data "$work/nope"
 
+# Each table held out in turn: a set recorded on two tables (recording i of each pair on table i mod 2)
+# is cross-validated table by table; one recorded on the lab's table alone names no table.
+"$bin" synth-recordings --per-pair 4 --seed 3 --objects plastic_cup,paper_base --surface lab_laminate,rubber_mat \
+  -o "$work/tables" >/dev/null 2>&1 || fail "dataset on two tables"
+"$bin" train --data "$work/tables" --cross-validation surface --out "$work/tables.json" >"$work/tables.out" 2>"$work/tables.err" \
+  || { fail "train by surface exited $?"; cat "$work/tables.err"; }
+grep -q "strike (cross-validated, each table held out): accuracy [0-9.]* (\([0-9]*\) of 8)" "$work/tables.out" \
+  || { fail "train by surface does not print the accuracy of 8 held-out strikes"; cat "$work/tables.out"; }
+expect_input_error "cross-validation by surface on one table" "names no table" \
+  train --data "$work/data" --cross-validation surface --out "$work/x.json"
+expect_input_error "cross-validation by surface with a hold-out" "make folds of objects" \
+  train --data "$work/tables" --cross-validation surface --hold-out object --out "$work/x.json"
+
 finish "perception CLI"

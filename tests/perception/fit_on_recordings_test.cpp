@@ -1,4 +1,5 @@
 // Training: cross-validated confusion, its smoothed table, calibration, fold assignment, bad input.
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -7,6 +8,7 @@
 #include <numeric>
 
 #include "common/error.h"
+#include "perception/evaluate_observation_model.h"
 #include "perception/fit_observation_model.h"
 #include "trained_model.h"
 
@@ -131,6 +133,96 @@ TEST(CrossValidationFolds, AreTheSameOnEveryPlatform) {
   const std::vector<int> labels{0, 0, 0, 0, 0, 1, 1, 1, 1, 1};
   EXPECT_EQ(cross_validation_folds(labels, 2, 3, 1, "strike"),
             (std::vector<int>{0, 0, 1, 1, 2, 2, 0, 0, 1, 1}));
+}
+
+// Three objects struck on two tables; on "soft" every mode sounds 40% lower and dies three times as
+// fast (what a table the model never heard might do). Recording i of each (object, table) is
+// session i.
+fs::path write_two_tables(const std::string& name) {
+  const fs::path dir = test_sounds::fresh_dir(name);
+  std::ofstream manifest(dir / "manifest.csv");
+  manifest << "file,object,action,session,surface\n";
+  for (std::size_t k = 0; k < kObjects.size(); ++k)
+    for (const std::string table : {"hard", "soft"})
+      for (unsigned i = 0; i < 3; ++i) {
+        std::vector<test_sounds::Mode> modes = test_sounds::three_objects()[k];
+        if (table == "soft")
+          for (auto& m : modes) m = {m.hz * 0.6, m.decay_s * 0.3, m.amplitude};
+        const unsigned seed = 100 * static_cast<unsigned>(k) + 10 * (table == "soft") + i;
+        const std::string file = fmt::format("{}/strike/{}{}.wav", kObjects[k], table, i);
+        fs::create_directories((dir / file).parent_path());
+        audio::write_audio((dir / file).string(), test_sounds::strike(modes, {.onset_s = 0.4,
+                                                                              .gain = 0.3 + 0.1 * i,
+                                                                              .noise_rms = 0.0005,
+                                                                              .detune = 0.02,
+                                                                              .seed = seed}));
+        manifest << fmt::format("{},{},strike,{},{}\n", file, kObjects[k], i + 1, table);
+      }
+  return dir;
+}
+
+// By surface, every table is heard as never heard: the cross-validated confusion is, table by
+// table, that of a model trained on the other table alone and evaluated on this one.
+TEST(FitOnRecordings, BySurfaceEachTableIsHeldOutInTurn) {
+  const fs::path dir = write_two_tables("by_surface");
+  const RecordingSet set = load_recording_set(dir.string());
+  FitOptions by_surface;
+  by_surface.cross_validation = CrossValidation::by_surface;
+  by_surface.reject = false;
+  const ObservationModel model = train_observation_model(set, by_surface);
+  const ConfusionMatrix& held_out = model.calibration("strike").confusion;
+
+  ConfusionMatrix expected = ConfusionMatrix::zeros(held_out.objects, held_out.symbols);
+  for (const std::string table : {"hard", "soft"}) {
+    RecordingSet training = set, tested = set;
+    std::erase_if(training.recordings, [&](const Recording& r) { return r.surface == table; });
+    std::erase_if(tested.recordings, [&](const Recording& r) { return r.surface != table; });
+    FitOptions alone;
+    alone.reject = false;
+    const Evaluation e =
+        evaluate_observation_model(train_observation_model(training, alone), tested);
+    ASSERT_EQ(e.per_action.size(), 1u);
+    ASSERT_EQ(e.per_action[0].symbols, held_out.symbols);
+    for (std::size_t k = 0; k < expected.counts.size(); ++k)
+      for (std::size_t o = 0; o < expected.counts[k].size(); ++o)
+        expected.counts[k][o] += e.per_action[0].counts[k][o];
+  }
+  EXPECT_EQ(held_out.counts, expected.counts);
+  EXPECT_EQ(held_out.total(), 18);
+  // The tables differ enough that holding one out costs something: by performance (the other
+  // recordings of an object on the same table in training) hears more right.
+  FitOptions by_performance;
+  by_performance.reject = false;
+  EXPECT_GT(train_observation_model(set, by_performance).calibration("strike").confusion.accuracy(),
+            held_out.accuracy());
+  fs::remove_all(dir);
+}
+
+TEST(FitOnRecordings, BySurfaceNeedsATreeOnSeveralTables) {
+  EXPECT_EQ(parse_cross_validation("surface"), CrossValidation::by_surface);
+  EXPECT_STREQ(cross_validation_name(CrossValidation::by_surface), "surface");
+  FitChoices choices;
+  choices.cross_validation = "surface";
+  const FitOptions o = choose_fit_options(choices, DataKind::recordings, false, false);
+  EXPECT_EQ(o.cross_validation, CrossValidation::by_surface);
+  EXPECT_EQ(o.table, FitOptions{}.table);  // a recordings tree's defaults
+  EXPECT_TRUE(o.reject);
+  try {
+    choose_fit_options(choices, DataKind::features, false, false);
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr("a feature set names no tables"));
+  }
+  EXPECT_THROW(choose_fit_options(choices, DataKind::recordings, true, false), InputError);
+  // The shared training set has no surface column.
+  FitOptions by_surface;
+  by_surface.cross_validation = CrossValidation::by_surface;
+  try {
+    train_observation_model(trained().set, by_surface);
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr("names no table"));
+  }
 }
 
 TEST(FitOnRecordings, BadSetsAndOptions) {

@@ -98,6 +98,61 @@ TEST_F(RecordingSetTest, TheNoiseColumnMarksNoisyCopies) {
   EXPECT_EQ(copies, (std::vector<bool>{false, true, false, false, false, true, false, false}));
 }
 
+TEST_F(RecordingSetTest, SessionsBySurfaceAreTheTablesInTheirNamesOrder) {
+  write_text(dir_ / "manifest.csv",
+             "file,object,action,session,surface\n"
+             "mug/strike/b.wav,mug,strike,1,steel\nmug/strike/a.wav,mug,strike,2,oak\n"
+             "cup/strike/b.wav,cup,strike,1,oak\ncup/strike/a.wav,cup,strike,2,steel\n"
+             "mug/slide/b.wav,mug,slide,1,steel\nmug/slide/a.wav,mug,slide,2,oak\n"
+             "cup/slide/b.wav,cup,slide,1,oak\ncup/slide/a.wav,cup,slide,2,steel\n");
+  const RecordingSet set = load_recording_set(dir_.string());
+  EXPECT_EQ(set.recordings[0].surface, "steel");
+  EXPECT_EQ(set.recordings[0].session, "1");
+  const RecordingSet by_table = sessions_by_surface(set);
+  std::vector<std::string> seen;
+  for (const Recording& r : by_table.recordings) {
+    EXPECT_EQ(r.session, r.surface);
+    seen.push_back(fs::path(r.path).lexically_relative(dir_).generic_string());
+  }
+  // Grouped by action and object as the set is, then by table name.
+  EXPECT_EQ(seen,
+            (std::vector<std::string>{"mug/strike/a.wav", "mug/strike/b.wav", "cup/strike/b.wav",
+                                      "cup/strike/a.wav", "mug/slide/a.wav", "mug/slide/b.wav",
+                                      "cup/slide/b.wav", "cup/slide/a.wav"}));
+}
+
+TEST_F(RecordingSetTest, SessionsBySurfaceNeedEveryObjectOnEveryTable) {
+  const auto error_of = [&](const std::string& manifest) {
+    write_text(dir_ / "manifest.csv", manifest);
+    try {
+      sessions_by_surface(load_recording_set(dir_.string()));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  std::string rows;
+  for (const char* object : {"mug", "cup"})
+    for (const char* action : {"strike", "slide"})
+      rows += fmt::format("{0}/{1}/a.wav,{0},{1},1\n{0}/{1}/b.wav,{0},{1},2\n", object, action);
+  EXPECT_THAT(error_of("file,object,action,session\n" + rows),
+              HasSubstr("names no table: holding out a table needs the manifest's 'surface'"));
+  std::string one_table, missing;
+  for (const char* object : {"mug", "cup"})
+    for (const char* action : {"strike", "slide"}) {
+      one_table +=
+          fmt::format("{0}/{1}/a.wav,{0},{1},oak\n{0}/{1}/b.wav,{0},{1},oak\n", object, action);
+      const std::string second =
+          std::string(object) == "cup" && std::string(action) == "slide" ? "oak" : "steel";
+      missing += fmt::format("{0}/{1}/a.wav,{0},{1},oak\n{0}/{1}/b.wav,{0},{1},{2}\n", object,
+                             action, second);
+    }
+  EXPECT_THAT(error_of("file,object,action,surface\n" + one_table),
+              HasSubstr("every recording is on one table (oak)"));
+  EXPECT_THAT(error_of("file,object,action,surface\n" + missing),
+              HasSubstr("no recording of 'cup' with action 'slide' on table 'steel'"));
+}
+
 TEST_F(RecordingSetTest, MissingOrNotAFolder) {
   expect_error(dir_ / "nope", {"nope", "does not exist"});
   write_text(dir_ / "file.txt", "x");

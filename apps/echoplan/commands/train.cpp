@@ -82,7 +82,7 @@ bool keeps_problem_base(const TrainFlags& f, const CLI::App& cmd, perception::Da
                         const perception::FitOptions& o) {
   const bool base = given(cmd, "--problem-base") ||
                     (kind == perception::DataKind::recordings &&
-                     o.cross_validation == perception::CrossValidation::by_performance &&
+                     o.cross_validation != perception::CrossValidation::by_session &&
                      !given(cmd, "--groups") && !given(cmd, "--hold-out"));
   if (base)
     for (const char* name : {"--reward-right", "--reward-wrong", "--reward-sense", "--costs"})
@@ -128,10 +128,11 @@ perception::FeatureSet load_data(const TrainFlags& f, perception::DataKind kind,
 // Per action: its confusion (for a few classes; a 100 x 100 matrix reads as noise), temperature
 // and reject threshold; then each modality's and the combined held-out accuracy.
 void print_model(const perception::ObservationModel& model, const perception::FitOptions& o) {
-  const std::string how = o.cross_validation == perception::CrossValidation::by_session
-                              ? "by session"
-                          : o.folds == 0 ? "leave-one-out"
-                                         : fmt::format("{} folds", o.folds);
+  const std::string how =
+      o.cross_validation == perception::CrossValidation::by_session   ? "by session"
+      : o.cross_validation == perception::CrossValidation::by_surface ? "each table held out"
+      : o.folds == 0                                                  ? "leave-one-out"
+                     : fmt::format("{} folds", o.folds);
   for (const std::string& action : model.actions()) {
     const perception::ActionCalibration& c = model.calibration(action);
     if (model.classes().size() <= 10)
@@ -253,8 +254,11 @@ void add_fit_options(CLI::App& cmd, TrainFlags& f) {
   cmd.add_option("--cross-validation", f.cross_validation,
                  "'performance' (leave-one-out or --folds; the default for a recordings tree) or "
                  "'session' (the task's folds over sessions; the default for a feature set or with "
-                 "--groups or --hold-out). The defaults below follow it: performance | session")
-      ->check(CLI::IsMember(std::vector<std::string>{"performance", "session"}));
+                 "--groups or --hold-out), or 'surface' (a recordings tree made on several tables, "
+                 "its manifest's `surface` column: each table held out in turn, so the table says "
+                 "what a table never heard does; the defaults of 'performance'). The defaults "
+                 "below follow it: performance | session")
+      ->check(CLI::IsMember(std::vector<std::string>{"performance", "session", "surface"}));
   std::vector<std::string> accepted = perception::classifier_names();
   for (const auto& [old_name, name] : perception::classifier_aliases())
     accepted.push_back(old_name);
