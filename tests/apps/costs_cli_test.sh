@@ -12,6 +12,7 @@
 #   - task.requires (squeeze after a press and a tap): every arm keeps the order, the folds' problems
 #     carry it, and a prerequisite the data lacks or a circle is refused.
 #   - train --costs: the problem it writes carries the costs; bad rows are refused at file:line.
+#   - train --requires: the problem carries the prerequisites; bad ones are refused before the fit.
 # Usage: costs_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
 . "$(dirname "$0")/cli_test_lib.sh"
 data="$src/experiments/data/synthetic_objects"
@@ -181,4 +182,35 @@ refused_costs negative 'behaviour,cost\ntap,-1\n' "2: the cost of 'tap' is '-1'"
 refused_costs header 'action,price\ntap,1\n' "1: the header must be 'behaviour,cost'"
 refused_costs twice 'behaviour,cost\ntap,1\ntap,2\n' "3: 'tap' is priced twice"
 refused_costs ragged 'behaviour,cost\ntap,1,2\n' "2: 3 cells"
+
+# train --requires: the problem it writes carries the prerequisites (as the campaign's folds do), and
+# the planner it feeds keeps the order; mistakes are refused before the fit.
+"$bin" train --data "$data" --requires squeeze=press,tap --requires shake=squeeze --problem-out "$work/gated_trained.yaml" \
+  >"$work/train_req.out" 2>&1 || { fail "train --requires exited $?"; cat "$work/train_req.out"; }
+grep -A3 "^  requires:" "$work/gated_trained.yaml" | grep -q "squeeze: \[press, tap\]" \
+  && grep -A3 "^  requires:" "$work/gated_trained.yaml" | grep -q "shake: \[squeeze\]" \
+  || { fail "train --requires: the problem lacks the prerequisites"; grep -A3 requires "$work/gated_trained.yaml"; }
+"$bin" trials --problem "$work/gated_trained.yaml" --solver all_actions --trials 3 --seed 1 --out "$work/gated_trials" \
+  >/dev/null 2>&1 || fail "trials on train --requires' problem exited $?"
+/usr/bin/python3 - "$work/gated_trials/steps.csv" <<'PY' || fail "all_actions broke train --requires' order"
+import csv, sys
+done, bad = {}, 0
+for row in csv.DictReader(open(sys.argv[1])):
+    seen = done.setdefault(row["trial"], set())
+    a = row["action"]
+    if a == "squeeze" and not {"press", "tap"} <= seen: bad += 1
+    if a == "shake" and "squeeze" not in seen: bad += 1
+    seen.add(a)
+sys.exit(1 if bad or not any("shake" in s for s in done.values()) else 0)
+PY
+expect_input_error "train --requires, an unknown behaviour" "--requires: 'squish' is not a behaviour of the data" \
+  train --data "$data" --requires squeeze=squish --problem-out "$work/x.yaml"
+expect_input_error "train --requires, a circle" "--requires goes round in a circle" \
+  train --data "$data" --requires squeeze=tap --requires tap=squeeze --problem-out "$work/x.yaml"
+expect_input_error "train --requires, no '='" "--requires squeeze: expected BEHAVIOUR=BEHAVIOUR" \
+  train --data "$data" --requires squeeze --problem-out "$work/x.yaml"
+expect_input_error "train --requires, itself" "squeeze cannot require itself" \
+  train --data "$data" --requires squeeze=squeeze --problem-out "$work/x.yaml"
+expect_input_error "train --requires with a base problem" "--requires orders the behaviours of the data's own problem" \
+  train --data "$data" --requires squeeze=tap --problem-base "$src/problems/audio_objects.yaml" --problem-out "$work/x.yaml"
 finish "costs and certified-campaign"

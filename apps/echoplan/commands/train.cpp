@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <sstream>
@@ -38,6 +39,7 @@ struct TrainFlags {
   std::string groups;
   std::string hold_out;
   std::string costs;
+  std::vector<std::string> prerequisites;  // BEHAVIOUR=B1,B2 (--requires), as typed
   loop::TaskSpec rewards;
   std::string cross_validation;
   std::string table;
@@ -49,6 +51,35 @@ struct TrainFlags {
 };
 
 bool given(const CLI::App& cmd, const char* name) { return cmd.count(name) > 0; }
+
+// --requires BEHAVIOUR=B1,B2 (repeatable) as TaskSpec::prerequisites. InputError naming the flag
+// for a missing '=', an empty name, a behaviour given twice or requiring itself; which names the
+// data has, and circles, are the data's problem's to check (loop::dataset_problem).
+std::map<std::string, std::vector<std::string>> parse_requires(
+    const std::vector<std::string>& typed) {
+  std::map<std::string, std::vector<std::string>> prerequisites;
+  for (const std::string& text : typed) {
+    const auto fail = [&](const std::string& problem) {
+      throw InputError(fmt::format("--requires {}: {}", text, problem));
+    };
+    const auto equals = text.find('=');
+    if (equals == std::string::npos || equals == 0 || equals + 1 == text.size())
+      fail("expected BEHAVIOUR=BEHAVIOUR[,BEHAVIOUR...], e.g. squeeze=grasp or shake=grasp,lift");
+    const std::string behaviour = text.substr(0, equals);
+    std::vector<std::string> needed;
+    std::istringstream list(text.substr(equals + 1));
+    for (std::string name; std::getline(list, name, ',');) {
+      if (name.empty()) fail("an empty behaviour name");
+      if (name == behaviour) fail(behaviour + " cannot require itself");
+      if (std::find(needed.begin(), needed.end(), name) != needed.end())
+        fail(name + " is listed twice");
+      needed.push_back(name);
+    }
+    if (!prerequisites.emplace(behaviour, std::move(needed)).second)
+      fail(fmt::format("'{}' is given twice: list all it requires once", behaviour));
+  }
+  return prerequisites;
+}
 
 // The fitting options the user gave, over the defaults (perception::choose_fit_options).
 perception::FitOptions fit_options(const TrainFlags& f, const CLI::App& cmd,
@@ -85,12 +116,14 @@ bool keeps_problem_base(const TrainFlags& f, const CLI::App& cmd, perception::Da
                      o.cross_validation != perception::CrossValidation::by_session &&
                      !given(cmd, "--groups") && !given(cmd, "--hold-out"));
   if (base)
-    for (const char* name : {"--reward-right", "--reward-wrong", "--reward-sense", "--costs"})
+    for (const char* name :
+         {"--reward-right", "--reward-wrong", "--reward-sense", "--costs", "--requires"})
       if (given(cmd, name))
         throw InputError(fmt::format(
-            "{} prices the data's own problem, and --problem-out here keeps --problem-base's "
-            "rewards ({}): drop --problem-base, or give --groups or --hold-out",
-            name, f.problem_base));
+            "{} {} the data's own problem, and --problem-out here keeps --problem-base's "
+            "actions and rewards ({}): drop --problem-base, or give --groups or --hold-out",
+            name, std::string(name) == "--requires" ? "orders the behaviours of" : "prices",
+            f.problem_base));
   return base;
 }
 
@@ -173,12 +206,15 @@ void write_data_problem(const TrainFlags& f, const perception::FeatureSet& set,
       loop::dataset_problem(task, model, f.rewards, loop::default_uses(set));
   std::ostringstream text;
   text << fmt::format(
-      "# Written by: echoplan train --data {}{}{} --hold-out {} --classifier {}\n"
+      "# Written by: echoplan train --data {}{}{}{} --hold-out {} --classifier {}\n"
       "# {} classes, {} bins; observation table: calibrated held-out decisions "
       "(docs/feature-sets.md).\n",
       f.data, f.groups.empty() ? "" : " --groups " + f.groups,
-      f.costs.empty() ? "" : " --costs " + f.costs, hold_out_name(task.hold_out),
-      model.classifier_name(), task.classes.size(), task.bins.size());
+      f.costs.empty() ? "" : " --costs " + f.costs,
+      f.prerequisites.empty()
+          ? ""
+          : " --requires " + fmt::format("{}", fmt::join(f.prerequisites, " --requires ")),
+      hold_out_name(task.hold_out), model.classifier_name(), task.classes.size(), task.bins.size());
   pomdp::BeliefSettings belief;
   belief.type = pomdp::BeliefSettings::Type::exact;  // a few classes: exact beliefs are cheap
   pomdp::write_problem_yaml(text, data, belief, pomdp::PlannerDefaults{});
@@ -198,6 +234,7 @@ void train(TrainFlags f, const CLI::App& cmd) {
   if (base_problem && !f.problem_out.empty()) base = pomdp::load_problem(f.problem_base);
   std::optional<perception::ObjectGroups> groups;
   if (!f.groups.empty()) groups = perception::load_groups(f.groups);
+  f.rewards.prerequisites = parse_requires(f.prerequisites);
   const perception::FeatureSet set = load_data(f, kind, o);
   if (base) check_coverage(f, *base, set);
   if (!f.costs.empty()) {
@@ -207,6 +244,14 @@ void train(TrainFlags f, const CLI::App& cmd) {
   }
   const perception::DatasetTask task =
       perception::make_dataset_task(set, groups ? &*groups : nullptr, hold_out, f.groups);
+  // Names the data lacks and circles in --requires are said before the fit.
+  if (!base_problem && !f.rewards.prerequisites.empty()) {
+    try {
+      loop::dataset_problem_shape(task, set, f.rewards);
+    } catch (const InputError& e) {
+      throw InputError("--" + e.problem());
+    }
+  }
   spdlog::info("{}: {} objects, {} sessions, {} behaviours; {} classes, {} bins; classifier {}",
                f.data, set.objects.size(), set.sessions.size(), set.actions.size(),
                task.classes.size(), task.bins.size(), o.classifier);
@@ -246,6 +291,10 @@ void add_task_options(CLI::App& cmd, TrainFlags& f) {
   cmd.add_option("--costs", f.costs,
                  "The data's problem: CSV file 'behaviour,cost', a row per priced behaviour: each "
                  "performance of it earns -cost (the others --reward-sense)");
+  cmd.add_option("--requires", f.prerequisites,
+                 "The data's problem: BEHAVIOUR=B1[,B2...] (repeatable): BEHAVIOUR can be "
+                 "performed only after each of B1, B2, ... has been (e.g. shake=grasp, as on an "
+                 "arm that must hold an object to shake it)");
 }
 
 void add_fit_options(CLI::App& cmd, TrainFlags& f) {
