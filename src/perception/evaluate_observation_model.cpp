@@ -24,15 +24,25 @@ Evaluation evaluate_observation_model(const ObservationModel& model, const Recor
   int done = 0;
   for (const auto& action : model.actions()) {
     if (std::find(set.actions.begin(), set.actions.end(), action) == set.actions.end()) continue;
-    ConfusionMatrix confusion = ConfusionMatrix::zeros(set.objects, symbols);
+    const ConfusionMatrix zeros = ConfusionMatrix::zeros(set.objects, symbols);
+    ConfusionMatrix confusion = zeros;
+    const std::size_t index = evaluation.per_action.size();
     for (const Recording* r : set.of_action(action)) {
       analyzer.analyse(read_recording(r->path, model.analysis().sample_rate), r->path, analysis);
       const Prediction p = model.classify(analysis, action);
-      ++confusion.counts[static_cast<std::size_t>(set.object_index(r->object))]
-                        [static_cast<std::size_t>(p.symbol)];
+      const auto object = static_cast<std::size_t>(set.object_index(r->object));
+      const auto symbol = static_cast<std::size_t>(p.symbol);
+      ++confusion.counts[object][symbol];
+      if (!r->surface.empty()) {
+        std::vector<ConfusionMatrix>& on_table = evaluation.per_surface[r->surface];
+        on_table.resize(index + 1, zeros);
+        ++on_table[index].counts[object][symbol];
+      }
       if (progress) progress("evaluate", ++done, static_cast<int>(set.recordings.size()));
     }
     evaluation.per_action.push_back(std::move(confusion));
+    // A table with no recording of this action still has its (empty) matrix.
+    for (auto& [table, matrices] : evaluation.per_surface) matrices.resize(index + 1, zeros);
   }
   return evaluation;
 }

@@ -1,6 +1,8 @@
 // Held-out evaluation of a trained observation model on a recording set it was not trained on.
 #pragma once
 
+#include <map>
+#include <string>
 #include <vector>
 
 #include "common/progress.h"
@@ -15,6 +17,9 @@ namespace echoplan::perception {
 // the model's classes.
 struct Evaluation {
   std::vector<ConfusionMatrix> per_action;  // model action order, actions present in the set
+  // A set whose manifest names each recording's table (Recording::surface): per table, the same
+  // confusions of its recordings alone (they add up to per_action); empty otherwise.
+  std::map<std::string, std::vector<ConfusionMatrix>> per_surface;
 };
 
 // Throws InputError if the set has an action the model was not trained for.

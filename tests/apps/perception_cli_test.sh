@@ -80,6 +80,16 @@ expect_input_error "evaluate on missing folder" "does not exist" evaluate --mode
   || { fail "train by surface exited $?"; cat "$work/tables.err"; }
 grep -q "strike (cross-validated, each table held out): accuracy [0-9.]* (\([0-9]*\) of 8)" "$work/tables.out" \
   || { fail "train by surface does not print the accuracy of 8 held-out strikes"; cat "$work/tables.out"; }
+"$bin" evaluate --model "$work/model.json" --data "$work/tables" >"$work/eval_tables.out" 2>/dev/null \
+  || fail "evaluate on two tables exited $?"
+grep -q "^  per table: lab_laminate [0-9.]* ([0-9]* of 4), rubber_mat [0-9.]* ([0-9]* of 4)$" "$work/eval_tables.out" \
+  || { fail "evaluate does not count each table's 4 recordings of an action"; cat "$work/eval_tables.out"; }
+"$bin" evaluate --model "$work/model.json" --data "$work/tables" --json 2>/dev/null \
+  | /usr/bin/python3 -c "import json,sys; d=json.load(sys.stdin); assert sorted(d['surfaces']) == ['lab_laminate', 'rubber_mat']" \
+  || fail "evaluate --json has no surfaces"
+"$bin" evaluate --model "$work/model.json" --data "$work/held" 2>/dev/null | grep -q "per table" \
+  && fail "evaluate on a set without tables prints tables"
+grep -q '"surfaces"' "$work/eval.out" && fail "evaluate --json on a set without tables has surfaces"
 expect_input_error "cross-validation by surface on one table" "names no table" \
   train --data "$work/data" --cross-validation surface --out "$work/x.json"
 expect_input_error "cross-validation by surface with a hold-out" "make folds of objects" \

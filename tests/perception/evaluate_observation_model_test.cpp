@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "common/error.h"
+#include "perception/fit_observation_model.h"
 #include "trained_model.h"
 
 namespace echoplan::perception {
@@ -47,6 +48,37 @@ TEST(EvaluateObservationModel, CountsHeldOutRecordingsIncludingUnknownObjects) {
   const auto hum_row = static_cast<std::size_t>(
       std::find(c.objects.begin(), c.objects.end(), "hum") - c.objects.begin());
   EXPECT_EQ(c.counts[hum_row][3], 2);  // both hums are unknown
+}
+
+// A set recorded on two tables is counted table by table too: each table's matrix is what the same
+// model hears on that table's recordings alone, and the tables add up to the whole. (No column, no
+// tables: the test above's set has none.)
+TEST(EvaluateObservationModel, CountsEachTableOfASetRecordedOnSeveral) {
+  const fs::path dir = test_model::write_two_tables("evaluate_tables");
+  const RecordingSet set = load_recording_set(dir.string());
+  RecordingSet hard = set;
+  std::erase_if(hard.recordings, [](const Recording& r) { return r.surface != "hard"; });
+  FitOptions no_reject;
+  no_reject.reject = false;
+  const ObservationModel model = train_observation_model(hard, no_reject);
+  const Evaluation all = evaluate_observation_model(model, set);
+  ASSERT_EQ(all.per_surface.size(), 2u);
+  ConfusionMatrix sum =
+      ConfusionMatrix::zeros(all.per_action[0].objects, all.per_action[0].symbols);
+  for (const std::string table : {"hard", "soft"}) {
+    RecordingSet alone = set;
+    std::erase_if(alone.recordings, [&](const Recording& r) { return r.surface != table; });
+    const Evaluation e = evaluate_observation_model(model, alone);
+    ASSERT_EQ(all.per_surface.at(table).size(), 1u);
+    EXPECT_EQ(all.per_surface.at(table)[0].counts, e.per_action[0].counts) << table;
+    for (std::size_t k = 0; k < sum.counts.size(); ++k)
+      for (std::size_t o = 0; o < sum.counts[k].size(); ++o)
+        sum.counts[k][o] += e.per_action[0].counts[k][o];
+  }
+  EXPECT_EQ(sum.counts, all.per_action[0].counts);
+  EXPECT_DOUBLE_EQ(all.per_surface.at("hard")[0].accuracy(), 1.0);  // the table it was trained on
+  EXPECT_TRUE(evaluate_observation_model(trained().model, trained().set).per_surface.empty());
+  fs::remove_all(dir);
 }
 
 TEST(EvaluateObservationModel, RefusesActionsTheModelWasNotTrainedFor) {

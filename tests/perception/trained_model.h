@@ -4,7 +4,10 @@
 // held-out sets); the folder is removed at exit.
 #pragma once
 
+#include <fmt/format.h>
+
 #include <filesystem>
+#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -45,6 +48,32 @@ inline std::filesystem::path write_training_set(const std::string& name) {
             dir / kObjects[k] / action / (std::to_string(i) + ".wav");
         std::filesystem::create_directories(path.parent_path());
         audio::write_audio(path.string(), clip);
+      }
+  return dir;
+}
+
+// Three objects struck on two tables; on "soft" every mode sounds 40% lower and dies three times as
+// fast (what a table the model never heard might do). Recording i of each (object, table) is
+// session i.
+inline std::filesystem::path write_two_tables(const std::string& name) {
+  const std::filesystem::path dir = test_sounds::fresh_dir(name);
+  std::ofstream manifest(dir / "manifest.csv");
+  manifest << "file,object,action,session,surface\n";
+  for (std::size_t k = 0; k < kObjects.size(); ++k)
+    for (const std::string table : {"hard", "soft"})
+      for (unsigned i = 0; i < 3; ++i) {
+        std::vector<test_sounds::Mode> modes = test_sounds::three_objects()[k];
+        if (table == "soft")
+          for (auto& m : modes) m = {m.hz * 0.6, m.decay_s * 0.3, m.amplitude};
+        const unsigned seed = 100 * static_cast<unsigned>(k) + 10 * (table == "soft") + i;
+        const std::string file = fmt::format("{}/strike/{}{}.wav", kObjects[k], table, i);
+        std::filesystem::create_directories((dir / file).parent_path());
+        audio::write_audio((dir / file).string(), test_sounds::strike(modes, {.onset_s = 0.4,
+                                                                              .gain = 0.3 + 0.1 * i,
+                                                                              .noise_rms = 0.0005,
+                                                                              .detune = 0.02,
+                                                                              .seed = seed}));
+        manifest << fmt::format("{},{},strike,{},{}\n", file, kObjects[k], i + 1, table);
       }
   return dir;
 }

@@ -1,5 +1,6 @@
 // `echoplan classify` and `echoplan evaluate`: use a trained observation model on recordings.
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
 #include <cmath>
@@ -81,13 +82,16 @@ void add_evaluate_command(CLI::App& app) {
       "Accuracy and confusion matrix per action of a trained model on held-out recordings\n"
       "DIR/<object>/<action>/*. Objects the model was not trained on are rows too (their right "
       "answer is\n"
-      "`unknown`); accuracy counts the model's classes only.\n"
+      "`unknown`); accuracy counts the model's classes only. A set whose manifest has a `surface`\n"
+      "column (recorded on several tables) is also counted table by table.\n"
       "Example: echoplan evaluate --model model.json --data held_out");
   cmd->add_option("--model", opt->model, "Model file written by `echoplan train`")->required();
   cmd->add_option("--data", opt->data, "Folder of held-out recordings")->required();
-  cmd->add_flag("--json", opt->json,
-                "One JSON document: {\"model\", \"data\", \"actions\": {action: {accuracy, "
-                "objects, symbols, confusion}}}");
+  cmd->add_flag(
+      "--json", opt->json,
+      "One JSON document: {\"model\", \"data\", \"actions\": {action: {accuracy, "
+      "objects, symbols, confusion}}}; for a set whose manifest names each recording's table, "
+      "also \"surfaces\": {table: {action: {...}}}");
   cmd->callback([opt] {
     const perception::ObservationModel model = perception::load_observation_model(opt->model);
     const perception::RecordingSet set = perception::load_recording_set(opt->data);
@@ -103,13 +107,21 @@ void add_evaluate_command(CLI::App& app) {
       nlohmann::json per_action = nlohmann::json::object();
       for (std::size_t i = 0; i < actions.size(); ++i)
         per_action[actions[i]] = confusion_json(evaluation.per_action[i]);
-      fmt::print("{}\n",
-                 nlohmann::json{{"model", opt->model}, {"data", opt->data}, {"actions", per_action}}
-                     .dump());
+      nlohmann::json out{{"model", opt->model}, {"data", opt->data}, {"actions", per_action}};
+      for (const auto& [table, matrices] : evaluation.per_surface)
+        for (std::size_t i = 0; i < actions.size(); ++i)
+          out["surfaces"][table][actions[i]] = confusion_json(matrices[i]);
+      fmt::print("{}\n", out.dump());
       return;
     }
-    for (std::size_t i = 0; i < actions.size(); ++i)
+    for (std::size_t i = 0; i < actions.size(); ++i) {
       print_confusion(actions[i], evaluation.per_action[i]);
+      if (evaluation.per_surface.empty()) continue;
+      std::vector<std::string> tables;
+      for (const auto& [table, matrices] : evaluation.per_surface)
+        tables.push_back(table + " " + accuracy_text(matrices[i]));
+      fmt::print("  per table: {}\n", fmt::join(tables, ", "));
+    }
   });
 }
 

@@ -7,7 +7,7 @@
 
 namespace echoplan::cli {
 
-void print_confusion(const std::string& title, const perception::ConfusionMatrix& c) {
+std::string accuracy_text(const perception::ConfusionMatrix& c) {
   int right = 0, known = 0;
   for (std::size_t k = 0; k < c.objects.size(); ++k) {
     const auto it = std::find(c.symbols.begin(), c.symbols.end(), c.objects[k]);
@@ -15,7 +15,11 @@ void print_confusion(const std::string& title, const perception::ConfusionMatrix
     right += c.counts[k][static_cast<std::size_t>(it - c.symbols.begin())];
     for (int n : c.counts[k]) known += n;
   }
-  fmt::print("{}: accuracy {:.3f} ({} of {})\n", title, c.accuracy(), right, known);
+  return fmt::format("{:.3f} ({} of {})", c.accuracy(), right, known);
+}
+
+void print_confusion(const std::string& title, const perception::ConfusionMatrix& c) {
+  fmt::print("{}: accuracy {}\n", title, accuracy_text(c));
   std::size_t width = 12;  // "true \\ heard"
   for (const auto& o : c.objects) width = std::max(width, o.size());
   std::size_t cell = 5;

@@ -9,6 +9,9 @@
 
 namespace echoplan::cli {
 
+// "0.917 (11 of 12)": the share heard right among the model's classes, and the counts.
+std::string accuracy_text(const perception::ConfusionMatrix& confusion);
+
 // "<title>: accuracy 0.917 (11 of 12)" then the matrix, rows = true object, columns = reported
 // symbol.
 void print_confusion(const std::string& title, const perception::ConfusionMatrix& confusion);
