@@ -64,14 +64,14 @@ struct RecordingSet {
 // every performance under DIR/<object>/<action>/ is a recording. An optional manifest column
 // `session` names each recording's session (then required on every row), and an optional column
 // `noise` the source a noisy copy was mixed with (Recording::noisy_copy), and `surface` the table
-// it was made on. Errors (InputError naming
-// the path, and the manifest line where there is one): DIR missing or not a folder; a file where an
-// action folder belongs (files directly in DIR, such as a groups file or a README, are ignored); a
-// file that is neither a recording nor a series file (hidden files are skipped); two audio files of
-// one name; a series file named `<name>.csv` or `<name>.audio.csv`; a manifest row naming a series
-// file of a performance that has audio; performances of one action with different signals; an
-// (object, action) folder with no recordings; an action recorded for some objects and not others; a
-// manifest row naming a missing file or a file outside its folder; an empty session.
+// it was made on. Errors (InputError naming the path, and the manifest line where there is one):
+// DIR missing or not a folder; a file where an action folder belongs (files directly in DIR, such
+// as a groups file or a README, are ignored); a file that is neither a recording nor a series file
+// (hidden files are skipped); two audio files of one name; a series file named `<name>.csv` or
+// `<name>.audio.csv`; a manifest row naming a series file of a performance that has audio;
+// performances of one action with different signals; an (object, action) folder with no recordings;
+// an action recorded for some objects and not others; a manifest row naming a missing file or a
+// file outside its folder; an empty session.
 RecordingSet load_recording_set(const std::string& dir);
 
 // `set` with each recording's session its table (Recording::surface), so that folds by session hold

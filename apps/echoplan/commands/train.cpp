@@ -213,7 +213,7 @@ void write_data_problem(const TrainFlags& f, const perception::FeatureSet& set,
       f.costs.empty() ? "" : " --costs " + f.costs,
       f.prerequisites.empty()
           ? ""
-          : " --requires " + fmt::format("{}", fmt::join(f.prerequisites, " --requires ")),
+          : fmt::format(" --requires {}", fmt::join(f.prerequisites, " --requires ")),
       hold_out_name(task.hold_out), model.classifier_name(), task.classes.size(), task.bins.size());
   pomdp::BeliefSettings belief;
   belief.type = pomdp::BeliefSettings::Type::exact;  // a few classes: exact beliefs are cheap
