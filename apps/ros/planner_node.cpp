@@ -22,7 +22,11 @@
 //   ~listen       true (default): record each sensing action with echoplan_listener; false: the
 //                 robot has no microphone, so no listener is run, the record parameter is left
 //                 alone and echoplan_observation observes each performance from the robot's
-//                 feature topic alone (a model trained on sensor rows, docs/real-robot.md)
+//                 feature topic or sensor streams alone (docs/real-robot.md)
+//
+// Around each sensing action it publishes `start OBJECT ACTION trial<N>` and `end` on
+// /echoplan/performance (robot/ros/performance_marks.h): where the observation node cuts a robot's
+// sensor streams, and what makes a bag recorded of the run importable (`echoplan import-bag`).
 //
 // Exits 0 when every trial finished, 2 for bad parameters or files, 1 when a node failed (died,
 // never answered), with the reason logged.
@@ -30,14 +34,33 @@
 #include <ros/ros.h>
 
 #include <memory>
+#include <set>
+#include <string>
 
 #include "common/error.h"
+#include "loop/object_problem.h"
 #include "loop_trials.h"
 #include "node_main.h"
+#include "pomdp/problem.h"
 #include "robot/ros/master_watch.h"
+#include "robot/ros/performance_marks.h"
 #include "robot/ros/ros_observation_service.h"
+#include "robot/ros/ros_protocol.h"
 #include "robot/ros/ros_recorder.h"
 #include "robot/ros/ros_robot.h"
+
+namespace {
+
+// The sensing actions of the problem in `path` (the ones the planner marks).
+std::set<std::string> sensing_actions(const std::string& path) {
+  const echoplan::pomdp::Problem problem = echoplan::pomdp::load_problem(path);
+  std::set<std::string> names;
+  for (const auto& a : echoplan::loop::object_problem(*problem.model).data().sensing)
+    names.insert(a.name);
+  return names;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "echoplan_planner");
@@ -88,8 +111,11 @@ int main(int argc, char** argv) {
         // than for a node, so a master that does not come back stops the run instead of hanging.
         ros::master::setRetryTimeout(ros::WallDuration(wait_timeout_s));
         echoplan::loop::RobotParts parts;
-        parts.robot = std::make_unique<echoplan::robot::RosRobot>(node, wait_timeout_s,
-                                                                  /*begin_trial_required=*/false);
+        parts.robot = std::make_unique<echoplan::robot::MarkedRobot>(
+            node,
+            std::make_unique<echoplan::robot::RosRobot>(node, wait_timeout_s,
+                                                        /*begin_trial_required=*/false),
+            sensing_actions(settings.problem), echoplan::robot::ros_names::kPerformanceTopic);
         bool listen = true;
         priv.param("listen", listen, true);
         if (listen)

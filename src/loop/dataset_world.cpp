@@ -88,9 +88,10 @@ WorldStep DatasetWorld::execute(int action, Rng& /*rng*/) {
   pomdp::Outcome outcome;
   if (problem_.is_sensing(action)) {
     if (next_[action] >= rows_[action].size())
-      throw std::logic_error(
-          fmt::format("dataset world: '{}' used more often than the session recorded it ({} times)",
-                      data.sensing[action].name, rows_[action].size()));
+      throw InputError(fmt::format(
+          "the planner chose '{}' more often than the session recorded it ({} times): its "
+          "problem's use limits are not the session's",
+          data.sensing[action].name, rows_[action].size()));
     const int row = rows_[action][next_[action]++];
     const perception::Prediction heard = readers_[action].classify(row);
     outcome.observation.index = spec_.model->symbol(heard, kind_);

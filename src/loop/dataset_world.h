@@ -33,8 +33,9 @@ class DatasetWorld final : public World {
   DatasetWorld(const pomdp::ObjectIdentificationModel& problem, DatasetWorldSpec spec);
 
   void reset(const pomdp::State& true_state, Rng& rng) override;
-  // A sensing action used more often than the session recorded it is a logic error: the problem's
-  // use limits (the session's counts) stop a planner before that.
+  // A sensing action used more often than the session recorded it is an InputError: the problem's
+  // use limits, when they are the session's counts (as a campaign's are), stop a planner before
+  // that; a replay planning with other limits (`run --data --uses problem`) may not.
   WorldStep execute(int action, Rng& rng) override;
 
  private:

@@ -3,6 +3,7 @@
 // class, and a behaviour used more often than recorded is a logic error.
 #include "loop/dataset_world.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <stdexcept>
@@ -86,7 +87,10 @@ TEST(DatasetWorld, EachSensingActionHearsTheSessionsNextPerformance) {
     EXPECT_GE(*step.outcome.heard_probability, 1.0 / r.task.classes.size());
     EXPECT_LE(*step.outcome.heard_probability, 1.0);
   }
-  EXPECT_THROW(world.execute(1, rng), std::logic_error);  // a third strike was never recorded
+  // A third strike was never recorded: the planner's limits were not the session's.
+  EXPECT_THAT([&] { world.execute(1, rng); },
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr(
+                  "the planner chose 'strike' more often than the session recorded it (2 times)")));
   const WorldStep press = world.execute(0, rng);
   EXPECT_EQ(press.outcome.observation.index,
             perception::classify_row(*r.model, 0, *r.set, rows_of(*r.set, 0, session)[0]));

@@ -42,6 +42,7 @@ struct RunFlags {
   std::string recordings;  // non-empty: replay these instead of simulating
   std::string data;        // non-empty: replay this session of recorded data (replay_session)
   std::string session;
+  std::string uses = "session";  // with data: whose use limits the planner plans with
   std::string groups;
   std::uint64_t seed = 1;
   int max_steps = 100;
@@ -177,14 +178,15 @@ int true_class(const RunFlags& f, const pomdp::ObjectProblemData& problem) {
 }
 
 // The problem with each sensing action limited to what the session recorded, as a campaign's
-// trial plans with it.
+// trial plans with it; with `limits` "problem", the problem as it is.
 std::shared_ptr<const pomdp::Problem> session_problem(const pomdp::Problem& base,
                                                       const perception::FeatureSet& data,
-                                                      int session) {
+                                                      int session, const std::string& limits) {
   const auto* object_model = base.model->object_identification();
   if (object_model == nullptr)
     throw InputError(base.source_path, 0,
                      "not an object-identification problem (`train --problem-out` writes one)");
+  if (limits == "problem") return std::make_shared<const pomdp::Problem>(base);
   pomdp::ObjectProblemData limited = object_model->data();
   const std::vector<int> uses = loop::session_uses(limited, data, session);
   for (std::size_t a = 0; a < uses.size(); ++a) limited.sensing[a].uses = uses[a];
@@ -227,7 +229,7 @@ void replay_session(const RunFlags& f) {
       f.data, {}, tree ? perception::series_choices(*model) : perception::SeriesChoices{}));
   const SessionChoice choice = find_session(*data, f);
   loop::LoopSettings s;
-  s.problem = session_problem(base, *data, choice.session);
+  s.problem = session_problem(base, *data, choice.session, f.uses);
   s.world = loop::DatasetWorldSpec{data, model, choice.session};
   s.planner = f.planner;
   s.max_steps = f.max_steps;
@@ -349,6 +351,13 @@ them, and --seed is the trial's seed (a campaign's trials.csv `seed` column).)")
                   "Replay a session of recorded data (a feature set or a recordings tree) with "
                   "--model and --problem (`echoplan train --out MODEL --problem-out FILE`)");
   cmd->add_option("--session", flags->session, "With --data: the session of --object to replay");
+  cmd->add_option(
+         "--uses", flags->uses,
+         "With --data: the use limits the planner plans with: 'session' (what the session "
+         "recorded, as a campaign's trial) or 'problem' (the problem file's, as a live run "
+         "planned: for a bag of a live run, which holds only what it used)")
+      ->check(CLI::IsMember({"session", "problem"}))
+      ->capture_default_str();
   cmd->add_option("--groups", flags->groups,
                   "With --data: groups file (object,group), when the problem's classes are groups");
   cmd->add_option("--seed", flags->seed, "Seed of every random choice")->capture_default_str();

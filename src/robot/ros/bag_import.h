@@ -9,34 +9,23 @@
 // the bag's record times (when rosbag received each message): the one clock markers, joint states
 // and wrenches share, whatever their header stamps say.
 //
-// Series topics: sensor_msgs/JointState (its effort, position or velocity: one channel per joint,
-// named as the first message names them) and geometry_msgs/WrenchStamped (its force: force_x,
-// force_y, force_z; its torque: torque_x..; or the whole wrench: both). Audio in bags is not read
-// here (record it with `echoplan record` or the ROS recorder).
+// Series topics are read as series_topic.h says (the live observation node reads them the same
+// way). Audio in bags is not read here (record it with `echoplan record` or the ROS recorder).
 #pragma once
 
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "robot/ros/ros_protocol.h"
+#include "robot/ros/series_topic.h"
+
 namespace echoplan::robot {
-
-// One modality of the tree and where it comes from: `effort=/joint_states:effort`.
-struct SeriesTopic {
-  std::string modality;  // the files' <modality> (not "audio")
-  std::string topic;
-  std::string
-      field;  // JointState: effort, position, velocity; WrenchStamped: force, torque, wrench
-};
-
-// Parses `MODALITY=TOPIC[:FIELD]` (FIELD defaults to effort for JointState, force for a wrench,
-// decided when the topic's type is known). InputError naming the text when it is malformed.
-SeriesTopic parse_series_topic(const std::string& text);
 
 struct BagImportOptions {
   std::vector<std::string> bags;  // read in this order; markers may not span two bags
   std::string output_dir;         // created; its manifest.csv is replaced
-  std::string marker_topic = "/echoplan/performance";
+  std::string marker_topic = ros_names::kPerformanceTopic;
   std::vector<SeriesTopic> series;  // at least one, modalities distinct
 };
 

@@ -45,6 +45,8 @@ HeardObservation RosObservationService::observe(const audio::AudioClip& clip,
         name, action));
   }
   const auto& r = call.response;
+  if (!r.error.empty() && r.transient)
+    throw TransientError(fmt::format("{}: '{}' could not be sensed: {}", name, action, r.error));
   if (!r.error.empty()) throw InputError(name, 0, r.error);
   if (r.classes.size() != r.probabilities.size())
     throw std::runtime_error(fmt::format("{} answered {} classes but {} probabilities", name,

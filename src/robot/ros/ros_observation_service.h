@@ -6,7 +6,8 @@
 // The next call waits up to `wait_timeout_s` for the service (a restarted node comes back); one
 // that is not there by then is a std::runtime_error naming the service, which ends the run. An
 // error the service reports for the request (no model for the action, bad clip) is an InputError,
-// as the interface promises.
+// as the interface promises; one it calls transient (the performance could not be sensed: a sensor
+// stream stopped) is a TransientError, so the loop skips that observation.
 #pragma once
 
 #include <ros/ros.h>

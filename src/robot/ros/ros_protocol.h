@@ -8,6 +8,9 @@
 // - topic /echoplan/sim_clip: echoplan_ros/Clip, what the simulated robot's world sounded like
 // - topic /echoplan/features: echoplan_ros/FeatureRow, what the robot's other sensors measured of
 //   a performance, one message per sensor (for models whose modalities are not all audio)
+// - topic /echoplan/performance: std_msgs/String, `start OBJECT ACTION SESSION` and `end` around
+//   each sensing action (the planner publishes them; robot/ros/performance_marks.h), where the
+//   observation node cuts a robot's sensor streams and a bag import cuts a bag
 // - service /echoplan/observe: echoplan_ros/Observe, classify a performance (a clip, feature rows)
 // - service /echoplan/execute_action: echoplan_ros/ExecuteAction, run an action on the arm
 // - service /echoplan/begin_trial: echoplan_ros/BeginTrial, prepare the arm (and scene) for a trial
@@ -24,5 +27,6 @@ inline constexpr const char* kObserveService = "/echoplan/observe";
 inline constexpr const char* kExecuteActionService = "/echoplan/execute_action";
 inline constexpr const char* kBeginTrialService = "/echoplan/begin_trial";
 inline constexpr const char* kFeatureTopic = "/echoplan/features";
+inline constexpr const char* kPerformanceTopic = "/echoplan/performance";
 
 }  // namespace echoplan::robot::ros_names

@@ -5,31 +5,13 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <cstring>
-
 #include "common/error.h"
+#include "wire_bytes.h"
 
 namespace echoplan::robot {
 namespace {
 
 using ::testing::HasSubstr;
-
-// Appends the wire form of each value.
-struct Bytes {
-  std::vector<std::uint8_t> b;
-  Bytes& u32(std::uint32_t v) { return raw(&v, 4); }
-  Bytes& f64(double v) { return raw(&v, 8); }
-  Bytes& str(const std::string& s) {
-    u32(static_cast<std::uint32_t>(s.size()));
-    return raw(s.data(), s.size());
-  }
-  Bytes& header() { return u32(7).u32(1700000000).u32(5).str("base_link"); }
-  Bytes& raw(const void* p, std::size_t n) {
-    const auto* c = static_cast<const std::uint8_t*>(p);
-    b.insert(b.end(), c, c + n);
-    return *this;
-  }
-};
 
 TEST(BagMessages, DecodeAJointStateFieldByField) {
   Bytes m;
