@@ -47,7 +47,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include "audio/io.h"
 #include "common/error.h"
@@ -55,15 +54,13 @@
 #include "perception/observation_model.h"
 #include "robot/classifier_service.h"
 #include "robot/performance_rows.h"
-#include "robot/performance_streams.h"
 #include "robot/ros/clip_message.h"
 #include "robot/ros/master_watch.h"
-#include "robot/ros/raw_message.h"
 #include "robot/ros/ros_messages.h"
 #include "robot/ros/ros_protocol.h"
 #include "robot/ros/series_topic.h"
-#include "robot/ros/string_message.h"
 #include "robot/transient_error.h"
+#include "sensor_streams.h"
 #include "signal/series_features.h"
 
 namespace {
@@ -80,20 +77,16 @@ struct StreamedModality {
   echoplan::signal::SeriesFeatures features;
 };
 
-// The robot's sensor streams and the planner's performance markers, cut into performances on a
-// queue and thread of their own (so that a request waiting for its end marker does not block
-// them), in the order they arrived.
-class SensorStreams {
+// The model's modalities computed from the robot's sensor streams: which action reads which
+// stream with which features (checked against the model), and each performance's rows.
+class StreamedFeatures {
  public:
-  SensorStreams(ros::NodeHandle& node, const echoplan::perception::ObservationModel& model,
-                std::vector<SeriesTopic> topics, const std::string& marker_topic, double wait_s)
-      : marker_topic_(marker_topic),
-        wait_(std::chrono::duration_cast<std::chrono::milliseconds>(
-            std::chrono::duration<double>(wait_s))),
-        streams_(topic_names(topics), marker_topic) {
-    for (SeriesTopic& t : topics) readers_.emplace_back(std::move(t));
-    match_model(model);
-    subscribe(node);
+  StreamedFeatures(ros::NodeHandle& node, const echoplan::perception::ObservationModel& model,
+                   std::vector<SeriesTopic> topics, const std::string& marker_topic,
+                   std::chrono::milliseconds wait)
+      : wait_(wait) {
+    match_model(model, topics);
+    streams_.emplace(node, std::move(topics), marker_topic);
   }
 
   // Whether `modality` of `action` is computed from a stream.
@@ -113,10 +106,10 @@ class SensorStreams {
     std::vector<std::size_t> wanted;
     for (const StreamedModality& m : it->second) wanted.push_back(m.stream);
     try {
-      const std::vector<echoplan::signal::Series> series = streams_.take(action, wanted, wait_);
+      const std::vector<echoplan::signal::Series> series = streams_->take(action, wanted, wait_);
       for (std::size_t k = 0; k < series.size(); ++k) {
         const StreamedModality& m = it->second[k];
-        out[m.modality] = m.features.extract(series[k], readers_[m.stream].spec().topic);
+        out[m.modality] = m.features.extract(series[k], streams_->topics()[m.stream].topic);
       }
     } catch (const echoplan::InputError& e) {
       throw echoplan::robot::TransientError(e.what());
@@ -125,25 +118,15 @@ class SensorStreams {
   }
 
  private:
-  static std::vector<std::string> topic_names(const std::vector<SeriesTopic>& topics) {
-    std::vector<std::string> names;
-    for (const SeriesTopic& t : topics) names.push_back(t.topic);
-    return names;
-  }
-
-  // Which action reads which stream, checked against the model: every ~series modality must be
-  // one the model computes from a series, and each name it once.
-  void match_model(const echoplan::perception::ObservationModel& model) {
-    std::vector<bool> used(readers_.size(), false);
-    for (std::size_t i = 0; i < readers_.size(); ++i)
-      for (std::size_t j = 0; j < i; ++j)
-        if (readers_[i].spec().modality == readers_[j].spec().modality)
-          throw echoplan::InputError(
-              "~series", 0, fmt::format("modality '{}' named twice", readers_[i].spec().modality));
+  // Which action reads which stream: every ~series modality must be one the model computes from a
+  // series.
+  void match_model(const echoplan::perception::ObservationModel& model,
+                   const std::vector<SeriesTopic>& topics) {
+    std::vector<bool> used(topics.size(), false);
     for (const std::string& action : model.actions())
       for (const echoplan::perception::ModalityModel& m : model.modalities(action))
-        for (std::size_t i = 0; i < readers_.size(); ++i) {
-          if (readers_[i].spec().modality != m.name) continue;
+        for (std::size_t i = 0; i < topics.size(); ++i) {
+          if (topics[i].modality != m.name) continue;
           if (m.series.empty())
             throw echoplan::InputError(
                 "~series", 0,
@@ -155,87 +138,24 @@ class SensorStreams {
               {m.name, i, echoplan::signal::parse_series_features(m.series)});
           used[i] = true;
         }
-    for (std::size_t i = 0; i < readers_.size(); ++i)
+    for (std::size_t i = 0; i < topics.size(); ++i)
       if (!used[i])
         throw echoplan::InputError(
             "~series", 0,
-            fmt::format("no action of the model reads a '{}' series", readers_[i].spec().modality));
+            fmt::format("no action of the model reads a '{}' series", topics[i].modality));
   }
 
-  void subscribe(ros::NodeHandle& node) {
-    ros::SubscribeOptions markers;
-    markers.initByFullCallbackType<const ros::MessageEvent<const echoplan::robot::StringMessage>&>(
-        marker_topic_, 64,
-        [this](const ros::MessageEvent<const echoplan::robot::StringMessage>& e) { on_marker(e); });
-    markers.callback_queue = &queue_;
-    markers.transport_hints = ros::TransportHints().tcpNoDelay();
-    subs_.push_back(node.subscribe(markers));
-    for (std::size_t i = 0; i < readers_.size(); ++i) {
-      ros::SubscribeOptions o;
-      // A joint state publisher at 1 kHz during a 2 s wait: the queue keeps every message.
-      o.initByFullCallbackType<const ros::MessageEvent<const echoplan::robot::RawMessage>&>(
-          readers_[i].spec().topic, 10000,
-          [this, i](const ros::MessageEvent<const echoplan::robot::RawMessage>& e) {
-            on_message(i, e);
-          });
-      o.callback_queue = &queue_;
-      o.transport_hints = ros::TransportHints().tcpNoDelay();
-      subs_.push_back(node.subscribe(o));
-      ROS_INFO("'%s' is computed from %s (%s)", readers_[i].spec().modality.c_str(),
-               readers_[i].spec().topic.c_str(), marker_topic_.c_str());
-    }
-    spinner_.emplace(1, &queue_);
-    spinner_->start();
-  }
-
-  void on_marker(const ros::MessageEvent<const echoplan::robot::StringMessage>& event) {
-    const double time = event.getReceiptTime().toSec();
-    const std::string& text = event.getMessage()->data;
-    const auto marker = echoplan::robot::parse_performance_marker(text);
-    std::string said;
-    if (!marker)
-      said = fmt::format("'{}' is not 'start OBJECT ACTION SESSION' or 'end'; ignored", text);
-    else
-      said = marker->start ? streams_.begin(marker->action, time) : streams_.end(time);
-    if (!said.empty()) ROS_WARN("%s: %s", marker_topic_.c_str(), said.c_str());
-  }
-
-  void on_message(std::size_t stream,
-                  const ros::MessageEvent<const echoplan::robot::RawMessage>& e) {
-    const double time = e.getReceiptTime().toSec();
-    echoplan::robot::SeriesTopicReader& reader = readers_[stream];
-    const ros::M_string& header = e.getConnectionHeader();
-    const auto field = [&](const char* name) {
-      const auto it = header.find(name);
-      return it == header.end() ? std::string() : it->second;
-    };
-    try {
-      const std::vector<double> values =
-          reader.read(field("type"), field("md5sum"), e.getMessage()->bytes);
-      streams_.add(stream, time, reader.channels(), values);
-    } catch (const echoplan::InputError& error) {
-      const std::string problem = fmt::format("message {}: {}", reader.messages(), error.problem());
-      ROS_WARN_THROTTLE(5, "%s: %s", reader.spec().topic.c_str(), problem.c_str());
-      streams_.bad_message(stream, time, problem);
-    }
-  }
-
-  std::vector<echoplan::robot::SeriesTopicReader> readers_;
-  std::map<std::string, std::vector<StreamedModality>> by_action_;
-  std::string marker_topic_;
   std::chrono::milliseconds wait_;
-  echoplan::robot::PerformanceStreams streams_;
-  ros::CallbackQueue queue_;
-  std::vector<ros::Subscriber> subs_;
-  std::optional<ros::AsyncSpinner> spinner_;
+  std::map<std::string, std::vector<StreamedModality>> by_action_;
+  std::optional<echoplan::ros_app::SensorStreams> streams_;
 };
 
 // What the node reads besides the model.
 struct NodeSettings {
-  double feature_wait_s = 2.0;
+  std::chrono::milliseconds feature_wait{2000};
   std::vector<SeriesTopic> series;
   std::string marker_topic = names::kPerformanceTopic;
-  double series_wait_s = 2.0;
+  std::chrono::milliseconds series_wait{2000};
 };
 
 class ObservationNode {
@@ -243,12 +163,10 @@ class ObservationNode {
   ObservationNode(ros::NodeHandle& node,
                   std::shared_ptr<const echoplan::perception::ObservationModel> model,
                   const NodeSettings& settings)
-      : service_(std::move(model)),
-        feature_wait_(std::chrono::duration_cast<std::chrono::milliseconds>(
-            std::chrono::duration<double>(settings.feature_wait_s))) {
+      : service_(std::move(model)), feature_wait_(settings.feature_wait) {
     if (!settings.series.empty())
       streams_.emplace(node, service_.model(), settings.series, settings.marker_topic,
-                       settings.series_wait_s);
+                       settings.series_wait);
     // The sensor modalities not computed from streams come as rows on the feature topic.
     std::map<std::string, std::vector<std::string>> sensors;
     for (const std::string& action : service_.model().actions())
@@ -365,7 +283,7 @@ class ObservationNode {
 
   echoplan::robot::ClassifierService service_;
   std::chrono::milliseconds feature_wait_;
-  std::optional<SensorStreams> streams_;                  // when ~series names streams
+  std::optional<StreamedFeatures> streams_;               // when ~series names streams
   std::optional<echoplan::robot::PerformanceRows> rows_;  // when some sensor modality comes as rows
   ros::CallbackQueue feature_queue_;
   ros::Subscriber feature_sub_;
@@ -374,51 +292,12 @@ class ObservationNode {
   std::optional<echoplan::robot::MasterWatch> watch_;  // after the server it registers again
 };
 
-// A duration parameter: > 0 seconds.
-double seconds_param(ros::NodeHandle& priv, const char* name, double fallback) {
-  double value = fallback;
-  priv.param(name, value, fallback);
-  if (!(value > 0))
-    throw echoplan::InputError(fmt::format("~{}", name), 0,
-                               fmt::format("must be > 0 seconds, got {}", value));
-  return value;
-}
-
 NodeSettings read_settings(ros::NodeHandle& priv) {
   NodeSettings s;
-  s.feature_wait_s = seconds_param(priv, "feature_wait_s", 2.0);
-  s.series_wait_s = seconds_param(priv, "series_wait_s", 2.0);
+  s.feature_wait = echoplan::ros_app::seconds_param(priv, "feature_wait_s", 2.0);
+  s.series_wait = echoplan::ros_app::seconds_param(priv, "series_wait_s", 2.0);
   priv.param<std::string>("marker_topic", s.marker_topic, names::kPerformanceTopic);
-  // A list from a launch file's rosparam; on the command line (where roscpp reads no lists) one
-  // text with the entries separated by commas or spaces.
-  XmlRpc::XmlRpcValue series;
-  if (!priv.getParam("series", series)) return s;
-  std::vector<std::string> entries;
-  if (series.getType() == XmlRpc::XmlRpcValue::TypeString) {
-    std::string text = series;
-    std::replace(text.begin(), text.end(), ',', ' ');
-    std::istringstream words(text);
-    for (std::string w; words >> w;) entries.push_back(w);
-  } else if (series.getType() == XmlRpc::XmlRpcValue::TypeArray) {
-    for (int i = 0; i < series.size(); ++i) {
-      if (series[i].getType() != XmlRpc::XmlRpcValue::TypeString)
-        throw echoplan::InputError(
-            "~series", 0, fmt::format("entry {} is not a MODALITY=TOPIC[:FIELD] text", i + 1));
-      entries.push_back(series[i]);
-    }
-  } else {
-    throw echoplan::InputError(
-        "~series", 0,
-        "expected MODALITY=TOPIC[:FIELD] entries, a list or one text "
-        "separated by commas (effort=/joint_states,force=/wrist/wrench:force)");
-  }
-  for (const std::string& entry : entries) {
-    try {
-      s.series.push_back(echoplan::robot::parse_series_topic(entry));
-    } catch (const echoplan::InputError& e) {
-      throw echoplan::InputError("~series", 0, e.problem());
-    }
-  }
+  s.series = echoplan::ros_app::series_param(priv);
   return s;
 }
 

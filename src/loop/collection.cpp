@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
+#include <utility>
 
 #include "audio/io.h"
 #include "common/csv_reader.h"
@@ -14,6 +16,7 @@
 #include "common/file_io.h"
 #include "common/rng.h"
 #include "common/stable_hash.h"
+#include "robot/transient_error.h"
 
 namespace echoplan::loop {
 
@@ -67,27 +70,52 @@ std::ofstream open_manifest(const fs::path& path) {
   return out;
 }
 
-// Writes one performance's files and returns the manifest's name for it (its WAV).
+// What one performance gave: its clip (when a recorder listened) and its signals.
+struct Performance {
+  std::optional<audio::AudioClip> clip;
+  NamedSeries series;
+};
+
+// Writes one performance's files and returns the manifest's name for it: its WAV, or without one
+// its first series.
 std::string write_performance(const fs::path& root, const std::string& object,
-                              const std::string& behaviour, int session,
-                              const audio::AudioClip& clip, const NamedSeries& series) {
+                              const std::string& behaviour, int session, const Performance& p) {
   const fs::path folder = root / object / behaviour;
   std::error_code ec;
   fs::create_directories(folder, ec);
   if (ec) throw InputError(folder.string(), 0, "cannot create the folder: " + ec.message());
   const std::string stem = fmt::format("{}/{}/s{:03d}", object, behaviour, session);
-  for (const auto& [modality, s] : series)
+  for (const auto& [modality, s] : p.series)
     signal::write_series_csv((root / fmt::format("{}.{}.csv", stem, modality)).string(), s);
+  if (!p.clip) return fmt::format("{}.{}.csv", stem, p.series.front().first);
   const fs::path wav = root / (stem + ".wav");
   const fs::path partial = wav.string() + ".part";
-  audio::write_audio(partial.string(), clip, audio::WriteOptions{});
+  audio::write_audio(partial.string(), *p.clip, audio::WriteOptions{});
   move_into_place(partial, wav);
   return stem + ".wav";
 }
 
+// Performs `behaviour` with the recorder (if any) around it and gathers its signals. A
+// TransientError of the recorder or the signals propagates: the performance is lost.
+std::pair<robot::ActionReport, Performance> perform(robot::Robot& robot, robot::Recorder* recorder,
+                                                    const PerformanceSignals& signals,
+                                                    const std::string& object, int session,
+                                                    const std::string& behaviour) {
+  Performance p;
+  if (recorder) recorder->start(behaviour);
+  robot::ActionReport report = robot.execute(behaviour);
+  if (recorder) p.clip = recorder->stop();
+  if (signals) p.series = signals(object, session, behaviour);
+  if (!recorder && p.series.empty())
+    throw InputError(fmt::format(
+        "{} session {} {}: no microphone and no signal: a performance must record something",
+        object, session, behaviour));
+  return {std::move(report), std::move(p)};
+}
+
 }  // namespace
 
-CollectionSummary collect(robot::Robot& robot, robot::Recorder& recorder,
+CollectionSummary collect(robot::Robot& robot, robot::Recorder* recorder,
                           const CollectionPlan& plan, const PerformanceSignals& signals,
                           const CollectionProgress& progress, const std::atomic<bool>& stop) {
   check_plan(plan);
@@ -117,22 +145,26 @@ CollectionSummary collect(robot::Robot& robot, robot::Recorder& recorder,
               ++trial, object,
               derive_seed(plan.seed, {stable_hash(object), static_cast<std::uint64_t>(session)})};
           robot.begin_trial(context);
-          recorder.begin_trial(context);
+          if (recorder) recorder->begin_trial(context);
           begun = true;
         }
-        recorder.start(behaviour);
-        const robot::ActionReport report = robot.execute(behaviour);
-        const audio::AudioClip clip = recorder.stop();
-        const std::string file =
-            write_performance(root, object, behaviour, session, clip,
-                              signals ? signals(object, session, behaviour) : NamedSeries{});
-        manifest << fmt::format("{},{},{},{},{}\n", file, object, behaviour, session,
-                                to_string(report.status))
-                 << std::flush;
-        if (!manifest) throw InputError((root / "manifest.csv").string(), 0, "cannot write it");
-        ++summary.performed;
-        if (report.status != robot::ActionStatus::done) ++summary.failed;
-        if (progress) progress(object, session, behaviour, summary.performed + summary.kept, total);
+        CollectionStep step{object, session, behaviour, 0, total, ""};
+        try {
+          const auto [report, performance] =
+              perform(robot, recorder, signals, object, session, behaviour);
+          const std::string file = write_performance(root, object, behaviour, session, performance);
+          manifest << fmt::format("{},{},{},{},{}\n", file, object, behaviour, session,
+                                  to_string(report.status))
+                   << std::flush;
+          if (!manifest) throw InputError((root / "manifest.csv").string(), 0, "cannot write it");
+          ++summary.performed;
+          if (report.status != robot::ActionStatus::done) ++summary.failed;
+        } catch (const robot::TransientError& e) {
+          ++summary.lost;
+          step.lost = e.what();
+        }
+        step.done = summary.performed + summary.kept;
+        if (progress) progress(step);
       }
     }
   return summary;

@@ -48,7 +48,8 @@ void add_collect_command(CLI::App& app) {
       "the arm performs each behaviour in turn while the microphone listens, written as "
       "DIR/<object>/<action>/sNNN.wav (and, with --signals, sNNN.effort.csv, sNNN.force.csv) "
       "with DIR/manifest.csv (file, object, action, session, status). Resumable: run it again "
-      "on the same folder and it goes on where it stopped. Here on the simulated robot.\n"
+      "on the same folder and it goes on where it stopped. Here on the simulated robot (a real arm "
+      "over ROS: the echoplan_collector node, docs/real-robot.md).\n"
       "Example: echoplan collect --objects coffee_mug,plastic_cup --sessions 10 -o tree "
       "--signals effort,force");
   struct Options {
@@ -87,10 +88,10 @@ void add_collect_command(CLI::App& app) {
     robot::SimulatedMicrophone microphone(world);
     const StopSignal stop;
     const loop::CollectionSummary summary = loop::collect(
-        arm, microphone, opt->plan, arm_signals(world, opt->signals, opt->plan.seed),
-        [](const std::string& object, int session, const std::string& behaviour, int done,
-           int total) {
-          fmt::print(stderr, "[{}/{}] {} session {} {}\n", done, total, object, session, behaviour);
+        arm, &microphone, opt->plan, arm_signals(world, opt->signals, opt->plan.seed),
+        [](const loop::CollectionStep& s) {
+          fmt::print(stderr, "[{}/{}] {} session {} {}\n", s.done, s.total, s.object, s.session,
+                     s.behaviour);
         },
         stop.flag());
     fmt::print(

@@ -16,7 +16,10 @@
 #     the recordings and from the bag;
 #   - faults of the streams (no joint state in a performance, one lacking a joint, a single one) are
 #     each a skipped observation naming the topic and what went wrong, the belief untouched, and
-#     the trial goes on to a sort.
+#     the trial goes on to a sort;
+#   - echoplan_collector collects a training set from the same driver: every performance's series
+#     holds exactly the values the driver published; one lost to a stopped stream is not written,
+#     and a second run performs only that one.
 set -u
 build=$1
 here=$(cd "$(dirname "$0")" && pwd)
@@ -147,6 +150,42 @@ if "no joint 'j2'" not in faulty[1]["fault"]["detail"]:
 if steps[-1]["action"] in ("lift", "press"):
     sys.exit("the trial did not end in a sort")
 print("3 faults skipped, the trial sorted after %d steps" % len(steps))
+PY
+
+# A training set collected through the same driver: two objects, two sessions of both behaviours.
+# The driver replays the session's first performances in every trial (it restarts per trial).
+collect() {  # collect NAME FAULTS: the collector's exit status
+  stop_all
+  start "robot_$1" /usr/bin/python3 "$here/stream_robot_stand_in.py" "$work/tree" $session 1 "$2"
+  start "collector_$1" timeout 120 "$build/echoplan_collector" _objects:=light,heavy \
+    _behaviours:=lift,press _sessions:=2 _out:="$work/collected" _listen:=false \
+    _series:="$observation_series" _wait_timeout_s:=10
+  wait "$started"
+}
+collect first "2:silent" || fail "echoplan_collector exited $? (first run)"
+grep -q "light session 1 press not recorded (run again to perform it): .*/joint_states: no message during 'press'" \
+  "$work/collector_first.log" || fail "the lost performance is not reported: $(tail -3 "$work/collector_first.log")"
+[ ! -e "$work/collected/light/press/s001.effort.csv" ] || fail "the lost performance was written"
+grep -q "7 performances recorded, 0 already there, 1 lost" "$work/collector_first.log" \
+  || fail "the first run's summary: $(tail -1 "$work/collector_first.log")"
+collect second "" || fail "echoplan_collector exited $? (second run)"
+grep -q "1 performances recorded, 7 already there, 0 lost" "$work/collector_second.log" \
+  || fail "the second run's summary: $(tail -1 "$work/collector_second.log")"
+/usr/bin/python3 - "$work/tree" "$work/collected" $session <<'PY' || fail "the collected series differ from what the driver published"
+import csv, sys
+tree, collected, session = sys.argv[1:4]
+def values(path):  # the samples' values, row by row (times are when they arrived)
+    return [[float(v) for v in row[1:]] for row in list(csv.reader(open(path)))[1:]]
+rows = list(csv.DictReader(open(collected + "/manifest.csv")))
+assert len(rows) == 8 and all(r["status"] == "done" for r in rows), rows
+for r in rows:
+    stem = r["file"].rsplit(".", 2)[0]
+    assert r["file"].endswith(".effort.csv"), r["file"]
+    for modality in ("effort", "force"):
+        got = values(f"{collected}/{stem}.{modality}.csv")
+        want = values(f"{tree}/{r['object']}/{r['action']}/{session}_0.{modality}.csv")
+        assert got == want, (r["file"], modality, got[:2], want[:2])
+print("8 performances, each the driver's samples")
 PY
 
 if [ "$failures" -eq 0 ]; then
