@@ -82,4 +82,60 @@ expect_input_error "not a bag" "not a readable ROS 1 bag" \
   import-bag "$work/tree/manifest.csv" -o "$work/t4" --topic effort=/joint_states
 expect_input_error "a malformed --topic" "expected MODALITY=TOPIC" \
   import-bag "$work/bags/run0.bag" -o "$work/t5" --topic /joint_states
+expect_input_error "nothing to import" "nothing to import" import-bag "$work/bags/run0.bag" -o "$work/t6"
+
+# A robot's microphone in a bag (audio_common_msgs, as audio_capture publishes it): two performances,
+# each a few 100-frame stereo chunks between its markers (a chunk before the first start is not in
+# it), the format latched on /audio/audio_info. "noinfo": the same without the format; "odd": one
+# chunk of 101 bytes.
+write_audio_bag() {
+  /usr/bin/python3 - "$src/tests/robot/ros" "$@" <<'PY'
+import struct, sys
+sys.path.insert(0, sys.argv[1])
+import rosbag, rospy
+from audio_capture_stand_in import AudioData, AudioInfo
+from std_msgs.msg import String
+path, mode = sys.argv[2], sys.argv[3]
+def chunk(first):  # 100 stereo frames: left counts up from `first`, right is minus left
+    return b"".join(struct.pack("<hh", first + i, -(first + i)) for i in range(100))
+with rosbag.Bag(path, "w") as bag:
+    if mode != "noinfo":
+        bag.write("/audio/audio_info", AudioInfo(2, 16000, "S16LE", 0, "wave"), rospy.Time.from_sec(10))
+    bag.write("/audio/audio", AudioData(chunk(-5000)), rospy.Time.from_sec(10.5))
+    t = 11.0
+    for p, (obj, action, chunks) in enumerate((("mug", "strike", 3), ("cup", "slide", 2))):
+        bag.write("/echoplan/performance", String(data=f"start {obj} {action} s1"), rospy.Time.from_sec(t))
+        for c in range(chunks):
+            data = chunk(1000 * p + 100 * c)
+            if mode == "odd" and p == 1:
+                data = data[:101]
+            bag.write("/audio/audio", AudioData(data), rospy.Time.from_sec(t + 0.01 + 0.00625 * c))
+        bag.write("/echoplan/performance", String(data="end"), rospy.Time.from_sec(t + 0.5))
+        t += 1.0
+PY
+}
+write_audio_bag "$work/audio.bag" good || fail "writing the audio bag"
+"$bin" import-bag "$work/audio.bag" -o "$work/audio_tree" --audio /audio/audio >"$work/audio.out" 2>&1 \
+  || { fail "import-bag --audio exited $?"; cat "$work/audio.out"; }
+grep -q "^mug/strike/000.wav,mug,strike,s1$" "$work/audio_tree/manifest.csv" \
+  || { fail "the strike's WAV is not listed"; cat "$work/audio_tree/manifest.csv"; }
+/usr/bin/python3 - "$work/audio_tree" <<'PY' || fail "the WAVs do not hold exactly the chunks of their performances"
+import struct, sys, wave
+for name, first, frames in (("mug/strike/000.wav", 0, 300), ("cup/slide/000.wav", 1000, 200)):
+    with wave.open(f"{sys.argv[1]}/{name}") as w:
+        assert (w.getframerate(), w.getnchannels(), w.getsampwidth()) == (16000, 2, 2), name
+        samples = struct.unpack("<%dh" % (2 * w.getnframes()), w.readframes(w.getnframes()))
+    want = []
+    for c in range(frames // 100):
+        for i in range(100):
+            v = first + 100 * c + i
+            want += [v, -v]
+    assert list(samples) == want, (name, samples[:4], want[:4])
+PY
+write_audio_bag "$work/noinfo.bag" noinfo || fail "writing the bag without format"
+expect_input_error "audio without its format" "no messages on topic /audio/audio_info, where the format of the audio on /audio/audio must be" \
+  import-bag "$work/noinfo.bag" -o "$work/t7" --audio /audio/audio
+write_audio_bag "$work/odd.bag" odd || fail "writing the bag with an odd chunk"
+expect_input_error "a chunk that is not whole frames" "topic /audio/audio message 5: 101 bytes, not a whole number of S16LE frames of 2 channel(s)" \
+  import-bag "$work/odd.bag" -o "$work/t8" --audio /audio/audio
 finish import-bag

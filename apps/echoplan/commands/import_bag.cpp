@@ -1,4 +1,4 @@
-// `echoplan import-bag`: a robot's ROS 1 bag files (joint states, wrenches, performance markers) as
+// `echoplan import-bag`: a robot's ROS 1 bag files (joint states, wrenches, audio, markers) as
 // a recordings tree that `echoplan train` and a dataset world read (robot/ros/bag_import.h). Built
 // when Debian's rosbag storage library is found (ECHOPLAN_HAVE_ROSBAG).
 #include <fmt/core.h>
@@ -17,10 +17,11 @@ void add_import_bag_command(CLI::App& app) {
       "`start OBJECT ACTION SESSION` and the next `end` (std_msgs/String on --markers) becomes "
       "DIR/<object>/<action>/NNN.<modality>.csv, one file per --topic (sensor_msgs/JointState: "
       "effort, position or velocity; geometry_msgs/WrenchStamped: force, torque or wrench), times "
-      "in seconds from the start as the bag recorded them, listed in DIR/manifest.csv with their "
-      "session (docs/feature-sets.md, \"Raw signals\").\n"
+      "in seconds from the start as the bag recorded them, and with --audio the microphone's "
+      "audio_common_msgs/AudioData as DIR/<object>/<action>/NNN.wav, listed in DIR/manifest.csv "
+      "with their session (docs/feature-sets.md, \"Raw signals\").\n"
       "Example: echoplan import-bag run1.bag run2.bag -o tree --topic effort=/joint_states "
-      "--topic force=/wrist/wrench:force");
+      "--topic force=/wrist/wrench:force --audio /audio/audio");
   struct Options {
     robot::BagImportOptions import;
     std::vector<std::string> topics;
@@ -33,8 +34,13 @@ void add_import_bag_command(CLI::App& app) {
   cmd->add_option("--topic", opt->topics,
                   "MODALITY=TOPIC[:FIELD], once per modality (FIELD: effort, position, velocity "
                   "of a JointState, default effort; force, torque, wrench of a WrenchStamped, "
-                  "default force)")
-      ->required();
+                  "default force)");
+  cmd->add_option("--audio", opt->import.audio_topic,
+                  "The robot's microphone topic (audio_common_msgs/AudioData, wave S16LE as "
+                  "audio_capture publishes it): each performance's audio as NNN.wav");
+  cmd->add_option("--audio-info", opt->import.audio_info_topic,
+                  "Where the audio's format is (audio_common_msgs/AudioInfo); default: the "
+                  "--audio topic + _info, where audio_capture publishes it");
   cmd->add_option("--markers", opt->import.marker_topic,
                   "The topic of the performance markers (std_msgs/String)")
       ->capture_default_str();

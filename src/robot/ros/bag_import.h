@@ -10,7 +10,9 @@
 // and wrenches share, whatever their header stamps say.
 //
 // Series topics are read as series_topic.h says (the live observation node reads them the same
-// way). Audio in bags is not read here (record it with `echoplan record` or the ROS recorder).
+// way). Audio: the audio_common_msgs/AudioData chunks of a robot's microphone topic (as
+// audio_capture publishes them: S16LE, format on its AudioInfo topic) received between the
+// markers, written as the performance's NNN.wav.
 #pragma once
 
 #include <functional>
@@ -26,11 +28,13 @@ struct BagImportOptions {
   std::vector<std::string> bags;  // read in this order; markers may not span two bags
   std::string output_dir;         // created; its manifest.csv is replaced
   std::string marker_topic = ros_names::kPerformanceTopic;
-  std::vector<SeriesTopic> series;  // at least one, modalities distinct
+  std::vector<SeriesTopic> series;  // modalities distinct; at least one unless audio_topic is set
+  std::string audio_topic;          // empty: no audio
+  std::string audio_info_topic;     // its format; empty: audio_topic + "_info"
 };
 
 struct BagImportSummary {
-  int performances = 0;  // written, each with one file per series topic
+  int performances = 0;  // written, each with one file per series topic (and its WAV)
   int unfinished = 0;    // started but not ended when a bag ended (not written)
 };
 
@@ -41,8 +45,10 @@ using BagProgress = std::function<void(const std::string&, int)>;
 // for: a bag that cannot be read, a topic with no messages or of another type, a marker that is
 // not `start OBJECT ACTION SESSION` or `end` (or an end with no start, a start inside another), a
 // joint state missing one of the first message's joints or with fewer values than names, a
-// performance with fewer than two samples of a topic. Files appear atomically, the manifest row
-// after them, so an interrupted import keeps every performance it finished.
+// performance with fewer than two samples of a topic; for audio, no format on its info topic or
+// one other than wave S16LE, a chunk that is not whole frames, a performance with no audio. Files
+// appear atomically, the manifest row after them, so an interrupted import keeps every performance
+// it finished.
 BagImportSummary import_bags(const BagImportOptions& options, const BagProgress& progress);
 
 }  // namespace echoplan::robot
