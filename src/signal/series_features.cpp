@@ -16,11 +16,12 @@ namespace echoplan::signal {
 
 const std::vector<SeriesFeaturePreset>& series_feature_presets() {
   static const std::vector<SeriesFeaturePreset> presets = {
-      {"cy101-haptic", "bins(10,sum)",
-       "CY101's haptics: 10 bins per joint torque, each the sum of its samples"},
-      {"ur5-effort", "bins(10,mean)", "the UR5 containers' joint efforts: 10 bins per joint"},
-      {"ur5-force", "bins(10,mean)[force_x,force_y,force_z]",
-       "the UR5 containers' wrist forces: 10 bins per force axis"},
+      {"cy101-haptic", "bins(10,sum,time-major)",
+       "CY101's haptics: 10 bins per joint torque, each the sum of its samples, bin by bin"},
+      {"ur5-effort", "bins(10,mean,time-major)",
+       "the UR5 containers' joint efforts: 10 bins per joint, bin by bin"},
+      {"ur5-force", "bins(10,mean,time-major)[force_x,force_y,force_z]",
+       "the UR5 containers' wrist forces: 10 bins per force axis, bin by bin"},
   };
   return presets;
 }
@@ -51,10 +52,12 @@ std::vector<std::string> split_commas(std::string_view text) {
 [[noreturn]] void bad(std::string_view spec, const std::string& problem) {
   std::vector<std::string> presets;
   for (const auto& p : series_feature_presets()) presets.emplace_back(p.name);
-  throw InputError(fmt::format(
-      "series features '{}': {} (expected bins(N,sum|mean), stats or bands(E0,E1,...), optionally "
-      "followed by [channel,...], or a preset: {})",
-      spec, problem, fmt::join(presets, ", ")));
+  throw InputError(
+      fmt::format("series features '{}': {} (expected bins(N,sum|mean[,time-major]), stats or "
+                  "bands(E0,E1,...), "
+                  "optionally "
+                  "followed by [channel,...], or a preset: {})",
+                  spec, problem, fmt::join(presets, ", ")));
 }
 
 double parse_number(const std::string& text, std::string_view spec) {
@@ -70,7 +73,8 @@ void parse_arguments(SeriesFeatures& f, const std::vector<std::string>& args,
                      std::string_view spec) {
   switch (f.kind) {
     case SeriesFeatures::Kind::bins: {
-      if (args.size() != 2) bad(spec, "bins takes two arguments: how many, and sum or mean");
+      if (args.size() != 2 && args.size() != 3)
+        bad(spec, "bins takes how many, sum or mean, and optionally time-major");
       const double n = parse_number(args[0], spec);
       if (n != std::floor(n) || n < 1 || n > kMaxBins)
         bad(spec, fmt::format("the number of bins must be a whole number from 1 to {}", kMaxBins));
@@ -81,6 +85,9 @@ void parse_arguments(SeriesFeatures& f, const std::vector<std::string>& args,
         f.reduce = SeriesFeatures::Reduce::mean;
       else
         bad(spec, fmt::format("a bin is the sum or the mean of its samples, not '{}'", args[1]));
+      if (args.size() == 3 && args[2] != "time-major")
+        bad(spec, fmt::format("the third argument of bins is time-major, not '{}'", args[2]));
+      f.time_major = args.size() == 3;
       break;
     }
     case SeriesFeatures::Kind::stats:
@@ -110,6 +117,17 @@ void parse_channels(SeriesFeatures& f, std::string_view list, std::string_view s
 }
 
 std::string number_text(double x) { return fmt::format("{}", x); }
+
+// A row laid out channel by channel (`bins` entries each) laid out bin by bin instead.
+template <typename T>
+std::vector<T> bin_by_bin(const std::vector<T>& by_channel, int bins) {
+  const std::size_t b = static_cast<std::size_t>(bins), channels = by_channel.size() / b;
+  std::vector<T> out;
+  out.reserve(by_channel.size());
+  for (std::size_t k = 0; k < b; ++k)
+    for (std::size_t c = 0; c < channels; ++c) out.push_back(by_channel[c * b + k]);
+  return out;
+}
 
 const char* stat_names[] = {"mean", "std", "min", "max", "rms"};
 
@@ -255,7 +273,8 @@ std::string SeriesFeatures::spec() const {
   std::string text;
   switch (kind) {
     case Kind::bins:
-      text = fmt::format("bins({},{})", bins, reduce == Reduce::sum ? "sum" : "mean");
+      text = fmt::format("bins({},{}{})", bins, reduce == Reduce::sum ? "sum" : "mean",
+                         time_major ? ",time-major" : "");
       break;
     case Kind::stats:
       text = "stats";
@@ -297,7 +316,7 @@ std::vector<std::string> SeriesFeatures::feature_names(
         break;
     }
   }
-  return names;
+  return time_major ? bin_by_bin(names, bins) : names;
 }
 
 std::vector<double> SeriesFeatures::extract(const Series& series, const std::string& source) const {
@@ -339,7 +358,7 @@ std::vector<double> SeriesFeatures::extract(const Series& series, const std::str
                                    : band_powers(resampled(series.t, v, dt, grid), dt, band_edges);
     row.insert(row.end(), part.begin(), part.end());
   }
-  return row;
+  return time_major ? bin_by_bin(row, bins) : row;
 }
 
 }  // namespace echoplan::signal

@@ -3,8 +3,12 @@
 // same features (docs/feature-sets.md, "Raw signals").
 //
 // Three kinds, as the field computes haptic and vibration features:
-//   bins(N,sum|mean)   the performance cut into N bins per channel, each bin the sum or the mean of
-//                      its samples (CY101's and the UR5 containers' layout: 10 bins per joint)
+//   bins(N,sum|mean[,time-major])
+//                      the performance cut into N bins per channel, each bin the sum or the mean of
+//                      its samples (CY101's and the UR5 containers' layout: 10 bins per joint);
+//                      laid out channel by channel, or with `time-major` bin by bin (every
+//                      channel's first bin, then every channel's second, ...), as those datasets
+//                      store them
 //   stats              per channel: mean, standard deviation, minimum, maximum, RMS
 //   bands(E0,E1,...)   per channel: the mean power in each band [E_i, E_i+1) Hz of the series
 //                      (vibration), after resampling it onto an even grid at its median rate
@@ -30,6 +34,7 @@ struct SeriesFeatures {
   Kind kind = Kind::bins;
   int bins = 10;                      // bins: how many, 1..1000
   Reduce reduce = Reduce::mean;       // bins: a bin's value
+  bool time_major = false;            // bins: the row bin by bin rather than channel by channel
   std::vector<double> band_edges;     // bands: Hz, >= 0, strictly increasing, at least two
   std::vector<std::string> channels;  // read in this order; empty: every channel, series order
 

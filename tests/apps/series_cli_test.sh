@@ -30,7 +30,7 @@ PY
 "$bin" train --data "$work/tree" --series "effort=cy101-haptic" --hold-out session \
   --out "$work/model.json" --problem-out "$work/problem.yaml" >"$work/train.out" 2>&1 \
   || { fail "train exited $?"; cat "$work/train.out"; }
-grep -q '"series":"bins(10,sum)"' "$work/model.json" || fail "the model does not keep its series features"
+grep -q '"series":"bins(10,sum,time-major)"' "$work/model.json" || fail "the model does not keep its series features"
 grep -q 'effort' "$work/train.out" || fail "train does not report the effort modality"
 
 "$bin" run --data "$work/tree" --object heavy --session s2 --model "$work/model.json" \

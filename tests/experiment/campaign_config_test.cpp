@@ -332,8 +332,8 @@ TEST_F(CampaignNoiseConfig, ADatasetWorldChoosesSeriesFeaturesAndArmsTheirModali
       "modalities: [effort, force]}\nplanner: {episodes: 100}\n";
   const CampaignConfig c = parse_campaign_config(
       world + "  series: {effort: cy101-haptic, force: \"stats[force_z]\"}\n" + arms, source);
-  EXPECT_EQ(c.world.series,
-            (perception::SeriesChoices{{"effort", "bins(10,sum)"}, {"force", "stats[force_z]"}}));
+  EXPECT_EQ(c.world.series, (perception::SeriesChoices{{"effort", "bins(10,sum,time-major)"},
+                                                       {"force", "stats[force_z]"}}));
   const std::vector<ResolvedArm> resolved = resolve_arms(c);
   EXPECT_TRUE(resolved[0].plans_with.modalities.empty());
   EXPECT_EQ(resolved[1].plans_with.modalities, (std::vector<std::string>{"effort", "force"}));
@@ -343,7 +343,7 @@ TEST_F(CampaignNoiseConfig, ADatasetWorldChoosesSeriesFeaturesAndArmsTheirModali
   EXPECT_EQ(back.arms[1].modalities, c.arms[1].modalities);
   const CampaignConfig plain = parse_campaign_config(world + arms, source);
   EXPECT_FALSE(plain.identity()["world"].contains("series"));
-  EXPECT_EQ(c.identity()["world"]["series"]["effort"], "bins(10,sum)");
+  EXPECT_EQ(c.identity()["world"]["series"]["effort"], "bins(10,sum,time-major)");
   try {
     parse_campaign_config(world + "  series: {effort: \"bins(0,sum)\"}\n" + arms, source);
     ADD_FAILURE() << "no error for a bad spec";

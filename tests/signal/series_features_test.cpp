@@ -29,9 +29,10 @@ Series ramps(int channels, int n, double rate) {
   return s;
 }
 
-// CY101's haptics: 7 joint torques, 10 bins each the sum of its samples. With 100 samples of
-// (c + 1) * i, bin k of channel c sums i = 10k .. 10k + 9: (c + 1) * (100k + 45).
-TEST(SeriesFeatures, Cy101PresetSumsTenBinsPerJoint) {
+// CY101's haptics: 7 joint torques, 10 bins each the sum of its samples, stored bin by bin (the
+// dataset's 70 values are 10 rows of 7 joints). With 100 samples of (c + 1) * i, bin k of channel
+// c sums i = 10k .. 10k + 9: (c + 1) * (100k + 45), at entry 7k + c.
+TEST(SeriesFeatures, Cy101PresetSumsTenBinsPerJointBinByBin) {
   const SeriesFeatures f = parse_series_features("cy101-haptic");
   const Series s = ramps(7, 100, 50);
   const std::vector<double> row = f.extract(s, "x");
@@ -39,11 +40,16 @@ TEST(SeriesFeatures, Cy101PresetSumsTenBinsPerJoint) {
   EXPECT_EQ(f.row_length(7), 70u);
   for (int c = 0; c < 7; ++c)
     for (int k = 0; k < 10; ++k)
-      EXPECT_DOUBLE_EQ(row[static_cast<std::size_t>(10 * c + k)], (c + 1.0) * (100 * k + 45));
+      EXPECT_DOUBLE_EQ(row[static_cast<std::size_t>(7 * k + c)], (c + 1.0) * (100 * k + 45));
   const auto names = f.feature_names(s.channels);
   EXPECT_EQ(names.front(), "j1_b1");
-  EXPECT_EQ(names[10], "j2_b1");
+  EXPECT_EQ(names[1], "j2_b1");
+  EXPECT_EQ(names[7], "j1_b2");
   EXPECT_EQ(names.back(), "j7_b10");
+  // Without time-major, the same numbers channel by channel.
+  const std::vector<double> by_channel = parse_series_features("bins(10,sum)").extract(s, "x");
+  EXPECT_DOUBLE_EQ(by_channel[10], 1 * 45 * 2.0);  // j2's first bin
+  EXPECT_EQ(parse_series_features("bins(10,sum)").feature_names(s.channels)[10], "j2_b1");
 }
 
 // 23 samples in 10 bins, as numpy's array_split deals them: three bins of 3, then seven of 2.
@@ -81,9 +87,11 @@ TEST(SeriesFeatures, Ur5ForcePresetReadsTheForceAxesOnly) {
   const SeriesFeatures f = parse_series_features("ur5-force");
   const std::vector<double> row = f.extract(wrench, "x");
   ASSERT_EQ(row.size(), 30u);
-  // force_z is channel 3 (values 3i); its first bin averages i = 0..4: 3 * 2.
-  EXPECT_DOUBLE_EQ(row[20], 6.0);
-  EXPECT_EQ(f.feature_names(wrench.channels)[20], "force_z_b1");
+  // force_z is channel 3 (values 3i); its first bin averages i = 0..4: 3 * 2. Bin by bin, the
+  // first bin's three axes come first.
+  EXPECT_DOUBLE_EQ(row[2], 6.0);
+  EXPECT_EQ(f.feature_names(wrench.channels)[2], "force_z_b1");
+  EXPECT_EQ(f.feature_names(wrench.channels)[3], "force_x_b2");
   EXPECT_EQ(parse_series_features("ur5-effort").extract(ramps(6, 50, 100), "x").size(), 60u);
 }
 
@@ -150,11 +158,12 @@ TEST(SeriesFeatures, BandsRefuseSamplesWithGaps) {
 }
 
 TEST(SeriesFeatures, SpecsReadBackCanonically) {
-  for (const char* spec :
-       {"bins(10,sum)", "bins(3,mean)[a,b]", "stats", "bands(0,2.5,10)", "stats[force_z]"})
+  for (const char* spec : {"bins(10,sum)", "bins(3,mean)[a,b]", "bins(10,mean,time-major)[a]",
+                           "stats", "bands(0,2.5,10)", "stats[force_z]"})
     EXPECT_EQ(parse_series_features(spec).spec(), spec);
   EXPECT_EQ(parse_series_features(" bins( 4 , mean ) ").spec(), "bins(4,mean)");
-  EXPECT_EQ(parse_series_features("ur5-force").spec(), "bins(10,mean)[force_x,force_y,force_z]");
+  EXPECT_EQ(parse_series_features("ur5-force").spec(),
+            "bins(10,mean,time-major)[force_x,force_y,force_z]");
 }
 
 TEST(SeriesFeatures, BadSpecsSayWhatIsWrong) {
@@ -163,7 +172,8 @@ TEST(SeriesFeatures, BadSpecsSayWhatIsWrong) {
                 ::testing::ThrowsMessage<InputError>(HasSubstr(what)))
         << spec;
   };
-  error("bins(10)", "two arguments");
+  error("bins(10)", "how many, sum or mean, and optionally time-major");
+  error("bins(10,sum,time)", "the third argument of bins is time-major, not 'time'");
   error("bins(0,sum)", "whole number from 1");
   error("bins(2.5,sum)", "whole number");
   error("bins(10,max)", "sum or the mean");
