@@ -9,6 +9,7 @@
 #include "loop/table_world.h"
 #include "robot/classifier_service.h"
 #include "robot/replay_recorder.h"
+#include "robot/simulated_sensor_service.h"
 #include "robot/simulated_world.h"
 
 namespace echoplan::loop {
@@ -118,9 +119,14 @@ WorldFactory make_world_factory(WorldInputs in) {
     const std::vector<std::string> sorting = data.sorting;
     make_parts = [spec, sorting, model] {
       auto world = std::make_shared<robot::SimulatedWorld>(*spec.catalogue, *spec.config, sorting);
+      // A model that also reads the arm's sensors hears them from the world's physics.
+      std::unique_ptr<robot::ObservationService> service;
+      if (robot::SimulatedSensorService::reads_sensors(*model))
+        service = std::make_unique<robot::SimulatedSensorService>(world, model);
+      else
+        service = std::make_unique<robot::ClassifierService>(model);
       return RobotParts{std::make_unique<robot::SimulatedArm>(world),
-                        std::make_unique<robot::SimulatedMicrophone>(world),
-                        std::make_unique<robot::ClassifierService>(model),
+                        std::make_unique<robot::SimulatedMicrophone>(world), std::move(service),
                         RecordingChecks{}};  // exact recordings: no level or length checks
     };
   } else {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "common/error.h"
+#include "sim/arm_sensors.h"
 #include "sim/table_choice.h"
 
 namespace echoplan::robot {
@@ -15,7 +16,7 @@ namespace {
 
 // Independent streams of a trial's world, so that listening (which draws sound) never shifts the
 // physics of later actions.
-enum WorldStream : std::uint64_t { physics = 1, sound = 2 };
+enum WorldStream : std::uint64_t { physics = 1, sound = 2, sensors = 3 };
 
 }  // namespace
 
@@ -68,6 +69,7 @@ void SimulatedWorld::begin_trial(const TrialContext& context) {
   surface_ = table.name;
   physics_rng_.seed(derive_seed(context.seed, {physics}));
   sound_rng_.seed(derive_seed(context.seed, {sound}));
+  sensor_rng_.seed(derive_seed(context.seed, {sensors}));
   // The lab's reset: arm home, object at its place (with the trial's placement drawn); every action
   // of the trial then continues from where the last one left the world.
   rig_->robot->reset_trial(physics_rng_);
@@ -88,6 +90,7 @@ ActionReport SimulatedWorld::execute(const std::string& action) {
 ActionReport SimulatedWorld::execute_sensing(const std::string& name, sim::SoundAction action) {
   sim::ActionOutcome outcome = rig_->robot->execute(action, physics_rng_);
   if (listening_) hear(rig_->renderer->render(outcome.trace, outcome.duration_s, sound_rng_));
+  sim::add_sensor_noise(outcome.readings, config_.sensors, sensor_rng_);
   ActionReport report{name, outcome.status, outcome.reason, outcome.duration_s, false, named_};
   last_outcome_ = std::move(outcome);
   return report;

@@ -60,8 +60,8 @@ class SimulatedWorld {
 
   // Resets the scene of `context.object` on the trial's table (the config's table, or one of its
   // list drawn from `context.seed`: sim/table_choice.h; the MuJoCo model of each object and table
-  // is compiled once per world and reused), seeds the trial's physics and sound streams from
-  // `context.seed` and draws the trial's placement from the physics stream. Stops listening.
+  // is compiled once per world and reused), seeds the trial's physics, sound and sensor streams
+  // from `context.seed` and draws the trial's placement from the physics stream. Stops listening.
   void begin_trial(const TrialContext& context);
 
   // Executes `action` (see the file comment). Throws InputError for an unknown action and
@@ -74,7 +74,9 @@ class SimulatedWorld {
   audio::AudioClip stop_listening();
 
   // The simulator's account of the last sensing action (for logs); empty before the first one and
-  // after begin_trial().
+  // after begin_trial(). Its readings are as the arm's sensors measured them: with the sensors'
+  // noise (sim::add_sensor_noise, config().sensors) drawn from the trial's sensor stream, a stream
+  // of its own, so the physics and the sound are the same with or without anyone reading them.
   const std::optional<sim::ActionOutcome>& last_outcome() const { return last_outcome_; }
   // The name of the table the trial is on (empty before the first begin_trial()).
   const std::string& surface() const { return surface_; }
@@ -102,6 +104,7 @@ class SimulatedWorld {
   std::string named_;         // the same when the config chose it, empty on the default
   Rng physics_rng_{0};        // the trial's variability (speeds, placement, ...)
   Rng sound_rng_{0};          // the trial's room, surface profile and noise
+  Rng sensor_rng_{0};         // the arm sensors' noise
   bool listening_ = false;
   audio::AudioClip heard_;  // everything emitted since start_listening()
   std::optional<sim::ActionOutcome> last_outcome_;

@@ -10,8 +10,6 @@
 #include "commands/commands.h"
 #include "commands/sim_options.h"
 #include "common/error.h"
-#include "common/rng.h"
-#include "common/stable_hash.h"
 #include "common/stop_signal.h"
 #include "loop/collection.h"
 #include "robot/simulated_world.h"
@@ -21,22 +19,18 @@ namespace echoplan::cli {
 
 namespace {
 
-// The simulated arm's sensors for the performance just executed, with their noise drawn from a
-// stream of the performance's own.
+// The simulated arm's sensors for the performance just executed, as they measured it (with their
+// noise, drawn from the trial's own stream: robot/simulated_world.h).
 loop::PerformanceSignals arm_signals(std::shared_ptr<robot::SimulatedWorld> world,
-                                     std::vector<std::string> wanted, std::uint64_t seed) {
-  return
-      [world, wanted, seed](const std::string& object, int session, const std::string& behaviour) {
-        std::vector<std::pair<std::string, signal::Series>> out;
-        if (wanted.empty() || !world->last_outcome()) return out;
-        sim::ArmReadings readings = world->last_outcome()->readings;
-        Rng noise(derive_seed(seed, {stable_hash(object), static_cast<std::uint64_t>(session),
-                                     stable_hash(behaviour), stable_hash("arm sensors")}));
-        sim::add_sensor_noise(readings, world->config().sensors, noise);
-        for (const std::string& w : wanted)
-          out.emplace_back(w, w == "effort" ? readings.effort : readings.force);
-        return out;
-      };
+                                     std::vector<std::string> wanted) {
+  return [world, wanted](const std::string&, int, const std::string&) {
+    std::vector<std::pair<std::string, signal::Series>> out;
+    if (wanted.empty() || !world->last_outcome()) return out;
+    const sim::ArmReadings& readings = world->last_outcome()->readings;
+    for (const std::string& w : wanted)
+      out.emplace_back(w, w == "effort" ? readings.effort : readings.force);
+    return out;
+  };
 }
 
 }  // namespace
@@ -88,7 +82,7 @@ void add_collect_command(CLI::App& app) {
     robot::SimulatedMicrophone microphone(world);
     const StopSignal stop;
     const loop::CollectionSummary summary = loop::collect(
-        arm, &microphone, opt->plan, arm_signals(world, opt->signals, opt->plan.seed),
+        arm, &microphone, opt->plan, arm_signals(world, opt->signals),
         [](const loop::CollectionStep& s) {
           fmt::print(stderr, "[{}/{}] {} session {} {}\n", s.done, s.total, s.object, s.session,
                      s.behaviour);

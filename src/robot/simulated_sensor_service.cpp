@@ -1,0 +1,61 @@
+#include "robot/simulated_sensor_service.h"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "common/error.h"
+#include "signal/series_features.h"
+
+namespace echoplan::robot {
+
+namespace {
+
+// The modality `m` of `action` as the simulated arm can give it: an InputError saying why not.
+void check_modality(const perception::ModalityModel& m, const std::string& action) {
+  if (m.classifier->extractor() != nullptr) return;  // computed from the clip
+  const bool measured =
+      m.name == SimulatedSensorService::kEffort || m.name == SimulatedSensorService::kForce;
+  if (!measured || m.series.empty())
+    throw InputError(fmt::format(
+        "the model reads '{}' of '{}' {}; the simulated arm measures series of {} (joint torques) "
+        "and {} (wrist force): train on a recordings tree of those (synth-recordings --signals)",
+        m.name, action, m.series.empty() ? "as rows given by a sensor" : "from a series",
+        SimulatedSensorService::kEffort, SimulatedSensorService::kForce));
+}
+
+}  // namespace
+
+SimulatedSensorService::SimulatedSensorService(
+    std::shared_ptr<SimulatedWorld> world,
+    std::shared_ptr<const perception::ObservationModel> model)
+    : world_(std::move(world)), service_(std::move(model)) {
+  for (const std::string& action : service_.model().actions())
+    for (const perception::ModalityModel& m : service_.model().modalities(action))
+      check_modality(m, action);
+}
+
+bool SimulatedSensorService::reads_sensors(const perception::ObservationModel& model) {
+  for (const std::string& action : model.actions())
+    for (const perception::ModalityModel& m : model.modalities(action))
+      if (m.classifier->extractor() == nullptr) return true;
+  return false;
+}
+
+HeardObservation SimulatedSensorService::observe(const audio::AudioClip& clip,
+                                                 const std::string& action) {
+  const auto& outcome = world_->last_outcome();
+  if (!outcome)
+    throw std::logic_error("SimulatedSensorService::observe before the world's first action");
+  std::vector<std::vector<double>> rows;
+  for (const perception::ModalityModel& m : service_.model().modalities(action)) {
+    if (m.classifier->extractor() != nullptr) continue;
+    const signal::Series& series =
+        m.name == kEffort ? outcome->readings.effort : outcome->readings.force;
+    rows.push_back(signal::parse_series_features(m.series).extract(
+        series, fmt::format("the simulated arm's {}", m.name)));
+  }
+  return service_.observe_performance(action, rows, &clip);
+}
+
+}  // namespace echoplan::robot
