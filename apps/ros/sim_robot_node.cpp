@@ -14,6 +14,13 @@
 //                     device) needs the time to fill its recording
 //   ~sorting_actions  the sorting actions it accepts, comma-separated (default:
 //   "move_to_A,move_to_B")
+//   ~sensors          true: also publish the arm's sensors during each sensing action, as a real
+//                     arm's driver does: its joint torques as sensor_msgs/JointState efforts
+//                     (joints j1..j7) on ~joint_states_topic (/joint_states) and its wrist force as
+//                     geometry_msgs/WrenchStamped on ~wrench_topic (/wrist/wrench), one message per
+//                     reading (sim/arm_sensors.h, with their noise), before ExecuteAction answers;
+//                     what echoplan_observation computes a model's effort and force from (~series).
+//                     Default false
 #include <fmt/format.h>
 #include <ros/ros.h>
 
@@ -27,6 +34,7 @@
 #include "robot/ros/master_watch.h"
 #include "robot/ros/ros_messages.h"
 #include "robot/ros/ros_protocol.h"
+#include "robot/ros/sensor_messages.h"
 #include "robot/simulated_world.h"
 #include "sim/catalogue.h"
 #include "sim/sim_config.h"
@@ -44,10 +52,70 @@ std::vector<std::string> split_commas(const std::string& text) {
   return out;
 }
 
+// Where the arm's sensors are published, when they are.
+struct SensorTopics {
+  std::string joint_states = "/joint_states";
+  std::string wrench = "/wrist/wrench";
+};
+
+// The arm's readings of one action as a driver publishes them: every reading in time order, the
+// joint states and the wrenches interleaved.
+class SensorPublisher {
+ public:
+  SensorPublisher(ros::NodeHandle& node, const SensorTopics& topics)
+      : joints_(node.advertise<echoplan::robot::JointStateOut>(topics.joint_states, 10000)),
+        wrenches_(node.advertise<echoplan::robot::WrenchStampedOut>(topics.wrench, 10000)) {}
+
+  void publish(const echoplan::sim::ArmReadings& readings) {
+    // Subscribers that connect after a message was published never get it: the first action waits
+    // for them a moment, once.
+    if (!waited_) {
+      for (int i = 0;
+           i < 500 && (joints_.getNumSubscribers() == 0 || wrenches_.getNumSubscribers() == 0); ++i)
+        ros::WallDuration(0.01).sleep();
+      waited_ = true;
+    }
+    const echoplan::signal::Series& effort = readings.effort;
+    const echoplan::signal::Series& force = readings.force;
+    std::size_t e = 0, f = 0;
+    while (e < effort.samples() || f < force.samples()) {
+      if (e < effort.samples() && (f >= force.samples() || effort.t[e] <= force.t[f]))
+        joints_.publish(joint_state(effort, e++));
+      else
+        wrenches_.publish(wrench(force, f++));
+    }
+    // Out on their connections before the answer lets the planner mark the performance's end.
+    ros::WallDuration(0.02).sleep();
+  }
+
+ private:
+  echoplan::robot::JointStateOut joint_state(const echoplan::signal::Series& s, std::size_t i) {
+    echoplan::robot::JointStateOut m;
+    m.header.seq = ++seq_;
+    m.header.stamp = ros::Time::now();
+    m.name = s.channels;
+    for (const auto& channel : s.values) m.effort.push_back(channel[i]);
+    return m;
+  }
+  echoplan::robot::WrenchStampedOut wrench(const echoplan::signal::Series& s, std::size_t i) {
+    echoplan::robot::WrenchStampedOut m;
+    m.header.seq = ++seq_;
+    m.header.stamp = ros::Time::now();
+    for (int a = 0; a < 3; ++a) m.force[a] = s.values[static_cast<std::size_t>(a)][i];
+    return m;
+  }
+
+  ros::Publisher joints_, wrenches_;
+  std::uint32_t seq_ = 0;
+  bool waited_ = false;
+};
+
 class SimRobotNode {
  public:
-  SimRobotNode(ros::NodeHandle& node, echoplan::robot::SimulatedWorld& world, double min_duration_s)
+  SimRobotNode(ros::NodeHandle& node, echoplan::robot::SimulatedWorld& world, double min_duration_s,
+               const std::optional<SensorTopics>& sensors)
       : world_(world), min_duration_s_(min_duration_s) {
+    if (sensors) sensors_.emplace(node, *sensors);
     clips_ = node.advertise<echoplan_ros::Clip>(names::kSimClipTopic, 8);
     // BeginTrial first: a planner that finds ExecuteAction takes a missing BeginTrial for an arm
     // reset by hand.
@@ -115,6 +183,7 @@ class SimRobotNode {
           waited_for_listener_ = true;
         }
         clips_.publish(clip);
+        if (sensors_ && world_.last_outcome()) sensors_->publish(world_.last_outcome()->readings);
       }
       response.status = report.status == ActionStatus::done        ? Response::DONE
                         : report.status == ActionStatus::collision ? Response::COLLISION
@@ -144,6 +213,7 @@ class SimRobotNode {
   echoplan::robot::SimulatedWorld& world_;
   double min_duration_s_;
   ros::Publisher clips_;
+  std::optional<SensorPublisher> sensors_;
   ros::ServiceServer execute_;
   ros::ServiceServer begin_;
   std::optional<echoplan::robot::MasterWatch> watch_;  // after the servers it registers again
@@ -171,7 +241,15 @@ int main(int argc, char** argv) {
                                           split_commas(sorting));
     double min_duration_s = 0;
     priv.param("min_duration_s", min_duration_s, 0.0);
-    SimRobotNode server(node, world, min_duration_s);
+    bool sensors = false;
+    priv.param("sensors", sensors, false);
+    std::optional<SensorTopics> topics;
+    if (sensors) {
+      topics.emplace();
+      priv.param<std::string>("joint_states_topic", topics->joint_states, topics->joint_states);
+      priv.param<std::string>("wrench_topic", topics->wrench, topics->wrench);
+    }
+    SimRobotNode server(node, world, min_duration_s, topics);
     ROS_INFO("simulated robot ready: %s, %s", names::kExecuteActionService,
              names::kBeginTrialService);
     // One thread: MuJoCo's data is not shared, and actions run one at a time like on an arm.

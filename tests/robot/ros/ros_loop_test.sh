@@ -14,6 +14,11 @@
 #                     every clip, an aborted action's too, must be the same bytes
 #   run               the all-simulated layout with the planner told the true object: its log equals
 #                     `echoplan run --object` (the in-process loop's command), byte for byte
+#   torque            as run, with a model of sound, joint torques and wrist force (trained on
+#                     `synth-recordings --signals audio,effort,force`): the simulated robot publishes
+#                     its sensors (~sensors) as JointState and WrenchStamped, the observation node
+#                     cuts them between the planner's markers (~series), and the log equals `echoplan
+#                     run`'s, whose simulated world computes the same rows from its physics in process
 #   levels            as run, planning with observations graded by each recording's level
 #                     (problem-levels.yaml): the level grade crosses the observation service, every
 #                     heard observation is `<class>@<level>`, and the log equals `echoplan run`'s
@@ -64,11 +69,27 @@ fi
 case "$case_name" in kill_* | restart_* | retry_safe | fail_unsafe) trials=3 ;; esac
 object_param=()
 problem=$work/problem.yaml
-if [ "$case_name" = run ] || [ "$case_name" = levels ]; then
+model=$work/model.json
+sim_params=()
+observation_params=()
+if [ "$case_name" = run ] || [ "$case_name" = levels ] || [ "$case_name" = torque ]; then
   trials=1
   object_param=(_object:=coffee_mug)
 fi
 [ "$case_name" = levels ] && problem=$work/problem-levels.yaml
+if [ "$case_name" = torque ]; then
+  source_dir=$(cd "$(dirname "$0")/../../.." && pwd)
+  "$build/echoplan" synth-recordings --per-pair 3 --seed 2 --signals audio,effort,force -o "$work/torque_tree" \
+    >"$work/torque_synth.log" 2>&1 || { fail "synth-recordings"; cat "$work/torque_synth.log"; exit 1; }
+  "$build/echoplan" train --data "$work/torque_tree" --series effort=ur5-effort --series force=ur5-force \
+    --problem-base "$source_dir/problems/audio_objects.yaml" --out "$work/torque.json" \
+    --problem-out "$work/torque.yaml" >"$work/torque_train.log" 2>&1 \
+    || { fail "train"; cat "$work/torque_train.log"; exit 1; }
+  model=$work/torque.json
+  problem=$work/torque.yaml
+  sim_params=(_sensors:=true)
+  observation_params=(_series:=effort=/joint_states,force=/wrist/wrench:force)
+fi
 
 if [ "$case_name" = launch ]; then
   # The all-simulated layout as its launch file starts it (the package the build makes in build/ros).
@@ -87,7 +108,6 @@ else
       start flaky_arm /usr/bin/python3 "$(dirname "$0")/flaky_arm_stand_in.py" $retry_safe
   else
     # restart_master: actions that take a while, so the run outlasts the master's restart.
-    sim_params=()
     case "$case_name" in *_master) sim_params=(_min_duration_s:=0.4) ;; esac
     start sim_robot "$build/echoplan_sim_robot" "${sim_params[@]}"
   fi
@@ -98,7 +118,7 @@ else
     PYTHONPATH=$build/ros/python${PYTHONPATH:+:$PYTHONPATH} \
       start observation /usr/bin/python3 "$(dirname "$0")/dying_observation_stand_in.py"
   else
-    start observation "$build/echoplan_observation" _model:="$work/model.json"
+    start observation "$build/echoplan_observation" _model:="$model" "${observation_params[@]}"
   fi
   observation_pid=$started
   start planner timeout 120 "$build/echoplan_planner" _problem:="$problem" _out:="$work/ros_run" \
@@ -178,12 +198,12 @@ wait "$planner_pid"
 status=$?
 
 case "$case_name" in
-  sim | mic | launch | run | levels)
+  sim | mic | launch | run | levels | torque)
     [ "$status" -eq 0 ] || { fail "echoplan_planner exited $status"; cat "$work/planner.log"; }
     ref_source=sim
     [ "$case_name" = mic ] && ref_source=mic
-    if [ "$case_name" = run ] || [ "$case_name" = levels ]; then
-      "$build/echoplan" run --object coffee_mug --problem "$problem" --model "$work/model.json" \
+    if [ "$case_name" = run ] || [ "$case_name" = levels ] || [ "$case_name" = torque ]; then
+      "$build/echoplan" run --object coffee_mug --problem "$problem" --model "$model" \
         --seed $seed --episodes $episodes --out "$work/in_process" >"$work/reference.log" 2>&1 \
         || { fail "echoplan run failed"; cat "$work/reference.log"; }
     else
