@@ -14,6 +14,9 @@
 
 namespace echoplan::robot {
 
+inline constexpr const char* kJointStateType = "sensor_msgs/JointState";
+inline constexpr const char* kWrenchStampedType = "geometry_msgs/WrenchStamped";
+inline constexpr const char* kStringType = "std_msgs/String";
 inline constexpr const char* kJointStateMd5 = "3066dcd76a6cfaef579bd0f34173e9fd";
 inline constexpr const char* kWrenchStampedMd5 = "d78d3cb249ce23087ade7e7d0c40cfa7";
 inline constexpr const char* kStringMd5 = "992ce8a1687cec8c8bd883ec73ca41d1";

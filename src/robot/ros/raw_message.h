@@ -8,11 +8,12 @@
 // nodes' package, and what it adds (republishing) is not needed; this is the part of it used.
 #pragma once
 
-#include <ros/message_traits.h>
 #include <ros/serialization.h>
 
 #include <cstdint>
 #include <vector>
+
+#include "robot/ros/message_type.h"
 
 namespace echoplan::robot {
 
@@ -22,31 +23,8 @@ struct RawMessage {
 
 }  // namespace echoplan::robot
 
-namespace ros::message_traits {
-
-template <>
-struct IsMessage<echoplan::robot::RawMessage> : TrueType {};
-template <>
-struct IsMessage<const echoplan::robot::RawMessage> : TrueType {};
-
 // "*": any type and layout, as roscpp's own generic subscribers declare.
-template <>
-struct MD5Sum<echoplan::robot::RawMessage> {
-  static const char* value() { return "*"; }
-  static const char* value(const echoplan::robot::RawMessage&) { return value(); }
-};
-template <>
-struct DataType<echoplan::robot::RawMessage> {
-  static const char* value() { return "*"; }
-  static const char* value(const echoplan::robot::RawMessage&) { return value(); }
-};
-template <>
-struct Definition<echoplan::robot::RawMessage> {
-  static const char* value() { return ""; }
-  static const char* value(const echoplan::robot::RawMessage&) { return value(); }
-};
-
-}  // namespace ros::message_traits
+ECHOPLAN_ROS_MESSAGE_TYPE(echoplan::robot::RawMessage, "*", "*", "")
 
 namespace ros::serialization {
 

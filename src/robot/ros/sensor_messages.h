@@ -8,7 +8,6 @@
 // bag_messages.h's.
 #pragma once
 
-#include <ros/message_traits.h>
 #include <ros/serialization.h>
 #include <ros/time.h>
 
@@ -17,6 +16,7 @@
 #include <vector>
 
 #include "robot/ros/bag_messages.h"
+#include "robot/ros/message_type.h"
 #include "robot/ros/ros_messages.h"
 
 namespace echoplan::robot {
@@ -56,35 +56,11 @@ inline constexpr const char* kWrenchStampedDefinition =
 
 }  // namespace echoplan::robot
 
-namespace ros::message_traits {
-
-#define ECHOPLAN_OUT_MESSAGE_TRAITS(Type, name, md5, definition)               \
-  template <>                                                                  \
-  struct IsMessage<echoplan::robot::Type> : TrueType {};                       \
-  template <>                                                                  \
-  struct MD5Sum<echoplan::robot::Type> {                                       \
-    static const char* value() { return md5; }                                 \
-    static const char* value(const echoplan::robot::Type&) { return value(); } \
-  };                                                                           \
-  template <>                                                                  \
-  struct DataType<echoplan::robot::Type> {                                     \
-    static const char* value() { return name; }                                \
-    static const char* value(const echoplan::robot::Type&) { return value(); } \
-  };                                                                           \
-  template <>                                                                  \
-  struct Definition<echoplan::robot::Type> {                                   \
-    static const char* value() { return definition; }                          \
-    static const char* value(const echoplan::robot::Type&) { return value(); } \
-  };
-
-ECHOPLAN_OUT_MESSAGE_TRAITS(JointStateOut, "sensor_msgs/JointState",
-                            echoplan::robot::kJointStateMd5, echoplan::robot::kJointStateDefinition)
-ECHOPLAN_OUT_MESSAGE_TRAITS(WrenchStampedOut, "geometry_msgs/WrenchStamped",
-                            echoplan::robot::kWrenchStampedMd5,
-                            echoplan::robot::kWrenchStampedDefinition)
-#undef ECHOPLAN_OUT_MESSAGE_TRAITS
-
-}  // namespace ros::message_traits
+ECHOPLAN_ROS_MESSAGE_TYPE(echoplan::robot::JointStateOut, echoplan::robot::kJointStateType,
+                          echoplan::robot::kJointStateMd5, echoplan::robot::kJointStateDefinition)
+ECHOPLAN_ROS_MESSAGE_TYPE(echoplan::robot::WrenchStampedOut, echoplan::robot::kWrenchStampedType,
+                          echoplan::robot::kWrenchStampedMd5,
+                          echoplan::robot::kWrenchStampedDefinition)
 
 namespace ros::serialization {
 

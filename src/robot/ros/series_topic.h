@@ -15,11 +15,9 @@
 #include <string>
 #include <vector>
 
-namespace echoplan::robot {
+#include "robot/ros/bag_messages.h"
 
-inline constexpr const char* kJointStateType = "sensor_msgs/JointState";
-inline constexpr const char* kWrenchStampedType = "geometry_msgs/WrenchStamped";
-inline constexpr const char* kStringType = "std_msgs/String";
+namespace echoplan::robot {
 
 // One modality and where it comes from: `effort=/joint_states:effort`.
 struct SeriesTopic {

@@ -6,12 +6,12 @@
 // definition, so it talks to any std_msgs/String publisher or subscriber (rospy, rosbag).
 #pragma once
 
-#include <ros/message_traits.h>
 #include <ros/serialization.h>
 
 #include <string>
 
 #include "robot/ros/bag_messages.h"
+#include "robot/ros/message_type.h"
 
 namespace echoplan::robot {
 
@@ -21,29 +21,8 @@ struct StringMessage {
 
 }  // namespace echoplan::robot
 
-namespace ros::message_traits {
-
-template <>
-struct IsMessage<echoplan::robot::StringMessage> : TrueType {};
-template <>
-struct IsMessage<const echoplan::robot::StringMessage> : TrueType {};
-template <>
-struct MD5Sum<echoplan::robot::StringMessage> {
-  static const char* value() { return echoplan::robot::kStringMd5; }
-  static const char* value(const echoplan::robot::StringMessage&) { return value(); }
-};
-template <>
-struct DataType<echoplan::robot::StringMessage> {
-  static const char* value() { return "std_msgs/String"; }
-  static const char* value(const echoplan::robot::StringMessage&) { return value(); }
-};
-template <>
-struct Definition<echoplan::robot::StringMessage> {
-  static const char* value() { return "string data\n"; }
-  static const char* value(const echoplan::robot::StringMessage&) { return value(); }
-};
-
-}  // namespace ros::message_traits
+ECHOPLAN_ROS_MESSAGE_TYPE(echoplan::robot::StringMessage, echoplan::robot::kStringType,
+                          echoplan::robot::kStringMd5, "string data\n")
 
 namespace ros::serialization {
 
