@@ -7,11 +7,10 @@
 
 #include <atomic>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "../common/test_folder.h"
 #include "common/error.h"
+#include "common/file_io.h"
 #include "robot/transient_error.h"
 
 namespace echoplan::loop {
@@ -35,12 +34,7 @@ signal::Series effort(double value) {
   return {{"j1"}, {0.0, 0.01, 0.02}, {{value, value + 1, value + 2}}};
 }
 
-std::string text_of(const fs::path& path) {
-  std::ifstream in(path);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
-}
+std::string text_of(const fs::path& path) { return read_text_file(path.string(), "the file"); }
 
 class Collection : public TestFolder {
  protected:
