@@ -152,6 +152,19 @@ if steps[-1]["action"] in ("lift", "press"):
 print("3 faults skipped, the trial sorted after %d steps" % len(steps))
 PY
 
+# ~series that does not fit the model: exit status 2 before serving, saying why.
+for bad in "vision=/camera:vision" "effort=/joint_states,effort=/other"; do
+  timeout 20 "$build/echoplan_observation" _model:="$work/model.json" _series:="$bad" \
+    __name:=bad_observation >"$work/bad_series.log" 2>&1
+  status=$?
+  [ "$status" -eq 2 ] || fail "~series $bad: exit status $status, expected 2"
+done
+grep -q "modality 'effort' named twice" "$work/bad_series.log" || fail "a modality named twice: $(tail -1 "$work/bad_series.log")"
+timeout 20 "$build/echoplan_observation" _model:="$work/model.json" _series:=vision=/camera \
+  __name:=bad_observation >"$work/bad_series.log" 2>&1
+grep -q "no action of the model reads a 'vision' series" "$work/bad_series.log" \
+  || fail "a modality the model does not read: $(tail -1 "$work/bad_series.log")"
+
 # A training set collected through the same driver: two objects, two sessions of both behaviours.
 # The driver replays the session's first performances in every trial (it restarts per trial).
 collect() {  # collect NAME FAULTS: the collector's exit status
