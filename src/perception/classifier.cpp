@@ -18,10 +18,11 @@ struct Preset {
   const char* rows;
 };
 
-constexpr std::array<Preset, 4> kPresets{{{"summary-lda", "summary", "lda-class-scaled"},
+constexpr std::array<Preset, 5> kPresets{{{"summary-lda", "summary", "lda-class-scaled"},
                                           {"summary-nearest-mean", "summary", "nearest-mean"},
                                           {"report-template", "onset-logfbank", "template"},
-                                          {"report-gaussian", "centroid-rms", "gaussian"}}};
+                                          {"report-gaussian", "centroid-rms", "gaussian"},
+                                          {"grid-lda", "spectrogram-grid", "lda-class-scaled"}}};
 
 }  // namespace
 

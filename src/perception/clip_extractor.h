@@ -4,6 +4,7 @@
 //   summary         the 123 level-normalised summary features (summary_features.h)
 //   onset-logfbank  the onset-aligned log-filterbank window of the report's templates
 //   centroid-rms    (spectral centroid in Hz, RMS) of the whole clip
+//   spectrogram-grid  CY101's 10 x 10 grid of mean log powers (spectrogram_grid.h)
 #pragma once
 
 #include <string>
