@@ -1,5 +1,7 @@
-// The 10 x 10 spectrogram grid: CY101's audio features (Sinapov et al.'s computation, as its code
-// computes them), a clip as 100 numbers, each the mean log power of one block of its spectrogram.
+// The 10 x 10 spectrogram grid: CY101's audio layout, a clip as 100 numbers, each the mean log
+// power of one block of its spectrogram, computed as the code Sinapov et al. published with an
+// earlier study on the same robot computes it (the run that made the CY101 files is not published;
+// its values, 10 to 27, are the size this gives).
 //
 // From the clip's mono samples at the analysis rate fs, scaled to 16-bit integers (x 32768, as the
 // original reads a WAV's samples): frames of round(0.025625 fs) samples every round(0.01 fs) (410
