@@ -12,12 +12,13 @@ void add_series_option(CLI::App& cmd, std::vector<std::string>& typed) {
   std::vector<std::string> presets;
   for (const auto& p : signal::series_feature_presets())
     presets.push_back(fmt::format("{} = {}", p.name, p.spec));
-  cmd.add_option("--series", typed,
-                 fmt::format("How a recordings tree's series <name>.<modality>.csv become rows, "
-                             "as MODALITY=FEATURES (repeatable): bins(N,sum|mean), stats or "
-                             "bands(E0,E1,...) in Hz, optionally followed by [channel,...], or a "
-                             "preset ({}). Default for every series: {}",
-                             fmt::join(presets, "; "), signal::kDefaultSeriesFeatures));
+  cmd.add_option(
+      "--series", typed,
+      fmt::format("How a recordings tree's series <name>.<modality>.csv become rows, "
+                  "as MODALITY=FEATURES (repeatable): bins(N,sum|mean[,time-major]), stats or "
+                  "bands(E0,E1,...) in Hz, optionally followed by [channel,...], or a "
+                  "preset ({}). Default for every series: {}",
+                  fmt::join(presets, "; "), signal::kDefaultSeriesFeatures));
 }
 
 perception::SeriesChoices parse_series_choices(const std::vector<std::string>& typed) {
