@@ -31,7 +31,6 @@
 
 #include <memory>
 #include <set>
-#include <sstream>
 
 #include "common/error.h"
 #include "common/stop_signal.h"
@@ -50,28 +49,11 @@ namespace {
 namespace names = echoplan::robot::ros_names;
 using echoplan::InputError;
 
-// A required list parameter: a list, or one text separated by commas or spaces.
+// A required list of names (words_param).
 std::vector<std::string> names_param(ros::NodeHandle& priv, const char* name) {
-  std::vector<std::string> out;
-  XmlRpc::XmlRpcValue value;
-  if (!priv.getParam(name, value))
-    throw InputError(fmt::format("~{}", name), 0, "the parameter is required");
-  if (value.getType() == XmlRpc::XmlRpcValue::TypeArray) {
-    for (int i = 0; i < value.size(); ++i) {
-      if (value[i].getType() != XmlRpc::XmlRpcValue::TypeString)
-        throw InputError(fmt::format("~{}", name), 0, fmt::format("entry {} is not a name", i + 1));
-      out.push_back(value[i]);
-    }
-    return out;
-  }
-  if (value.getType() != XmlRpc::XmlRpcValue::TypeString)
-    throw InputError(fmt::format("~{}", name), 0,
-                     "expected names: a list, or one text with commas");
-  std::string text = value;
-  std::replace(text.begin(), text.end(), ',', ' ');
-  std::istringstream words(text);
-  for (std::string w; words >> w;) out.push_back(w);
-  return out;
+  auto names = echoplan::ros_app::words_param(priv, name);
+  if (!names) throw InputError(fmt::format("~{}", name), 0, "the parameter is required");
+  return std::move(*names);
 }
 
 echoplan::loop::CollectionPlan read_plan(ros::NodeHandle& priv) {

@@ -17,37 +17,34 @@ std::vector<std::string> topic_names(const std::vector<robot::SeriesTopic>& topi
   return names;
 }
 
-// The entries of ~series as texts.
-std::vector<std::string> series_entries(const XmlRpc::XmlRpcValue& series) {
-  std::vector<std::string> entries;
-  if (series.getType() == XmlRpc::XmlRpcValue::TypeString) {
-    std::string text = static_cast<const std::string&>(series);
-    std::replace(text.begin(), text.end(), ',', ' ');
-    std::istringstream words(text);
-    for (std::string w; words >> w;) entries.push_back(w);
-    return entries;
-  }
-  if (series.getType() != XmlRpc::XmlRpcValue::TypeArray)
-    throw InputError("~series", 0,
-                     "expected MODALITY=TOPIC[:FIELD] entries, a list or one text separated by "
-                     "commas (effort=/joint_states,force=/wrist/wrench:force)");
-  XmlRpc::XmlRpcValue list = series;  // operator[] is not const
-  for (int i = 0; i < list.size(); ++i) {
-    if (list[i].getType() != XmlRpc::XmlRpcValue::TypeString)
-      throw InputError("~series", 0,
-                       fmt::format("entry {} is not a MODALITY=TOPIC[:FIELD] text", i + 1));
-    entries.push_back(list[i]);
-  }
-  return entries;
-}
-
 }  // namespace
+
+std::optional<std::vector<std::string>> words_param(ros::NodeHandle& priv, const char* name) {
+  XmlRpc::XmlRpcValue value;
+  if (!priv.getParam(name, value)) return std::nullopt;
+  std::vector<std::string> words;
+  if (value.getType() == XmlRpc::XmlRpcValue::TypeString) {
+    std::string text = static_cast<const std::string&>(value);
+    std::replace(text.begin(), text.end(), ',', ' ');
+    std::istringstream in(text);
+    for (std::string w; in >> w;) words.push_back(w);
+    return words;
+  }
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray)
+    throw InputError(fmt::format("~{}", name), 0,
+                     "expected a list, or one text with its entries separated by commas");
+  for (int i = 0; i < value.size(); ++i) {
+    if (value[i].getType() != XmlRpc::XmlRpcValue::TypeString)
+      throw InputError(fmt::format("~{}", name), 0, fmt::format("entry {} is not a text", i + 1));
+    words.push_back(value[i]);
+  }
+  return words;
+}
 
 std::vector<robot::SeriesTopic> series_param(ros::NodeHandle& priv) {
   std::vector<robot::SeriesTopic> topics;
-  XmlRpc::XmlRpcValue series;
-  if (!priv.getParam("series", series)) return topics;
-  for (const std::string& entry : series_entries(series)) {
+  for (const std::string& entry :
+       words_param(priv, "series").value_or(std::vector<std::string>{})) {
     try {
       topics.push_back(robot::parse_series_topic(entry));
     } catch (const InputError& e) {

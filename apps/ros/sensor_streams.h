@@ -20,10 +20,13 @@
 
 namespace echoplan::ros_app {
 
-// The private parameter ~series: MODALITY=TOPIC[:FIELD] entries, a list (a launch file's
-// rosparam) or one text separated by commas or spaces (the command line, where roscpp reads no
-// lists). Empty when not set. InputError naming ~series for a malformed entry or a modality named
-// twice.
+// A private parameter holding several words: a list of texts (a launch file's rosparam) or one
+// text separated by commas or spaces (the command line, where roscpp reads no lists). Nothing when
+// it is not set; InputError naming ~NAME when it is neither.
+std::optional<std::vector<std::string>> words_param(ros::NodeHandle& priv, const char* name);
+
+// The private parameter ~series: MODALITY=TOPIC[:FIELD] entries (words_param). Empty when not set.
+// InputError naming ~series for a malformed entry or a modality named twice.
 std::vector<robot::SeriesTopic> series_param(ros::NodeHandle& priv);
 
 class SensorStreams {
