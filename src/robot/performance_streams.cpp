@@ -19,8 +19,12 @@ std::string PerformanceStreams::begin(const std::string& action, double time) {
         "a start of '{}' while '{}' was under way (since {:.3f} s): that "
         "performance had no end and is dropped",
         action, open_->action, time - open_->start);
-  open_ = Performance{action, time, time, std::vector<signal::Series>(streams_.size()),
-                      std::vector<std::string>(streams_.size())};
+  open_ = Performance{action,
+                      time,
+                      time,
+                      std::vector<signal::Series>(streams_.size()),
+                      std::vector<std::string>(streams_.size()),
+                      last_message_};
   return dropped;
 }
 
@@ -69,7 +73,8 @@ signal::Series PerformanceStreams::stream_series(const Performance& done, std::s
   const signal::Series& series = done.series[s];
   const double length = done.end - done.start;
   if (series.samples() == 0) {
-    const std::optional<double>& last = last_message_[s];
+    // When the stream last spoke before the performance began (it may have spoken again since).
+    const std::optional<double>& last = done.last_before[s];
     throw InputError(
         source, 0,
         fmt::format(

@@ -66,6 +66,7 @@ class PerformanceStreams {
     double start = 0, end = 0;
     std::vector<signal::Series> series;  // per stream
     std::vector<std::string> problems;   // per stream: the first message that could not be read
+    std::vector<std::optional<double>> last_before;  // per stream: its last message before start
   };
   // The series of stream `s` in `done`, or the InputError saying why it cannot be heard (caller
   // holds mutex_).

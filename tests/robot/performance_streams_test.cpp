@@ -120,6 +120,7 @@ TEST(PerformanceStreams, AStreamThatStoppedSaysWhenItLastSpoke) {
   s.add(kForce, 7.6, kForceAxes, {0, 0, 1});
   s.add(kForce, 7.7, kForceAxes, {0, 0, 1});
   s.end(8.0);
+  s.add(kEffort, 8.2, kJoints, {1.0, 1.0});  // it speaks again after the end, before the request
   EXPECT_EQ(error_of(s, "press", "/joint_states", {kForce, kEffort}),
             "no message during 'press' (0.500 s): the stream stopped (its last message came 3.500 "
             "s before the performance began)");
