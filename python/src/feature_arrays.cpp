@@ -325,8 +325,18 @@ void bind_feature_sets(py::module_& m) {
          std::optional<std::string> table, std::optional<bool> fuse, std::optional<bool> temper,
          std::optional<int> sample_rate) {
         return fit(data, groups, std::move(hold_out), std::move(training_sessions),
-                   perception::FitChoices{cv, classifier, table, folds, sample_rate, seed, reject,
-                                          fuse, temper, reject_margin, alpha});
+                   perception::FitChoices{cv,
+                                          classifier,
+                                          table,
+                                          folds,
+                                          sample_rate,
+                                          seed,
+                                          reject,
+                                          fuse,
+                                          temper,
+                                          reject_margin,
+                                          alpha,
+                                          {}});
       },
       py::arg("data"), py::kw_only(), py::arg("groups") = py::none(),
       py::arg("hold_out") = py::none(), py::arg("training_sessions") = py::none(),
