@@ -31,8 +31,11 @@ SimulatedSensorService::SimulatedSensorService(
     std::shared_ptr<const perception::ObservationModel> model)
     : world_(std::move(world)), service_(std::move(model)) {
   for (const std::string& action : service_.model().actions())
-    for (const perception::ModalityModel& m : service_.model().modalities(action))
+    for (const perception::ModalityModel& m : service_.model().modalities(action)) {
       check_modality(m, action);
+      if (m.classifier->extractor() == nullptr)
+        sensors_[action].push_back({m.name == kEffort, signal::parse_series_features(m.series)});
+    }
 }
 
 bool SimulatedSensorService::reads_sensors(const perception::ObservationModel& model) {
@@ -48,13 +51,11 @@ HeardObservation SimulatedSensorService::observe(const audio::AudioClip& clip,
   if (!outcome)
     throw std::logic_error("SimulatedSensorService::observe before the world's first action");
   std::vector<std::vector<double>> rows;
-  for (const perception::ModalityModel& m : service_.model().modalities(action)) {
-    if (m.classifier->extractor() != nullptr) continue;
-    const signal::Series& series =
-        m.name == kEffort ? outcome->readings.effort : outcome->readings.force;
-    rows.push_back(signal::parse_series_features(m.series).extract(
-        series, fmt::format("the simulated arm's {}", m.name)));
-  }
+  if (const auto it = sensors_.find(action); it != sensors_.end())
+    for (const Sensor& s : it->second)
+      rows.push_back(s.features.extract(
+          s.effort ? outcome->readings.effort : outcome->readings.force,
+          s.effort ? "the simulated arm's effort" : "the simulated arm's force"));
   return service_.observe_performance(action, rows, &clip);
 }
 

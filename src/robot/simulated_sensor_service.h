@@ -8,13 +8,16 @@
 // arm's streams.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "perception/observation_model.h"
 #include "robot/classifier_service.h"
 #include "robot/simulated_world.h"
+#include "signal/series_features.h"
 
 namespace echoplan::robot {
 
@@ -37,8 +40,15 @@ class SimulatedSensorService final : public ObservationService {
   HeardObservation observe(const audio::AudioClip& clip, const std::string& action) override;
 
  private:
+  // A modality of an action read from the arm: which reading, and its features (parsed once).
+  struct Sensor {
+    bool effort = true;  // the joint torques; false: the wrist force
+    signal::SeriesFeatures features;
+  };
+
   std::shared_ptr<SimulatedWorld> world_;
   ClassifierService service_;
+  std::map<std::string, std::vector<Sensor>> sensors_;  // by action, in the model's order
 };
 
 }  // namespace echoplan::robot
