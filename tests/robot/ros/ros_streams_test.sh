@@ -184,6 +184,20 @@ grep -q "7 performances recorded, 0 already there, 1 lost" "$work/collector_firs
 collect second "" || fail "echoplan_collector exited $? (second run)"
 grep -q "1 performances recorded, 7 already there, 0 lost" "$work/collector_second.log" \
   || fail "the second run's summary: $(tail -1 "$work/collector_second.log")"
+# The collector's parameters that cannot make a collection: exit status 2, saying why, nothing written.
+bad_collector() {  # bad_collector MESSAGE PARAM...
+  local message=$1
+  shift
+  timeout 20 "$build/echoplan_collector" _out:="$work/not_collected" __name:=bad_collector "$@" \
+    >"$work/bad_collector.log" 2>&1
+  local status=$?
+  [ "$status" -eq 2 ] || fail "collector $*: exit status $status, expected 2"
+  grep -q -- "$message" "$work/bad_collector.log" || fail "collector $*: no '$message': $(tail -1 "$work/bad_collector.log")"
+}
+bad_collector "~objects: the parameter is required" _behaviours:=lift
+bad_collector "with ~listen false, name the streams to record" _objects:=light _behaviours:=lift _listen:=false
+[ ! -e "$work/not_collected" ] || fail "a refused collection wrote $work/not_collected"
+
 /usr/bin/python3 - "$work/tree" "$work/collected" $session <<'PY' || fail "the collected series differ from what the driver published"
 import csv, sys
 tree, collected, session = sys.argv[1:4]
