@@ -18,11 +18,12 @@ struct Preset {
   const char* rows;
 };
 
-constexpr std::array<Preset, 5> kPresets{{{"summary-lda", "summary", "lda-class-scaled"},
+constexpr std::array<Preset, 6> kPresets{{{"summary-lda", "summary", "lda-class-scaled"},
                                           {"summary-nearest-mean", "summary", "nearest-mean"},
                                           {"report-template", "onset-logfbank", "template"},
                                           {"report-gaussian", "centroid-rms", "gaussian"},
-                                          {"grid-lda", "spectrogram-grid", "lda-class-scaled"}}};
+                                          {"grid-lda", "spectrogram-grid", "lda-class-scaled"},
+                                          {"pcen-lda", "pcen-summary", "lda-class-scaled"}}};
 
 }  // namespace
 

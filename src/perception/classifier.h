@@ -6,6 +6,7 @@
 //   report-template       onset-logfbank + template    (the report's classifier)
 //   report-gaussian       centroid-rms + gaussian      (the report's first attempt)
 //   grid-lda              spectrogram-grid + lda-class-scaled  (CY101's audio layout)
+//   pcen-lda              pcen-summary + lda-class-scaled      (PCEN front end against noise)
 // A modality whose rows are given (a feature set's haptic.csv, a feature topic) has a classifier
 // without an extractor, named after its row classifier (make_modality_classifier).
 #pragma once

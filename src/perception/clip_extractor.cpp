@@ -6,6 +6,7 @@
 #include <array>
 
 #include "common/error.h"
+#include "perception/pcen_summary.h"
 #include "perception/report_gaussian_classifier.h"
 #include "perception/report_template_classifier.h"
 #include "perception/spectrogram_grid.h"
@@ -22,12 +23,13 @@ std::vector<double> summary_row(const ClipAnalysis& clip) {
 std::vector<std::string> no_names() { return {}; }
 std::vector<std::string> centroid_rms_names() { return {"centroid_hz", "rms"}; }
 
-const std::array<ClipExtractor, 4>& extractors() {
-  static const std::array<ClipExtractor, 4> all{
+const std::array<ClipExtractor, 5>& extractors() {
+  static const std::array<ClipExtractor, 5> all{
       ClipExtractor{"summary", summary_row, summary_feature_names},
       ClipExtractor{"onset-logfbank", ReportTemplateClassifier::onset_window, no_names},
       ClipExtractor{"centroid-rms", ReportGaussianClassifier::centroid_rms, centroid_rms_names},
-      ClipExtractor{"spectrogram-grid", spectrogram_grid, spectrogram_grid_names}};
+      ClipExtractor{"spectrogram-grid", spectrogram_grid, spectrogram_grid_names},
+      ClipExtractor{"pcen-summary", pcen_summary, pcen_summary_names}};
   return all;
 }
 

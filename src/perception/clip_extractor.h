@@ -5,6 +5,7 @@
 //   onset-logfbank  the onset-aligned log-filterbank window of the report's templates
 //   centroid-rms    (spectral centroid in Hz, RMS) of the whole clip
 //   spectrogram-grid  CY101's 10 x 10 grid of mean log powers (spectrogram_grid.h)
+//   pcen-summary    the mel spectrum after per-channel energy normalisation (pcen_summary.h)
 #pragma once
 
 #include <string>

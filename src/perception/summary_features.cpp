@@ -12,8 +12,6 @@ namespace {
 
 constexpr std::size_t kBands = 26;
 constexpr std::size_t kCepstra = 12;  // c1..c12
-constexpr std::array<std::pair<std::size_t, std::size_t>, 4> kSegments{
-    {{0, 3}, {3, 15}, {15, 50}, {50, 150}}};
 constexpr std::size_t kWindow = 150;  // frames after the onset that the summary looks at
 constexpr double kFloorNats = 12.0;   // log-mel floor below the peak frame level
 constexpr std::array<double, 3> kDecayDb{10.0, 20.0, 30.0};
@@ -51,7 +49,7 @@ std::array<double, kSummarySize> summary_features(const ClipAnalysis& clip) {
   const double floor = peak - kFloorNats;
 
   std::size_t i = 0;
-  for (const auto& [from, to] : kSegments) {
+  for (const auto& [from, to] : kSummarySegments) {
     for (std::size_t b = 0; b < kBands; ++b) {
       double sum = 0.0;
       for (std::size_t f = from; f < to; ++f)
@@ -105,7 +103,7 @@ std::array<double, kSummarySize> summary_features(const ClipAnalysis& clip) {
 
 std::vector<std::string> summary_feature_names() {
   std::vector<std::string> names;
-  for (std::size_t s = 0; s < kSegments.size(); ++s)
+  for (std::size_t s = 0; s < kSummarySegments.size(); ++s)
     for (std::size_t b = 0; b < kBands; ++b) names.push_back(fmt::format("shape{}_band{}", s, b));
   for (std::size_t c = 1; c <= kCepstra; ++c) names.push_back(fmt::format("mfcc_std{}", c));
   for (double db : kDecayDb) names.push_back(fmt::format("decay{}", static_cast<int>(db)));

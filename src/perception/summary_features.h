@@ -22,6 +22,7 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "perception/clip_analysis.h"
@@ -29,6 +30,9 @@
 namespace echoplan::perception {
 
 inline constexpr std::size_t kSummarySize = 123;
+// The four spans of frames after the onset whose mean spectrum the summary keeps: [from, to).
+inline constexpr std::array<std::pair<std::size_t, std::size_t>, 4> kSummarySegments{
+    {{0, 3}, {3, 15}, {15, 50}, {50, 150}}};
 
 // The summary of `clip` (features from the psf preset: 26 log-mel bands, 13 MFCCs).
 std::array<double, kSummarySize> summary_features(const ClipAnalysis& clip);

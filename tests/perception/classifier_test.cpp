@@ -17,13 +17,14 @@ namespace {
 TEST(Classifier, EveryNameBuildsItsClassifier) {
   EXPECT_EQ(classifier_names(),
             (std::vector<std::string>{"summary-lda", "summary-nearest-mean", "report-template",
-                                      "report-gaussian", "grid-lda"}));
+                                      "report-gaussian", "grid-lda", "pcen-lda"}));
   const std::map<std::string, std::pair<std::string, std::string>> parts{
       {"summary-lda", {"summary", "lda-class-scaled"}},
       {"summary-nearest-mean", {"summary", "nearest-mean"}},
       {"report-template", {"onset-logfbank", "template"}},
       {"report-gaussian", {"centroid-rms", "gaussian"}},
-      {"grid-lda", {"spectrogram-grid", "lda-class-scaled"}}};
+      {"grid-lda", {"spectrogram-grid", "lda-class-scaled"}},
+      {"pcen-lda", {"pcen-summary", "lda-class-scaled"}}};
   for (const auto& [name, pair] : parts) {
     const auto made = make_classifier(name);
     ASSERT_NE(made->extractor(), nullptr);
@@ -50,7 +51,7 @@ TEST(Classifier, OldNamesBuildTheRenamedClassifiers) {
 TEST(Classifier, AnUnknownNameListsTheKnownOnes) {
   EXPECT_EQ(input_error_message([] { make_classifier("knn"); }),
             "unknown classifier 'knn' (expected summary-lda, summary-nearest-mean, "
-            "report-template, report-gaussian, grid-lda)");
+            "report-template, report-gaussian, grid-lda, pcen-lda)");
 }
 
 TEST(Classifier, AModalityOfGivenRowsHasNoExtractorAndSaysSoWhenGivenAClip) {
