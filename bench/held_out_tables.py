@@ -3,7 +3,8 @@
 training set heard, by a classifier trained on the other tables (docs/BENCHMARKS.md, "Other
 tables").
 
-    held_out_tables.py BUILD/echoplan [--episodes N] [--trials-per-object N] [--seed S] [--out DIR]
+    held_out_tables.py BUILD/echoplan [--episodes N] [--trials-per-object N] [--seed S]
+                       [--random-tables N] [--out DIR]
 
 For every table T, one campaign (`echoplan experiment`, config written to DIR/T/by_performance/
 campaign.yaml): all trials on T; the arm `by_performance` hears with the classifier trained on the
@@ -11,10 +12,13 @@ other tables (`trained_on_surfaces`), calibrated as a campaign calibrates (leave
 performance), graded. Then the same trials (same seed, so the same world draws trial for trial)
 heard by that classifier calibrated with each training table held out in turn instead (`echoplan
 train --cross-validation surface` on the same recordings, given as `training_set.model`): the arm
-`by_table`. Prints per table each arm's share sorted right, its mean belief in its choice at the
+`by_table`. And the same trials heard by a classifier trained on N tables drawn at random
+(`training_set.surfaces: [random:N]`, N recordings per pair, one on each; sim/random_tables.h),
+none of them a catalogue table: the arm `random_tables`. Prints per table each arm's share sorted
+right, its mean belief in its choice at the
 sort and the sorts made (trials stopped by max_steps make none), the recordings heard per trial,
-and by_table minus by_performance in discounted reward per trial, paired by trial (mean and 95% CI,
-Student's t). About 2.5 minutes on 2 cores at the defaults.
+and by_table and random_tables minus by_performance in discounted reward per trial, paired by trial
+(mean and 95% CI, Student's t). About 4 minutes on 2 cores at the defaults.
 """
 import argparse
 import csv
@@ -32,12 +36,15 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PROBLEM = os.path.join(HERE, "..", "problems", "audio_objects.yaml")
 
 
-def config(table, arm, trials, episodes, seed, model=None):
-    """A campaign's YAML: `arm` on `table`, trained on the other tables (or hearing `model`)."""
+def config(table, arm, trials, episodes, seed, model=None, random_tables=0):
+    """A campaign's YAML: `arm` on `table`, trained on the other tables (or `random_tables` drawn
+    at random, or hearing `model`)."""
     others = [t for t in TABLES if t != table]
     arm_line = (f"  - {{name: {arm}, problem: {PROBLEM}, calibrate: true, observations: graded"
                 + ("" if model else ", trained_on_surfaces: true") + "}")
     training = (f"  model: {model}" if model else
+                f"  recordings_per_pair: {random_tables}\n  surfaces: [random:{random_tables}]"
+                if random_tables else
                 f"  recordings_per_pair: 10\n  surfaces: [{', '.join(others)}]")
     groups = "\n".join(f"  - {{object: {o}, trials: {trials}}}" for o in OBJECTS)
     return (f"seed: {seed}\narms:\n{arm_line}\nworld:\n  type: simulated\n"
@@ -82,14 +89,16 @@ def main():
     p.add_argument("--episodes", type=int, default=5000)
     p.add_argument("--trials-per-object", type=int, default=10)
     p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--random-tables", type=int, default=40)
     p.add_argument("--out", default="/tmp/held_out_tables")
     a = p.parse_args()
     if not os.access(a.echoplan, os.X_OK):
         print(f"held_out_tables.py: {a.echoplan}: not an executable", file=sys.stderr)
         sys.exit(2)
-    print("| held-out table | by_table: right, belief (sorts), heard | by_performance: right, "
-          "belief (sorts), heard | by_table minus by_performance, paired (95% CI) |")
-    print("|---|---|---|---|")
+    print("| held-out table | by_performance: right, belief (sorts), heard | by_table | "
+          "random_tables | by_table minus by_performance, paired (95% CI) | random_tables minus "
+          "by_performance |")
+    print("|---|---|---|---|---|---|")
     for table in TABLES:
         out = os.path.join(a.out, table)
         by_perf = run(a.echoplan, os.path.join(out, "by_performance"),
@@ -101,13 +110,20 @@ def main():
                        stderr=subprocess.DEVNULL)
         by_table = run(a.echoplan, os.path.join(out, "by_table"),
                        config(table, "by_table", a.trials_per_object, a.episodes, a.seed, model))
+        random_arm = run(a.echoplan, os.path.join(out, "random_tables"),
+                         config(table, "random_tables", a.trials_per_object, a.episodes, a.seed,
+                                random_tables=a.random_tables))
         cells = []
-        for campaign, arm in ((by_table, "by_table"), (by_perf, "by_performance")):
+        for campaign, arm in ((by_perf, "by_performance"), (by_table, "by_table"),
+                              (random_arm, "random_tables")):
             t, rewards = arm_figures(campaign, arm)
             cells.append((f"{t['share_right']:.3f}, {t['mean_belief']:.3f} ({t['sorts']}), "
                           f"{t['mean_recordings_heard']:.2f}", rewards))
-        mean, half, n = paired(cells[0][1], cells[1][1])
-        print(f"| `{table}` | {cells[0][0]} | {cells[1][0]} | {mean:+.2f} ± {half:.2f} ({n}) |",
+        differences = []
+        for cell in cells[1:]:
+            mean, half, n = paired(cell[1], cells[0][1])
+            differences.append(f"{mean:+.2f} ± {half:.2f} ({n})")
+        print(f"| `{table}` | {' | '.join(c[0] for c in cells)} | {' | '.join(differences)} |",
               flush=True)
 
 

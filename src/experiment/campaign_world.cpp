@@ -16,6 +16,7 @@
 #include "loop/prepare_observation.h"
 #include "loop/streams.h"
 #include "perception/heard_confusion.h"
+#include "sim/random_tables.h"
 #include "sim/sound_action.h"
 #include "sim/table_choice.h"
 
@@ -99,6 +100,8 @@ class ProblemFileWorld final : public CampaignWorld {
   std::shared_ptr<const pomdp::Problem> world_problem_;
   std::vector<std::shared_ptr<const pomdp::Problem>> arm_problems_;  // as their files say
   std::shared_ptr<const sim::Catalogue> catalogue_;
+  // world.surface and training_set.surfaces with their random:N entries drawn (load_simulator).
+  std::vector<std::string> world_tables_, training_tables_;
   std::shared_ptr<const sim::SimConfig> sim_config_;
   std::shared_ptr<const sim::SimConfig> world_sim_config_;     // the trials': on world.surface
   std::shared_ptr<const sim::SimConfig> surfaces_sim_config_;  // training_set.surfaces'
@@ -193,8 +196,19 @@ void ProblemFileWorld::check_objects(const CampaignConfig& config, const pomdp::
 void ProblemFileWorld::load_simulator(const CampaignConfig& config, InputFiles& files) {
   const TrainingSetConfig& t = config.training;
   const std::string catalogue = t.catalogue.empty() ? sim::default_catalogue_path() : t.catalogue;
-  catalogue_ = std::make_shared<const sim::Catalogue>(
-      sim::parse_catalogue(files.text(catalogue), catalogue));
+  sim::Catalogue loaded = sim::parse_catalogue(files.text(catalogue), catalogue);
+  // `random:N` tables, drawn from the campaign's seed: the world's and the training set's apart,
+  // so a world on random tables never meets one its training set heard.
+  auto expand = [&](const std::vector<std::string>& names, const std::string& tag, int line) {
+    try {
+      return sim::expand_random_tables(loaded, names, config.seed, tag);
+    } catch (const InputError& e) {
+      throw InputError(config.source, line, e.problem());
+    }
+  };
+  world_tables_ = expand(config.world.surfaces, "world", config.world.surface_line);
+  training_tables_ = expand(t.surfaces, "training", t.surfaces_line);
+  catalogue_ = std::make_shared<const sim::Catalogue>(std::move(loaded));
   sim_config_ = std::make_shared<const sim::SimConfig>(
       t.sim_config.empty() ? sim::SimConfig{}
                            : sim::parse_sim_config(files.text(t.sim_config), t.sim_config));
@@ -258,7 +272,7 @@ std::shared_ptr<const sim::SimConfig> on_tables(const sim::SimConfig& base,
 // (training_set.surfaces).
 void ProblemFileWorld::load_surfaces(const CampaignConfig& config,
                                      const std::vector<ResolvedArm>& arms) {
-  const std::vector<std::string>& world = config.world.surfaces;
+  const std::vector<std::string>& world = world_tables_;
   world_sim_config_ = world.empty() ? sim_config_
                                     : on_tables(*sim_config_, *catalogue_, world, config,
                                                 config.world.surface_line);
@@ -275,7 +289,8 @@ void ProblemFileWorld::load_surfaces(const CampaignConfig& config,
     throw InputError(config.source, t.surfaces_line,
                      "training_set.surfaces records a training set: it needs recordings_per_pair "
                      "> 0 and no training_set.model or recordings");
-  surfaces_sim_config_ = on_tables(*sim_config_, *catalogue_, t.surfaces, config, t.surfaces_line);
+  surfaces_sim_config_ =
+      on_tables(*sim_config_, *catalogue_, training_tables_, config, t.surfaces_line);
 }
 
 void ProblemFileWorld::open(const CampaignConfig& config, const std::vector<ResolvedArm>& arms,

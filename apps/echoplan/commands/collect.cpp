@@ -73,7 +73,7 @@ void add_collect_command(CLI::App& app) {
       ->check(CLI::IsMember({"effort", "force"}));
   add_sim_file_options(*cmd, opt->files);
   cmd->callback([opt] {
-    SimSetup setup = load_sim_setup(opt->files);
+    SimSetup setup = load_sim_setup(opt->files, opt->plan.seed);
     auto world = std::make_shared<robot::SimulatedWorld>(
         std::move(setup.catalogue), std::move(setup.config), std::vector<std::string>{});
     for (const auto& o : opt->plan.objects) world->check_object(o);

@@ -274,7 +274,7 @@ void run_command(const RunFlags& f) {
     throw InputError("--session and --groups replay recorded data: give --data too");
   check_flags(f);
   std::optional<robot::WorldNoise> noise = world_noise(f.noise);  // read before any training
-  const loop::SimulatedWorldSpec sim = load_simulated_world(f.sim);
+  const loop::SimulatedWorldSpec sim = load_simulated_world(f.sim, f.seed);
   const auto base = std::make_shared<const pomdp::Problem>(pomdp::load_problem(
       f.problem.empty() ? shipped_file("problems/audio_objects.yaml") : f.problem));
   const loop::TrueObject truth = loop::resolve_true_object(

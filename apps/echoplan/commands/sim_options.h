@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -28,10 +29,10 @@ struct SimSetup {
 // Adds --catalogue, --sim-config and --surface to `cmd`.
 void add_sim_file_options(CLI::App& cmd, SimFiles& files);
 
-// Loads both, with --surface as the config's tables; throws InputError for a bad file or a table
-// the catalogue does not have.
-SimSetup load_sim_setup(const SimFiles& files);
+// Loads both, with --surface as the config's tables, its `random:N` entries drawn from `seed`
+// (sim/random_tables.h); throws InputError for a bad file or a table the catalogue does not have.
+SimSetup load_sim_setup(const SimFiles& files, std::uint64_t seed);
 // The same as a loop's simulated world (shared, read-only).
-loop::SimulatedWorldSpec load_simulated_world(const SimFiles& files);
+loop::SimulatedWorldSpec load_simulated_world(const SimFiles& files, std::uint64_t seed);
 
 }  // namespace echoplan::cli

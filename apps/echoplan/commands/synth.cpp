@@ -29,7 +29,7 @@ void add_synth_command(CLI::App& app) {
   cmd->add_option("-o,--output", opt->output, "WAV (or .flac) file to write")->required();
   add_sim_file_options(*cmd, opt->files);
   cmd->callback([opt] {
-    const SimSetup setup = load_sim_setup(opt->files);
+    const SimSetup setup = load_sim_setup(opt->files, opt->seed);
     sim::SimulatedRobot robot(setup.catalogue, opt->object, setup.config);
     const sim::SoundAction action = sim::parse_sound_action(opt->action);
     sim::SoundRenderer recorder(robot.object(), robot.table(), setup.config);

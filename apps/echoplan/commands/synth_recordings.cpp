@@ -56,7 +56,7 @@ void add_synth_recordings_command(CLI::App& app) {
       ->capture_default_str();
   add_sim_file_options(*cmd, opt->files);
   cmd->callback([opt] {
-    const SimSetup setup = load_sim_setup(opt->files);
+    const SimSetup setup = load_sim_setup(opt->files, opt->dataset.seed);
     // Ctrl-C stops the writer after the clips in progress, so every file on disk is complete and
     // listed in the manifest.
     const StopSignal stop;
