@@ -366,6 +366,18 @@ TEST(CampaignConfig, ShippedSurfacesCampaignHoldsItsTrialsTableOutOfTraining) {
   ASSERT_EQ(c.groups.size(), 4u);  // the main job's four objects
 }
 
+TEST(CampaignConfig, ShippedRandomTablesCampaignTrainsOnDrawnTablesAndTestsOnEveryCatalogueOne) {
+  const CampaignConfig c =
+      load_campaign_config(echoplan::testing::source_dir() + "/experiments/random_tables.yaml");
+  EXPECT_EQ(c.world.surfaces, (std::vector<std::string>{"lab_laminate", "oak_top", "steel_bench",
+                                                        "glass_top", "rubber_mat"}));
+  EXPECT_EQ(c.training.surfaces, (std::vector<std::string>{"random:40"}));
+  EXPECT_EQ(c.training.recordings_per_pair, 40);  // each recording on a table of its own
+  ASSERT_EQ(c.arms.size(), 2u);
+  EXPECT_FALSE(c.arms[0].trained_on_surfaces);
+  EXPECT_TRUE(c.arms[1].trained_on_surfaces);
+}
+
 TEST(CampaignConfig, SurfacesAreANameOrAListAndRoundTrip) {
   const std::string head = "arms:\n  - {name: a, problem: p.yaml, trained_on_surfaces: true}\n";
   const std::string tail = "trials:\n  - {object: mug}\nplanner: {episodes: 100}\n";
