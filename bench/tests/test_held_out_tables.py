@@ -27,6 +27,14 @@ def test_a_campaign_trains_on_every_table_but_the_one_its_trials_stand_on():
     assert "trained_on_surfaces" not in given["arms"][0]
 
 
+def test_the_random_tables_arm_trains_on_as_many_drawn_tables_as_recordings_per_pair():
+    c = yaml.safe_load(held_out_tables.config("rubber_mat", "random_tables", 2, 100, 7,
+                                              random_tables=40))
+    assert c["world"]["surface"] == "rubber_mat"
+    assert c["training_set"] == {"recordings_per_pair": 40, "surfaces": ["random:40"]}
+    assert c["arms"][0]["trained_on_surfaces"] is True
+
+
 def test_pairs_by_trial_and_gives_students_interval():
     # Differences 1, 2, 3 (trial "9" has no partner): mean 2, sd 1, t(0.975, 2) = 4.303.
     a = {"0": 5.0, "1": 6.0, "2": 7.0, "9": 100.0}
