@@ -13,7 +13,7 @@ confidence. Prints, per ratio, each arm's share sorted right, its belief at the 
 the strikes per trial, and each noise-trained arm's paired difference from the quiet one.
 
 Usage: bench/noise_real_strikes.py ECHOPLAN [--levels quiet,12,6,0] [--kits NAME,...] [--episodes N]
-                                   [--talkers N]
+                                   [--talkers N] [--training-noise SOURCE,...]
 Needs: apt-get install hydrogen-drumkits asterisk-core-sounds-en-wav.
 """
 import argparse
@@ -52,8 +52,9 @@ def strike_tree(root, kit):
     return len(instruments)
 
 
-def campaign(data, level, episodes, talkers):
-    """The campaign at ratio `level` ("quiet": no noise in the trials)."""
+def campaign(data, level, episodes, talkers, training_noise):
+    """The campaign at ratio `level` ("quiet": no noise in the trials), the noise-trained arms
+    learning from `training_noise` (a list of sources)."""
     heard = f"""{{sources: [{SPEECH}/digits, room], ebr_db: "{level}", talkers: {talkers}}}"""
     noise = "" if level == "quiet" else f"""  noise: {heard}\n"""
     return f"""seed: 1
@@ -62,7 +63,7 @@ world:
   data: {data}
   hold_out: session
 {noise}training_set:
-  noise: {{sources: [{SPEECH}/letters, {SPEECH}/phonetic, white], ebr_db: "-6:24", talkers: {talkers}}}
+  noise: {{sources: [{", ".join(training_noise)}], ebr_db: "-6:24", talkers: {talkers}}}
 task:
   rewards: {{right: 10, wrong: -100, sense: -1}}
 arms:
@@ -93,6 +94,9 @@ def main():
     parser.add_argument("--kits", default="")
     parser.add_argument("--episodes", type=int, default=2000)
     parser.add_argument("--talkers", type=int, default=8, help="babble: talkers heard at once")
+    parser.add_argument("--training-noise", default=f"{SPEECH}/letters,{SPEECH}/phonetic,white",
+                        help="the noise-trained arms' sources, comma-separated (default: other "
+                             "words of the speaker and white noise)")
     args = parser.parse_args()
     if not os.path.isdir(KITS_DIR) or not os.path.isdir(SPEECH):
         sys.exit("needs hydrogen-drumkits and asterisk-core-sounds-en-wav: apt-get install them")
@@ -107,7 +111,8 @@ def main():
             for level in args.levels.split(","):
                 config = os.path.join(work, "c.yaml")
                 with open(config, "w") as out:
-                    out.write(campaign(data, level, args.episodes, args.talkers))
+                    out.write(campaign(data, level, args.episodes, args.talkers,
+                                       args.training_noise.split(",")))
                 out_dir = os.path.join(work, "out_%s_%s" % (kit.replace(" ", "_"), level))
                 subprocess.run([args.echoplan, "experiment", "--config", config, "--out", out_dir],
                                check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)

@@ -18,8 +18,9 @@
 // Sources: recordings (files, or folders read recursively for .wav/.flac/.aiff files in name
 // order), or built-in noise made at the clip's rate from the Rng: "white" (unit white noise),
 // "room" (the simulator's room noise, flat below 500 Hz and falling 6 dB per octave above) and
-// "motor" (the simulated arm's motor band, sim/sound_motor.h, running steadily). The levels are
-// audio/levels.h's.
+// "motor" (the simulated arm's motor band, sim/sound_motor.h, running steadily) and "coloured"
+// (noise of a colour drawn per recording: a low-pass corner and a band, to train on noise of any
+// colour). The levels are audio/levels.h's.
 #pragma once
 
 #include <string>
@@ -38,7 +39,7 @@ struct EbrRange {
 // "X" or "LO:HI" (LO <= HI), each in [-60, 60]; InputError naming the text otherwise.
 EbrRange parse_ebr(const std::string& text);
 
-// The built-in sources' names: white, room, motor.
+// The built-in sources' names: white, room, motor, coloured.
 const std::vector<std::string>& builtin_noise_names();
 
 class BackgroundNoise {

@@ -58,7 +58,7 @@ TEST(BackgroundNoise, EverySourceIsMixedAtTheRatioAsked) {
   const audio::AudioClip strike = tone(1.5, 0.05, 700, 0.4, 0.45);  // quiet: nothing clips
   const double event = audio::event_level(strike);
   for (const std::string& source :
-       std::vector<std::string>{"white", "room", "motor", (dir / "hum.wav").string()})
+       std::vector<std::string>{"white", "room", "motor", "coloured", (dir / "hum.wav").string()})
     for (double ebr : {12.0, 0.0, -6.0}) {
       const BackgroundNoise noise({source});
       Rng rng(3);
@@ -68,6 +68,39 @@ TEST(BackgroundNoise, EverySourceIsMixedAtTheRatioAsked) {
       EXPECT_NEAR(20 * std::log10(event / added_rms(strike, mixed.clip)), ebr, 0.01)
           << source << " at " << ebr;
     }
+}
+
+// Coloured noise draws a colour per recording: over 40 draws the added noise's correlation between
+// neighbouring samples spans a rumble (a 100 Hz corner: near 1) to near-white (near 0), where the
+// room's is one colour every time.
+TEST(BackgroundNoise, ColouredNoiseDrawsAColourPerRecording) {
+  const audio::AudioClip strike = tone(1.0, 0.05, 700, 0.4, 0.45);
+  auto neighbour_correlation = [&](const audio::AudioClip& mixed) {
+    double product = 0.0, power = 0.0;
+    for (std::size_t i = 1; i < strike.samples.size(); ++i) {
+      const double d0 = static_cast<double>(mixed.samples[i - 1]) - strike.samples[i - 1];
+      const double d1 = static_cast<double>(mixed.samples[i]) - strike.samples[i];
+      product += d0 * d1;
+      power += d1 * d1;
+    }
+    return product / power;
+  };
+  for (const char* source : {"coloured", "room"}) {
+    const BackgroundNoise noise({source});
+    Rng rng(2);
+    double lowest = 1.0, highest = -1.0;
+    for (int i = 0; i < 40; ++i) {
+      const double r = neighbour_correlation(noise.mix(strike, {0, 0}, rng).clip);
+      lowest = std::min(lowest, r);
+      highest = std::max(highest, r);
+    }
+    if (std::string(source) == "coloured") {
+      EXPECT_LT(lowest, 0.5);
+      EXPECT_GT(highest, 0.95);
+    } else {
+      EXPECT_LT(highest - lowest, 0.02);
+    }
+  }
 }
 
 TEST(BackgroundNoise, DrawsFollowTheRng) {
