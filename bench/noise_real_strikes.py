@@ -7,7 +7,8 @@ layers is a task: each instrument an object, each velocity layer a session of on
 campaign replays every held-out session heard through babble (Debian's asterisk prompts, the
 digits, TALKERS at once) or room noise at each event-to-background ratio in turn, with paired arms:
 the folds' classifier trained on the quiet strikes, and the one trained on them and their noisy
-twins (babble of other words of the speaker, or white noise, -6:24 dB), hearing labels,
+twins (babble of other words of the speaker, white noise or noise of a colour drawn per
+recording, -6:24 dB), hearing labels,
 observations graded by the measured level of each recording, or graded by the classifier's
 confidence. Prints, per ratio, each arm's share sorted right, its belief at the sort and
 the strikes per trial, and each noise-trained arm's paired difference from the quiet one.
@@ -94,9 +95,10 @@ def main():
     parser.add_argument("--kits", default="")
     parser.add_argument("--episodes", type=int, default=2000)
     parser.add_argument("--talkers", type=int, default=8, help="babble: talkers heard at once")
-    parser.add_argument("--training-noise", default=f"{SPEECH}/letters,{SPEECH}/phonetic,white",
+    parser.add_argument("--training-noise",
+                        default=f"{SPEECH}/letters,{SPEECH}/phonetic,white,coloured",
                         help="the noise-trained arms' sources, comma-separated (default: other "
-                             "words of the speaker and white noise)")
+                             "words of the speaker, white and coloured noise)")
     args = parser.parse_args()
     if not os.path.isdir(KITS_DIR) or not os.path.isdir(SPEECH):
         sys.exit("needs hydrogen-drumkits and asterisk-core-sounds-en-wav: apt-get install them")
