@@ -246,16 +246,19 @@ std::vector<std::string> arm_names(const CampaignResults& results) {
 // One arm's trials under one condition, as summary.txt lists them.
 std::string shares_line(const std::string& arm, const std::string& condition,
                         const ConditionShares& c) {
-  return fmt::format("  {:<24} {:<14} {:>4} trials  right {:.3f} at {:.3f}  heard {:.2f}\n", arm,
-                     condition, c.trials, c.share_right, c.mean_belief, c.mean_heard);
+  return fmt::format(
+      "  {:<24} {:<14} {:>4} trials  right {:.3f} at {:.3f}  heard {:.2f}  behaviours {:.2f}  "
+      "cost {:.2f}\n",
+      arm, condition, c.trials, c.share_right, c.mean_belief, c.mean_heard, c.mean_behaviours,
+      c.mean_cost);
 }
 
 }  // namespace
 
 std::vector<ArmNoiseBands> noise_bands(const CampaignResults& results) {
   if (!results.config.world.noise.given()) return {};
-  std::vector<ArmNoiseBands> bands =
-      arm_noise_bands(arm_names(results), results.entries, results.right_share);
+  std::vector<ArmNoiseBands> bands = arm_noise_bands(arm_names(results), results.entries,
+                                                     results.right_share, results.action_costs);
   const bool heard = std::any_of(bands.begin(), bands.end(), [](const ArmNoiseBands& a) {
     return std::any_of(a.bands.begin(), a.bands.end(),
                        [](const NoiseBand& b) { return b.trials > 0; });
@@ -264,7 +267,8 @@ std::vector<ArmNoiseBands> noise_bands(const CampaignResults& results) {
 }
 
 std::vector<ArmSurfaces> surface_shares(const CampaignResults& results) {
-  return arm_surfaces(arm_names(results), results.entries, results.right_share);
+  return arm_surfaces(arm_names(results), results.entries, results.right_share,
+                      results.action_costs);
 }
 
 std::vector<ArmConfidence> arm_confidence(const CampaignResults& results) {
@@ -298,7 +302,9 @@ nlohmann::json shares_json(const ConditionShares& c) {
           {"sorts", c.sorts},
           {"share_right", c.share_right},
           {"mean_belief", c.mean_belief},
-          {"mean_recordings_heard", c.mean_heard}};
+          {"mean_recordings_heard", c.mean_heard},
+          {"mean_behaviours", c.mean_behaviours},
+          {"mean_cost", c.mean_cost}};
 }
 
 nlohmann::json surfaces_json(const std::vector<ArmSurfaces>& all) {
@@ -474,13 +480,15 @@ std::string summary_text(const CampaignResults& results) {
   if (!bands.empty())
     out +=
         "\nper noise level (each trial's median measured event-to-background ratio): sorted "
-        "right at belief, recordings heard per trial\n";
+        "right at belief; recordings heard, behaviours and their cost per trial\n";
   for (const ArmNoiseBands& a : bands)
     for (const NoiseBand& b : a.bands)
       if (b.trials > 0) out += shares_line(a.arm, b.label(), b);
   const std::vector<ArmSurfaces> surfaces = surface_shares(results);
   if (!surfaces.empty())
-    out += "\nper table the trials stood on: sorted right at belief, recordings heard per trial\n";
+    out +=
+        "\nper table the trials stood on: sorted right at belief; recordings heard, behaviours "
+        "and their cost per trial\n";
   for (const ArmSurfaces& a : surfaces)
     for (const SurfaceShares& s : a.surfaces)
       if (s.trials > 0) out += shares_line(a.arm, s.surface, s);

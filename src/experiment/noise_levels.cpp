@@ -42,13 +42,14 @@ NoiseBand& band_of(std::vector<NoiseBand>& bands, double level) {
 
 std::vector<ArmNoiseBands> arm_noise_bands(const std::vector<std::string>& arms,
                                            const std::vector<JournalEntry>& entries,
-                                           const RightShares& right_share) {
+                                           const RightShares& right_share,
+                                           const std::vector<double>& action_costs) {
   std::vector<ArmNoiseBands> all;
   for (const std::string& arm : arms) {
     ArmNoiseBands a{arm, empty_bands()};
     for (const JournalEntry& e : entries) {
       const std::optional<double> level = trial_heard_level(e.result);
-      if (e.arm == arm && level) band_of(a.bands, *level).add(e.result, right_share);
+      if (e.arm == arm && level) band_of(a.bands, *level).add(e.result, right_share, action_costs);
     }
     for (NoiseBand& band : a.bands) band.finish();
     all.push_back(std::move(a));
@@ -58,7 +59,8 @@ std::vector<ArmNoiseBands> arm_noise_bands(const std::vector<std::string>& arms,
 
 std::vector<ArmSurfaces> arm_surfaces(const std::vector<std::string>& arms,
                                       const std::vector<JournalEntry>& entries,
-                                      const RightShares& right_share) {
+                                      const RightShares& right_share,
+                                      const std::vector<double>& action_costs) {
   std::vector<std::string> surfaces;
   for (const JournalEntry& e : entries)
     if (!e.result.record.surface.empty() &&
@@ -72,7 +74,8 @@ std::vector<ArmSurfaces> arm_surfaces(const std::vector<std::string>& arms,
       SurfaceShares shares;
       shares.surface = surface;
       for (const JournalEntry& e : entries)
-        if (e.arm == arm && e.result.record.surface == surface) shares.add(e.result, right_share);
+        if (e.arm == arm && e.result.record.surface == surface)
+          shares.add(e.result, right_share, action_costs);
       shares.finish();
       a.surfaces.push_back(std::move(shares));
     }

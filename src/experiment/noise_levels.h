@@ -31,9 +31,11 @@ struct ArmNoiseBands {
 std::optional<double> trial_heard_level(const TrialResult& trial);
 
 // Per arm, in the given order, over every journal entry of that arm that heard a recording.
+// `action_costs` as ConditionShares::add takes them.
 std::vector<ArmNoiseBands> arm_noise_bands(const std::vector<std::string>& arms,
                                            const std::vector<JournalEntry>& entries,
-                                           const RightShares& right_share);
+                                           const RightShares& right_share,
+                                           const std::vector<double>& action_costs);
 
 // One arm's trials on one table (TrialRecord::surface).
 struct SurfaceShares : ConditionShares {
@@ -48,6 +50,7 @@ struct ArmSurfaces {
 // empty when none did (the lab's table).
 std::vector<ArmSurfaces> arm_surfaces(const std::vector<std::string>& arms,
                                       const std::vector<JournalEntry>& entries,
-                                      const RightShares& right_share);
+                                      const RightShares& right_share,
+                                      const std::vector<double>& action_costs);
 
 }  // namespace echoplan::experiment

@@ -254,8 +254,8 @@ TEST(CampaignConfig, NoiseMistakesNameTheLine) {
   EXPECT_EQ(world("simulated", "{sources: [room]}"),
             "6: world.noise needs ebr_db: the ratio of each recording");
   EXPECT_EQ(world("simulated", "{sources: [nowhere.wav], ebr_db: 0}"),
-            "6: world.noise: source '/dir/nowhere.wav' is neither built-in (white, room, motor) "
-            "nor a file or folder");
+            "6: world.noise: source '/dir/nowhere.wav' is neither built-in (white, room, motor, "
+            "coloured) nor a file or folder");
   EXPECT_NE(world("simulated", "{ebr_db: 0}").find("sources"), std::string::npos);
   EXPECT_EQ(world("simulated", "{sources: [room], ebr_db: 0, talkers: 0}"),
             "6: world.noise: talkers must be 1 to 64 (people heard at once), not 0");

@@ -1,6 +1,6 @@
 // Each arm's trials by the level measured from their own recordings: the median of the steps'
-// heard_ebr_db picks the band, and per band the share right, the belief at the sort and the
-// recordings heard per trial (values worked by hand below).
+// heard_ebr_db picks the band, and per band the share right, the belief at the sort, the
+// recordings heard, the behaviours and their cost per trial (values worked by hand below).
 #include "experiment/noise_levels.h"
 
 #include <gtest/gtest.h>
@@ -28,11 +28,14 @@ JournalEntry heard(const std::string& arm, const std::vector<double>& levels, in
   sort.belief = std::move(belief);
   e.result.steps.push_back(sort);
   e.result.record.steps = static_cast<int>(e.result.steps.size());
+  e.result.record.action_counts = {static_cast<int>(levels.size()), 0, 0, 0};
+  e.result.record.action_counts[static_cast<std::size_t>(action)] += 1;
   return e;
 }
 
-// Two classes; action 2 sorts class 0 right, action 3 class 1 (actions 0-1 sense).
+// Two classes; action 2 sorts class 0 right, action 3 class 1 (actions 0-1 sense, at 1.5 and 4).
 const RightShares kRight{{0, 0, 1, 0}, {0, 0, 0, 1}};
+const std::vector<double> kCosts{1.5, 4.0, 0.0, 0.0};
 
 TEST(NoiseLevels, ATrialsLevelIsTheMedianOfWhatItsRecordingsMeasured) {
   EXPECT_DOUBLE_EQ(*trial_heard_level(heard("a", {30, -2, 5}, 0, 2, {1, 0}).result), 5.0);
@@ -49,7 +52,7 @@ TEST(NoiseLevels, EachBandHoldsTheSharesOfItsTrials) {
       heard("b", {3}, 0, 3, {0.3, 0.7}),          // another arm's: 0 to 6, wrong at 0.7
       heard("a", {}, 0, 2, {1.0, 0.0}),           // heard no recording: in no band
   };
-  const std::vector<ArmNoiseBands> arms = arm_noise_bands({"a", "b"}, entries, kRight);
+  const std::vector<ArmNoiseBands> arms = arm_noise_bands({"a", "b"}, entries, kRight, kCosts);
   ASSERT_EQ(arms.size(), 2u);
   const std::vector<NoiseBand>& a = arms[0].bands;
   ASSERT_EQ(a.size(), 5u);
@@ -59,7 +62,9 @@ TEST(NoiseLevels, EachBandHoldsTheSharesOfItsTrials) {
   EXPECT_EQ(a[0].trials, 2);
   EXPECT_DOUBLE_EQ(a[0].share_right, 0.5);
   EXPECT_DOUBLE_EQ(a[0].mean_belief, 0.7);
-  EXPECT_DOUBLE_EQ(a[0].mean_heard, 2.0);  // 1 and 3 recordings
+  EXPECT_DOUBLE_EQ(a[0].mean_heard, 2.0);       // 1 and 3 recordings
+  EXPECT_DOUBLE_EQ(a[0].mean_behaviours, 2.0);  // 1 and 3 slides before the sort
+  EXPECT_DOUBLE_EQ(a[0].mean_cost, 3.0);        // at 1.5 each
   EXPECT_EQ(a[1].trials, 0);
   EXPECT_EQ(a[2].trials, 1);
   EXPECT_DOUBLE_EQ(a[2].mean_belief, 0.9);
@@ -74,7 +79,7 @@ TEST(NoiseLevels, EachBandHoldsTheSharesOfItsTrials) {
 TEST(NoiseLevels, ACappedTrialCountsButNeverSorted) {
   JournalEntry e = heard("a", {10}, 0, 2, {1.0, 0.0});
   e.result.record.capped = true;
-  const std::vector<ArmNoiseBands> arms = arm_noise_bands({"a"}, {e}, kRight);
+  const std::vector<ArmNoiseBands> arms = arm_noise_bands({"a"}, {e}, kRight, kCosts);
   const NoiseBand& band = arms[0].bands[2];
   EXPECT_EQ(band.trials, 1);
   EXPECT_EQ(band.sorts, 0);
@@ -90,10 +95,10 @@ TEST(NoiseLevels, EachTableHoldsTheSharesOfItsTrials) {
       heard("a", {5}, 1, 3, {0.2, 0.8}),       // steel: right at 0.8
       heard("b", {5}, 1, 2, {0.6, 0.4}),       // b on oak: wrong at 0.6
   };
-  EXPECT_TRUE(arm_surfaces({"a", "b"}, entries, kRight).empty());  // the lab's table
+  EXPECT_TRUE(arm_surfaces({"a", "b"}, entries, kRight, kCosts).empty());  // the lab's table
   for (std::size_t i : {0u, 2u}) entries[i].result.record.surface = "steel_bench";
   for (std::size_t i : {1u, 3u}) entries[i].result.record.surface = "oak_top";
-  const std::vector<ArmSurfaces> arms = arm_surfaces({"a", "b"}, entries, kRight);
+  const std::vector<ArmSurfaces> arms = arm_surfaces({"a", "b"}, entries, kRight, kCosts);
   ASSERT_EQ(arms.size(), 2u);
   ASSERT_EQ(arms[0].surfaces.size(), 2u);
   EXPECT_EQ(arms[0].surfaces[0].surface, "steel_bench");
@@ -103,6 +108,7 @@ TEST(NoiseLevels, EachTableHoldsTheSharesOfItsTrials) {
   EXPECT_EQ(arms[0].surfaces[1].surface, "oak_top");
   EXPECT_DOUBLE_EQ(arms[0].surfaces[1].share_right, 0.0);
   EXPECT_DOUBLE_EQ(arms[0].surfaces[1].mean_heard, 2.0);
+  EXPECT_DOUBLE_EQ(arms[0].surfaces[1].mean_cost, 3.0);
   EXPECT_EQ(arms[1].surfaces[0].trials, 0);  // b never stood on steel
   EXPECT_DOUBLE_EQ(arms[1].surfaces[1].mean_belief, 0.6);
 }
