@@ -12,7 +12,6 @@
 namespace echoplan::perception {
 namespace {
 
-constexpr std::size_t kBands = 26;
 // psf's energies are of samples in [-1, 1]; in 16-bit units they are 2^30 times larger.
 const double kSixteenBitPower = std::ldexp(1.0, 30);
 
@@ -34,7 +33,7 @@ audio::PcenStart background_start(const audio::FeatureMatrix& energies, std::siz
 
 std::vector<double> pcen_summary(const ClipAnalysis& clip) {
   const audio::FeatureMatrix& log_mel = clip.features.log_mel;
-  if (log_mel.cols != kBands)
+  if (log_mel.cols != kSummaryBands)
     throw InputError(fmt::format(
         "PCEN summary features need 26 log-mel bands (the psf preset), got {}", log_mel.cols));
   if (log_mel.rows == 0) throw InputError("PCEN summary features need at least one frame");
@@ -49,7 +48,7 @@ std::vector<double> pcen_summary(const ClipAnalysis& clip) {
   std::vector<double> out;
   out.reserve(kPcenSummarySize);
   for (const auto& [from, to] : kSummarySegments)
-    for (std::size_t b = 0; b < kBands; ++b) {
+    for (std::size_t b = 0; b < kSummaryBands; ++b) {
       double sum = 0.0;
       for (std::size_t f = from; f < to; ++f) sum += normalised.at(std::min(onset + f, last), b);
       out.push_back(sum / static_cast<double>(to - from));
@@ -60,7 +59,8 @@ std::vector<double> pcen_summary(const ClipAnalysis& clip) {
 std::vector<std::string> pcen_summary_names() {
   std::vector<std::string> names;
   for (std::size_t s = 0; s < kSummarySegments.size(); ++s)
-    for (std::size_t b = 0; b < kBands; ++b) names.push_back(fmt::format("pcen{}_band{}", s, b));
+    for (std::size_t b = 0; b < kSummaryBands; ++b)
+      names.push_back(fmt::format("pcen{}_band{}", s, b));
   return names;
 }
 

@@ -10,7 +10,6 @@
 namespace echoplan::perception {
 namespace {
 
-constexpr std::size_t kBands = 26;
 constexpr std::size_t kCepstra = 12;  // c1..c12
 constexpr std::size_t kWindow = 150;  // frames after the onset that the summary looks at
 constexpr double kFloorNats = 12.0;   // log-mel floor below the peak frame level
@@ -21,7 +20,7 @@ constexpr std::array<double, 3> kDecayDb{10.0, 20.0, 30.0};
 std::array<double, kSummarySize> summary_features(const ClipAnalysis& clip) {
   const audio::FeatureMatrix& log_mel = clip.features.log_mel;
   const audio::FeatureMatrix& mfcc = clip.features.mfcc;
-  if (log_mel.cols != kBands || mfcc.cols < kCepstra + 1)
+  if (log_mel.cols != kSummaryBands || mfcc.cols < kCepstra + 1)
     throw InputError(fmt::format(
         "summary features need 26 log-mel bands and 13 MFCCs (the psf preset), got {} and {}",
         log_mel.cols, mfcc.cols));
@@ -34,7 +33,7 @@ std::array<double, kSummarySize> summary_features(const ClipAnalysis& clip) {
   auto level = [&](std::size_t t) {
     double sum = 0.0;
     for (float v : log_mel.row(t)) sum += v;
-    return sum / static_cast<double>(kBands);
+    return sum / static_cast<double>(kSummaryBands);
   };
 
   std::array<double, kSummarySize> out{};
@@ -50,7 +49,7 @@ std::array<double, kSummarySize> summary_features(const ClipAnalysis& clip) {
 
   std::size_t i = 0;
   for (const auto& [from, to] : kSummarySegments) {
-    for (std::size_t b = 0; b < kBands; ++b) {
+    for (std::size_t b = 0; b < kSummaryBands; ++b) {
       double sum = 0.0;
       for (std::size_t f = from; f < to; ++f)
         sum += std::max(static_cast<double>(log_mel.at(frame(f), b)), floor);
@@ -89,7 +88,7 @@ std::array<double, kSummarySize> summary_features(const ClipAnalysis& clip) {
         log_mean += floored;
         mean += std::exp(floored);
       }
-      sum += log_mean / kBands - std::log(mean / kBands);
+      sum += log_mean / kSummaryBands - std::log(mean / kSummaryBands);
     }
     out[i++] = sum / static_cast<double>(to - from);
   }
@@ -104,7 +103,8 @@ std::array<double, kSummarySize> summary_features(const ClipAnalysis& clip) {
 std::vector<std::string> summary_feature_names() {
   std::vector<std::string> names;
   for (std::size_t s = 0; s < kSummarySegments.size(); ++s)
-    for (std::size_t b = 0; b < kBands; ++b) names.push_back(fmt::format("shape{}_band{}", s, b));
+    for (std::size_t b = 0; b < kSummaryBands; ++b)
+      names.push_back(fmt::format("shape{}_band{}", s, b));
   for (std::size_t c = 1; c <= kCepstra; ++c) names.push_back(fmt::format("mfcc_std{}", c));
   for (double db : kDecayDb) names.push_back(fmt::format("decay{}", static_cast<int>(db)));
   names.insert(names.end(), {"flatness_early", "flatness_late", "centroid_early", "centroid_late"});

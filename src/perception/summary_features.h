@@ -30,6 +30,8 @@
 namespace echoplan::perception {
 
 inline constexpr std::size_t kSummarySize = 123;
+// The psf preset's mel bands, which the summary (and pcen_summary.h) describes.
+inline constexpr std::size_t kSummaryBands = 26;
 // The four spans of frames after the onset whose mean spectrum the summary keeps: [from, to).
 inline constexpr std::array<std::pair<std::size_t, std::size_t>, 4> kSummarySegments{
     {{0, 3}, {3, 15}, {15, 50}, {50, 150}}};

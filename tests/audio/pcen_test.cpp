@@ -1,7 +1,8 @@
 // PCEN against its defining equations worked out here in closed form (not by running the
-// recursion): the smoother's coefficient for librosa's defaults, a constant input's steady state,
-// the exact response to a step, and what makes it a front end against noise: stationary
-// backgrounds 60 dB apart map to nearly the same value while an event stands out above them.
+// recursion): the smoother's coefficient for librosa's defaults, a constant input's
+// steady state, the exact response to a step, and what makes it a front end against
+// noise: stationary backgrounds 60 dB apart map to nearly the same value while an event stands out
+// above them.
 #include "audio/pcen.h"
 
 #include <gtest/gtest.h>
@@ -13,7 +14,7 @@
 namespace echoplan::audio {
 namespace {
 
-FeatureMatrix constant(std::size_t rows, std::size_t cols, float value) {
+FeatureMatrix constant_energies(std::size_t rows, std::size_t cols, float value) {
   FeatureMatrix m;
   m.resize(rows, cols);
   std::fill(m.values.begin(), m.values.end(), value);
@@ -21,7 +22,7 @@ FeatureMatrix constant(std::size_t rows, std::size_t cols, float value) {
 }
 
 // The steady state of a constant energy e: the average equals e.
-double steady(double e, const PcenConfig& c = {}) {
+double pcen_steady_state(double e, const PcenConfig& c = {}) {
   return std::pow(e / std::pow(c.eps + e, c.gain) + c.bias, c.power) - std::pow(c.bias, c.power);
 }
 
@@ -33,15 +34,15 @@ TEST(Pcen, SmoothingIsLibrosasForItsDefaultTimeConstant) {
 }
 
 TEST(Pcen, AConstantEnergyStaysAtItsSteadyState) {
-  const FeatureMatrix out = pcen(constant(30, 3, 1000.0f), 0.01, PcenConfig{});
-  EXPECT_NEAR(steady(1000.0), 0.3600901377785144, 1e-12);  // worked out by hand
+  const FeatureMatrix out = pcen(constant_energies(30, 3, 1000.0f), 0.01, PcenConfig{});
+  EXPECT_NEAR(pcen_steady_state(1000.0), 0.3600901377785144, 1e-12);  // worked out by hand
   for (float v : out.values) EXPECT_NEAR(v, 0.3600901377785144, 1e-5);
 }
 
 TEST(Pcen, AStepIsFollowedAsTheExponentialAverageSays) {
   // E = 100 for frames 0-9, then 10000: the average after the step is
   // M[9 + j] = 10000 + (100 - 10000) (1 - s)^j.
-  FeatureMatrix e = constant(60, 1, 100.0f);
+  FeatureMatrix e = constant_energies(60, 1, 100.0f);
   for (std::size_t t = 10; t < 60; ++t) e.at(t, 0) = 10000.0f;
   const double s = pcen_smoothing(0.4, 0.01);
   const FeatureMatrix out = pcen(e, 0.01, PcenConfig{});
@@ -51,17 +52,17 @@ TEST(Pcen, AStepIsFollowedAsTheExponentialAverageSays) {
     EXPECT_NEAR(out.at(9 + j, 0), expected, 1e-4 * expected) << "frame " << 9 + j;
   }
   // The frame of the step stands far above the steady state it relaxes to.
-  EXPECT_GT(out.at(10, 0), 5.0 * steady(10000.0));
+  EXPECT_GT(out.at(10, 0), 5.0 * pcen_steady_state(10000.0));
 }
 
 TEST(Pcen, StationaryBackgroundsFarApartMapNearlyTogetherAndAnEventStandsOut) {
   // 60 dB between the quiet and the loud room: PCEN leaves 0.32 against 0.41 (gain 0.98 keeps
   // E^0.02 of the level); a frame 100 times its background
   // reads over 10 times either (its own energy already lifts the average it is divided by).
-  const double quiet = steady(1.0), loud = steady(1e6);
+  const double quiet = pcen_steady_state(1.0), loud = pcen_steady_state(1e6);
   EXPECT_NEAR(quiet, std::sqrt(3.0) - std::sqrt(2.0), 1e-5);
   EXPECT_LT(loud - quiet, 0.1);
-  FeatureMatrix e = constant(50, 1, 1e6f);
+  FeatureMatrix e = constant_energies(50, 1, 1e6f);
   e.at(40, 0) = 1e8f;
   const FeatureMatrix out = pcen(e, 0.01, PcenConfig{});
   EXPECT_NEAR(out.at(39, 0), loud, 1e-4);
@@ -69,23 +70,24 @@ TEST(Pcen, StationaryBackgroundsFarApartMapNearlyTogetherAndAnEventStandsOut) {
 }
 
 TEST(Pcen, FramesBeforeTheStartAreZeroAndDoNotCount) {
-  // Digital silence, then a constant: started at the first sound, every frame after it is at the
-  // steady state; started at frame 0, the first sound is divided by an average that has barely
-  // begun to rise.
-  FeatureMatrix e = constant(20, 2, 500.0f);
+  // Digital silence, then a constant: started at the first sound, every frame after it is
+  // at the steady state; started at frame 0, the first sound is divided by an average
+  // that has barely begun to rise.
+  FeatureMatrix e = constant_energies(20, 2, 500.0f);
   for (std::size_t t = 0; t < 5; ++t) e.at(t, 0) = e.at(t, 1) = 0.0f;
   const FeatureMatrix started = pcen(e, 0.01, PcenConfig{}, PcenStart{5, {}});
   for (std::size_t t = 0; t < 5; ++t) EXPECT_EQ(started.at(t, 0), 0.0f);
-  for (std::size_t t = 5; t < 20; ++t) EXPECT_NEAR(started.at(t, 1), steady(500.0), 1e-5);
+  for (std::size_t t = 5; t < 20; ++t)
+    EXPECT_NEAR(started.at(t, 1), pcen_steady_state(500.0), 1e-5);
   const FeatureMatrix from_zero = pcen(e, 0.01, PcenConfig{});
-  EXPECT_GT(from_zero.at(5, 0), 10.0 * steady(500.0));
+  EXPECT_GT(from_zero.at(5, 0), 10.0 * pcen_steady_state(500.0));
 }
 
 TEST(Pcen, AGivenStartAverageIsTheBackgroundBeforeTheFirstFrame) {
-  // Started at an average of 100 under a constant 10000: the step of the test above, seen from its
-  // first frame, M[j] = 10000 + (100 - 10000) (1 - s)^(j + 1).
+  // Started at an average of 100 under a constant 10000: the step of the test above, seen
+  // from its first frame, M[j] = 10000 + (100 - 10000) (1 - s)^(j + 1).
   const FeatureMatrix out =
-      pcen(constant(20, 1, 10000.0f), 0.01, PcenConfig{}, PcenStart{0, {100.0}});
+      pcen(constant_energies(20, 1, 10000.0f), 0.01, PcenConfig{}, PcenStart{0, {100.0}});
   const double s = pcen_smoothing(0.4, 0.01);
   for (std::size_t j : {0, 5, 19}) {
     const double m = 10000.0 + (100.0 - 10000.0) * std::pow(1.0 - s, static_cast<double>(j + 1));
@@ -95,7 +97,7 @@ TEST(Pcen, AGivenStartAverageIsTheBackgroundBeforeTheFirstFrame) {
 }
 
 TEST(Pcen, RefusesParametersOutOfRange) {
-  const FeatureMatrix e = constant(4, 1, 1.0f);
+  const FeatureMatrix e = constant_energies(4, 1, 1.0f);
   auto with = [](auto change) {
     PcenConfig c;
     change(c);
