@@ -84,8 +84,11 @@ class SensorPublisher {
       else
         wrenches_.publish(wrench(force, f++));
     }
-    // Out on their connections before the answer lets the planner mark the performance's end.
-    ros::WallDuration(0.02).sleep();
+    // Out on their connections before the answer lets the planner mark the performance's end: ROS
+    // cannot flush a publisher, so the node waits. 20 ms was too little for a few hundred messages
+    // on a loaded machine (the ASan build's ros_torque heard a strike's wrench after its end
+    // marker); a real driver's messages flow all through an action that lasts seconds.
+    ros::WallDuration(0.25).sleep();
   }
 
  private:
