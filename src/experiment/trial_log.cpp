@@ -213,6 +213,7 @@ nlohmann::json summary_json(const TrialSummary& summary, const pomdp::ModelSpec&
   nlohmann::json j;
   j["trials"] = summary.trials;
   j["accuracy"] = summary.accuracy;
+  if (summary.sorted_right) j["sorted_right"] = *summary.sorted_right;
   j["mean_discounted_reward"] = summary.mean_discounted_reward;
   j["sd_discounted_reward"] = summary.sd_discounted_reward;
   j["ci95"] = summary.ci95;

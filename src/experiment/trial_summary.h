@@ -2,6 +2,7 @@
 // interval.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "common/statistics.h"
@@ -14,6 +15,9 @@ struct TrialSummary {
   // Fraction of trials whose final belief's mode is the truth; with `right_action` (summarize), the
   // fraction sorted right.
   double accuracy = 0.0;
+  // `echoplan trials` on an object problem: the fraction whose sorting action was right for the
+  // true object (its decision region), beside the identity's `accuracy`.
+  std::optional<double> sorted_right;
   double mean_discounted_reward = 0.0;
   double sd_discounted_reward = 0.0;  // sample standard deviation (n - 1); 0 for one trial
   double ci95 = 0.0;                  // half-width of the 95% CI of the mean (Student's t)

@@ -56,12 +56,6 @@ std::vector<double> pcen_summary(const ClipAnalysis& clip) {
   return out;
 }
 
-std::vector<std::string> pcen_summary_names() {
-  std::vector<std::string> names;
-  for (std::size_t s = 0; s < kSummarySegments.size(); ++s)
-    for (std::size_t b = 0; b < kSummaryBands; ++b)
-      names.push_back(fmt::format("pcen{}_band{}", s, b));
-  return names;
-}
+std::vector<std::string> pcen_summary_names() { return segment_band_names("pcen"); }
 
 }  // namespace echoplan::perception

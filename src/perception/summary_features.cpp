@@ -100,11 +100,16 @@ std::array<double, kSummarySize> summary_features(const ClipAnalysis& clip) {
   return out;
 }
 
-std::vector<std::string> summary_feature_names() {
+std::vector<std::string> segment_band_names(std::string_view prefix) {
   std::vector<std::string> names;
   for (std::size_t s = 0; s < kSummarySegments.size(); ++s)
     for (std::size_t b = 0; b < kSummaryBands; ++b)
-      names.push_back(fmt::format("shape{}_band{}", s, b));
+      names.push_back(fmt::format("{}{}_band{}", prefix, s, b));
+  return names;
+}
+
+std::vector<std::string> summary_feature_names() {
+  std::vector<std::string> names = segment_band_names("shape");
   for (std::size_t c = 1; c <= kCepstra; ++c) names.push_back(fmt::format("mfcc_std{}", c));
   for (double db : kDecayDb) names.push_back(fmt::format("decay{}", static_cast<int>(db)));
   names.insert(names.end(), {"flatness_early", "flatness_late", "centroid_early", "centroid_late"});

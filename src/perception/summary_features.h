@@ -22,6 +22,7 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -41,5 +42,9 @@ std::array<double, kSummarySize> summary_features(const ClipAnalysis& clip);
 
 // A short name per entry ("shape0_band3", "mfcc_std5", "decay20", ...), for reports and tests.
 std::vector<std::string> summary_feature_names();
+
+// PREFIX{segment}_band{band} for every segment of kSummarySegments and band of kSummaryBands, in
+// that order: the names of a per-segment band spectrum (the summary's and pcen_summary.h's).
+std::vector<std::string> segment_band_names(std::string_view prefix);
 
 }  // namespace echoplan::perception

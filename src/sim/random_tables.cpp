@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <numbers>
 #include <string_view>
 
 #include "common/error.h"
@@ -18,7 +19,7 @@ constexpr std::uint64_t kRandomTablesStream = 0x727461626c;
 constexpr std::string_view kPrefix = "random:";
 constexpr int kMostTables = 1000;
 // Loss factors are met at 1 kHz: eta = alpha / omega + beta * omega.
-constexpr double kOmega = 2.0 * 3.14159265358979323846 * 1000.0;
+constexpr double kOmega = 2.0 * std::numbers::pi * 1000.0;
 constexpr double kMassShare = 0.2;  // of the loss factor taken by alpha
 
 double log_uniform(Rng& rng, double lo, double hi) {

@@ -65,12 +65,35 @@ if not e["sd"] < 0.6 * s["sd_discounted_reward"]:
 sys.exit(bad)
 PY
 
+# Sorted right beside the identity's accuracy, on the problem whose unlike objects strike as the
+# other kind (random sorts, so the two differ), checked against the bins its file gives (cups to
+# A, tins to B) and the identities believed, from trials.csv. Tiger has no objects: no
+# sorted_right.
+"$bin" trials --problem "$src/problems/correlated_repeats.yaml" --solver random --trials 60 --seed 2 \
+  --out "$work/bins" >"$work/bins.txt" 2>/dev/null || fail "trials on correlated_repeats exited $?"
+grep -q "^sorted right  " "$work/bins.txt" || fail "the summary printed no sorted-right share"
+python3 - "$work/bins" <<'PY' || fail "sorted right: see above"
+import csv, json, os, sys
+s = json.load(open(os.path.join(sys.argv[1], "summary.json")))
+rows = list(csv.DictReader(open(os.path.join(sys.argv[1], "trials.csv"))))
+bin_of = {"cup": "A", "ringing_cup": "A", "tin": "B", "thudding_tin": "B"}
+right = sum(r["n_move_to_" + bin_of[r["true_state"]]] == "1" for r in rows) / len(rows)
+named = sum(r["true_state"] == r["believed_state"] for r in rows) / len(rows)
+bad = 0
+if abs(s["sorted_right"] - right) > 1e-9:
+    print(f"sorted_right {s['sorted_right']} is not the {right} trials.csv gives"); bad += 1
+if abs(s["accuracy"] - named) > 1e-9:
+    print(f"accuracy {s['accuracy']} is not the {named} trials.csv gives"); bad += 1
+sys.exit(bad)
+PY
+
 # The offline policy as a solver: solve Tiger, then run it; a policy for another problem is refused.
 "$bin" solve --problem "$src/problems/tiger.pomdp" --out "$work/tiger_policy" >/dev/null 2>&1 \
   || { echo "FAIL: solve tiger"; failures=$((failures + 1)); }
 "$bin" trials --problem "$src/problems/tiger.pomdp" --solver offline --policy "$work/tiger_policy/policy.json" \
   --trials 3 --max-steps 10 --seed 1 --out "$work/offline" >/dev/null 2>&1 \
   || { echo "FAIL: offline trials on tiger"; failures=$((failures + 1)); }
+grep -q sorted_right "$work/offline/summary.json" && fail "tiger's summary.json reports a sorted-right share"
 [ "$(wc -l <"$work/offline/steps.csv")" -eq 31 ] || { echo "FAIL: 3 tiger trials of 10 steps should log 30 steps"; failures=$((failures + 1)); }
 expect_input_error "policy of another problem" "the policy is for 2 states" trials --problem "$problem" --out "$work/o" \
   --solver offline --policy "$work/tiger_policy/policy.json"
