@@ -5,14 +5,15 @@
 # its problem for novel objects written by `echoplan train --hold-out object --problem-out`, then
 # `echoplan trials` on that problem (the model as the world, an exact belief) with ABT at EPISODES
 # episodes, information_gain, all_actions and best_single, TRIALS trials each on one seed. Prints
-# each solver's accuracy, drawn reward, expected reward (each reward's expectation under the belief:
-# the same mean, less variance) and behaviours, and each strategy's paired expected-reward
-# difference from ABT. What it shows: whether the planner makes the most of the model it is given.
+# each solver's accuracy (the object named) and share sorted right, drawn reward, expected reward
+# (each reward's expectation under the belief: the same mean, less variance) and behaviours, and
+# each strategy's paired expected-reward difference from ABT. What it shows: whether the planner makes the most of the model it is given.
 # What it does not: anything about the data (bench/dataset_campaign.sh replays the sessions).
 # With PROBLEM=FILE (environment): that problem instead of the stand-in, its one-line particle
 # belief made exact (problems/audio_objects.yaml: four objects in two bins, where the sort is
 # coarser than the object). With SOLVERS="abt ..." (environment): those solvers, abt first; when
 # both greedy rules are among them, also decision_region's paired difference from information_gain.
+# With ABT_FLAGS="..." (environment): more flags for ABT's run (e.g. "--leaf exact").
 # Usage: bench/model_world.sh BUILD_DIR [TRIALS] [EPISODES] [OUT]
 set -eu
 build=$1
@@ -38,7 +39,8 @@ fi
 grep -q "^  type: exact" "$out/problem.yaml" || { echo "model_world.sh: the problem's belief is not exact" >&2; exit 1; }
 for solver in $solvers; do
   /usr/bin/time -f "%e" -o "$out/$solver.time" "$build/echoplan" trials --problem "$out/problem.yaml" \
-    --solver "$solver" --trials "$trials" --episodes "$episodes" --seed 1 --out "$out/$solver" >/dev/null 2>&1
+    --solver "$solver" --trials "$trials" --episodes "$episodes" --seed 1 --out "$out/$solver" \
+    $([ "$solver" = abt ] && echo "${ABT_FLAGS:-}") >/dev/null 2>&1
 done
 /usr/bin/python3 - "$out" $solvers <<'PY'
 import csv, json, math, os, re, sys
@@ -54,7 +56,7 @@ def ci(values):
     return m, student.ppf(0.975, n - 1) * sd / math.sqrt(n)
 def expected(s):
     return [float(r["expected_reward"]) for r in csv.DictReader(open(os.path.join(out, s, "expected_rewards.csv")))]
-print("| solver | accuracy | drawn reward (95% CI) | expected reward (95% CI) | behaviours | expected minus abt, paired (95% CI) | wall s |")
+print("| solver | accuracy, sorted right | drawn reward (95% CI) | expected reward (95% CI) | behaviours | expected minus abt, paired (95% CI) | wall s |")
 print("|---|---|---|---|---|---|---|")
 base = expected("abt")
 for s in solvers:
@@ -63,7 +65,8 @@ for s in solvers:
     sensing = sum(v for k, v in j["mean_action_counts"].items() if k not in sorting)
     diff = "" if s == "abt" else "%+.2f ± %.2f" % ci([x - y for x, y in zip(expected(s), base)])
     wall = open(os.path.join(out, s + ".time")).read().split()[-1]
-    print(f"| {s} | {100 * j['accuracy']:.0f}% | {j['mean_discounted_reward']:.2f} ± {j['ci95']:.2f} | "
+    right = j.get("sorted_right", j["accuracy"])
+    print(f"| {s} | {100 * j['accuracy']:.0f}%, {100 * right:.0f}% | {j['mean_discounted_reward']:.2f} ± {j['ci95']:.2f} | "
           f"{e['mean']:.2f} ± {e['ci95']:.2f} | {sensing:.2f} | {diff} | {wall} |")
 if "information_gain" in solvers and "decision_region" in solvers:
     d = ci([x - y for x, y in zip(expected("decision_region"), expected("information_gain"))])
