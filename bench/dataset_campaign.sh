@@ -26,6 +26,8 @@
 # by self-play on the folds' problems, experiment/unheard_choice.h) against information_gain; prints
 # the choice (unheard.json). Where it chooses commit its trials are ARMS=commit's, seed for seed.
 # With OBSERVATIONS=graded (environment): the five arms all hear grades.
+# With STRATEGIES=lookalike (environment): the four fixed strategies of the five arms believe with
+# lookalikes (`lookalike: true`).
 # With PLAN=plain (environment): the planner of the five arms (and of ARMS=graded) counts unheard
 # outcomes as shared and plans without lookalikes (unheard: share, lookalike: false): with HOLD_OUT
 # object, as it did by default before a planner sorting novel objects defaulted to commit with
@@ -111,11 +113,13 @@ elif [ "${ARMS:-}" = unlike ]; then
 else
   heard=
   [ "${OBSERVATIONS:-}" = graded ] && heard=', observations: graded'
+  fixed=$heard
+  [ "${STRATEGIES:-}" = lookalike ] && fixed="$heard, lookalike: true"
   arms="  - {name: plan, strategy: plan$heard$planner}
-  - {name: all_actions, strategy: all_actions$heard}
-  - {name: best_single, strategy: best_single$heard}
-  - {name: information_gain, strategy: information_gain$heard}
-  - {name: random, strategy: random$heard}"
+  - {name: all_actions, strategy: all_actions$fixed}
+  - {name: best_single, strategy: best_single$fixed}
+  - {name: information_gain, strategy: information_gain$fixed}
+  - {name: random, strategy: random$fixed}"
 fi
 costs=
 if [ "${COSTS:-}" = costed ]; then

@@ -5,9 +5,8 @@
 # in 8 groups of 5, 5 sessions, 4 behaviours, audio and haptic), sorted by group with whole objects
 # held out, at EPISODES episodes: the planner (with ABT's default leaf and with the exact leaf) and
 # the fixed strategies, each without and with lookalikes among the hidden states (`lookalike:
-# true`; the fixed strategies' default on novel objects, their `_plain` arms without), and last the
-# planner as a campaign sorting novel objects plans by default (`plan_defaults`: lookalikes, unheard
-# outcomes at commit); the exact planner with lookalikes first, so the paired differences are
+# true`, the `_lookalike` arms), and last the planner as a campaign sorting novel objects plans by
+# default (`plan_defaults`: lookalikes, unheard outcomes at commit); the exact planner with lookalikes first, so the paired differences are
 # against it. Prints each arm's row, the paired differences, how sure each arm was at the sort
 # against how often it was right, and each fold's certified regret per trial.
 # Usage: bench/honest_confidence.sh BUILD_DIR [EPISODES] [OUT]
@@ -38,9 +37,9 @@ arms:
   - {name: all_actions, strategy: all_actions}
   - {name: best_single, strategy: best_single}
   - {name: information_gain, strategy: information_gain}
-  - {name: all_actions_plain, strategy: all_actions, lookalike: false}
-  - {name: best_single_plain, strategy: best_single, lookalike: false}
-  - {name: information_gain_plain, strategy: information_gain, lookalike: false}
+  - {name: all_actions_lookalike, strategy: all_actions, lookalike: true}
+  - {name: best_single_lookalike, strategy: best_single, lookalike: true}
+  - {name: information_gain_lookalike, strategy: information_gain, lookalike: true}
   - {name: plan_defaults, strategy: plan}
 planner: {solver: abt, episodes: $episodes, max_steps: 100}
 YAML

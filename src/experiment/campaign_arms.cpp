@@ -70,19 +70,18 @@ void check_words(const CampaignConfig& config, const CampaignArm& arm) {
                        name));
 }
 
-// Every arm sorting novel objects (a dataset world holding out objects) believes with lookalikes,
-// unless its arm names them: the table's calibration on novel objects, not only the planner's (a
-// fixed strategy's belief at the sort was 7.8 to 8.6 points surer than right without them;
-// docs/BENCHMARKS.md, "Honest confidence"). A planner also counts the outcomes no episode has heard
-// at their commit value (ABT with a leaf that follows the exact belief), unless its arm names them
-// (docs/BENCHMARKS.md, "How the planner counts outcomes it has not heard"). Holding out sessions,
-// the folds fit no lookalikes and commit ties share for more planning time (docs/BENCHMARKS.md,
-// "The planner's defaults on novel objects"): there every arm stays plain.
+// A planner sorting novel objects (a dataset world holding out objects) plans with lookalikes and
+// counts the outcomes no episode has heard at their commit value (ABT with a leaf that follows the
+// exact belief), unless its arm names them (measured: docs/BENCHMARKS.md, "How the planner counts
+// outcomes it has not heard"). Holding out sessions, the folds fit no lookalikes and commit ties
+// share for more planning time (docs/BENCHMARKS.md, "The planner's defaults on novel objects"):
+// there the plain planner stays.
 void apply_novel_object_defaults(const CampaignConfig& config, const CampaignArm& arm,
                                  ResolvedArm& resolved) {
-  if (!config.world.recorded_data() || config.world.hold_out != perception::HoldOut::object) return;
+  if (!resolved.plans() || !config.world.recorded_data() ||
+      config.world.hold_out != perception::HoldOut::object)
+    return;
   if (!arm.lookalike) resolved.plans_with.lookalike = true;
-  if (!resolved.plans()) return;
   const bool can_commit =
       config.planner.solver == "abt" &&
       (arm.leaf.empty() || solvers::follows_exact_belief(solvers::parse_leaf_mode(arm.leaf)));
