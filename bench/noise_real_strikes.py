@@ -19,13 +19,12 @@ Needs: apt-get install hydrogen-drumkits asterisk-core-sounds-en-wav.
 """
 import argparse
 import json
-import shutil
 import os
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from perception_accuracy import KITS_DIR, kit_instruments  # noqa: E402
+from perception_accuracy import KITS_DIR, add_strikes, kit_instruments  # noqa: E402
 import subprocess  # noqa: E402
 
 SPEECH = "/usr/share/asterisk/sounds/en_US_f_Allison"
@@ -39,15 +38,7 @@ def strike_tree(root, kit):
     rows = ["file,object,action,session"]
     names = set()
     for name, files in instruments:
-        obj = "".join(c if c.isalnum() else "_" for c in name)
-        while obj in names:
-            obj += "_"
-        names.add(obj)
-        os.makedirs(os.path.join(root, obj, "strike"))
-        for layer, source in enumerate(files[:MIN_LAYERS]):
-            file = "%s/strike/%d%s" % (obj, layer, os.path.splitext(source)[1])
-            shutil.copy(source, os.path.join(root, file))
-            rows.append("%s,%s,strike,%d" % (file, obj, layer + 1))
+        add_strikes(root, name, files[:MIN_LAYERS], lambda n: n + 1, rows, names)
     with open(os.path.join(root, "manifest.csv"), "w") as out:
         out.write("\n".join(rows) + "\n")
     return len(instruments)

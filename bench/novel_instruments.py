@@ -20,13 +20,12 @@ import argparse
 import json
 import os
 import re
-import shutil
 import subprocess
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from perception_accuracy import KITS_DIR, kit_instruments  # noqa: E402
+from perception_accuracy import KITS_DIR, add_strikes, kit_instruments  # noqa: E402
 
 # First match wins: "Ride Bell" is a cymbal, "Snare Rimshot" a snare, "Hi-Hat Pedal" a hi-hat.
 FAMILIES = [
@@ -60,15 +59,7 @@ def instrument_tree(root, layers):
             fam = family(name)
             if fam is None or len(files) < layers:
                 continue
-            obj = re.sub(r"[^A-Za-z0-9]+", "_", kit + "_" + name).strip("_")
-            while obj in names:
-                obj += "_"
-            names.add(obj)
-            os.makedirs(os.path.join(root, obj, "strike"))
-            for layer, source in enumerate(files[:layers]):
-                file = "%s/strike/%d%s" % (obj, layer, os.path.splitext(source)[1])
-                shutil.copy(source, os.path.join(root, file))
-                rows.append("%s,%s,strike,1" % (file, obj))
+            obj = add_strikes(root, kit + "_" + name, files[:layers], lambda n: 1, rows, names)
             groups.append("%s,%s" % (obj, fam))
             counts[fam] = counts.get(fam, 0) + 1
     with open(os.path.join(root, "manifest.csv"), "w") as out:

@@ -14,6 +14,7 @@ Needs: apt-get install hydrogen-drumkits (for the real source). Prints a Markdow
 import argparse
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -38,6 +39,23 @@ def kit_instruments(kit_dir):
         if len(set(files)) == len(files):
             out.append((ins.findtext(ns + "name"), files))
     return out
+
+
+def add_strikes(root, name, files, session, rows, names):
+    """Copies `files` into a recordings tree as ROOT/<object>/strike/<n>.<ext>, the object named
+    after `name` (its other characters made "_", unique among `names`, which it joins), appending one manifest
+    row (file,object,action,session) per file to `rows`, session(n) naming the n-th file's session.
+    Returns the object's name."""
+    obj = "".join(c if c.isalnum() else "_" for c in name)
+    while obj in names:
+        obj += "_"
+    names.add(obj)
+    os.makedirs(os.path.join(root, obj, "strike"))
+    for n, source in enumerate(files):
+        file = "%s/strike/%d%s" % (obj, n, os.path.splitext(source)[1])
+        shutil.copy(source, os.path.join(root, file))
+        rows.append("%s,%s,strike,%s" % (file, obj, session(n)))
+    return obj
 
 
 def link_set(root, classes):

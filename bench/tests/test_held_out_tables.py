@@ -1,15 +1,10 @@
 """bench/held_out_tables.py's parts on hand-made inputs: the campaign it writes for a held-out table
 (read back as YAML) and the paired interval (against Student's t table values)."""
-import importlib.util
-import os
-
 import yaml
 
-SCRIPT = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
-                      "held_out_tables.py")
-spec = importlib.util.spec_from_file_location("held_out_tables", SCRIPT)
-held_out_tables = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(held_out_tables)
+from bench_script import load
+
+held_out_tables = load("held_out_tables")
 
 
 def test_a_campaign_trains_on_every_table_but_the_one_its_trials_stand_on():

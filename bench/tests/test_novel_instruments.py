@@ -1,15 +1,10 @@
 """bench/novel_instruments.py's parts on hand-made inputs: the family read off an instrument's name
 and the campaign it writes (read back as YAML)."""
-import importlib.util
-import os
-
 import yaml
 
-SCRIPT = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
-                      "novel_instruments.py")
-spec = importlib.util.spec_from_file_location("novel_instruments", SCRIPT)
-novel_instruments = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(novel_instruments)
+from bench_script import load
+
+novel_instruments = load("novel_instruments")
 
 
 def test_families_from_the_kits_instrument_names():
