@@ -6,9 +6,10 @@
 # held out, at EPISODES episodes: the planner (with ABT's default leaf and with the exact leaf) and
 # the fixed strategies, each without and with lookalikes among the hidden states (`lookalike:
 # true`, the `_lookalike` arms), and last the planner as a campaign sorting novel objects plans by
-# default (`plan_defaults`: lookalikes, unheard outcomes at commit); the exact planner with lookalikes first, so the paired differences are
-# against it. Prints each arm's row, the paired differences, how sure each arm was at the sort
-# against how often it was right, and each fold's certified regret per trial.
+# default (`plan_defaults`: lookalikes, unheard outcomes at commit); the exact planner with
+# lookalikes first, so the paired differences are against it. Prints each arm's row, the paired
+# differences, how sure each arm was at the sort against how often it was right, and each fold's
+# certified regret per trial.
 # Usage: bench/honest_confidence.sh BUILD_DIR [EPISODES] [OUT]
 set -eu
 build=$1

@@ -7,8 +7,9 @@
 # episodes, information_gain, all_actions and best_single, TRIALS trials each on one seed. Prints
 # each solver's accuracy (the object named) and share sorted right, drawn reward, expected reward
 # (each reward's expectation under the belief: the same mean, less variance) and behaviours, and
-# each strategy's paired expected-reward difference from ABT. What it shows: whether the planner makes the most of the model it is given.
-# What it does not: anything about the data (bench/dataset_campaign.sh replays the sessions).
+# each strategy's paired expected-reward difference from ABT. What it shows: whether the planner
+# makes the most of the model it is given. What it does not: anything about the data
+# (bench/dataset_campaign.sh replays the sessions).
 # With PROBLEM=FILE (environment): that problem instead of the stand-in, its one-line particle
 # belief made exact (problems/audio_objects.yaml: four objects in two bins, where the sort is
 # coarser than the object). With SOLVERS="abt ..." (environment): those solvers, abt first; when

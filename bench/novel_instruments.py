@@ -10,8 +10,8 @@ campaign holds out whole instruments (`hold_out: object`): each trial strikes an
 classifiers never heard, up to LAYERS times, and sorts it by family. Repeated strikes of one
 instrument err together: an instrument unlike its family sounds unlike it at every velocity. Arms:
 the planner as a campaign sorting novel objects plans by default (lookalikes, unheard outcomes at
-commit), the plain planner, and the two greedy rules. Prints each arm's share sorted right, its belief
-at the sort, its strikes, its reward, and its paired difference from the planner.
+commit), the plain planner, and the two greedy rules. Prints each arm's share sorted right, its
+belief at the sort, its strikes, its reward, and its paired difference from the planner.
 
 Usage: bench/novel_instruments.py ECHOPLAN [--episodes N] [--layers L] [--seed S] [--out DIR]
 Needs: apt-get install hydrogen-drumkits.
@@ -51,8 +51,8 @@ def family(name):
 
 
 def instrument_tree(root, layers):
-    """Every kit's instruments with a family and >= `layers` layers as a recordings tree, one session
-    of `layers` strikes each, and its groups file; {family: instruments}."""
+    """Every kit's instruments with a family and >= `layers` layers as a recordings tree, one
+    session of `layers` strikes each, and its groups file; {family: instruments}."""
     rows, groups, names, counts = ["file,object,action,session"], ["object,group"], set(), {}
     for kit in sorted(os.listdir(KITS_DIR)):
         for name, files in kit_instruments(os.path.join(KITS_DIR, kit)):

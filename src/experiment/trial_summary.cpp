@@ -13,6 +13,13 @@ bool right(const TrialRecord& t, const std::vector<int>& right_action) {
 
 }  // namespace
 
+double share_right(const std::vector<TrialRecord>& trials, const std::vector<int>& right_action) {
+  if (trials.empty()) return 0.0;
+  double share = 0.0;
+  for (const TrialRecord& t : trials) share += right(t, right_action) / double(trials.size());
+  return share;
+}
+
 TrialSummary summarize(const std::vector<TrialRecord>& trials, int num_actions,
                        const std::vector<int>& right_action,
                        const std::vector<double>& action_costs) {
@@ -21,8 +28,8 @@ TrialSummary summarize(const std::vector<TrialRecord>& trials, int num_actions,
   s.mean_action_counts.assign(num_actions, 0.0);
   if (trials.empty()) return s;
   const double n = static_cast<double>(trials.size());
+  s.accuracy = share_right(trials, right_action);
   for (const TrialRecord& t : trials) {
-    s.accuracy += right(t, right_action) / n;
     s.mean_discounted_reward += t.discounted_reward / n;
     s.mean_steps += t.steps / n;
     for (int a = 0; a < num_actions; ++a) s.mean_action_counts[a] += t.action_counts[a] / n;

@@ -32,6 +32,11 @@ struct TrialSummary {
   MeanInterval expected_reward;
 };
 
+// The share of `trials` right: with `right_action` (below), sorted right; without, whose final
+// belief's mode is the truth. 0 without trials.
+double share_right(const std::vector<TrialRecord>& trials,
+                   const std::vector<int>& right_action = {});
+
 // `right_action[s]`, when given, is the action that sorts true state s right (a dataset world sorts
 // objects by group, so knowing the group is enough): a trial is right when it took that action.
 // `action_costs[a]`, when given (one per action), is what one use of action a costs: mean_cost is

@@ -121,8 +121,7 @@ void run_trials_command(const TrialsFlags& f) {
   // Where bins are coarser than objects, the object believed at the end (accuracy) can be wrong
   // and the sort right: say both.
   if (const std::vector<int> right = right_sorts(problem); !right.empty())
-    summary.sorted_right =
-        experiment::summarize(records, problem.model->num_actions(), right).accuracy;
+    summary.sorted_right = experiment::share_right(records, right);
   if (!expected.empty() && expected.size() == records.size())
     summary.expected_reward = mean_ci95(expected);
   nlohmann::json run = planner.to_json();
