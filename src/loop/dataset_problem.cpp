@@ -150,9 +150,12 @@ pomdp::ObjectProblemData dataset_problem(const perception::DatasetTask& task,
         "fitted on sessions for the same classes",
         fmt::join(model.classes(), ", "), model.reject() ? ", unknown" : "",
         fmt::join(task.classes, ", ")));
+  const bool lookalikes =
+      lookalike_share && *lookalike_share > 0.0 && model.lookalikes_untempered(kind);
   Table table;
   for (const std::string& action : model.actions())
-    table.push_back(model.observation_table(action, kind));
+    table.push_back(lookalikes ? model.untempered_table(action, kind)
+                               : model.observation_table(action, kind));
   pomdp::ObjectProblemData data = problem_of(task, model.actions(), model.observation_symbols(kind),
                                              table, rewards, std::move(uses));
   if (lookalike_share) add_lookalike_copies(data, *lookalike_share);

@@ -53,7 +53,11 @@ struct TaskSpec {
 // of it), its observation rows are j's, and its sorting reward is the mean of the other classes'
 // (the class it really is is any other, equally likely). However clearly an object sounds like j,
 // the belief that it is j then stays below about 1 - rho. Usually rho is the model's
-// lookalike_share(kind); 0 plans exactly as without copies; none: no copies.
+// lookalike_share(kind); 0 plans exactly as without copies; none: no copies. With rho > 0 and a
+// model whose share was fitted on its untempered tables (lookalikes_untempered(kind)), every row
+// is the untempered one (ObservationModel::untempered_table): the lookalikes then model how an
+// object's readings err together, its repeats too; a tempered table as well would flatten every
+// first reading (docs/feature-sets.md, 6).
 pomdp::ObjectProblemData dataset_problem(
     const perception::DatasetTask& task, const perception::ObservationModel& model,
     const TaskSpec& rewards, std::vector<int> uses,

@@ -306,15 +306,14 @@ std::vector<Sequence> sequences_of(const ActionData& action, const TrainingRows&
   return sequences;
 }
 
-// One action's inner-held-out performances as symbols (typicality.h), each fold's table tempered
-// with the action's own beta.
+// One action's inner-held-out performances as symbols (typicality.h), each fold's table
+// untempered, with the action's power `beta` (fit_lookalikes tries the shares both ways).
 HeldOutPerformances held_out(const ActionData& action, const TrainingRows& t,
                              const std::vector<int>& symbols,
                              const std::vector<Table>& cross_fitted, double beta) {
-  HeldOutPerformances held{{}, t.fold, t.labels, symbols, {}};
+  HeldOutPerformances held{{}, t.fold, t.labels, symbols, cross_fitted, beta};
   for (std::size_t i = 0; i < t.rows.size(); ++i)
     held.session.push_back(sequence_of_row(action, t, i));
-  for (const Table& table : cross_fitted) held.cross_fitted.push_back(temper(table, beta));
   return held;
 }
 
@@ -608,8 +607,12 @@ struct ObservationModelFitter {
       if (progress) progress("fit", a + 1, total);
     }
     if (by_session) {
-      description.lookalike_share = fit_lookalike_share(shares.labels);
-      description.graded_lookalike_share = fit_lookalike_share(shares.graded);
+      const LookalikeFit labels = fit_lookalikes(shares.labels),
+                         graded = fit_lookalikes(shares.graded);
+      description.lookalike_share = labels.share;
+      description.lookalike_untempered = labels.untempered;
+      description.graded_lookalike_share = graded.share;
+      description.graded_lookalike_untempered = graded.untempered;
     }
     return ObservationModel(std::move(description), std::move(per_action));
   }

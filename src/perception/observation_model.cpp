@@ -93,6 +93,18 @@ const std::vector<std::vector<double>>& ObservationModel::observation_table(
                                          : calibration(action).graded_table;
 }
 
+std::vector<std::vector<double>> ObservationModel::untempered_table(const std::string& action,
+                                                                    ObservationKind kind) const {
+  const std::vector<std::vector<double>>& tempered = observation_table(action, kind);
+  const std::optional<ActionFit>& fit = calibration(action).fit;
+  if (!fit) return tempered;
+  const double beta = kind == ObservationKind::labels   ? fit->temper
+                      : kind == ObservationKind::graded ? fit->graded_temper
+                                                        : fit->level_temper;
+  // (p^beta renormalised)^(1 / beta) renormalised is p.
+  return beta == 1.0 ? tempered : temper(tempered, 1.0 / beta);
+}
+
 int ObservationModel::action_index(const std::string& action) const {
   const auto& actions = description_.actions;
   const auto it = std::find(actions.begin(), actions.end(), action);

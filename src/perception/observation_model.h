@@ -46,6 +46,10 @@ struct ModelDescription {
   // performance and in files without it.
   double lookalike_share = 0.0;
   double graded_lookalike_share = 0.0;
+  // The share was fitted on the untempered tables, which a problem with lookalikes then plans
+  // with (typicality.h, fit_lookalikes); false: on the tempered ones (and in files written before).
+  bool lookalike_untempered = false;
+  bool graded_lookalike_untempered = false;
 };
 
 // What cross-validation measured about one action: for reports and the fusion claim. Absent in
@@ -121,6 +125,11 @@ class ObservationModel {
     return kind == ObservationKind::graded ? description_.graded_lookalike_share
                                            : description_.lookalike_share;
   }
+  // Whether a problem with lookalikes of `kind` mixes the untempered tables.
+  bool lookalikes_untempered(ObservationKind kind) const {
+    return kind == ObservationKind::graded ? description_.graded_lookalike_untempered
+                                           : description_.lookalike_untempered;
+  }
   // classes() followed by "unknown" when reject() is on.
   std::vector<std::string> observation_symbols() const;
   // Every action has graded observations (a model trained since they exist).
@@ -147,6 +156,10 @@ class ObservationModel {
   // The same for `kind` (InputError for graded when the model has no grades).
   const std::vector<std::vector<double>>& observation_table(const std::string& action,
                                                             ObservationKind kind) const;
+  // The same table before tempering for repeats (its rows' fitted power undone): what the
+  // lookalike mixture mixes (typicality.h).
+  std::vector<std::vector<double>> untempered_table(const std::string& action,
+                                                    ObservationKind kind) const;
 
   // Classifies a clip recorded with `action`, already analysed with analysis() (a ClipAnalyzer
   // per thread; the model itself is read-only, so threads may share it). InputError when a

@@ -25,6 +25,9 @@ namespace jf = json_fields;
 
 constexpr const char* kFormatName = "echoplan-observation-model";
 
+// The tables a lookalike share mixes, as the file names them.
+const char* tables_name(bool untempered) { return untempered ? "untempered" : "tempered"; }
+
 nlohmann::json analysis_json(const AnalysisSettings& analysis) {
   const auto& o = analysis.onset;
   return {{"sample_rate", analysis.sample_rate},
@@ -99,6 +102,9 @@ nlohmann::json observation_model_to_json(const ObservationModel& model) {
           {"lookalike_share",
            {{"labels", model.lookalike_share(ObservationKind::labels)},
             {"graded", model.lookalike_share(ObservationKind::graded)}}},
+          {"lookalike_tables",
+           {{"labels", tables_name(model.lookalikes_untempered(ObservationKind::labels))},
+            {"graded", tables_name(model.lookalikes_untempered(ObservationKind::graded))}}},
           {"per_action", per_action}};
 }
 
@@ -175,6 +181,24 @@ void read_shares(const nlohmann::json& doc, const char* key, const std::string& 
   graded = share("graded");
 }
 
+// Which tables the lookalike shares mix (`lookalike_tables`): {labels, graded}, each "tempered"
+// or "untempered". Absent in files written before the choice existed: tempered.
+void read_share_tables(const nlohmann::json& doc, const std::string& source, bool& labels,
+                       bool& graded) {
+  const char* key = "lookalike_tables";
+  if (!doc.contains(key)) return;
+  const auto untempered = [&](const char* kind) {
+    const std::string where = std::string(key) + "." + kind;
+    const std::string name = jf::string(jf::member(doc[key], kind, key, source), where, source);
+    if (name != tables_name(true) && name != tables_name(false))
+      throw InputError(source, 0,
+                       fmt::format("{}: '{}' is not one of: tempered, untempered", where, name));
+    return name == tables_name(true);
+  };
+  labels = untempered("labels");
+  graded = untempered("graded");
+}
+
 ModelDescription read_description(const nlohmann::json& doc, const std::string& source) {
   ModelDescription d;
   d.analysis = read_analysis(doc, source);
@@ -191,6 +215,7 @@ ModelDescription read_description(const nlohmann::json& doc, const std::string& 
                                  fmt::join(row_classifier_names(), ", ")));
   }
   read_shares(doc, "lookalike_share", source, d.lookalike_share, d.graded_lookalike_share);
+  read_share_tables(doc, source, d.lookalike_untempered, d.graded_lookalike_untempered);
   d.classes = jf::names(jf::member(doc, "classes", "", source), -1, "classes", source);
   if (d.classes.size() < 2)
     throw InputError(source, 0, "classes: a model needs at least two classes");

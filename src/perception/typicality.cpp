@@ -143,6 +143,20 @@ double lookalike_nll(std::span<const Table> tables, double rho,
   return lookalike_nll(truth_posteriors(score(tables, sequences)), rho);
 }
 
+LookalikeFit fit_lookalikes(std::span<const HeldOutPerformances> actions) {
+  std::vector<HeldOutPerformances> tempered(actions.begin(), actions.end());
+  for (HeldOutPerformances& held : tempered)
+    for (Table& table : held.cross_fitted) table = temper(table, held.temper);
+  const LookalikeFit as_is{fit_lookalike_share(actions), true},
+      powered{fit_lookalike_share(tempered), false};
+  const std::vector<Sequence> prefixes = cross_behaviour_sequences(actions);
+  if (as_is.share <= 0.0 || prefixes.empty()) return powered;
+  const auto nll = [&](std::span<const HeldOutPerformances> held, double share) {
+    return lookalike_nll(truth_posteriors(scored_sequences(held, prefixes)), share);
+  };
+  return nll(actions, as_is.share) < nll(tempered, powered.share) ? as_is : powered;
+}
+
 double fit_lookalike_share(std::span<const HeldOutPerformances> actions) {
   const std::vector<ScoredSequence> scored =
       scored_sequences(actions, whole_session_sequences(actions));

@@ -17,14 +17,16 @@
 // true class after each session's whole sequence of performances, the first of each of its
 // behaviours in an order rotated by the session's index (session s starts at behaviour s mod n),
 // then the second of each behaviour performed twice, and so on. Each performance is scored with
-// its action's table of the other inner folds, as tempered for repeats. Repeats belong in the
-// sequences: an object unlike its class repeats its error when a behaviour is performed again, and
-// a planner repeats behaviours exactly when readings disagree. Why whole sequences, not every
-// prefix: rho caps the belief where the evidence is strongest, which is where a planner that keeps
-// sensing sorts the objects it finds hard; a session's short prefixes, where rho changes little,
-// outnumber its whole sequence and pulled the fit towards the typical objects (docs/BENCHMARKS.md,
-// "Tried, not kept"). A class-blind model (an unlike object's performances carry no class) was
-// tried too and lost to lookalikes on every stand-in (same list).
+// its action's table of the other inner folds, untempered: the mixture models how repeats err
+// together too, and a problem with lookalikes plans with the untempered tables
+// (loop/dataset_problem.h). Repeats belong in the sequences: an object unlike its class repeats
+// its error when a behaviour is performed again, and a planner repeats behaviours exactly when
+// readings disagree. Why whole sequences, not every prefix: rho caps the belief where the evidence
+// is strongest, which is where a planner that keeps sensing sorts the objects it finds hard; a
+// session's short prefixes, where rho changes little, outnumber its whole sequence and pulled the
+// fit towards the typical objects (git history). A class-blind model (an unlike object's
+// performances carry no class) was tried too and lost to lookalikes on every stand-in (git
+// history).
 #pragma once
 
 #include <span>
@@ -40,8 +42,9 @@ struct HeldOutPerformances {
   std::vector<int> fold;     // its inner fold (the same for all of a session's performances)
   std::vector<int> label;    // its true class
   std::vector<int> symbol;   // what it was heard as
-  // [fold]: the action's table fitted without that fold, as the model tempers it.
+  // [fold]: the action's table fitted without that fold, untempered.
   std::vector<Table> cross_fitted;
+  double temper = 1.0;  // the action's power for repeats (observation_table.h)
 };
 
 // Every prefix of the sequences described above, each session's in turn; sequence.tables[i]
@@ -59,6 +62,19 @@ double lookalike_nll(std::span<const Table> tables, double rho,
 // Rho in [0, kLargestShare] minimising lookalike_nll over whole_session_sequences; 0 when no share
 // lowers it, there are no sequences or only one class.
 double fit_lookalike_share(std::span<const HeldOutPerformances> actions);
+
+// The share and the tables it mixes: untempered, or tempered with each action's power.
+struct LookalikeFit {
+  double share = 0.0;
+  bool untempered = false;
+};
+// A share fitted on the untempered tables and one on the tempered, and of the two the one whose
+// mixture gives the lower lookalike_nll over every prefix of cross_behaviour_sequences (every
+// point where a planner may sort). Untempered, the mixture models how repeats err together
+// instead of a power, which would also flatten each first reading; where the mixture cannot
+// explain the correlation (the share at its largest and still too sure) the tempered fit wins.
+// An untempered fit needs a share above 0.
+LookalikeFit fit_lookalikes(std::span<const HeldOutPerformances> actions);
 
 // Each session's last sequence of cross_behaviour_sequences: all its performances.
 std::vector<Sequence> whole_session_sequences(std::span<const HeldOutPerformances> actions);

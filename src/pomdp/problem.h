@@ -30,8 +30,8 @@ struct PlannerDefaults {
   int episodes = 1000;         // episodes per step (0: use step_ms)
   double step_ms = 0.0;        // wall time per step in ms (0: use episodes); the report used 2 s
   // The search defaults, here once (solvers::SearchOptions takes them from here). Chosen by
-  // measurement on the report's problem (docs/BENCHMARKS.md, "Certified share of V*" and "Tried,
-  // not kept"): with the policy leaf, c = 20 and c = 110 were within each other's CI, 20 ahead;
+  // measurement on the report's problem (docs/BENCHMARKS.md, "Certified share of V*", and git
+  // history): with the policy leaf, c = 20 and c = 110 were within each other's CI, 20 ahead;
   // trials end long before depth 100, which only bounds the tree.
   int depth = 100;            // maximum search depth in steps
   double exploration = 20.0;  // UCB exploration constant (in reward units)

@@ -21,7 +21,7 @@ constexpr double kSettleTime = 0.2;
 // s simulated after the push. The pad slows to rest gently (ArmConfig: over the push's last fifth,
 // a few tenths of a m/s^2), and friction (mu g: metres per s^2) would stop an object sliding at a
 // few cm/s within 20 ms anyway, so only the contacts settle. (Less physics than the strike's 0.2 s
-// pays for the lab's longer push: docs/BENCHMARKS.md, "Tried, not kept".)
+// pays for the lab's longer push: git history.)
 constexpr double kSlideSettleTime = 0.05;
 
 // The strike: grasp, lift (tilting), pause, descend until contact, level, hold, release, settle.

@@ -150,8 +150,7 @@ struct PhysicsConfig {
   double timestep_s = 0.002;  // s, in [0.0005, 0.005]: every action but the slide
   // s, in [0.0005, 0.005]: the slide, a steady push whose contacts change slowly; its sound is
   // interpolated between steps. The strike needs the finer step for its impact (a stop on contact
-  // within 1 mm); the slide's coarser one pays for its length (docs/BENCHMARKS.md, "Tried, not
-  // kept").
+  // within 1 mm); the slide's coarser one pays for its length (git history).
   double slide_timestep_s = 0.003;
 };
 

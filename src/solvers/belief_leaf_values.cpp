@@ -129,7 +129,7 @@ int ExactLeafValue::root_decision(int actions) const {
   // The action whose lower bound on Q* is highest: the first step of the best plan the exact solver
   // has found here, whose value it guarantees. The episodes' own Q estimates are not consulted:
   // moved into the exact bounds they still decided between sensing actions by sampling noise and
-  // lost far more (docs/BENCHMARKS.md, "Tried, not kept"). When the bounds separate,
+  // lost far more (git history). When the bounds separate,
   // this is the action they prove optimal.
   int best = 0;
   double best_lower = -std::numeric_limits<double>::infinity();

@@ -186,7 +186,7 @@ class IdentificationSolver {
   };
   // Node ids by key: open addressing with linear probing (the keys are random codes, so their
   // low bits are a good hash). A node-based hash map cost a cache miss or two per lookup and
-  // was the largest single cost of a search (perf; docs/BENCHMARKS.md, "Tried, not kept").
+  // was the largest single cost of a search (perf; git history).
   class NodeIndex {
    public:
     // The node with `key`, or kEnded when there is none.

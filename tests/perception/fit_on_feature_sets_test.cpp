@@ -101,6 +101,8 @@ TEST(FitOnFeatureSets, TemperingKeepsCorrelatedRepeatsFromBecomingOverconfident)
         fit_observation_model(set, task, training_sessions(set, fold), session_fit_options());
     const double beta = (*model.calibration(set.actions[0].name).fit).temper;
     EXPECT_LT(beta, 0.7);
+    // A session's offset is not a lookalike: the share fitted on the tempered tables mixes those.
+    EXPECT_FALSE(model.lookalikes_untempered(ObservationKind::labels));
     const Table& tempered = model.observation_table(set.actions[0].name);
     const Table untempered = temper(tempered, 1.0 / beta);  // (p^b)^(1/b) renormalised = p
     for (int s : fold.test_sessions) {

@@ -51,14 +51,22 @@ TEST(ObservationModelJson, RecordsTheTableEstimateAndReadsOldFilesAsCounts) {
   EXPECT_EQ(observation_model_from_json(old, "old.json").table_estimate(), TableEstimate::counts);
 }
 
-// The lookalike shares round-trip; a file written before them has none; a file written when the
+// The lookalike shares and the tables they mix round-trip; a file written before the shares has
+// none, one written before the choice of tables mixes the tempered ones; a file written when the
 // class-blind `atypical_share` existed reads as ever, without it.
 TEST(ObservationModelJson, KeepsTheLookalikeSharesAndReadsOldFilesAsNone) {
   nlohmann::json doc = observation_model_to_json(trained().model);
   doc["lookalike_share"] = {{"labels", 0.0625}, {"graded", 0.375}};
+  doc["lookalike_tables"] = {{"labels", "untempered"}, {"graded", "tempered"}};
   const ObservationModel model = observation_model_from_json(doc, "shares.json");
   EXPECT_EQ(model.lookalike_share(ObservationKind::labels), 0.0625);
   EXPECT_EQ(model.lookalike_share(ObservationKind::graded), 0.375);
+  EXPECT_TRUE(model.lookalikes_untempered(ObservationKind::labels));
+  EXPECT_FALSE(model.lookalikes_untempered(ObservationKind::graded));
+  nlohmann::json before_tables = doc;
+  before_tables.erase("lookalike_tables");
+  EXPECT_FALSE(observation_model_from_json(before_tables, "before.json")
+                   .lookalikes_untempered(ObservationKind::labels));
   EXPECT_EQ(observation_model_to_json(model), doc);
   nlohmann::json with_atypical = doc;
   with_atypical["atypical_share"] = {{"labels", 0.125}, {"graded", 0.25}};
@@ -160,6 +168,10 @@ TEST(ObservationModelJson, EveryBrokenModelFileIsAClearError) {
                "lookalike_share.labels: missing");
   expect_error(with([](auto& d) { d["lookalike_share"]["labels"] = -0.1; }),
                "lookalike_share.labels: -0.1 is not in [0, 0.5]");
+  expect_error(with([](auto& d) { d["lookalike_tables"]["graded"] = "raw"; }),
+               "lookalike_tables.graded: 'raw' is not one of: tempered, untempered");
+  expect_error(with([](auto& d) { d["lookalike_tables"].erase("labels"); }),
+               "lookalike_tables.labels: missing");
   expect_error(with([](auto& d) { d["classifier"] = "magic"; }),
                "classifier: 'magic' is neither an audio preset");
   expect_error(with([](auto& d) { d["analysis"]["sample_rate"] = 5; }), "analysis.sample_rate");
