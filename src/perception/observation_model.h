@@ -125,7 +125,8 @@ class ObservationModel {
     return kind == ObservationKind::graded ? description_.graded_lookalike_share
                                            : description_.lookalike_share;
   }
-  // Whether a problem with lookalikes of `kind` mixes the untempered tables.
+  // Whether a problem with lookalikes of `kind` mixes the untempered tables (levels: as the labels'
+  // share, which its copies start with).
   bool lookalikes_untempered(ObservationKind kind) const {
     return kind == ObservationKind::graded ? description_.graded_lookalike_untempered
                                            : description_.lookalike_untempered;

@@ -13,18 +13,18 @@
 // over the other classes (loop/dataset_problem.h).
 //
 // Rho is fitted on inner-held-out sessions (held-out objects when the task sorts novel objects,
-// held-out sessions when it sorts known ones): it minimises the negative log-likelihood of the
-// true class after each session's whole sequence of performances, the first of each of its
-// behaviours in an order rotated by the session's index (session s starts at behaviour s mod n),
-// then the second of each behaviour performed twice, and so on. Each performance is scored with
-// its action's table of the other inner folds, untempered: the mixture models how repeats err
-// together too, and a problem with lookalikes plans with the untempered tables
-// (loop/dataset_problem.h). Repeats belong in the sequences: an object unlike its class repeats
-// its error when a behaviour is performed again, and a planner repeats behaviours exactly when
-// readings disagree. Why whole sequences, not every prefix: rho caps the belief where the evidence
-// is strongest, which is where a planner that keeps sensing sorts the objects it finds hard; a
-// session's short prefixes, where rho changes little, outnumber its whole sequence and pulled the
-// fit towards the typical objects (git history). A class-blind model (an unlike object's
+// held-out sessions when it sorts known ones): it minimises the negative log-likelihood of the true
+// class after each session's whole sequence of performances, the first of each of its behaviours in
+// an order rotated by the session's index (session s starts at behaviour s mod n), then the second
+// of each behaviour performed twice, and so on. Each performance is scored with its action's table
+// of the other inner folds, untempered or tempered for repeats: the mixture models how repeats err
+// together too, so fit_lookalikes (below) tries both and a problem with lookalikes plans with the
+// tables it kept (loop/dataset_problem.h). Repeats belong in the sequences: an object unlike its
+// class repeats its error when a behaviour is performed again, and a planner repeats behaviours
+// exactly when readings disagree. Why whole sequences, not every prefix: rho caps the belief where
+// the evidence is strongest, which is where a planner that keeps sensing sorts the objects it finds
+// hard; a session's short prefixes, where rho changes little, outnumber its whole sequence and
+// pulled the fit towards the typical objects (git history). A class-blind model (an unlike object's
 // performances carry no class) was tried too and lost to lookalikes on every stand-in (git
 // history).
 #pragma once
