@@ -190,6 +190,16 @@ void bind_model(py::module_& m) {
           "The share of objects that sound like another class the model fitted on held-out "
           "sessions (0 for a model trained on recordings): the prior of the lookalike copies of "
           "dataset_problem(..., lookalike=True).")
+      .def(
+          "lookalikes_untempered",
+          [](const ObservationModel& x, bool graded) {
+            return x.lookalikes_untempered(graded ? perception::ObservationKind::graded
+                                                  : perception::ObservationKind::labels);
+          },
+          py::arg("graded") = false,
+          "Whether that share was fitted on the untempered tables, which "
+          "dataset_problem(..., lookalike=True) then plans with (False: the tempered ones, as "
+          "without lookalikes; docs/feature-sets.md, 6).")
       .def_property_readonly("classifier_name", &ObservationModel::classifier_name)
       .def_property_readonly("reject", &ObservationModel::reject)
       .def(

@@ -108,6 +108,12 @@ def test_lookalikes_are_a_copy_of_each_class_heard_through_its_rows():
     np.testing.assert_allclose(tables["initial_belief"][:k], (1.0 - share) / k)
     np.testing.assert_array_equal(tables["observation"][:, k:2 * k, :],
                                   tables["observation"][:, :k, :])
+    # The classes' rows are the plain problem's unless the share was fitted on untempered tables.
+    untempered = model.lookalikes_untempered()
+    assert isinstance(untempered, bool)
+    if not untempered or share == 0.0:
+        np.testing.assert_array_equal(tables["observation"][:, :k, :],
+                                      plain.model.tables()["observation"][:, :k, :])
 
 
 def test_bad_arrays_raise_input_error_naming_action_modality_and_row():
