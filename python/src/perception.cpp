@@ -27,6 +27,11 @@ namespace {
 using perception::ObservationModel;
 using ModelPtr = std::shared_ptr<ObservationModel>;
 
+// The kind of observation a Python call's `graded` flag names.
+perception::ObservationKind kind_of(bool graded) {
+  return graded ? perception::ObservationKind::graded : perception::ObservationKind::labels;
+}
+
 // A matrix handed to Python without a copy: the array owns the moved matrix.
 py::array_t<float> take(audio::FeatureMatrix&& matrix) {
   auto* owned = new audio::FeatureMatrix(std::move(matrix));
@@ -182,10 +187,7 @@ void bind_model(py::module_& m) {
           "with `observations: levels`.")
       .def(
           "lookalike_share",
-          [](const ObservationModel& x, bool graded) {
-            return x.lookalike_share(graded ? perception::ObservationKind::graded
-                                            : perception::ObservationKind::labels);
-          },
+          [](const ObservationModel& x, bool graded) { return x.lookalike_share(kind_of(graded)); },
           py::arg("graded") = false,
           "The share of objects that sound like another class the model fitted on held-out "
           "sessions (0 for a model trained on recordings): the prior of the lookalike copies of "
@@ -193,8 +195,7 @@ void bind_model(py::module_& m) {
       .def(
           "lookalikes_untempered",
           [](const ObservationModel& x, bool graded) {
-            return x.lookalikes_untempered(graded ? perception::ObservationKind::graded
-                                                  : perception::ObservationKind::labels);
+            return x.lookalikes_untempered(kind_of(graded));
           },
           py::arg("graded") = false,
           "Whether that share was fitted on the untempered tables, which "
@@ -217,9 +218,7 @@ void bind_model(py::module_& m) {
       .def(
           "table",
           [](const ObservationModel& x, const std::string& action, bool graded) {
-            const auto& t =
-                x.observation_table(action, graded ? perception::ObservationKind::graded
-                                                   : perception::ObservationKind::labels);
+            const auto& t = x.observation_table(action, kind_of(graded));
             py::array_t<double> out(
                 {py::ssize_t(t.size()), py::ssize_t(t.empty() ? 0 : t[0].size())});
             auto o = out.mutable_unchecked<2>();
