@@ -4,7 +4,8 @@
 # the point-based one, so the bounds repeat on any machine; wall time is as measured), for the report's
 # problem at discount 0.99 and 0.95 and generated problems of 4, 8, 16 and 64 objects (3 sensing
 # actions, 3 bins, seed 1). Each exact row is run with the frontier bounds of the default (plans +
-# sawtooth + the two-state partition relaxation), without the relaxation (the solver before it),
+# sawtooth + the two-state partition relaxation), with every action that can still be optimal
+# expanded at each belief (--expand-within 1), without the relaxation (the solver before it),
 # with the plain bounds (commit now / one more sensing), and with HSVI-style trials; then the
 # point-based solver. Prints one table row per run. PROBLEMS (environment) picks a subset, e.g.
 # PROBLEMS="report099 objects8".
@@ -37,14 +38,15 @@ fields() {
 echo "| problem | method | lower | upper | gap | seconds | work |"
 echo "|---|---|---|---|---|---|---|"
 for p in ${PROBLEMS:-report099 report095 objects4 objects8 objects16 objects64}; do
-  # frontier search pair-relaxation label
-  for m in "full passes on full_passes" "full passes off full_passes,_no_pairs" \
-    "simple passes off simple_passes" "full trials on full_trials"; do
+  # frontier search pair-relaxation expand-within label
+  for m in "full passes on 0.3 full_passes" "full passes on 1 full_passes,_every_action" \
+    "full passes off 0.3 full_passes,_no_pairs" "simple passes off 0.3 simple_passes" \
+    "full trials on 0.3 full_trials"; do
     set -- $m
-    label=$(echo "$4" | tr _ ' ')
+    label=$(echo "$5" | tr _ ' ')
     "$bin" solve --problem "$dir/$p.yaml" --method exact --exact-frontier "$1" --exact-search "$2" \
-      --pair-relaxation "$3" --max-expansions "$expansions" --time-limit 600 --epsilon 1e-6 --json \
-      2>/dev/null >"$dir/out.json"
+      --pair-relaxation "$3" --expand-within "$4" --max-expansions "$expansions" --time-limit 600 \
+      --epsilon 1e-6 --json 2>/dev/null >"$dir/out.json"
     set -- $(fields "$dir/out.json")
     printf '| %s | exact, %s | %.5f | %.5f | %.4g | %.1f | %s %s |\n' "$p" "$label" "$1" "$2" "$3" "$4" "$5" "$6"
   done

@@ -477,13 +477,18 @@ void IdentificationSolver::expand(NodeId node, double delta, int forced_action,
   ++expansions_;
   ++budget.expansions;
   std::vector<ChildView> children(num_observations_);
+  // An action whose best case is worse than what the node already guarantees cannot be optimal
+  // here: its subtree cannot change V's bounds. Of the others, only those whose best case lies
+  // near the node's are expanded in this pass: they decide its upper bound, and the best of them
+  // is the likeliest optimum. The rest wait for a later pass, when the gap (and so the margin)
+  // has shrunk; as it closes every action that can still be optimal is expanded.
+  const double cut =
+      std::max(lower_[node], upper_[node] - options_.expand_within * (upper_[node] - lower_[node]));
   for (int a = 0; a < num_actions_; ++a) {
     if (kind_[a] != ActionKind::sensing || !available(node, a)) continue;
     if (forced && a != forced_action) continue;
-    // An action whose best case is worse than what the node already guarantees cannot be
-    // optimal here: its subtree cannot change V's bounds.
     const Bounds q = lookahead(node, a, children);
-    if (!forced && q.upper <= lower_[node]) continue;
+    if (!forced && (q.upper <= lower_[node] || q.upper < cut)) continue;
     for (int o = 0; o < num_observations_; ++o) {
       if (children[o].probability <= 0.0) continue;
       NodeId next = children[o].id;

@@ -39,6 +39,7 @@ struct SolveArgs {
   double frontier_margin = solvers::IdentificationOptions{}.frontier_margin;
   std::size_t frontier_entries = solvers::IdentificationOptions{}.max_frontier_entries;
   std::size_t frontier_plans = solvers::IdentificationOptions{}.max_frontier_plans;
+  double expand_within = solvers::IdentificationOptions{}.expand_within;
 };
 
 solvers::IdentificationOptions exact_options(const SolveArgs& args) {
@@ -51,6 +52,7 @@ solvers::IdentificationOptions exact_options(const SolveArgs& args) {
   options.frontier_margin = args.frontier_margin;
   options.max_frontier_entries = args.frontier_entries;
   options.max_frontier_plans = args.frontier_plans;
+  options.expand_within = args.expand_within;
   return options;
 }
 
@@ -354,6 +356,12 @@ void add_solve_command(CLI::App& app) {
   cmd->add_option("--frontier-plans", args->frontier_plans,
                   "Exact solver: at most this many plans (0: --frontier-entries); "
                   "--frontier-entries then caps the sawtooth points")
+      ->capture_default_str();
+  cmd->add_option("--expand-within", args->expand_within,
+                  "Exact solver's passes: at a belief, expand only the actions whose upper bound "
+                  "lies within this share of the belief's gap below its upper bound (1: every "
+                  "action that can still be optimal)")
+      ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option(
       "--out", args->out,
