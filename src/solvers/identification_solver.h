@@ -98,10 +98,11 @@ struct IdentificationOptions {
   enum class Search { trials, passes };
   Search search = Search::passes;
   // Passes: at a node, expand only the actions whose upper bound on Q* lies within this share of
-  // the node's gap below its upper bound (1: every action that can still be optimal). 0.3 narrowed
-  // the gap at b0 for the same expansions on every problem measured, 8% to 24%, where 0.15 and
-  // 0.5 did less (docs/BENCHMARKS.md, "Exact identification solver").
-  double expand_within = 0.3;
+  // the node's gap below its upper bound (1: every action that can still be optimal). 0.3 narrows
+  // the gap on V*(b0) 1.0-1.7x per expansion, but leaves the other actions' Q* loose, and what
+  // their bounds then need costs more: certify took 10x the CPU on a 20-class problem
+  // (docs/BENCHMARKS.md, "Exact identification solver").
+  double expand_within = 1.0;
   bool plan_lower_bound = true;      // frontier lower bound from backed-up plans (else commit now)
   bool sawtooth_upper_bound = true;  // frontier upper bound by sawtooth (else one-more-sensing)
   // Every new belief's upper bound also capped by the partition relaxation over two-state
