@@ -1,7 +1,7 @@
 #!/bin/sh
 # End-to-end checks of `echoplan solve`: Tiger's bounds as JSON bracket its known value 19.371, the
 # report's problem's YAML and .pomdp files solve and start with a strike, --out writes a policy, and bad
-# input exits 2 with a message naming the file.
+# input exits 2 with a message naming the file (or the option).
 # Usage: solve_cli_test.sh ECHOPLAN_BINARY SOURCE_DIR
 . "$(dirname "$0")/cli_test_lib.sh"
 
@@ -25,4 +25,11 @@ expect_input_error "incomplete .pomdp" "bad.pomdp" solve --problem "$work/bad.po
 [ $? -eq 2 ] || fail "negative epsilon should exit 2"
 "$bin" solve --problem "$src/problems/tiger.pomdp" --time-limit 0 2>/dev/null
 [ $? -eq 2 ] || fail "zero time limit should exit 2"
+# --expand-within is a share of the gap: inside [0, 1] it solves, outside it is refused by name.
+out=$("$bin" solve --problem "$src/problems/audio_objects.yaml" --method exact --expand-within 0.3 \
+  --max-expansions 2000 2>/dev/null) || fail "solve with --expand-within 0.3"
+echo "$out" | grep -q "first action: strike" || fail "--expand-within 0.3 first action: $out"
+err=$("$bin" solve --problem "$src/problems/tiger.pomdp" --expand-within 1.5 2>&1 >/dev/null)
+[ $? -eq 2 ] || fail "--expand-within 1.5 should exit 2"
+echo "$err" | grep -q -- "--expand-within" || fail "the error should name --expand-within: $err"
 finish "solve CLI"
