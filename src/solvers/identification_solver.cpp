@@ -19,12 +19,11 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 // The default node cap: about 2 GB of beliefs and bounds.
-std::size_t default_max_nodes(int live_states, int action_observation_pairs) {
-  // Belief and plan (L doubles each), counts (one uint16 per pair), key, bounds, reach, expansion
-  // mark, index entry.
-  const std::size_t bytes_per_node = 16 * static_cast<std::size_t>(live_states) +
-                                     2 * static_cast<std::size_t>(action_observation_pairs) + 16 +
-                                     16 + 48;
+std::size_t default_max_nodes(int live_states, std::size_t sensing_observation_pairs) {
+  // Belief and plan (L doubles each), counts (one uint16 per sensing action and observation),
+  // key, bounds, reach, expansion mark, index entry.
+  const std::size_t bytes_per_node =
+      16 * static_cast<std::size_t>(live_states) + 2 * sensing_observation_pairs + 16 + 16 + 48;
   return std::size_t{2} * 1024 * 1024 * 1024 / bytes_per_node;
 }
 
@@ -50,19 +49,21 @@ IdentificationSolver::IdentificationSolver(std::shared_ptr<const IdentificationT
   // Points bound V* only at nodes with their uses spent (see the header).
   limited_ = t.limits.any();
   if (limited_) options_.sawtooth_upper_bound = false;
+  // Without limits every stored plan fits every belief, and "sense once" measured only slower.
+  if (!limited_) options_.sense_once_lower_bound = false;
   num_states_ = t.states;
   num_actions_ = t.actions;
   num_observations_ = t.observations;
   discount_ = t.discount;
   num_live_ = t.live_states;
-  max_nodes_ = options.max_nodes > 0
-                   ? options.max_nodes
-                   : default_max_nodes(num_live_, num_actions_ * num_observations_);
-
   const int L = num_live_, O = num_observations_, A = num_actions_;
   kind_.assign(A, ActionKind::terminal);
+  count_slot_.assign(A, -1);
+  int sensing = 0;
   for (int a = 0; a < A; ++a)
-    if (!t.terminal[a]) kind_[a] = ActionKind::sensing;
+    if (!t.terminal[a]) kind_[a] = ActionKind::sensing, count_slot_[a] = sensing++ * O;
+  count_pairs_ = std::size_t(sensing) * O;
+  max_nodes_ = options.max_nodes > 0 ? options.max_nodes : default_max_nodes(L, count_pairs_);
   // The plans every belief starts with: commit now (one vector per terminal action). The upper
   // bound's vectors: each action followed by knowing the state (its FIB vectors, since the state
   // is fixed); the corners are then the known-state values.
@@ -99,11 +100,39 @@ IdentificationSolver::IdentificationSolver(std::shared_ptr<const IdentificationT
   double total = 0.0;
   for (int l = 0; l < L; ++l) total += b0_all[t.model_state[l]];
   for (int l = 0; l < L; ++l) b0[l] = b0_all[t.model_state[l]] / total;
-  insert(Key{}, b0.data(), 0.0, nullptr);
   belief_scratch_.resize(L);
   plan_scratch_.resize(L);
   uses_scratch_.resize(A);
+  child_uses_scratch_.resize(A);
+  child_plan_uses_scratch_.resize(A);
   children_scratch_.resize(O);
+  sort_scratch_.resize(std::size_t(A) * O);
+  read_sort_rewards();
+  insert(Key{}, b0.data(), 0.0, nullptr);
+}
+
+void IdentificationSolver::read_sort_rewards() {
+  const int L = num_live_;
+  sort_floor_.assign(L, std::numeric_limits<double>::infinity());
+  for (int a = 0; a < num_actions_; ++a)
+    if (kind_[a] == ActionKind::terminal)
+      for (int l = 0; l < L; ++l)
+        sort_floor_[l] = std::min(sort_floor_[l], tables_->reward[a * L + l]);
+  sort_bonus_start_.assign(1, 0);
+  for (int a = 0; a < num_actions_; ++a) {
+    if (kind_[a] != ActionKind::terminal) continue;
+    sort_terminals_.push_back(a);
+    for (int l = 0; l < L; ++l)
+      if (const double bonus = tables_->reward[a * L + l] - sort_floor_[l]; bonus > 0.0)
+        sort_bonus_.push_back({l, bonus});
+    sort_bonus_start_.push_back(sort_bonus_.size());
+  }
+  heard_floor_.assign(std::size_t(num_actions_) * L, 0.0);
+  for (int a = 0; a < num_actions_; ++a)
+    for (int o = 0; kind_[a] == ActionKind::sensing && o < num_observations_; ++o)
+      for (int l = 0; l < L; ++l)
+        heard_floor_[a * L + l] +=
+            tables_->emission[(std::size_t(a) * num_observations_ + o) * L + l] * sort_floor_[l];
 }
 
 double IdentificationSolver::expected_reward(const double* b, int a) const {
@@ -112,7 +141,8 @@ double IdentificationSolver::expected_reward(const double* b, int a) const {
   return r;
 }
 
-Bounds IdentificationSolver::simple_bounds(const double* b, double* plan) const {
+Bounds IdentificationSolver::simple_bounds(const double* b, const std::uint16_t* uses, double* plan,
+                                           std::uint16_t* plan_uses) const {
   double lower = -std::numeric_limits<double>::infinity(), upper = lower;
   int best = -1;
   for (int a = 0; a < num_actions_; ++a) {
@@ -120,7 +150,7 @@ Bounds IdentificationSolver::simple_bounds(const double* b, double* plan) const 
     if (kind_[a] == ActionKind::terminal) {
       if (r > lower) lower = r, best = a;
       upper = std::max(upper, r);
-    } else {
+    } else if (allowed(uses, a)) {  // only what may be taken now can earn more
       double future = 0.0;
       for (int l = 0; l < num_live_; ++l)
         future += b[l] * tables_->stay[a * num_live_ + l] * tables_->known_value[l];
@@ -129,8 +159,68 @@ Bounds IdentificationSolver::simple_bounds(const double* b, double* plan) const 
   }
   if (plan != nullptr)
     std::copy(&tables_->reward[best * num_live_], &tables_->reward[(best + 1) * num_live_], plan);
+  if (plan_uses != nullptr) std::fill_n(plan_uses, num_actions_, 0);
+  if (options_.sense_once_lower_bound) lower = sense_once(b, uses, lower, plan, plan_uses);
   if (pair_bound_.num_pairs() > 0) upper = std::min(upper, pair_bound_.value(b));
   return {lower, std::max(lower, upper)};
+}
+
+bool IdentificationSolver::allowed(const std::uint16_t* uses, int a) const {
+  if (kind_[a] != ActionKind::sensing) return true;
+  const UseLimits& limits = tables_->limits;
+  if (!limits.any()) return true;
+  const int limit = limits.max_uses(a);
+  const auto used = [&](int x) { return uses == nullptr ? 0 : int(uses[x]); };
+  if (limit > 0 && used(a) >= limit) return false;
+  for (int r : limits.prerequisites(a))
+    if (used(r) == 0) return false;
+  return true;
+}
+
+double IdentificationSolver::best_sort_bonus(const double* b, const double* e,
+                                             int& terminal) const {
+  double best = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < sort_terminals_.size(); ++k) {
+    double bonus = 0.0;
+    for (std::size_t i = sort_bonus_start_[k]; i < sort_bonus_start_[k + 1]; ++i) {
+      const int l = sort_bonus_[i].state;
+      bonus += b[l] * e[l] * sort_bonus_[i].bonus;
+    }
+    if (bonus > best) best = bonus, terminal = sort_terminals_[k];
+  }
+  return best;
+}
+
+double IdentificationSolver::sense_once(const double* b, const std::uint16_t* uses, double lower,
+                                        double* plan, std::uint16_t* plan_uses) const {
+  const int L = num_live_, O = num_observations_;
+  int* sort_after = sort_scratch_.data();
+  int best_action = -1;
+  for (int a = 0; a < num_actions_; ++a) {
+    if (kind_[a] != ActionKind::sensing || !allowed(uses, a)) continue;
+    // Whatever is heard, the sort earns at least the floor (summed over the observations once),
+    // and the best sort after each observation its bonus above it. Every observation gets a sort,
+    // even one this belief cannot hear: the plan is also a lower bound at other beliefs.
+    double future = 0.0;
+    for (int l = 0; l < L; ++l) future += b[l] * heard_floor_[a * L + l];
+    for (int o = 0; o < O; ++o)
+      future += best_sort_bonus(b, &tables_->emission[(std::size_t(a) * O + o) * L],
+                                sort_after[a * O + o]);
+    const double value = expected_reward(b, a) + discount_ * future;
+    if (value > lower) lower = value, best_action = a;
+  }
+  if (best_action < 0) return lower;
+  if (plan != nullptr) {
+    const int a = best_action;
+    for (int l = 0; l < L; ++l) plan[l] = tables_->reward[a * L + l];
+    for (int o = 0; o < O; ++o) {
+      const int t = sort_after[a * O + o];
+      const double* e = &tables_->emission[(std::size_t(a) * O + o) * L];
+      for (int l = 0; l < L; ++l) plan[l] += discount_ * e[l] * tables_->reward[t * L + l];
+    }
+  }
+  if (plan_uses != nullptr) plan_uses[best_action] = 1;
+  return lower;
 }
 
 Bounds IdentificationSolver::frontier_bounds(const double* b, double* plan, double upper_cap,
@@ -273,27 +363,27 @@ IdentificationSolver::NodeId IdentificationSolver::insert(const Key& key, const 
                                                           const std::uint16_t* counts) {
   const auto id = static_cast<NodeId>(lower_.size());
   beliefs_.insert(beliefs_.end(), b, b + num_live_);
-  const std::size_t pairs = std::size_t(num_actions_) * num_observations_;
   if (counts != nullptr)
-    counts_.insert(counts_.end(), counts, counts + pairs);
+    counts_.insert(counts_.end(), counts, counts + count_pairs_);
   else
-    counts_.resize(counts_.size() + pairs, 0);
+    counts_.resize(counts_.size() + count_pairs_, 0);
   log_reach_.push_back(log_reach);
   keys_.push_back(key);
   plan_.resize(plan_.size() + num_live_);
-  const Bounds f = simple_bounds(b, &plan_[std::size_t(id) * num_live_]);
+  const std::uint16_t* node_uses = this->node_uses(id);
+  std::uint16_t* plan_uses = child_plan_uses_scratch_.data();
+  const Bounds f = simple_bounds(b, node_uses, &plan_[std::size_t(id) * num_live_], plan_uses);
   lower_.push_back(f.lower);
   upper_.push_back(f.upper);
   expanded_at_.push_back(std::numeric_limits<double>::infinity());
-  if (limited_) node_plan_uses_.resize(node_plan_uses_.size() + num_actions_, 0);  // commit now
+  if (limited_) node_plan_uses_.insert(node_plan_uses_.end(), plan_uses, plan_uses + num_actions_);
   index_.insert(key, id);
   return id;
 }
 
 int IdentificationSolver::uses(NodeId node, int action) const {
   if (kind_[action] != ActionKind::sensing) return 0;
-  const std::uint16_t* n =
-      &counts_[(std::size_t(node) * num_actions_ + action) * num_observations_];
+  const std::uint16_t* n = &counts_[std::size_t(node) * count_pairs_ + count_slot_[action]];
   int total = 0;
   for (int o = 0; o < num_observations_; ++o) total += n[o];
   return total;
@@ -328,11 +418,10 @@ IdentificationSolver::NodeId IdentificationSolver::child(NodeId node, int action
   // The child's reach weight: every history with the same counts has the same probability, and
   // there are at most Π_a n_a! / Π_o n_ao! of them; one more (a, o) multiplies that count by
   // (n_a + 1) / (n_ao + 1).
-  const std::size_t pairs = std::size_t(num_actions_) * num_observations_;
-  std::vector<std::uint16_t> counts(&counts_[node * pairs], &counts_[node * pairs] + pairs);
-  int n_a = 0;
-  for (int o = 0; o < num_observations_; ++o) n_a += counts[action * num_observations_ + o];
-  std::uint16_t& n_ao = counts[action * num_observations_ + observation];
+  const std::uint16_t* node_counts = &counts_[std::size_t(node) * count_pairs_];
+  std::vector<std::uint16_t> counts(node_counts, node_counts + count_pairs_);
+  const int n_a = uses(node, action);
+  std::uint16_t& n_ao = counts[count_slot_[action] + observation];
   if (n_ao == std::numeric_limits<std::uint16_t>::max())
     throw std::length_error("identification search: a count outgrew 65535");
   const double log_reach = log_reach_[node] + std::log(discount_ * p) +
@@ -361,6 +450,10 @@ Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView
   }
   double* scratch = belief_scratch_.data();
   double* child_plan = plan_scratch_.data();
+  // The children's uses (this node's and one more of a), for their frontier plans.
+  std::uint16_t* child_uses = child_uses_scratch_.data();
+  std::uint16_t* child_plan_uses = child_plan_uses_scratch_.data();
+  for (int x = 0; x < num_actions_; ++x) child_uses[x] = std::uint16_t(uses(node, x) + (x == a));
   Bounds q{r, r};
   for (int o = 0; o < num_observations_; ++o) {
     ChildView& c = children[o];
@@ -380,9 +473,13 @@ Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView
           plan_uses[x] = std::max<std::uint16_t>(
               plan_uses[x], (x == a) + node_plan_uses_[std::size_t(c.id) * num_actions_ + x]);
     } else {
+      // A child no live state here can reach still needs a plan for the states that can (the
+      // plan bounds other beliefs too); its weight here is 0.
       c.probability = child_belief(b, a, o, scratch);
-      if (c.probability <= 0.0) continue;
-      c.bounds = simple_bounds(scratch, child_plan);
+      c.bounds = simple_bounds(scratch, child_uses, child_plan, child_plan_uses);
+      if (plan_uses != nullptr)
+        for (int x = 0; x < num_actions_; ++x)
+          plan_uses[x] = std::max<std::uint16_t>(plan_uses[x], (x == a) + child_plan_uses[x]);
     }
     q.lower += discount_ * c.probability * c.bounds.lower;
     q.upper += discount_ * c.probability * c.bounds.upper;

@@ -14,7 +14,8 @@
 //          the plans start as "commit now" (one vector per terminal action).
 //   upper: the sawtooth interpolation (solvers/sawtooth_upper_bound.h) between the known-state
 //          values at the corners and the (belief, upper bound) of every backed-up node, capped by
-//          max(commit now, max over sensing a of R(b, a) + γ Σ_s b(s) stay(s, a) V_known(s)),
+//          max(commit now, max over sensing a of R(b, a) + γ Σ_s b(s) stay(s, a) V_known(s))
+//          (with use limits, over the sensing actions still allowed),
 //          where V_known(s) is the value when s is known ("one more sensing reveals the state"),
 //          and by the partition relaxation: revealing which pair of states holds can only help,
 //          so V*(b) <= Σ_pairs P(pair) V*_pair(b | pair), with each two-state sub-problem solved
@@ -50,18 +51,21 @@
 // the value with the remaining uses. Used-up actions are skipped everywhere (expansion, backups,
 // trials; action_value() gives them -inf). A belief *after some uses* is the node its history
 // reaches from the root by child(), as certify and the exact leaves walk it. The bounds stay
-// sound: every node's own plan is feasible from that node; the upper bounds (one more sensing,
-// known-state values, the pair relaxation, the sawtooth corners) ignore the limits, and dropping a
-// limit can only raise V*. What does not carry over as is, is reuse across nodes with different
+// sound: every node's own plan is feasible from that node; the upper bounds (known-state values,
+// the pair relaxation, the sawtooth corners) ignore the limits, and dropping a limit can only
+// raise V* (one more sensing counts only the actions still allowed, which is all that can come
+// next). What does not carry over as is, is reuse across nodes with different
 // uses. The frontier's plans are therefore kept with their worst-case uses per action (the most
 // any branch of the plan takes each action; commit-now plans need none) and a plan bounds a node
 // from below only when it fits the node's remaining uses; they are not pruned by dominance (a
 // dominated plan that needs fewer uses may be the one that fits). A sawtooth point's upper bound
 // holds only for nodes with at least its uses spent, so with limits no points are stored (the
-// corners stay). Falling back to commit-now vectors alone was measured far weaker: on a 20-class,
-// 9-action problem with one use per action its lower bound at b0 stayed far below what ABT earned
-// (the bounds with limits: docs/BENCHMARKS.md, "ABT, the exact solver and certify at 20 and 100
-// classes with 9 behaviours").
+// corners stay). After a few readings, though, the stored plans (found near the root) rarely fit,
+// and commit now is far below what one more reading earns: so with limits every new belief is
+// also bounded below by the best "sense once, then sort by what was heard" among the actions its
+// uses leave (a plan needing one use of that action). On a 20-class, 9-action problem with one
+// use per action this halved the gap at b0 for the same expansions (docs/BENCHMARKS.md, "ABT, the
+// exact solver and certify at 20 and 100 classes with 9 behaviours").
 //
 // Nodes are found by a 128-bit key, the sum of two independent random 64-bit codes per (a, o) pair
 // times its count (order-free, so every path to the same counts meets the same node); two count
@@ -123,6 +127,13 @@ struct IdentificationOptions {
   // plans narrow the gap in equal time against 256 on the report's and 8-object problems;
   // docs/BENCHMARKS.md, "Exact identification solver").
   std::size_t max_frontier_plans = 1024;
+  // With use limits, every new belief's lower bound also from the best "sense once, then sort by
+  // what was heard" among the sensing actions its uses leave (else commit now): deep beliefs
+  // rarely fit a stored plan, and commit now is far below what one more reading earns there
+  // (measured: the gap at b0 on 20 classes with one use per behaviour halves for the same
+  // expansions; docs/BENCHMARKS.md). Without limits it is not used: every stored plan fits every
+  // belief, and it measured only slower.
+  bool sense_once_lower_bound = true;
   // Memory cap: refinement stops (bounds stay valid) when this many nodes exist; 0: about 2 GB.
   std::size_t max_nodes = 0;
 };
@@ -221,7 +232,23 @@ class IdentificationSolver {
   // Bounds at a belief not backed up yet; its best plan's vector into `plan` when not null.
   // simple_bounds: commit now / one more sensing (cheap, what new nodes start with);
   // frontier_bounds: the stored plans and the sawtooth (tighter, costs a pass over both).
-  Bounds simple_bounds(const double* belief, double* plan = nullptr) const;
+  // `uses`: the belief's node's uses per action (null: none), which decide what it may still
+  // sense; its plan's worst-case uses per action into `plan_uses` when not null.
+  Bounds simple_bounds(const double* belief, const std::uint16_t* uses, double* plan,
+                       std::uint16_t* plan_uses) const;
+  // `lower` raised to the best "sense once, then sort by what was heard" among the sensing
+  // actions `uses` still allows, when one beats it; that plan into `plan` and its uses into
+  // `plan_uses` (one of its action), each when not null (left alone otherwise).
+  double sense_once(const double* belief, const std::uint16_t* uses, double lower, double* plan,
+                    std::uint16_t* plan_uses) const;
+  // The best sort after hearing an observation whose emission row (over live states) is `e`: the
+  // terminal action whose bonus above the floor, weighted by belief · e, is largest (into
+  // `terminal`); returns that weighted bonus.
+  double best_sort_bonus(const double* belief, const double* e, int& terminal) const;
+  // Action `action` may be taken once more after `uses` (null: none): limits and prerequisites.
+  bool allowed(const std::uint16_t* uses, int action) const;
+  // Fills sort_floor_, sort_bonus_ and heard_floor_ from the tables.
+  void read_sort_rewards();
   // The upper bound is never above upper_cap (a bound already known there).
   // With limits, `node_uses` (the node's uses per action) admits only the plans that fit them;
   // the chosen plan's index goes to `index` when not null.
@@ -290,7 +317,11 @@ class IdentificationSolver {
   // log of the node's reach weight γ^t · (number of histories with its counts, bounded) ·
   // P(one such history): an upper bound on how much its gap can add to the gap at b0.
   std::vector<double> log_reach_;
-  std::vector<std::uint16_t> counts_;  // [node * A * O + a * O + o] = n_ao
+  // [node * count_pairs_ + count_slot_[a] + o] = n_ao, for sensing actions only (a terminal
+  // action is never counted, and the counts are most of a node's memory).
+  std::vector<std::uint16_t> counts_;
+  std::vector<int> count_slot_;  // [a]: the sensing action's first count in a node's; -1: terminal
+  std::size_t count_pairs_ = 0;  // counts per node: sensing actions × observations
   // The smallest δ each node was expanded with; +inf when never.
   std::vector<double> expanded_at_;
   NodeIndex index_;
@@ -303,7 +334,24 @@ class IdentificationSolver {
   bool limited_ = false;
   std::vector<std::uint16_t> plan_uses_matrix_;      // [k * A + a]: stored plan k's uses of a
   std::vector<std::uint16_t> node_plan_uses_;        // [node * A + a]: the node's plan's uses of a
-  mutable std::vector<std::uint16_t> uses_scratch_;  // node_uses()
+  mutable std::vector<std::uint16_t> uses_scratch_;  // node_uses(), insert()
+  mutable std::vector<std::uint16_t> child_uses_scratch_, child_plan_uses_scratch_;  // lookahead()
+  mutable std::vector<int> sort_scratch_;  // [a * O + o]: sense_once()'s sort after (a, o)
+  // The terminal actions' rewards as a floor per live state (the least any of them pays there)
+  // plus each one's sparse bonus above it: the best sort after an observation then costs the
+  // bonus entries (one per state when a sort pays more only in its own bin's states), not
+  // terminals × states.
+  struct SortBonus {
+    int state;
+    double bonus;
+  };
+  std::vector<double> sort_floor_;             // [l]
+  std::vector<int> sort_terminals_;            // the terminal actions
+  std::vector<SortBonus> sort_bonus_;          // by terminal, in sort_terminals_'s order
+  std::vector<std::size_t> sort_bonus_start_;  // [k]: terminal k's first entry; one past the end
+  // [a * L + l]: the floor a sort earns in state l after sensing a, whatever is heard:
+  // Σ_o emission(a, o, l) · sort_floor_[l] (sensing actions; 0 for terminal ones).
+  std::vector<double> heard_floor_;
 };
 
 }  // namespace echoplan::solvers

@@ -17,6 +17,20 @@ for f in audio_objects.yaml audio_objects.pomdp; do
   grep -q '"format": "echoplan-alpha-vectors"' "$work/$f/policy.json" || fail "$f policy.json"
 done
 
+# --sense-once: with prerequisites (grasp_first.yaml), one expansion bounds V* below by sensing once
+# then sorting (on, the default) far above committing now (off); any other value exits 2.
+lower_after_one() {
+  "$bin" solve --problem "$src/problems/grasp_first.yaml" --method exact --max-expansions 1 \
+    --sense-once "$1" --json 2>/dev/null | sed 's/^{"method":"exact","lower":\([^,]*\),.*/\1/'
+}
+on=$(lower_after_one on) || fail "solve grasp_first.yaml --sense-once on"
+off=$(lower_after_one off) || fail "solve grasp_first.yaml --sense-once off"
+awk -v on="$on" -v off="$off" 'BEGIN { exit !(on > off + 1) }' \
+  || fail "--sense-once on should raise the lower bound after one expansion: on $on, off $off"
+err=$("$bin" solve --problem "$src/problems/grasp_first.yaml" --sense-once maybe 2>&1 >/dev/null)
+[ $? -eq 2 ] || fail "--sense-once maybe should exit 2"
+echo "$err" | grep -q -- "--sense-once" || fail "the error should name --sense-once: $err"
+
 "$bin" solve --problem "$work/missing.pomdp" 2>/dev/null
 [ $? -eq 2 ] || fail "missing file should exit 2"
 printf 'discount: 0.95\nstates: 2\n' > "$work/bad.pomdp"

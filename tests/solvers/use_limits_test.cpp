@@ -213,6 +213,56 @@ TEST(UseLimitsExact, OneListenIsWorthItsHandComputedValue) {
   EXPECT_GT(solved_root(free_solver).lower, -11.8 + 0.1);
 }
 
+TEST(UseLimitsExact, ANewBeliefIsWorthSensingOnceThenSortingBeforeAnySearch) {
+  // Before any expansion, a belief with a listen left is worth at least "listen, then sort by
+  // what was heard": −1 + 0.9·(−12) = −11.8 (OneListenIsWorthItsHandComputedValue), here V*
+  // itself; without that bound a new belief starts at commit now (−45).
+  const pomdp::ModelPtr once = one_noisy_sensor(1);
+  IdentificationSolver solver = limited_solver(*once);
+  EXPECT_NEAR(solver.value(solver.root()).lower, -11.8, 1e-9);
+  EXPECT_GE(solver.value(solver.root()).upper, -11.8 - 1e-9);
+  IdentificationOptions commit_now;
+  commit_now.sense_once_lower_bound = false;
+  const IdentificationSolver plain(read_identification_tables(*once->tabular(), UseLimits(*once)),
+                                   commit_now);
+  EXPECT_NEAR(plain.value(plain.root()).lower, -45.0, 1e-9);
+
+  // Only what the uses allow: at the root only the grasp (which tells nothing) is open, so the
+  // bound is −1 + 0.9·(−45) = −41.5; once grasped, the listen is open (−11.8); once listened,
+  // only the sort is left (0.8 on the heard object: −12).
+  const pomdp::ModelPtr grasp_first = grasp_then_listen();
+  IdentificationSolver held_solver = limited_solver(*grasp_first);
+  EXPECT_NEAR(held_solver.value(held_solver.root()).lower, -41.5, 1e-9);
+  const auto held = held_solver.child(held_solver.root(), 0, 0);
+  EXPECT_NEAR(held_solver.value(held).lower, -11.8, 1e-9);
+  const auto heard = held_solver.child(held, 1, 0);
+  EXPECT_NEAR(held_solver.value(heard).lower, -12.0, 1e-9);
+}
+
+TEST(UseLimitsExact, SensingOnceNarrowsTheGapForTheSameExpansions) {
+  // The report's problem with each action allowed three times: after the same expansions, new
+  // beliefs bounded below by "sense once, then sort" (the default) and by commit now must both
+  // bracket the brute-force V*, and the first must be narrower (what the bound is for).
+  const pomdp::ModelPtr model = report_with_limits(3, 3);
+  std::vector<int> uses(model->num_actions(), 0);
+  const double reference = brute_force_value(*model, model->tabular()->initial_belief(), uses);
+  const auto tables = read_identification_tables(*model->tabular(), UseLimits(*model));
+  IdentificationOptions commit_now;
+  commit_now.sense_once_lower_bound = false;
+  IdentificationSolver sensing_once(tables), plain(tables, commit_now);
+  const RefineLimits few{1e-9, 0.0, 20};
+  sensing_once.refine(sensing_once.root(), few);
+  plain.refine(plain.root(), few);
+  const Bounds narrow = sensing_once.value(sensing_once.root());
+  const Bounds wide = plain.value(plain.root());
+  for (const Bounds& v : {narrow, wide}) {
+    EXPECT_LE(v.lower, reference + 1e-9);
+    EXPECT_GE(v.upper, reference - 1e-9);
+  }
+  EXPECT_GT(wide.gap(), 1e-6);
+  EXPECT_LT(narrow.gap(), wide.gap());
+}
+
 // The exact solver's V* at b0 (both bounds) against brute_force_value(); returns the bounds.
 Bounds expect_brute_force_value(const pomdp::ModelPtr& model, const std::string& label) {
   IdentificationSolver solver = limited_solver(*model);

@@ -36,6 +36,7 @@ struct SolveArgs {
   std::string exact_search = "passes";
   std::string exact_frontier = "full";
   std::string pair_relaxation = "on";
+  std::string sense_once = "on";
   double frontier_margin = solvers::IdentificationOptions{}.frontier_margin;
   std::size_t frontier_entries = solvers::IdentificationOptions{}.max_frontier_entries;
   std::size_t frontier_plans = solvers::IdentificationOptions{}.max_frontier_plans;
@@ -49,6 +50,7 @@ solvers::IdentificationOptions exact_options(const SolveArgs& args) {
   options.plan_lower_bound = args.exact_frontier == "full" || args.exact_frontier == "plans";
   options.sawtooth_upper_bound = args.exact_frontier == "full" || args.exact_frontier == "sawtooth";
   options.pair_upper_bound = args.pair_relaxation == "on";
+  options.sense_once_lower_bound = args.sense_once == "on";
   options.frontier_margin = args.frontier_margin;
   options.max_frontier_entries = args.frontier_entries;
   options.max_frontier_plans = args.frontier_plans;
@@ -342,6 +344,11 @@ void add_solve_command(CLI::App& app) {
   cmd->add_option("--pair-relaxation", args->pair_relaxation,
                   "Exact solver: cap every new belief's upper bound by the two-state sub-problems "
                   "solved up front (docs/planning.md, exact solver)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd->add_option("--sense-once", args->sense_once,
+                  "Exact solver, with use limits: bound every new belief below by its best \"sense "
+                  "once, then sort\" among the actions it has left (off: commit now)")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   cmd->add_option("--frontier-margin", args->frontier_margin,
