@@ -166,15 +166,8 @@ Bounds IdentificationSolver::simple_bounds(const double* b, const std::uint16_t*
 }
 
 bool IdentificationSolver::allowed(const std::uint16_t* uses, int a) const {
-  if (kind_[a] != ActionKind::sensing) return true;
-  const UseLimits& limits = tables_->limits;
-  if (!limits.any()) return true;
-  const int limit = limits.max_uses(a);
-  const auto used = [&](int x) { return uses == nullptr ? 0 : int(uses[x]); };
-  if (limit > 0 && used(a) >= limit) return false;
-  for (int r : limits.prerequisites(a))
-    if (used(r) == 0) return false;
-  return true;
+  return kind_[a] != ActionKind::sensing ||
+         tables_->limits.allows_after([&](int x) { return uses == nullptr ? 0 : int(uses[x]); }, a);
 }
 
 double IdentificationSolver::best_sort_bonus(const double* b, const double* e,
@@ -390,12 +383,8 @@ int IdentificationSolver::uses(NodeId node, int action) const {
 }
 
 bool IdentificationSolver::available(NodeId node, int action) const {
-  if (kind_[action] != ActionKind::sensing) return true;
-  const int limit = tables_->limits.max_uses(action);
-  if (limit > 0 && uses(node, action) >= limit) return false;
-  for (int r : tables_->limits.prerequisites(action))
-    if (uses(node, r) == 0) return false;
-  return true;
+  return kind_[action] != ActionKind::sensing ||
+         tables_->limits.allows_after([&](int x) { return uses(node, x); }, action);
 }
 
 IdentificationSolver::NodeId IdentificationSolver::child(NodeId node, int action, int observation) {

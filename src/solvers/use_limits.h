@@ -43,8 +43,13 @@ class UseLimits {
   // True when `action` may be taken once more after `uses` (an empty `uses` counts as none): its
   // limit is not spent and each of its prerequisites has been taken.
   bool allows(const UseCounts& uses, int action) const {
+    return allows_after([&](int a) { return uses.empty() ? 0 : uses[a]; }, action);
+  }
+  // The same with the uses told by `used(a)` (how often action a was taken), for callers that
+  // keep them in their own form.
+  template <class Used>
+  bool allows_after(Used used, int action) const {
     if (!any()) return true;
-    const auto used = [&](int a) { return uses.empty() ? 0 : uses[a]; };
     if (max_uses_[action] > 0 && used(action) >= max_uses_[action]) return false;
     for (int r : prerequisites(action))
       if (used(r) == 0) return false;
