@@ -142,7 +142,7 @@ double IdentificationSolver::expected_reward(const double* b, int a) const {
 }
 
 Bounds IdentificationSolver::simple_bounds(const double* b, const std::uint16_t* uses, double* plan,
-                                           std::uint16_t* plan_uses) const {
+                                           std::uint16_t* plan_uses, bool lower_wanted) const {
   double lower = -std::numeric_limits<double>::infinity(), upper = lower;
   int best = -1;
   for (int a = 0; a < num_actions_; ++a) {
@@ -160,7 +160,8 @@ Bounds IdentificationSolver::simple_bounds(const double* b, const std::uint16_t*
   if (plan != nullptr)
     std::copy(&tables_->reward[best * num_live_], &tables_->reward[(best + 1) * num_live_], plan);
   if (plan_uses != nullptr) std::fill_n(plan_uses, num_actions_, 0);
-  if (options_.sense_once_lower_bound) lower = sense_once(b, uses, lower, plan, plan_uses);
+  if (lower_wanted && options_.sense_once_lower_bound)
+    lower = sense_once(b, uses, lower, plan, plan_uses);
   if (pair_bound_.num_pairs() > 0) upper = std::min(upper, pair_bound_.value(b));
   return {lower, std::max(lower, upper)};
 }
@@ -422,7 +423,8 @@ IdentificationSolver::NodeId IdentificationSolver::child(NodeId node, int action
 Bounds IdentificationSolver::value(NodeId node) const { return {lower_[node], upper_[node]}; }
 
 Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView>& children,
-                                       double* plan, std::uint16_t* plan_uses) const {
+                                       double* plan, std::uint16_t* plan_uses,
+                                       bool lower_wanted) const {
   const double* b = node_belief(node);
   const double r = expected_reward(b, a);
   const int L = num_live_;
@@ -465,7 +467,7 @@ Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView
       // A child no live state here can reach still needs a plan for the states that can (the
       // plan bounds other beliefs too); its weight here is 0.
       c.probability = child_belief(b, a, o, scratch);
-      c.bounds = simple_bounds(scratch, child_uses, child_plan, child_plan_uses);
+      c.bounds = simple_bounds(scratch, child_uses, child_plan, child_plan_uses, lower_wanted);
       if (plan_uses != nullptr)
         for (int x = 0; x < num_actions_; ++x)
           plan_uses[x] = std::max<std::uint16_t>(plan_uses[x], (x == a) + child_plan_uses[x]);
@@ -573,7 +575,8 @@ void IdentificationSolver::expand(NodeId node, double delta, int forced_action,
   for (int a = 0; a < num_actions_; ++a) {
     if (kind_[a] != ActionKind::sensing || !available(node, a)) continue;
     if (forced && a != forced_action) continue;
-    const Bounds q = lookahead(node, a, children);
+    // Only the upper bound decides here, and the children are made (with their bounds) below.
+    const Bounds q = lookahead(node, a, children, nullptr, nullptr, /*lower_wanted=*/false);
     if (!forced && (q.upper <= lower_[node] || q.upper < cut)) continue;
     for (int o = 0; o < num_observations_; ++o) {
       if (children[o].probability <= 0.0) continue;

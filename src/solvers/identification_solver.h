@@ -234,8 +234,10 @@ class IdentificationSolver {
   // frontier_bounds: the stored plans and the sawtooth (tighter, costs a pass over both).
   // `uses`: the belief's node's uses per action (null: none), which decide what it may still
   // sense; its plan's worst-case uses per action into `plan_uses` when not null.
+  // lower_wanted false: a caller that reads only the upper bound skips sense_once() (the lower
+  // bound is then commit now, still sound).
   Bounds simple_bounds(const double* belief, const std::uint16_t* uses, double* plan,
-                       std::uint16_t* plan_uses) const;
+                       std::uint16_t* plan_uses, bool lower_wanted = true) const;
   // `lower` raised to the best "sense once, then sort by what was heard" among the sensing
   // actions `uses` still allows, when one beats it; that plan into `plan` and its uses into
   // `plan_uses` (one of its action), each when not null (left alone otherwise).
@@ -275,8 +277,11 @@ class IdentificationSolver {
   // Bounds on Q(node, action) from its children's bounds; fills `children` (one per observation)
   // and, when `plan` is not null, the vector of the plan "action, then each child's plan".
   // With limits, `plan_uses` (when not null) gets that plan's worst-case uses per action.
+  // lower_wanted false: the children not stored yet get simple_bounds() without sense_once()
+  // (for a caller that reads only the upper bound).
   Bounds lookahead(NodeId node, int action, std::vector<ChildView>& children,
-                   double* plan = nullptr, std::uint16_t* plan_uses = nullptr) const;
+                   double* plan = nullptr, std::uint16_t* plan_uses = nullptr,
+                   bool lower_wanted = true) const;
   // Bellman backup of both bounds; true when either tightened.
   bool backup(NodeId node);
   // What one refine call may still spend (its RefineLimits and what it has spent so far; not an
