@@ -106,13 +106,13 @@ IdentificationSolver::IdentificationSolver(std::shared_ptr<const IdentificationT
   child_uses_scratch_.resize(A);
   child_plan_uses_scratch_.resize(A);
   children_scratch_.resize(O);
-  sort_scratch_.resize(std::size_t(A) * O);
-  read_sort_rewards();
+  if (options_.sense_once_lower_bound) read_sort_rewards();
   insert(Key{}, b0.data(), 0.0, nullptr);
 }
 
 void IdentificationSolver::read_sort_rewards() {
   const int L = num_live_;
+  sort_scratch_.resize(std::size_t(num_actions_) * num_observations_);
   sort_floor_.assign(L, std::numeric_limits<double>::infinity());
   for (int a = 0; a < num_actions_; ++a)
     if (kind_[a] == ActionKind::terminal)
@@ -364,7 +364,7 @@ IdentificationSolver::NodeId IdentificationSolver::insert(const Key& key, const 
   log_reach_.push_back(log_reach);
   keys_.push_back(key);
   plan_.resize(plan_.size() + num_live_);
-  const std::uint16_t* node_uses = this->node_uses(id);
+  const std::uint16_t* node_uses = limited_ ? this->node_uses(id) : nullptr;
   std::uint16_t* plan_uses = child_plan_uses_scratch_.data();
   const Bounds f = simple_bounds(b, node_uses, &plan_[std::size_t(id) * num_live_], plan_uses);
   lower_.push_back(f.lower);
@@ -441,10 +441,14 @@ Bounds IdentificationSolver::lookahead(NodeId node, int a, std::vector<ChildView
   }
   double* scratch = belief_scratch_.data();
   double* child_plan = plan_scratch_.data();
-  // The children's uses (this node's and one more of a), for their frontier plans.
-  std::uint16_t* child_uses = child_uses_scratch_.data();
+  // With limits, the children's uses (this node's and one more of a) decide what their frontier
+  // bounds may sense; without, every action stays allowed (null: none spent).
+  std::uint16_t* child_uses = nullptr;
   std::uint16_t* child_plan_uses = child_plan_uses_scratch_.data();
-  for (int x = 0; x < num_actions_; ++x) child_uses[x] = std::uint16_t(uses(node, x) + (x == a));
+  if (limited_) {
+    child_uses = child_uses_scratch_.data();
+    for (int x = 0; x < num_actions_; ++x) child_uses[x] = std::uint16_t(uses(node, x) + (x == a));
+  }
   Bounds q{r, r};
   for (int o = 0; o < num_observations_; ++o) {
     ChildView& c = children[o];

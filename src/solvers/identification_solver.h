@@ -249,7 +249,8 @@ class IdentificationSolver {
   double best_sort_bonus(const double* belief, const double* e, int& terminal) const;
   // Action `action` may be taken once more after `uses` (null: none): limits and prerequisites.
   bool allowed(const std::uint16_t* uses, int action) const;
-  // Fills sort_floor_, sort_bonus_ and heard_floor_ from the tables.
+  // Fills sort_floor_, sort_bonus_ and heard_floor_ from the tables (only when sense_once() is
+  // used), and sizes its scratch space.
   void read_sort_rewards();
   // The upper bound is never above upper_cap (a bound already known there).
   // With limits, `node_uses` (the node's uses per action) admits only the plans that fit them;
