@@ -88,6 +88,8 @@ IdentificationSolver::IdentificationSolver(std::shared_ptr<const IdentificationT
   if (options_.pair_upper_bound) {
     pair_bound_ = PairRelaxationBound(t, options_.pair_relaxation);
   }
+  if (limited_ && options_.readings_left_upper_bound)
+    readings_bound_ = ReadingsLeftBound(tables_, options_.readings_left);
 
   // The codes only need to be fixed and well mixed, not drawn from the user's seed (they do not
   // change any result, only how nodes are found).
@@ -163,6 +165,7 @@ Bounds IdentificationSolver::simple_bounds(const double* b, const std::uint16_t*
   if (lower_wanted && options_.sense_once_lower_bound)
     lower = sense_once(b, uses, lower, plan, plan_uses);
   if (pair_bound_.num_pairs() > 0) upper = std::min(upper, pair_bound_.value(b));
+  if (readings_bound_.applies()) upper = std::min(upper, readings_bound_.value(b, uses));
   return {lower, std::max(lower, upper)};
 }
 

@@ -54,18 +54,20 @@
 // sound: every node's own plan is feasible from that node; the upper bounds (known-state values,
 // the pair relaxation, the sawtooth corners) ignore the limits, and dropping a limit can only
 // raise V* (one more sensing counts only the actions still allowed, which is all that can come
-// next). What does not carry over as is, is reuse across nodes with different
-// uses. The frontier's plans are therefore kept with their worst-case uses per action (the most
-// any branch of the plan takes each action; commit-now plans need none) and a plan bounds a node
-// from below only when it fits the node's remaining uses; they are not pruned by dominance (a
-// dominated plan that needs fewer uses may be the one that fits). A sawtooth point's upper bound
-// holds only for nodes with at least its uses spent, so with limits no points are stored (the
-// corners stay). After a few readings, though, the stored plans (found near the root) rarely fit,
-// and commit now is far below what one more reading earns: so with limits every new belief is
-// also bounded below by the best "sense once, then sort by what was heard" among the actions its
-// uses leave (a plan needing one use of that action). On a 20-class, 9-action problem with one
-// use per action this halved the gap at b0 for the same expansions (docs/BENCHMARKS.md, "ABT, the
-// exact solver and certify at 20 and 100 classes with 9 behaviours").
+// next). When every sensing action is limited, a belief with few readings left is also capped by
+// what an agent told all of them at once could earn (solvers/readings_left_bound.h), which sees
+// that they may not be enough to tell the object apart. What does not carry over as is, is reuse
+// across nodes with different uses. The frontier's plans are therefore kept with their worst-case
+// uses per action (the most any branch of the plan takes each action; commit-now plans need none)
+// and a plan bounds a node from below only when it fits the node's remaining uses; they are not
+// pruned by dominance (a dominated plan that needs fewer uses may be the one that fits). A sawtooth
+// point's upper bound holds only for nodes with at least its uses spent, so with limits no points
+// are stored (the corners stay). After a few readings, though, the stored plans (found near the
+// root) rarely fit, and commit now is far below what one more reading earns: so with limits every
+// new belief is also bounded below by the best "sense once, then sort by what was heard" among the
+// actions its uses leave (a plan needing one use of that action). On a 20-class, 9-action problem
+// with one use per action this halved the gap at b0 for the same expansions (docs/BENCHMARKS.md,
+// "ABT, the exact solver and certify at 20 and 100 classes with 9 behaviours").
 //
 // Nodes are found by a 128-bit key, the sum of two independent random 64-bit codes per (a, o) pair
 // times its count (order-free, so every path to the same counts meets the same node); two count
@@ -83,6 +85,7 @@
 #include "solvers/bounds.h"
 #include "solvers/identification_tables.h"
 #include "solvers/pair_relaxation_bound.h"
+#include "solvers/readings_left_bound.h"
 #include "solvers/sawtooth_upper_bound.h"
 
 namespace echoplan::solvers {
@@ -134,6 +137,11 @@ struct IdentificationOptions {
   // expansions; docs/BENCHMARKS.md). Without limits it is not used: every stored plan fits every
   // belief, and it measured only slower.
   bool sense_once_lower_bound = true;
+  // With every sensing action limited, every new belief's upper bound also capped by what an
+  // agent told every reading its uses leave, at once, could earn (solvers/readings_left_bound.h):
+  // the other upper bounds assume sensing can go on until the state is known.
+  bool readings_left_upper_bound = true;
+  ReadingsLeftOptions readings_left;
   // Memory cap: refinement stops (bounds stay valid) when this many nodes exist; 0: about 2 GB.
   std::size_t max_nodes = 0;
 };
@@ -314,6 +322,7 @@ class IdentificationSolver {
   std::vector<double> plan_matrix_;  // [k * L + l]: plans_'s vectors, contiguous for the scans
   SawtoothUpperBound upper_points_{{{0.0}}, 0.0};  // over live states: the frontier's upper bound
   PairRelaxationBound pair_bound_;                 // over live states: every new belief's cap
+  ReadingsLeftBound readings_bound_;  // with limits on every sensing action: another cap
 
   // Nodes: flat arrays indexed by NodeId.
   std::vector<double> beliefs_;  // [node * L + l], normalised over live states

@@ -31,6 +31,24 @@ err=$("$bin" solve --problem "$src/problems/grasp_first.yaml" --sense-once maybe
 [ $? -eq 2 ] || fail "--sense-once maybe should exit 2"
 echo "$err" | grep -q -- "--sense-once" || fail "the error should name --sense-once: $err"
 
+# --readings-left: with one slide and two strikes allowed (the report's problem), one expansion
+# bounds V* above by what all three readings at once could earn (on, the default), far below one
+# more sensing and the pair relaxation (off); any other value exits 2.
+sed 's/^  sorting: \[move_to_A, move_to_B\]$/&\n  uses: {slide: 1, strike: 2}/' \
+  "$src/problems/audio_objects.yaml" > "$work/limited.yaml"
+grep -q "uses: {slide: 1, strike: 2}" "$work/limited.yaml" || fail "limited.yaml has no uses"
+upper_after_one() {
+  "$bin" solve --problem "$work/limited.yaml" --method exact --max-expansions 1 \
+    --readings-left "$1" --json 2>/dev/null | sed 's/.*"upper":\([^,]*\),.*/\1/'
+}
+on=$(upper_after_one on) || fail "solve limited.yaml --readings-left on"
+off=$(upper_after_one off) || fail "solve limited.yaml --readings-left off"
+awk -v on="$on" -v off="$off" 'BEGIN { exit !(on < off - 1) }' \
+  || fail "--readings-left on should lower the upper bound after one expansion: on $on, off $off"
+err=$("$bin" solve --problem "$work/limited.yaml" --readings-left maybe 2>&1 >/dev/null)
+[ $? -eq 2 ] || fail "--readings-left maybe should exit 2"
+echo "$err" | grep -q -- "--readings-left" || fail "the error should name --readings-left: $err"
+
 "$bin" solve --problem "$work/missing.pomdp" 2>/dev/null
 [ $? -eq 2 ] || fail "missing file should exit 2"
 printf 'discount: 0.95\nstates: 2\n' > "$work/bad.pomdp"

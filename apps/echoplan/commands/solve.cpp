@@ -37,6 +37,9 @@ struct SolveArgs {
   std::string exact_frontier = "full";
   std::string pair_relaxation = "on";
   std::string sense_once = "on";
+  std::string readings_left = "on";
+  int readings_left_budget = solvers::ReadingsLeftOptions{}.budget;
+  int readings_left_max = solvers::ReadingsLeftOptions{}.max_readings;
   double frontier_margin = solvers::IdentificationOptions{}.frontier_margin;
   std::size_t frontier_entries = solvers::IdentificationOptions{}.max_frontier_entries;
   std::size_t frontier_plans = solvers::IdentificationOptions{}.max_frontier_plans;
@@ -51,6 +54,9 @@ solvers::IdentificationOptions exact_options(const SolveArgs& args) {
   options.sawtooth_upper_bound = args.exact_frontier == "full" || args.exact_frontier == "sawtooth";
   options.pair_upper_bound = args.pair_relaxation == "on";
   options.sense_once_lower_bound = args.sense_once == "on";
+  options.readings_left_upper_bound = args.readings_left == "on";
+  options.readings_left.budget = args.readings_left_budget;
+  options.readings_left.max_readings = args.readings_left_max;
   options.frontier_margin = args.frontier_margin;
   options.max_frontier_entries = args.frontier_entries;
   options.max_frontier_plans = args.frontier_plans;
@@ -350,6 +356,22 @@ void add_solve_command(CLI::App& app) {
                   "Exact solver, with use limits: bound every new belief below by its best \"sense "
                   "once, then sort\" among the actions it has left (off: commit now)")
       ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd->add_option("--readings-left", args->readings_left,
+                  "Exact solver, with a use limit on every sensing action: cap every new belief's "
+                  "upper bound by what an agent told at once every reading its uses leave could "
+                  "earn (docs/planning.md, exact solver)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd->add_option("--readings-left-budget", args->readings_left_budget,
+                  "Exact solver: expansions of that bound's outcome tree per belief (more: "
+                  "tighter and slower; 0: one more sensing)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--readings-left-max", args->readings_left_max,
+                  "Exact solver: that bound only at beliefs with at most this many readings left "
+                  "(with more it is rarely below one more sensing)")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--frontier-margin", args->frontier_margin,
                   "Exact solver: a backed-up plan or point joins the frontier bounds only when it "
