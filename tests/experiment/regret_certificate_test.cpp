@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "../common/source_dir.h"
+#include "../solvers/limited_problems.h"
 #include "common/error.h"
 #include "pomdp/object_identification_model.h"
 #include "pomdp/problem.h"
@@ -16,6 +17,7 @@ namespace echoplan::experiment {
 namespace {
 
 namespace fs = std::filesystem;
+using solvers::testing::one_noisy_sensor;
 
 std::string repo_file(const std::string& relative) {
   return echoplan::testing::source_dir() + "/" + relative;
@@ -181,25 +183,8 @@ TEST(RegretCertificate, BadLogsNameTheLine) {
   expect_error_at("0,0,strike\n", 2, "fields");
 }
 
-// Two objects, one noisy sensor heard right 80% of the time and usable `uses` times (0: no limit),
-// sort right +10 / wrong -100, sensing -1, γ = 0.9.
-pomdp::ObjectIdentificationModel one_noisy_sensor(int uses) {
-  pomdp::ObjectProblemData d;
-  d.name = "one_noisy_sensor";
-  d.discount = 0.9;
-  d.objects = {"a", "b"};
-  d.prior = {0.5, 0.5};
-  d.sensing = {pomdp::SensingAction{"listen"}};
-  d.sensing[0].uses = uses;
-  d.sorting = {"to_a", "to_b"};
-  d.observation_symbols = {"a", "b"};
-  d.observation_table = {{{0.8, 0.2}, {0.2, 0.8}}};
-  d.sorting_reward = {{10.0, -100.0}, {-100.0, 10.0}};
-  return pomdp::ObjectIdentificationModel(std::move(d));
-}
-
-Certificate certify_with_limits(const pomdp::ObjectIdentificationModel& model,
-                                const fs::path& steps) {
+// `model`: one of limited_problems.h's.
+Certificate certify_with_limits(const pomdp::Model& model, const fs::path& steps) {
   solvers::IdentificationSolver solver(
       solvers::read_identification_tables(*model.tabular(), solvers::UseLimits(model)));
   CertifyOptions options;
@@ -212,13 +197,13 @@ TEST(RegretCertificate, DecisionsAreJudgedWithTheUsesLeftInTheirTrial) {
   // sorting to what was heard. After the listen (the last allowed use) committing is all that is
   // left, so trial 0 loses nothing. Trial 1 sorts against what it heard: at belief 0.2 on a,
   // V* = 0.8·10 - 0.2·100 = -12 and to_a earns 0.2·10 - 0.8·100 = -78: a loss of 66, 0.9·66.
-  const pomdp::ObjectIdentificationModel once = one_noisy_sensor(1);
+  const pomdp::ModelPtr once = one_noisy_sensor(1);
   const fs::path steps = write_steps("uses",
                                      "0,0,listen,a,0,0,0,0,-1,10\n"
                                      "0,1,to_a,none,0,0,0,0,10,10\n"
                                      "1,0,listen,b,0,0,0,0,-1,10\n"
                                      "1,1,to_a,none,0,0,0,0,-100,10\n");
-  const Certificate c = certify_with_limits(once, steps);
+  const Certificate c = certify_with_limits(*once, steps);
   ASSERT_EQ(c.trials.size(), 2u);
   EXPECT_NEAR(c.vstar.lower, -11.8, 1e-9);
   EXPECT_NEAR(c.vstar.upper, -11.8, 1e-9);
@@ -226,7 +211,7 @@ TEST(RegretCertificate, DecisionsAreJudgedWithTheUsesLeftInTheirTrial) {
   EXPECT_NEAR(c.trials[1].regret, 0.9 * 66.0, 1e-9);
   // Without the limit, listening again at 0.8 beats committing (-1 + 0.9 (0.68·60/17 - 0.32·45)
   // = -11.8 > -12), so the same log would be charged for trial 0's commit.
-  const Certificate unlimited = certify_with_limits(one_noisy_sensor(0), steps);
+  const Certificate unlimited = certify_with_limits(*one_noisy_sensor(0), steps);
   EXPECT_GE(unlimited.trials[0].regret, 0.9 * 0.2 - 1e-9);
   fs::remove(steps);
 }
@@ -236,7 +221,7 @@ TEST(RegretCertificate, AStepPastItsUseLimitNamesTheLine) {
                                      "0,0,listen,a,0,0,0,0,-1,10\n"
                                      "0,1,listen,a,0,0,0,0,-1,10\n");
   try {
-    certify_with_limits(one_noisy_sensor(1), steps);
+    certify_with_limits(*one_noisy_sensor(1), steps);
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.line(), 3);
