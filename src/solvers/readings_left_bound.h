@@ -40,7 +40,8 @@ namespace echoplan::solvers {
 struct ReadingsLeftOptions {
   // Expansions of the outcome tree per evaluation (each costs observations × support states).
   // 16, with max_readings 3: on 20 classes with 9 behaviours used once each, certify's looseness
-  // on its deepest trials fell 10% for 1.4x the time; 64 and 4: 13% for 3.9x (docs/BENCHMARKS.md).
+  // on its deepest trials fell 10% for 1.4x the time (docs/BENCHMARKS.md); 64 and 4: 13% for
+  // 3.9x.
   int budget = 16;
   // Only beliefs with at most this many readings left are bounded (others get +inf): with more,
   // the readings tell the object apart nearly surely, and the bound is no lower than one more
