@@ -17,37 +17,38 @@ for f in audio_objects.yaml audio_objects.pomdp; do
   grep -q '"format": "echoplan-alpha-vectors"' "$work/$f/policy.json" || fail "$f policy.json"
 done
 
-# --sense-once: with prerequisites (grasp_first.yaml), one expansion bounds V* below by sensing once
-# then sorting (on, the default) far above committing now (off); any other value exits 2.
-lower_after_one() {
-  "$bin" solve --problem "$src/problems/grasp_first.yaml" --method exact --max-expansions 1 \
-    --sense-once "$1" --json 2>/dev/null | sed 's/^{"method":"exact","lower":\([^,]*\),.*/\1/'
+# An on/off option of the exact solver: `bound_after_one PROBLEM OPTION VALUE FIELD` prints the
+# bound FIELD (lower or upper) of V*(b0) after one expansion with OPTION set to VALUE.
+bound_after_one() {
+  field='\1'
+  [ "$4" = upper ] && field='\2'
+  "$bin" solve --problem "$1" --method exact --max-expansions 1 "$2" "$3" --json 2>/dev/null \
+    | sed "s/^{\"method\":\"exact\",\"lower\":\([^,]*\),\"upper\":\([^,]*\),.*/$field/"
 }
-on=$(lower_after_one on) || fail "solve grasp_first.yaml --sense-once on"
-off=$(lower_after_one off) || fail "solve grasp_first.yaml --sense-once off"
-awk -v on="$on" -v off="$off" 'BEGIN { exit !(on > off + 1) }' \
-  || fail "--sense-once on should raise the lower bound after one expansion: on $on, off $off"
-err=$("$bin" solve --problem "$src/problems/grasp_first.yaml" --sense-once maybe 2>&1 >/dev/null)
-[ $? -eq 2 ] || fail "--sense-once maybe should exit 2"
-echo "$err" | grep -q -- "--sense-once" || fail "the error should name --sense-once: $err"
+# `check_switch PROBLEM OPTION FIELD CHANGE`: the FIELD with OPTION on must beat off by more than 1
+# in the direction CHANGE (raise or lower), and any other value than on/off exits 2 naming it.
+check_switch() {
+  on=$(bound_after_one "$1" "$2" on "$3") || fail "solve $1 $2 on"
+  off=$(bound_after_one "$1" "$2" off "$3") || fail "solve $1 $2 off"
+  awk -v on="$on" -v off="$off" -v change="$4" \
+    'BEGIN { exit !(change == "raise" ? on > off + 1 : on < off - 1) }' \
+    || fail "$2 on should $4 the $3 bound after one expansion: on $on, off $off"
+  err=$("$bin" solve --problem "$1" "$2" maybe 2>&1 >/dev/null)
+  [ $? -eq 2 ] || fail "$2 maybe should exit 2"
+  echo "$err" | grep -q -- "$2" || fail "the error should name $2: $err"
+}
+
+# --sense-once: with prerequisites (grasp_first.yaml), one expansion bounds V* below by sensing once
+# then sorting (on, the default) far above committing now (off).
+check_switch "$src/problems/grasp_first.yaml" --sense-once lower raise
 
 # --readings-left: with one slide and two strikes allowed (the report's problem), one expansion
 # bounds V* above by what all three readings at once could earn (on, the default), far below one
-# more sensing and the pair relaxation (off); any other value exits 2.
+# more sensing and the pair relaxation (off).
 sed 's/^  sorting: \[move_to_A, move_to_B\]$/&\n  uses: {slide: 1, strike: 2}/' \
   "$src/problems/audio_objects.yaml" > "$work/limited.yaml"
 grep -q "uses: {slide: 1, strike: 2}" "$work/limited.yaml" || fail "limited.yaml has no uses"
-upper_after_one() {
-  "$bin" solve --problem "$work/limited.yaml" --method exact --max-expansions 1 \
-    --readings-left "$1" --json 2>/dev/null | sed 's/.*"upper":\([^,]*\),.*/\1/'
-}
-on=$(upper_after_one on) || fail "solve limited.yaml --readings-left on"
-off=$(upper_after_one off) || fail "solve limited.yaml --readings-left off"
-awk -v on="$on" -v off="$off" 'BEGIN { exit !(on < off - 1) }' \
-  || fail "--readings-left on should lower the upper bound after one expansion: on $on, off $off"
-err=$("$bin" solve --problem "$work/limited.yaml" --readings-left maybe 2>&1 >/dev/null)
-[ $? -eq 2 ] || fail "--readings-left maybe should exit 2"
-echo "$err" | grep -q -- "--readings-left" || fail "the error should name --readings-left: $err"
+check_switch "$work/limited.yaml" --readings-left upper lower
 
 "$bin" solve --problem "$work/missing.pomdp" 2>/dev/null
 [ $? -eq 2 ] || fail "missing file should exit 2"
