@@ -162,26 +162,28 @@ double ReadingsLeftBound::value(const double* b, const std::uint16_t* uses) cons
 
   // The readings left, most informative over the support first (the best-first search then
   // resolves the likeliest beliefs sooner), and their emissions over the support.
-  emission_.assign(std::size_t(t.actions) * O * S, 0.0);
-  std::vector<std::pair<double, int>> scored;
+  // Each action with readings left gets a slot of emissions; a reading is its action's slot.
+  emission_.clear();
+  std::vector<std::pair<double, int>> scored;  // (−informativeness, slot)
   for (int a : sensing_) {
     const int n = limits.max_uses(a) - used(a);
     if (n <= 0) continue;
+    const int slot = int(emission_.size() / (std::size_t(O) * S));
     double score = 0.0;
     for (int o = 0; o < O; ++o) {
       double most = 0.0;
       for (std::size_t i = 0; i < S; ++i) {
         const double e = t.emission[(std::size_t(a) * O + o) * L + support_[i]];
-        emission_[(std::size_t(a) * O + o) * S + i] = e;
+        emission_.push_back(e);
         most = std::max(most, e);
       }
       score += most;
     }
-    for (int k = 0; k < n; ++k) scored.emplace_back(-score, a);
+    for (int k = 0; k < n; ++k) scored.emplace_back(-score, slot);
   }
   std::stable_sort(scored.begin(), scored.end());
   readings_.clear();
-  for (const auto& [score, a] : scored) readings_.push_back(a);
+  for (const auto& [score, slot] : scored) readings_.push_back(slot);
 
   std::vector<double> w(S);
   for (std::size_t i = 0; i < S; ++i) w[i] = b[support_[i]];

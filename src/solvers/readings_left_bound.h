@@ -76,17 +76,19 @@ class ReadingsLeftBound {
   bool applies_ = false;
   std::vector<int> sensing_, terminals_;
   // Per call (mutable scratch space; the bound is not thread-safe, as its user is not):
-  mutable std::vector<int> support_;   // live states, most likely first
-  mutable std::vector<int> readings_;  // the readings left, most informative first
+  mutable std::vector<int> support_;  // live states, most likely first
+  // The readings left, most informative first, each as its action's slot in emission_.
+  mutable std::vector<int> readings_;
   // The distinct sorts' r̂ over the support: a floor per state, and each sort's bonus entries
   // (support index, r̂ − floor) where it pays more, sort c's from bonus_start_[c].
   mutable std::vector<double> floor_;
   mutable std::vector<std::pair<int, double>> bonus_;
   mutable std::vector<std::size_t> bonus_start_;
-  mutable std::vector<double> known_;     // [i]: max_t r̂(support_[i], t)
-  mutable std::vector<double> emission_;  // [(a * O + o) * S + i] restricted to the support
-  mutable std::vector<double> nodes_;     // open tree nodes' weights, S each
-  mutable std::vector<int> node_level_;   // [n]: how many readings node n has heard
+  mutable std::vector<double> known_;  // [i]: max_t r̂(support_[i], t)
+  // [(slot * O + o) * S + i]: the emissions of the actions with readings left, over the support.
+  mutable std::vector<double> emission_;
+  mutable std::vector<double> nodes_;    // open tree nodes' weights, S each
+  mutable std::vector<int> node_level_;  // [n]: how many readings node n has heard
   mutable std::vector<double> scratch_;
 };
 
