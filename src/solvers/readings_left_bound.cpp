@@ -91,10 +91,94 @@ double ReadingsLeftBound::told_all_value(const double* w0) const {
   return resolved;
 }
 
+double ReadingsLeftBound::relaxed(int terminal, int l, double discount_left) const {
+  const IdentificationTables& t = *tables_;
+  const double r = t.reward[terminal * t.live_states + l];
+  return r >= 0.0 ? t.discount * r : discount_left * r;
+}
+
+double ReadingsLeftBound::read_support(const double* b, double discount_left) const {
+  const int L = tables_->live_states;
+  support_.resize(L);
+  std::iota(support_.begin(), support_.end(), 0);
+  std::stable_sort(support_.begin(), support_.end(), [&](int x, int y) { return b[x] > b[y]; });
+  std::size_t S = 0;
+  while (S < support_.size() && int(S) < options_.max_support &&
+         b[support_[S]] >= options_.min_probability)
+    ++S;
+  double tail = 0.0;
+  known_.assign(S, -std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < support_.size(); ++i) {
+    double best = -std::numeric_limits<double>::infinity();
+    for (int a : terminals_) best = std::max(best, relaxed(a, support_[i], discount_left));
+    if (i < S)
+      known_[i] = best;
+    else
+      tail += b[support_[i]] * best;
+  }
+  support_.resize(S);
+  return tail;
+}
+
+void ReadingsLeftBound::read_sorts(double discount_left) const {
+  // Each distinct sort once, as a floor per state (the least any sort earns there) plus each
+  // sort's bonus above it where it has one: a sort that pays more only in its own state costs one
+  // entry, not one per state.
+  const std::size_t S = support_.size();
+  columns_.resize(terminals_.size());
+  for (std::size_t k = 0; k < terminals_.size(); ++k) {
+    columns_[k].resize(S);
+    for (std::size_t i = 0; i < S; ++i)
+      columns_[k][i] = relaxed(terminals_[k], support_[i], discount_left);
+  }
+  std::sort(columns_.begin(), columns_.end());
+  const auto distinct = std::unique(columns_.begin(), columns_.end());
+  floor_.assign(S, std::numeric_limits<double>::infinity());
+  for (auto c = columns_.begin(); c != distinct; ++c)
+    for (std::size_t i = 0; i < S; ++i) floor_[i] = std::min(floor_[i], (*c)[i]);
+  bonus_.clear();
+  bonus_start_.assign(1, 0);
+  for (auto c = columns_.begin(); c != distinct; ++c) {
+    for (std::size_t i = 0; i < S; ++i)
+      if ((*c)[i] > floor_[i]) bonus_.emplace_back(int(i), (*c)[i] - floor_[i]);
+    bonus_start_.push_back(bonus_.size());
+  }
+}
+
+void ReadingsLeftBound::read_readings(const std::uint16_t* uses) const {
+  // Most informative over the support first (the best-first search then resolves the likeliest
+  // beliefs sooner). Each action with readings left gets a slot of emissions over the support; a
+  // reading is its action's slot.
+  const IdentificationTables& t = *tables_;
+  const int L = t.live_states, O = t.observations;
+  const std::size_t S = support_.size();
+  emission_.clear();
+  std::vector<std::pair<double, int>> scored;  // (−informativeness, slot)
+  for (int a : sensing_) {
+    const int n = t.limits.max_uses(a) - (uses == nullptr ? 0 : int(uses[a]));
+    if (n <= 0) continue;
+    const int slot = int(emission_.size() / (std::size_t(O) * S));
+    double score = 0.0;
+    for (int o = 0; o < O; ++o) {
+      double most = 0.0;
+      for (std::size_t i = 0; i < S; ++i) {
+        const double e = t.emission[(std::size_t(a) * O + o) * L + support_[i]];
+        emission_.push_back(e);
+        most = std::max(most, e);
+      }
+      score += most;
+    }
+    for (int k = 0; k < n; ++k) scored.emplace_back(-score, slot);
+  }
+  std::stable_sort(scored.begin(), scored.end());
+  readings_.clear();
+  for (const auto& [score, slot] : scored) readings_.push_back(slot);
+}
+
 double ReadingsLeftBound::value(const double* b, const std::uint16_t* uses) const {
   if (!applies_) return std::numeric_limits<double>::infinity();
   const IdentificationTables& t = *tables_;
-  const int L = t.live_states, O = t.observations;
+  const int L = t.live_states;
   const UseLimits& limits = t.limits;
   auto used = [&](int a) { return uses == nullptr ? 0 : int(uses[a]); };
   auto expected = [&](int a) {
@@ -113,78 +197,12 @@ double ReadingsLeftBound::value(const double* b, const std::uint16_t* uses) cons
   if (left == 0 || first == -std::numeric_limits<double>::infinity()) return commit;
   if (left > options_.max_readings) return std::numeric_limits<double>::infinity();
 
-  // The main support; the rest is valued as known.
-  support_.resize(L);
-  std::iota(support_.begin(), support_.end(), 0);
-  std::stable_sort(support_.begin(), support_.end(), [&](int x, int y) { return b[x] > b[y]; });
-  std::size_t S = 0;
-  while (S < support_.size() && int(S) < options_.max_support &&
-         b[support_[S]] >= options_.min_probability)
-    ++S;
-  const double discount_left = std::pow(t.discount, left);
-  auto relaxed = [&](int terminal, int l) {
-    const double r = t.reward[terminal * L + l];
-    return r >= 0.0 ? t.discount * r : discount_left * r;
-  };
-  double tail = 0.0;
-  known_.assign(S, -std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < support_.size(); ++i) {
-    double best = -std::numeric_limits<double>::infinity();
-    for (int a : terminals_) best = std::max(best, relaxed(a, support_[i]));
-    if (i < S)
-      known_[i] = best;
-    else
-      tail += b[support_[i]] * best;
-  }
-  support_.resize(S);
+  const double discount_left = std::pow(t.discount, left);  // a wrong sort's least discount
+  const double tail = read_support(b, discount_left);
+  const std::size_t S = support_.size();
   if (S == 0) return std::max(commit, first + tail);
-
-  // The sorts over the support, each distinct one once, as a floor per state (the least any sort
-  // earns there) plus each sort's bonus above it where it has one: a sort that pays more only in
-  // its own state costs one entry, not one per state.
-  std::vector<std::vector<double>> columns;
-  for (int a : terminals_) {
-    std::vector<double>& c = columns.emplace_back(S);
-    for (std::size_t i = 0; i < S; ++i) c[i] = relaxed(a, support_[i]);
-  }
-  std::sort(columns.begin(), columns.end());
-  columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
-  floor_.assign(S, std::numeric_limits<double>::infinity());
-  for (const auto& c : columns)
-    for (std::size_t i = 0; i < S; ++i) floor_[i] = std::min(floor_[i], c[i]);
-  bonus_.clear();
-  bonus_start_.assign(1, 0);
-  for (const auto& c : columns) {
-    for (std::size_t i = 0; i < S; ++i)
-      if (c[i] > floor_[i]) bonus_.emplace_back(int(i), c[i] - floor_[i]);
-    bonus_start_.push_back(bonus_.size());
-  }
-
-  // The readings left, most informative over the support first (the best-first search then
-  // resolves the likeliest beliefs sooner), and their emissions over the support.
-  // Each action with readings left gets a slot of emissions; a reading is its action's slot.
-  emission_.clear();
-  std::vector<std::pair<double, int>> scored;  // (−informativeness, slot)
-  for (int a : sensing_) {
-    const int n = limits.max_uses(a) - used(a);
-    if (n <= 0) continue;
-    const int slot = int(emission_.size() / (std::size_t(O) * S));
-    double score = 0.0;
-    for (int o = 0; o < O; ++o) {
-      double most = 0.0;
-      for (std::size_t i = 0; i < S; ++i) {
-        const double e = t.emission[(std::size_t(a) * O + o) * L + support_[i]];
-        emission_.push_back(e);
-        most = std::max(most, e);
-      }
-      score += most;
-    }
-    for (int k = 0; k < n; ++k) scored.emplace_back(-score, slot);
-  }
-  std::stable_sort(scored.begin(), scored.end());
-  readings_.clear();
-  for (const auto& [score, slot] : scored) readings_.push_back(slot);
-
+  read_sorts(discount_left);
+  read_readings(uses);
   std::vector<double> w(S);
   for (std::size_t i = 0; i < S; ++i) w[i] = b[support_[i]];
   return std::max(commit, first + told_all_value(w.data()) + tail);

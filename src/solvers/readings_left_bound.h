@@ -70,6 +70,14 @@ class ReadingsLeftBound {
   // Over the support: the best sort's value at weights w, and the value if the state were known.
   double best_sort(const double* w) const;
   double known(const double* w) const;
+  // A terminal action's r̂ in live state l, a wrong sort discounted by `discount_left` (γ^k for k
+  // readings left; see the header comment).
+  double relaxed(int terminal, int l, double discount_left) const;
+  // The per-call tables, in order: support_ and known_ from belief b (returns the tail's
+  // known-state value), the sorts over the support, the readings left after `uses`.
+  double read_support(const double* b, double discount_left) const;
+  void read_sorts(double discount_left) const;
+  void read_readings(const std::uint16_t* uses) const;
 
   std::shared_ptr<const IdentificationTables> tables_;
   ReadingsLeftOptions options_;
@@ -81,6 +89,7 @@ class ReadingsLeftBound {
   mutable std::vector<int> readings_;
   // The distinct sorts' r̂ over the support: a floor per state, and each sort's bonus entries
   // (support index, r̂ − floor) where it pays more, sort c's from bonus_start_[c].
+  mutable std::vector<std::vector<double>> columns_;  // [k][i]: sort k's r̂, then sorted
   mutable std::vector<double> floor_;
   mutable std::vector<std::pair<int, double>> bonus_;
   mutable std::vector<std::size_t> bonus_start_;
